@@ -1,0 +1,223 @@
+// glslrun: legacy GLSL (1.10/1.20) on the CPU. The one public header.
+//
+//   auto prog = glslrun::Program::compile({{"a.vert", vs}}, {{"a.frag", fs}});
+//   if (!prog) { fmt::print("{}", prog.error().str()); return 1; }
+//   prog->set_uniform("tint", std::array{1.f, 0.f, 0.f, 1.f});
+//   glslrun::Framebuffer fb(256, 256);
+//   glslrun::GLState gl;                       // OpenGL's defaults
+//   auto st = glslrun::draw(*prog, gl, fb, glslrun::Primitive::Triangles, mesh);
+//
+// Every user mistake comes back as an Error value; nothing here exits.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace glslrun {
+namespace ir { struct Program; }
+
+// ---------------------------------------------------------------- errors ---
+struct Diagnostic {
+    std::string file;  // may be empty
+    int line = 0;      // 0 when there is no line
+    std::string message;
+    bool warning = false;
+    // "file:line: error: message" (or without the parts that are missing)
+    std::string str() const;
+};
+
+struct Error {
+    std::vector<Diagnostic> diagnostics;
+    Error() = default;
+    explicit Error(std::string message, std::string file = {}, int line = 0);
+    std::string str() const;  // one diagnostic per line
+};
+
+template <class T>
+class Result {
+public:
+    Result(T value) : v_(std::move(value)) {}
+    Result(Error e) : v_(std::move(e)) {}
+    bool ok() const { return v_.index() == 0; }
+    explicit operator bool() const { return ok(); }
+    T& value() { return std::get<0>(v_); }
+    const T& value() const { return std::get<0>(v_); }
+    T* operator->() { return &value(); }
+    const T* operator->() const { return &value(); }
+    T& operator*() { return value(); }
+    const Error& error() const { return std::get<1>(v_); }
+private:
+    std::variant<T, Error> v_;
+};
+
+struct Ok {};
+using Status = Result<Ok>;
+
+// --------------------------------------------------------------- compile ---
+struct ShaderSource {
+    std::string name;  // used in diagnostics: "name:line: error: ..."
+    std::string text;
+};
+
+struct CompileOptions {
+    int default_version = 110;   // for sources without #version
+    bool optimize = true;        // fold, copy propagation, DCE
+    uint32_t inline_budget = 4000;  // IR nodes a call site may add when inlined
+};
+
+struct ExecOptions {
+    uint64_t max_loop_iterations = 1u << 20;  // per loop, per batch; then a clear error
+};
+
+enum class Stage { Vertex, Fragment };
+
+// Compiles one stage alone (glslparsertest-style checks): no link step.
+Status check_shader(Stage stage, const ShaderSource& source, int default_version = 110);
+
+struct UniformInfo {
+    std::string name;   // GL leaf name: "m", "lights[0].pos", "arr" (array_size > 1)
+    std::string type;   // GLSL type name: "vec3", "mat4", "sampler2D", ...
+    uint32_t array_size = 1;
+    bool builtin = false;
+};
+
+class Program {
+public:
+    static Result<Program> compile(const std::vector<ShaderSource>& vertex,
+                                   const std::vector<ShaderSource>& fragment,
+                                   const CompileOptions& options = {});
+    Program(Program&&) noexcept;
+    Program& operator=(Program&&) noexcept;
+    ~Program();
+
+    // GL semantics (glUniform*): name may be "a", "a[2]", "s.f", "s[1].f";
+    // values fill consecutive elements from there. A float uniform takes
+    // floats, an int/sampler uniform ints; a bool uniform takes either.
+    // Unknown names and type or size mismatches are errors.
+    Status set_uniform(std::string_view name, std::span<const float> values);
+    Status set_uniform(std::string_view name, std::span<const int32_t> values);
+    bool has_uniform(std::string_view name) const;
+    std::vector<UniformInfo> uniforms() const;
+
+    ExecOptions exec;
+    std::string dump_ir() const;  // the IR printer's text for both stages
+    const ir::Program& ir() const;
+
+    struct State;  // uniform store and the IR, defined by the implementation
+    State& state() { return *state_; }
+    const State& state() const { return *state_; }
+private:
+    Program();
+    std::unique_ptr<State> state_;
+};
+
+// ------------------------------------------------------ legacy GL state ---
+// The fixed-function state that GLSL 1.10's built-in uniforms (§7.5) read.
+// Defaults are OpenGL 2.1's. apply_builtin_uniforms() derives everything a
+// program reads (gl_ModelViewProjectionMatrix, gl_NormalMatrix, inverses,
+// light products, halfVector, spotCosCutoff, ...).
+struct LightState {
+    glm::vec4 ambient{0, 0, 0, 1}, diffuse{0, 0, 0, 1}, specular{0, 0, 0, 1};
+    glm::vec4 position{0, 0, 1, 0};  // eye space, as after glLightfv
+    glm::vec3 spot_direction{0, 0, -1};  // eye space
+    float spot_exponent = 0, spot_cutoff = 180;
+    float constant_attenuation = 1, linear_attenuation = 0, quadratic_attenuation = 0;
+};
+struct MaterialState {
+    glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1}, diffuse{0.8f, 0.8f, 0.8f, 1};
+    glm::vec4 specular{0, 0, 0, 1}, emission{0, 0, 0, 1};
+    float shininess = 0;
+};
+struct GLState {
+    GLState();  // light 0 gets its special diffuse/specular defaults
+    glm::mat4 modelview{1.0f}, projection{1.0f};
+    std::array<glm::mat4, 8> texture_matrix;
+    std::array<LightState, 8> lights;
+    glm::vec4 light_model_ambient{0.2f, 0.2f, 0.2f, 1};
+    MaterialState front_material, back_material;
+    std::array<glm::vec4, 6> clip_planes{};  // eye space (as after glClipPlane)
+    uint32_t clip_plane_enabled = 0;         // bit i: GL_CLIP_PLANEi
+    float depth_near = 0, depth_far = 1;
+    float point_size = 1;
+    glm::vec4 current_color{1, 1, 1, 1};     // glColor, for gl_Color without an array
+    glm::vec4 current_secondary_color{0, 0, 0, 1};
+    glm::vec3 current_normal{0, 0, 1};
+    // render state
+    bool depth_test = false;
+    enum class DepthFunc { Never, Less, Equal, Lequal, Greater, Notequal, Gequal, Always } depth_func = DepthFunc::Less;
+    bool vertex_program_two_side = false;
+    bool flat_shading = false;
+    bool cull_face = false;
+    bool cull_back = true;   // GL_BACK
+    bool front_ccw = true;   // GL_CCW
+    std::array<int, 4> viewport{0, 0, 0, 0};  // x y w h; w == 0: the whole framebuffer
+};
+Status apply_builtin_uniforms(Program& program, const GLState& gl);
+
+// ------------------------------------------------------------ execution ---
+// One attribute array: `components` floats per vertex (1..4; missing ones are
+// GL's (0,0,0,1)). Name is the GLSL name: "gl_Vertex", "gl_Color", "myAttr".
+struct VertexAttrib {
+    std::string name;
+    uint32_t components = 4;
+    std::vector<float> data;
+};
+
+struct ShaderOutput {
+    std::string name;  // "gl_Position", "gl_FrontColor", "gl_TexCoord[0]", "v_normal", ...
+    uint32_t components = 0;
+    std::vector<float> data;  // count * components; ints and bools as floats
+};
+
+// Runs the vertex shader on `count` vertices; every VS output comes back.
+Result<std::vector<ShaderOutput>> run_vertices(const Program& program,
+                                               const std::vector<VertexAttrib>& attribs,
+                                               uint32_t count);
+// Runs the fragment shader on `count` fragments, inputs by name (varyings,
+// "gl_FragCoord", "gl_FrontFacing", "gl_Color", ...). Fragments are grouped
+// in 2x2 quads in order (4 consecutive fragments = one quad:
+// (x,y) (x+1,y) (x,y+1) (x+1,y+1)), so derivatives are meaningful.
+// Returns outputs plus "discarded" (1 or 0 per fragment).
+Result<std::vector<ShaderOutput>> run_fragments(const Program& program,
+                                                const std::vector<VertexAttrib>& inputs,
+                                                uint32_t count);
+
+// ---------------------------------------------------------- rendering ---
+struct Framebuffer {
+    Framebuffer(int width, int height, bool float_color = false);
+    int width = 0, height = 0;
+    bool float_color = false;  // false: RGBA8 (values clamped and quantised on write)
+    std::vector<float> color;  // RGBA, row 0 at the bottom (GL convention)
+    std::vector<float> depth;  // [0,1]
+    void clear_color(glm::vec4 c);
+    void clear_depth(float d);
+    glm::vec4 pixel(int x, int y) const;
+};
+
+enum class Primitive { Points, Lines, LineStrip, LineLoop, Triangles, TriangleStrip,
+                       TriangleFan, Quads, QuadStrip, Polygon };
+
+struct DrawStats {
+    uint64_t vertices = 0, triangles = 0, fragments_shaded = 0, fragments_written = 0;
+};
+
+// Draws with the program's current uniforms. Built-in uniforms are taken
+// from `gl` (apply_builtin_uniforms is called for you). Attributes the mesh
+// lacks take GL's current values (gl.current_color, ...). `indices` may be empty.
+Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
+                       const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
+                       std::span<const uint32_t> indices = {});
+
+// PNG output (RGBA8, top row first as images expect).
+Status write_png(const Framebuffer& fb, const std::string& path);
+
+}  // namespace glslrun

@@ -1,0 +1,157 @@
+// glslrun's IR: scalarized virtual registers with structured control flow.
+//
+// - Every value is a scalar register of kind f32, i32 or bool. A vec4 is four
+//   registers; a mat3 is three columns of three registers; arrays and structs
+//   are flattened. A GLSL variable occupies a *contiguous* register range, so
+//   dynamic indexing (load_ind/store_ind) can address it as base + i * stride.
+// - Registers are not SSA: a register may be written many times. Writes inside
+//   divergent control flow only affect the active lanes.
+// - Control flow is structured (Mesa NIR style): If and Loop nodes own nested
+//   blocks; Break, Continue, Return and Discard are nodes, executed by masking
+//   lanes off (runtime/exec_mask.h).
+// - GLSL forbids recursion, so every function has a static frame: its
+//   parameters, locals and return value are ordinary registers of the shader.
+//   A Call node runs the callee's body; the caller copies arguments in and
+//   out/inout parameters back with mov instructions around it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace glslrun::ir {
+
+using Reg = uint32_t;
+inline constexpr Reg kNoReg = 0xffffffffu;
+
+enum class Kind : uint8_t { F32, I32, Bool };
+const char* kind_name(Kind k);
+
+enum class Op : uint8_t {
+#define OP(name, arity, res, opnd, kind, expr) name,
+#include "ir/opcodes.def"
+#undef OP
+    Count_
+};
+
+enum class OpKind : uint8_t { Alu, Special };
+// Operand/result type classes of the table: F, I, B, T (instruction type), X.
+enum class TypeClass : uint8_t { F, I, B, T, X };
+
+struct OpInfo {
+    const char* name;
+    int arity;
+    TypeClass result;
+    TypeClass operand;
+    OpKind kind;
+};
+const OpInfo& op_info(Op op);
+
+struct Instr {
+    Op op = Op::mov;
+    Kind type = Kind::F32;  // kind of dst (for store_ind: kind of the stored value)
+    Reg dst = kNoReg;
+    Reg src[3] = {kNoReg, kNoReg, kNoReg};
+    uint32_t imm[3] = {0, 0, 0};
+};
+
+struct SourceLoc {
+    int line = 0;
+};
+
+enum class NodeKind : uint8_t {
+    Instr,     // `instr`
+    If,        // if (cond) body else alt
+    Loop,      // loop { body } continue { alt }: repeats while any lane is active
+    Break,     // leaves the innermost Loop
+    Continue,  // skips to the innermost Loop's continue block (alt)
+    Return,    // leaves the innermost Call or Scope
+    Discard,   // fragment only: kills the lane for the rest of the invocation
+    Call,      // runs functions[callee].body; Return inside it ends the call
+    Scope,     // body is an inlined function: Return inside it ends the scope
+};
+
+struct Node {
+    NodeKind kind = NodeKind::Instr;
+    Instr instr;
+    Reg cond = kNoReg;       // If
+    uint32_t callee = 0;     // Call
+    std::vector<Node> body;  // If: then; Loop: body; Scope: body
+    std::vector<Node> alt;   // If: else; Loop: continue block
+    SourceLoc loc;
+};
+using Block = std::vector<Node>;
+
+struct Function {
+    std::string name;  // GLSL name, e.g. "shade"
+    Block body;
+};
+
+// A shader interface variable (attribute, varying, built-in input/output):
+// `count` consecutive registers starting at `first`, all of kind `kind`.
+struct Binding {
+    std::string name;  // GL name: "gl_Vertex", "normal", "gl_TexCoord[1]"
+    Kind kind = Kind::F32;
+    Reg first = kNoReg;
+    uint32_t count = 0;
+};
+
+enum class Stage : uint8_t { Vertex, Fragment };
+
+struct Shader {
+    Stage stage = Stage::Vertex;
+    std::vector<Kind> regs;  // kind of every register; size = register count
+    Block body;              // global initializers, then main's body (in a Scope)
+    std::vector<Function> functions;  // callees of Call nodes
+    std::vector<Binding> inputs;      // filled by the caller before running
+    std::vector<Binding> outputs;     // read by the caller after running
+    bool uses_derivatives = false;
+    bool uses_discard = false;
+};
+
+// Base type of a uniform leaf (GL's glGetActiveUniform view).
+struct ValueType {
+    Kind kind = Kind::F32;
+    uint8_t cols = 1;  // 1 for scalars and vectors
+    uint8_t rows = 1;  // vector size; matrix column height
+    bool is_sampler = false;  // stored as an i32 texture unit
+    uint32_t components() const { return uint32_t(cols) * rows; }
+};
+
+// One uniform leaf, named as GL names it: "u", "lights[2].pos", "m".
+// Arrays of basic types are one leaf with `array_size` elements (GL style).
+// Values live in the program's uniform store at `slot`, column-major, one
+// 32-bit word per component, elements back to back.
+struct Uniform {
+    std::string name;
+    ValueType type;
+    uint32_t array_size = 1;  // 1 for non-arrays
+    bool is_array = false;
+    uint32_t slot = 0;
+    bool builtin = false;  // gl_* state, set by the GL state object
+};
+
+// How one fragment-shader input is fed from the vertex shader's outputs.
+// `vs_output`/`vs_component` name the source (index into vertex.outputs, and
+// the first component within it). For gl_Color / gl_SecondaryColor the back
+// colour source is given too; the rasterizer picks one by facing when
+// two-sided colour is enabled.
+struct VaryingLink {
+    uint32_t fs_input = 0;  // index into fragment.inputs
+    int vs_output = -1;     // -1: not written by the VS (value undefined: 0)
+    int vs_back_output = -1;
+    bool is_color = false;  // clamped to [0,1] as GL 2.1 does for colour varyings
+};
+
+struct Program {
+    Shader vertex;
+    Shader fragment;
+    std::vector<Uniform> uniforms;
+    uint32_t uniform_words = 0;
+    std::vector<VaryingLink> varyings;
+};
+
+// Uniform lookup by GL name: accepts "a", "a[0]", "a[3]", "s.f", "s[1].f".
+// Returns nullptr if absent; *element receives the array element index.
+const Uniform* find_uniform(const Program& p, const std::string& name, uint32_t* element);
+
+}  // namespace glslrun::ir

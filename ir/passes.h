@@ -1,0 +1,40 @@
+// The flat list of IR passes, one file each, named after the pass (QBE style).
+// optimize() runs them in order and, when GLSLRUN_VERIFY is on, the verifier
+// after every pass.
+#pragma once
+#include <string>
+
+#include "ir/ir.h"
+
+namespace glslrun::ir {
+
+// ir/verify.cpp: structural checks. Returns "" when the shader is well formed,
+// else a description of the first problem (an internal bug, never user error).
+std::string verify(const Shader& shader);
+
+// ir/print.cpp: the text form used by --dump-ir and the golden tests.
+std::string print(const Shader& shader);
+std::string print(const Program& program);
+
+// ir/inline.cpp: replaces Call nodes by Scope nodes holding a renamed copy of
+// the callee while the shader grows by less than `budget` nodes; the calls
+// beyond the budget stay real calls.
+void inline_calls(Shader& shader, uint32_t budget);
+// ir/fold.cpp: evaluates Alu instructions whose operands are constants, using
+// the opcode table's expressions; folds If on constant conditions.
+void fold_constants(Shader& shader);
+// ir/copyprop.cpp: replaces reads of a register that holds a copy of another
+// register (or constant) by the source, within straight-line code.
+void propagate_copies(Shader& shader);
+// ir/dce.cpp: removes instructions whose results are never read, and empty
+// control flow.
+void eliminate_dead_code(Shader& shader);
+
+struct PassOptions {
+    bool optimize = true;
+    uint32_t inline_budget = 4000;
+};
+// Runs the pipeline; returns "" or the verifier's message naming the pass.
+std::string optimize(Shader& shader, const PassOptions& options);
+
+}  // namespace glslrun::ir

@@ -1,0 +1,44 @@
+// Scalar semantics used by the `expr` column of ir/opcodes.def. Shared by the
+// constant folder and the interpreter so both compute bit-identical results.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace glslrun::ir {
+
+inline float glsl_sign(float a) { return a > 0.0f ? 1.0f : (a < 0.0f ? -1.0f : 0.0f); }
+inline float glsl_fract(float a) { return a - std::floor(a); }
+// GLSL 1.10 §8.3: mod(x, y) = x - y * floor(x / y).
+inline float glsl_mod(float a, float b) { return a - b * std::floor(a / b); }
+
+inline int32_t wrap_add(int32_t a, int32_t b) {
+    return static_cast<int32_t>(static_cast<uint32_t>(a) + static_cast<uint32_t>(b));
+}
+inline int32_t wrap_sub(int32_t a, int32_t b) {
+    return static_cast<int32_t>(static_cast<uint32_t>(a) - static_cast<uint32_t>(b));
+}
+inline int32_t wrap_mul(int32_t a, int32_t b) {
+    return static_cast<int32_t>(static_cast<uint32_t>(a) * static_cast<uint32_t>(b));
+}
+// Integer division by zero is undefined in GLSL; we define it as 0 so that it
+// can never trap (SIGFPE). INT_MIN / -1 wraps to INT_MIN for the same reason.
+inline int32_t safe_idiv(int32_t a, int32_t b) {
+    if (b == 0) return 0;
+    if (b == -1) return wrap_sub(0, a);
+    return a / b;
+}
+inline int32_t safe_imod(int32_t a, int32_t b) {
+    if (b == 0 || b == -1) return 0;
+    return a % b;
+}
+// float -> int truncates toward zero; NaN gives 0 and out-of-range values
+// saturate instead of invoking undefined behaviour.
+inline int32_t f2i_trunc(float a) {
+    if (std::isnan(a)) return 0;
+    if (a >= 2147483647.0f) return std::numeric_limits<int32_t>::max();
+    if (a <= -2147483648.0f) return std::numeric_limits<int32_t>::min();
+    return static_cast<int32_t>(a);
+}
+
+}  // namespace glslrun::ir

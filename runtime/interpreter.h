@@ -1,0 +1,49 @@
+// The batched IR interpreter: runs one ir::Shader over kLanes invocations at
+// once, structure of arrays. Each instruction loops over the lanes, so the
+// dispatch cost is paid once per instruction per batch, not per invocation.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ir/ir.h"
+
+namespace glslrun::rt {
+
+// Compile-time batch width (8..64). Fragment batches hold kLanes/4 2x2 quads:
+// lanes 4q+0..3 are (x,y) (x+1,y) (x,y+1) (x+1,y+1).
+inline constexpr int kLanes = 16;
+static_assert(kLanes % 4 == 0 && kLanes >= 8 && kLanes <= 64);
+using LaneMask = uint64_t;  // bit i = lane i
+inline constexpr LaneMask kAllLanes = kLanes == 64 ? ~LaneMask(0) : ((LaneMask(1) << kLanes) - 1);
+
+struct RunError {
+    std::string message;
+    int line = 0;
+};
+
+class Interpreter {
+public:
+    // `uniforms` must stay alive while the interpreter runs; it is the
+    // program's uniform store (one 32-bit word per component).
+    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations);
+    ~Interpreter();
+
+    // kLanes words of register r: floats, ints and bools (0/1) as raw bits.
+    uint32_t* lanes(ir::Reg r);
+    float* lanes_f(ir::Reg r) { return reinterpret_cast<float*>(lanes(r)); }
+
+    // Runs the shader for the lanes in `live` (the others are left alone).
+    // Returns false, with *error set, if a loop ran past the iteration cap.
+    bool run(LaneMask live, RunError* error);
+
+    // After run(): the lanes that were live and did not discard.
+    LaneMask alive() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace glslrun::rt

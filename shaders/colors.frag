@@ -1,0 +1,3 @@
+void main(void) {
+    gl_FragColor = gl_Color;
+}

@@ -1,0 +1,4 @@
+void main(void) {
+    gl_FrontColor = gl_Color;
+    gl_Position = ftransform();
+}

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Sets up a fresh Debian 12 machine (as root), builds glslrun, then either
+#   demo: renders the lecture's minimal program to minimal.png, or
+#   test: runs every test (unit tests, example, piglit conformance suite).
+set -euo pipefail
+mode=${1:-demo}
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
+          libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev)
+[ "$mode" = test ] && packages+=(piglit)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+cmake --build build -j "$(nproc)"
+
+case "$mode" in
+demo)
+    ./build/glslrun shaders/minimal.vert shaders/minimal.frag -o minimal.png
+    echo "wrote minimal.png"
+    ;;
+test)
+    (cd build && ctest --output-on-failure -j "$(nproc)")
+    bash tools/piglit_suite.sh build/glslrun
+    ;;
+*)
+    echo "usage: tools/setup.sh [demo|test]" >&2
+    exit 2
+    ;;
+esac
