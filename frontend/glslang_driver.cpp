@@ -1,0 +1,221 @@
+// Driving glslang: parse every unit, link each stage on its own (our own
+// cross-stage rules replace glslang's, which reject legal gl_TexCoord size
+// differences), then lower both stages with one uniform table.
+#include <map>
+#include <memory>
+#include <set>
+
+#include <fmt/format.h>
+#include <glslang/Include/PoolAlloc.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include "frontend/compile.h"
+#include "frontend/diagnostics.h"
+#include "frontend/link.h"
+#include "frontend/lower.h"
+
+namespace glslrun::frontend {
+namespace {
+
+void init_glslang() {
+    // Thread-safe once per process (C++ static initialization).
+    static const bool initialized = [] { return glslang::InitializeProcess(); }();
+    (void)initialized;
+}
+
+TBuiltInResource resources() {
+    TBuiltInResource r = *GetDefaultResources();
+    // GL 2.1-era values (Mesa's legacy limits); they size gl_LightSource[],
+    // gl_TexCoord[], gl_TextureMatrix[], gl_ClipPlane[], gl_FragData[].
+    r.maxLights = 8;
+    r.maxClipPlanes = 6;
+    r.maxTextureUnits = 8;
+    r.maxTextureCoords = 8;
+    r.maxVertexAttribs = 16;
+    r.maxVertexUniformComponents = 4096;
+    r.maxVaryingFloats = 128;
+    r.maxVertexTextureImageUnits = 16;
+    r.maxCombinedTextureImageUnits = 32;
+    r.maxTextureImageUnits = 16;
+    r.maxFragmentUniformComponents = 4096;
+    r.maxDrawBuffers = 8;
+    return r;
+}
+
+constexpr EShMessages kMessages = EShMessages(EShMsgDefault | EShMsgCascadingErrors);
+
+// The thread's current glslang pool. parse()/link() switch it and never switch
+// back, so every compile installs this one (which outlives all glslang objects
+// of the compile) and frees what was allocated in it at the end.
+class PoolScope {
+public:
+    PoolScope() {
+        glslang::SetThreadPoolAllocator(&pool());
+        pool().push();
+    }
+    ~PoolScope() {
+        glslang::SetThreadPoolAllocator(&pool());
+        pool().pop();
+    }
+    void reinstall() { glslang::SetThreadPoolAllocator(&pool()); }
+
+private:
+    static glslang::TPoolAllocator& pool() {
+        static thread_local glslang::TPoolAllocator p;
+        return p;
+    }
+};
+
+struct StageUnits {
+    EShLanguage lang;
+    std::vector<ShaderSource> sources;
+    std::vector<std::string> names;  // "#i", kept alive until parse() returns
+    std::vector<std::unique_ptr<glslang::TShader>> shaders;
+    std::unique_ptr<glslang::TProgram> program;
+    std::string first_file() const { return sources.empty() ? std::string() : sources[0].name; }
+};
+
+bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
+    const TBuiltInResource res = resources();
+    bool ok = true;
+    st.names.clear();
+    for (size_t i = 0; i < st.sources.size(); ++i) st.names.push_back(internal_source_name(i));
+    for (size_t i = 0; i < st.sources.size(); ++i) {
+        auto sh = std::make_unique<glslang::TShader>(st.lang);
+        const char* text = st.sources[i].text.c_str();
+        int len = int(st.sources[i].text.size());
+        const char* name = st.names[i].c_str();
+        sh->setStringsWithLengthsAndNames(&text, &len, &name, 1);
+        // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
+        // shader; glslang 12 wants the extension.
+        if (st.lang == EShLangVertex) sh->setPreamble("#extension GL_ARB_shader_texture_lod : enable\n");
+        bool parsed = sh->parse(&res, default_version, ENoProfile, false, false, kMessages);
+        parse_info_log(sh->getInfoLog(), st.sources, st.sources[i].name, diags);
+        ok = ok && parsed;
+        st.shaders.push_back(std::move(sh));
+    }
+    return ok;
+}
+
+bool link_units(StageUnits& st, std::vector<Diagnostic>& diags) {
+    st.program = std::make_unique<glslang::TProgram>();
+    for (auto& sh : st.shaders) st.program->addShader(sh.get());
+    bool ok = st.program->link(kMessages);
+    parse_info_log(st.program->getInfoLog(), st.sources, st.first_file(), diags);
+    return ok;
+}
+
+// GLSL 1.10 §4.3: a global may be initialized in only one compilation unit.
+void check_global_initializers(const StageUnits& st, std::vector<Diagnostic>& diags) {
+    if (st.shaders.size() < 2) return;
+    std::map<std::string, int> count;
+    for (const auto& sh : st.shaders) {
+        TIntermNode* root = sh->getIntermediate()->getTreeRoot();
+        if (!root || !root->getAsAggregate()) continue;
+        std::set<std::string> here;
+        for (TIntermNode* child : root->getAsAggregate()->getSequence()) {
+            glslang::TIntermAggregate* seq = child->getAsAggregate();
+            if (!seq || seq->getOp() != glslang::EOpSequence) continue;
+            for (TIntermNode* n : seq->getSequence()) {
+                glslang::TIntermBinary* b = n->getAsBinaryNode();
+                if (b && b->getOp() == glslang::EOpAssign && b->getLeft()->getAsSymbolNode())
+                    here.insert(b->getLeft()->getAsSymbolNode()->getName().c_str());
+            }
+        }
+        for (const std::string& name : here) ++count[name];
+    }
+    for (const auto& [name, n] : count)
+        if (n > 1)
+            diags.push_back(Diagnostic{st.first_file(), 0,
+                                       fmt::format("global variable '{}' is initialized in more than one "
+                                                   "compilation unit",
+                                                   name),
+                                       false});
+}
+
+bool has_errors(const std::vector<Diagnostic>& diags) {
+    for (const Diagnostic& d : diags)
+        if (!d.warning) return true;
+    return false;
+}
+
+Error to_error(std::vector<Diagnostic> diags) {
+    Error e;
+    for (Diagnostic& d : diags)
+        if (!d.warning) e.diagnostics.push_back(std::move(d));
+    if (e.diagnostics.empty()) e.diagnostics.push_back(Diagnostic{{}, 0, "compilation failed", false});
+    return e;
+}
+
+// Stand-ins for a missing stage: GL's fixed-function processing, as far as
+// the other stage can observe it.
+const char* kFixedFunctionVertex =
+    "void main() {\n"
+    "  gl_Position = ftransform();\n"
+    "  gl_FrontColor = gl_Color;\n"
+    "  gl_BackColor = gl_Color;\n"
+    "  gl_FrontSecondaryColor = gl_SecondaryColor;\n"
+    "  gl_BackSecondaryColor = gl_SecondaryColor;\n"
+    "  gl_TexCoord[0] = gl_TextureMatrix[0] * gl_MultiTexCoord0;\n"
+    "  gl_TexCoord[1] = gl_TextureMatrix[1] * gl_MultiTexCoord1;\n"
+    "  gl_TexCoord[2] = gl_TextureMatrix[2] * gl_MultiTexCoord2;\n"
+    "  gl_TexCoord[3] = gl_TextureMatrix[3] * gl_MultiTexCoord3;\n"
+    "  gl_TexCoord[4] = gl_TextureMatrix[4] * gl_MultiTexCoord4;\n"
+    "  gl_TexCoord[5] = gl_TextureMatrix[5] * gl_MultiTexCoord5;\n"
+    "  gl_TexCoord[6] = gl_TextureMatrix[6] * gl_MultiTexCoord6;\n"
+    "  gl_TexCoord[7] = gl_TextureMatrix[7] * gl_MultiTexCoord7;\n"
+    "  gl_FogFragCoord = abs((gl_ModelViewMatrix * gl_Vertex).z);\n"
+    "}\n";
+const char* kFixedFunctionFragment = "void main() { gl_FragColor = gl_Color; }\n";
+
+}  // namespace
+
+Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+                                    const CompileOptions& options) {
+    init_glslang();
+    if (vs.empty() && fs.empty()) return Error("no shaders to link");
+    PoolScope pool;
+    std::vector<Diagnostic> diags;
+    StageUnits units[2] = {{EShLangVertex, vs, {}, {}, {}}, {EShLangFragment, fs, {}, {}, {}}};
+    if (vs.empty()) units[0].sources = {ShaderSource{"", kFixedFunctionVertex}};
+    if (fs.empty()) units[1].sources = {ShaderSource{"", kFixedFunctionFragment}};
+    bool parsed = true;
+    for (StageUnits& st : units) parsed = parse_units(st, options.default_version, diags) && parsed;
+    if (!parsed || has_errors(diags)) return to_error(std::move(diags));
+    for (StageUnits& st : units) check_global_initializers(st, diags);
+    bool linked = true;
+    for (StageUnits& st : units) linked = link_units(st, diags) && linked;
+    if (!linked || has_errors(diags)) return to_error(std::move(diags));
+
+    pool.reinstall();
+    UniformTable uniforms;
+    StageLowering vlow(ir::Stage::Vertex, uniforms, diags, units[0].first_file());
+    StageLowering flow(ir::Stage::Fragment, uniforms, diags, units[1].first_file());
+    vlow.run(units[0].program->getIntermediate(EShLangVertex));
+    flow.run(units[1].program->getIntermediate(EShLangFragment));
+    LinkInput li{&vlow, &flow, !vs.empty(), units[0].first_file(), units[1].first_file()};
+    check_interface(li, diags);
+    if (has_errors(diags)) return to_error(std::move(diags));
+
+    ir::Program program;
+    program.vertex = std::move(vlow.shader);
+    program.fragment = std::move(flow.shader);
+    program.uniforms = std::move(uniforms.leaves);
+    program.uniform_words = uint32_t(uniforms.slot_kinds.size());
+    link_varyings(program);
+    return program;
+}
+
+Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
+    init_glslang();
+    PoolScope pool;
+    std::vector<Diagnostic> diags;
+    StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}};
+    bool ok = parse_units(st, default_version, diags);
+    if (!ok || has_errors(diags)) return to_error(std::move(diags));
+    return Ok{};
+}
+
+}  // namespace glslrun::frontend

@@ -1,0 +1,77 @@
+// Per-lane evaluation of the opcode table's Alu expressions on raw 32-bit
+// words. The interpreter's kernels and the constant folder both go through
+// `Lane<op>::eval`, so a folded constant is bit-identical to what the
+// interpreter would have computed at run time.
+#pragma once
+#include <bit>
+#include <cstdint>
+
+#include "ir/ir.h"
+#include "ir/scalar_ops.h"
+
+namespace glslrun::ir::alu {
+
+// How a table type class reads from / writes to a raw register word.
+template <TypeClass C>
+struct Word;
+template <>
+struct Word<TypeClass::F> {
+    using T = float;
+    static float in(uint32_t w) { return std::bit_cast<float>(w); }
+    static uint32_t out(float v) { return std::bit_cast<uint32_t>(v); }
+};
+template <>
+struct Word<TypeClass::I> {
+    using T = int32_t;
+    static int32_t in(uint32_t w) { return static_cast<int32_t>(w); }
+    static uint32_t out(int32_t v) { return static_cast<uint32_t>(v); }
+};
+template <>
+struct Word<TypeClass::B> {
+    using T = bool;
+    static bool in(uint32_t w) { return w != 0; }
+    static uint32_t out(bool v) { return v ? 1u : 0u; }
+};
+
+// Lane<Op::x>: arity and eval(a, b, c) for every Alu op of the table.
+template <Op op>
+struct Lane;
+
+#define GLSLRUN_ALU_Special(name, arity_, res, opnd, expr)
+#define GLSLRUN_ALU_Alu(name, arity_, res, opnd, expr)                                              \
+    template <>                                                                                     \
+    struct Lane<Op::name> {                                                                         \
+        static constexpr int arity = arity_;                                                        \
+        static uint32_t eval(uint32_t wa, [[maybe_unused]] uint32_t wb, [[maybe_unused]] uint32_t wc) { \
+            using In = Word<TypeClass::opnd>;                                                       \
+            using Out = Word<TypeClass::res>;                                                       \
+            [[maybe_unused]] const In::T a = In::in(wa);                                            \
+            [[maybe_unused]] const In::T b = In::in(wb);                                            \
+            [[maybe_unused]] const In::T c = In::in(wc);                                            \
+            return Out::out(static_cast<Out::T>(expr));                                             \
+        }                                                                                           \
+    };
+#define OP(name, arity, res, opnd, kind, expr) GLSLRUN_ALU_##kind(name, arity, res, opnd, expr)
+#include "ir/opcodes.def"
+#undef OP
+#undef GLSLRUN_ALU_Alu
+#undef GLSLRUN_ALU_Special
+
+// Dynamic form for the folder: evaluates Alu op `op` on raw words.
+inline uint32_t eval(Op op, uint32_t a, uint32_t b, uint32_t c) {
+    switch (op) {
+#define GLSLRUN_ALU_Special(name)
+#define GLSLRUN_ALU_Alu(name) \
+    case Op::name: return Lane<Op::name>::eval(a, b, c);
+#define OP(name, arity, res, opnd, kind, expr) GLSLRUN_ALU_##kind(name)
+#include "ir/opcodes.def"
+#undef OP
+#undef GLSLRUN_ALU_Alu
+#undef GLSLRUN_ALU_Special
+    default: return 0;
+    }
+}
+
+inline bool is_alu(Op op) { return size_t(op) < size_t(Op::Count_) && op_info(op).kind == OpKind::Alu; }
+
+}  // namespace glslrun::ir::alu

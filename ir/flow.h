@@ -1,0 +1,94 @@
+// Register read/write enumeration shared by the passes (inline, fold,
+// copyprop, dce). Indexed accesses touch whole ranges: load_ind reads every
+// register of its range and store_ind may write any of them.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "ir/ir.h"
+
+namespace glslrun::ir::flow {
+
+// Calls fn(reg) for every register of an indexed range (imm[0], imm[1], imm[2]).
+template <class Fn>
+void for_each_in_range(const Instr& in, Fn&& fn) {
+    for (uint32_t e = 0; e < in.imm[1]; ++e) fn(Reg(in.imm[0] + e * in.imm[2]));
+}
+
+inline bool reads_range(Op op) { return op == Op::load_ind; }
+inline bool writes_range(Op op) { return op == Op::store_ind; }
+
+// Registers an instruction reads explicitly (its operands).
+template <class Fn>
+void for_each_operand(const Instr& in, Fn&& fn) {
+    int arity = op_info(in.op).arity;
+    for (int k = 0; k < arity; ++k)
+        if (in.src[k] != kNoReg) fn(in.src[k]);
+}
+
+// Registers a single node reads directly (not its nested blocks): operands,
+// load_ind ranges and If conditions.
+template <class Fn>
+void for_each_read(const Node& n, Fn&& fn) {
+    if (n.kind == NodeKind::If) fn(n.cond);
+    if (n.kind != NodeKind::Instr) return;
+    for_each_operand(n.instr, fn);
+    if (reads_range(n.instr.op)) for_each_in_range(n.instr, fn);
+}
+
+// Registers a single instruction may write.
+template <class Fn>
+void for_each_write(const Instr& in, Fn&& fn) {
+    if (writes_range(in.op))
+        for_each_in_range(in, fn);
+    else if (in.dst != kNoReg)
+        fn(in.dst);
+}
+
+// Applies fn to every node of a block, nested blocks included (pre-order).
+template <class Fn>
+void walk(const Block& block, Fn&& fn) {
+    for (const Node& n : block) {
+        fn(n);
+        walk(n.body, fn);
+        walk(n.alt, fn);
+    }
+}
+
+// What a block may write: its registers, and whether it calls a function
+// (whose writes are not listed; callers then forget everything).
+struct Writes {
+    std::vector<Reg> regs;
+    bool calls = false;
+};
+inline Writes writes_of(const Block& block) {
+    Writes w;
+    walk(block, [&](const Node& n) {
+        if (n.kind == NodeKind::Call) w.calls = true;
+        if (n.kind == NodeKind::Instr) for_each_write(n.instr, [&](Reg r) { w.regs.push_back(r); });
+    });
+    return w;
+}
+
+// True if a Return in `block` can end the enclosing Scope early (returns in
+// nested Scopes end those instead; Calls return from their own body).
+inline bool returns_early(const Block& block) {
+    for (const Node& n : block) {
+        if (n.kind == NodeKind::Return) return true;
+        if ((n.kind == NodeKind::If || n.kind == NodeKind::Loop) && (returns_early(n.body) || returns_early(n.alt)))
+            return true;
+    }
+    return false;
+}
+
+inline bool is_exit(NodeKind k) {
+    return k == NodeKind::Break || k == NodeKind::Continue || k == NodeKind::Return || k == NodeKind::Discard;
+}
+
+inline uint64_t node_count(const Block& block) {
+    uint64_t n = 0;
+    walk(block, [&](const Node&) { ++n; });
+    return n;
+}
+
+}  // namespace glslrun::ir::flow

@@ -1,0 +1,160 @@
+// Constant folding. Registers are not SSA, so a register is known to hold a
+// constant at a point only when its reaching definition is known: facts flow
+// through straight-line code, a nested block sees a copy of them, and at the
+// join every register the block may write is forgotten. Facts hold for the
+// lanes active at that point, which are the only lanes an instruction there
+// touches.
+#include <algorithm>
+#include <cstddef>
+#include <unordered_map>
+
+#include "ir/alu_eval.h"
+#include "ir/flow.h"
+#include "ir/passes.h"
+
+namespace glslrun::ir {
+namespace {
+
+using Facts = std::unordered_map<Reg, uint32_t>;
+
+// Same clamp as the interpreter's indexed accesses.
+uint32_t clamp_index(uint32_t raw, uint32_t count) {
+    int32_t i = static_cast<int32_t>(raw);
+    if (i < 0) return 0;
+    return std::min(static_cast<uint32_t>(i), count - 1);
+}
+
+void make_konst(Instr& in, uint32_t value) {
+    in.op = Op::konst;
+    in.src[0] = in.src[1] = in.src[2] = kNoReg;
+    in.imm[0] = value;
+    in.imm[1] = in.imm[2] = 0;
+}
+
+void make_mov(Instr& in, Reg dst, Reg src) {
+    in.op = Op::mov;
+    in.dst = dst;
+    in.src[0] = src;
+    in.src[1] = in.src[2] = kNoReg;
+    in.imm[0] = in.imm[1] = in.imm[2] = 0;
+}
+
+void forget(Facts& facts, const flow::Writes& writes) {
+    if (writes.calls) {
+        facts.clear();
+        return;
+    }
+    for (Reg r : writes.regs) facts.erase(r);
+}
+
+struct Folder {
+    const Shader& shader;
+
+    const uint32_t* known(const Facts& facts, Reg r) const {
+        auto it = facts.find(r);
+        return it == facts.end() ? nullptr : &it->second;
+    }
+
+    // Indexed accesses with a constant index become direct ones.
+    void fold_indexed(Instr& in, const Facts& facts) {
+        const uint32_t* index = known(facts, in.src[0]);
+        if (!index) return;
+        uint32_t element = in.imm[0] + clamp_index(*index, in.imm[1]) * in.imm[2];
+        if (in.op == Op::load_ind) {
+            make_mov(in, in.dst, element);
+        } else if (in.op == Op::store_ind) {
+            make_mov(in, element, in.src[1]);
+        } else if (in.op == Op::uniform_ind) {
+            in.op = Op::uniform;
+            in.src[0] = kNoReg;
+            in.imm[0] = element;
+            in.imm[1] = in.imm[2] = 0;
+        }
+    }
+
+    void instr(Instr& in, Facts& facts) {
+        if (in.op == Op::load_ind || in.op == Op::store_ind || in.op == Op::uniform_ind) fold_indexed(in, facts);
+        if (in.op == Op::sel) {
+            if (const uint32_t* c = known(facts, in.src[0])) make_mov(in, in.dst, *c ? in.src[1] : in.src[2]);
+        }
+        if (in.op == Op::mov) {
+            if (const uint32_t* v = known(facts, in.src[0])) make_konst(in, *v);
+        } else if (alu::is_alu(in.op)) {
+            int arity = op_info(in.op).arity;
+            uint32_t values[3] = {0, 0, 0};
+            bool all_known = true;
+            for (int k = 0; k < arity && all_known; ++k) {
+                const uint32_t* v = known(facts, in.src[k]);
+                all_known = v != nullptr;
+                if (v) values[k] = *v;
+            }
+            if (all_known) make_konst(in, alu::eval(in.op, values[0], values[1], values[2]));
+        }
+        flow::for_each_write(in, [&](Reg r) { facts.erase(r); });
+        if (in.op == Op::konst) facts[in.dst] = in.imm[0];
+    }
+
+    // Replaces block[i] (an If with a known condition) by the taken branch.
+    void splice_taken_branch(Block& block, size_t i, bool cond) {
+        Block taken = std::move(cond ? block[i].body : block[i].alt);
+        block.erase(block.begin() + std::ptrdiff_t(i));
+        block.insert(block.begin() + std::ptrdiff_t(i), std::make_move_iterator(taken.begin()),
+                     std::make_move_iterator(taken.end()));
+    }
+
+    void run_block(Block& block, Facts& facts) {
+        for (size_t i = 0; i < block.size();) {
+            Node& n = block[i];
+            switch (n.kind) {
+            case NodeKind::Instr: instr(n.instr, facts); break;
+            case NodeKind::If: {
+                if (const uint32_t* c = known(facts, n.cond)) {
+                    splice_taken_branch(block, i, *c != 0);
+                    continue;  // the spliced nodes are folded next
+                }
+                Facts then_facts = facts, else_facts = facts;
+                run_block(n.body, then_facts);
+                run_block(n.alt, else_facts);
+                forget(facts, flow::writes_of(n.body));
+                forget(facts, flow::writes_of(n.alt));
+                break;
+            }
+            case NodeKind::Loop: {
+                // Later iterations see the loop's own writes.
+                forget(facts, flow::writes_of(n.body));
+                forget(facts, flow::writes_of(n.alt));
+                Facts body_facts = facts, cont_facts = facts;
+                run_block(n.body, body_facts);
+                run_block(n.alt, cont_facts);
+                break;
+            }
+            case NodeKind::Scope:
+                if (flow::returns_early(n.body)) {
+                    Facts inner = facts;
+                    run_block(n.body, inner);
+                    forget(facts, flow::writes_of(n.body));
+                } else {
+                    run_block(n.body, facts);
+                }
+                break;
+            case NodeKind::Call: facts.clear(); break;
+            default: break;
+            }
+            ++i;
+        }
+    }
+};
+
+}  // namespace
+
+void fold_constants(Shader& shader) {
+    Folder folder{shader};
+    for (Function& f : shader.functions) {
+        Facts facts;
+        folder.run_block(f.body, facts);
+    }
+    Facts facts;
+    folder.run_block(shader.body, facts);
+}
+
+}  // namespace glslrun::ir

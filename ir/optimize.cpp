@@ -1,0 +1,46 @@
+// The pass pipeline: inline, then (fold, copyprop, dce) until nothing changes
+// (at most a few rounds). With GLSLRUN_VERIFY the verifier runs after every
+// pass and its first complaint is returned, naming the pass.
+#include <string>
+
+#include "ir/passes.h"
+
+namespace glslrun::ir {
+namespace {
+
+constexpr int kMaxRounds = 3;
+
+// Returns "" or "after <pass>: <verifier message>".
+std::string check(const Shader& shader, const char* pass) {
+#ifdef GLSLRUN_VERIFY
+    std::string error = verify(shader);
+    if (!error.empty()) return std::string("after ") + pass + ": " + error;
+#else
+    (void)shader;
+    (void)pass;
+#endif
+    return {};
+}
+
+}  // namespace
+
+std::string optimize(Shader& shader, const PassOptions& options) {
+    if (!options.optimize) return check(shader, "frontend");
+    std::string error = check(shader, "frontend");
+    if (!error.empty()) return error;
+    inline_calls(shader, options.inline_budget);
+    if (!(error = check(shader, "inline")).empty()) return error;
+    for (int round = 0; round < kMaxRounds; ++round) {
+        std::string before = print(shader);
+        fold_constants(shader);
+        if (!(error = check(shader, "fold")).empty()) return error;
+        propagate_copies(shader);
+        if (!(error = check(shader, "copyprop")).empty()) return error;
+        eliminate_dead_code(shader);
+        if (!(error = check(shader, "dce")).empty()) return error;
+        if (print(shader) == before) break;
+    }
+    return {};
+}
+
+}  // namespace glslrun::ir

@@ -1,0 +1,64 @@
+#include "raster/assemble.h"
+
+namespace glslrun::raster {
+
+namespace {
+
+void add_tri(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking) {
+    out.push_back({{a, b, c}, provoking, 3});
+}
+
+void add_line(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t provoking) {
+    out.push_back({{a, b, b}, provoking, 2});
+}
+
+void add_quad(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
+              uint32_t provoking) {
+    add_tri(out, a, b, c, provoking);
+    add_tri(out, a, c, d, provoking);
+}
+
+}  // namespace
+
+std::vector<AssembledPrim> assemble(Primitive prim, uint32_t n) {
+    std::vector<AssembledPrim> out;
+    switch (prim) {
+    case Primitive::Points:
+        for (uint32_t i = 0; i < n; ++i) out.push_back({{i, i, i}, i, 1});
+        break;
+    case Primitive::Lines:
+        for (uint32_t i = 0; i + 1 < n; i += 2) add_line(out, i, i + 1, i + 1);
+        break;
+    case Primitive::LineStrip:
+        for (uint32_t i = 0; i + 1 < n; ++i) add_line(out, i, i + 1, i + 1);
+        break;
+    case Primitive::LineLoop:
+        for (uint32_t i = 0; i + 1 < n; ++i) add_line(out, i, i + 1, i + 1);
+        if (n >= 2) add_line(out, n - 1, 0, 0);
+        break;
+    case Primitive::Triangles:
+        for (uint32_t i = 0; i + 2 < n; i += 3) add_tri(out, i, i + 1, i + 2, i + 2);
+        break;
+    case Primitive::TriangleStrip:
+        for (uint32_t i = 0; i + 2 < n; ++i) {
+            if (i % 2 == 0) add_tri(out, i, i + 1, i + 2, i + 2);
+            else add_tri(out, i + 1, i, i + 2, i + 2);
+        }
+        break;
+    case Primitive::TriangleFan:
+        for (uint32_t i = 1; i + 1 < n; ++i) add_tri(out, 0, i, i + 1, i + 1);
+        break;
+    case Primitive::Quads:
+        for (uint32_t i = 0; i + 3 < n; i += 4) add_quad(out, i, i + 1, i + 2, i + 3, i + 3);
+        break;
+    case Primitive::QuadStrip:
+        for (uint32_t i = 0; i + 3 < n; i += 2) add_quad(out, i, i + 1, i + 3, i + 2, i + 3);
+        break;
+    case Primitive::Polygon:
+        for (uint32_t i = 1; i + 1 < n; ++i) add_tri(out, 0, i, i + 1, 0);
+        break;
+    }
+    return out;
+}
+
+}  // namespace glslrun::raster

@@ -1,0 +1,56 @@
+// Triangle setup: snapping to the subpixel grid, edge equations and the fill rule.
+#include "raster/triangle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glslrun::raster {
+
+int64_t snap(float window_coord) {
+    float clamped = std::clamp(window_coord, -kMaxWindowCoord, kMaxWindowCoord);
+    return std::llround(double(clamped) * double(kSubpixelOne));
+}
+
+namespace {
+
+int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+}  // namespace
+
+std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor) {
+    TriangleSetup t;
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(win[i].x) || !std::isfinite(win[i].y)) return std::nullopt;
+        t.fx[i] = snap(win[i].x);
+        t.fy[i] = snap(win[i].y);
+    }
+    t.area2 = (t.fx[1] - t.fx[0]) * (t.fy[2] - t.fy[0]) - (t.fy[1] - t.fy[0]) * (t.fx[2] - t.fx[0]);
+    if (t.area2 == 0) return std::nullopt;
+    t.inv_area2 = 1.0 / double(t.area2);
+    for (int i = 0; i < 3; ++i) {
+        int a = (i + 1) % 3, b = (i + 2) % 3;
+        int64_t dx = t.fx[b] - t.fx[a], dy = t.fy[b] - t.fy[a];
+        // E(p) = dx * (py - ay) - dy * (px - ax)
+        t.ea[i] = -dy;
+        t.eb[i] = dx;
+        t.ec[i] = dy * t.fx[a] - dx * t.fy[a];
+        // The fill rule looks at the edge as walked counter-clockwise (y up):
+        // ties belong to left edges (walking down) and top edges (walking -x).
+        int64_t cdx = t.area2 > 0 ? dx : -dx, cdy = t.area2 > 0 ? dy : -dy;
+        bool inclusive = cdy < 0 || (cdy == 0 && cdx < 0);
+        t.bias[i] = inclusive ? 0 : -1;
+    }
+    int64_t min_x = std::min({t.fx[0], t.fx[1], t.fx[2]}), max_x = std::max({t.fx[0], t.fx[1], t.fx[2]});
+    int64_t min_y = std::min({t.fy[0], t.fy[1], t.fy[2]}), max_y = std::max({t.fy[0], t.fy[1], t.fy[2]});
+    // Pixel x is a candidate when its centre x*S + S/2 lies in [min_x, max_x].
+    auto first = [](int64_t lo) { return floor_div(lo - kSubpixelOne / 2 + kSubpixelOne - 1, kSubpixelOne); };
+    auto last = [](int64_t hi) { return floor_div(hi - kSubpixelOne / 2, kSubpixelOne); };
+    t.bbox.x0 = int(std::max<int64_t>(first(min_x), scissor.x0));
+    t.bbox.y0 = int(std::max<int64_t>(first(min_y), scissor.y0));
+    t.bbox.x1 = int(std::min<int64_t>(last(max_x) + 1, scissor.x1));
+    t.bbox.y1 = int(std::min<int64_t>(last(max_y) + 1, scissor.y1));
+    if (t.bbox.x0 >= t.bbox.x1 || t.bbox.y0 >= t.bbox.y1) return std::nullopt;
+    return t;
+}
+
+}  // namespace glslrun::raster

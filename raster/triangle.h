@@ -1,0 +1,81 @@
+// Triangle setup and coverage: fixed-point edge functions (8 subpixel bits),
+// pixel centres at +0.5, a top-left fill rule so that adjacent triangles
+// never leave cracks nor cover a pixel twice, and iteration over aligned 2x2
+// quads (GL window coordinates: y up, row 0 at the bottom).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+namespace glslrun::raster {
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int64_t kSubpixelOne = int64_t(1) << kSubpixelBits;
+// Window coordinates must stay within this many pixels of the origin so that
+// edge functions fit in 64 bits; clipping keeps them there (guard band).
+inline constexpr float kMaxWindowCoord = float(1 << 20);
+
+// Half-open pixel rectangle [x0, x1) x [y0, y1).
+struct Rect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// Quad coverage bits: bit 0 (x,y), 1 (x+1,y), 2 (x,y+1), 3 (x+1,y+1).
+inline constexpr int kQuadDx[4] = {0, 1, 0, 1};
+inline constexpr int kQuadDy[4] = {0, 0, 1, 1};
+
+struct TriangleSetup {
+    std::array<int64_t, 3> fx{}, fy{};  // snapped vertex positions
+    // Edge i is opposite vertex i: E_i(p) = a*px + b*py + c, with E_i(v_i) = area2.
+    std::array<int64_t, 3> ea{}, eb{}, ec{};
+    std::array<int64_t, 3> bias{};  // 0 if ties on the edge are inside (top-left), else -1
+    int64_t area2 = 0;              // twice the signed area in subpixel units (> 0: CCW)
+    double inv_area2 = 0;
+    Rect bbox;  // covered pixels lie inside, already clipped to the scissor
+};
+
+int64_t snap(float window_coord);
+
+// Returns nothing for degenerate triangles or ones outside the scissor.
+std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor);
+
+// Edge function values at the centre of pixel (x, y).
+inline std::array<int64_t, 3> edge_values(const TriangleSetup& t, int x, int y) {
+    int64_t px = int64_t(x) * kSubpixelOne + kSubpixelOne / 2;
+    int64_t py = int64_t(y) * kSubpixelOne + kSubpixelOne / 2;
+    return {t.ea[0] * px + t.eb[0] * py + t.ec[0], t.ea[1] * px + t.eb[1] * py + t.ec[1],
+            t.ea[2] * px + t.eb[2] * py + t.ec[2]};
+}
+
+inline bool covers(const TriangleSetup& t, const std::array<int64_t, 3>& e) {
+    int64_t s = t.area2 > 0 ? 1 : -1;
+    return s * e[0] + t.bias[0] >= 0 && s * e[1] + t.bias[1] >= 0 && s * e[2] + t.bias[2] >= 0;
+}
+
+// Screen-space (linear) barycentric weights at the centre of pixel (x, y).
+inline glm::dvec3 barycentric(const TriangleSetup& t, int x, int y) {
+    auto e = edge_values(t, x, y);
+    return {double(e[0]) * t.inv_area2, double(e[1]) * t.inv_area2, double(e[2]) * t.inv_area2};
+}
+
+// Calls visit(x, y, mask) for every 2x2 quad (x, y even) with at least one
+// covered pixel inside the scissor, bottom row first, left to right.
+template <class Visit>
+void for_each_quad(const TriangleSetup& t, const Rect& scissor, Visit&& visit) {
+    int x_begin = t.bbox.x0 & ~1, y_begin = t.bbox.y0 & ~1;
+    for (int y = y_begin; y < t.bbox.y1; y += 2) {
+        for (int x = x_begin; x < t.bbox.x1; x += 2) {
+            unsigned mask = 0;
+            for (int i = 0; i < 4; ++i) {
+                int px = x + kQuadDx[i], py = y + kQuadDy[i];
+                if (px < scissor.x0 || px >= scissor.x1 || py < scissor.y0 || py >= scissor.y1) continue;
+                if (covers(t, edge_values(t, px, py))) mask |= 1u << i;
+            }
+            if (mask) visit(x, y, mask);
+        }
+    }
+}
+
+}  // namespace glslrun::raster

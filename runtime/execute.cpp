@@ -1,0 +1,183 @@
+// run_vertices / run_fragments: the shaders alone, without rasterization.
+#include "runtime/execute.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace glslrun::exec {
+
+float lane_as_float(rt::Interpreter& interp, ir::Kind kind, ir::Reg r, int lane) {
+    uint32_t bits = interp.lanes(r)[lane];
+    switch (kind) {
+    case ir::Kind::F32: {
+        float f;
+        std::memcpy(&f, &bits, sizeof f);
+        return f;
+    }
+    case ir::Kind::I32: return float(int32_t(bits));
+    case ir::Kind::Bool: return bits ? 1.0f : 0.0f;
+    }
+    return 0.0f;
+}
+
+void set_lane(rt::Interpreter& interp, ir::Kind kind, ir::Reg r, int lane, float value) {
+    uint32_t bits = 0;
+    switch (kind) {
+    case ir::Kind::F32: std::memcpy(&bits, &value, sizeof bits); break;
+    case ir::Kind::I32: bits = uint32_t(int32_t(value)); break;
+    case ir::Kind::Bool: bits = value != 0.0f ? 1u : 0u; break;
+    }
+    interp.lanes(r)[lane] = bits;
+}
+
+Error run_error(const Program::State& state, ir::Stage stage, const rt::RunError& error) {
+    const std::string& file = stage == ir::Stage::Vertex ? state.vertex_name : state.fragment_name;
+    return Error(error.message, file, error.line);
+}
+
+namespace {
+
+// Where one shader input gets its values from.
+struct InputSource {
+    const ir::Binding* binding = nullptr;
+    const VertexAttrib* attrib = nullptr;  // null: the default below
+    glm::vec4 fallback{0, 0, 0, 1};
+};
+
+float default_component(uint32_t component, const glm::vec4& fallback) {
+    return component < 4 ? fallback[component] : (component % 4 == 3 ? 1.0f : 0.0f);
+}
+
+Result<std::vector<InputSource>> plan_inputs(const ir::Shader& shader,
+                                             const std::vector<VertexAttrib>& attribs, uint32_t count,
+                                             const GLState& current) {
+    std::vector<InputSource> plan;
+    for (const VertexAttrib& a : attribs) {
+        if (a.components == 0 || a.components > 16)
+            return Error(fmt::format("attribute '{}': {} components (1..16 allowed)", a.name, a.components));
+        if (a.data.size() < size_t(a.components) * count)
+            return Error(fmt::format("attribute '{}': {} values for {} elements of {} components", a.name,
+                                     a.data.size(), count, a.components));
+    }
+    for (const ir::Binding& b : shader.inputs) {
+        InputSource src{&b};
+        for (const VertexAttrib& a : attribs)
+            if (a.name == b.name) src.attrib = &a;
+        if (b.name == "gl_Color") src.fallback = current.current_color;
+        if (b.name == "gl_SecondaryColor") src.fallback = current.current_secondary_color;
+        if (b.name == "gl_Normal") src.fallback = glm::vec4(current.current_normal, 1.0f);
+        if (b.name == "gl_FrontFacing") src.fallback = {1, 0, 0, 1};
+        plan.push_back(src);
+    }
+    return plan;
+}
+
+void fill_input(rt::Interpreter& interp, const InputSource& src, int lane, uint32_t element) {
+    const ir::Binding& b = *src.binding;
+    for (uint32_t c = 0; c < b.count; ++c) {
+        float v = default_component(c, src.fallback);
+        if (src.attrib && c < src.attrib->components)
+            v = src.attrib->data[size_t(element) * src.attrib->components + c];
+        set_lane(interp, b.kind, b.first + c, lane, v);
+    }
+}
+
+std::vector<uint32_t> output_offsets(const ir::Shader& shader, uint32_t* stride) {
+    std::vector<uint32_t> offset;
+    *stride = 0;
+    for (const ir::Binding& b : shader.outputs) {
+        offset.push_back(*stride);
+        *stride += b.count;
+    }
+    return offset;
+}
+
+}  // namespace
+
+Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
+                                     uint32_t count, const GLState& current) {
+    const Program::State& st = program.state();
+    const ir::Shader& vs = st.ir.vertex;
+    auto plan = plan_inputs(vs, attribs, count, current);
+    if (!plan) return plan.error();
+    VertexOutputs out;
+    out.offset = output_offsets(vs, &out.stride);
+    out.data.assign(size_t(count) * out.stride, 0.0f);
+    rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations);
+    for (uint32_t base = 0; base < count; base += rt::kLanes) {
+        int n = int(std::min<uint32_t>(rt::kLanes, count - base));
+        for (int lane = 0; lane < n; ++lane)
+            for (const InputSource& src : *plan) fill_input(interp, src, lane, base + lane);
+        rt::LaneMask live = n == rt::kLanes ? rt::kAllLanes : (rt::LaneMask(1) << n) - 1;
+        rt::RunError error;
+        if (!interp.run(live, &error)) return run_error(st, ir::Stage::Vertex, error);
+        for (size_t o = 0; o < vs.outputs.size(); ++o) {
+            const ir::Binding& b = vs.outputs[o];
+            for (int lane = 0; lane < n; ++lane) {
+                float* dst = out.data.data() + size_t(base + lane) * out.stride + out.offset[o];
+                for (uint32_t c = 0; c < b.count; ++c) dst[c] = lane_as_float(interp, b.kind, b.first + c, lane);
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace glslrun::exec
+
+namespace glslrun {
+
+Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
+                                               uint32_t count) {
+    auto shaded = exec::shade_vertices(program, attribs, count, GLState{});
+    if (!shaded) return shaded.error();
+    const ir::Shader& vs = program.state().ir.vertex;
+    std::vector<ShaderOutput> outputs;
+    for (size_t o = 0; o < vs.outputs.size(); ++o) {
+        ShaderOutput out{vs.outputs[o].name, vs.outputs[o].count, {}};
+        out.data.reserve(size_t(count) * out.components);
+        for (uint32_t v = 0; v < count; ++v) {
+            const float* src = shaded->vertex(v) + shaded->offset[o];
+            out.data.insert(out.data.end(), src, src + out.components);
+        }
+        outputs.push_back(std::move(out));
+    }
+    return outputs;
+}
+
+Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
+                                                uint32_t count) {
+    const Program::State& st = program.state();
+    const ir::Shader& fs = st.ir.fragment;
+    auto plan = exec::plan_inputs(fs, inputs, count, GLState{});
+    if (!plan) return plan.error();
+    std::vector<ShaderOutput> outputs;
+    for (const ir::Binding& b : fs.outputs) outputs.push_back({b.name, b.count, std::vector<float>(size_t(count) * b.count)});
+    ShaderOutput discarded{"discarded", 1, std::vector<float>(count)};
+    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations);
+    for (uint32_t base = 0; base < count; base += rt::kLanes) {
+        int n = int(std::min<uint32_t>(rt::kLanes, count - base));
+        // Padding up to a whole quad repeats the last fragment as helper lanes.
+        int live_lanes = (n + 3) & ~3;
+        for (int lane = 0; lane < live_lanes; ++lane)
+            for (const auto& src : *plan) exec::fill_input(interp, src, lane, base + std::min(lane, n - 1));
+        rt::LaneMask live = live_lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << live_lanes) - 1;
+        rt::RunError error;
+        if (!interp.run(live, &error)) return exec::run_error(st, ir::Stage::Fragment, error);
+        rt::LaneMask alive = interp.alive();
+        for (int lane = 0; lane < n; ++lane) {
+            discarded.data[base + lane] = (alive >> lane) & 1u ? 0.0f : 1.0f;
+            for (size_t o = 0; o < fs.outputs.size(); ++o) {
+                const ir::Binding& b = fs.outputs[o];
+                for (uint32_t c = 0; c < b.count; ++c)
+                    outputs[o].data[size_t(base + lane) * b.count + c] =
+                        exec::lane_as_float(interp, b.kind, b.first + c, lane);
+            }
+        }
+    }
+    outputs.push_back(std::move(discarded));
+    return outputs;
+}
+
+}  // namespace glslrun

@@ -1,0 +1,163 @@
+// GLState defaults and the derivation of GLSL 1.10's built-in uniforms (§7.5)
+// from it. Derived values follow Mesa's state tracker (prog_statevars.c) where
+// the GL specification leaves the built-in's value open.
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <unordered_map>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "runtime/program_state.h"
+
+namespace glslrun {
+
+GLState::GLState() {
+    texture_matrix.fill(glm::mat4(1.0f));
+    lights[0].diffuse = {1, 1, 1, 1};
+    lights[0].specular = {1, 1, 1, 1};
+}
+
+namespace {
+
+using Emit = std::function<void(const std::string& name, const float* values, size_t count)>;
+
+void emit_vec(const Emit& emit, const std::string& name, const glm::vec4& v) { emit(name, &v[0], 4); }
+void emit_vec3(const Emit& emit, const std::string& name, const glm::vec3& v) { emit(name, &v[0], 3); }
+void emit_float(const Emit& emit, const std::string& name, float f) { emit(name, &f, 1); }
+
+// The four variants of one matrix: M, Inverse, Transpose, InverseTranspose.
+void emit_matrix_family(const Emit& emit, const std::string& base, const std::vector<glm::mat4>& ms) {
+    auto each = [&](const char* suffix, auto transform) {
+        std::vector<float> words;
+        for (const glm::mat4& m : ms) {
+            glm::mat4 t = transform(m);
+            words.insert(words.end(), &t[0][0], &t[0][0] + 16);
+        }
+        emit(base + suffix, words.data(), words.size());
+    };
+    each("", [](const glm::mat4& m) { return m; });
+    each("Inverse", [](const glm::mat4& m) { return glm::inverse(m); });
+    each("Transpose", [](const glm::mat4& m) { return glm::transpose(m); });
+    each("InverseTranspose", [](const glm::mat4& m) { return glm::inverseTranspose(m); });
+}
+
+glm::vec3 normalize_or_zero(glm::vec3 v) {
+    float len = glm::length(v);
+    return len > 0.0f ? v / len : v;
+}
+
+void emit_light(const Emit& emit, int i, const LightState& l) {
+    std::string p = fmt::format("gl_LightSource[{}].", i);
+    emit_vec(emit, p + "ambient", l.ambient);
+    emit_vec(emit, p + "diffuse", l.diffuse);
+    emit_vec(emit, p + "specular", l.specular);
+    emit_vec(emit, p + "position", l.position);
+    // Mesa: normalize(normalize(position.xyz) + (0,0,1)) for the infinite viewer, w = 1.
+    glm::vec3 half = normalize_or_zero(normalize_or_zero(glm::vec3(l.position)) + glm::vec3(0, 0, 1));
+    emit_vec(emit, p + "halfVector", glm::vec4(half, 1.0f));
+    emit_vec3(emit, p + "spotDirection", l.spot_direction);
+    emit_float(emit, p + "spotExponent", l.spot_exponent);
+    emit_float(emit, p + "spotCutoff", l.spot_cutoff);
+    float cos_cutoff = l.spot_cutoff == 180.0f ? -1.0f : std::cos(glm::radians(l.spot_cutoff));
+    emit_float(emit, p + "spotCosCutoff", cos_cutoff);
+    emit_float(emit, p + "constantAttenuation", l.constant_attenuation);
+    emit_float(emit, p + "linearAttenuation", l.linear_attenuation);
+    emit_float(emit, p + "quadraticAttenuation", l.quadratic_attenuation);
+}
+
+void emit_material(const Emit& emit, const std::string& side, const MaterialState& m,
+                   const GLState& gl) {
+    std::string p = "gl_" + side + "Material.";
+    emit_vec(emit, p + "emission", m.emission);
+    emit_vec(emit, p + "ambient", m.ambient);
+    emit_vec(emit, p + "diffuse", m.diffuse);
+    emit_vec(emit, p + "specular", m.specular);
+    emit_float(emit, p + "shininess", m.shininess);
+    // Mesa: rgb = emission + ambient * model ambient, alpha = diffuse alpha.
+    glm::vec4 scene = m.emission + m.ambient * gl.light_model_ambient;
+    scene.a = m.diffuse.a;
+    emit_vec(emit, "gl_" + side + "LightModelProduct.sceneColor", scene);
+    for (int i = 0; i < 8; ++i) {
+        const LightState& l = gl.lights[i];
+        std::string lp = fmt::format("gl_{}LightProduct[{}].", side, i);
+        emit_vec(emit, lp + "ambient", l.ambient * m.ambient);
+        emit_vec(emit, lp + "diffuse", l.diffuse * m.diffuse);
+        emit_vec(emit, lp + "specular", l.specular * m.specular);
+    }
+}
+
+void emit_matrices(const Emit& emit, const GLState& gl) {
+    emit_matrix_family(emit, "gl_ModelViewMatrix", {gl.modelview});
+    emit_matrix_family(emit, "gl_ProjectionMatrix", {gl.projection});
+    emit_matrix_family(emit, "gl_ModelViewProjectionMatrix", {gl.projection * gl.modelview});
+    emit_matrix_family(emit, "gl_TextureMatrix",
+                       std::vector<glm::mat4>(gl.texture_matrix.begin(), gl.texture_matrix.end()));
+    glm::mat3 normal = glm::inverseTranspose(glm::mat3(gl.modelview));
+    emit("gl_NormalMatrix", &normal[0][0], 9);
+    // Mesa: 1 / |row 2 of the inverse modelview's upper 3x3|.
+    glm::mat4 inv = glm::inverse(gl.modelview);
+    float f = inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2];
+    emit_float(emit, "gl_NormalScale", f < 1e-12f ? 1.0f : 1.0f / std::sqrt(f));
+}
+
+void emit_fixed_defaults(const Emit& emit, const GLState& gl) {
+    emit_float(emit, "gl_DepthRange.near", gl.depth_near);
+    emit_float(emit, "gl_DepthRange.far", gl.depth_far);
+    emit_float(emit, "gl_DepthRange.diff", gl.depth_far - gl.depth_near);
+    emit("gl_ClipPlane", &gl.clip_planes[0][0], 24);
+    emit_float(emit, "gl_Point.size", gl.point_size);
+    emit_float(emit, "gl_Point.sizeMin", 0.0f);
+    emit_float(emit, "gl_Point.sizeMax", 255.0f);
+    emit_float(emit, "gl_Point.fadeThresholdSize", 1.0f);
+    emit_float(emit, "gl_Point.distanceConstantAttenuation", 1.0f);
+    emit_float(emit, "gl_Point.distanceLinearAttenuation", 0.0f);
+    emit_float(emit, "gl_Point.distanceQuadraticAttenuation", 0.0f);
+    emit_vec(emit, "gl_LightModel.ambient", gl.light_model_ambient);
+    std::vector<float> zeros(8 * 4, 0.0f);
+    emit("gl_TextureEnvColor", zeros.data(), zeros.size());
+    const glm::vec4 planes[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+    const char* coord = "STRQ";
+    for (int c = 0; c < 4; ++c) {
+        std::vector<float> words;
+        for (int unit = 0; unit < 8; ++unit) words.insert(words.end(), &planes[c][0], &planes[c][0] + 4);
+        emit(fmt::format("gl_EyePlane{}", coord[c]), words.data(), words.size());
+        emit(fmt::format("gl_ObjectPlane{}", coord[c]), words.data(), words.size());
+    }
+    emit_vec(emit, "gl_Fog.color", glm::vec4(0.0f));
+    emit_float(emit, "gl_Fog.density", 1.0f);
+    emit_float(emit, "gl_Fog.start", 0.0f);
+    emit_float(emit, "gl_Fog.end", 1.0f);
+    emit_float(emit, "gl_Fog.scale", 1.0f);
+}
+
+void for_each_builtin(const GLState& gl, const Emit& emit) {
+    emit_matrices(emit, gl);
+    emit_fixed_defaults(emit, gl);
+    for (int i = 0; i < 8; ++i) emit_light(emit, i, gl.lights[i]);
+    emit_material(emit, "Front", gl.front_material, gl);
+    emit_material(emit, "Back", gl.back_material, gl);
+}
+
+}  // namespace
+
+Status apply_builtin_uniforms(Program& program, const GLState& gl) {
+    Program::State& st = program.state();
+    std::unordered_map<std::string_view, const ir::Uniform*> wanted;
+    for (const ir::Uniform& u : st.ir.uniforms)
+        if (u.builtin) wanted.emplace(u.name, &u);
+    if (wanted.empty()) return Ok{};
+    for_each_builtin(gl, [&](const std::string& name, const float* values, size_t count) {
+        auto it = wanted.find(name);
+        if (it == wanted.end()) return;
+        const ir::Uniform& u = *it->second;
+        size_t words = std::min<size_t>(count, size_t(u.type.components()) * u.array_size);
+        if (u.slot + words > st.uniforms.size()) return;  // malformed layout: never write past the store
+        std::memcpy(st.uniforms.data() + u.slot, values, words * sizeof(float));
+    });
+    return Ok{};
+}
+
+}  // namespace glslrun

@@ -1,0 +1,181 @@
+// The interpreter's instruction kernels: one function per opcode, each a loop
+// over the kLanes lanes of a batch. Alu kernels are generated from the opcode
+// table (ir/opcodes.def via ir/alu_eval.h); the Special ones are written by
+// name. Dispatch happens once per instruction (a function pointer per Step).
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "ir/alu_eval.h"
+#include "runtime/exec_mask.h"
+
+namespace glslrun::rt {
+
+struct Step;
+
+// What a kernel can touch: the register file, the uniform store, the mask.
+struct Machine {
+    uint32_t* regs = nullptr;  // register r lane i at regs[r * kLanes + i]
+    const uint32_t* uniforms = nullptr;
+    ExecMask mask;
+
+    // Masked register write: inactive lanes keep their old value.
+    void write(uint32_t* __restrict dst, const uint32_t* __restrict value) {
+        if (mask.full()) {
+            std::memcpy(dst, value, sizeof(uint32_t) * kLanes);
+            return;
+        }
+        const uint32_t* __restrict m = mask.words();
+        for (int i = 0; i < kLanes; ++i) dst[i] = (value[i] & m[i]) | (dst[i] & ~m[i]);
+    }
+};
+
+using Kernel = void (*)(const Step&, Machine&);
+
+// One compiled IR node. Blocks are ranges [begin, end) of a flat Step array.
+struct Step {
+    ir::NodeKind kind = ir::NodeKind::Instr;
+    Kernel fn = nullptr;  // Instr
+    uint32_t* dst = nullptr;
+    const uint32_t* src[3] = {nullptr, nullptr, nullptr};
+    uint32_t imm[3] = {0, 0, 0};
+    const uint32_t* cond = nullptr;  // If
+    uint32_t body_begin = 0, body_end = 0;  // If then / Loop body / Scope body
+    uint32_t alt_begin = 0, alt_end = 0;    // If else / Loop continue block
+    uint32_t callee = 0;                    // Call
+    int line = 0;
+};
+
+namespace kernels {
+
+inline uint32_t clamp_index(uint32_t raw, uint32_t count) {
+    int32_t i = static_cast<int32_t>(raw);
+    if (i < 0) return 0;
+    return std::min(static_cast<uint32_t>(i), count - 1);
+}
+
+template <ir::Op op>
+void alu(const Step& s, Machine& m) {
+    using L = ir::alu::Lane<op>;
+    alignas(64) uint32_t out[kLanes];
+    const uint32_t* __restrict a = s.src[0];
+    if constexpr (L::arity == 1) {
+        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], 0, 0);
+    } else if constexpr (L::arity == 2) {
+        const uint32_t* __restrict b = s.src[1];
+        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], 0);
+    } else {
+        const uint32_t* __restrict b = s.src[1];
+        const uint32_t* __restrict c = s.src[2];
+        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], c[i]);
+    }
+    m.write(s.dst, out);
+}
+
+inline void mov(const Step& s, Machine& m) {
+    alignas(64) uint32_t out[kLanes];
+    std::memcpy(out, s.src[0], sizeof out);
+    m.write(s.dst, out);
+}
+
+inline void konst(const Step& s, Machine& m) {
+    alignas(64) uint32_t out[kLanes];
+    for (int i = 0; i < kLanes; ++i) out[i] = s.imm[0];
+    m.write(s.dst, out);
+}
+
+inline void sel(const Step& s, Machine& m) {
+    alignas(64) uint32_t out[kLanes];
+    const uint32_t* __restrict c = s.src[0];
+    const uint32_t* __restrict x = s.src[1];
+    const uint32_t* __restrict y = s.src[2];
+    for (int i = 0; i < kLanes; ++i) {
+        uint32_t pick = 0u - (c[i] != 0);
+        out[i] = (x[i] & pick) | (y[i] & ~pick);
+    }
+    m.write(s.dst, out);
+}
+
+inline void uniform(const Step& s, Machine& m) {
+    alignas(64) uint32_t out[kLanes];
+    const uint32_t v = m.uniforms[s.imm[0]];
+    for (int i = 0; i < kLanes; ++i) out[i] = v;
+    m.write(s.dst, out);
+}
+
+inline void uniform_ind(const Step& s, Machine& m) {
+    alignas(64) uint32_t out[kLanes];
+    for (int i = 0; i < kLanes; ++i)
+        out[i] = m.uniforms[s.imm[0] + clamp_index(s.src[0][i], s.imm[1]) * s.imm[2]];
+    m.write(s.dst, out);
+}
+
+inline void load_ind(const Step& s, Machine& m) {
+    alignas(64) uint32_t out[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+        uint32_t r = s.imm[0] + clamp_index(s.src[0][i], s.imm[1]) * s.imm[2];
+        out[i] = m.regs[size_t(r) * kLanes + i];
+    }
+    m.write(s.dst, out);
+}
+
+// Each lane writes its own element, so only the active lanes store.
+inline void store_ind(const Step& s, Machine& m) {
+    LaneMask active = m.mask.active();
+    for (int i = 0; i < kLanes; ++i) {
+        if (!((active >> i) & 1)) continue;
+        uint32_t r = s.imm[0] + clamp_index(s.src[0][i], s.imm[1]) * s.imm[2];
+        m.regs[size_t(r) * kLanes + i] = s.src[1][i];
+    }
+}
+
+// Fine derivatives within each 2x2 quad: lanes 4q+0..3 are (x,y) (x+1,y)
+// (x,y+1) (x+1,y+1). Each row gets its own ddx, each column its own ddy.
+inline void ddx(const Step& s, Machine& m) {
+    alignas(64) float out[kLanes];
+    float v[kLanes];
+    std::memcpy(v, s.src[0], sizeof v);
+    for (int q = 0; q < kLanes; q += 4) {
+        float row0 = v[q + 1] - v[q + 0], row1 = v[q + 3] - v[q + 2];
+        out[q + 0] = out[q + 1] = row0;
+        out[q + 2] = out[q + 3] = row1;
+    }
+    uint32_t words[kLanes];
+    std::memcpy(words, out, sizeof words);
+    m.write(s.dst, words);
+}
+
+inline void ddy(const Step& s, Machine& m) {
+    alignas(64) float out[kLanes];
+    float v[kLanes];
+    std::memcpy(v, s.src[0], sizeof v);
+    for (int q = 0; q < kLanes; q += 4) {
+        float col0 = v[q + 2] - v[q + 0], col1 = v[q + 3] - v[q + 1];
+        out[q + 0] = out[q + 2] = col0;
+        out[q + 1] = out[q + 3] = col1;
+    }
+    uint32_t words[kLanes];
+    std::memcpy(words, out, sizeof words);
+    m.write(s.dst, words);
+}
+
+}  // namespace kernels
+
+// The kernel of every opcode: Alu ones from the table, Special ones by name.
+inline Kernel kernel_for(ir::Op op) {
+    switch (op) {
+#define GLSLRUN_KERNEL_Alu(name) \
+    case ir::Op::name: return &kernels::alu<ir::Op::name>;
+#define GLSLRUN_KERNEL_Special(name) \
+    case ir::Op::name: return &kernels::name;
+#define OP(name, arity, res, opnd, kind, expr) GLSLRUN_KERNEL_##kind(name)
+#include "ir/opcodes.def"
+#undef OP
+#undef GLSLRUN_KERNEL_Special
+#undef GLSLRUN_KERNEL_Alu
+    default: return nullptr;
+    }
+}
+
+}  // namespace glslrun::rt

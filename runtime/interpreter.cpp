@@ -1,0 +1,217 @@
+// The batched interpreter. The IR tree is compiled once into a flat array of
+// Steps with resolved operand pointers; running walks the structured control
+// flow recursively and masks lanes off (runtime/exec_mask.h).
+#include "runtime/interpreter.h"
+
+#include <cstring>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "runtime/interp_kernels.h"
+
+namespace glslrun::rt {
+
+namespace {
+
+// GLSL has no recursion, so call depth is bounded by the program; this only
+// guards against a malformed shader that calls itself.
+constexpr int kMaxCallDepth = 1024;
+
+struct AlignedWords {
+    static constexpr std::align_val_t kAlign{64};
+    uint32_t* data = nullptr;
+    explicit AlignedWords(size_t n) : data(static_cast<uint32_t*>(::operator new[](n * sizeof(uint32_t), kAlign))) {
+        std::memset(data, 0, n * sizeof(uint32_t));
+    }
+    ~AlignedWords() { ::operator delete[](data, kAlign); }
+    AlignedWords(const AlignedWords&) = delete;
+    AlignedWords& operator=(const AlignedWords&) = delete;
+};
+
+struct Range {
+    uint32_t begin = 0, end = 0;
+};
+
+}  // namespace
+
+struct Interpreter::Impl {
+    const ir::Shader& shader;
+    uint64_t max_loop_iterations;
+    // One extra register of zeros backs operands that an op does not read.
+    AlignedWords file;
+    Machine machine;
+    std::vector<Step> steps;
+    std::vector<Range> functions;
+    RunError error;
+    bool failed = false;
+    int call_depth = 0;
+
+    Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters)
+        : shader(s), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
+        machine.regs = file.data;
+        machine.uniforms = uniforms;
+        for (const ir::Function& f : s.functions) functions.push_back(compile_block(f.body));
+        main = compile_block(s.body);
+    }
+
+    Range main;
+
+    uint32_t* reg(ir::Reg r) {
+        if (r == ir::kNoReg || r >= shader.regs.size()) return file.data + shader.regs.size() * kLanes;
+        return file.data + size_t(r) * kLanes;
+    }
+
+    // Reserves the block's slots first so its Steps are contiguous; nested
+    // blocks are appended after it.
+    Range compile_block(const ir::Block& block) {
+        Range range{uint32_t(steps.size()), uint32_t(steps.size() + block.size())};
+        steps.resize(range.end);
+        for (size_t i = 0; i < block.size(); ++i) {
+            Step step = compile_node(block[i]);
+            steps[range.begin + i] = step;
+        }
+        return range;
+    }
+
+    Step compile_node(const ir::Node& n) {
+        Step s;
+        s.kind = n.kind;
+        s.line = n.loc.line;
+        switch (n.kind) {
+        case ir::NodeKind::Instr: {
+            const ir::Instr& in = n.instr;
+            s.fn = kernel_for(in.op);
+            s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
+            for (int k = 0; k < 3; ++k) {
+                s.src[k] = reg(in.src[k]);
+                s.imm[k] = in.imm[k];
+            }
+            break;
+        }
+        case ir::NodeKind::If: {
+            s.cond = reg(n.cond);
+            Range body = compile_block(n.body), alt = compile_block(n.alt);
+            s.body_begin = body.begin, s.body_end = body.end, s.alt_begin = alt.begin, s.alt_end = alt.end;
+            break;
+        }
+        case ir::NodeKind::Loop:
+        case ir::NodeKind::Scope: {
+            Range body = compile_block(n.body), alt = compile_block(n.alt);
+            s.body_begin = body.begin, s.body_end = body.end, s.alt_begin = alt.begin, s.alt_end = alt.end;
+            break;
+        }
+        case ir::NodeKind::Call: s.callee = n.callee; break;
+        default: break;
+        }
+        return s;
+    }
+
+    bool fail(std::string message, int line) {
+        if (!failed) error = RunError{std::move(message), line};
+        failed = true;
+        return false;
+    }
+
+    LaneMask lanes_true(const uint32_t* cond) const {
+        LaneMask m = 0;
+        for (int i = 0; i < kLanes; ++i) m |= LaneMask(cond[i] != 0) << i;
+        return m;
+    }
+
+    // Runs steps [begin, end) under the current mask; false on a run error.
+    bool run_block(uint32_t begin, uint32_t end) {
+        ExecMask& mask = machine.mask;
+        for (uint32_t i = begin; i < end; ++i) {
+            if (!mask.any()) return true;
+            const Step& s = steps[i];
+            switch (s.kind) {
+            case ir::NodeKind::Instr: s.fn(s, machine); break;
+            case ir::NodeKind::If:
+                if (!run_if(s)) return false;
+                break;
+            case ir::NodeKind::Loop:
+                if (!run_loop(s)) return false;
+                break;
+            case ir::NodeKind::Break: mask.do_break(); break;
+            case ir::NodeKind::Continue: mask.do_continue(); break;
+            case ir::NodeKind::Return: mask.do_return(); break;
+            case ir::NodeKind::Discard: mask.do_discard(); break;
+            case ir::NodeKind::Call:
+                if (s.callee >= functions.size()) return fail("call to a missing function", s.line);
+                if (!run_call(functions[s.callee].begin, functions[s.callee].end, s.line)) return false;
+                break;
+            case ir::NodeKind::Scope:
+                if (!run_call(s.body_begin, s.body_end, s.line)) return false;
+                break;
+            }
+        }
+        return true;
+    }
+
+    // A branch whose mask is empty is skipped entirely.
+    bool run_if(const Step& s) {
+        ExecMask& mask = machine.mask;
+        ExecMask::IfFrame frame = mask.if_push(lanes_true(s.cond));
+        if (mask.any() && !run_block(s.body_begin, s.body_end)) return false;
+        mask.if_else(frame);
+        if (mask.any() && !run_block(s.alt_begin, s.alt_end)) return false;
+        mask.if_pop(frame);
+        return true;
+    }
+
+    bool run_loop(const Step& s) {
+        ExecMask& mask = machine.mask;
+        ExecMask::LoopFrame frame = mask.loop_begin();
+        for (uint64_t iteration = 1;; ++iteration) {
+            if (iteration > max_loop_iterations)
+                return fail(fmt::format("loop exceeded {} iterations", max_loop_iterations), s.line);
+            if (!run_block(s.body_begin, s.body_end)) return false;
+            mask.loop_continue_block(frame);
+            if (mask.any() && !run_block(s.alt_begin, s.alt_end)) return false;
+            if (!mask.loop_iteration_end(frame)) break;
+        }
+        mask.loop_end(frame);
+        return true;
+    }
+
+    bool run_call(uint32_t begin, uint32_t end, int line) {
+        if (++call_depth > kMaxCallDepth) return fail("call depth exceeded (recursion?)", line);
+        ExecMask& mask = machine.mask;
+        ExecMask::CallFrame frame = mask.call_begin();
+        bool ok = run_block(begin, end);
+        mask.call_end(frame);
+        --call_depth;
+        return ok;
+    }
+
+    bool run(LaneMask live) {
+        failed = false;
+        call_depth = 0;
+        error = {};
+        machine.mask.reset(live & kAllLanes);
+        ExecMask::CallFrame frame = machine.mask.call_begin();
+        bool ok = run_block(main.begin, main.end);
+        machine.mask.call_end(frame);
+        return ok;
+    }
+};
+
+Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations)
+    : impl_(std::make_unique<Impl>(shader, uniforms, max_loop_iterations)) {}
+
+Interpreter::~Interpreter() = default;
+
+uint32_t* Interpreter::lanes(ir::Reg r) { return impl_->reg(r); }
+
+bool Interpreter::run(LaneMask live, RunError* error) {
+    bool ok = impl_->run(live);
+    if (!ok && error) *error = impl_->error;
+    return ok;
+}
+
+LaneMask Interpreter::alive() const { return impl_->machine.mask.alive(); }
+
+}  // namespace glslrun::rt

@@ -1,0 +1,128 @@
+// Program: compile (frontend + IR passes), the uniform store with glUniform
+// semantics, and introspection.
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "ir/passes.h"
+#include "runtime/program_state.h"
+
+#if __has_include("frontend/compile.h")
+#include "frontend/compile.h"
+#define GLSLRUN_HAVE_FRONTEND 1
+#endif
+
+namespace glslrun {
+
+Program::Program() : state_(std::make_unique<State>()) {}
+Program::Program(Program&&) noexcept = default;
+Program& Program::operator=(Program&&) noexcept = default;
+Program::~Program() = default;
+
+Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
+                                 const std::vector<ShaderSource>& fragment,
+                                 const CompileOptions& options) {
+#ifdef GLSLRUN_HAVE_FRONTEND
+    Result<ir::Program> lowered = frontend::compile_program(vertex, fragment, options);
+    if (!lowered) return lowered.error();
+    Program program;
+    State& st = *program.state_;
+    st.ir = std::move(lowered.value());
+    ir::PassOptions passes{options.optimize, options.inline_budget};
+    for (ir::Shader* shader : {&st.ir.vertex, &st.ir.fragment}) {
+        std::string problem = ir::optimize(*shader, passes);
+        if (!problem.empty()) return Error("internal error: " + problem);
+    }
+    st.uniforms.assign(st.ir.uniform_words, 0u);
+    if (!vertex.empty()) st.vertex_name = vertex.front().name;
+    if (!fragment.empty()) st.fragment_name = fragment.front().name;
+    return program;
+#else
+    return Error("internal error: glslrun was built without a frontend");
+#endif
+}
+
+namespace {
+
+// Finds the leaf and checks that `count` values fit from the named element on.
+Result<const ir::Uniform*> locate(const ir::Program& p, std::string_view name, size_t count,
+                                  uint32_t* element) {
+    const ir::Uniform* u = ir::find_uniform(p, std::string(name), element);
+    if (!u) return Error(fmt::format("no active uniform named '{}'", name));
+    uint32_t comps = u->type.components();
+    if (count == 0 || count % comps != 0)
+        return Error(fmt::format("uniform '{}' has {} components per element; got {} values", name,
+                                 comps, count));
+    size_t elements = count / comps;
+    if (*element + elements > u->array_size)
+        return Error(fmt::format("uniform '{}' has {} elements; {} values from element {} overflow it",
+                                 name, u->array_size, elements, *element));
+    return u;
+}
+
+}  // namespace
+
+Status Program::set_uniform(std::string_view name, std::span<const float> values) {
+    uint32_t element = 0;
+    auto found = locate(state_->ir, name, values.size(), &element);
+    if (!found) return found.error();
+    const ir::Uniform& u = **found;
+    if (u.type.is_sampler || u.type.kind == ir::Kind::I32)
+        return Error(fmt::format("uniform '{}' is an integer type; it takes ints, not floats", name));
+    uint32_t* dst = state_->uniforms.data() + u.slot + element * u.type.components();
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (u.type.kind == ir::Kind::Bool)
+            dst[i] = values[i] != 0.0f ? 1u : 0u;
+        else
+            std::memcpy(&dst[i], &values[i], sizeof(float));
+    }
+    return Ok{};
+}
+
+Status Program::set_uniform(std::string_view name, std::span<const int32_t> values) {
+    uint32_t element = 0;
+    auto found = locate(state_->ir, name, values.size(), &element);
+    if (!found) return found.error();
+    const ir::Uniform& u = **found;
+    if (u.type.kind == ir::Kind::F32 && !u.type.is_sampler)
+        return Error(fmt::format("uniform '{}' is a float type; it takes floats, not ints", name));
+    uint32_t* dst = state_->uniforms.data() + u.slot + element * u.type.components();
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (u.type.kind == ir::Kind::Bool)
+            dst[i] = values[i] != 0 ? 1u : 0u;
+        else
+            dst[i] = uint32_t(values[i]);
+    }
+    return Ok{};
+}
+
+bool Program::has_uniform(std::string_view name) const {
+    uint32_t element = 0;
+    return ir::find_uniform(state_->ir, std::string(name), &element) != nullptr;
+}
+
+namespace {
+
+std::string glsl_type_name(const ir::ValueType& t) {
+    if (t.is_sampler) return "sampler";
+    if (t.cols > 1)
+        return t.cols == t.rows ? fmt::format("mat{}", t.cols) : fmt::format("mat{}x{}", t.cols, t.rows);
+    const char* scalar = t.kind == ir::Kind::F32 ? "float" : t.kind == ir::Kind::I32 ? "int" : "bool";
+    const char* prefix = t.kind == ir::Kind::F32 ? "vec" : t.kind == ir::Kind::I32 ? "ivec" : "bvec";
+    return t.rows == 1 ? std::string(scalar) : fmt::format("{}{}", prefix, t.rows);
+}
+
+}  // namespace
+
+std::vector<UniformInfo> Program::uniforms() const {
+    std::vector<UniformInfo> out;
+    for (const ir::Uniform& u : state_->ir.uniforms)
+        out.push_back({u.name, glsl_type_name(u.type), u.array_size, u.builtin});
+    return out;
+}
+
+std::string Program::dump_ir() const { return ir::print(state_->ir); }
+
+const ir::Program& Program::ir() const { return state_->ir; }
+
+}  // namespace glslrun

@@ -1,0 +1,19 @@
+// Program::State: what a compiled Program owns. Shared by runtime/program.cpp,
+// runtime/gl_state.cpp, runtime/execute.cpp and raster/draw.cpp.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "glslrun/glslrun.h"
+#include "ir/ir.h"
+
+namespace glslrun {
+
+struct Program::State {
+    ir::Program ir;
+    std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
+    std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
+};
+
+}  // namespace glslrun

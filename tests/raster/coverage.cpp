@@ -1,0 +1,137 @@
+// Edge functions and the fill rule: adjacent triangles cover every pixel
+// exactly once, whatever the subpixel positions of the shared vertices.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <vector>
+
+#include "raster/triangle.h"
+
+using namespace glslrun::raster;
+
+namespace {
+
+// Counts how often each pixel of a W x H target is covered.
+struct HitCounter {
+    int w, h;
+    std::vector<int> hits;
+    HitCounter(int width, int height) : w(width), h(height), hits(size_t(width) * height, 0) {}
+    void draw(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+        Rect scissor{0, 0, w, h};
+        auto setup = setup_triangle({a, b, c}, scissor);
+        if (!setup) return;
+        for_each_quad(*setup, scissor, [&](int x, int y, unsigned mask) {
+            REQUIRE(x % 2 == 0);
+            REQUIRE(y % 2 == 0);
+            for (int i = 0; i < 4; ++i)
+                if ((mask >> i) & 1u) ++hits[size_t(y + kQuadDy[i]) * w + x + kQuadDx[i]];
+        });
+    }
+    int at(int x, int y) const { return hits[size_t(y) * w + x]; }
+};
+
+}  // namespace
+
+TEST_CASE("a jittered grid of triangles covers every pixel exactly once", "[raster][coverage]") {
+    for (unsigned seed : {1u, 2u, 3u, 4u}) {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> jitter(-2.4f, 2.4f);
+        const int n = 8, cell = 7, size = 64;
+        // Grid points beyond the target so the whole target is inside the mesh.
+        std::vector<glm::vec2> grid;
+        for (int j = 0; j <= n + 1; ++j)
+            for (int i = 0; i <= n + 1; ++i) {
+                bool border = i == 0 || j == 0 || i == n + 1 || j == n + 1;
+                glm::vec2 p(float(i * cell) - 4.0f, float(j * cell) - 4.0f);
+                if (!border) p += glm::vec2(jitter(rng), jitter(rng));
+                // Some vertices exactly on pixel centres and pixel edges.
+                if ((i + j) % 5 == 0) p = glm::floor(p) + glm::vec2(0.5f);
+                if ((i + j) % 7 == 0) p = glm::floor(p);
+                grid.push_back(p);
+            }
+        HitCounter counter(size, size);
+        auto at = [&](int i, int j) { return grid[size_t(j) * (n + 2) + i]; };
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                // Alternate the diagonal and the winding to exercise both orientations.
+                if ((i + j) % 2) {
+                    counter.draw(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+                    counter.draw(at(i, j), at(i, j + 1), at(i + 1, j + 1));  // clockwise
+                } else {
+                    counter.draw(at(i, j), at(i + 1, j), at(i, j + 1));
+                    counter.draw(at(i + 1, j + 1), at(i, j + 1), at(i + 1, j));
+                }
+            }
+        const int inside = n * cell - 8;  // the mesh's interior covers [0, inside)^2 for sure
+        for (int y = 0; y < inside; ++y)
+            for (int x = 0; x < inside; ++x) {
+                INFO("seed " << seed << " pixel " << x << "," << y);
+                REQUIRE(counter.at(x, y) == 1);
+            }
+    }
+}
+
+TEST_CASE("a fan around a shared centre covers the disc exactly once", "[raster][coverage]") {
+    HitCounter counter(40, 40);
+    glm::vec2 centre(20.0f, 20.0f);  // on a pixel corner: four pixel centres are equidistant
+    const int spokes = 16;
+    for (int i = 0; i < spokes; ++i) {
+        float a0 = float(i) / spokes * 6.2831853f, a1 = float(i + 1) / spokes * 6.2831853f;
+        counter.draw(centre, centre + 18.0f * glm::vec2(std::cos(a0), std::sin(a0)),
+                     centre + 18.0f * glm::vec2(std::cos(a1), std::sin(a1)));
+    }
+    for (int y = 8; y < 32; ++y)
+        for (int x = 8; x < 32; ++x) {
+            INFO("pixel " << x << "," << y);
+            REQUIRE(counter.at(x, y) == 1);
+        }
+}
+
+TEST_CASE("pixel centres and the top-left rule on an axis-aligned square", "[raster][coverage]") {
+    HitCounter counter(8, 8);
+    // The square [1,5]^2 split along its diagonal: exactly pixels 1..4 in x and y.
+    counter.draw({1, 1}, {5, 1}, {5, 5});
+    counter.draw({1, 1}, {5, 5}, {1, 5});
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            INFO("pixel " << x << "," << y);
+            REQUIRE(counter.at(x, y) == ((x >= 1 && x <= 4 && y >= 1 && y <= 4) ? 1 : 0));
+        }
+    // A triangle whose edges pass exactly through pixel centres: the left
+    // edge (x = 0.5) is inside, the horizontal bottom edge (y = 0.5) is not
+    // (its interior is above it), the hypotenuse walks up-left (not inside).
+    HitCounter tri(8, 8);
+    tri.draw({0.5f, 0.5f}, {4.5f, 0.5f}, {0.5f, 4.5f});
+    std::vector<std::pair<int, int>> expected;
+    for (int y = 1; y <= 3; ++y)
+        for (int x = 0; x + y <= 3; ++x) expected.push_back({x, y});
+    int total = 0;
+    for (int i = 0; i < 64; ++i) total += tri.hits[i];
+    CHECK(total == int(expected.size()));
+    for (auto [x, y] : expected) CHECK(tri.at(x, y) == 1);
+}
+
+TEST_CASE("degenerate and off-screen triangles produce nothing", "[raster][coverage]") {
+    Rect scissor{0, 0, 16, 16};
+    CHECK_FALSE(setup_triangle({glm::vec2(1, 1), glm::vec2(5, 5), glm::vec2(9, 9)}, scissor));
+    CHECK_FALSE(setup_triangle({glm::vec2(20, 1), glm::vec2(30, 1), glm::vec2(25, 9)}, scissor));
+    CHECK_FALSE(setup_triangle({glm::vec2(NAN, 1), glm::vec2(30, 1), glm::vec2(25, 9)}, scissor));
+    // A thin sliver between pixel centres covers nothing but must not crash.
+    auto sliver = setup_triangle({glm::vec2(0.6f, 0.6f), glm::vec2(10.4f, 0.6f), glm::vec2(0.6f, 0.61f)}, scissor);
+    int hits = 0;
+    if (sliver) for_each_quad(*sliver, scissor, [&](int, int, unsigned) { ++hits; });
+    CHECK(hits == 0);
+}
+
+TEST_CASE("barycentric weights are exact at pixel centres", "[raster][coverage]") {
+    Rect scissor{0, 0, 16, 16};
+    auto t = setup_triangle({glm::vec2(0.5f, 0.5f), glm::vec2(8.5f, 0.5f), glm::vec2(0.5f, 8.5f)}, scissor);
+    REQUIRE(t);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            glm::dvec3 l = barycentric(*t, x, y);
+            CHECK(l.x + l.y + l.z == Approx(1.0));
+            CHECK(l.y == Approx(x / 8.0));
+            CHECK(l.z == Approx(y / 8.0));
+        }
+}

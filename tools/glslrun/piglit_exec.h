@@ -1,0 +1,27 @@
+// Runs one piglit test with the glslrun library: shader_runner semantics for
+// .shader_test, glslparsertest semantics for .vert/.frag.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "piglit_parse.h"
+#include "piglit_suite.h"
+
+namespace glslrun::piglit {
+
+struct RunOptions {
+    double time_limit_s = 120;  // checked between commands; loop caps stop runaway shaders
+    uint64_t max_loop_iterations = 0;  // 0: the library's default
+    Capabilities caps;
+};
+
+// Dispatches on the extension; never throws for bad input (it becomes a fail).
+TestResult run_test_file(const std::string& path, const RunOptions& options);
+
+// `dir` resolves [... shader file] sections.
+TestResult run_shader_test(const std::string& text, const std::string& dir, const RunOptions& options);
+// `ext` is the file's extension (".vert", ".frag", ...); `name` appears in diagnostics.
+TestResult run_parser_test(const std::string& text, const std::string& ext, const std::string& name,
+                           const RunOptions& options);
+
+}  // namespace glslrun::piglit
