@@ -2,6 +2,7 @@
 #include "frontend/diagnostics.h"
 
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -59,6 +60,7 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
     std::istringstream in(log);
     std::string line;
     bool last_kept = false;
+    std::set<std::string> reported;
     while (std::getline(in, line)) {
         std::smatch m;
         if (std::regex_match(line, m, located)) {
@@ -66,8 +68,13 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
             last_kept = false;
             if (token.empty() && text == "compilation terminated") continue;
             std::string message = token.empty() ? text : fmt::format("'{}' : {}", token, text);
-            out.push_back(Diagnostic{resolve_name(m[2].str(), sources), std::stoi(m[3].str()), message,
-                                     m[1].str() == "WARNING"});
+            std::string file = resolve_name(m[2].str(), sources);
+            int line_no = std::stoi(m[3].str());
+            // Later errors on a line that already has one are cascades of
+            // the first (glslang recovers by inventing a declaration).
+            bool warning = m[1].str() == "WARNING";
+            if (!warning && !reported.insert(fmt::format("{}:{}", m[2].str(), line_no)).second) continue;
+            out.push_back(Diagnostic{file, line_no, message, warning});
             last_kept = true;
         } else if (std::regex_match(line, m, global)) {
             std::string text = trim(m[2].str());

@@ -1,6 +1,7 @@
 // Driving glslang: parse every unit, link each stage on its own (our own
 // cross-stage rules replace glslang's, which reject legal gl_TexCoord size
 // differences), then lower both stages with one uniform table.
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <set>
@@ -13,6 +14,7 @@
 
 #include "frontend/compile.h"
 #include "frontend/diagnostics.h"
+#include "frontend/fold_workaround.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
 
@@ -72,6 +74,7 @@ struct StageUnits {
     EShLanguage lang;
     std::vector<ShaderSource> sources;
     std::vector<std::string> names;  // "#i", kept alive until parse() returns
+    std::vector<std::string> texts;  // sources after the fold workaround
     std::vector<std::unique_ptr<glslang::TShader>> shaders;
     std::unique_ptr<glslang::TProgram> program;
     std::string first_file() const { return sources.empty() ? std::string() : sources[0].name; }
@@ -81,11 +84,15 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
     const TBuiltInResource res = resources();
     bool ok = true;
     st.names.clear();
-    for (size_t i = 0; i < st.sources.size(); ++i) st.names.push_back(internal_source_name(i));
+    st.texts.clear();
+    for (size_t i = 0; i < st.sources.size(); ++i) {
+        st.names.push_back(internal_source_name(i));
+        st.texts.push_back(rewrite_bool_literal_compares(st.sources[i].text));
+    }
     for (size_t i = 0; i < st.sources.size(); ++i) {
         auto sh = std::make_unique<glslang::TShader>(st.lang);
-        const char* text = st.sources[i].text.c_str();
-        int len = int(st.sources[i].text.size());
+        const char* text = st.texts[i].c_str();
+        int len = int(st.texts[i].size());
         const char* name = st.names[i].c_str();
         sh->setStringsWithLengthsAndNames(&text, &len, &name, 1);
         // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
@@ -107,32 +114,44 @@ bool link_units(StageUnits& st, std::vector<Diagnostic>& diags) {
     return ok;
 }
 
-// GLSL 1.10 §4.3: a global may be initialized in only one compilation unit.
+// A global initialized in several compilation units must get the same
+// constant value in each (GLSL 1.10 §4.3, as Mesa links it); a non-constant
+// initializer may appear in only one unit.
+std::string initializer_key(glslang::TIntermTyped* init) {
+    glslang::TIntermConstantUnion* c = init->getAsConstantUnion();
+    if (!c) return {};
+    std::string key = "=";
+    const glslang::TConstUnionArray& values = c->getConstArray();
+    for (int i = 0; i < values.size(); ++i) key += fmt::format("{},", values[i].getDConst() + values[i].getIConst() + values[i].getBConst());
+    return key;
+}
+
 void check_global_initializers(const StageUnits& st, std::vector<Diagnostic>& diags) {
     if (st.shaders.size() < 2) return;
-    std::map<std::string, int> count;
+    std::map<std::string, std::vector<std::string>> inits;
     for (const auto& sh : st.shaders) {
         TIntermNode* root = sh->getIntermediate()->getTreeRoot();
         if (!root || !root->getAsAggregate()) continue;
-        std::set<std::string> here;
         for (TIntermNode* child : root->getAsAggregate()->getSequence()) {
             glslang::TIntermAggregate* seq = child->getAsAggregate();
             if (!seq || seq->getOp() != glslang::EOpSequence) continue;
             for (TIntermNode* n : seq->getSequence()) {
                 glslang::TIntermBinary* b = n->getAsBinaryNode();
                 if (b && b->getOp() == glslang::EOpAssign && b->getLeft()->getAsSymbolNode())
-                    here.insert(b->getLeft()->getAsSymbolNode()->getName().c_str());
+                    inits[b->getLeft()->getAsSymbolNode()->getName().c_str()].push_back(initializer_key(b->getRight()));
             }
         }
-        for (const std::string& name : here) ++count[name];
     }
-    for (const auto& [name, n] : count)
-        if (n > 1)
+    for (const auto& [name, keys] : inits) {
+        if (keys.size() < 2) continue;
+        bool same = std::all_of(keys.begin(), keys.end(), [&](const std::string& k) { return !k.empty() && k == keys[0]; });
+        if (!same)
             diags.push_back(Diagnostic{st.first_file(), 0,
-                                       fmt::format("global variable '{}' is initialized in more than one "
-                                                   "compilation unit",
+                                       fmt::format("global variable '{}' has different or non-constant initializers "
+                                                   "in several compilation units",
                                                    name),
                                        false});
+    }
 }
 
 bool has_errors(const std::vector<Diagnostic>& diags) {
@@ -178,7 +197,7 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
     if (vs.empty() && fs.empty()) return Error("no shaders to link");
     PoolScope pool;
     std::vector<Diagnostic> diags;
-    StageUnits units[2] = {{EShLangVertex, vs, {}, {}, {}}, {EShLangFragment, fs, {}, {}, {}}};
+    StageUnits units[2] = {{EShLangVertex, vs, {}, {}, {}, {}}, {EShLangFragment, fs, {}, {}, {}, {}}};
     if (vs.empty()) units[0].sources = {ShaderSource{"", kFixedFunctionVertex}};
     if (fs.empty()) units[1].sources = {ShaderSource{"", kFixedFunctionFragment}};
     bool parsed = true;
@@ -212,7 +231,7 @@ Status check_shader(Stage stage, const ShaderSource& source, int default_version
     init_glslang();
     PoolScope pool;
     std::vector<Diagnostic> diags;
-    StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}};
+    StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}, {}};
     bool ok = parse_units(st, default_version, diags);
     if (!ok || has_errors(diags)) return to_error(std::move(diags));
     return Ok{};

@@ -40,8 +40,12 @@ Access StageLowering::uniform_variable(const std::string& name, const gl::TType&
     const UniformTable::Var* v = uniforms_.declare(name, type, name.rfind("gl_", 0) == 0, &err);
     Access a;
     if (!v) {
-        fail(nullptr, err);
-        return materialize(zeros(type));
+        diags_.push_back(Diagnostic{file_, 0, err, false});
+        std::vector<Kind> kinds;
+        flatten_kinds(type, kinds);
+        a.base = new_range(kinds);
+        a.comps = all_comps(uint32_t(kinds.size()));
+        return a;
     }
     a.uniform = true;
     a.base = v->slot;

@@ -48,16 +48,21 @@ FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
 }
 
 // The FS attribute vector of a (possibly clipped) vertex.
-const float* fs_attrs(DrawContext& c, const float* vs_attrs, bool back) {
+float* fs_attrs(DrawContext& c, const float* vs_attrs, bool back) {
     float* dst = c.arena.alloc(c.stage.attr_count());
     c.stage.gather(vs_attrs, c.vs.offset, back, dst);
     return dst;
 }
 
-void apply_flat_colors(DrawContext& c, uint32_t provoking_id, bool back, std::vector<FsVertex>& verts) {
-    if (!c.gl.flat_shading) return;
-    const float* flat = fs_attrs(c, c.vertices[provoking_id].attrs, back);
-    for (FsVertex& v : verts) c.stage.copy_colors(flat, const_cast<float*>(v.attrs));
+// Gives every vertex the provoking vertex's colours (glShadeModel(GL_FLAT)).
+void set_attrs(DrawContext& c, const std::vector<const float*>& vs_attrs, uint32_t provoking_id, bool back,
+               std::vector<FsVertex>& verts) {
+    const float* flat = c.gl.flat_shading ? fs_attrs(c, c.vertices[provoking_id].attrs, back) : nullptr;
+    for (size_t i = 0; i < verts.size(); ++i) {
+        float* attrs = fs_attrs(c, vs_attrs[i], back);
+        if (flat) c.stage.copy_colors(flat, attrs);
+        verts[i].attrs = attrs;
+    }
 }
 
 double signed_area(const std::vector<FsVertex>& poly) {
@@ -94,8 +99,9 @@ void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t 
     bool front = (area > 0) == c.gl.front_ccw;
     if (c.gl.cull_face && front != c.gl.cull_back) return;
     bool back_colors = c.gl.vertex_program_two_side && !front;
-    for (size_t i = 0; i < poly.size(); ++i) verts[i].attrs = fs_attrs(c, poly[i].attrs, back_colors);
-    apply_flat_colors(c, provoking_id, back_colors, verts);
+    std::vector<const float*> vs_attrs;
+    for (const ClipVertex& v : poly) vs_attrs.push_back(v.attrs);
+    set_attrs(c, vs_attrs, provoking_id, back_colors, verts);
     for (size_t k = 1; k + 1 < verts.size(); ++k) {
         FsPrimitive prim;
         prim.v = {verts[0], verts[k], verts[k + 1]};
@@ -110,9 +116,7 @@ void draw_line(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t prov
     if (ca & cb) return;
     if ((ca | cb) && !clip_segment(a, b, c.clip, c.arena)) return;
     std::vector<FsVertex> verts{to_window(c, a.pos), to_window(c, b.pos)};
-    verts[0].attrs = fs_attrs(c, a.attrs, false);
-    verts[1].attrs = fs_attrs(c, b.attrs, false);
-    apply_flat_colors(c, provoking_id, false, verts);
+    set_attrs(c, {a.attrs, b.attrs}, provoking_id, false, verts);
     FsPrimitive prim;
     prim.v = {verts[0], verts[1], verts[1]};
     prim.count = 2;

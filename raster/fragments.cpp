@@ -147,7 +147,10 @@ void FragmentStage::flush() {
         size_t pixel = size_t(y) * fb_.width + x;
         if (gl_.depth_test) {
             float z = lane_z_[lane];
-            if (depth_out_) z = std::clamp(exec::lane_as_float(in, depth_out_->kind, depth_out_->first, lane), 0.0f, 1.0f);
+            if (depth_out_) {
+                float written = exec::lane_as_float(in, depth_out_->kind, depth_out_->first, lane);
+                z = written > 0.0f ? std::min(written, 1.0f) : 0.0f;  // NaN -> 0
+            }
             if (!depth_passes(gl_.depth_func, z, fb_.depth[pixel])) continue;
             fb_.depth[pixel] = z;
         }

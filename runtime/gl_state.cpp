@@ -22,6 +22,10 @@ GLState::GLState() {
 
 namespace {
 
+// Texture-unit arrays are emitted this long; apply_builtin_uniforms copies as
+// many elements as the program declares.
+constexpr int kMaxUnits = 32;
+
 using Emit = std::function<void(const std::string& name, const float* values, size_t count)>;
 
 void emit_vec(const Emit& emit, const std::string& name, const glm::vec4& v) { emit(name, &v[0], 4); }
@@ -93,8 +97,10 @@ void emit_matrices(const Emit& emit, const GLState& gl) {
     emit_matrix_family(emit, "gl_ModelViewMatrix", {gl.modelview});
     emit_matrix_family(emit, "gl_ProjectionMatrix", {gl.projection});
     emit_matrix_family(emit, "gl_ModelViewProjectionMatrix", {gl.projection * gl.modelview});
-    emit_matrix_family(emit, "gl_TextureMatrix",
-                       std::vector<glm::mat4>(gl.texture_matrix.begin(), gl.texture_matrix.end()));
+    // glslang may size the texture-unit arrays beyond GLState's 8 units: those are identity.
+    std::vector<glm::mat4> textures(kMaxUnits, glm::mat4(1.0f));
+    std::copy(gl.texture_matrix.begin(), gl.texture_matrix.end(), textures.begin());
+    emit_matrix_family(emit, "gl_TextureMatrix", textures);
     glm::mat3 normal = glm::inverseTranspose(glm::mat3(gl.modelview));
     emit("gl_NormalMatrix", &normal[0][0], 9);
     // Mesa: 1 / |row 2 of the inverse modelview's upper 3x3|.
@@ -116,13 +122,13 @@ void emit_fixed_defaults(const Emit& emit, const GLState& gl) {
     emit_float(emit, "gl_Point.distanceLinearAttenuation", 0.0f);
     emit_float(emit, "gl_Point.distanceQuadraticAttenuation", 0.0f);
     emit_vec(emit, "gl_LightModel.ambient", gl.light_model_ambient);
-    std::vector<float> zeros(8 * 4, 0.0f);
+    std::vector<float> zeros(kMaxUnits * 4, 0.0f);
     emit("gl_TextureEnvColor", zeros.data(), zeros.size());
     const glm::vec4 planes[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
     const char* coord = "STRQ";
     for (int c = 0; c < 4; ++c) {
         std::vector<float> words;
-        for (int unit = 0; unit < 8; ++unit) words.insert(words.end(), &planes[c][0], &planes[c][0] + 4);
+        for (int unit = 0; unit < kMaxUnits; ++unit) words.insert(words.end(), &planes[c][0], &planes[c][0] + 4);
         emit(fmt::format("gl_EyePlane{}", coord[c]), words.data(), words.size());
         emit(fmt::format("gl_ObjectPlane{}", coord[c]), words.data(), words.size());
     }

@@ -1,5 +1,6 @@
 // Program: compile (frontend + IR passes), the uniform store with glUniform
 // semantics, and introspection.
+#include <algorithm>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -19,6 +20,21 @@ Program::Program(Program&&) noexcept = default;
 Program& Program::operator=(Program&&) noexcept = default;
 Program::~Program() = default;
 
+namespace {
+
+// GLSL 1.20 uniform initializers: the IR carries them once ir::Program has a
+// `uniform_defaults` member (uniform_words words); until then uniforms start at 0.
+template <class IrProgram>
+void initialise_uniforms(const IrProgram& ir, std::vector<uint32_t>& store) {
+    store.assign(ir.uniform_words, 0u);
+    if constexpr (requires { ir.uniform_defaults.size(); }) {
+        size_t n = std::min(store.size(), ir.uniform_defaults.size());
+        std::copy(ir.uniform_defaults.begin(), ir.uniform_defaults.begin() + n, store.begin());
+    }
+}
+
+}  // namespace
+
 Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
                                  const std::vector<ShaderSource>& fragment,
                                  const CompileOptions& options) {
@@ -33,7 +49,7 @@ Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
         std::string problem = ir::optimize(*shader, passes);
         if (!problem.empty()) return Error("internal error: " + problem);
     }
-    st.uniforms.assign(st.ir.uniform_words, 0u);
+    initialise_uniforms(st.ir, st.uniforms);
     if (!vertex.empty()) st.vertex_name = vertex.front().name;
     if (!fragment.empty()) st.fragment_name = fragment.front().name;
     return program;

@@ -36,8 +36,11 @@ TEST_CASE("perspective-correct interpolation matches the analytic value", "[api]
     Framebuffer fb(32, 32, true);
     fb.clear_color({-1, -1, -1, -1});
     GLState gl;
-    // Clip coordinates with different w; window positions are xy/w mapped to 32x32.
-    const glm::vec4 clip[3] = {{-0.9f, -0.9f, 0.0f, 1.0f}, {1.6f, -1.8f, 1.0f, 2.0f}, {-2.0f, 3.2f, -2.0f, 4.0f}};
+    // Clip coordinates with different w. The window positions (xy/w + 1) * 16
+    // lie on the 1/256 subpixel grid, so snapping does not move them.
+    const glm::vec4 clip[3] = {{3.25f / 16 - 1, 2.5f / 16 - 1, 0.0f, 1.0f},
+                               {(29.75f / 16 - 1) * 2, (5.0f / 16 - 1) * 2, 1.0f, 2.0f},
+                               {(6.0f / 16 - 1) * 4, (28.5f / 16 - 1) * 4, -2.0f, 4.0f}};
     const float t[3] = {0.0f, 10.0f, 100.0f};
     VertexAttrib pos{"gl_Vertex", 4, {}}, attr{"t", 1, {t[0], t[1], t[2]}};
     for (const auto& c : clip) pos.data.insert(pos.data.end(), {c.x, c.y, c.z, c.w});
@@ -57,12 +60,8 @@ TEST_CASE("perspective-correct interpolation matches the analytic value", "[api]
             glm::dvec2 pc(x + 0.5, y + 0.5);
             auto cross = [](glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; };
             double area = cross(win[1] - win[0], win[2] - win[0]);
-            double l1 = cross(pc - win[0], win[2] - win[0]) / -area * -1.0;
-            l1 = cross(win[2] - win[0], pc - win[0]) / area;  // weight of vertex 2
-            double l0 = cross(pc - win[0], win[1] - win[0]) / -area;  // placeholder, recomputed below
-            (void)l0;
-            double b1 = cross(pc - win[0], win[2] - win[0]) / area;  // vertex 1
-            double b2 = l1;                                          // vertex 2
+            double b1 = cross(pc - win[0], win[2] - win[0]) / area;  // weight of vertex 1
+            double b2 = cross(win[1] - win[0], pc - win[0]) / area;  // weight of vertex 2
             double b0 = 1.0 - b1 - b2;
             REQUIRE(b0 >= -1e-6);
             REQUIRE(b1 >= -1e-6);
@@ -126,7 +125,10 @@ void main() { depth = -(gl_ModelViewMatrix * gl_Vertex).z; gl_Position = ftransf
         INFO("row " << y);
         if (y_ndc < -1.0 / 40.0 + 1e-3) {  // floor visible, nearer than z = -40
             REQUIRE(got.a == 1.0f);
-            CHECK(got.r == Approx(-1.0 / y_ndc).epsilon(1e-3));
+            // Near the horizon depth changes by d^2/16 per pixel, so the
+            // 1/256-pixel vertex snapping allows a relative error of about d/4096.
+            double d = -1.0 / y_ndc;
+            CHECK(got.r == Approx(d).epsilon(1e-3 + d / 2048));
         } else if (y_ndc > 0) {
             CHECK(got.a == -1.0f);  // above the horizon: nothing
         }
@@ -213,7 +215,7 @@ TEST_CASE("user clip planes clip with gl_ClipVertex", "[api][draw]") {
 
 TEST_CASE("points and lines", "[api][draw]") {
     Program sized = compile("void main() { gl_Position = gl_Vertex; gl_PointSize = 3.0; }",
-                            "void main() { gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }");
+                            "#version 120\nvoid main() { gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }");
     GLState gl;
     Framebuffer fb(16, 16, true);
     // Window centres (4.5, 4.5) and (10, 10) (a pixel corner).
@@ -226,7 +228,7 @@ TEST_CASE("points and lines", "[api][draw]") {
     CHECK(fb.pixel(6, 5).a == 0.0f);
     CHECK(fb.pixel(3, 3).r == Approx(1.0f / 6.0f));  // gl_PointCoord: s right, t down
     CHECK(fb.pixel(3, 3).g == Approx(5.0f / 6.0f));
-    CHECK(fb.pixel(9, 9).a == 1.0f);   // even-centred 3x3: pixels 9..11? centre 10 -> floor(10-1.5+0.5) = 9
+    CHECK(fb.pixel(9, 9).a == 1.0f);  // centre 10: pixels floor(10 - 1.5 + 0.5) = 9 .. 11
     CHECK(fb.pixel(11, 11).a == 1.0f);
     CHECK(fb.pixel(8, 8).a == 0.0f);
     Program plain = compile("void main() { gl_Position = gl_Vertex; }", api_test::kPassFs);
@@ -240,7 +242,7 @@ TEST_CASE("points and lines", "[api][draw]") {
     stats = draw(plain, gl, loop, Primitive::LineLoop,
                  {positions({-0.5f, -0.5f, 0, 1, 0.5f, -0.5f, 0, 1, 0.5f, 0.5f, 0, 1, -0.5f, 0.5f, 0, 1})}, 4);
     REQUIRE(stats.ok());
-    CHECK(stats->fragments_written == 32u);  // four sides of 8 pixels, no pixel twice
+    CHECK(stats->fragments_written == 32u);  // four sides of 8 pixels (the corner (4,4) twice)
 }
 
 TEST_CASE("discarded fragments are not written", "[api][draw]") {
@@ -257,4 +259,66 @@ TEST_CASE("discarded fragments are not written", "[api][draw]") {
     CHECK(fb.pixel(3, 0) == glm::vec4(0.0f));
     CHECK(fb.depth[3] == 1.0f);
     CHECK(fb.pixel(4, 0) == glm::vec4(1.0f));
+}
+
+TEST_CASE("the lecture's quad covers as many pixels as llvmpipe", "[api][draw][lecture]") {
+    // notes/scenes.md: gluPerspective(45, 1, 1, 100), gluLookAt(0,0,5, 0,0,0, 0,1,0),
+    // the quad (-1,-1)..(1,1) at z = 0 covers 61504 pixels at 512x512.
+    Program p = compile("void main() { gl_FrontColor = gl_Color; gl_Position = ftransform(); }",
+                        "void main() { gl_FragColor = gl_Color; }");
+    GLState gl;
+    gl.projection = glm::perspective(glm::radians(45.0f), 1.0f, 1.0f, 100.0f);
+    gl.modelview = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+    gl.depth_test = true;
+    Framebuffer fb(512, 512);
+    fb.clear_color({0, 0, 0, 1});
+    VertexAttrib pos{"gl_Vertex", 3, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}};
+    VertexAttrib col{"gl_Color", 3, {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 0}};
+    auto stats = draw(p, gl, fb, Primitive::Quads, {pos, col}, 4);
+    REQUIRE(stats.ok());
+    CHECK(stats->fragments_written == 61504u);
+    // The 0-2 diagonal (red to blue) is magenta-ish in the middle.
+    glm::vec4 mid = fb.pixel(256, 256);
+    CHECK(mid.r == Approx(0.5f).margin(0.02f));
+    CHECK(mid.g == Approx(0.0f).margin(0.02f));
+    CHECK(mid.b == Approx(0.5f).margin(0.02f));
+}
+
+TEST_CASE("results do not depend on how fragments are batched", "[api][draw]") {
+    // The same mesh drawn in one call and triangle by triangle fills the
+    // shader batches differently; the images must be identical.
+    Program p = compile(R"(
+varying vec2 uv;
+void main() { uv = gl_Vertex.xy * 3.0; gl_Position = gl_Vertex; }
+)", R"(
+varying vec2 uv;
+void main() {
+    float d = dFdx(uv.x) + dFdy(uv.y);
+    gl_FragColor = vec4(fract(uv), d * 10.0, 1.0);
+}
+)");
+    GLState gl;
+    VertexAttrib pos{"gl_Vertex", 2, {-0.9f, -0.8f, 0.7f, -0.95f, 0.1f, 0.9f, 0.95f, 0.6f, -0.7f, 0.3f, 0.2f, -0.1f}};
+    std::vector<uint32_t> idx{0, 1, 5, 1, 3, 5, 3, 2, 5, 2, 4, 5, 4, 0, 5};
+    Framebuffer all(48, 40, true), one_by_one(48, 40, true);
+    REQUIRE(draw(p, gl, all, Primitive::Triangles, {pos}, 6, idx).ok());
+    for (size_t t = 0; t < idx.size(); t += 3)
+        REQUIRE(draw(p, gl, one_by_one, Primitive::Triangles, {pos}, 6, std::span(idx).subspan(t, 3)).ok());
+    CHECK(all.color == one_by_one.color);
+    CHECK(count_written(all, glm::vec4(0.0f)) > 500);
+}
+
+TEST_CASE("a huge triangle is clipped to the guard band and covers the screen once", "[api][draw]") {
+    Program p = compile("void main() { gl_Position = gl_Vertex; }", api_test::kPassFs);
+    GLState gl;
+    Framebuffer fb(20, 20);
+    auto stats = draw(p, gl, fb, Primitive::Triangles,
+                      {positions({-1e7f, -1e7f, 0, 1, 3e7f, -1e7f, 0, 1, -1e7f, 3e7f, 0, 1})}, 3);
+    REQUIRE(stats.ok());
+    CHECK(stats->fragments_written == 400u);
+    // NaN and infinite positions are dropped, not drawn or crashed on.
+    stats = draw(p, gl, fb, Primitive::Triangles,
+                 {positions({NAN, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, INFINITY, 0, 0, 1, 1, 1, 0, 1, 0, 1, 0, 0})}, 6);
+    REQUIRE(stats.ok());
+    CHECK(stats->fragments_written == 0u);
 }

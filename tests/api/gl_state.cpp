@@ -1,5 +1,7 @@
 // GLState -> built-in uniforms: derived matrices, lights, materials, ranges,
 // checked through a vertex shader that reads them.
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "helpers.h"
@@ -148,4 +150,53 @@ TEST_CASE("lights, materials and products of the lecture scenes", "[api][glstate
     // The projection of the lecture (notes/scenes.md) through ftransform.
     check_vec(vec(*outs, "ft"), gl.projection * glm::vec4(0, 0, -5, 1), 1e-5f);
     CHECK(gl.projection[2][2] == Approx(-1.020202f));
+}
+
+#include "runtime/program_state.h"
+
+TEST_CASE("every built-in uniform leaf the frontend declares gets a value", "[api][glstate]") {
+    Program p = compile(R"(
+varying vec4 sink;
+void main() {
+    vec4 s = vec4(0.0);
+    s += gl_ModelViewMatrixInverseTranspose[0] + gl_ProjectionMatrixInverse[1] + gl_ModelViewProjectionMatrixTranspose[2];
+    s += gl_TextureMatrixInverseTranspose[3][1] + gl_TextureMatrixInverse[0][0] + gl_ModelViewMatrixTranspose[3];
+    s += gl_ProjectionMatrixTranspose[0] + gl_ProjectionMatrixInverseTranspose[1] + gl_ModelViewProjectionMatrixInverse[2];
+    s += gl_ModelViewProjectionMatrixInverseTranspose[3] + gl_ModelViewMatrixInverse[0];
+    s.xyz += gl_NormalMatrix[1] * gl_NormalScale;
+    s += vec4(gl_DepthRange.near, gl_DepthRange.far, gl_DepthRange.diff, 0.0) + gl_ClipPlane[5];
+    s += vec4(gl_Point.size, gl_Point.sizeMin, gl_Point.sizeMax, gl_Point.fadeThresholdSize);
+    s += vec4(gl_Point.distanceConstantAttenuation, gl_Point.distanceLinearAttenuation,
+              gl_Point.distanceQuadraticAttenuation, 0.0);
+    s += gl_FrontMaterial.emission + gl_BackMaterial.ambient + gl_FrontMaterial.diffuse + gl_BackMaterial.specular;
+    s.x += gl_FrontMaterial.shininess + gl_BackMaterial.shininess;
+    for (int i = 0; i < 2; ++i) {
+        s += gl_LightSource[i].ambient + gl_LightSource[i].diffuse + gl_LightSource[i].specular;
+        s += gl_LightSource[i].position + gl_LightSource[i].halfVector;
+        s.xyz += gl_LightSource[i].spotDirection;
+        s += vec4(gl_LightSource[i].spotExponent, gl_LightSource[i].spotCutoff, gl_LightSource[i].spotCosCutoff,
+                  gl_LightSource[i].constantAttenuation + gl_LightSource[i].linearAttenuation
+                  + gl_LightSource[i].quadraticAttenuation);
+        s += gl_FrontLightProduct[i].ambient + gl_BackLightProduct[i].diffuse + gl_FrontLightProduct[i].specular;
+    }
+    s += gl_LightModel.ambient + gl_FrontLightModelProduct.sceneColor + gl_BackLightModelProduct.sceneColor;
+    s += gl_TextureEnvColor[1] + gl_EyePlaneS[0] + gl_EyePlaneT[1] + gl_EyePlaneR[2] + gl_EyePlaneQ[3];
+    s += gl_ObjectPlaneS[0] + gl_ObjectPlaneT[1] + gl_ObjectPlaneR[2] + gl_ObjectPlaneQ[3];
+    s += gl_Fog.color + vec4(gl_Fog.density, gl_Fog.start, gl_Fog.end, gl_Fog.scale);
+    sink = s;
+    gl_Position = ftransform();
+}
+)", "varying vec4 sink; void main() { gl_FragColor = sink; }");
+    Program::State& st = p.state();
+    const uint32_t sentinel = 0xdeadbeefu;
+    std::fill(st.uniforms.begin(), st.uniforms.end(), sentinel);
+    REQUIRE(apply_builtin_uniforms(p, GLState{}).ok());
+    int builtins = 0;
+    for (const ir::Uniform& u : st.ir.uniforms) {
+        if (!u.builtin) continue;
+        ++builtins;
+        INFO(u.name);
+        for (uint32_t w = 0; w < u.type.components() * u.array_size; ++w) REQUIRE(st.uniforms[u.slot + w] != sentinel);
+    }
+    CHECK(builtins > 40);
 }

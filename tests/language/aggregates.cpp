@@ -185,23 +185,22 @@ TEST_CASE("whole-struct assignment, == and !=", "[aggregates]") {
     auto outs = eval_vs(R"(
 attribute vec4 a, c;
 varying vec4 o;
-struct S { vec2 v; int n; float arr[2]; };
+struct S { vec2 v; int n; mat2 m; };   // 1.10: no whole-struct ops with array members
 void main() {
     S s;
     s.v = a.xy;
     s.n = int(c.x);
-    s.arr[0] = a.z;
-    s.arr[1] = a.w;
+    s.m = mat2(a.z, a.w, a.x, a.y);
     S t = s;                  // copy
     t.n += 1;                 // does not touch s
     S u;
     u = s;
-    if (c.y > 0.0) u.arr[1] = 0.5;   // differs only in an array member on some lanes
+    if (c.y > 0.0) u.m[1][1] = 0.5;   // differs only deep in a member, on some lanes
     o = vec4(float(s == t), float(s == u), float(s != u), float(t.n - s.n));
     gl_Position = vec4(0.0);
 })");
     check_output(outs, "o", 4, [](uint32_t l) {
-        bool differs = in_c(l).y > 0.0f && in_a(l).w != 0.5f;
+        bool differs = in_c(l).y > 0.0f && in_a(l).y != 0.5f;
         return glm::vec4(0.0f, b2f(!differs), b2f(differs), 1.0f);
     }, kExact);
 }
@@ -270,4 +269,36 @@ void main() {
         float arr[3] = {x, x + 1, x + 2};
         return glm::vec4(arr[0], arr[1], arr[2], i == 0 ? -5.0f : arr[i]);
     }, kTight);
+}
+
+// glslrun's documented choice (ir/opcodes.def, load_ind/store_ind): a
+// dynamic index out of range is clamped to the nearest element, for reads
+// and writes; it never touches another variable.
+TEST_CASE("out-of-range dynamic indices clamp and touch nothing else", "[aggregates]") {
+    auto outs = eval_vs(R"(
+attribute vec4 c;
+varying vec4 o1, o2;
+void main() {
+    float before = 1.0;
+    float arr[3];
+    float after = 2.0;
+    arr[0] = 10.0; arr[1] = 20.0; arr[2] = 30.0;
+    int i = int(c.y) * 3;          // -12 .. 12: mostly out of range
+    float got = arr[i];
+    arr[i] = -1.0;
+    vec4 v = vec4(5.0, 6.0, 7.0, 8.0);
+    float vg = v[i];
+    o1 = vec4(got, vg, before, after);
+    o2 = vec4(arr[0], arr[1], arr[2], 0.0);
+    gl_Position = vec4(0.0);
+})");
+    auto clamped = [](uint32_t l, int n) { return std::clamp(int(in_c(l).y) * 3, 0, n - 1); };
+    check_output(outs, "o1", 4, [&](uint32_t l) {
+        return glm::vec4(10.0f * float(clamped(l, 3) + 1), 5.0f + float(clamped(l, 4)), 1.0f, 2.0f);
+    }, kExact);
+    check_output(outs, "o2", 4, [&](uint32_t l) {
+        glm::vec4 r(10, 20, 30, 0);
+        r[clamped(l, 3)] = -1.0f;
+        return r;
+    }, kExact);
 }

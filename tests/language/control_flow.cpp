@@ -293,3 +293,61 @@ void main() {
     auto outs = run_vs(program, std_attribs());
     check_output(outs, "o", 1, [](uint32_t l) { return glm::vec4(100.0f + in_c(l).z * 50.0f); }, kExact);
 }
+
+TEST_CASE("scopes: shadowing in blocks and loops", "[control]") {
+    auto outs = eval_vs(R"(
+attribute vec4 a, c;
+varying vec4 o;
+float x = 100.0;                 // global, shadowed below
+void main() {
+    float r = x;
+    float x = a.x;               // shadows the global
+    {
+        float x = 2.0;           // shadows the local
+        r += x;
+    }
+    float sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        float x = float(i);      // a fresh x each iteration
+        sum += x;
+    }
+    int i = int(c.z);            // the loop's i is gone
+    if (c.x > 0.0) { float x = -1.0; r += x; }
+    o = vec4(r, x, sum, float(i));
+    gl_Position = vec4(0.0);
+})");
+    check_output(outs, "o", 4, [](uint32_t l) {
+        glm::vec4 a = in_a(l), c = in_c(l);
+        return glm::vec4(102.0f - (c.x > 0 ? 1.0f : 0.0f), a.x, 3.0f, c.z);
+    }, kExact);
+}
+
+TEST_CASE("continue in do-while goes to the condition; side effects in loop conditions",
+          "[control]") {
+    auto outs = eval_vs(R"(
+attribute vec4 c;
+varying vec4 o;
+int calls;
+int next(inout int i) { calls++; i++; return i; }
+void main() {
+    int i = 0, odds = 0, n = int(c.z) + 3;    // 3..6
+    do {
+        i++;
+        if (i == (i / 2) * 2) continue;       // skip the rest for even i
+        odds--;
+    } while (i < n);
+    calls = 0;
+    int j = int(c.w);
+    int seen = 0;
+    while (next(j) < 3) seen++;
+    o = vec4(float(i), float(odds), float(seen), float(calls));
+    gl_Position = vec4(0.0);
+})");
+    check_output(outs, "o", 4, [](uint32_t l) {
+        int n = int(in_c(l).z) + 3, i = 0, odd = 0;
+        do { i++; if (i % 2 == 0) continue; odd--; } while (i < n);
+        int j = int(in_c(l).w), seen = 0, calls = 0;
+        while ((++calls, ++j) < 3) seen++;
+        return glm::vec4(float(i), float(odd), float(seen), float(calls));
+    }, kExact);
+}

@@ -187,3 +187,57 @@ TEST_CASE("the corrected lecture shaders compile", "[diagnostics]") {
     INFO((result ? std::string() : result.error().str()));
     CHECK(result.ok());
 }
+
+TEST_CASE("other compile and link errors are reported, not crashed on", "[diagnostics]") {
+    auto compile = [](const char* vs, const char* fs) {
+        return glslrun::Program::compile({{"x.vert", vs}}, {{"x.frag", fs}});
+    };
+    auto expect_failure = [](const glslrun::Result<glslrun::Program>& result) {
+        REQUIRE_FALSE(result.ok());
+        INFO(result.error().str());
+        CHECK_FALSE(result.error().diagnostics.empty());
+        CHECK_FALSE(result.error().str().empty());
+    };
+    SECTION("discard in a vertex shader") {
+        auto r = compile("void main() {\n    discard;\n}\n", kGoodFs);
+        expect_error_at(r, "x.vert", {2});
+    }
+    SECTION("recursion") {
+        expect_failure(compile("float f(float x);\nfloat g(float x) { return f(x); }\n"
+                               "float f(float x) { return g(x) + 1.0; }\n"
+                               "void main() { gl_Position = vec4(f(1.0)); }\n",
+                               kGoodFs));
+    }
+    SECTION("no main") {
+        expect_failure(compile("float f() { return 1.0; }\n", kGoodFs));
+    }
+    SECTION("fragment varying not declared in the vertex shader") {
+        expect_failure(compile(kGoodVs, "varying vec3 missing;\nvoid main() { gl_FragColor = vec4(missing, 1.0); }\n"));
+    }
+    SECTION("varying types differ between the stages") {
+        expect_failure(compile("varying vec3 n;\nvoid main() { n = vec3(1.0); gl_Position = vec4(0.0); }\n",
+                               "varying vec4 n;\nvoid main() { gl_FragColor = n; }\n"));
+    }
+    SECTION("assigning to a uniform and to an attribute") {
+        auto r = compile("uniform float u;\nattribute vec4 a;\nvoid main() {\n    u = 1.0;\n"
+                         "    a = vec4(0.0);\n    gl_Position = vec4(u);\n}\n", kGoodFs);
+        expect_error_at(r, "x.vert", {4});
+        expect_error_at(r, "x.vert", {5});
+    }
+    SECTION("empty source") {
+        expect_failure(compile("", kGoodFs));
+    }
+}
+
+TEST_CASE("a runaway loop's error names the shader", "[diagnostics]") {
+    auto program = compile_or_fail("attribute vec4 a;\nvoid main() {\n    float x = a.x;\n"
+                                   "    while (x < 1e30 || x > -1e30) x += 1.0;\n"
+                                   "    gl_Position = vec4(x);\n}\n",
+                                   kGoodFs);
+    program.exec.max_loop_iterations = 64;
+    auto result = glslrun::run_vertices(program, std_attribs(), kVerts);
+    REQUIRE_FALSE(result.ok());
+    INFO(result.error().str());
+    CHECK(result.error().str().find("loop") != std::string::npos);
+    CHECK(result.error().str().find("test.vert:4:") != std::string::npos);
+}

@@ -273,3 +273,81 @@ void main() {
         return glm::vec4(r, calls, 0.0f);
     }, kTight);
 }
+
+TEST_CASE("const in parameters and functions in another unit of the stage", "[functions]") {
+    const char* lib = "float scaled(const in float x, const float k) { return x * k; }\n";
+    const char* main_vs = R"(
+attribute vec4 a;
+varying vec4 o;
+float scaled(const in float x, const float k);
+void main() {
+    o = vec4(scaled(a.x, 3.0), scaled(a.y, a.z), 0.0, 0.0);
+    gl_Position = vec4(0.0);
+})";
+    auto result = glslrun::Program::compile({{"lib.vert", lib}, {"main.vert", main_vs}},
+                                            {{"f.frag", "void main() { gl_FragColor = vec4(1.0); }\n"}});
+    if (!result) FAIL(result.error().str());
+    auto outs = run_vs(*result, std_attribs());
+    check_output(outs, "o", 2, [](uint32_t l) {
+        glm::vec4 a = in_a(l);
+        return glm::vec4(a.x * 3.0f, a.y * a.z, 0, 0);
+    }, kTight);
+}
+
+TEST_CASE("the same function nested in its own arguments", "[functions]") {
+    // Functions have static frames: an inner call must finish with its frame
+    // before the outer call copies its arguments in.
+    auto outs = eval_vs(R"(
+attribute vec4 a;
+varying vec4 o;
+float add2(float x, float y) { float t = x + 2.0 * y; return t; }
+void swap_into(inout vec2 v, out float first) { first = v.x; v = v.yx; }
+void main() {
+    float r = add2(add2(a.x, a.y), add2(a.z, add2(a.w, 1.0)));
+    float s = add2(a.x, 1.0) * add2(a.y, -1.0);
+    vec2 v = a.xy;
+    float f1, f2;
+    swap_into(v, f1);
+    swap_into(v, f2);
+    o = vec4(r, s, f1 - f2, v.x);
+    gl_Position = vec4(0.0);
+})");
+    check_output(outs, "o", 4, [](uint32_t l) {
+        glm::vec4 a = in_a(l);
+        auto add2 = [](float x, float y) { return x + 2.0f * y; };
+        float r = add2(add2(a.x, a.y), add2(a.z, add2(a.w, 1.0f)));
+        float s = add2(a.x, 1.0f) * add2(a.y, -1.0f);
+        return glm::vec4(r, s, a.x - a.y, a.x);
+    }, 1e-5f);
+}
+
+TEST_CASE("out parameters written in a loop with a lane-dependent trip count", "[functions]") {
+    auto outs = eval_vs(R"(
+attribute vec4 a, c;
+varying vec4 o;
+void step_it(inout float acc, out int parity, float x) {
+    acc = acc * 0.5 + x;
+    parity = int(acc > 1.0);
+}
+void main() {
+    float acc = 0.0;
+    int ones = 0;
+    int n = int(c.x) + 4;            // 1..7
+    for (int i = 0; i < n; ++i) {
+        int p;
+        step_it(acc, p, a.y + float(i));
+        ones += p;
+    }
+    o = vec4(acc, float(ones), 0.0, 0.0);
+    gl_Position = vec4(0.0);
+})");
+    check_output(outs, "o", 2, [](uint32_t l) {
+        float acc = 0.0f, y = in_a(l).y;
+        int ones = 0, n = int(in_c(l).x) + 4;
+        for (int i = 0; i < n; ++i) {
+            acc = acc * 0.5f + y + float(i);
+            ones += acc > 1.0f;
+        }
+        return glm::vec4(acc, float(ones), 0, 0);
+    }, 1e-5f);
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace lang {
@@ -68,9 +69,19 @@ std::string glsl_vec_type(uint32_t components) {
 
 }  // namespace
 
+// The suite can rerun with the optimizer or the inliner off (both paths
+// must give the same results): GLSLRUN_LANG_OPTIMIZE=0, GLSLRUN_LANG_INLINE_BUDGET=0.
+static glslrun::CompileOptions with_env_overrides(glslrun::CompileOptions options) {
+    if (const char* opt = std::getenv("GLSLRUN_LANG_OPTIMIZE")) options.optimize = std::atoi(opt) != 0;
+    if (const char* budget = std::getenv("GLSLRUN_LANG_INLINE_BUDGET"))
+        options.inline_budget = uint32_t(std::strtoul(budget, nullptr, 10));
+    return options;
+}
+
 glslrun::Program compile_or_fail(const std::string& vs, const std::string& fs,
                                  const glslrun::CompileOptions& options) {
-    auto result = glslrun::Program::compile({{"test.vert", vs}}, {{"test.frag", fs}}, options);
+    auto result = glslrun::Program::compile({{"test.vert", vs}}, {{"test.frag", fs}},
+                                            with_env_overrides(options));
     if (!result) {
         FAIL("compile failed:\n" << result.error().str() << "\n--- vertex shader:\n" << numbered(vs)
                                  << "--- fragment shader:\n" << numbered(fs));
@@ -163,12 +174,12 @@ Outputs eval_fs(const std::string& fs, const std::vector<glslrun::VertexAttrib>&
     return run_fs(program, inputs, count);
 }
 
-void check_output(const Outputs& outs, std::string_view name, uint32_t components,
-                  const Expected& expected, float tol) {
+int count_mismatches(const Outputs& outs, std::string_view name, uint32_t components,
+                     const Expected& expected, float tol, std::string* report) {
     const auto& out = outs.get(name);
     REQUIRE(out.components >= components);
-    std::ostringstream report;
-    report.precision(9);
+    std::ostringstream text;
+    text.precision(9);
     int bad = 0;
     for (uint32_t lane = 0; lane < outs.count(); ++lane) {
         glm::vec4 want = expected(lane);
@@ -179,11 +190,18 @@ void check_output(const Outputs& outs, std::string_view name, uint32_t component
                                   : std::fabs(got - w) <= tol * std::max(1.0f, std::fabs(w));
             if (ok) continue;
             if (++bad <= 8)
-                report << "  lane " << lane << " ." << "xyzw"[c] << ": got " << got << ", want " << w
-                       << "\n";
+                text << "  lane " << lane << " ." << "xyzw"[c] << ": got " << got << ", want " << w << "\n";
         }
     }
-    INFO("output '" << std::string(name) << "': " << bad << " mismatches\n" << report.str());
+    if (report) *report = text.str();
+    return bad;
+}
+
+void check_output(const Outputs& outs, std::string_view name, uint32_t components,
+                  const Expected& expected, float tol) {
+    std::string report;
+    int bad = count_mismatches(outs, name, components, expected, tol, &report);
+    INFO("output '" << std::string(name) << "': " << bad << " mismatches\n" << report);
     CHECK(bad == 0);
 }
 

@@ -75,6 +75,10 @@ Outputs eval_fs(const std::string& fs, const std::vector<glslrun::VertexAttrib>&
 using Expected = std::function<glm::vec4(uint32_t lane)>;
 void check_output(const Outputs& outs, std::string_view name, uint32_t components,
                   const Expected& expected, float tol = 0.0f);
+// The comparison behind check_output, without asserting; `report` lists the
+// first mismatches.
+int count_mismatches(const Outputs& outs, std::string_view name, uint32_t components,
+                     const Expected& expected, float tol, std::string* report = nullptr);
 inline constexpr float kExact = 0.0f;
 inline constexpr float kTight = 1e-6f;  // plain arithmetic
 inline constexpr float kLoose = 2e-5f;  // transcendental functions

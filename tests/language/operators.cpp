@@ -335,3 +335,44 @@ void main() {
         return glm::vec4(a.x * 2.0f + 1.0f, a.x * 2.0f, 2.0f * a.y, 307.0f);
     }, kTight);
 }
+
+TEST_CASE("unary operators and increments on matrices", "[operators]") {
+    auto outs = eval_vs(R"(
+attribute vec4 a, b;
+varying vec4 o1, o2;
+void main() {
+    mat2 m = mat2(a.xy, b.xy);
+    mat2 n = -m;
+    mat2 old = m++;
+    --m;
+    --m;
+    o1 = vec4(n[0], n[1]);
+    o2 = vec4(old[1], m[0]);
+    gl_Position = vec4(0.0);
+})");
+    check_output(outs, "o1", 4, [](uint32_t l) {
+        return -glm::vec4(in_a(l).x, in_a(l).y, in_b(l).x, in_b(l).y);
+    }, kExact);
+    check_output(outs, "o2", 4, [](uint32_t l) {
+        return glm::vec4(in_b(l).x, in_b(l).y, in_a(l).x - 1.0f, in_a(l).y - 1.0f);
+    }, kTight);
+}
+
+TEST_CASE("conditional operator on structs, arrays elements and matrices", "[operators]") {
+    auto outs = eval_vs(R"(
+attribute vec4 a, b;
+varying vec4 o;
+struct P { vec2 p; float w; };
+void main() {
+    P s1 = P(a.xy, 1.0), s2 = P(b.xy, 2.0);
+    P r = a.z > 0.0 ? s1 : s2;
+    mat2 m = a.w > 0.0 ? mat2(a.xy, b.xy) : mat2(2.0);
+    o = vec4(r.p, r.w, m[1][0]);
+    gl_Position = vec4(0.0);
+})");
+    check_output(outs, "o", 4, [](uint32_t l) {
+        glm::vec4 a = in_a(l), b = in_b(l);
+        bool p = a.z > 0;
+        return glm::vec4(p ? a.x : b.x, p ? a.y : b.y, p ? 1.0f : 2.0f, a.w > 0 ? b.x : 0.0f);
+    }, kExact);
+}

@@ -2,6 +2,9 @@
 // swizzled l-values (assignment, op-assign, out arguments).
 #include "harness.h"
 
+#include <array>
+#include <tuple>
+
 using namespace lang;
 
 namespace {
@@ -147,5 +150,56 @@ void main() {
     check_output(outs, "o", 4, [](uint32_t l) {
         glm::vec4 s = in_a(l) + in_b(l);
         return glm::vec4(s.y, s.x, 3.0f, 3.0f);
+    }, kTight);
+}
+
+TEST_CASE("compound l-values: dynamic index, member, swizzle, op-assign, increment", "[swizzle]") {
+    auto outs = eval_vs(R"(
+attribute vec4 a, b, c;
+varying vec4 o1, o2, o3;
+struct S { vec3 v; float arr[3]; };
+void main() {
+    S s[2];
+    for (int k = 0; k < 2; ++k) {
+        s[k].v = vec3(float(k));
+        s[k].arr[0] = 0.0; s[k].arr[1] = 1.0; s[k].arr[2] = 2.0;
+    }
+    int i = int(c.z) / 2;          // 0 or 1
+    int j = int(c.z) == 3 ? 2 : int(c.z);
+    s[i].v.zx = a.xy;              // dynamic element, then swizzle write
+    s[1 - i].v.y += b.x;           // op-assign through dynamic index and component
+    s[i].arr[j]++;                 // increment through two dynamic indices
+    mat3 m = mat3(1.0);
+    m[j].yx += vec2(b.z, b.w);     // dynamic column, swizzle, op-assign
+    o1 = vec4(s[0].v, s[0].arr[j]);
+    o2 = vec4(s[1].v, s[1].arr[j]);
+    o3 = vec4(m[0].xy, m[2].xy);
+    gl_Position = vec4(0.0);
+})");
+    struct S { glm::vec3 v; float arr[3]; };
+    auto simulate = [](uint32_t l) {
+        glm::vec4 a = in_a(l), b = in_b(l);
+        std::array<S, 2> s{S{glm::vec3(0.0f), {0, 1, 2}}, S{glm::vec3(1.0f), {0, 1, 2}}};
+        int cz = int(in_c(l).z), i = cz / 2, j = cz == 3 ? 2 : cz;
+        s[i].v.z = a.x;
+        s[i].v.x = a.y;
+        s[1 - i].v.y += b.x;
+        s[i].arr[j] += 1.0f;
+        glm::mat3 m(1.0f);
+        m[j].y += b.z;
+        m[j].x += b.w;
+        return std::tuple{s, m, j};
+    };
+    check_output(outs, "o1", 4, [&](uint32_t l) {
+        auto [s, m, j] = simulate(l);
+        return glm::vec4(s[0].v, s[0].arr[j]);
+    }, kTight);
+    check_output(outs, "o2", 4, [&](uint32_t l) {
+        auto [s, m, j] = simulate(l);
+        return glm::vec4(s[1].v, s[1].arr[j]);
+    }, kTight);
+    check_output(outs, "o3", 4, [&](uint32_t l) {
+        auto [s, m, j] = simulate(l);
+        return glm::vec4(m[0].x, m[0].y, m[2].x, m[2].y);
     }, kTight);
 }

@@ -269,3 +269,35 @@ void main() { o = v * float(n) + a * arr[1] + vec4(arr[0]); gl_Position = vec4(0
         return glm::vec4(2, 4, 6, 8) - in_a(l) + glm::vec4(0.5f);
     }, kTight);
 }
+
+TEST_CASE("uniform arrays of matrices and structs containing arrays", "[uniforms]") {
+    auto program = compile_vs(R"(
+attribute vec4 c;
+struct W { float w[2]; vec2 p; };
+uniform mat2 ms[2];
+uniform W s;
+varying vec4 o1, o2;
+void main() {
+    int i = int(c.z) / 2;     // 0 or 1
+    int j = 1 - i;
+    o1 = vec4(ms[i][j], ms[j][i]);
+    o2 = vec4(s.w[i], s.w[j], s.p);
+    gl_Position = vec4(0.0);
+})");
+    set_f(program, "ms", {1, 2, 3, 4, 5, 6, 7, 8});
+    set_f(program, "ms[1]", {-5, -6, -7, -8});
+    set_f(program, "s.w", {0.5f, 0.25f});
+    set_f(program, "s.w[1]", {9.0f});
+    set_f(program, "s.p", {3, 4});
+    auto outs = run_vs(program, std_attribs());
+    const glm::mat2 ms[2] = {glm::mat2(1, 2, 3, 4), glm::mat2(-5, -6, -7, -8)};
+    check_output(outs, "o1", 4, [&](uint32_t l) {
+        int i = int(in_c(l).z) / 2, j = 1 - i;
+        return glm::vec4(ms[i][j], ms[j][i]);
+    }, kExact);
+    check_output(outs, "o2", 4, [](uint32_t l) {
+        int i = int(in_c(l).z) / 2;
+        float w[2] = {0.5f, 9.0f};
+        return glm::vec4(w[i], w[1 - i], 3, 4);
+    }, kExact);
+}

@@ -181,8 +181,8 @@ TEST_CASE("malformed files give line-numbered errors", "[piglit][parse][malforme
     CHECK(e.line == 4);
     e = parse_err("[require]\nGLSL >= 1.10\n[vertex data]\nvertex/float/9\n");
     CHECK(e.line == 4);
-    e = parse_err("[require]\nGLSL >= 1.10\n[test]\nuniform vec4 c 1 2 3\n");
-    CHECK(e.message == "uniform vec4 c needs 4 values, found 3");
+    e = parse_err("[require]\nGLSL >= 1.10\n[test]\nuniform vec4 c\n");
+    CHECK(e.message == "uniform vec4 c needs 4 values, found none");
     e = parse_err("[require]\nGLSL >= 1.10\n[test]\nuniform vec5 c 1 2 3 4 5\n");
     CHECK(e.message == "unknown uniform type \"vec5\"");
     e = parse_err("[require]\nSIZE 0 0\n");

@@ -98,7 +98,7 @@ TEST_CASE("user clip planes use the distances given per vertex", "[raster][clip]
     CHECK(v1.user[1] == Approx(0.0f).margin(1e-6));
     // A disabled plane clips nothing.
     ClipParams off{1.0f, 0, 1};
-    ClipVertex w0 = vertex({0, 0, 0, 1}, a), w1 = vertex({1, 0, 0, 1}, a + 1);
+    ClipVertex w1 = vertex({1, 0, 0, 1}, a + 1);
     w1.user[1] = -3.0f;
     CHECK(outcode(w1, off) == 0u);
 }

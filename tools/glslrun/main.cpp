@@ -15,6 +15,7 @@
 
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
+#include "piglit_isolate.h"
 #include "piglit_suite.h"
 
 namespace {
@@ -38,6 +39,7 @@ struct TestOptions {
     int jobs = 1;
     std::string tsv, expect, root;
     double time_limit = 120;
+    bool no_isolate = false;
 };
 
 int run_test_command(const TestOptions& o) {
@@ -65,8 +67,14 @@ int run_test_command(const TestOptions& o) {
     }
     pg::RunOptions run_options;
     run_options.time_limit_s = o.time_limit;
+    auto run_one = [&](const pg::TestCase& tc) {
+        if (o.no_isolate) return pg::run_test_file(tc.path, run_options);
+        // A hard limit a bit above the soft one, which is only checked between commands.
+        return pg::run_isolated([&] { return pg::run_test_file(tc.path, run_options); },
+                                o.time_limit * 1.25 + 5);
+    };
     auto results = pg::run_tests(
-        cases, o.jobs, [&](const pg::TestCase& tc) { return pg::run_test_file(tc.path, run_options); },
+        cases, o.jobs, run_one,
         [&](size_t i, const pg::TestResult& r) {
             std::fputs((pg::format_result_line(cases[i].display, r) + "\n").c_str(), stdout);
             std::fflush(stdout);
@@ -89,7 +97,10 @@ int test_main(int argc, char** argv) {
     app.add_option("--expect", o.expect,
                    "expectations list (\"path fail|skip # reason\"); unlisted tests must pass");
     app.add_option("--root", o.root, "print paths relative to this directory (and look them up there)");
-    app.add_option("--time-limit", o.time_limit, "seconds per test, checked between commands");
+    app.add_option("--time-limit", o.time_limit, "seconds per test (default 120)");
+    app.add_flag("--no-isolate", o.no_isolate,
+                 "run tests in this process (default: one forked process per test, so a crash "
+                 "or hang fails only that test)");
     CLI11_PARSE(app, argc, argv);
     return run_test_command(o);
 }

@@ -40,7 +40,7 @@ std::optional<std::array<float, N>> float_array(std::string_view s) {
     return a;
 }
 
-// "( a , b , c )": n numbers in parentheses, separated by commas.
+// "( a , b , c )": n numbers (or more) in parentheses, separated by commas.
 std::optional<std::vector<float>> paren_group(std::string_view& s, size_t n) {
     s = trim(s);
     if (s.empty() || s[0] != '(') return std::nullopt;
@@ -51,7 +51,9 @@ std::optional<std::vector<float>> paren_group(std::string_view& s, size_t n) {
         if (c == ',') c = ' ';
     size_t consumed = 0;
     auto v = parse_float_list(inner, &consumed);
-    if (v.size() != n || !trim(std::string_view(inner).substr(consumed)).empty()) return std::nullopt;
+    // Like shader_runner's sscanf: extra numbers after the first n are ignored.
+    if (v.size() < n) return std::nullopt;
+    v.resize(n);
     s = trim(s.substr(close + 1));
     return v;
 }
@@ -146,9 +148,13 @@ Parsed<CommandData> parse_uniform(std::string_view rest) {
         got = u.floats.size();
         if (got >= shape->count) u.floats.resize(shape->count);
     }
-    if (got < shape->count)
+    // piglit reads a fixed count with strtod and uses whatever it got; tests
+    // rely on that ("uniform vec4 v 1 2 3"), so missing values become 0.
+    if (got == 0)
         return error("uniform " + std::string(type) + " " + u.name + " needs " +
-                     std::to_string(shape->count) + " values, found " + std::to_string(got));
+                     std::to_string(shape->count) + " values, found none");
+    if (u.integer) u.ints.resize(shape->count, 0);
+    else u.floats.resize(shape->count, 0.0f);
     return CommandData{std::move(u)};
 }
 

@@ -1,0 +1,158 @@
+// Compile and link diagnostics: the lecture's typos, and the GL link rules
+// that glslang 12 does not check.
+#include "helpers.h"
+
+using namespace glslrun;
+using namespace glslrun::test;
+
+namespace {
+
+const char* kLectureVs =
+    "void main()\n"
+    "{\n"
+    "    vec3 normal, lightDir;\n"
+    "    vec4 diffuse, ambient;\n"
+    "    float intensity;\n"
+    "    normal = normalize(gl_NormalMatrix * gl_Normal);\n"
+    "    lightDir = normalize(vec3(gl_LightSource[0].position));\n"
+    "    intensity = max(dot(lightDir, normal), 0.0);\n"
+    "    diffuse = gl_FrontMaterial.diffuse * gl_LightSource[0].diffuse;\n"
+    "    ambient = gl_FrontMaterial.ambient * gl_LightSource[0].ambient;\n"
+    "    gl_FrontColor = intensity * diffuse + ambient + gl_FrontMaterial.emission;\n"
+    "    gl_Position = ftransform();\n"
+    "}\n";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+    size_t at = s.find(from);
+    REQUIRE(at != std::string::npos);
+    return s.replace(at, from.size(), to);
+}
+
+const char* kColorFs = "void main() { gl_FragColor = gl_Color; }\n";
+
+}  // namespace
+
+TEST_CASE("Diagnostic and Error formatting") {
+    CHECK(Diagnostic{"a.frag", 3, "boom", false}.str() == "a.frag:3: error: boom");
+    CHECK(Diagnostic{"a.frag", 0, "boom", false}.str() == "a.frag: error: boom");
+    CHECK(Diagnostic{"", 0, "boom", true}.str() == "warning: boom");
+    Error e("bad", "x.vert", 7);
+    REQUIRE(e.diagnostics.size() == 1);
+    CHECK(e.str() == "x.vert:7: error: bad\n");
+}
+
+TEST_CASE("the corrected lecture shader compiles") { compile_ok(kLectureVs, kColorFs); }
+
+TEST_CASE("lecture typo: glColor is an undeclared identifier") {
+    std::string err = compile_error("void main() {\n glColor = gl_Color;\n gl_Position = ftransform();\n}\n", kColorFs);
+    CHECK(err == "t.vert:2: error: 'glColor' : undeclared identifier\n");
+}
+
+TEST_CASE("lecture typo: gl_FrontMaterial.emissive") {
+    std::string err = compile_error(replace(kLectureVs, "gl_FrontMaterial.emission", "gl_FrontMaterial.emissive"), kColorFs);
+    CHECK_THAT(err, Catch::StartsWith("t.vert:11: error: 'emissive' : no such field in structure"));
+    CHECK_THAT(err, !Catch::Contains("compilation terminated"));
+    CHECK_THAT(err, !Catch::Contains("compilation errors"));
+}
+
+TEST_CASE("lecture typo: FrontMaterial.diffuse") {
+    std::string err = compile_error(replace(kLectureVs, "gl_FrontMaterial.diffuse", "FrontMaterial.diffuse"), kColorFs);
+    CHECK_THAT(err, Catch::StartsWith("t.vert:9: error: 'FrontMaterial' : undeclared identifier\n"));
+}
+
+TEST_CASE("lecture typo: a missing semicolon is reported on the next line") {
+    std::string err = compile_error(replace(kLectureVs, "0.0);\n", "0.0)\n"), kColorFs);
+    CHECK_THAT(err, Catch::StartsWith("t.vert:9: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON\n"));
+}
+
+TEST_CASE("lecture typo: int literal in 1 / (...)") {
+    std::string vs = replace(kLectureVs, "    gl_Position", "    float att = 1 / (gl_LightSource[0].constantAttenuation + 1.0);\n    gl_Position");
+    std::string err = compile_error(vs, kColorFs);
+    CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '/' : wrong operand types: no operation '/' exists"));
+    // GLSL 1.20 converts the int implicitly.
+    compile_ok(vs, kColorFs, 120);
+}
+
+TEST_CASE("lecture typo: intensity > 0") {
+    std::string vs = replace(kLectureVs, "    gl_Position", "    if (intensity > 0) gl_FrontColor += vec4(1.0);\n    gl_Position");
+    std::string err = compile_error(vs, kColorFs);
+    CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '>' : wrong operand types"));
+}
+
+TEST_CASE("diagnostics name the right unit when a stage has several") {
+    CompileOptions opt;
+    auto r = frontend::compile_program({{"a.vert", "void f() {}\n"}, {"b.vert", "void main() {\n\n x = 1.0; }\n"}},
+                                       {{"c.frag", kColorFs}}, opt);
+    REQUIRE_FALSE(r.ok());
+    CHECK(r.error().str() == "b.vert:3: error: 'x' : undeclared identifier\n");
+}
+
+TEST_CASE("link error: gl_Position not written") {
+    std::string err = compile_error("void main() { gl_FrontColor = vec4(0.3); }\n", kColorFs);
+    CHECK_THAT(err, Catch::Contains("gl_Position"));
+}
+
+TEST_CASE("link error: varying read but not written") {
+    std::string err = compile_error("varying vec4 foo;\nvoid main() { gl_Position = ftransform(); }\n",
+                                    "varying vec4 foo;\nvoid main() { gl_FragColor = foo; }\n");
+    CHECK_THAT(err, Catch::Contains("'foo'"));
+    compile_ok("varying vec4 foo;\nvoid main() { foo = vec4(1.0); gl_Position = ftransform(); }\n",
+               "varying vec4 foo;\nvoid main() { gl_FragColor = foo; }\n");
+    // Declared but unused in the FS: fine.
+    compile_ok(kPassVs, "varying vec4 foo;\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+}
+
+TEST_CASE("link error: varying type mismatch") {
+    std::string err = compile_error("varying vec3 foo;\nvoid main() { foo = vec3(1.0); gl_Position = ftransform(); }\n",
+                                    "varying vec4 foo;\nvoid main() { gl_FragColor = foo; }\n");
+    CHECK_THAT(err, Catch::Contains("'foo'"));
+}
+
+TEST_CASE("link error: uniform type mismatch between stages") {
+    std::string err = compile_error("uniform vec4 u;\nvoid main() { gl_Position = ftransform() + u; }\n",
+                                    "uniform vec3 u;\nvoid main() { gl_FragColor = vec4(u, 1.0); }\n");
+    CHECK_THAT(err, Catch::Contains("'u'"));
+}
+
+TEST_CASE("link error: global initialized in two units") {
+    CompileOptions opt;
+    auto r = frontend::compile_program(
+        {{"a.vert", "float g = 1.0;\nvoid f() {}\n"}, {"b.vert", "float g = 2.0;\nvoid main() { gl_Position = gl_Vertex; }\n"}},
+        {{"c.frag", kColorFs}}, opt);
+    REQUIRE_FALSE(r.ok());
+    CHECK_THAT(r.error().str(), Catch::Contains("'g'"));
+    // The same non-constant expression twice is still an error; the same constant is not.
+    const char* expr_init = "uniform float a;\nfloat g = sin(a);\n";
+    auto r2 = frontend::compile_program({{"a.vert", std::string(expr_init) + "void f() {}\n"},
+                                         {"b.vert", std::string(expr_init) + "void main() { gl_Position = gl_Vertex; }\n"}},
+                                        {{"c.frag", kColorFs}}, opt);
+    CHECK_FALSE(r2.ok());
+    auto r3 = frontend::compile_program(
+        {{"a.vert", "float g = 2.0;\nvoid f() {}\n"}, {"b.vert", "float g = 2.0;\nvoid main() { gl_Position = gl_Vertex; }\n"}},
+        {{"c.frag", kColorFs}}, opt);
+    CHECK(r3.ok());
+    // Initialized once, declared in both: fine, and both units see it.
+    auto ok = frontend::compile_program(
+        {{"a.vert", "float g = 2.0;\nfloat getg() { return g; }\n"},
+         {"b.vert", "float g;\nfloat getg();\nvoid main() { gl_Position = gl_Vertex * getg(); }\n"}},
+        {{"c.frag", kColorFs}}, opt);
+    INFO((ok ? std::string() : ok.error().str()));
+    REQUIRE(ok.ok());
+    MiniEval vs(ok->vertex, uniform_store(*ok, {}));
+    vs.set_input("gl_Vertex", {1, 2, 3, 4});
+    vs.run();
+    CHECK(vs.output("gl_Position") == std::vector<float>{2, 4, 6, 8});
+}
+
+TEST_CASE("texture functions give a clear diagnostic for now") {
+    std::string err = compile_error(kPassVs, "uniform sampler2D s;\nvoid main() {\n gl_FragColor = texture2D(s, vec2(0.5));\n}\n");
+    CHECK_THAT(err, Catch::Contains("t.frag:3: error:"));
+    CHECK_THAT(err, Catch::Contains("texture"));
+}
+
+TEST_CASE("check_shader compiles one unit without linking") {
+    CHECK(check_shader(Stage::Fragment, {"x.frag", "void f() {}\n"}, 110).ok());
+    auto st = check_shader(Stage::Vertex, {"x.vert", "void main() { int i = 1.0; }\n"}, 110);
+    REQUIRE_FALSE(st.ok());
+    CHECK_THAT(st.error().str(), Catch::StartsWith("x.vert:1: error:"));
+}
