@@ -223,6 +223,7 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
     program.fragment = std::move(flow.shader);
     program.uniforms = std::move(uniforms.leaves);
     program.uniform_words = uint32_t(uniforms.slot_kinds.size());
+    program.uniform_defaults = std::move(uniforms.defaults);
     link_varyings(program);
     return program;
 }

@@ -40,9 +40,11 @@ struct UniformTable {
     std::map<std::string, Var> vars;
     std::vector<ir::Uniform> leaves;
     std::vector<ir::Kind> slot_kinds;
+    std::vector<uint32_t> defaults;  // GLSL 1.20 initializers, one word per slot (0 when none)
     // Adds the variable on first sight. Returns nullptr and sets *error if a
     // variable of that name was declared with another type.
     const Var* declare(const std::string& name, const gl::TType& type, bool builtin, std::string* error);
+    void set_default(const Var& var, const gl::TConstUnionArray& values);
 };
 
 struct Value {

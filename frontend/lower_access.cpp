@@ -121,8 +121,31 @@ Access StageLowering::access(gl::TIntermTyped* n) {
         return a;
     }
     std::vector<uint32_t> first(a.comps.begin(), a.comps.begin() + elem);
+    if (!regular(a.comps) && elem == 1 && a.index == ir::kNoReg) {
+        // A swizzle feeding a dynamic index (v.wzyx[i], also as an l-value):
+        // map i through a table of the swizzle's component offsets.
+        Value idx = expr(b->getRight());
+        if (idx.regs.size() != 1 || kind(idx.regs[0]) != Kind::I32) return materialize(fail(n, "array index is not an int"));
+        uint32_t lo = *std::min_element(a.comps.begin(), a.comps.end());
+        uint32_t hi = *std::max_element(a.comps.begin(), a.comps.end());
+        Reg table = new_range(std::vector<Kind>(count, Kind::I32));
+        for (uint32_t e = 0; e < count; ++e) mov_to(table + e, konst_i(int32_t(a.comps[e] - lo)));
+        ir::Instr in;
+        in.op = Op::load_ind;
+        in.type = Kind::I32;
+        in.dst = new_reg(Kind::I32);
+        in.src[0] = idx.regs[0];
+        in.imm[0] = table;
+        in.imm[1] = count;
+        in.imm[2] = 1;
+        emit(in);
+        a.comps = {lo};
+        index_dynamic(a, in.dst, hi - lo + 1, 1);
+        return a;
+    }
     if (!regular(a.comps)) {
-        // A swizzle feeding a dynamic index (v.zyx[i]): read through a copy.
+        // Other irregular layouts (a swizzle of a dynamically indexed
+        // element): read through a copy.
         Access copy = materialize(read(a));
         copy.comps = iota_comps(count * elem);
         a = copy;

@@ -142,6 +142,10 @@ void StageLowering::declare_linker_objects(gl::TIntermAggregate* objects) {
         gl::TStorageQualifier q = type.getQualifier().storage;
         if (q == gl::EvqUniform) {
             uniform_variable(name, type);
+            std::string err;
+            if (sym->getConstArray().size() > 0)
+                if (const UniformTable::Var* v = uniforms_.declare(name, type, false, &err))
+                    uniforms_.set_default(*v, sym->getConstArray());
         } else if (name.rfind("gl_", 0) != 0 &&
                    ((stage_ == ir::Stage::Vertex && q == gl::EvqVaryingOut) ||
                     (stage_ == ir::Stage::Fragment && q == gl::EvqVaryingIn))) {

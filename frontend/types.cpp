@@ -142,8 +142,24 @@ const UniformTable::Var* UniformTable::declare(const std::string& name, const gl
     v.signature = sig;
     flatten_kinds(type, slot_kinds);
     v.size = uint32_t(slot_kinds.size()) - v.slot;
+    defaults.resize(slot_kinds.size(), 0u);
     add_leaves(type, name, v.slot, builtin, leaves);
     return &(vars[name] = v);
+}
+
+void UniformTable::set_default(const Var& var, const gl::TConstUnionArray& values) {
+    for (uint32_t i = 0; i < var.size && int(i) < values.size(); ++i) {
+        const gl::TConstUnion& c = values[int(i)];
+        uint32_t word = 0;
+        switch (slot_kinds[var.slot + i]) {
+        case ir::Kind::F32:
+            word = float_bits(c.getType() == gl::EbtInt ? float(c.getIConst()) : float(c.getDConst()));
+            break;
+        case ir::Kind::I32: word = uint32_t(c.getType() == gl::EbtDouble || c.getType() == gl::EbtFloat ? int32_t(c.getDConst()) : c.getIConst()); break;
+        case ir::Kind::Bool: word = c.getType() == gl::EbtBool ? c.getBConst() : c.getIConst() != 0; break;
+        }
+        defaults[var.slot + i] = word;
+    }
 }
 
 }  // namespace glslrun::frontend

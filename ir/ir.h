@@ -147,6 +147,9 @@ struct Program {
     Shader fragment;
     std::vector<Uniform> uniforms;
     uint32_t uniform_words = 0;
+    // Initial uniform values (GLSL 1.20 initializers), uniform_words words;
+    // GL's default is 0 for everything else.
+    std::vector<uint32_t> uniform_defaults;
     std::vector<VaryingLink> varyings;
 };
 

@@ -55,53 +55,74 @@ inline uint32_t clamp_index(uint32_t raw, uint32_t count) {
     return std::min(static_cast<uint32_t>(i), count - 1);
 }
 
-template <ir::Op op>
-void alu(const Step& s, Machine& m) {
-    using L = ir::alu::Lane<op>;
+// Runs a lane-wise body `lanes(out)` straight into the destination when every
+// lane is active, else into a temporary that is blended in. Bodies must be
+// elementwise (lane i reads only lane i) so dst may alias an operand.
+template <class Lanes>
+inline void emit(const Step& s, Machine& m, Lanes&& lanes) {
+    if (m.mask.full()) {
+        lanes(s.dst);
+        return;
+    }
     alignas(64) uint32_t out[kLanes];
-    const uint32_t* __restrict a = s.src[0];
+    lanes(out);
+    m.write(s.dst, out);
+}
+
+// Lane loop of an Alu op into `out`. Operands may alias `out` lane for lane
+// (dst == src), which is safe elementwise: ivdep tells GCC so.
+template <ir::Op op>
+inline void alu_lanes(const Step& s, uint32_t* out) {
+    using L = ir::alu::Lane<op>;
+    const uint32_t* a = s.src[0];
+    const uint32_t* b = s.src[1];
+    const uint32_t* c = s.src[2];
     if constexpr (L::arity == 1) {
+#pragma GCC ivdep
         for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], 0, 0);
     } else if constexpr (L::arity == 2) {
-        const uint32_t* __restrict b = s.src[1];
+#pragma GCC ivdep
         for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], 0);
     } else {
-        const uint32_t* __restrict b = s.src[1];
-        const uint32_t* __restrict c = s.src[2];
+#pragma GCC ivdep
         for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], c[i]);
     }
-    m.write(s.dst, out);
+}
+
+template <ir::Op op>
+void alu(const Step& s, Machine& m) {
+    emit(s, m, [&](uint32_t* out) { alu_lanes<op>(s, out); });
 }
 
 inline void mov(const Step& s, Machine& m) {
-    alignas(64) uint32_t out[kLanes];
-    std::memcpy(out, s.src[0], sizeof out);
-    m.write(s.dst, out);
+    emit(s, m, [&](uint32_t* out) { std::memmove(out, s.src[0], sizeof(uint32_t) * kLanes); });
 }
 
 inline void konst(const Step& s, Machine& m) {
-    alignas(64) uint32_t out[kLanes];
-    for (int i = 0; i < kLanes; ++i) out[i] = s.imm[0];
-    m.write(s.dst, out);
+    emit(s, m, [&](uint32_t* out) {
+        const uint32_t v = s.imm[0];
+        for (int i = 0; i < kLanes; ++i) out[i] = v;
+    });
 }
 
 inline void sel(const Step& s, Machine& m) {
-    alignas(64) uint32_t out[kLanes];
-    const uint32_t* __restrict c = s.src[0];
-    const uint32_t* __restrict x = s.src[1];
-    const uint32_t* __restrict y = s.src[2];
-    for (int i = 0; i < kLanes; ++i) {
-        uint32_t pick = 0u - (c[i] != 0);
-        out[i] = (x[i] & pick) | (y[i] & ~pick);
-    }
-    m.write(s.dst, out);
+    emit(s, m, [&](uint32_t* out) {
+        const uint32_t* c = s.src[0];
+        const uint32_t* x = s.src[1];
+        const uint32_t* y = s.src[2];
+#pragma GCC ivdep
+        for (int i = 0; i < kLanes; ++i) {
+            uint32_t pick = 0u - (c[i] != 0);
+            out[i] = (x[i] & pick) | (y[i] & ~pick);
+        }
+    });
 }
 
 inline void uniform(const Step& s, Machine& m) {
-    alignas(64) uint32_t out[kLanes];
-    const uint32_t v = m.uniforms[s.imm[0]];
-    for (int i = 0; i < kLanes; ++i) out[i] = v;
-    m.write(s.dst, out);
+    emit(s, m, [&](uint32_t* out) {
+        const uint32_t v = m.uniforms[s.imm[0]];
+        for (int i = 0; i < kLanes; ++i) out[i] = v;
+    });
 }
 
 inline void uniform_ind(const Step& s, Machine& m) {

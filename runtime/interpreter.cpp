@@ -38,29 +38,28 @@ struct Range {
 }  // namespace
 
 struct Interpreter::Impl {
-    const ir::Shader& shader;
+    size_t reg_count;  // the shader itself is not kept: Steps hold everything
     uint64_t max_loop_iterations;
     // One extra register of zeros backs operands that an op does not read.
     AlignedWords file;
     Machine machine;
     std::vector<Step> steps;
     std::vector<Range> functions;
+    Range main;
     RunError error;
     bool failed = false;
     int call_depth = 0;
 
     Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters)
-        : shader(s), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
+        : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
         machine.regs = file.data;
         machine.uniforms = uniforms;
         for (const ir::Function& f : s.functions) functions.push_back(compile_block(f.body));
         main = compile_block(s.body);
     }
 
-    Range main;
-
     uint32_t* reg(ir::Reg r) {
-        if (r == ir::kNoReg || r >= shader.regs.size()) return file.data + shader.regs.size() * kLanes;
+        if (r == ir::kNoReg || r >= reg_count) return file.data + reg_count * kLanes;
         return file.data + size_t(r) * kLanes;
     }
 
@@ -127,8 +126,13 @@ struct Interpreter::Impl {
         for (uint32_t i = begin; i < end; ++i) {
             if (!mask.any()) return true;
             const Step& s = steps[i];
+            // Instructions dominate: a predictable branch, not the switch's jump table.
+            if (s.kind == ir::NodeKind::Instr) [[likely]] {
+                s.fn(s, machine);
+                continue;
+            }
             switch (s.kind) {
-            case ir::NodeKind::Instr: s.fn(s, machine); break;
+            case ir::NodeKind::Instr: break;
             case ir::NodeKind::If:
                 if (!run_if(s)) return false;
                 break;

@@ -22,15 +22,11 @@ Program::~Program() = default;
 
 namespace {
 
-// GLSL 1.20 uniform initializers: the IR carries them once ir::Program has a
-// `uniform_defaults` member (uniform_words words); until then uniforms start at 0.
-template <class IrProgram>
-void initialise_uniforms(const IrProgram& ir, std::vector<uint32_t>& store) {
+// GL's default is 0, except for GLSL 1.20 uniform initializers.
+void initialise_uniforms(const ir::Program& ir, std::vector<uint32_t>& store) {
     store.assign(ir.uniform_words, 0u);
-    if constexpr (requires { ir.uniform_defaults.size(); }) {
-        size_t n = std::min(store.size(), ir.uniform_defaults.size());
-        std::copy(ir.uniform_defaults.begin(), ir.uniform_defaults.begin() + n, store.begin());
-    }
+    size_t n = std::min(store.size(), ir.uniform_defaults.size());
+    std::copy(ir.uniform_defaults.begin(), ir.uniform_defaults.begin() + n, store.begin());
 }
 
 }  // namespace

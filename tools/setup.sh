@@ -28,7 +28,7 @@ demo)
     ;;
 test)
     (cd build && ctest --output-on-failure -j "$(nproc)")
-    bash tools/piglit_suite.sh build/glslrun
+    GLSLRUN=build/glslrun bash tools/piglit_suite.sh
     ;;
 *)
     echo "usage: tools/setup.sh [demo|test]" >&2

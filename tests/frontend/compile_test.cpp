@@ -168,3 +168,32 @@ TEST_CASE("a missing vertex shader gets a fixed-function stand-in") {
     REQUIRE(r->varyings.size() == 1);
     CHECK(r->varyings[0].vs_output >= 0);
 }
+
+#include <fstream>
+#include <sstream>
+
+TEST_CASE("lecture per-pixel spot light program compiles, verifies and computes") {
+    auto slurp = [](const std::string& name) {
+        std::ifstream in(std::string(GLSLRUN_SOURCE_DIR) + "/shaders/" + name);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    std::string vs = slurp("pos_pix.vert"), fs = slurp("spot_pix_fixed.frag");
+    REQUIRE_FALSE(vs.empty());
+    REQUIRE_FALSE(fs.empty());
+    ir::Program p = compile_ok(vs, fs);
+    CHECK(has_binding(p.vertex.inputs, "gl_Normal", 3));
+    CHECK(has_binding(p.vertex.outputs, "normal", 3));
+    CHECK(has_binding(p.fragment.inputs, "ecPos", 3));
+    // Outside the cone (spotCosCutoff = 2): only global ambient + emission.
+    auto out = run_fs(p,
+                      {{"gl_LightSource[0].position", {0, 0, 1, 1}},
+                       {"gl_LightSource[0].spotCosCutoff", {2}},
+                       {"gl_LightSource[0].constantAttenuation", {1}},
+                       {"gl_LightModel.ambient", {0.5f, 0.5f, 0.5f, 1}},
+                       {"gl_FrontMaterial.ambient", {0.2f, 0.4f, 0.6f, 1}},
+                       {"gl_FrontMaterial.emission", {0, 0, 0.05f, 0}}},
+                      {{"normal", {0, 0, 1}}, {"ecPos", {0, 0, 0}}});
+    CHECK(near(out, {0.1f, 0.2f, 0.35f, 1}));
+}

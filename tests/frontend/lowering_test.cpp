@@ -250,3 +250,15 @@ TEST_CASE("fold workaround rewrites only parenthesized equality compared with a 
     CHECK(rewrite_bool_literal_compares("c = (a ==\n b) ==\n false;") == "c = !(a ==\n b)   \n      ;");
     CHECK(rewrite_bool_literal_compares("bool truex = (a == b) == trueish;") == "bool truex = (a == b) == trueish;");
 }
+
+TEST_CASE("dynamic index into a swizzle, read and written") {
+    const char* fs =
+        "uniform int zero;\n"
+        "void main() {\n"
+        "  gl_FragColor = vec4(1, 0, 0, 1);\n"
+        "  gl_FragColor.wzyx[zero + 2] = 1.0;\n"
+        "  gl_FragColor.wzyx[zero + 3] = 0.0;\n"
+        "  gl_FragColor.w = gl_FragColor.zxy[zero + 2] + 0.5;\n"
+        "}\n";
+    CHECK(eval_fs(fs, {{"zero", {0}}}) == V{0, 1, 0, 1.5f});
+}

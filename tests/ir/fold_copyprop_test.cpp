@@ -190,3 +190,28 @@ TEST_CASE("copyprop inside loops forgets loop-carried registers", "[ir][copyprop
     ir::Shader t = check_pass(b.sh, copyprop);
     CHECK(writer_of(t, acc)->src[1] == prev);
 }
+
+TEST_CASE("copyprop reuses values a register still holds", "[ir][copyprop][cse]") {
+    Builder b;
+    Reg x = b.reg(Kind::F32), y = b.reg(Kind::F32), c = b.reg(Kind::Bool);
+    b.input("x", x);
+    b.input("y", y);
+    b.input("c", c);
+    Reg u1 = b.reg(Kind::F32), u2 = b.reg(Kind::F32);
+    b.instr(Op::uniform, Kind::F32, u1, {}, {1});
+    Reg s1 = b.alu(Op::fadd, {x, u1});
+    b.instr(Op::uniform, Kind::F32, u2, {}, {1});  // same slot: becomes a copy of u1
+    Reg s2 = b.alu(Op::fadd, {u2, x});             // commuted: becomes a copy of s1
+    Reg in_branch = b.reg(Kind::F32);
+    b.if_(c, [&] { b.alu_to(in_branch, Op::fadd, {x, u1}); });  // still available inside
+    b.set_konst(x, bits(2.0f));                                  // x changes
+    Reg s3 = b.alu(Op::fadd, {x, u1});                           // a new value
+    Reg o = b.alu(Op::fmul, {b.alu(Op::fmul, {s1, s2}), b.alu(Op::fadd, {s3, in_branch})});
+    b.output("o", o);
+    ir::Shader t = check_pass(b.sh, copyprop, {0, bits(1.5f)});
+    CHECK(writer_of(t, u2)->op == Op::mov);
+    CHECK(writer_of(t, s2)->op == Op::mov);
+    CHECK(writer_of(t, s2)->src[0] == s1);
+    CHECK(writer_of(t, in_branch)->op == Op::mov);
+    CHECK(writer_of(t, s3)->op == Op::fadd);
+}

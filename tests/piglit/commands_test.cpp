@@ -121,7 +121,10 @@ TEST_CASE("uniform values", "[piglit][commands]") {
     CHECK(is_error("uniform float v x"));
     CHECK(is_error("uniform vec2"));
     CHECK(is_error("uniform sampler2D s 0"));
-    CHECK(std::holds_alternative<Unsupported>(std::get<CommandData>(parse_command("uniform uvec2 u 1 2"))));
+    u = cmd<SetUniform>("uniform uvec2 u 1 0xffffffff");
+    CHECK(u.integer);
+    CHECK(u.ints == std::vector<int32_t>{1, -1});  // the bit pattern of 0xffffffff
+    CHECK(cmd<SetUniform>("uniform uint use_discard 1").ints == std::vector<int32_t>{1});
     CHECK(std::holds_alternative<Unsupported>(std::get<CommandData>(parse_command("uniform double d 1"))));
 }
 

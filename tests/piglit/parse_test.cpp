@@ -132,8 +132,8 @@ TEST_CASE("texture commands and unsupported sections skip", "[piglit][parse]") {
     CHECK(skip_reason(t).value() == "textures: issue #4");
     ShaderTest g = parse_ok("[require]\nGLSL >= 1.10\n[geometry shader]\nvoid main(){}\n[test]\n");
     CHECK(skip_reason(g).value() == "unsupported section [geometry shader]");
-    ShaderTest u = parse_ok("[require]\nGLSL >= 1.10\n[test]\nuniform uint x 3\n");
-    CHECK(skip_reason(u).value() == "unsigned uniforms need GL 3.0");
+    ShaderTest u = parse_ok("[require]\nGLSL >= 1.10\n[test]\nuniform dvec2 x 3 4\n");
+    CHECK(skip_reason(u).value() == "uniform type dvec2 needs GL 4");
 }
 
 TEST_CASE("vertex data", "[piglit][parse]") {

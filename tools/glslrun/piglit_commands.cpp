@@ -104,11 +104,14 @@ struct UniformShape {
 // Component count and kind of a uniform command type; nullopt if unknown.
 std::optional<UniformShape> uniform_shape(std::string_view type) {
     if (type == "float") return UniformShape{false, 1};
-    if (type == "int" || type == "bool") return UniformShape{true, 1};
+    // uint/uvec: glUniform*ui on a bool or int uniform, which GL allows (the
+    // values travel as their 32-bit patterns); GLSL 1.30's uint types never get here.
+    if (type == "int" || type == "bool" || type == "uint") return UniformShape{true, 1};
     auto digit = [](char c) { return c >= '2' && c <= '4'; };
     if (type.size() == 4 && starts_with(type, "vec") && digit(type[3]))
         return UniformShape{false, size_t(type[3] - '0')};
-    if (type.size() == 5 && (starts_with(type, "ivec") || starts_with(type, "bvec")) && digit(type[4]))
+    if (type.size() == 5 && (starts_with(type, "ivec") || starts_with(type, "bvec") || starts_with(type, "uvec")) &&
+        digit(type[4]))
         return UniformShape{true, size_t(type[4] - '0')};
     if (starts_with(type, "mat")) {
         if (type.size() == 4 && digit(type[3])) return UniformShape{false, size_t((type[3] - '0') * (type[3] - '0'))};
@@ -123,8 +126,6 @@ Parsed<CommandData> parse_uniform(std::string_view rest) {
     if (sp == std::string_view::npos) return error("uniform command needs a type, a name and values");
     std::string_view type = rest.substr(0, sp);
     rest = trim(rest.substr(sp));
-    if (starts_with(type, "uint") || starts_with(type, "uvec"))
-        return CommandData{Unsupported{"unsigned uniforms need GL 3.0"}};
     if (starts_with(type, "double") || starts_with(type, "dvec") || starts_with(type, "dmat") ||
         starts_with(type, "int64") || starts_with(type, "uint64") || starts_with(type, "i64vec") ||
         starts_with(type, "u64vec") || starts_with(type, "handle"))
