@@ -105,6 +105,7 @@ private:
     void finish_bindings();
     bool is_input(gl::TStorageQualifier q) const;
     Value call(gl::TIntermAggregate* node);
+    void note_out_conversions(gl::TIntermAggregate* comma);
     Value ftransform();
 
     // --- lower_expr.cpp
@@ -187,6 +188,11 @@ private:
     std::map<std::string, FuncInfo> funcs_;                    // by mangled name
     std::map<std::string, ir::Reg> globals_;                   // register globals by name
     std::map<std::pair<int, long long>, ir::Reg> locals_;      // (function, symbol id)
+    // Out arguments that need a conversion: glslang writes them back after
+    // the call through the original l-value node; that l-value must be
+    // evaluated in argument order, before the call (see note_out_conversions).
+    std::map<long long, gl::TIntermTyped*> writeback_targets_;  // tempArg symbol id -> l-value
+    std::map<TIntermNode*, Access> prebound_places_;            // l-value -> place computed early
 };
 
 }  // namespace glslrun::frontend

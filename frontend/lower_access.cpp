@@ -83,6 +83,11 @@ void StageLowering::index_dynamic(Access& a, Reg idx, uint32_t count, uint32_t s
 
 Access StageLowering::access(gl::TIntermTyped* n) {
     set_line(n);
+    if (auto it = prebound_places_.find(n); it != prebound_places_.end()) {
+        Access a = std::move(it->second);
+        prebound_places_.erase(it);
+        return a;
+    }
     if (gl::TIntermSymbol* sym = n->getAsSymbolNode()) return variable(sym);
     gl::TIntermBinary* b = n->getAsBinaryNode();
     if (!b) return materialize(expr(n));

@@ -244,6 +244,7 @@ Value StageLowering::aggregate(gl::TIntermAggregate* n) {
         return last;
     }
     if (op == gl::EOpComma) {
+        note_out_conversions(n);
         Value last;
         for (TIntermNode* c : n->getSequence()) last = expr(c->getAsTyped());
         return last;

@@ -214,6 +214,13 @@ Value StageLowering::call(gl::TIntermAggregate* node) {
     for (size_t i = 0; i < args.size(); ++i) {
         gl::TIntermTyped* arg = args[i]->getAsTyped();
         gl::TStorageQualifier q = f.params[i].storage;
+        if (gl::TIntermSymbol* sym = arg->getAsSymbolNode()) {
+            auto wb = writeback_targets_.find(sym->getId());
+            if (wb != writeback_targets_.end()) {
+                prebound_places_[wb->second] = access(wb->second);
+                writeback_targets_.erase(wb);
+            }
+        }
         if (q == gl::EvqOut || q == gl::EvqInOut) outs[i] = access(arg);
         if (q == gl::EvqInOut) ins[i] = read(outs[i]);
         if (q != gl::EvqOut && q != gl::EvqInOut) ins[i] = expr(arg);
@@ -238,6 +245,45 @@ Value StageLowering::call(gl::TIntermAggregate* node) {
     Value ret;
     for (uint32_t c = 0; c < f.ret_size; ++c) ret.regs.push_back(mov(f.ret + c));
     return ret;
+}
+
+namespace {
+// The temporary behind a converted out argument, under the conversion
+// (unary convert or one-argument constructor) of a write-back's right side.
+gl::TIntermSymbol* temp_arg_of(gl::TIntermTyped* rhs) {
+    while (rhs) {
+        if (gl::TIntermSymbol* sym = rhs->getAsSymbolNode())
+            return sym->getName().compare(0, 7, "tempArg") == 0 ? sym : nullptr;
+        if (gl::TIntermUnary* u = rhs->getAsUnaryNode()) {
+            rhs = u->getOperand();
+            continue;
+        }
+        gl::TIntermAggregate* agg = rhs->getAsAggregate();
+        if (!agg || agg->getSequence().size() != 1) return nullptr;
+        rhs = agg->getSequence()[0]->getAsTyped();
+    }
+    return nullptr;
+}
+
+bool is_call(TIntermNode* n) {
+    if (gl::TIntermBinary* b = n->getAsBinaryNode(); b && b->getOp() == gl::EOpAssign) n = b->getRight();
+    gl::TIntermAggregate* agg = n->getAsAggregate();
+    return agg && agg->getOp() == gl::EOpFunctionCall;
+}
+}  // namespace
+
+// glslang lowers `f(..., lvalue, ...)` with a converted out parameter to
+// `(f(..., tempArg, ...), lvalue = convert(tempArg))`, which would evaluate
+// the l-value (and its dynamic indices) after the call. GLSL evaluates it
+// with the arguments, so call() computes its place when it reaches tempArg.
+void StageLowering::note_out_conversions(gl::TIntermAggregate* comma) {
+    const gl::TIntermSequence& seq = comma->getSequence();
+    if (seq.empty() || !is_call(seq[0])) return;
+    for (size_t i = 1; i < seq.size(); ++i) {
+        gl::TIntermBinary* b = seq[i]->getAsBinaryNode();
+        if (!b || b->getOp() != gl::EOpAssign) continue;
+        if (gl::TIntermSymbol* tmp = temp_arg_of(b->getRight())) writeback_targets_[tmp->getId()] = b->getLeft();
+    }
 }
 
 Value StageLowering::ftransform() {

@@ -148,6 +148,7 @@ struct Folder {
 }  // namespace
 
 void fold_constants(Shader& shader) {
+    FlushDenormals ftz;
     Folder folder{shader};
     for (Function& f : shader.functions) {
         Facts facts;

@@ -4,8 +4,30 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 namespace glslrun::ir {
+
+// Shaders run with denormals flushed to zero (inputs and results), as GPUs
+// and llvmpipe do and as GL permits; piglit's fs-underflow-* tests rely on
+// it. Both the interpreter and the constant folder hold this guard, so folded
+// and interpreted results stay bit-identical.
+class FlushDenormals {
+public:
+#if defined(__SSE__)
+    FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }  // FTZ | DAZ
+    ~FlushDenormals() { _mm_setcsr(saved_); }
+private:
+    unsigned saved_;
+#else
+    FlushDenormals() = default;
+#endif
+public:
+    FlushDenormals(const FlushDenormals&) = delete;
+    FlushDenormals& operator=(const FlushDenormals&) = delete;
+};
 
 inline float glsl_sign(float a) { return a > 0.0f ? 1.0f : (a < 0.0f ? -1.0f : 0.0f); }
 inline float glsl_fract(float a) { return a - std::floor(a); }

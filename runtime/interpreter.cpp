@@ -40,6 +40,9 @@ struct Range {
 struct Interpreter::Impl {
     size_t reg_count;  // the shader itself is not kept: Steps hold everything
     uint64_t max_loop_iterations;
+    // Counts the iterations of all loops of one run together, so nested
+    // loops cannot multiply the cap into an effective hang.
+    uint64_t loop_iterations_left = 0;
     // One extra register of zeros backs operands that an op does not read.
     AlignedWords file;
     Machine machine;
@@ -169,8 +172,8 @@ struct Interpreter::Impl {
     bool run_loop(const Step& s) {
         ExecMask& mask = machine.mask;
         ExecMask::LoopFrame frame = mask.loop_begin();
-        for (uint64_t iteration = 1;; ++iteration) {
-            if (iteration > max_loop_iterations)
+        for (;;) {
+            if (loop_iterations_left-- == 0)
                 return fail(fmt::format("loop exceeded {} iterations", max_loop_iterations), s.line);
             if (!run_block(s.body_begin, s.body_end)) return false;
             mask.loop_continue_block(frame);
@@ -194,6 +197,7 @@ struct Interpreter::Impl {
     bool run(LaneMask live) {
         failed = false;
         call_depth = 0;
+        loop_iterations_left = max_loop_iterations;
         error = {};
         machine.mask.reset(live & kAllLanes);
         ExecMask::CallFrame frame = machine.mask.call_begin();
@@ -211,6 +215,7 @@ Interpreter::~Interpreter() = default;
 uint32_t* Interpreter::lanes(ir::Reg r) { return impl_->reg(r); }
 
 bool Interpreter::run(LaneMask live, RunError* error) {
+    ir::FlushDenormals ftz;
     bool ok = impl_->run(live);
     if (!ok && error) *error = impl_->error;
     return ok;

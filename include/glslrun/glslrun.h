@@ -75,7 +75,9 @@ struct CompileOptions {
 };
 
 struct ExecOptions {
-    uint64_t max_loop_iterations = 1u << 20;  // per loop, per batch; then a clear error
+    // Iterations of all loops of one batch together; past it the draw stops
+    // with a clear error instead of hanging.
+    uint64_t max_loop_iterations = 1u << 22;
 };
 
 enum class Stage { Vertex, Fragment };
