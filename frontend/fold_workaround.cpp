@@ -142,7 +142,7 @@ std::string rewrite_bool_literal_compares(const std::string& src) {
     for (const Edit& e : edits)
         if (e.negate_at != std::string::npos) inserts.push_back(e.negate_at);
     std::sort(inserts.rbegin(), inserts.rend());
-    for (size_t at : inserts) out.insert(at, "!");
+    for (size_t at : inserts) out.insert(out.begin() + static_cast<std::ptrdiff_t>(at), '!');
     return out;
 }
 

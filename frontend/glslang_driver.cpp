@@ -17,6 +17,8 @@
 #include "frontend/fold_workaround.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
+#include "frontend/source_rewrite.h"
+#include "frontend/unit_checks.h"
 
 namespace glslrun::frontend {
 namespace {
@@ -80,6 +82,13 @@ struct StageUnits {
     std::string first_file() const { return sources.empty() ? std::string() : sources[0].name; }
 };
 
+// The source rewrites that work around glslang before it parses (line
+// numbers are kept by each).
+std::string prepare_source(const std::string& text) {
+    std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(text)));
+    return rewrite_bool_literal_compares(brace_do_while_bodies(s));
+}
+
 bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
     const TBuiltInResource res = resources();
     bool ok = true;
@@ -87,7 +96,7 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
     st.texts.clear();
     for (size_t i = 0; i < st.sources.size(); ++i) {
         st.names.push_back(internal_source_name(i));
-        st.texts.push_back(rewrite_bool_literal_compares(st.sources[i].text));
+        st.texts.push_back(prepare_source(st.sources[i].text));
     }
     for (size_t i = 0; i < st.sources.size(); ++i) {
         auto sh = std::make_unique<glslang::TShader>(st.lang);
@@ -100,6 +109,7 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
         if (st.lang == EShLangVertex) sh->setPreamble("#extension GL_ARB_shader_texture_lod : enable\n");
         bool parsed = sh->parse(&res, default_version, ENoProfile, false, false, kMessages);
         parse_info_log(sh->getInfoLog(), st.sources, st.sources[i].name, diags);
+        if (parsed && sh->getIntermediate()) check_unit_rules(*sh->getIntermediate(), st.texts[i], st.sources[i].name, diags);
         ok = ok && parsed;
         st.shaders.push_back(std::move(sh));
     }

@@ -7,7 +7,8 @@ mode=${1:-demo}
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
-          libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev)
+          libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
+          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev)
 [ "$mode" = test ] && packages+=(piglit)
 missing=()
 for p in "${packages[@]}"; do

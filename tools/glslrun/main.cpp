@@ -145,8 +145,12 @@ int render_quad(Program& prog, const MainOptions& o) {
     int width = 0, height = 0;
     char x = 0;
     if (std::sscanf(o.size.c_str(), "%d%c%d", &width, &x, &height) != 3 || (x != 'x' && x != 'X') ||
-        width <= 0 || height <= 0 || width > 16384 || height > 16384) {
-        fmt::print(stderr, "error: --size must be WxH, e.g. 512x512\n");
+        width <= 0 || height <= 0) {
+        fmt::print(stderr, "error: --size must be WxH with positive sizes, e.g. 512x512\n");
+        return 2;
+    }
+    if (width > 16384 || height > 16384) {
+        fmt::print(stderr, "error: --size {}x{} is too large: at most 16384x16384\n", width, height);
         return 2;
     }
     GLState gl = lecture_state(width, height);

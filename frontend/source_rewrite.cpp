@@ -1,0 +1,353 @@
+// Source rewrites run before glslang (see source_rewrite.h). They work on a
+// light token stream (identifiers, numbers, punctuation; comments skipped,
+// preprocessor lines as one token) and leave the source untouched whenever
+// it does not have the shape they expect, e.g. a statement built by a macro.
+#include "frontend/source_rewrite.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <regex>
+#include <vector>
+
+namespace glslrun::frontend {
+namespace {
+
+struct Token {
+    enum Kind { Word, Punct, Directive } kind;
+    size_t pos;
+    std::string text;
+};
+
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+size_t skip_comment(const std::string& s, size_t i) {  // i at '/'; returns i if no comment starts
+    if (i + 1 >= s.size()) return i;
+    if (s[i + 1] == '/') {
+        size_t e = s.find('\n', i);
+        return e == std::string::npos ? s.size() : e;
+    }
+    if (s[i + 1] == '*') {
+        size_t e = s.find("*/", i + 2);
+        return e == std::string::npos ? s.size() : e + 2;
+    }
+    return i;
+}
+
+size_t directive_end(const std::string& s, size_t i) {  // the line, with backslash continuations
+    while (i < s.size() && s[i] != '\n') {
+        if (s[i] == '\\' && i + 1 < s.size() && s[i + 1] == '\n') ++i;
+        ++i;
+    }
+    return i;
+}
+
+std::vector<Token> lex(const std::string& s) {
+    std::vector<Token> out;
+    bool line_start = true;
+    for (size_t i = 0; i < s.size();) {
+        char c = s[i];
+        if (c == '\n') line_start = true;
+        if (std::isspace(static_cast<unsigned char>(c))) {
+            ++i;
+            continue;
+        }
+        if (c == '/' && skip_comment(s, i) != i) {
+            i = skip_comment(s, i);
+            continue;
+        }
+        if (c == '#' && line_start) {
+            size_t e = directive_end(s, i);
+            out.push_back({Token::Directive, i, s.substr(i, e - i)});
+            i = e;
+            continue;
+        }
+        line_start = false;
+        size_t e = i + 1;
+        if (word_char(c))
+            while (e < s.size() && (word_char(s[e]) || s[e] == '.')) ++e;
+        out.push_back({word_char(c) ? Token::Word : Token::Punct, i, s.substr(i, e - i)});
+        i = e;
+    }
+    return out;
+}
+
+// Recognizes one statement's extent in the token stream; nullopt where the
+// tokens do not form one on their own (preprocessor lines, macro bodies).
+class StatementScanner {
+public:
+    explicit StatementScanner(const std::vector<Token>& t) : t_(t) {}
+
+    std::optional<size_t> statement(size_t i, int depth = 0) const {
+        if (i >= t_.size() || depth > 64 || t_[i].kind == Token::Directive) return std::nullopt;
+        const std::string& w = t_[i].text;
+        if (w == "{") return balanced(i, "{", "}");
+        if (w == "}") return std::nullopt;
+        if (w == "if") {
+            auto body = paren_then_statement(i + 1, depth);
+            if (body && is(*body, "else")) return statement(*body + 1, depth + 1);
+            return body;
+        }
+        if (w == "for" || w == "while") return paren_then_statement(i + 1, depth);
+        if (w == "do") {
+            auto body = statement(i + 1, depth + 1);
+            if (!body || !is(*body, "while")) return std::nullopt;
+            auto test = balanced(*body + 1, "(", ")");
+            if (!test || !is(*test, ";")) return std::nullopt;
+            return *test + 1;
+        }
+        return simple(i);
+    }
+
+    bool is(size_t i, const char* text) const { return i < t_.size() && t_[i].text == text; }
+
+private:
+    std::optional<size_t> paren_then_statement(size_t i, int depth) const {
+        auto after = balanced(i, "(", ")");
+        if (!after) return std::nullopt;
+        return statement(*after, depth + 1);
+    }
+
+    // i at `open`; returns one past the matching `close`.
+    std::optional<size_t> balanced(size_t i, const char* open, const char* close) const {
+        if (!is(i, open)) return std::nullopt;
+        int level = 0;
+        for (; i < t_.size(); ++i) {
+            if (t_[i].kind == Token::Directive) return std::nullopt;
+            if (t_[i].text == open) ++level;
+            else if (t_[i].text == close && --level == 0) return i + 1;
+        }
+        return std::nullopt;
+    }
+
+    // An expression or declaration statement: up to `;` outside brackets.
+    std::optional<size_t> simple(size_t i) const {
+        int level = 0;
+        for (; i < t_.size(); ++i) {
+            const Token& tok = t_[i];
+            if (tok.kind == Token::Directive || tok.text == "{" || tok.text == "}") return std::nullopt;
+            if (tok.text == "(" || tok.text == "[") ++level;
+            else if (tok.text == ")" || tok.text == "]") --level;
+            else if (tok.text == ";" && level == 0) return i + 1;
+            if (level < 0) return std::nullopt;
+        }
+        return std::nullopt;
+    }
+
+    const std::vector<Token>& t_;
+};
+
+}  // namespace
+
+std::string brace_do_while_bodies(const std::string& src) {
+    if (src.find("do") == std::string::npos) return src;
+    std::vector<Token> tokens = lex(src);
+    StatementScanner scan(tokens);
+    std::vector<std::pair<size_t, char>> inserts;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+        if (tokens[i].text != "do" || scan.is(i + 1, "{")) continue;
+        auto end = scan.statement(i + 1);
+        if (!end || !scan.is(*end, "while")) continue;
+        inserts.emplace_back(tokens[i + 1].pos, '{');
+        inserts.emplace_back(tokens[*end].pos, '}');
+    }
+    if (inserts.empty()) return src;
+    std::stable_sort(inserts.begin(), inserts.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::string out = src;
+    for (const auto& [pos, c] : inserts) out.insert(pos, 1, c);
+    return out;
+}
+
+std::string splice_line_continuations(const std::string& src) {
+    if (src.find('\\') == std::string::npos) return src;
+    std::string out;
+    out.reserve(src.size());
+    size_t pending = 0;
+    for (size_t i = 0; i < src.size(); ++i) {
+        if (src[i] == '\\') {
+            size_t nl = i + 1 < src.size() && src[i + 1] == '\r' ? i + 2 : i + 1;
+            if (nl < src.size() && src[nl] == '\n') {
+                ++pending;
+                i = nl;
+                continue;
+            }
+        }
+        out += src[i];
+        if (src[i] == '\n') {
+            out.append(pending, '\n');
+            pending = 0;
+        }
+    }
+    out.append(pending, '\n');
+    return out;
+}
+
+namespace {
+
+std::string padded(const std::string& text, size_t width) {
+    return text + std::string(width > text.size() ? width - text.size() : 0, ' ');
+}
+
+std::string rewrite_directive(const std::string& line) {
+    static const std::regex ifdef(R"(^(\s*#\s*)(ifn?def)(\s+)(__VERSION__|__LINE__|__FILE__)\b)");
+    static const std::regex if_line(R"(^\s*#\s*(if|elif)\b)");
+    static const std::regex defined(
+        R"(\bdefined\s*\(\s*(__VERSION__|__LINE__|__FILE__)\s*\)|\bdefined\s+(__VERSION__|__LINE__|__FILE__)\b)");
+    std::smatch m;
+    if (std::regex_search(line, m, ifdef)) {
+        std::string repl = m[1].str() + (m[2].str() == "ifdef" ? "if 1" : "if 0");
+        return padded(repl, size_t(m.length(0))) + m.suffix().str();
+    }
+    if (!std::regex_search(line, if_line)) return line;
+    std::string out, rest = line;
+    while (std::regex_search(rest, m, defined)) {
+        out += m.prefix().str() + padded("1", size_t(m.length(0)));
+        rest = m.suffix().str();
+    }
+    return out + rest;
+}
+
+}  // namespace
+
+std::string define_predefined_macros(const std::string& src) {
+    if (src.find("__VERSION__") == std::string::npos && src.find("__LINE__") == std::string::npos &&
+        src.find("__FILE__") == std::string::npos)
+        return src;
+    std::string out;
+    size_t start = 0;
+    while (start < src.size()) {
+        size_t end = src.find('\n', start);
+        if (end == std::string::npos) end = src.size();
+        std::string line = src.substr(start, end - start);
+        size_t first = line.find_first_not_of(" \t");
+        out += first != std::string::npos && line[first] == '#' ? rewrite_directive(line) : line;
+        if (end < src.size()) out += '\n';
+        start = end + 1;
+    }
+    return out;
+}
+
+namespace {
+
+TokenPos position_of(const std::string& src, size_t pos) {
+    TokenPos p;
+    p.line = 1 + int(std::count(src.begin(), src.begin() + long(pos), '\n'));
+    size_t line_start = src.rfind('\n', pos == 0 ? 0 : pos - 1);
+    p.column = int(line_start == std::string::npos || pos == 0 ? pos : pos - line_start - 1);
+    return p;
+}
+
+bool is_word(const Token& t) { return t.kind == Token::Word && !std::isdigit(static_cast<unsigned char>(t.text[0])); }
+
+// A `+` token is unary unless it follows an operand.
+bool unary_position(const std::vector<Token>& t, size_t i) {
+    if (i == 0) return true;
+    const Token& prev = t[i - 1];
+    if (prev.kind == Token::Word) return prev.text == "return" || prev.text == "else" || prev.text == "do";
+    if (prev.text == ")" || prev.text == "]") return false;
+    return prev.text != "+" || prev.pos + 1 != t[i].pos;  // `++` is not `+ +`
+}
+
+}  // namespace
+
+std::vector<UnaryPlusOperand> unary_plus_operands(const std::string& src) {
+    std::vector<UnaryPlusOperand> out;
+    if (src.find('+') == std::string::npos) return out;
+    std::vector<Token> t = lex(src);
+    auto postfix_at = [&](size_t k) { return k < t.size() && (t[k].text == "[" || t[k].text[0] == '.'); };
+    for (size_t i = 0; i + 1 < t.size(); ++i) {
+        // Words hold their `.field` suffixes; those operands are not plain.
+        if (t[i].text != "+" || !unary_position(t, i) || !is_word(t[i + 1]) ||
+            t[i + 1].text.find('.') != std::string::npos || postfix_at(i + 2))
+            continue;
+        bool call = i + 2 < t.size() && t[i + 2].text == "(";
+        size_t at = i + 1;
+        if (call) {
+            int level = 0;
+            size_t k = i + 2;
+            for (; k < t.size(); ++k) {
+                if (t[k].text == "(") ++level;
+                else if (t[k].text == ")" && --level == 0) break;
+            }
+            if (k >= t.size() || postfix_at(k + 1)) continue;
+            at = k;
+        }
+        out.push_back({position_of(src, t[at].pos), call});
+    }
+    return out;
+}
+
+std::vector<TokenPos> vector_constructor_subscripts(const std::string& src) {
+    static const std::regex vector_type(R"(^[biu]?vec[234]$)");
+    std::vector<TokenPos> out;
+    if (src.find("vec") == std::string::npos) return out;
+    std::vector<Token> t = lex(src);
+    for (size_t i = 0; i + 2 < t.size(); ++i) {
+        if (t[i].text != "[" || !std::regex_match(t[i + 1].text, vector_type) || t[i + 2].text != "(") continue;
+        int level = 0;
+        size_t k = i + 2;
+        for (; k < t.size(); ++k) {
+            if (t[k].kind == Token::Directive) break;
+            if (t[k].text == "(") ++level;
+            else if (t[k].text == ")" && --level == 0) break;
+        }
+        if (k + 1 < t.size() && t[k + 1].text == "]") out.push_back(position_of(src, t[i].pos));
+    }
+    return out;
+}
+
+std::string drop_float_suffixes(const std::string& src) {
+    if (src.find_first_of("fF") == std::string::npos) return src;
+    std::string out = src;
+    for (size_t i = 0; i < out.size();) {
+        if (out[i] == '/' && skip_comment(out, i) != i) {
+            i = skip_comment(out, i);
+            continue;
+        }
+        bool starts_number = std::isdigit(static_cast<unsigned char>(out[i])) ||
+                             (out[i] == '.' && i + 1 < out.size() && std::isdigit(static_cast<unsigned char>(out[i + 1])));
+        if (!starts_number || (i > 0 && word_char(out[i - 1]))) {
+            ++i;
+            continue;
+        }
+        size_t e = i;
+        while (e < out.size() && (word_char(out[e]) || out[e] == '.' ||
+                                  ((out[e] == '+' || out[e] == '-') && (out[e - 1] == 'e' || out[e - 1] == 'E'))))
+            ++e;
+        std::string lit = out.substr(i, e - i);
+        bool hex = lit.size() > 1 && lit[0] == '0' && (lit[1] == 'x' || lit[1] == 'X');
+        bool is_float = lit.find_first_of(".eE") != std::string::npos;
+        if (!hex && is_float && (lit.back() == 'f' || lit.back() == 'F')) out[e - 1] = ' ';
+        i = e;
+    }
+    return out;
+}
+
+std::vector<int> stringification_lines(const std::string& src) {
+    static const std::regex function_macro(R"(^\s*#\s*define\s+\w+\([^)]*\))");
+    static const std::regex open_if(R"(^\s*#\s*if)");
+    static const std::regex close_if(R"(^\s*#\s*endif)");
+    std::vector<int> out;
+    if (src.find("define") == std::string::npos) return out;
+    int conditional_depth = 0;  // only definitions outside any #if are surely not skipped
+    for (const Token& t : lex(src)) {
+        if (t.kind != Token::Directive) continue;
+        if (std::regex_search(t.text, open_if)) ++conditional_depth;
+        if (std::regex_search(t.text, close_if) && conditional_depth > 0) --conditional_depth;
+        std::smatch m;
+        if (conditional_depth > 0 || !std::regex_search(t.text, m, function_macro)) continue;
+        std::string body = m.suffix().str();
+        for (size_t k = 0; k < body.size(); ++k) {
+            if (body[k] != '#') continue;
+            if (k + 1 < body.size() && body[k + 1] == '#') {
+                ++k;  // `##` token pasting
+                continue;
+            }
+            out.push_back(position_of(src, t.pos).line);
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace glslrun::frontend
