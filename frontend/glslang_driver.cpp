@@ -13,6 +13,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/compile.h"
+#include "frontend/diagnostic_hints.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
 #include "frontend/link.h"
@@ -108,7 +109,9 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
         // shader; glslang 12 wants the extension.
         if (st.lang == EShLangVertex) sh->setPreamble("#extension GL_ARB_shader_texture_lod : enable\n");
         bool parsed = sh->parse(&res, default_version, ENoProfile, false, false, kMessages);
+        size_t first = diags.size();
         parse_info_log(sh->getInfoLog(), st.sources, st.sources[i].name, diags);
+        add_hints(diags, first, st.sources[i]);
         if (parsed && sh->getIntermediate()) check_unit_rules(*sh->getIntermediate(), st.texts[i], st.sources[i].name, diags);
         ok = ok && parsed;
         st.shaders.push_back(std::move(sh));

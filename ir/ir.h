@@ -128,6 +128,7 @@ struct Uniform {
     bool is_array = false;
     uint32_t slot = 0;
     bool builtin = false;  // gl_* state, set by the GL state object
+    bool read = true;      // some instruction reads it (mark_read_uniforms)
 };
 
 // How one fragment-shader input is fed from the vertex shader's outputs.

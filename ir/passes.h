@@ -30,6 +30,11 @@ void propagate_copies(Shader& shader);
 // control flow.
 void eliminate_dead_code(Shader& shader);
 
+// ir/uniform_reads.cpp: sets Uniform::read on the leaves whose words some
+// `uniform`/`uniform_ind` instruction of either shader reads (after
+// optimization: GL's "active" uniforms, finer grained, per struct member).
+void mark_read_uniforms(Program& program);
+
 struct PassOptions {
     bool optimize = true;
     uint32_t inline_budget = 4000;

@@ -2,6 +2,7 @@
 // transform, facing and culling, then triangles/lines/points into the
 // fragment stage.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -182,8 +183,13 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
             return Error(fmt::format("index {} is out of range ({} vertices)", index, vertex_count));
     if (Status st = apply_builtin_uniforms(program, gl); !st) return st.error();
     DrawStats stats;
+    using Clock = std::chrono::steady_clock;
+    auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    auto start = Clock::now();
     auto shaded = exec::shade_vertices(program, attribs, vertex_count, gl);
     if (!shaded) return shaded.error();
+    stats.vertex_seconds = seconds_since(start);
+    auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = program.state().ir.vertex;
     FragmentStage stage(program, gl, fb, stats);
@@ -210,7 +216,19 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
         }
     }
     if (Status st = stage.finish(); !st) return st.error();
+    stats.raster_seconds = std::max(0.0, seconds_since(raster_start) - stats.fragment_seconds);
     return stats;
+}
+
+DrawStats& DrawStats::operator+=(const DrawStats& o) {
+    vertices += o.vertices;
+    triangles += o.triangles;
+    fragments_shaded += o.fragments_shaded;
+    fragments_written += o.fragments_written;
+    vertex_seconds += o.vertex_seconds;
+    raster_seconds += o.raster_seconds;
+    fragment_seconds += o.fragment_seconds;
+    return *this;
 }
 
 }  // namespace glslrun

@@ -1,6 +1,7 @@
 #include "raster/fragments.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "raster/framebuffer.h"
 #include "runtime/execute.h"
@@ -130,7 +131,9 @@ void FragmentStage::flush() {
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
     rt::RunError run_error;
     rt::Interpreter& in = *interp_;
+    auto start = std::chrono::steady_clock::now();
     bool ok = in.run(live, &run_error);
+    stats_.fragment_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     quads_ = 0;
     rt::LaneMask covered = covered_;
     covered_ = 0;

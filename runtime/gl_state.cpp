@@ -27,14 +27,27 @@ namespace {
 constexpr int kMaxUnits = 32;
 
 using Emit = std::function<void(const std::string& name, const float* values, size_t count)>;
+// The built-ins the program reads: state nobody reads is never derived
+// (the inverses of 32 texture matrices, light products, ...).
+struct Wants {
+    std::unordered_map<std::string_view, const ir::Uniform*> names;
+    bool name(const std::string& n) const { return names.count(n) > 0; }
+    bool prefix(std::string_view p) const {
+        for (const auto& entry : names)
+            if (entry.first.starts_with(p)) return true;
+        return false;
+    }
+};
 
 void emit_vec(const Emit& emit, const std::string& name, const glm::vec4& v) { emit(name, &v[0], 4); }
 void emit_vec3(const Emit& emit, const std::string& name, const glm::vec3& v) { emit(name, &v[0], 3); }
 void emit_float(const Emit& emit, const std::string& name, float f) { emit(name, &f, 1); }
 
 // The four variants of one matrix: M, Inverse, Transpose, InverseTranspose.
-void emit_matrix_family(const Emit& emit, const std::string& base, const std::vector<glm::mat4>& ms) {
+void emit_matrix_family(const Emit& emit, const Wants& wants, const std::string& base,
+                        const std::vector<glm::mat4>& ms) {
     auto each = [&](const char* suffix, auto transform) {
+        if (!wants.name(base + suffix)) return;
         std::vector<float> words;
         for (const glm::mat4& m : ms) {
             glm::mat4 t = transform(m);
@@ -93,14 +106,16 @@ void emit_material(const Emit& emit, const std::string& side, const MaterialStat
     }
 }
 
-void emit_matrices(const Emit& emit, const GLState& gl) {
-    emit_matrix_family(emit, "gl_ModelViewMatrix", {gl.modelview});
-    emit_matrix_family(emit, "gl_ProjectionMatrix", {gl.projection});
-    emit_matrix_family(emit, "gl_ModelViewProjectionMatrix", {gl.projection * gl.modelview});
-    // glslang may size the texture-unit arrays beyond GLState's 8 units: those are identity.
-    std::vector<glm::mat4> textures(kMaxUnits, glm::mat4(1.0f));
-    std::copy(gl.texture_matrix.begin(), gl.texture_matrix.end(), textures.begin());
-    emit_matrix_family(emit, "gl_TextureMatrix", textures);
+void emit_matrices(const Emit& emit, const Wants& wants, const GLState& gl) {
+    emit_matrix_family(emit, wants, "gl_ModelViewMatrix", {gl.modelview});
+    emit_matrix_family(emit, wants, "gl_ProjectionMatrix", {gl.projection});
+    emit_matrix_family(emit, wants, "gl_ModelViewProjectionMatrix", {gl.projection * gl.modelview});
+    if (wants.prefix("gl_TextureMatrix")) {
+        // glslang may size the texture-unit arrays beyond GLState's 8 units: those are identity.
+        std::vector<glm::mat4> textures(kMaxUnits, glm::mat4(1.0f));
+        std::copy(gl.texture_matrix.begin(), gl.texture_matrix.end(), textures.begin());
+        emit_matrix_family(emit, wants, "gl_TextureMatrix", textures);
+    }
     glm::mat3 normal = glm::inverseTranspose(glm::mat3(gl.modelview));
     emit("gl_NormalMatrix", &normal[0][0], 9);
     // Mesa: 1 / |row 2 of the inverse modelview's upper 3x3|.
@@ -132,32 +147,35 @@ void emit_fixed_defaults(const Emit& emit, const GLState& gl) {
         emit(fmt::format("gl_EyePlane{}", coord[c]), words.data(), words.size());
         emit(fmt::format("gl_ObjectPlane{}", coord[c]), words.data(), words.size());
     }
-    emit_vec(emit, "gl_Fog.color", glm::vec4(0.0f));
-    emit_float(emit, "gl_Fog.density", 1.0f);
-    emit_float(emit, "gl_Fog.start", 0.0f);
-    emit_float(emit, "gl_Fog.end", 1.0f);
-    emit_float(emit, "gl_Fog.scale", 1.0f);
+    emit_vec(emit, "gl_Fog.color", gl.fog.color);
+    emit_float(emit, "gl_Fog.density", gl.fog.density);
+    emit_float(emit, "gl_Fog.start", gl.fog.start);
+    emit_float(emit, "gl_Fog.end", gl.fog.end);
+    // Mesa: 1 / (end - start), and 1 when they are equal (GL leaves that case open).
+    float span = gl.fog.end - gl.fog.start;
+    emit_float(emit, "gl_Fog.scale", span != 0.0f ? 1.0f / span : 1.0f);
 }
 
-void for_each_builtin(const GLState& gl, const Emit& emit) {
-    emit_matrices(emit, gl);
+void for_each_builtin(const GLState& gl, const Wants& wants, const Emit& emit) {
+    emit_matrices(emit, wants, gl);
     emit_fixed_defaults(emit, gl);
-    for (int i = 0; i < 8; ++i) emit_light(emit, i, gl.lights[i]);
-    emit_material(emit, "Front", gl.front_material, gl);
-    emit_material(emit, "Back", gl.back_material, gl);
+    for (int i = 0; i < 8; ++i)
+        if (wants.prefix(fmt::format("gl_LightSource[{}]", i))) emit_light(emit, i, gl.lights[i]);
+    if (wants.prefix("gl_Front")) emit_material(emit, "Front", gl.front_material, gl);
+    if (wants.prefix("gl_Back")) emit_material(emit, "Back", gl.back_material, gl);
 }
 
 }  // namespace
 
 Status apply_builtin_uniforms(Program& program, const GLState& gl) {
     Program::State& st = program.state();
-    std::unordered_map<std::string_view, const ir::Uniform*> wanted;
+    Wants wants;
     for (const ir::Uniform& u : st.ir.uniforms)
-        if (u.builtin) wanted.emplace(u.name, &u);
-    if (wanted.empty()) return Ok{};
-    for_each_builtin(gl, [&](const std::string& name, const float* values, size_t count) {
-        auto it = wanted.find(name);
-        if (it == wanted.end()) return;
+        if (u.builtin && u.read) wants.names.emplace(u.name, &u);
+    if (wants.names.empty()) return Ok{};
+    for_each_builtin(gl, wants, [&](const std::string& name, const float* values, size_t count) {
+        auto it = wants.names.find(name);
+        if (it == wants.names.end()) return;
         const ir::Uniform& u = *it->second;
         size_t words = std::min<size_t>(count, size_t(u.type.components()) * u.array_size);
         if (u.slot + words > st.uniforms.size()) return;  // malformed layout: never write past the store

@@ -45,6 +45,7 @@ Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
         std::string problem = ir::optimize(*shader, passes);
         if (!problem.empty()) return Error("internal error: " + problem);
     }
+    ir::mark_read_uniforms(st.ir);
     initialise_uniforms(st.ir, st.uniforms);
     if (!vertex.empty()) st.vertex_name = vertex.front().name;
     if (!fragment.empty()) st.fragment_name = fragment.front().name;
@@ -129,7 +130,7 @@ std::string glsl_type_name(const ir::ValueType& t) {
 std::vector<UniformInfo> Program::uniforms() const {
     std::vector<UniformInfo> out;
     for (const ir::Uniform& u : state_->ir.uniforms)
-        out.push_back({u.name, glsl_type_name(u.type), u.array_size, u.builtin});
+        out.push_back({u.name, glsl_type_name(u.type), u.array_size, u.builtin, u.read});
     return out;
 }
 

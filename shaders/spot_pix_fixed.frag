@@ -1,3 +1,5 @@
+// The lecture's fix for the "Ooops": the light's ambient only where N.L > 0
+// inside the cone. `spotAtt != 0` is corrected to `spotAtt != 0.0`.
 varying vec3 normal, ecPos;
 
 void main()

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine (as root), builds glslrun, then either
-#   demo: renders the lecture's minimal program to minimal.png, or
+#   demo: renders the lecture's per-pixel spot-light teapot to spot.png, or
 #   test: runs every test (unit tests, example, piglit conformance suite).
 set -euo pipefail
 mode=${1:-demo}
@@ -24,8 +24,8 @@ cmake --build build -j "$(nproc)"
 
 case "$mode" in
 demo)
-    ./build/glslrun shaders/minimal.vert shaders/minimal.frag -o minimal.png
-    echo "wrote minimal.png"
+    ./build/glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png --stats
+    echo "wrote spot.png"
     ;;
 test)
     (cd build && ctest --output-on-failure -j "$(nproc)")

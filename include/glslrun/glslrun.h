@@ -90,6 +90,7 @@ struct UniformInfo {
     std::string type;   // GLSL type name: "vec3", "mat4", "sampler2D", ...
     uint32_t array_size = 1;
     bool builtin = false;
+    bool read = true;  // the optimized program reads it (built-ins that are not read are not derived)
 };
 
 class Program {
@@ -150,6 +151,8 @@ struct GLState {
     uint32_t clip_plane_enabled = 0;         // bit i: GL_CLIP_PLANEi
     float depth_near = 0, depth_far = 1;
     float point_size = 1;
+    struct Fog { glm::vec4 color{0, 0, 0, 0}; float density = 1, start = 0, end = 1; } fog;
+    bool light_model_local_viewer = false, light_model_two_side = false;  // fixed function only
     glm::vec4 current_color{1, 1, 1, 1};     // glColor, for gl_Color without an array
     glm::vec4 current_secondary_color{0, 0, 0, 1};
     glm::vec3 current_normal{0, 0, 1};
@@ -210,6 +213,10 @@ enum class Primitive { Points, Lines, LineStrip, LineLoop, Triangles, TriangleSt
 
 struct DrawStats {
     uint64_t vertices = 0, triangles = 0, fragments_shaded = 0, fragments_written = 0;
+    // Wall time per stage; "raster" is assembly, clipping, setup and
+    // rasterization, plus the depth test and colour writes.
+    double vertex_seconds = 0, raster_seconds = 0, fragment_seconds = 0;
+    DrawStats& operator+=(const DrawStats& other);
 };
 
 // Draws with the program's current uniforms. Built-in uniforms are taken

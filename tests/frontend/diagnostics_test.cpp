@@ -45,7 +45,8 @@ TEST_CASE("the corrected lecture shader compiles") { compile_ok(kLectureVs, kCol
 
 TEST_CASE("lecture typo: glColor is an undeclared identifier") {
     std::string err = compile_error("void main() {\n glColor = gl_Color;\n gl_Position = ftransform();\n}\n", kColorFs);
-    CHECK(err == "t.vert:2: error: 'glColor' : undeclared identifier\n");
+    CHECK_THAT(err, Catch::StartsWith("t.vert:2: error: 'glColor' : undeclared identifier ("));
+    CHECK(std::count(err.begin(), err.end(), '\n') == 1);
 }
 
 TEST_CASE("lecture typo: gl_FrontMaterial.emissive") {
@@ -57,18 +58,18 @@ TEST_CASE("lecture typo: gl_FrontMaterial.emissive") {
 
 TEST_CASE("lecture typo: FrontMaterial.diffuse") {
     std::string err = compile_error(replace(kLectureVs, "gl_FrontMaterial.diffuse", "FrontMaterial.diffuse"), kColorFs);
-    CHECK_THAT(err, Catch::StartsWith("t.vert:9: error: 'FrontMaterial' : undeclared identifier\n"));
+    CHECK_THAT(err, Catch::StartsWith("t.vert:9: error: 'FrontMaterial' : undeclared identifier (did you mean 'gl_FrontMaterial'?)\n"));
 }
 
-TEST_CASE("lecture typo: a missing semicolon is reported on the next line") {
+TEST_CASE("lecture typo: a missing semicolon is reported on the line that lacks it") {
     std::string err = compile_error(replace(kLectureVs, "0.0);\n", "0.0)\n"), kColorFs);
-    CHECK_THAT(err, Catch::StartsWith("t.vert:9: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON\n"));
+    CHECK_THAT(err, Catch::StartsWith("t.vert:8: error: missing ';' at the end of this line (line 9 continues with 'diffuse = "));
 }
 
 TEST_CASE("lecture typo: int literal in 1 / (...)") {
     std::string vs = replace(kLectureVs, "    gl_Position", "    float att = 1 / (gl_LightSource[0].constantAttenuation + 1.0);\n    gl_Position");
     std::string err = compile_error(vs, kColorFs);
-    CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '/' : wrong operand types: no operation '/' exists"));
+    CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '/' : no operator int / float exists (GLSL 1.10 never converts int to float implicitly"));
     // GLSL 1.20 converts the int implicitly.
     compile_ok(vs, kColorFs, 120);
 }
@@ -76,7 +77,7 @@ TEST_CASE("lecture typo: int literal in 1 / (...)") {
 TEST_CASE("lecture typo: intensity > 0") {
     std::string vs = replace(kLectureVs, "    gl_Position", "    if (intensity > 0) gl_FrontColor += vec4(1.0);\n    gl_Position");
     std::string err = compile_error(vs, kColorFs);
-    CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '>' : wrong operand types"));
+    CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '>' : no operator float > int exists"));
 }
 
 TEST_CASE("diagnostics name the right unit when a stage has several") {

@@ -1,9 +1,9 @@
 // The glslrun command line:
 //   glslrun test [options] PATH...            piglit tests (shader_runner / glslparsertest)
+//   glslrun a.vert a.frag scene.toml [-o out.png] [--stats]   a scene, rendered
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
-//   glslrun a.vert a.frag -o out.png          the lecture quad, rendered
+//   glslrun --compare ref.png image.png       image differences
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -11,12 +11,12 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
+#include "render_command.h"
 
 namespace {
 
@@ -105,110 +105,38 @@ int test_main(int argc, char** argv) {
     return run_test_command(o);
 }
 
-// ------------------------------------------------------- programs, quad ---
-struct MainOptions {
-    std::vector<std::string> shaders;
-    std::string output;
-    std::string size = "512x512";
-    bool dump_ir = false;
-};
-
-std::optional<Stage> stage_of(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    if (ext == ".vert" || ext == ".vs") return Stage::Vertex;
-    if (ext == ".frag" || ext == ".fs") return Stage::Fragment;
-    return std::nullopt;
-}
-
-// The lecture's state (notes/scenes.md): camera, light 0 "directional", material.
-GLState lecture_state(int width, int height) {
-    GLState gl;
-    gl.projection = glm::perspective(glm::radians(45.0f), float(width) / float(height), 1.0f, 100.0f);
-    gl.modelview = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
-    gl.depth_test = true;
-    LightState& l = gl.lights[0];
-    l.ambient = {0.2f, 0.2f, 0.2f, 1};
-    l.diffuse = {1, 1, 1, 1};
-    l.specular = {1, 1, 1, 1};
-    l.position = {1, 1, 1, 0};  // eye space: directions are unchanged by the camera
-    MaterialState m;
-    m.ambient = {0.25f, 0.20f, 0.07f, 1};
-    m.diffuse = {0.75f, 0.61f, 0.23f, 1};
-    m.specular = {0.80f, 0.80f, 0.80f, 1};
-    m.emission = {0.0f, 0.0f, 0.05f, 1};
-    m.shininess = 64;
-    gl.front_material = gl.back_material = m;
-    return gl;
-}
-
-int render_quad(Program& prog, const MainOptions& o) {
-    int width = 0, height = 0;
-    char x = 0;
-    if (std::sscanf(o.size.c_str(), "%d%c%d", &width, &x, &height) != 3 || (x != 'x' && x != 'X') ||
-        width <= 0 || height <= 0) {
-        fmt::print(stderr, "error: --size must be WxH with positive sizes, e.g. 512x512\n");
-        return 2;
-    }
-    if (width > 16384 || height > 16384) {
-        fmt::print(stderr, "error: --size {}x{} is too large: at most 16384x16384\n", width, height);
-        return 2;
-    }
-    GLState gl = lecture_state(width, height);
-    Framebuffer fb(width, height);
-    fb.clear_color({0, 0, 0, 1});
-    fb.clear_depth(1);
-    std::vector<VertexAttrib> quad = {
-        {"gl_Vertex", 3, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}},
-        {"gl_Color", 3, {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 0}},
-        {"gl_Normal", 3, {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}},
-    };
-    auto stats = draw(prog, gl, fb, Primitive::Quads, quad, 4);
-    if (!stats) { fmt::print(stderr, "{}", stats.error().str() + "\n"); return 1; }
-    auto st = write_png(fb, o.output);
-    if (!st) { fmt::print(stderr, "{}", st.error().str() + "\n"); return 1; }
-    return 0;
-}
-
-int program_main(const MainOptions& o) {
-    std::vector<ShaderSource> vs, fs;
-    for (const auto& path : o.shaders) {
-        auto stage = stage_of(path);
-        if (!stage) {
-            fmt::print(stderr, "{}: error: unknown shader stage (use .vert or .frag)\n", path);
-            return 2;
-        }
-        auto text = read_text(path);
-        if (!text) { fmt::print(stderr, "{}: error: cannot read the file\n", path); return 2; }
-        (*stage == Stage::Vertex ? vs : fs).push_back({path, *text});
-    }
-    auto prog = Program::compile(vs, fs);
-    if (!prog) {
-        std::string msg = prog.error().str();
-        if (!msg.empty() && msg.back() != '\n') msg += '\n';
-        std::fputs(msg.c_str(), stderr);
-        return 1;
-    }
-    if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
-    if (!o.output.empty()) return render_quad(*prog, o);
-    return 0;
-}
-
+// ------------------------------------------------ programs and scenes ---
 int program_cli(int argc, char** argv) {
-    CLI::App app{"glslrun: legacy GLSL (1.10/1.20) on the CPU", "glslrun"};
-    MainOptions o;
+    CLI::App app{"glslrun: legacy GLSL (1.10/1.20) on the CPU.\n"
+                 "Renders a scene file with a GLSL program, compiles shaders, or compares images.",
+                 "glslrun"};
+    std::vector<std::string> files;
+    cli::RenderOptions o;
     app.set_version_flag("--version", kVersion);
+    app.add_option("files", files,
+                   "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
+                   "pass-through one is used)");
+    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png)");
+    app.add_option("--size", o.size, "image size WxH, instead of the scene's");
+    app.add_flag("--stats", o.stats,
+                 "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
-    app.add_option("-o,--output", o.output, "render the lecture quad into this PNG");
-    app.add_option("--size", o.size, "image size WxH (default 512x512)");
-    app.add_option("shaders", o.shaders, "shader files (.vert, .frag); several per stage allowed");
-    app.footer("Piglit tests: glslrun test [-j N] [--root DIR] [--expect FILE] [--tsv FILE] PATH...\n"
-               "(see glslrun test --help)");
+    app.add_option("--compare", o.compare,
+                   "compare the rendered image, or the PNG given, with this reference PNG");
+    app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")
+        ->check(CLI::Range(0, 255));
+    app.add_option("--diff", o.diff, "--compare: write a difference image to this PNG");
+    app.footer("Examples:\n"
+               "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png\n"
+               "  glslrun --dump-ir shaders/minimal.vert shaders/minimal.frag\n"
+               "  glslrun --compare mesa.png spot.png --tolerance 1 --diff diff.png\n"
+               "Scene files: docs/scene-format.md. Piglit tests: glslrun test --help");
     CLI11_PARSE(app, argc, argv);
-    if (o.shaders.empty()) {
+    if (files.empty()) {
         std::fputs(app.help().c_str(), stdout);
         return 2;
     }
-    return program_main(o);
+    return cli::run_render_command(files, o);
 }
 
 }  // namespace

@@ -1,0 +1,229 @@
+// Rewrites glslang's terse messages for the mistakes people actually make in
+// legacy GLSL, so that a student can act on them:
+//
+//   glColor = gl_Color;            'glColor' : undeclared identifier
+//                                  -> ... did you mean 'gl_FrontColor' (write) or 'gl_Color' (read)?
+//   gl_FrontMaterial.emissive      -> ... gl_FrontMaterial has: emission, ambient, ...; did you mean 'emission'?
+//   att = 1 / (c + l*d);           -> ... GLSL 1.10 never converts int to float: write 1.0
+//   x = normalize(x)               -> reported on its own line as "missing ';'", not on the next line
+#include "frontend/diagnostic_hints.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace glslrun::frontend {
+namespace {
+
+// Built-in variables of GLSL 1.10 (§7), the candidates for "did you mean".
+constexpr std::array kBuiltinNames = {
+    "gl_Position", "gl_PointSize", "gl_ClipVertex", "gl_FragCoord", "gl_FrontFacing", "gl_FragColor",
+    "gl_FragData", "gl_FragDepth", "gl_Color", "gl_SecondaryColor", "gl_Normal", "gl_Vertex",
+    "gl_MultiTexCoord0", "gl_MultiTexCoord1", "gl_FogCoord", "gl_FrontColor", "gl_BackColor",
+    "gl_FrontSecondaryColor", "gl_BackSecondaryColor", "gl_TexCoord", "gl_FogFragCoord",
+    "gl_ModelViewMatrix", "gl_ProjectionMatrix", "gl_ModelViewProjectionMatrix", "gl_TextureMatrix",
+    "gl_NormalMatrix", "gl_NormalScale", "gl_DepthRange", "gl_ClipPlane", "gl_Point",
+    "gl_FrontMaterial", "gl_BackMaterial", "gl_LightSource", "gl_LightModel",
+    "gl_FrontLightModelProduct", "gl_BackLightModelProduct", "gl_FrontLightProduct",
+    "gl_BackLightProduct", "gl_TextureEnvColor", "gl_Fog", "gl_MaxLights", "gl_MaxClipPlanes",
+    "gl_MaxTextureUnits", "gl_MaxTextureCoords",
+};
+
+// Legacy GL API names written where the GLSL built-in was meant.
+struct ApiMistake { const char* written; const char* hint; };
+constexpr std::array kApiMistakes = {
+    ApiMistake{"glColor", "'gl_FrontColor' (to set the vertex's colour) or 'gl_Color' (to read it)"},
+    ApiMistake{"glVertex", "'gl_Vertex'"},
+    ApiMistake{"glNormal", "'gl_Normal'"},
+    ApiMistake{"glPosition", "'gl_Position'"},
+    ApiMistake{"glTexCoord", "'gl_TexCoord' (a varying) or 'gl_MultiTexCoord0' (the attribute)"},
+    ApiMistake{"glFragColor", "'gl_FragColor'"},
+};
+
+struct BuiltinStruct { const char* variable_prefix; const char* type; std::vector<std::string> fields; };
+const std::vector<BuiltinStruct>& builtin_structs() {
+    static const std::vector<BuiltinStruct> structs = {
+        {"gl_FrontMaterial", "gl_MaterialParameters", {"emission", "ambient", "diffuse", "specular", "shininess"}},
+        {"gl_BackMaterial", "gl_MaterialParameters", {"emission", "ambient", "diffuse", "specular", "shininess"}},
+        {"gl_LightSource", "gl_LightSourceParameters",
+         {"ambient", "diffuse", "specular", "position", "halfVector", "spotDirection", "spotExponent",
+          "spotCutoff", "spotCosCutoff", "constantAttenuation", "linearAttenuation", "quadraticAttenuation"}},
+        {"gl_LightModel", "gl_LightModelParameters", {"ambient"}},
+        {"gl_FrontLightModelProduct", "gl_LightModelProducts", {"sceneColor"}},
+        {"gl_BackLightModelProduct", "gl_LightModelProducts", {"sceneColor"}},
+        {"gl_FrontLightProduct", "gl_LightProducts", {"ambient", "diffuse", "specular"}},
+        {"gl_BackLightProduct", "gl_LightProducts", {"ambient", "diffuse", "specular"}},
+        {"gl_DepthRange", "gl_DepthRangeParameters", {"near", "far", "diff"}},
+        {"gl_Fog", "gl_FogParameters", {"color", "density", "start", "end", "scale"}},
+        {"gl_Point", "gl_PointParameters",
+         {"size", "sizeMin", "sizeMax", "fadeThresholdSize", "distanceConstantAttenuation",
+          "distanceLinearAttenuation", "distanceQuadraticAttenuation"}},
+    };
+    return structs;
+}
+
+size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t substitute = diagonal + (std::tolower(a[i - 1]) != std::tolower(b[j - 1]));
+            diagonal = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+        }
+    }
+    return row[b.size()];
+}
+
+// The closest candidate, if it is close enough to be a plausible typo.
+std::string closest(std::string_view word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        if (c == word) continue;
+        size_t d = edit_distance(word, c);
+        // A missing "gl_" prefix is the commonest slip of all.
+        if (c == "gl_" + std::string(word)) d = 1;
+        if (d < best_distance) best_distance = d, best = c;
+    }
+    return best;
+}
+
+std::vector<std::string> identifiers_in(const std::string& text) {
+    std::set<std::string> seen;
+    for (size_t i = 0; i < text.size();) {
+        if (std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') {
+            size_t j = i;
+            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+            seen.insert(text.substr(i, j - i));
+            i = j;
+        } else {
+            ++i;
+        }
+    }
+    return {seen.begin(), seen.end()};
+}
+
+// "'name' : ..." -> name
+std::string quoted_token(const std::string& message) {
+    if (message.size() < 2 || message[0] != '\'') return {};
+    size_t end = message.find('\'', 1);
+    return end == std::string::npos ? std::string() : message.substr(1, end - 1);
+}
+
+void explain_undeclared(Diagnostic& d, const std::string& source) {
+    std::string name = quoted_token(d.message);
+    for (const ApiMistake& m : kApiMistakes)
+        if (name == m.written) {
+            d.message += fmt::format(" ('{}' is the OpenGL API's name; in GLSL use {})", name, m.hint);
+            return;
+        }
+    std::vector<std::string> candidates(kBuiltinNames.begin(), kBuiltinNames.end());
+    for (std::string& id : identifiers_in(source)) candidates.push_back(std::move(id));
+    std::string guess = closest(name, candidates);
+    if (!guess.empty()) d.message += fmt::format(" (did you mean '{}'?)", guess);
+}
+
+void explain_missing_field(Diagnostic& d) {
+    std::string field = quoted_token(d.message);
+    for (const BuiltinStruct& s : builtin_structs()) {
+        if (d.message.find(fmt::format("structure '{}", s.variable_prefix)) == std::string::npos) continue;
+        std::string guess = closest(field, s.fields);
+        std::string list;
+        for (const std::string& f : s.fields) list += (list.empty() ? "" : ", ") + f;
+        d.message += fmt::format(" ({} is a {} with the fields {}{})", s.variable_prefix, s.type, list,
+                                 guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess));
+        return;
+    }
+}
+
+bool mixes_int_and_float(const std::string& message) {
+    bool has_int = message.find(" int'") != std::string::npos;
+    bool has_float = message.find(" float'") != std::string::npos || message.find(" vec") != std::string::npos;
+    return has_int && has_float;
+}
+
+constexpr const char* kNoImplicitConversion =
+    " (GLSL 1.10 never converts int to float implicitly: write float literals with a decimal "
+    "point, such as 1.0 and 0.0, or convert with float(...))";
+
+// glslang: "'/' : wrong operand types: no operation '/' exists that takes a
+// left-hand operand of type ' const int' and a right operand of type ' temp
+// float' (or there is no acceptable conversion)" -> "'/' : int / float: ..."
+void explain_int_float_operands(Diagnostic& d) {
+    std::vector<std::string> types;
+    for (size_t at = 0; (at = d.message.find("of type '", at)) != std::string::npos;) {
+        at += 9;
+        size_t end = d.message.find('\'', at);
+        if (end == std::string::npos) return;
+        std::string type = d.message.substr(at, end - at);
+        types.push_back(type.substr(type.find_last_of(' ') + 1));  // drop "temp", "const", ...
+        at = end;
+    }
+    std::string op = quoted_token(d.message);
+    if (types.size() != 2 || op.empty()) return;
+    d.message = fmt::format("'{}' : no operator {} {} {} exists{}", op, types[0], op, types[1],
+                            kNoImplicitConversion);
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+std::string strip_line_comment(std::string line) {
+    if (size_t c = line.find("//"); c != std::string::npos) line.resize(c);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    return line;
+}
+
+// glslang reports a missing ';' at the next token, often on the next line.
+// Point at the line that lacks it instead.
+void explain_missing_semicolon(Diagnostic& d, const std::string& source) {
+    std::vector<std::string> lines = split_lines(source);
+    if (d.line < 1 || d.line > int(lines.size())) return;
+    for (int l = d.line - 1; l >= 1; --l) {
+        std::string code = strip_line_comment(lines[l - 1]);
+        if (code.empty()) continue;
+        char last = code.back();
+        if (last == ';' || last == '{' || last == '}' || last == ',' || last == '(') return;
+        size_t first = lines[d.line - 1].find_first_not_of(" \t");
+        std::string next = first == std::string::npos ? "" : lines[d.line - 1].substr(first);
+        d.message = fmt::format("missing ';' at the end of this line (line {} continues with '{}')",
+                                d.line, next);
+        d.line = l;
+        return;
+    }
+}
+
+}  // namespace
+
+void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource& source) {
+    for (size_t i = first; i < diags.size(); ++i) {
+        Diagnostic& d = diags[i];
+        if (d.warning || d.file != source.name) continue;
+        const std::string& m = d.message;
+        if (m.find(": undeclared identifier") != std::string::npos) {
+            explain_undeclared(d, source.text);
+        } else if (m.find(": no such field in structure") != std::string::npos) {
+            explain_missing_field(d);
+        } else if (m.find("wrong operand types") != std::string::npos && mixes_int_and_float(m)) {
+            explain_int_float_operands(d);
+        } else if (m.find("cannot convert") != std::string::npos && mixes_int_and_float(m)) {
+            d.message += kNoImplicitConversion;
+        } else if (m.find("expecting COMMA or SEMICOLON") != std::string::npos ||
+                   m.find("expecting SEMICOLON") != std::string::npos) {
+            explain_missing_semicolon(d, source.text);
+        }
+    }
+}
+
+}  // namespace glslrun::frontend

@@ -1,0 +1,20 @@
+// The slide's "..." is the body of dir_vert_diffuse.vert; `emissive` is
+// corrected to `emission` (shaders/lecture-original/ keeps the typo).
+void main(){
+
+    vec3 normal,lightDir;
+    vec4 diffuse,ambient;
+    float intensity;
+
+    lightDir = normalize(vec3(gl_LightSource[0].position));
+    normal = normalize(gl_NormalMatrix * gl_Normal);
+
+    intensity = max(dot(lightDir,normal),0.0);
+    diffuse = gl_LightSource[0].diffuse * gl_FrontMaterial.diffuse;
+    ambient = gl_LightSource[0].ambient * gl_FrontMaterial.ambient;
+
+    gl_FrontColor = ambient + diffuse*intensity;
+    gl_FrontColor += gl_FrontMaterial.ambient * gl_LightModel.ambient;
+    gl_FrontColor += gl_FrontMaterial.emission;
+    gl_Position = ftransform();
+}

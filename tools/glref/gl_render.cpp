@@ -1,0 +1,374 @@
+#include "tools/glref/gl_render.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "tools/glref/gl_context.h"
+#include "tools/glref/gl_uniforms.h"
+
+namespace glslrun::glref {
+
+namespace {
+
+using scene::Scene;
+
+Status check_gl(const std::string& during) {
+    GLenum e = glGetError();
+    if (e == GL_NO_ERROR) return Ok{};
+    return Error(fmt::format("Mesa reported {} {}", gl_error_name(e), during));
+}
+
+// ------------------------------------------------------------ program ---
+std::string info_log(const GLFunctions& gl, GLuint object, bool program) {
+    GLint length = 0;
+    (program ? gl.GetProgramiv : gl.GetShaderiv)(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    if (program)
+        gl.GetProgramInfoLog(object, GLsizei(log.size()), &length, log.data());
+    else
+        gl.GetShaderInfoLog(object, GLsizei(log.size()), &length, log.data());
+    log.resize(size_t(std::max(length, 0)));
+    return log;
+}
+
+// Mesa's "0:12(5): error: ..." gives source string, line and column; name
+// the file instead, as glslrun's own messages do: "a.vert:12:5: error: ...".
+std::string with_file_name(const std::string& log, const std::string& file) {
+    std::istringstream in(log);
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+        int line_no = 0, column = 0, used = 0;
+        if (std::sscanf(line.c_str(), "0:%d(%d):%n", &line_no, &column, &used) == 2 && used > 0)
+            line = fmt::format("{}:{}:{}:{}", file, line_no, column, line.substr(size_t(used)));
+        out += line + "\n";
+    }
+    return out;
+}
+
+// One shader object per source, as glslrun compiles each source as its own unit.
+Status attach_shaders(const GLFunctions& gl, GLuint program, GLenum stage, const std::vector<ShaderSource>& sources) {
+    for (const ShaderSource& src : sources) {
+        GLuint shader = gl.CreateShader(stage);
+        const char* text = src.text.c_str();
+        gl.ShaderSource(shader, 1, &text, nullptr);
+        gl.CompileShader(shader);
+        GLint ok = 0;
+        gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        if (!ok) return Error(fmt::format("Mesa cannot compile '{}':\n{}", src.name,
+                                            with_file_name(info_log(gl, shader, false), src.name)));
+        gl.AttachShader(program, shader);
+    }
+    return Ok{};
+}
+
+Result<GLuint> build_program(const GLFunctions& gl, const std::vector<ShaderSource>& vertex,
+                             const std::vector<ShaderSource>& fragment) {
+    if (vertex.empty() && fragment.empty()) return Error("no shaders to link");
+    GLuint program = gl.CreateProgram();
+    if (Status st = attach_shaders(gl, program, GL_VERTEX_SHADER, vertex); !st) return st.error();
+    if (Status st = attach_shaders(gl, program, GL_FRAGMENT_SHADER, fragment); !st) return st.error();
+    gl.LinkProgram(program);
+    GLint ok = 0;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) return Error("Mesa cannot link the program:\n" + info_log(gl, program, true));
+    gl.UseProgram(program);
+    return program;
+}
+
+// ---------------------------------------------------------- GL state ---
+void load_matrix(GLenum mode, const glm::mat4& m) {
+    glMatrixMode(mode);
+    glLoadMatrixf(glm::value_ptr(m));
+}
+
+// GL transforms GL_POSITION and GL_SPOT_DIRECTION by the modelview current at
+// glLightfv: here GL itself does what derive_eye_space_lights() computes. A
+// position or direction the file left out is not set: it keeps GL's default,
+// which no modelview ever transformed.
+void set_light(GLenum id, const scene::LightSetting& light, const glm::mat4& view) {
+    const LightState& l = light.as_given;
+    glLightfv(id, GL_AMBIENT, glm::value_ptr(l.ambient));
+    glLightfv(id, GL_DIFFUSE, glm::value_ptr(l.diffuse));
+    glLightfv(id, GL_SPECULAR, glm::value_ptr(l.specular));
+    glLightf(id, GL_SPOT_EXPONENT, l.spot_exponent);
+    glLightf(id, GL_SPOT_CUTOFF, l.spot_cutoff);
+    glLightf(id, GL_CONSTANT_ATTENUATION, l.constant_attenuation);
+    glLightf(id, GL_LINEAR_ATTENUATION, l.linear_attenuation);
+    glLightf(id, GL_QUADRATIC_ATTENUATION, l.quadratic_attenuation);
+    load_matrix(GL_MODELVIEW, light.world_space ? view : glm::mat4(1.0f));
+    if (light.has_position) glLightfv(id, GL_POSITION, glm::value_ptr(l.position));
+    if (light.has_spot_direction) glLightfv(id, GL_SPOT_DIRECTION, glm::value_ptr(l.spot_direction));
+    if (light.enabled) glEnable(id);
+}
+
+void set_material(GLenum face, const MaterialState& m) {
+    glMaterialfv(face, GL_AMBIENT, glm::value_ptr(m.ambient));
+    glMaterialfv(face, GL_DIFFUSE, glm::value_ptr(m.diffuse));
+    glMaterialfv(face, GL_SPECULAR, glm::value_ptr(m.specular));
+    glMaterialfv(face, GL_EMISSION, glm::value_ptr(m.emission));
+    glMaterialf(face, GL_SHININESS, m.shininess);
+}
+
+void set_lighting(const Scene& s) {
+    for (size_t i = 0; i < s.lights.size(); ++i) set_light(GLenum(GL_LIGHT0 + i), s.lights[i], s.view);
+    const GLState& g = s.gl;
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, glm::value_ptr(g.light_model_ambient));
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, g.light_model_local_viewer);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, g.light_model_two_side);
+    set_material(GL_FRONT, g.front_material);
+    set_material(GL_BACK, g.back_material);
+}
+
+void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
+
+void set_render_state(const GLState& g) {
+    enable(GL_DEPTH_TEST, g.depth_test);
+    // GLState::DepthFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
+    glDepthFunc(GLenum(GL_NEVER + int(g.depth_func)));
+    enable(GL_CULL_FACE, g.cull_face);
+    glCullFace(g.cull_back ? GL_BACK : GL_FRONT);
+    glFrontFace(g.front_ccw ? GL_CCW : GL_CW);
+    glShadeModel(g.flat_shading ? GL_FLAT : GL_SMOOTH);
+    enable(GL_VERTEX_PROGRAM_TWO_SIDE, g.vertex_program_two_side);
+    glPointSize(g.point_size);
+    glDepthRange(g.depth_near, g.depth_far);
+    glDisable(GL_DITHER);  // on by default in GL; glslrun never dithers
+}
+
+// scene.gl.clip_planes are eye-space planes (the parser already applied the
+// view's inverse); with an identity modelview glClipPlane stores them as given.
+void set_clip_planes(const GLState& g) {
+    load_matrix(GL_MODELVIEW, glm::mat4(1.0f));
+    for (size_t i = 0; i < g.clip_planes.size(); ++i) {
+        const glm::vec4& p = g.clip_planes[i];
+        const GLdouble plane[4] = {p.x, p.y, p.z, p.w};
+        glClipPlane(GLenum(GL_CLIP_PLANE0 + i), plane);
+        enable(GLenum(GL_CLIP_PLANE0 + i), (g.clip_plane_enabled >> i) & 1u);
+    }
+}
+
+void set_fog_and_textures(const GLFunctions& gl, const GLState& g) {
+    glFogfv(GL_FOG_COLOR, glm::value_ptr(g.fog.color));
+    glFogf(GL_FOG_DENSITY, g.fog.density);
+    glFogf(GL_FOG_START, g.fog.start);
+    glFogf(GL_FOG_END, g.fog.end);
+    for (size_t i = 0; i < g.texture_matrix.size(); ++i) {
+        gl.ActiveTexture(GLenum(GL_TEXTURE0 + i));
+        load_matrix(GL_TEXTURE, g.texture_matrix[i]);
+    }
+    gl.ActiveTexture(GL_TEXTURE0);
+}
+
+void clear(const Scene& s) {
+    std::array<int, 4> vp = s.gl.viewport;
+    if (vp[2] == 0) vp = {0, 0, s.width, s.height};
+    glViewport(vp[0], vp[1], vp[2], vp[3]);
+    glClearColor(s.clear_color.r, s.clear_color.g, s.clear_color.b, s.clear_color.a);
+    glClearDepth(s.clear_depth);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+Status set_scene_state(const GLFunctions& gl, const Scene& s) {
+    clear(s);
+    load_matrix(GL_PROJECTION, s.projection);
+    set_lighting(s);
+    set_render_state(s.gl);
+    set_clip_planes(s.gl);
+    set_fog_and_textures(gl, s.gl);
+    glMatrixMode(GL_MODELVIEW);
+    return check_gl("while setting the scene's state");
+}
+
+// ------------------------------------------------------------ drawing ---
+GLenum gl_mode(Primitive p) {
+    switch (p) {
+    case Primitive::Points: return GL_POINTS;
+    case Primitive::Lines: return GL_LINES;
+    case Primitive::LineStrip: return GL_LINE_STRIP;
+    case Primitive::LineLoop: return GL_LINE_LOOP;
+    case Primitive::Triangles: return GL_TRIANGLES;
+    case Primitive::TriangleStrip: return GL_TRIANGLE_STRIP;
+    case Primitive::TriangleFan: return GL_TRIANGLE_FAN;
+    case Primitive::Quads: return GL_QUADS;
+    case Primitive::QuadStrip: return GL_QUAD_STRIP;
+    case Primitive::Polygon: return GL_POLYGON;
+    }
+    return GL_TRIANGLES;
+}
+
+// `a`'s data with n components per vertex, for GL's pointer calls that take
+// only some sizes: missing components are GL's (0,0,0,1), extra ones dropped.
+std::vector<float> with_components(const VertexAttrib& a, uint32_t n) {
+    if (a.components == n) return a.data;
+    size_t vertices = a.data.size() / a.components;
+    std::vector<float> out(vertices * n);
+    for (size_t v = 0; v < vertices; ++v)
+        for (uint32_t k = 0; k < n; ++k)
+            out[v * n + k] = k < a.components ? a.data[v * a.components + k] : (k == 3 ? 1.0f : 0.0f);
+    return out;
+}
+
+// What one object enabled, to disable after its draw: the next object may
+// lack an array and must then read the current value (glColor, ...).
+struct BoundArrays {
+    std::vector<GLenum> client_states;
+    std::vector<GLenum> texture_units;
+    std::vector<GLuint> generic;
+};
+
+void upload(const GLFunctions& gl, const std::vector<float>& data) {
+    GLuint vbo = 0;
+    gl.GenBuffers(1, &vbo);
+    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
+    gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+}
+
+// The texture unit of "gl_MultiTexCoord0".."gl_MultiTexCoord7", else -1.
+int multi_tex_coord_unit(const std::string& name) {
+    constexpr std::string_view prefix = "gl_MultiTexCoord";
+    if (name.size() != prefix.size() + 1 || !name.starts_with(prefix)) return -1;
+    char d = name.back();
+    return d >= '0' && d <= '7' ? d - '0' : -1;
+}
+
+// A conventional attribute's array: upload with GL's accepted size, then point.
+void bind_builtin(const GLFunctions& gl, const VertexAttrib& a, GLenum array, uint32_t size, BoundArrays& bound) {
+    upload(gl, with_components(a, size));
+    auto n = GLint(size);
+    switch (array) {
+    case GL_VERTEX_ARRAY: glVertexPointer(n, GL_FLOAT, 0, nullptr); break;
+    case GL_NORMAL_ARRAY: glNormalPointer(GL_FLOAT, 0, nullptr); break;
+    case GL_COLOR_ARRAY: glColorPointer(n, GL_FLOAT, 0, nullptr); break;
+    case GL_SECONDARY_COLOR_ARRAY: gl.SecondaryColorPointer(n, GL_FLOAT, 0, nullptr); break;
+    case GL_FOG_COORD_ARRAY: gl.FogCoordPointer(GL_FLOAT, 0, nullptr); break;
+    case GL_TEXTURE_COORD_ARRAY: glTexCoordPointer(n, GL_FLOAT, 0, nullptr); break;
+    }
+    glEnableClientState(array);
+    if (array != GL_TEXTURE_COORD_ARRAY) bound.client_states.push_back(array);
+}
+
+Status bind_array(const GLFunctions& gl, GLuint program, const VertexAttrib& a, BoundArrays& bound) {
+    if (a.components < 1 || a.components > 4)
+        return Error(fmt::format("attribute '{}' has {} components; GL takes 1..4", a.name, a.components));
+    const std::string& n = a.name;
+    // GL 2.1's pointer calls: vertex 2..4, normal 3, colour 3..4, secondary 3, fog 1.
+    if (n == "gl_Vertex") bind_builtin(gl, a, GL_VERTEX_ARRAY, std::max(a.components, 2u), bound);
+    else if (n == "gl_Normal") bind_builtin(gl, a, GL_NORMAL_ARRAY, 3, bound);
+    else if (n == "gl_Color") bind_builtin(gl, a, GL_COLOR_ARRAY, std::max(a.components, 3u), bound);
+    else if (n == "gl_SecondaryColor") bind_builtin(gl, a, GL_SECONDARY_COLOR_ARRAY, 3, bound);
+    else if (n == "gl_FogCoord") bind_builtin(gl, a, GL_FOG_COORD_ARRAY, 1, bound);
+    else if (int unit = multi_tex_coord_unit(n); unit >= 0) {
+        gl.ClientActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        bind_builtin(gl, a, GL_TEXTURE_COORD_ARRAY, a.components, bound);
+        bound.texture_units.push_back(GLenum(GL_TEXTURE0 + unit));
+        gl.ClientActiveTexture(GL_TEXTURE0);
+    } else if (n.starts_with("gl_")) {
+        return Error(fmt::format("'{}' is not a built-in attribute of GLSL 1.10", n));
+    } else {
+        GLint loc = gl.GetAttribLocation(program, n.c_str());
+        if (loc < 0) return Ok{};  // not read by the program
+        upload(gl, a.data);
+        gl.VertexAttribPointer(GLuint(loc), GLint(a.components), GL_FLOAT, GL_FALSE, 0, nullptr);
+        gl.EnableVertexAttribArray(GLuint(loc));
+        bound.generic.push_back(GLuint(loc));
+    }
+    return Ok{};
+}
+
+void unbind_arrays(const GLFunctions& gl, const BoundArrays& bound) {
+    for (GLenum array : bound.client_states) glDisableClientState(array);
+    for (GLenum unit : bound.texture_units) {
+        gl.ClientActiveTexture(unit);
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    }
+    gl.ClientActiveTexture(GL_TEXTURE0);
+    for (GLuint loc : bound.generic) gl.DisableVertexAttribArray(loc);
+    gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+// Mesa would read past a short array; glslrun refuses it, and so does this.
+Status check_mesh(const scene::Object& o) {
+    const scene::Mesh& m = o.mesh;
+    uint64_t needed = m.vertex_count;
+    if (!m.indices.empty()) needed = uint64_t(*std::max_element(m.indices.begin(), m.indices.end())) + 1;
+    for (const VertexAttrib& a : m.attribs)
+        if (a.components >= 1 && a.data.size() / a.components < needed)
+            return Error(fmt::format("object '{}': attribute '{}' has {} vertices, the draw reads {}", o.name, a.name,
+                                     a.data.size() / a.components, needed));
+    return Ok{};
+}
+
+void draw_mesh(const GLFunctions& gl, const scene::Mesh& m) {
+    GLenum mode = gl_mode(m.primitive);
+    if (m.indices.empty()) {
+        glDrawArrays(mode, 0, GLsizei(m.vertex_count));
+        return;
+    }
+    GLuint ebo = 0;
+    gl.GenBuffers(1, &ebo);
+    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(uint32_t)), m.indices.data(),
+                  GL_STATIC_DRAW);
+    glDrawElements(mode, GLsizei(m.indices.size()), GL_UNSIGNED_INT, nullptr);
+    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+// render_scene's per-object state, in the same order: modelview, materials,
+// current attributes, the object's uniforms, then the arrays and the draw.
+Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o) {
+    if (Status st = check_mesh(o); !st) return st;
+    // The product glslrun uses, rather than glMultMatrixf's own rounding.
+    load_matrix(GL_MODELVIEW, s.view * o.model);
+    set_material(GL_FRONT, o.front_material.value_or(s.gl.front_material));
+    set_material(GL_BACK, o.back_material.value_or(s.gl.back_material));
+    glColor4fv(glm::value_ptr(o.color.value_or(s.gl.current_color)));
+    // GL sets only rgb; the current secondary alpha stays GL's 1.
+    gl.SecondaryColor3fv(glm::value_ptr(s.gl.current_secondary_color));
+    glNormal3fv(glm::value_ptr(s.gl.current_normal));
+    if (Status st = apply_uniforms(gl, program, o.uniforms); !st) return st;
+    BoundArrays bound;
+    Status st = Ok{};
+    for (const VertexAttrib& a : o.mesh.attribs)
+        if (st = bind_array(gl, program, a, bound); !st) break;
+    if (st) draw_mesh(gl, o.mesh);
+    unbind_arrays(gl, bound);
+    if (!st) return st;
+    return check_gl(fmt::format("while drawing object '{}'", o.name));
+}
+
+Result<scene::Image> read_back(int width, int height) {
+    glFinish();
+    std::vector<uint8_t> pixels(size_t(width) * size_t(height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    if (Status st = check_gl("while reading the pixels back"); !st) return st.error();
+    return scene::image_from_bottom_up(width, height, pixels);
+}
+
+}  // namespace
+
+Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector<ShaderSource>& vertex,
+                                    const std::vector<ShaderSource>& fragment, const Scene& scene) {
+    if (scene.width < 1 || scene.height < 1 || scene.width > scene::kMaxImageSide ||
+        scene.height > scene::kMaxImageSide)
+        return Error(fmt::format("size {}x{} is not 1..{} per side", scene.width, scene.height, scene::kMaxImageSide));
+    auto context = MesaContext::create(driver);  // fresh: GL's default state
+    if (!context) return context.error();
+    const GLFunctions& gl = (*context)->gl();
+    if (Status st = (*context)->make_framebuffer(scene.width, scene.height); !st) return st.error();
+    auto program = build_program(gl, vertex, fragment);
+    if (!program) return program.error();
+    if (Status st = set_scene_state(gl, scene); !st) return st.error();
+    if (Status st = apply_uniforms(gl, *program, scene.uniforms); !st) return st.error();
+    for (const scene::Object& o : scene.objects)
+        if (Status st = draw_object(gl, *program, scene, o); !st) return st.error();
+    auto image = read_back(scene.width, scene.height);
+    if (!image) return image.error();
+    return MesaRender{std::move(*image), (*context)->renderer()};
+}
+
+}  // namespace glslrun::glref

@@ -1,0 +1,114 @@
+// glref: renders a scene file with Mesa (llvmpipe or softpipe) through EGL,
+// as the oracle for glslrun's images.
+//
+//   glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "tools/glref/gl_render.h"
+#include "tools/scene/image_compare.h"
+#include "tools/scene/scene.h"
+
+namespace {
+
+using namespace glslrun;
+
+constexpr const char* kUsage =
+    "usage: glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]\n"
+    "Renders the scene with Mesa through EGL (no X server) the way a GL 2.1 program would,\n"
+    "for comparison with glslrun's image (glslrun --compare).\n"
+    "  --driver D   Mesa's software rasteriser: llvmpipe (default) or softpipe\n"
+    "  -o FILE      output PNG (default: <scene>-<driver>.png)\n"
+    "  --size WxH   override the scene's size\n";
+
+struct Options {
+    std::string driver = "llvmpipe";
+    std::vector<std::string> inputs;  // vertex shader, fragment shader, scene
+    std::string output;
+    std::optional<std::pair<int, int>> size;
+};
+
+bool parse_size(const std::string& text, std::pair<int, int>& size) {
+    char x = 0, extra = 0;
+    return std::sscanf(text.c_str(), "%d%c%d%c", &size.first, &x, &size.second, &extra) == 3 && x == 'x';
+}
+
+// Empty on success, else the message for the user.
+std::string parse_options(int argc, char** argv, Options& o) {
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        bool has_value = i + 1 < argc;
+        if ((a == "--driver" || a == "-o" || a == "--size") && !has_value) return a + " needs a value";
+        if (a == "--driver") {
+            o.driver = argv[++i];
+        } else if (a == "-o") {
+            o.output = argv[++i];
+        } else if (a == "--size") {
+            std::pair<int, int> size;
+            if (!parse_size(argv[++i], size)) return fmt::format("--size '{}' is not WxH", argv[i]);
+            o.size = size;
+        } else if (a.size() > 1 && a[0] == '-') {
+            return "unknown option " + a;
+        } else {
+            o.inputs.push_back(a);
+        }
+    }
+    if (o.driver != "llvmpipe" && o.driver != "softpipe")
+        return fmt::format("--driver '{}': use llvmpipe or softpipe", o.driver);
+    if (o.inputs.size() != 3)
+        return fmt::format("expected shader.vert shader.frag scene.toml, got {} file(s)", o.inputs.size());
+    if (o.output.empty()) o.output = std::filesystem::path(o.inputs[2]).stem().string() + "-" + o.driver + ".png";
+    return {};
+}
+
+Result<ShaderSource> read_shader(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error(fmt::format("cannot read shader '{}'", path));
+    std::stringstream text;
+    text << in.rdbuf();
+    return ShaderSource{path, text.str()};
+}
+
+int fail(const Error& e) {
+    std::fprintf(stderr, "%s\n", e.str().c_str());
+    return 1;
+}
+
+int run(const Options& o) {
+    auto vs = read_shader(o.inputs[0]);
+    if (!vs) return fail(vs.error());
+    auto fs = read_shader(o.inputs[1]);
+    if (!fs) return fail(fs.error());
+    auto scene = scene::load_scene(o.inputs[2]);
+    if (!scene) return fail(scene.error());
+    if (o.size)
+        if (Status st = scene::resize_scene(*scene, o.size->first, o.size->second); !st) return fail(st.error());
+    auto render = glref::render_with_mesa(o.driver, {*vs}, {*fs}, *scene);
+    if (!render) return fail(render.error());
+    if (Status st = scene::write_png(render->image, o.output); !st) return fail(st.error());
+    std::printf("%s: %dx%d, %s\n", o.output.c_str(), scene->width, scene->height, render->renderer.c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
+    Options o;
+    if (std::string why = parse_options(argc, argv, o); !why.empty()) {
+        std::fprintf(stderr, "glref: %s\n%s", why.c_str(), kUsage);
+        return 2;
+    }
+    return run(o);
+}

@@ -1,0 +1,175 @@
+// `glslrun a.vert a.frag scene.toml`: renders a scene file to a PNG, with
+// --stats, and `--compare REF.png` on the result or on a given PNG.
+#include "render_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "ir/ir.h"
+#include "tools/scene/image_compare.h"
+#include "tools/scene/render.h"
+
+namespace glslrun::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+int fail(const Error& e) {
+    std::string text = e.str();
+    std::fputs(text.c_str(), stderr);
+    return 1;
+}
+
+std::optional<std::string> read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::stringstream buf;
+    buf << in.rdbuf();
+    return buf.str();
+}
+
+// The files on the command line, sorted by their extensions.
+struct Inputs {
+    std::vector<ShaderSource> vertex, fragment;
+    std::string scene, image;
+};
+
+Result<Inputs> classify(const std::vector<std::string>& files) {
+    Inputs in;
+    for (const std::string& path : files) {
+        std::string ext = fs::path(path).extension().string();
+        bool shader = ext == ".vert" || ext == ".vs" || ext == ".frag" || ext == ".fs";
+        if (ext == ".toml") {
+            if (!in.scene.empty()) return Error("only one scene file may be given", path);
+            in.scene = path;
+        } else if (ext == ".png") {
+            if (!in.image.empty()) return Error("only one image may be given", path);
+            in.image = path;
+        } else if (!shader) {
+            return Error("unknown kind of file: shaders end in .vert or .frag, scenes in .toml", path);
+        } else {
+            auto text = read_text(path);
+            if (!text) return Error("cannot read the file", path);
+            bool vertex = ext == ".vert" || ext == ".vs";
+            (vertex ? in.vertex : in.fragment).push_back({path, *text});
+        }
+    }
+    return in;
+}
+
+Result<std::pair<int, int>> parse_size(const std::string& text) {
+    int width = 0, height = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X'))
+        return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
+    return std::pair{width, height};
+}
+
+std::string default_output(const Inputs& in) {
+    std::string program = in.fragment.empty() ? fs::path(in.vertex[0].name).stem().string()
+                                              : fs::path(in.fragment[0].name).stem().string();
+    return fmt::format("{}-{}.png", program, fs::path(in.scene).stem().string());
+}
+
+std::string join_builtins(const Program& prog) {
+    std::string list;
+    auto add = [&](const std::string& name) { list += (list.empty() ? "" : ", ") + name; };
+    for (const UniformInfo& u : prog.uniforms())
+        if (u.builtin && u.read) add(u.array_size > 1 ? fmt::format("{}[{}]", u.name, u.array_size) : u.name);
+    return list.empty() ? "none" : list;
+}
+
+std::string join_builtin_attributes(const Program& prog) {
+    std::string list;
+    for (const ir::Binding& b : prog.ir().vertex.inputs)
+        if (b.name.starts_with("gl_")) list += (list.empty() ? "" : ", ") + b.name;
+    return list.empty() ? "none" : list;
+}
+
+void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats& s, double compile_ms,
+                 double output_ms) {
+    fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
+               scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
+    fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
+    fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
+    fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
+               compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
+    fmt::print("built-in uniforms read   {}\n", join_builtins(prog));
+    fmt::print("built-in attributes read {}\n", join_builtin_attributes(prog));
+}
+
+int compare_with(const scene::Image& actual, const RenderOptions& o) {
+    auto reference = scene::read_png(o.compare);
+    if (!reference) return fail(reference.error());
+    scene::CompareOptions options;
+    options.tolerance = o.tolerance;
+    options.min_fraction_within = 1.0;  // the exit status says whether any pixel is off by more
+    auto stats = scene::compare_images(*reference, actual, options);
+    if (!stats) return fail(stats.error());
+    fmt::print("{}\n", stats->summary());
+    if (!o.diff.empty()) {
+        auto diff = scene::diff_image(*reference, actual, o.tolerance);
+        if (!diff) return fail(diff.error());
+        if (Status st = scene::write_png(*diff, o.diff); !st) return fail(st.error());
+    }
+    return stats->passed ? 0 : 1;
+}
+
+int render(const Inputs& in, const RenderOptions& o) {
+    auto scene = scene::load_scene(in.scene);
+    if (!scene) return fail(scene.error());
+    if (!o.size.empty()) {
+        auto size = parse_size(o.size);
+        if (!size) return fail(size.error());
+        if (Status st = scene::resize_scene(*scene, size->first, size->second); !st) return fail(st.error());
+    }
+    auto start = Clock::now();
+    auto prog = Program::compile(in.vertex, in.fragment);
+    if (!prog) return fail(prog.error());
+    double compile_ms = ms_since(start);
+    if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
+    Framebuffer fb(scene->width, scene->height);
+    auto stats = scene::render_scene(*prog, *scene, fb);
+    if (!stats) return fail(stats.error());
+    start = Clock::now();
+    std::string output = o.output.empty() ? default_output(in) : o.output;
+    if (Status st = write_png(fb, output); !st) return fail(st.error());
+    double output_ms = ms_since(start);
+    if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
+    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(fb), o);
+    return 0;
+}
+
+}  // namespace
+
+int run_render_command(const std::vector<std::string>& files, const RenderOptions& o) {
+    auto in = classify(files);
+    if (!in) return fail(in.error());
+    bool has_shaders = !in->vertex.empty() || !in->fragment.empty();
+    if (!in->image.empty()) {
+        if (o.compare.empty() || has_shaders || !in->scene.empty())
+            return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image));
+        auto image = scene::read_png(in->image);
+        if (!image) return fail(image.error());
+        return compare_with(*image, o);
+    }
+    if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));
+    if (!in->scene.empty()) return render(*in, o);
+    if (!o.output.empty() || o.stats || !o.compare.empty())
+        return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));
+    // Compile only: diagnostics, and the IR with --dump-ir.
+    auto prog = Program::compile(in->vertex, in->fragment);
+    if (!prog) return fail(prog.error());
+    if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
+    return 0;
+}
+
+}  // namespace glslrun::cli

@@ -1,0 +1,18 @@
+// The render, compile-only and --compare modes of the glslrun command line.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace glslrun::cli {
+
+struct RenderOptions {
+    std::string output, size, compare, diff;
+    int tolerance = 0;
+    bool stats = false, dump_ir = false;
+};
+
+// `files`: shaders (.vert/.frag), at most one scene (.toml), and for
+// --compare at most one PNG. Returns the process exit status.
+int run_render_command(const std::vector<std::string>& files, const RenderOptions& options);
+
+}  // namespace glslrun::cli

@@ -1,0 +1,274 @@
+#include "tools/scene/image_compare.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include <fmt/format.h>
+#include <png.h>
+
+#include "raster/framebuffer.h"
+#include "tools/scene/scene.h"
+
+namespace glslrun::scene {
+
+namespace {
+
+// ------------------------------------------------------------ reading ---
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+// libpng reports errors by calling this and expecting it not to return; the
+// message is kept for our Error.
+struct PngErrorSink {
+    char message[256] = {};
+};
+
+void on_png_error(png_structp png, png_const_charp msg) {
+    auto* sink = static_cast<PngErrorSink*>(png_get_error_ptr(png));
+    std::snprintf(sink->message, sizeof sink->message, "%s", msg);
+    png_longjmp(png, 1);
+}
+
+// Warnings concern ancillary chunks (bad gamma, text); the pixels are fine.
+void on_png_warning(png_structp, png_const_charp) {}
+
+// Owns libpng's read structures so that every exit path frees them.
+struct PngReader {
+    PngErrorSink sink;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    PngReader() {
+        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, on_png_error, on_png_warning);
+        if (png) info = png_create_info_struct(png);
+    }
+    ~PngReader() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
+    PngReader(const PngReader&) = delete;
+    PngReader& operator=(const PngReader&) = delete;
+};
+
+// The three steps below each set their own longjmp target and create nothing
+// with a destructor after it: a libpng error unwinds no C++ object.
+bool png_read_header(png_structp png, png_infop info, std::FILE* file) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_init_io(png, file);
+    png_read_info(png, info);
+    return true;
+}
+
+// Whatever the file's format, libpng hands out RGBA8 rows; no gamma
+// transform is requested, so 8-bit values come back exactly as stored.
+bool png_request_rgba8(png_structp png, png_infop info) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_byte color = png_get_color_type(png, info);
+    png_byte depth = png_get_bit_depth(png, info);
+    bool has_trns = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+    if (color == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if (color == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+    if (has_trns) png_set_tRNS_to_alpha(png);
+    if (depth == 16) png_set_scale_16(png);  // rounds, where strip_16 would truncate
+    if (color == PNG_COLOR_TYPE_GRAY || color == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+    if (!(color & PNG_COLOR_MASK_ALPHA) && !has_trns) png_set_filler(png, 0xff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    return true;
+}
+
+bool png_read_rows(png_structp png, png_bytep* rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_image(png, rows);
+    png_read_end(png, nullptr);
+    return true;
+}
+
+Error png_failure(const std::string& path, const PngReader& r) {
+    return Error(fmt::format("cannot read '{}' as PNG: {}", path, r.sink.message[0] ? r.sink.message : "libpng failed"));
+}
+
+// ------------------------------------------------------------- diffing ---
+int channel_diff(const uint8_t* a, const uint8_t* b, int c) { return std::abs(int(a[c]) - int(b[c])); }
+
+int pixel_diff(const uint8_t* a, const uint8_t* b) {
+    int worst = 0;
+    for (int c = 0; c < 4; ++c) worst = std::max(worst, channel_diff(a, b, c));
+    return worst;
+}
+
+bool is_colour(const uint8_t* p, const Rgba8& c) { return std::equal(c.begin(), c.end(), p); }
+
+Status check_same_size(const Image& reference, const Image& actual) {
+    if (reference.width == actual.width && reference.height == actual.height) return Ok{};
+    return Error(fmt::format("the images differ in size: the reference is {}x{}, the other {}x{}", reference.width,
+                             reference.height, actual.width, actual.height));
+}
+
+Status check_options(const CompareOptions& o) {
+    if (o.tolerance < 0 || o.tolerance > 255) return Error(fmt::format("tolerance {} is not in 0..255", o.tolerance));
+    if (!(o.min_fraction_within >= 0.0 && o.min_fraction_within <= 1.0))
+        return Error(fmt::format("required fraction {} is not in 0..1", o.min_fraction_within));
+    return Ok{};
+}
+
+Status check_image(const Image& image, const char* which) {
+    if (image.width < 0 || image.height < 0 || image.rgba.size() != size_t(image.width) * size_t(image.height) * 4)
+        return Error(fmt::format("the {} image's {} bytes do not hold {}x{} RGBA8 pixels", which, image.rgba.size(),
+                                 image.width, image.height));
+    return Ok{};
+}
+
+// Adds one pixel pair to the running statistics; returns its largest channel difference.
+int accumulate(CompareStats& s, std::array<uint64_t, 4>& sums, const uint8_t* ref, const uint8_t* act,
+               const CompareOptions& o) {
+    int worst = 0;
+    for (int c = 0; c < 4; ++c) {
+        int d = channel_diff(ref, act, c);
+        sums[size_t(c)] += uint64_t(d);
+        s.max_diff[size_t(c)] = std::max(s.max_diff[size_t(c)], d);
+        worst = std::max(worst, d);
+    }
+    if (worst > o.tolerance) ++s.differing;
+    if (!o.clear_color || !is_colour(ref, *o.clear_color) || !is_colour(act, *o.clear_color)) ++s.covered;
+    return worst;
+}
+
+}  // namespace
+
+// ----------------------------------------------------------- public API ---
+Result<Image> read_png(const std::string& path) {
+    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) return Error(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
+    PngReader r;
+    if (!r.info) return Error("libpng: out of memory");
+    if (!png_read_header(r.png, r.info, file.get())) return png_failure(path, r);
+    png_uint_32 w = png_get_image_width(r.png, r.info), h = png_get_image_height(r.png, r.info);
+    if (w == 0 || h == 0 || w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide))
+        return Error(fmt::format("'{}' is {}x{}: images must be 1..{} pixels per side", path, w, h, kMaxImageSide));
+    if (!png_request_rgba8(r.png, r.info)) return png_failure(path, r);
+    if (png_get_rowbytes(r.png, r.info) != size_t(w) * 4)
+        return Error(fmt::format("'{}': libpng could not convert the image to RGBA8", path));
+    Image image{int(w), int(h), std::vector<uint8_t>(size_t(w) * h * 4)};
+    std::vector<png_bytep> rows(h);
+    for (png_uint_32 y = 0; y < h; ++y) rows[y] = &image.rgba[size_t(y) * w * 4];
+    if (!png_read_rows(r.png, rows.data())) return png_failure(path, r);
+    return image;
+}
+
+Status write_png(const Image& image, const std::string& path) {
+    if (Status st = check_image(image, "output"); !st) return st;
+    // glslrun::write_png stores n/255 back as exactly n, so reusing it is lossless.
+    Framebuffer fb(image.width, image.height);
+    for (int y = 0; y < image.height; ++y) {
+        const uint8_t* src = image.pixel(0, image.height - 1 - y);
+        float* dst = &fb.color[size_t(y) * size_t(image.width) * 4];
+        for (size_t i = 0; i < size_t(image.width) * 4; ++i) dst[i] = float(src[i]) / 255.0f;
+    }
+    return glslrun::write_png(fb, path);
+}
+
+Image read_framebuffer(const Framebuffer& fb) {
+    Image image{fb.width, fb.height, std::vector<uint8_t>(size_t(fb.width) * size_t(fb.height) * 4)};
+    for (int y = 0; y < fb.height; ++y) {
+        const float* src = &fb.color[size_t(fb.height - 1 - y) * size_t(fb.width) * 4];
+        uint8_t* dst = &image.rgba[size_t(y) * size_t(fb.width) * 4];
+        // The same expression as raster/png.cpp's, so both agree byte for byte.
+        for (size_t i = 0; i < size_t(fb.width) * 4; ++i)
+            dst[i] = uint8_t(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
+    }
+    return image;
+}
+
+Result<Image> image_from_bottom_up(int width, int height, std::span<const uint8_t> rgba) {
+    if (width < 0 || height < 0 || rgba.size() != size_t(width) * size_t(height) * 4)
+        return Error(fmt::format("{} bytes do not hold {}x{} RGBA8 pixels", rgba.size(), width, height));
+    Image image{width, height, std::vector<uint8_t>(rgba.size())};
+    size_t row = size_t(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(rgba.begin() + std::ptrdiff_t(size_t(height - 1 - y) * row), row, &image.rgba[size_t(y) * row]);
+    return image;
+}
+
+Rgba8 to_rgba8(glm::vec4 color) {
+    Rgba8 out{};
+    for (int c = 0; c < 4; ++c) out[size_t(c)] = uint8_t(raster::quantize_unorm8(color[c]) * 255.0f + 0.5f);
+    return out;
+}
+
+int CompareStats::max_channel_diff() const { return *std::max_element(max_diff.begin(), max_diff.end()); }
+
+double CompareStats::differing_percent() const { return pixels ? 100.0 * double(differing) / double(pixels) : 0.0; }
+
+double CompareStats::covered_within_fraction() const {
+    // Background pixels equal the clear colour in both images, so every
+    // differing pixel is covered.
+    return covered ? double(covered - differing) / double(covered) : 1.0;
+}
+
+std::string CompareStats::summary() const {
+    std::string s = fmt::format("{}x{}: max diff R/G/B/A {}/{}/{}/{}, mean {:.4f}/{:.4f}/{:.4f}/{:.4f}; ", width,
+                                height, max_diff[0], max_diff[1], max_diff[2], max_diff[3], mean_diff[0], mean_diff[1],
+                                mean_diff[2], mean_diff[3]);
+    s += fmt::format("{} of {} pixels ({:.4f}%) differ by more than {}; ", differing, pixels, differing_percent(),
+                     tolerance);
+    s += fmt::format("{:.4f}% of {} covered pixels within tolerance (need {:.4f}%): {}", 100.0 * covered_within_fraction(),
+                     covered, 100.0 * min_fraction_within, passed ? "PASS" : "FAIL");
+    if (worst_x >= 0) s += fmt::format("; largest difference at ({}, {}) from the top left", worst_x, worst_y);
+    return s;
+}
+
+Result<CompareStats> compare_images(const Image& reference, const Image& actual, const CompareOptions& options) {
+    for (Status st : {check_options(options), check_image(reference, "reference"), check_image(actual, "other"),
+                      check_same_size(reference, actual)})
+        if (!st) return st.error();
+    CompareStats s;
+    s.width = reference.width;
+    s.height = reference.height;
+    s.pixels = uint64_t(s.width) * uint64_t(s.height);
+    s.tolerance = options.tolerance;
+    s.min_fraction_within = options.min_fraction_within;
+    std::array<uint64_t, 4> sums{};
+    int worst = 0;
+    for (int y = 0; y < s.height; ++y)
+        for (int x = 0; x < s.width; ++x) {
+            const uint8_t *ref = reference.pixel(x, y), *act = actual.pixel(x, y);
+            int d = accumulate(s, sums, ref, act, options);
+            if (d > worst) {
+                worst = d;
+                s.worst_x = x;
+                s.worst_y = y;
+            }
+        }
+    for (size_t c = 0; c < 4; ++c) s.mean_diff[c] = s.pixels ? double(sums[c]) / double(s.pixels) : 0.0;
+    s.passed = s.covered_within_fraction() >= options.min_fraction_within;
+    return s;
+}
+
+Result<Image> diff_image(const Image& reference, const Image& actual, int tolerance) {
+    CompareOptions options;
+    options.tolerance = tolerance;
+    for (Status st : {check_options(options), check_image(reference, "reference"), check_image(actual, "other"),
+                      check_same_size(reference, actual)})
+        if (!st) return st.error();
+    Image out{reference.width, reference.height, std::vector<uint8_t>(reference.rgba.size())};
+    for (size_t p = 0; p < out.rgba.size(); p += 4) {
+        const uint8_t *ref = &reference.rgba[p], *act = &actual.rgba[p];
+        int d = pixel_diff(ref, act);
+        uint8_t* o = &out.rgba[p];
+        if (d > tolerance) {
+            // 1/255 already shows clearly; 64/255 and more are full red.
+            o[0] = uint8_t(std::min(255, 150 + d * 105 / 64));
+            o[1] = o[2] = 0;
+        } else {
+            // Dimmed, so that red stands out even against white.
+            int luma = (299 * ref[0] + 587 * ref[1] + 114 * ref[2]) / 1000;
+            o[0] = o[1] = o[2] = uint8_t(32 + luma * 96 / 255);
+        }
+        o[3] = 255;
+    }
+    return out;
+}
+
+}  // namespace glslrun::scene

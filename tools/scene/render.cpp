@@ -1,0 +1,96 @@
+#include "tools/scene/render.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace glslrun::scene {
+
+const VertexAttrib* Mesh::find(std::string_view name) const {
+    for (const VertexAttrib& a : attribs)
+        if (a.name == name) return &a;
+    return nullptr;
+}
+
+namespace {
+
+// "arr[2]" and "s[1].f[0]" name an element of what uniforms() lists as
+// "arr" and "s[1].f": drop a trailing subscript to find the declaration.
+const UniformInfo* find_declaration(const std::vector<UniformInfo>& infos, std::string_view name) {
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const UniformInfo& u : infos)
+            if (u.name == name) return &u;
+        if (name.empty() || name.back() != ']') break;
+        name = name.substr(0, name.rfind('['));
+    }
+    return nullptr;
+}
+
+bool is_integer_type(std::string_view type) {
+    return type.starts_with("int") || type.starts_with("ivec") || type.starts_with("bool") ||
+           type.starts_with("bvec") || type.starts_with("sampler");
+}
+
+Error error_at(const SourceLoc& where, std::string message) {
+    return Error(std::move(message), where.file, where.line);
+}
+
+Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const UniformSetting& s) {
+    const UniformInfo* info = find_declaration(infos, s.name);
+    if (!info)
+        return error_at(s.where, fmt::format("the program has no active uniform '{}' (is it "
+                                             "declared and used by a shader?)", s.name));
+    Status st = Ok{};
+    if (is_integer_type(info->type)) {
+        if (!s.integral)
+            return error_at(s.where, fmt::format("uniform '{}' is a {}: its values must be "
+                                                 "integers or booleans", s.name, info->type));
+        std::vector<int32_t> ints;
+        for (double v : s.values) {
+            if (std::abs(v) > 2147483647.0)
+                return error_at(s.where, fmt::format("uniform '{}': {} does not fit in an int", s.name, v));
+            ints.push_back(int32_t(v));
+        }
+        st = program.set_uniform(s.name, ints);
+    } else {
+        std::vector<float> floats(s.values.begin(), s.values.end());
+        st = program.set_uniform(s.name, floats);
+    }
+    if (!st) {
+        std::string why = st.error().diagnostics.empty() ? "rejected" : st.error().diagnostics[0].message;
+        return error_at(s.where, why);
+    }
+    return Ok{};
+}
+
+}  // namespace
+
+Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings) {
+    if (settings.empty()) return Ok{};
+    std::vector<UniformInfo> infos = program.uniforms();
+    for (const UniformSetting& s : settings)
+        if (Status st = apply_one(program, infos, s); !st) return st;
+    return Ok{};
+}
+
+Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
+    fb.clear_color(scene.clear_color);
+    fb.clear_depth(scene.clear_depth);
+    if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
+    DrawStats total;
+    for (const Object& object : scene.objects) {
+        GLState gl = scene.gl;
+        gl.modelview = scene.view * object.model;
+        if (object.front_material) gl.front_material = *object.front_material;
+        if (object.back_material) gl.back_material = *object.back_material;
+        if (object.color) gl.current_color = *object.color;
+        if (Status st = apply_uniforms(program, object.uniforms); !st) return st.error();
+        const Mesh& m = object.mesh;
+        auto stats = draw(program, gl, fb, m.primitive, m.attribs, m.vertex_count, m.indices);
+        if (!stats) return stats.error();
+        total += *stats;
+    }
+    return total;
+}
+
+}  // namespace glslrun::scene

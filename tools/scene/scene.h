@@ -1,0 +1,108 @@
+// Scene files: the legacy GL state a program reads, as TOML (docs/scene-format.md).
+//
+// A scene states only what differs from OpenGL 2.1's defaults. load_scene()
+// parses and validates a file into a Scene; every mistake comes back as an
+// Error citing the TOML file and line. render_scene() draws it with glslrun;
+// tools/glref draws the same Scene with Mesa through EGL, so the two images
+// differ only by the pipeline.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glslrun/glslrun.h"
+
+namespace glslrun::scene {
+
+// Where a value came from, for messages about it after parsing.
+struct SourceLoc {
+    std::string file;
+    int line = 0;
+};
+
+// Geometry ready for glslrun::draw and for glDrawElements alike: attribute
+// arrays named by their GLSL names ("gl_Vertex", "gl_Normal", "gl_Color",
+// "gl_MultiTexCoord0", or a user attribute's name).
+struct Mesh {
+    Primitive primitive = Primitive::Triangles;
+    std::vector<VertexAttrib> attribs;
+    uint32_t vertex_count = 0;
+    std::vector<uint32_t> indices;  // empty: draw vertices 0..vertex_count-1 in order
+    const VertexAttrib* find(std::string_view name) const;
+};
+
+// A user uniform as the scene sets it, applied with glUniform*'s semantics by
+// name ("u", "arr[2]", "s.f", "lights[1].pos"). The file's numbers are kept
+// as given; the renderer converts them to the program's declared type (an
+// integral value may set a float uniform; a fractional one may not set an int).
+struct UniformSetting {
+    std::string name;
+    std::vector<double> values;  // flattened: vectors, then matrix columns, then array elements
+    bool integral = true;        // every value is an integer or a boolean
+    SourceLoc where;
+};
+
+// One light as the file gives it. GL transforms position and spot direction by
+// the modelview current at glLightfv: the view matrix for "world" lights (the
+// lecture's order: gluLookAt, then glLightfv), the identity for "eye" lights.
+struct LightSetting {
+    bool enabled = false;  // GL_LIGHTi enabled (only fixed function reads it)
+    bool world_space = true;
+    LightState as_given;   // position and spot_direction before the transform
+    // Whether the file gave GL_POSITION / GL_SPOT_DIRECTION. GL transforms
+    // only what glLightfv sets: a parameter left out keeps its eye-space
+    // default ((0,0,1,0), (0,0,-1)), which no modelview ever transformed.
+    bool has_position = true, has_spot_direction = true;
+};
+
+struct Object {
+    std::string name;              // for messages; "objects[2]" when unnamed
+    Mesh mesh;
+    glm::mat4 model{1.0f};         // translate/rotate/scale in GL's order of application
+    std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
+    std::optional<MaterialState> front_material, back_material;  // overrides
+    std::vector<UniformSetting> uniforms;
+    SourceLoc where;
+};
+
+struct Camera {
+    enum class Kind { Matrix, Perspective, Ortho, Frustum } kind = Kind::Matrix;
+    float fovy = 45, aspect = 0;  // aspect 0: width / height, kept when the size changes
+    float left = -1, right = 1, bottom = -1, top = 1, near = -1, far = 1;  // ortho, frustum; near/far also perspective
+};
+
+struct Scene {
+    std::string path;
+    Camera camera;
+    int width = 512, height = 512;
+    glm::vec4 clear_color{0, 0, 0, 0};  // GL's default
+    float clear_depth = 1.0f;
+    glm::mat4 view{1.0f};        // the camera: modelview before any object transform
+    glm::mat4 projection{1.0f};
+    // Everything else of the GL state. Lights are already in eye space
+    // (derived from `lights`), the modelview is the view; per object
+    // render_scene() sets modelview = view * model and the material overrides.
+    GLState gl;
+    std::array<LightSetting, 8> lights;
+    std::vector<UniformSetting> uniforms;  // for every object
+    std::vector<Object> objects;
+};
+
+// Sizes beyond this are refused before anything is allocated.
+constexpr int kMaxImageSide = 16384;
+
+Result<Scene> parse_scene(std::string_view toml_text, const std::string& path);
+Result<Scene> load_scene(const std::string& path);  // relative mesh paths are relative to the file
+
+// Recomputes scene.gl's eye-space lights from scene.lights and scene.view;
+// call it after changing either (load_scene already did).
+void derive_eye_space_lights(Scene& scene);
+
+// Changes the output size (--size) and keeps a perspective camera's aspect
+// ratio equal to width/height when the file gave no explicit aspect.
+Status resize_scene(Scene& scene, int width, int height);
+
+}  // namespace glslrun::scene
