@@ -143,6 +143,9 @@ private:
     Value vector_times_matrix(const Value& v, const Value& m, int cols, int rows);
     Value matrix_times_matrix(const Value& a, int acols, int arows, const Value& b, int bcols);
 
+    // --- lower_texture.cpp
+    Value texture(gl::TIntermAggregate* n);
+
     // --- lower_stmt.cpp
     void stmt(TIntermNode* n);
     void loop(gl::TIntermLoop* n);

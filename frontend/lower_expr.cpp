@@ -249,8 +249,7 @@ Value StageLowering::aggregate(gl::TIntermAggregate* n) {
         for (TIntermNode* c : n->getSequence()) last = expr(c->getAsTyped());
         return last;
     }
-    if (n->isTexture() || op == gl::EOpTexture)
-        return fail(n, "texture functions are not supported yet");
+    if (n->isTexture()) return texture(n);
     if (op == gl::EOpFtransform) return ftransform();
     std::vector<Value> args;
     for (TIntermNode* c : n->getSequence()) args.push_back(expr(c->getAsTyped()));

@@ -26,14 +26,27 @@ void for_each_operand(const Instr& in, Fn&& fn) {
         if (in.src[k] != kNoReg) fn(in.src[k]);
 }
 
+// `tex` reads its operand block and writes kTexResults registers from dst.
+// Both ranges are addressed by position, so passes must neither rename nor
+// split them (inline treats them as shared, copyprop never rewrites imm).
+template <class Fn>
+void for_each_tex_operand(const Instr& in, Fn&& fn) {
+    for (uint32_t k = 0; k < in.imm[1]; ++k) fn(Reg(in.imm[0] + k));
+}
+template <class Fn>
+void for_each_tex_result(const Instr& in, Fn&& fn) {
+    for (uint32_t k = 0; k < kTexResults; ++k) fn(Reg(in.dst + k));
+}
+
 // Registers a single node reads directly (not its nested blocks): operands,
-// load_ind ranges and If conditions.
+// load_ind ranges, tex operand blocks and If conditions.
 template <class Fn>
 void for_each_read(const Node& n, Fn&& fn) {
     if (n.kind == NodeKind::If) fn(n.cond);
     if (n.kind != NodeKind::Instr) return;
     for_each_operand(n.instr, fn);
     if (reads_range(n.instr.op)) for_each_in_range(n.instr, fn);
+    if (n.instr.op == Op::tex) for_each_tex_operand(n.instr, fn);
 }
 
 // Registers a single instruction may write.
@@ -41,6 +54,8 @@ template <class Fn>
 void for_each_write(const Instr& in, Fn&& fn) {
     if (writes_range(in.op))
         for_each_in_range(in, fn);
+    else if (in.op == Op::tex)
+        for_each_tex_result(in, fn);
     else if (in.dst != kNoReg)
         fn(in.dst);
 }

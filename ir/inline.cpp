@@ -46,6 +46,10 @@ struct Inliner {
                     flow::for_each_write(n.instr, [&](Reg r) { claim(r, fn); });
                     if (n.instr.op == Op::load_ind || n.instr.op == Op::store_ind)
                         flow::for_each_in_range(n.instr, [&](Reg r) { claim(r, kShared); });
+                    if (n.instr.op == Op::tex) {
+                        flow::for_each_tex_operand(n.instr, [&](Reg r) { claim(r, kShared); });
+                        flow::for_each_tex_result(n.instr, [&](Reg r) { claim(r, kShared); });
+                    }
                 }
             });
         };

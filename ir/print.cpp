@@ -40,6 +40,14 @@ std::string instr_text(const Instr& in) {
     case Op::store_ind:
         return s + fmt::format(":{} %{}[{} of {}, stride {}] = {}", kind_name(in.type), in.imm[0],
                                reg_name(in.src[0]), in.imm[1], in.imm[2], reg_name(in.src[1]));
+    case Op::tex: {
+        static const char* const targets[] = {"1d", "2d", "3d", "cube"};
+        static const char* const lods[] = {"lod", "implicit", "bias"};
+        const TexInfo t = TexInfo::decode(in.imm[2]);
+        return s + fmt::format(".{}{}.{} unit {}, %{}..%{} (result %{}..%{})", targets[int(t.target)],
+                               t.shadow ? ".shadow" : "", lods[int(t.lod)], reg_name(in.src[0]), in.imm[0],
+                               in.imm[0] + in.imm[1] - 1, in.dst, in.dst + kTexResults - 1);
+    }
     default: break;
     }
     for (int i = 0; i < info.arity; ++i) s += (i ? ", " : " ") + reg_name(in.src[i]);

@@ -87,8 +87,27 @@ struct Verifier {
         case Op::ddy:
             if (shader.stage != Stage::Fragment) return fail(n, "derivative outside a fragment shader");
             break;
+        case Op::tex: return tex(n);
         default: break;
         }
+        return true;
+    }
+
+    bool tex(const Node& n) {
+        const Instr& in = n.instr;
+        const TexInfo t = TexInfo::decode(in.imm[2]);
+        if (in.imm[2] != t.encode() || int(t.lod) > int(TexLod::ImplicitBias)) return fail(n, "tex: bad TexInfo");
+        if (shader.regs[in.src[0]] != Kind::I32) return fail(n, "tex: unit is not i32");
+        if (in.type != Kind::F32) return fail(n, "tex: result is not f32");
+        if (in.imm[1] != t.operand_count()) return fail(n, "tex: operand count differs from its TexInfo");
+        if (t.lod != TexLod::Explicit && shader.stage != Stage::Fragment)
+            return fail(n, "tex: implicit level of detail outside a fragment shader");
+        if (!range_ok(in.imm[0], in.imm[1], 1) || !range_ok(in.dst, kTexResults, 1))
+            return fail(n, "tex: register block out of bounds");
+        for (uint32_t k = 0; k < in.imm[1]; ++k)
+            if (shader.regs[in.imm[0] + k] != Kind::F32) return fail(n, "tex: operand is not f32");
+        for (uint32_t k = 0; k < kTexResults; ++k)
+            if (shader.regs[in.dst + k] != Kind::F32) return fail(n, "tex: result is not f32");
         return true;
     }
 

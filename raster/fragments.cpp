@@ -29,7 +29,8 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     : program_(program), gl_(gl), fb_(fb), stats_(stats) {
     const Program::State& st = program.state();
     const ir::Shader& fs = st.ir.fragment;
-    interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), program.exec.max_loop_iterations);
+    interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), program.exec.max_loop_iterations,
+                                                gl.texture_units.data());
     for (size_t i = 0; i < fs.inputs.size(); ++i) {
         const ir::Binding& b = fs.inputs[i];
         InputPlan plan{InputPlan::Source::Zero, &b, 0};

@@ -105,7 +105,7 @@ Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<V
     VertexOutputs out;
     out.offset = output_offsets(vs, &out.stride);
     out.data.assign(size_t(count) * out.stride, 0.0f);
-    rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations);
+    rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations, current.texture_units.data());
     for (uint32_t base = 0; base < count; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, count - base));
         for (int lane = 0; lane < n; ++lane)
@@ -129,8 +129,8 @@ Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<V
 namespace glslrun {
 
 Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
-                                               uint32_t count) {
-    auto shaded = exec::shade_vertices(program, attribs, count, GLState{});
+                                               uint32_t count, const GLState* gl) {
+    auto shaded = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{});
     if (!shaded) return shaded.error();
     const ir::Shader& vs = program.state().ir.vertex;
     std::vector<ShaderOutput> outputs;
@@ -147,15 +147,17 @@ Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std
 }
 
 Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
-                                                uint32_t count) {
+                                                uint32_t count, const GLState* gl) {
     const Program::State& st = program.state();
     const ir::Shader& fs = st.ir.fragment;
-    auto plan = exec::plan_inputs(fs, inputs, count, GLState{});
+    const GLState defaults;
+    const GLState& state = gl ? *gl : defaults;
+    auto plan = exec::plan_inputs(fs, inputs, count, state);
     if (!plan) return plan.error();
     std::vector<ShaderOutput> outputs;
     for (const ir::Binding& b : fs.outputs) outputs.push_back({b.name, b.count, std::vector<float>(size_t(count) * b.count)});
     ShaderOutput discarded{"discarded", 1, std::vector<float>(count)};
-    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations);
+    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations, state.texture_units.data());
     for (uint32_t base = 0; base < count; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, count - base));
         // Padding up to a whole quad repeats the last fragment as helper lanes.

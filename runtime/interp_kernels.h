@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "glslrun/glslrun.h"
 #include "ir/alu_eval.h"
 #include "runtime/exec_mask.h"
 
@@ -14,10 +15,12 @@ namespace glslrun::rt {
 
 struct Step;
 
-// What a kernel can touch: the register file, the uniform store, the mask.
+// What a kernel can touch: the register file, the uniform store, the bound
+// textures, the mask.
 struct Machine {
     uint32_t* regs = nullptr;  // register r lane i at regs[r * kLanes + i]
     const uint32_t* uniforms = nullptr;
+    const GLState::TextureUnit* textures = nullptr;  // kMaxTextureUnits units, or none at all
     ExecMask mask;
 
     // Masked register write: inactive lanes keep their old value.
@@ -180,6 +183,10 @@ inline void ddy(const Step& s, Machine& m) {
     std::memcpy(words, out, sizeof words);
     m.write(s.dst, words);
 }
+
+// Texture lookups (runtime/tex_kernel.cpp): src[1] points at the operand
+// block (the compiler resolves imm[0]), dst at the first of four results.
+void tex(const Step& s, Machine& m);
 
 }  // namespace kernels
 

@@ -53,10 +53,11 @@ struct Interpreter::Impl {
     bool failed = false;
     int call_depth = 0;
 
-    Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters)
+    Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures)
         : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
         machine.regs = file.data;
         machine.uniforms = uniforms;
+        machine.textures = textures;
         for (const ir::Function& f : s.functions) functions.push_back(compile_block(f.body));
         main = compile_block(s.body);
     }
@@ -91,6 +92,7 @@ struct Interpreter::Impl {
                 s.src[k] = reg(in.src[k]);
                 s.imm[k] = in.imm[k];
             }
+            if (in.op == ir::Op::tex) s.src[1] = reg(in.imm[0]);  // the operand block
             break;
         }
         case ir::NodeKind::If: {
@@ -207,8 +209,9 @@ struct Interpreter::Impl {
     }
 };
 
-Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations)
-    : impl_(std::make_unique<Impl>(shader, uniforms, max_loop_iterations)) {}
+Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+                         const GLState::TextureUnit* textures)
+    : impl_(std::make_unique<Impl>(shader, uniforms, max_loop_iterations, textures)) {}
 
 Interpreter::~Interpreter() = default;
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "glslrun/glslrun.h"
 #include "ir/ir.h"
 
 namespace glslrun::rt {
@@ -26,8 +27,10 @@ struct RunError {
 class Interpreter {
 public:
     // `uniforms` must stay alive while the interpreter runs; it is the
-    // program's uniform store (one 32-bit word per component).
-    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations);
+    // program's uniform store (one 32-bit word per component). `textures`
+    // (kMaxTextureUnits units, may be null: nothing bound) likewise.
+    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+                const GLState::TextureUnit* textures = nullptr);
     ~Interpreter();
 
     // kLanes words of register r: floats, ints and bools (0/1) as raw bits.

@@ -99,6 +99,11 @@ Status Program::set_uniform(std::string_view name, std::span<const int32_t> valu
     const ir::Uniform& u = **found;
     if (u.type.kind == ir::Kind::F32 && !u.type.is_sampler)
         return Error(fmt::format("uniform '{}' is a float type; it takes floats, not ints", name));
+    if (u.type.is_sampler)  // glUniform1i: GL_INVALID_VALUE, and nothing changes
+        for (int32_t unit : values)
+            if (unit < 0 || unit >= kMaxTextureUnits)
+                return Error(fmt::format("sampler '{}' set to texture unit {}; units are 0..{}", name, unit,
+                                         kMaxTextureUnits - 1));
     uint32_t* dst = state_->uniforms.data() + u.slot + element * u.type.components();
     for (size_t i = 0; i < values.size(); ++i) {
         if (u.type.kind == ir::Kind::Bool)

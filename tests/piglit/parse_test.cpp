@@ -126,10 +126,12 @@ TEST_CASE("SIZE changes the window", "[piglit][parse]") {
     CHECK(t.require.height == 30);
 }
 
-TEST_CASE("texture commands and unsupported sections skip", "[piglit][parse]") {
+TEST_CASE("GL 3 texture commands and unsupported sections skip", "[piglit][parse]") {
     ShaderTest t = parse_ok("[require]\nGLSL >= 1.10\n[test]\ntexture rgbw 0 (8, 8)\n"
                             "texparameter 2D compare_func greater\ndraw rect -1 -1 2 2\n");
-    CHECK(skip_reason(t).value() == "textures: issue #4");
+    CHECK_FALSE(skip_reason(t).has_value());
+    ShaderTest a = parse_ok("[require]\nGLSL >= 1.10\n[test]\ntexture rgbw 2DArray 0 (8, 8, 2)\n");
+    CHECK(skip_reason(a).value() == "texture rgbw 2DArray needs GL 3 or extensions");
     ShaderTest g = parse_ok("[require]\nGLSL >= 1.10\n[geometry shader]\nvoid main(){}\n[test]\n");
     CHECK(skip_reason(g).value() == "unsupported section [geometry shader]");
     ShaderTest u = parse_ok("[require]\nGLSL >= 1.10\n[test]\nuniform dvec2 x 3 4\n");

@@ -4,6 +4,10 @@
 // 99.9% of the covered pixels (issue #3). A failing comparison leaves both
 // images and the diff under <build>/reference-failures/.
 //
+// Mesa samples textures in float (glref sets GALLIVM_PERF=no_aos_sampling);
+// its level of detail stays an approximation, which textured.toml is built
+// to tolerate (see there and tests/reference/textures_test.cpp).
+//
 // A missing shader or scene, or Mesa unable to create a context, is a
 // failure: CI has Mesa installed, so a comparison that silently did not run
 // would hide a regression.
@@ -24,7 +28,8 @@ struct Case {
 };
 
 // The lecture's programs with their scenes (shared/notes/scenes.md), then the
-// scenes that stress the built-in state.
+// scenes that stress the built-in state, then the textured scenes (an image
+// with generated mipmaps and trilinear filtering; a cube map).
 constexpr Case kCases[] = {
     {"minimal", "teapot.toml"},
     {"colors", "quad.toml"},
@@ -41,6 +46,8 @@ constexpr Case kCases[] = {
     {"two_side", "two_side.toml"},
     {"multi_light", "multi_light.toml"},
     {"back_material", "back_material.toml"},
+    {"textured_pix", "textured.toml"},
+    {"cube_reflect", "cube_map.toml"},
 };
 
 const std::string kSourceDir = GLSLRUN_SOURCE_DIR;

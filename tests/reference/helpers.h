@@ -1,10 +1,12 @@
 // Shared by the reference tests: render one scene with glslrun and with Mesa
-// in this process, compare, and on failure leave both images and the diff
-// under <build>/reference-failures/.
+// in this process, compare, and on failure (or with
+// GLSLRUN_SAVE_REFERENCE_IMAGES set) leave both images and the diff under
+// <build>/reference-failures/.
 #pragma once
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -76,7 +78,9 @@ inline void compare(const std::string& name, const Inputs& in) {
     INFO(stats->summary());
     // A blank pair of images would pass vacuously.
     CHECK(stats->covered >= stats->pixels / 100);
-    std::string saved = stats->passed ? std::string() : save_failure(name, mesa->image, *ours);
+    // GLSLRUN_SAVE_REFERENCE_IMAGES=1 keeps the images of passing cases too, to look at.
+    bool keep = stats->passed && std::getenv("GLSLRUN_SAVE_REFERENCE_IMAGES");
+    std::string saved = stats->passed && !keep ? std::string() : save_failure(name, mesa->image, *ours);
     INFO("images:" << saved);
     CHECK(stats->passed);
 }

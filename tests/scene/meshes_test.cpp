@@ -436,13 +436,13 @@ TEST_CASE("OBJ: malformed lines are cited", "[mesh]") {
     CHECK_THAT(obj_error(v3 + "f 1 2 3/\n", 4), Catch::Contains("missing texture coordinate index"));
     CHECK_THAT(obj_error(v3 + "f 1 2 3//\n", 4), Catch::Contains("missing normal index"));
     CHECK_THAT(obj_error(v3 + "f 1 2 3/1/1/1\n", 4), Catch::Contains("not a corner"));
-    CHECK_THAT(obj_error(v3 + "f 1 2 4\n", 4), Catch::Contains("vertex index 4 is out of range"));
+    CHECK_THAT(obj_error(v3 + "f 1 2 4\n", 4), Catch::Contains("vertex index 4 is out of range: only 3"));
     CHECK_THAT(obj_error(v3 + "f 1 2 0\n", 4), Catch::Contains("index 0"));
     CHECK_THAT(obj_error(v3 + "f 1 2 -4\n", 4), Catch::Contains("out of range"));
     CHECK_THAT(obj_error(v3 + "f 1 2 99999999999999999999999999\n", 4), Catch::Contains("out of range"));
     CHECK_THAT(obj_error(v3 + "f 1/1 2/1 3/1\n", 4), Catch::Contains("texture coordinate index 1 is out of range"));
     CHECK_THAT(obj_error(v3 + "f 1//2 2//2 3//2\n", 4), Catch::Contains("normal index 2 is out of range"));
-    CHECK_THAT(obj_error("f 1 2 3\n" + v3, 1), Catch::Contains("0 defined before"));  // no forward references
+    CHECK_THAT(obj_error("f 1 2 3\n" + v3, 1), Catch::Contains("none defined before"));  // no forward refs
     CHECK_THAT(obj_error("v nan 0 0\n", 1), Catch::Contains("not a number"));
     CHECK_THAT(obj_error("v 1e39 0 0\n", 1), Catch::Contains("too large"));
     CHECK_THAT(obj_error("v 1 2 3 # trailing\n", 1), Catch::Contains("not a number"));

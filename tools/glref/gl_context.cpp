@@ -36,6 +36,12 @@ Result<EGLDisplay> open_display(const std::string& driver) {
     // Read by Mesa's loader when the display initialises, never again.
     setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
     setenv("GALLIUM_DRIVER", driver.c_str(), 1);
+    // llvmpipe filters RGBA8 textures in 8-bit fixed point by default ("AoS
+    // sampling"): bilinear weights are rounded to 1/256, and its mipmap
+    // generation drifts up by about 1/2 of 1/255 per level. The reference
+    // should show GL's arithmetic, so it samples in float; a GALLIVM_PERF the
+    // user set is kept.
+    setenv("GALLIVM_PERF", "no_aos_sampling", 0);
     auto get_display =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_display) return Error("EGL has no eglGetPlatformDisplayEXT (is Mesa's libEGL installed?)");

@@ -65,7 +65,9 @@ namespace glslrun::glref {
     X(PFNGLCLIENTACTIVETEXTUREARBPROC, ClientActiveTexture)                                 \
     X(PFNGLSECONDARYCOLORPOINTERPROC, SecondaryColorPointer)                                \
     X(PFNGLSECONDARYCOLOR3FVPROC, SecondaryColor3fv)                                        \
-    X(PFNGLFOGCOORDPOINTERPROC, FogCoordPointer)
+    X(PFNGLFOGCOORDPOINTERPROC, FogCoordPointer)                                            \
+    X(PFNGLTEXIMAGE3DPROC, TexImage3D)                                                      \
+    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)
 
 struct GLFunctions {
 #define GLREF_DECLARE(type, name) type name = nullptr;

@@ -1,6 +1,7 @@
 #include "tools/glref/gl_render.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
@@ -8,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "tools/glref/gl_context.h"
+#include "tools/glref/gl_textures.h"
 #include "tools/glref/gl_uniforms.h"
 
 namespace glslrun::glref {
@@ -317,6 +319,13 @@ void draw_mesh(const GLFunctions& gl, const scene::Mesh& m) {
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
 
+// Stops at the first array GL cannot take; `bound` lists what to undo.
+Status bind_arrays(const GLFunctions& gl, GLuint program, const scene::Mesh& m, BoundArrays& bound) {
+    for (const VertexAttrib& a : m.attribs)
+        if (Status st = bind_array(gl, program, a, bound); !st) return st;
+    return Ok{};
+}
+
 // render_scene's per-object state, in the same order: modelview, materials,
 // current attributes, the object's uniforms, then the arrays and the draw.
 Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o) {
@@ -331,13 +340,22 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
     glNormal3fv(glm::value_ptr(s.gl.current_normal));
     if (Status st = apply_uniforms(gl, program, o.uniforms); !st) return st;
     BoundArrays bound;
-    Status st = Ok{};
-    for (const VertexAttrib& a : o.mesh.attribs)
-        if (st = bind_array(gl, program, a, bound); !st) break;
+    Status st = bind_arrays(gl, program, o.mesh, bound);
     if (st) draw_mesh(gl, o.mesh);
     unbind_arrays(gl, bound);
     if (!st) return st;
     return check_gl(fmt::format("while drawing object '{}'", o.name));
+}
+
+// One frame: the clear, the scene's uniforms (so every frame starts from the
+// same program state), every object, and glFinish, so the frame is done.
+Status draw_frame(const GLFunctions& gl, GLuint program, const Scene& scene) {
+    clear(scene);
+    if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
+    for (const scene::Object& o : scene.objects)
+        if (Status st = draw_object(gl, program, scene, o); !st) return st;
+    glFinish();
+    return Ok{};
 }
 
 Result<scene::Image> read_back(int width, int height) {
@@ -352,7 +370,8 @@ Result<scene::Image> read_back(int width, int height) {
 }  // namespace
 
 Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector<ShaderSource>& vertex,
-                                    const std::vector<ShaderSource>& fragment, const Scene& scene) {
+                                    const std::vector<ShaderSource>& fragment, const Scene& scene,
+                                    const MesaOptions& options) {
     if (scene.width < 1 || scene.height < 1 || scene.width > scene::kMaxImageSide ||
         scene.height > scene::kMaxImageSide)
         return Error(fmt::format("size {}x{} is not 1..{} per side", scene.width, scene.height, scene::kMaxImageSide));
@@ -363,12 +382,16 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     auto program = build_program(gl, vertex, fragment);
     if (!program) return program.error();
     if (Status st = set_scene_state(gl, scene); !st) return st.error();
-    if (Status st = apply_uniforms(gl, *program, scene.uniforms); !st) return st.error();
-    for (const scene::Object& o : scene.objects)
-        if (Status st = draw_object(gl, *program, scene, o); !st) return st.error();
+    if (Status st = upload_textures(gl, scene, options.upload_generated_mipmaps); !st) return st.error();
+    std::vector<double> seconds;
+    for (int frame = 0; frame < std::max(1, options.frames); ++frame) {
+        auto start = std::chrono::steady_clock::now();
+        if (Status st = draw_frame(gl, *program, scene); !st) return st.error();
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
     auto image = read_back(scene.width, scene.height);
     if (!image) return image.error();
-    return MesaRender{std::move(*image), (*context)->renderer()};
+    return MesaRender{std::move(*image), (*context)->renderer(), std::move(seconds)};
 }
 
 }  // namespace glslrun::glref

@@ -2,6 +2,8 @@
 // as the oracle for glslrun's images.
 //
 //   glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]
+//         [--upload-mipmaps] [--frames N]
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -22,17 +24,23 @@ using namespace glslrun;
 
 constexpr const char* kUsage =
     "usage: glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]\n"
+    "             [--upload-mipmaps] [--frames N]\n"
     "Renders the scene with Mesa through EGL (no X server) the way a GL 2.1 program would,\n"
     "for comparison with glslrun's image (glslrun --compare).\n"
     "  --driver D   Mesa's software rasteriser: llvmpipe (default) or softpipe\n"
     "  -o FILE      output PNG (default: <scene>-<driver>.png)\n"
-    "  --size WxH   override the scene's size\n";
+    "  --size WxH   override the scene's size\n"
+    "  --upload-mipmaps  give Mesa glslrun's generated mipmap levels instead of calling\n"
+    "               glGenerateMipmap (generate_mipmap = true textures)\n"
+    "  --frames N   draw the scene N times; print the first frame's time and the others' median\n"
+    "               and minimum (the first includes llvmpipe's shader compilation)\n";
 
 struct Options {
     std::string driver = "llvmpipe";
     std::vector<std::string> inputs;  // vertex shader, fragment shader, scene
     std::string output;
     std::optional<std::pair<int, int>> size;
+    glref::MesaOptions mesa;
 };
 
 bool parse_size(const std::string& text, std::pair<int, int>& size) {
@@ -45,7 +53,8 @@ std::string parse_options(int argc, char** argv, Options& o) {
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         bool has_value = i + 1 < argc;
-        if ((a == "--driver" || a == "-o" || a == "--size") && !has_value) return a + " needs a value";
+        if ((a == "--driver" || a == "-o" || a == "--size" || a == "--frames") && !has_value)
+            return a + " needs a value";
         if (a == "--driver") {
             o.driver = argv[++i];
         } else if (a == "-o") {
@@ -54,6 +63,13 @@ std::string parse_options(int argc, char** argv, Options& o) {
             std::pair<int, int> size;
             if (!parse_size(argv[++i], size)) return fmt::format("--size '{}' is not WxH", argv[i]);
             o.size = size;
+        } else if (a == "--frames") {
+            char extra = 0;
+            if (std::sscanf(argv[++i], "%d%c", &o.mesa.frames, &extra) != 1 || o.mesa.frames < 1 ||
+                o.mesa.frames > 100000)
+                return fmt::format("--frames '{}' is not a count 1..100000", argv[i]);
+        } else if (a == "--upload-mipmaps") {
+            o.mesa.upload_generated_mipmaps = true;
         } else if (a.size() > 1 && a[0] == '-') {
             return "unknown option " + a;
         } else {
@@ -81,6 +97,15 @@ int fail(const Error& e) {
     return 1;
 }
 
+// The first frame apart (llvmpipe compiles there), then the others' median and minimum.
+void print_frames(std::vector<double> seconds) {
+    std::printf("frame 1: %.2f ms (includes shader compilation)\n", seconds[0] * 1e3);
+    seconds.erase(seconds.begin());
+    std::sort(seconds.begin(), seconds.end());
+    std::printf("frames 2..%zu: median %.2f ms, min %.2f ms\n", seconds.size() + 1, seconds[seconds.size() / 2] * 1e3,
+                seconds.front() * 1e3);
+}
+
 int run(const Options& o) {
     auto vs = read_shader(o.inputs[0]);
     if (!vs) return fail(vs.error());
@@ -90,10 +115,12 @@ int run(const Options& o) {
     if (!scene) return fail(scene.error());
     if (o.size)
         if (Status st = scene::resize_scene(*scene, o.size->first, o.size->second); !st) return fail(st.error());
-    auto render = glref::render_with_mesa(o.driver, {*vs}, {*fs}, *scene);
+    for (const Diagnostic& w : scene->warnings) std::fprintf(stderr, "%s\n", w.str().c_str());
+    auto render = glref::render_with_mesa(o.driver, {*vs}, {*fs}, *scene, o.mesa);
     if (!render) return fail(render.error());
     if (Status st = scene::write_png(render->image, o.output); !st) return fail(st.error());
     std::printf("%s: %dx%d, %s\n", o.output.c_str(), scene->width, scene->height, render->renderer.c_str());
+    if (o.mesa.frames > 1) print_frames(render->frame_seconds);
     return 0;
 }
 

@@ -1,8 +1,11 @@
 // One [test] command line -> CommandData. The prefixes are tried in
 // shader_runner's order, so "clear color" wins over "clear", "draw rect tex"
 // over "draw rect", and so on.
-#include <cctype>
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
 #include <string>
 
 #include "piglit_parse.h"
@@ -217,6 +220,219 @@ Parsed<CommandData> parse_light(std::string_view rest, std::string_view line) {
     return CommandData{std::move(l)};
 }
 
+// ------------------------------------------------------------ textures ---
+// A cursor for shader_runner's sscanf patterns ("%d ( %d , %d )"): whitespace
+// is skipped before every item.
+struct Scanner {
+    std::string_view s;
+
+    bool literal(char c) {
+        s = trim(s);
+        if (s.empty() || s[0] != c) return false;
+        s.remove_prefix(1);
+        return true;
+    }
+    // A decimal int; nullopt if there is none or it does not fit an int.
+    std::optional<int> integer() {
+        s = trim(s);
+        std::string buf(s.substr(0, std::min<size_t>(s.size(), 32)));
+        char* end = nullptr;
+        errno = 0;
+        long long v = std::strtoll(buf.c_str(), &end, 10);
+        if (end == buf.c_str() || errno == ERANGE || v < INT32_MIN || v > INT32_MAX) return std::nullopt;
+        s.remove_prefix(size_t(end - buf.c_str()));
+        return int(v);
+    }
+    // "( a , b , c , d )": n numbers.
+    std::optional<std::array<float, 4>> color() {
+        auto v = paren_group(s, 4);
+        if (!v) return std::nullopt;
+        return std::array<float, 4>{(*v)[0], (*v)[1], (*v)[2], (*v)[3]};
+    }
+    // The next whitespace-delimited word ("" at the end).
+    std::string_view word() {
+        s = trim(s);
+        size_t n = std::min(s.size(), s.find_first_of(" \t"));
+        std::string_view w = s.substr(0, n);
+        s.remove_prefix(n);
+        return w;
+    }
+};
+
+// "( w )" or "( w , h )".
+bool scan_size(Scanner& in, int& w, int* h) {
+    if (!in.literal('(')) return false;
+    auto a = in.integer();
+    if (!a) return false;
+    w = *a;
+    if (h) {
+        if (!in.literal(',')) return false;
+        auto b = in.integer();
+        if (!b) return false;
+        *h = *b;
+    }
+    return in.literal(')');
+}
+
+// The internal formats "texture rgbw N (w, h) FORMAT" can have here: ours
+// store RGBA8 or floats, and rgbw's texels (0 or 1, alpha 1) survive every one
+// of these unchanged.
+std::optional<bool> rgbw_format_is_float(std::string_view f) {
+    for (std::string_view n : {"GL_RGBA", "GL_RGBA8", "GL_RGB", "GL_RGB8"})
+        if (f == n) return false;
+    for (std::string_view n : {"GL_RGBA32F", "GL_RGBA16F", "GL_RGB32F", "GL_RGB16F"})
+        if (f == n) return true;
+    return std::nullopt;
+}
+
+Parsed<CommandData> parse_rgbw(Scanner in, std::string_view line) {
+    TextureCommand t;
+    auto unit = in.integer();
+    if (!unit || !scan_size(in, t.width, &t.height)) return error("bad texture rgbw command \"" + std::string(line) + "\"");
+    t.unit = *unit;
+    std::string_view format = in.word();
+    if (!format.empty()) {
+        auto is_float = rgbw_format_is_float(format);
+        if (!is_float) return CommandData{Unsupported{"texture format " + std::string(format) + " is not supported"}};
+        t.format = std::string(format);
+        t.float_format = *is_float;
+    }
+    return CommandData{t};
+}
+
+Parsed<CommandData> parse_checkerboard(Scanner in, std::string_view line) {
+    TextureCommand t;
+    t.kind = TextureCommand::Kind::Checkerboard;
+    auto unit = in.integer();
+    auto level = unit ? in.integer() : std::nullopt;
+    if (!level || !scan_size(in, t.width, &t.height))
+        return error("bad texture checkerboard command \"" + std::string(line) + "\"");
+    auto black = in.color();
+    auto white = black ? in.color() : std::nullopt;
+    if (!white) return error("bad texture checkerboard command \"" + std::string(line) + "\"");
+    t.unit = *unit;
+    t.level = *level;
+    t.black = *black;
+    t.white = *white;
+    return CommandData{t};
+}
+
+// "texture shadow1D N (w)", "texture shadow2D N (w, h)".
+Parsed<CommandData> parse_shadow(Scanner in, bool two_d, std::string_view line) {
+    TextureCommand t;
+    t.kind = two_d ? TextureCommand::Kind::Shadow2D : TextureCommand::Kind::Shadow1D;
+    auto unit = in.integer();
+    if (!unit || !scan_size(in, t.width, two_d ? &t.height : nullptr))
+        return error("bad texture command \"" + std::string(line) + "\"");
+    t.unit = *unit;
+    return CommandData{t};
+}
+
+// "texture rgbw 1D N", "texture rgbw 3D N": piglit's fixed 4-texel and 2x2x2 textures.
+Parsed<CommandData> parse_fixed_rgbw(Scanner in, TextureCommand::Kind kind, std::string_view line) {
+    TextureCommand t;
+    t.kind = kind;
+    auto unit = in.integer();
+    if (!unit) return error("bad texture command \"" + std::string(line) + "\"");
+    t.unit = *unit;
+    return CommandData{t};
+}
+
+// After "texture ". The array, rectangle and integer variants need GL 3 or
+// extensions we do not expose; the other helpers are not used by GLSL 1.x tests.
+Parsed<CommandData> parse_texture(std::string_view rest, std::string_view line) {
+    for (std::string_view v : {"rgbw 1DArray", "rgbw 2DArray", "shadow1DArray", "shadow2DArray", "shadowRect"})
+        if (starts_with(rest, v))
+            return CommandData{Unsupported{"texture " + std::string(v) + " needs GL 3 or extensions"}};
+    if (eat(rest, "rgbw 1D")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Rgbw1D, line);
+    if (eat(rest, "rgbw 3D")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Rgbw3D, line);
+    if (eat(rest, "rgbw")) return parse_rgbw({rest}, line);
+    if (eat(rest, "checkerboard")) return parse_checkerboard({rest}, line);
+    if (eat(rest, "shadow2D")) return parse_shadow({rest}, true, line);
+    if (eat(rest, "shadow1D")) return parse_shadow({rest}, false, line);
+    std::string_view kind = Scanner{rest}.word();
+    return CommandData{Unsupported{"unsupported command \"texture " + std::string(kind) + "\""}};
+}
+
+// The values shader_runner's handle_texparameter accepts for each enum parameter.
+using Names = std::initializer_list<std::string_view>;
+const Names kCompareFuncs = {"greater", "gequal", "less", "lequal", "equal", "notequal", "never", "always"};
+const Names kDepthModes = {"intensity", "luminance", "alpha"};
+const Names kMinFilters = {"nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
+                           "linear_mipmap_linear", "nearest", "linear"};
+const Names kMagFilters = {"nearest", "linear"};
+const Names kWrapModes = {"repeat", "clamp_to_edge", "clamp_to_border"};
+
+struct ParamSpec {
+    std::string_view word;
+    TexParameter::Name name;
+    const Names* values;  // null: numbers follow
+};
+const ParamSpec kParams[] = {
+    {"compare_func", TexParameter::Name::CompareFunc, &kCompareFuncs},
+    {"depth_mode", TexParameter::Name::DepthMode, &kDepthModes},
+    {"min", TexParameter::Name::Min, &kMinFilters},
+    {"mag", TexParameter::Name::Mag, &kMagFilters},
+    {"wrap_s", TexParameter::Name::WrapS, &kWrapModes},
+    {"wrap_t", TexParameter::Name::WrapT, &kWrapModes},
+    {"wrap_r", TexParameter::Name::WrapR, &kWrapModes},
+    {"lod_bias", TexParameter::Name::LodBias, nullptr},
+    {"max_level", TexParameter::Name::MaxLevel, nullptr},
+    {"base_level", TexParameter::Name::BaseLevel, nullptr},
+    {"border_color", TexParameter::Name::BorderColor, nullptr},
+};
+
+std::optional<TexParameter::Target> tex_target(std::string_view w) {
+    if (w == "1D") return TexParameter::Target::Tex1D;
+    if (w == "2D") return TexParameter::Target::Tex2D;
+    if (w == "3D") return TexParameter::Target::Tex3D;
+    if (w == "Cube") return TexParameter::Target::Cube;
+    return std::nullopt;
+}
+
+// lod_bias: one float; max_level/base_level: one int; border_color: four floats.
+bool texparameter_numbers(TexParameter& p, std::string_view rest) {
+    if (p.name == TexParameter::Name::MaxLevel || p.name == TexParameter::Name::BaseLevel) {
+        auto v = Scanner{rest}.integer();
+        if (v) p.numbers[0] = float(*v);
+        return v.has_value();
+    }
+    size_t n = p.name == TexParameter::Name::BorderColor ? 4 : 1;
+    auto v = floats(rest, n);
+    if (v) std::copy(v->begin(), v->end(), p.numbers.begin());
+    return v.has_value();
+}
+
+// After "texparameter ".
+Parsed<CommandData> parse_texparameter(std::string_view rest, std::string_view line) {
+    Scanner in{rest};
+    std::string_view target = in.word();
+    for (std::string_view t : {"Rect", "1DArray", "2DArray", "CubeArray"})
+        if (target == t) return CommandData{Unsupported{"texparameter " + std::string(t) + " needs GL 3 or extensions"}};
+    std::string_view name = in.word();
+    if (name == "swizzle_r") return CommandData{Unsupported{"texparameter swizzle_r needs GL_EXT_texture_swizzle"}};
+    TexParameter p;
+    auto t = tex_target(target);
+    if (!t) return error("bad texture target \"" + std::string(target) + "\" in \"" + std::string(line) + "\"");
+    p.target = *t;
+    const ParamSpec* spec = nullptr;
+    for (const auto& s : kParams)
+        if (s.word == name) spec = &s;
+    if (!spec) return error("unknown texture parameter \"" + std::string(name) + "\"");
+    p.name = spec->name;
+    if (!spec->values) {
+        if (!texparameter_numbers(p, in.s)) return error("bad " + std::string(name) + " value in \"" + std::string(line) + "\"");
+        return CommandData{p};
+    }
+    std::string_view value = in.word();
+    if (p.name == TexParameter::Name::DepthMode && value == "red")
+        return CommandData{Unsupported{"depth_mode red needs GL 3.0"}};
+    if (std::find(spec->values->begin(), spec->values->end(), value) == spec->values->end())
+        return error("bad " + std::string(name) + " \"" + std::string(value) + "\"");
+    p.value = std::string(value);
+    return CommandData{p};
+}
+
 constexpr std::string_view kUnsupportedCommands[] = {
     "ubo ", "block ", "ssbo ", "atomic ", "compute ", "fb ", "blit ", "image texture",
     "memory barrier", "xfb ", "probe xfb", "probe ssbo", "probe atomic", "subuniform ",
@@ -301,9 +517,10 @@ Parsed<CommandData> parse_command(std::string_view raw) {
         if (rest == "smooth") return CommandData{ShadeModel{false}};
         return bad("shade model");
     }
-    if (starts_with(line, "texture ") || starts_with(line, "texparameter ") ||
-        starts_with(line, "texcoord "))
-        return CommandData{Unsupported{"textures: issue #4"}};
+    if (eat(rest, "texture ")) return parse_texture(rest, line);
+    if (eat(rest, "texparameter ")) return parse_texparameter(rest, line);
+    // glMultiTexCoord: GLState has no current texture coordinate yet.
+    if (starts_with(line, "texcoord ")) return CommandData{Unsupported{"unsupported command \"texcoord\""}};
     if (eat(rest, "uniform ")) return parse_uniform(rest);
     if (eat(rest, "link error")) return CommandData{LinkCheck{false}};
     if (eat(rest, "link success")) return CommandData{LinkCheck{true}};

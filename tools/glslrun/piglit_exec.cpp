@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "glslrun/glslrun.h"
+#include "piglit_textures.h"
 
 namespace glslrun::piglit {
 namespace {
@@ -29,6 +30,13 @@ std::optional<std::string> read_file(const std::string& path) {
 TestResult fail(std::string message) { return {Outcome::Fail, std::move(message)}; }
 TestResult skip(std::string message) { return {Outcome::Skip, std::move(message)}; }
 TestResult pass() { return {Outcome::Pass, {}}; }
+
+// An error's messages without the "error: " prefix of Error::str().
+std::string messages(const Error& e) {
+    std::string s;
+    for (const auto& d : e.diagnostics) s += (s.empty() ? "" : "; ") + d.message;
+    return s;
+}
 
 Stage to_stage(ShaderStage s) { return s == ShaderStage::Vertex ? Stage::Vertex : Stage::Fragment; }
 
@@ -83,6 +91,7 @@ private:
     const ShaderTest& test_;
     const RunOptions& options_;
     GLState gl_;
+    TextureState textures_;
     Framebuffer fb_;
     glm::vec4 clear_color_{0, 0, 0, 0};
     float clear_depth_ = 1;
@@ -211,6 +220,10 @@ std::optional<TestResult> ShaderTestRun::execute(const Command& cmd) {
                 return light(line, c);
             } else if constexpr (std::is_same_v<T, Tolerance>) {
                 tolerance_ = c.tol;
+            } else if constexpr (std::is_same_v<T, TextureCommand>) {
+                if (auto st = run_texture_command(gl_, textures_, c); !st) return line_fail(line, messages(st.error()));
+            } else if constexpr (std::is_same_v<T, TexParameter>) {
+                if (auto st = run_texparameter(gl_, textures_, c); !st) return line_fail(line, messages(st.error()));
             } else if constexpr (std::is_same_v<T, Unsupported>) {
                 return skip(c.reason);
             }

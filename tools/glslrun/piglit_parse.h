@@ -96,13 +96,33 @@ struct ShadeModel { bool flat = false; };
 struct CurrentColor { std::array<float, 4> rgba{}; };
 struct Light { int index = 0; std::string param; std::vector<float> values; };
 struct Tolerance { std::array<float, 4> tol{}; };
+// "texture rgbw|checkerboard|shadow1D|shadow2D ...": shader_runner makes a new
+// texture on `unit`, binds it there and leaves that unit active.
+struct TextureCommand {
+    enum class Kind { Rgbw, Rgbw1D, Rgbw3D, Checkerboard, Shadow1D, Shadow2D } kind = Kind::Rgbw;
+    int unit = 0;
+    int level = 0;                 // checkerboard: the mip level it writes
+    int width = 1, height = 1;     // rgbw/checkerboard/shadow (1D: height 1)
+    std::string format;            // rgbw: the internal format named after the size, "" = GL_RGBA
+    bool float_format = false;     // that format stores floats (GL_RGBA32F, ...), else 8-bit unorm
+    std::array<float, 4> black{}, white{};  // checkerboard colours
+};
+// "texparameter <target> <name> <value>": glTexParameter on the texture bound
+// to <target> of the active unit.
+struct TexParameter {
+    enum class Target { Tex1D, Tex2D, Tex3D, Cube } target = Target::Tex2D;
+    enum class Name { CompareFunc, DepthMode, Min, Mag, WrapS, WrapT, WrapR, LodBias, MaxLevel,
+                      BaseLevel, BorderColor } name = Name::CompareFunc;
+    std::string value;             // enum values as written ("greater", "linear_mipmap_nearest")
+    std::array<float, 4> numbers{};  // lod_bias, max/base_level: [0]; border_color: all four
+};
 struct Ignored {};                           // hint, ...
 struct Unsupported { std::string reason; };  // makes the test skip
 
 using CommandData = std::variant<ClearColor, ClearDepth, Clear, DrawRect, DrawArrays, Ortho,
                                  Frustum, SetUniform, Probe, ProbeDepth, LinkCheck, Enable,
-                                 ClipPlane, ShadeModel, CurrentColor, Light, Tolerance, Ignored,
-                                 Unsupported>;
+                                 ClipPlane, ShadeModel, CurrentColor, Light, Tolerance,
+                                 TextureCommand, TexParameter, Ignored, Unsupported>;
 struct Command {
     int line = 0;
     CommandData data;

@@ -126,6 +126,8 @@ int compare_with(const scene::Image& actual, const RenderOptions& o) {
 int render(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
     if (!scene) return fail(scene.error());
+    // Legal but likely unintended (an incomplete texture samples as black).
+    for (const Diagnostic& w : scene->warnings) fmt::print(stderr, "{}\n", w.str());
     if (!o.size.empty()) {
         auto size = parse_size(o.size);
         if (!size) return fail(size.error());

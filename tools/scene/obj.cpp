@@ -7,11 +7,14 @@
 // number in every message; tinyobjloader then only ever sees well-formed
 // statements. Polygons are split here as a fan from their first corner (what
 // GL_POLYGON does), which is right for the convex polygons OBJ exporters write.
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -100,7 +103,8 @@ Problem check_index(std::string_view text, int64_t count, const char* what) {
         return fmt::format("'{}' is not a {} index", shown(text), what);
     if (index == 0) return fmt::format("{} index 0 (OBJ indices start at 1)", what);
     if (index > count || index < -count)
-        return fmt::format("{} index {} is out of range: {} defined before this line", what, index, count);
+        return fmt::format("{} index {} is out of range: {} defined before this line", what, index,
+                           count == 0 ? std::string("none") : fmt::format("only {}", count));
     return std::nullopt;
 }
 
@@ -175,7 +179,9 @@ std::optional<Error> check_obj_text(std::string_view text, const std::string& pa
 Result<std::string> read_text(const std::string& path) {
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(status)) return Error("cannot open OBJ file: no such file", path);
+    if (status.type() == std::filesystem::file_type::not_found)
+        return Error("cannot open OBJ file: no such file", path);
+    if (ec) return Error(fmt::format("cannot open OBJ file: {}", ec.message()), path);
     if (std::filesystem::is_directory(status)) return Error("cannot read OBJ file: it is a directory", path);
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error(fmt::format("cannot open OBJ file: {}", std::strerror(errno)), path);

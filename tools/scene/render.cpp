@@ -42,6 +42,9 @@ Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const 
                                              "declared and used by a shader?)", s.name));
     Status st = Ok{};
     if (is_integer_type(info->type)) {
+        if (!s.integral && info->type.starts_with("sampler"))
+            return error_at(s.where, fmt::format("uniform '{}' is a {}: its value is a texture unit, an "
+                                                 "integer (write 0, not 0.0)", s.name, info->type));
         if (!s.integral)
             return error_at(s.where, fmt::format("uniform '{}' is a {}: its values must be "
                                                  "integers or booleans", s.name, info->type));
@@ -77,9 +80,13 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
     fb.clear_color(scene.clear_color);
     fb.clear_depth(scene.clear_depth);
     if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
+    // glActiveTexture + glBindTexture per [textures.N], once: texture
+    // bindings are context state that every object's draw sees.
+    GLState bound = scene.gl;
+    for (const TextureSetting& t : scene.textures) bound.bind_texture(t.unit, t.texture);
     DrawStats total;
     for (const Object& object : scene.objects) {
-        GLState gl = scene.gl;
+        GLState gl = bound;
         gl.modelview = scene.view * object.model;
         if (object.front_material) gl.front_material = *object.front_material;
         if (object.back_material) gl.back_material = *object.back_material;

@@ -7,6 +7,7 @@
 // differ only by the pipeline.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,6 +69,20 @@ struct Object {
     SourceLoc where;
 };
 
+// One [textures.N] table: a texture object bound to unit N. The texels are
+// final (read, generated, rounded to the internal format) and shared by every
+// renderer: render_scene binds the object itself, tools/glref uploads its
+// texels to Mesa, so both sample identical data.
+struct TextureSetting {
+    int unit = 0;
+    std::shared_ptr<const Texture> texture;
+    // GL_GENERATE_MIPMAP: levels 1.. were generated from level 0. glref then
+    // uploads level 0 only and lets Mesa generate the rest (glGenerateMipmap),
+    // so the comparison also covers glslrun's mipmap generation.
+    bool generate_mipmap = false;
+    SourceLoc where;
+};
+
 struct Camera {
     enum class Kind { Matrix, Perspective, Ortho, Frustum } kind = Kind::Matrix;
     float fovy = 45, aspect = 0;  // aspect 0: width / height, kept when the size changes
@@ -87,8 +102,12 @@ struct Scene {
     // render_scene() sets modelview = view * model and the material overrides.
     GLState gl;
     std::array<LightSetting, 8> lights;
+    std::vector<TextureSetting> textures;  // by unit, ascending
     std::vector<UniformSetting> uniforms;  // for every object
     std::vector<Object> objects;
+    // Legal but probably unintended settings, e.g. a texture that GL 2.1's
+    // completeness rules make sample as (0, 0, 0, 1). Renderers print them.
+    std::vector<Diagnostic> warnings;
 };
 
 // Sizes beyond this are refused before anything is allocated.

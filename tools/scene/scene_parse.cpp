@@ -51,7 +51,7 @@ void init_lights(Scene& scene) {
 Scene build_scene(const toml::table& root, const std::string& path) {
     Section top(root, "");
     top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
-               "current", "state", "fog", "texture_matrix", "uniforms", "objects"});
+               "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects"});
     Scene scene;
     scene.path = path;
     init_lights(scene);
@@ -59,8 +59,9 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     if (const toml::node* n = top.get("camera")) detail::read_camera(section(*n, "camera"), scene);
     if (const toml::node* n = top.get("lights")) detail::read_lights(*n, scene);
     detail::read_render_state(top, scene);
-    if (const toml::node* n = top.get("uniforms")) detail::read_uniforms(*n, "uniforms", scene.uniforms);
     std::string dir = std::filesystem::path(path).parent_path().string();
+    if (const toml::node* n = top.get("textures")) detail::read_textures(*n, dir, scene);
+    if (const toml::node* n = top.get("uniforms")) detail::read_uniforms(*n, "uniforms", scene.uniforms);
     if (const toml::node* n = top.get("objects")) detail::read_objects(*n, dir, scene);
     scene.gl.modelview = scene.view;
     scene.gl.projection = scene.projection;

@@ -93,7 +93,7 @@ glm::dmat4 gl_rotate(double degrees, glm::dvec3 axis);  // axis non-zero
 glm::dmat4 projection_of(const Camera& camera, int width, int height);
 
 // Sections of the file (scene_camera.cpp, scene_state.cpp, scene_uniforms.cpp,
-// scene_objects.cpp).
+// scene_objects.cpp, scene_textures.cpp).
 glm::dmat4 transform_list(const toml::node& n, const std::string& what);
 void read_camera(const Section& camera, Scene& scene);
 void read_lights(const toml::node& n, Scene& scene);
@@ -103,6 +103,7 @@ void read_uniforms(const toml::node& n, const std::string& what, std::vector<Uni
 std::vector<VertexAttrib> read_attributes(const toml::node& n, const std::string& what,
                                           uint32_t vertex_count);
 void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scene);
+void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene);  // scene_textures.cpp
 // "" when width x height is acceptable, else why not.
 std::string size_problem(int64_t width, int64_t height);
 

@@ -2,6 +2,7 @@
 // any density. Every detail below (patch order, the (u, v) roles, the vertex
 // numbering, the normal's cross product, the triangle split) is fixed by the
 // note, because the reference images were made from these exact arrays.
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>

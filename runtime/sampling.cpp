@@ -1,0 +1,337 @@
+// One texture lookup as GL 2.1 §3.8 defines it (see sampling.h). The order
+// follows the specification: completeness (§3.8.10), cube-face selection
+// (§3.8.6), lambda with bias and clamps (§3.8.8), magnification vs.
+// minification (§3.8.9), the mipmap level(s) (§3.8.8), the wrap of each
+// coordinate (§3.8.7), NEAREST/LINEAR filtering, depth comparison and
+// DEPTH_TEXTURE_MODE (§3.8.14).
+//
+// Per-pixel code: no allocation, and every texel index is either in range or
+// the border marker, whatever the coordinates (NaN and infinities included).
+#include "runtime/sampling.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include "runtime/texture_levels.h"
+
+namespace glslrun::rt {
+
+namespace {
+
+// |lambda| beyond this changes nothing (levels are at most log2(16384) = 14
+// apart); keeping it finite keeps the arithmetic below NaN-free.
+constexpr float kLodLimit = 1000.0f;
+// Coordinates beyond this many texels saturate before they become ints.
+constexpr float kIndexLimit = 1 << 24;
+// A texel index on the border (outside [0, size) under CLAMP or CLAMP_TO_BORDER).
+constexpr int kBorder = -1;
+
+// x clamped to [lo, hi], NaN to lo.
+float clamp_or_low(float x, float lo, float hi) { return x > lo ? (x < hi ? x : hi) : lo; }
+
+// floor() without a libm call (the baseline x86-64 target has no roundss):
+// beyond 2^23 every float is an integer already, and NaN stays NaN.
+float floor_f(float x) {
+    if (!(std::fabs(x) < 8388608.0f)) return x;
+    const float t = float(int(x));
+    return t > x ? t - 1.0f : t;
+}
+
+// floor() as an int for any float: NaN and huge magnitudes saturate, so the
+// wraps below always reduce it to an index in range.
+int floor_int(float x) { return int(floor_f(clamp_or_low(x, -kIndexLimit, kIndexLimit))); }
+
+int repeat_index(int i, int n) {
+    i %= n;
+    return i < 0 ? i + n : i;
+}
+
+int border_or_index(int i, int n) { return i >= 0 && i < n ? i : kBorder; }
+
+// §3.8.7 MIRRORED_REPEAT: mirror(f) = frac(f) where floor(f) is even,
+// 1 - frac(f) where it is odd; the result is then clamped as CLAMP_TO_EDGE.
+float mirror(float s) {
+    const float fl = floor_f(s);
+    const float f = s - fl;
+    // Floats from 2^24 on are all even; NaN counts as even (and stays NaN).
+    const bool odd = std::fabs(fl) < 16777216.0f && (int32_t(fl) & 1) != 0;
+    return odd ? 1.0f - f : f;
+}
+
+// ------------------------------------------------------ texel indices ---
+// NEAREST (§3.8.8): i = floor(u) with u = s * size, s wrapped first.
+// CLAMP and CLAMP_TO_EDGE both end in [0, size-1] (CLAMP reaches the border
+// only when filtering linearly); CLAMP_TO_BORDER's s in [-1/2N, 1+1/2N] makes
+// -1 or N, the border.
+int nearest_index(TextureWrap wrap, float s, int n) {
+    switch (wrap) {
+    case TextureWrap::Repeat: return repeat_index(floor_int((s - floor_f(s)) * float(n)), n);
+    case TextureWrap::MirroredRepeat: s = mirror(s); [[fallthrough]];
+    case TextureWrap::ClampToEdge:
+    case TextureWrap::Clamp: return std::clamp(floor_int(s * float(n)), 0, n - 1);
+    case TextureWrap::ClampToBorder: return border_or_index(floor_int(s * float(n)), n);
+    }
+    return 0;
+}
+
+struct LinearAxis {
+    int i0, i1;  // texel indices or kBorder
+    float a;     // weight of i1
+};
+
+// LINEAR (§3.8.8): i0 = floor(u - 1/2), i1 = i0 + 1,
+// alpha = frac(u - 1/2), with u from the wrapped s. REPEAT takes both
+// indices mod size; CLAMP lets them leave [0, size) so the border blends in;
+// CLAMP_TO_EDGE (and the mirrored coordinate) keeps u in [1/2, size - 1/2],
+// so only texels of the image take part.
+LinearAxis linear_axis(TextureWrap wrap, float s, int n) {
+    const float size = float(n);
+    float u = 0.0f;
+    bool edge = false;
+    switch (wrap) {
+    case TextureWrap::Repeat: {
+        u = (s - floor_f(s)) * size - 0.5f;
+        const int i0 = floor_int(u);
+        return {repeat_index(i0, n), repeat_index(i0 + 1, n), u - floor_f(u)};
+    }
+    case TextureWrap::MirroredRepeat: s = mirror(s); [[fallthrough]];
+    case TextureWrap::ClampToEdge:
+        u = clamp_or_low(s * size, 0.5f, size - 0.5f) - 0.5f;
+        edge = true;
+        break;
+    case TextureWrap::Clamp: u = clamp_or_low(s, 0.0f, 1.0f) * size - 0.5f; break;
+    case TextureWrap::ClampToBorder: u = clamp_or_low(s * size, -0.5f, size + 0.5f) - 0.5f; break;
+    }
+    const int i0 = floor_int(u);
+    const float a = u - floor_f(u);
+    // At u = size - 1/2 the edge modes' i1 is past the image with weight 0: keep it on the last texel.
+    if (edge) return {std::min(i0, n - 1), std::min(i0 + 1, n - 1), a};
+    return {border_or_index(i0, n), border_or_index(i0 + 1, n), a};
+}
+
+// ------------------------------------------------------------ lookup ---
+// The table of §3.8.6: per face, the major axis and which component (with which
+// sign) becomes sc and tc.
+struct CubeFace {
+    int major, s_axis, t_axis;
+    float s_sign, t_sign;
+};
+constexpr CubeFace kCubeFaces[6] = {
+    {0, 2, 1, -1, -1},  // +X: sc = -rz, tc = -ry
+    {0, 2, 1, +1, -1},  // -X: sc = +rz, tc = -ry
+    {1, 0, 2, +1, +1},  // +Y: sc = +rx, tc = +rz
+    {1, 0, 2, +1, -1},  // -Y: sc = +rx, tc = -rz
+    {2, 0, 1, +1, -1},  // +Z: sc = +rx, tc = -ry
+    {2, 0, 1, -1, -1},  // -Z: sc = -rx, tc = -ry
+};
+
+// §3.8.6: the face of the largest-magnitude component. GL leaves ties to the
+// implementation; like Mesa, X wins over Y and Z, Y over Z. NaN ends on Z.
+int cube_face(const glm::vec3& r) {
+    const float ax = std::fabs(r.x), ay = std::fabs(r.y), az = std::fabs(r.z);
+    if (ax >= ay && ax >= az) return r.x >= 0.0f ? 0 : 1;
+    if (ay >= az) return r.y >= 0.0f ? 2 : 3;
+    return r.z >= 0.0f ? 4 : 5;
+}
+
+// s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2 (§3.8.6). A zero
+// direction gives NaN, which the wraps turn into some texel of the face.
+glm::vec3 cube_coord(const CubeFace& f, const glm::vec3& r) {
+    const float ma = std::fabs(r[f.major]);
+    return {0.5f * (f.s_sign * r[f.s_axis] / ma + 1.0f), 0.5f * (f.t_sign * r[f.t_axis] / ma + 1.0f), 0.0f};
+}
+
+// §3.8.14: the comparison's result, 1 or 0, of R (the reference) against D_t.
+float compare_depth(CompareFunc func, float ref, float d) {
+    switch (func) {
+    case CompareFunc::Never: return 0.0f;
+    case CompareFunc::Less: return ref < d ? 1.0f : 0.0f;
+    case CompareFunc::Equal: return ref == d ? 1.0f : 0.0f;
+    case CompareFunc::Lequal: return ref <= d ? 1.0f : 0.0f;
+    case CompareFunc::Greater: return ref > d ? 1.0f : 0.0f;
+    case CompareFunc::Notequal: return ref != d ? 1.0f : 0.0f;
+    case CompareFunc::Gequal: return ref >= d ? 1.0f : 0.0f;
+    case CompareFunc::Always: return 1.0f;
+    }
+    return 0.0f;
+}
+
+// What one lookup needs at every texel: the face and its (s, t, r), and the
+// depth comparison. For a depth texture with compare on, every texel (the
+// border too) reads as its comparison result, so the filters average
+// results: compare first, then filter, as Mesa does.
+struct Lookup {
+    const Texture* texture;
+    const SamplerState* st;
+    int face, dims;
+    glm::vec3 str;
+    bool compare;
+    float ref;
+};
+
+float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
+
+Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref) {
+    const SamplerState& st = texture.sampler;
+    Lookup lk{&texture, &st, 0, texture_dims(texture.target()), coord, false, 0.0f};
+    if (texture.target() == TextureTarget::Cube) {
+        lk.face = cube_face(coord);
+        lk.str = cube_coord(kCubeFaces[lk.face], coord);
+    }
+    // §3.8.14: the comparison applies to depth textures only; R is clamped to [0, 1].
+    lk.compare = texture.depth() && st.compare;
+    lk.ref = unorm(ref);
+    return lk;
+}
+
+// GL 2.1 clamps TEXTURE_BORDER_COLOR to [0, 1] when it is set (§3.8.4); a
+// depth texture's border is the depth border_color.r.
+glm::vec4 border_texel(const Lookup& lk) {
+    const glm::vec4& b = lk.st->border_color;
+    if (lk.compare) return glm::vec4(compare_depth(lk.st->compare_func, lk.ref, unorm(b.r)));
+    return {unorm(b.r), unorm(b.g), unorm(b.b), unorm(b.a)};
+}
+
+// Texel (i, j, k) of `image`; any index kBorder means the border colour.
+glm::vec4 fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0) return border_texel(lk);
+    const size_t at = size_t(i) + size_t(image.width) * (size_t(j) + size_t(image.height) * size_t(k));
+    const glm::vec4& texel = image.texels[at];
+    return lk.compare ? glm::vec4(compare_depth(lk.st->compare_func, lk.ref, texel.r)) : texel;
+}
+
+glm::vec4 sample_nearest(const Lookup& lk, const TextureImage& image) {
+    const int i = nearest_index(lk.st->wrap_s, lk.str.x, image.width);
+    const int j = lk.dims > 1 ? nearest_index(lk.st->wrap_t, lk.str.y, image.height) : 0;
+    const int k = lk.dims > 2 ? nearest_index(lk.st->wrap_r, lk.str.z, image.depth) : 0;
+    return fetch(lk, image, i, j, k);
+}
+
+// §3.8.8: the (bi/tri)linear blend of the 2, 4 or 8 texels around u.
+glm::vec4 sample_linear(const Lookup& lk, const TextureImage& image) {
+    const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
+    if (lk.dims == 1) return glm::mix(fetch(lk, image, x.i0, 0, 0), fetch(lk, image, x.i1, 0, 0), x.a);
+    const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
+    auto plane = [&](int k) {
+        const glm::vec4 row0 = glm::mix(fetch(lk, image, x.i0, y.i0, k), fetch(lk, image, x.i1, y.i0, k), x.a);
+        const glm::vec4 row1 = glm::mix(fetch(lk, image, x.i0, y.i1, k), fetch(lk, image, x.i1, y.i1, k), x.a);
+        return glm::mix(row0, row1, y.a);
+    };
+    if (lk.dims == 2) return plane(0);
+    const LinearAxis z = linear_axis(lk.st->wrap_r, lk.str.z, image.depth);
+    return glm::mix(plane(z.i0), plane(z.i1), z.a);
+}
+
+// `level` is within [level_base, q], which completeness guarantees exist.
+glm::vec4 sample_level(const Lookup& lk, int level, bool linear) {
+    const TextureImage& image = lk.texture->levels(lk.face)[size_t(level)];
+    return linear ? sample_linear(lk, image) : sample_nearest(lk, image);
+}
+
+// ------------------------------------------------- level of detail ---
+// Whether a filter blends texels within a level (LINEAR, LINEAR_MIPMAP_*).
+bool linear_within_level(TextureFilter f) {
+    return f == TextureFilter::Linear || f == TextureFilter::LinearMipmapNearest ||
+           f == TextureFilter::LinearMipmapLinear;
+}
+
+// §3.8.8: lambda = clamp(lambda_base + bias, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD).
+// NaN (from NaN coordinates or derivatives) becomes min_lod; if min_lod >
+// max_lod (undefined in GL) max_lod wins.
+float clamp_lambda(float lambda, const SamplerState& st) {
+    if (!(lambda >= st.min_lod)) lambda = st.min_lod;
+    if (lambda > st.max_lod) lambda = st.max_lod;
+    return std::isnan(lambda) ? 0.0f : clamp_or_low(lambda, -kLodLimit, kLodLimit);
+}
+
+// §3.8.8, *_MIPMAP_NEAREST: d = level_base for lambda <= 1/2,
+// level_base + ceil(lambda + 1/2) - 1 up to q + 1/2, else q.
+int nearest_mip_level(float lambda, int base, int q) {
+    if (lambda <= 0.5f) return base;
+    if (float(base) + lambda > float(q) + 0.5f) return q;
+    return std::clamp(base + int(std::ceil(lambda + 0.5f)) - 1, base, q);
+}
+
+// §3.8.9: c, the switch-over between magnification and minification.
+float mag_threshold(const SamplerState& st) {
+    const bool nearest_mipmap = st.min_filter == TextureFilter::NearestMipmapNearest ||
+                                st.min_filter == TextureFilter::NearestMipmapLinear;
+    return st.mag_filter == TextureFilter::Linear && nearest_mipmap ? 0.5f : 0.0f;
+}
+
+glm::vec4 filter(const Lookup& lk, float lambda) {
+    const SamplerState& st = *lk.st;
+    const int base = st.base_level;
+    // §3.8.9: lambda <= c magnifies: the mag filter on level_base.
+    if (lambda <= mag_threshold(st)) return sample_level(lk, base, linear_within_level(st.mag_filter));
+    const bool linear = linear_within_level(st.min_filter);
+    if (!is_mipmap_filter(st.min_filter)) return sample_level(lk, base, linear);
+    const int q = last_mip_level(lk.texture->levels(lk.face)[size_t(base)], st);
+    if (st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest)
+        return sample_level(lk, nearest_mip_level(lambda, base, q), linear);
+    // §3.8.8, *_MIPMAP_LINEAR: levels d1 = floor(level_base + lambda)
+    // and d1 + 1 blended by frac(lambda); both are q from level_base + lambda >= q on.
+    if (float(base) + lambda >= float(q)) return sample_level(lk, q, linear);
+    const float whole = floor_f(lambda);
+    const int d1 = base + int(whole);
+    return glm::mix(sample_level(lk, d1, linear), sample_level(lk, d1 + 1, linear), lambda - whole);
+}
+
+// §3.8.14 DEPTH_TEXTURE_MODE: how a depth (or comparison result) becomes RGBA.
+glm::vec4 expand_depth(DepthTextureMode mode, float d) {
+    switch (mode) {
+    case DepthTextureMode::Luminance: return {d, d, d, 1.0f};
+    case DepthTextureMode::Intensity: return {d, d, d, d};
+    case DepthTextureMode::Alpha: return {0.0f, 0.0f, 0.0f, d};
+    }
+    return {d, d, d, 1.0f};
+}
+
+// The derivative of s = (sc/|ma| + 1) / 2 on the face: (dsc |ma| - sc d|ma|) / (2 ma^2).
+float face_derivative(float sc, float dsc, float ama, float dama) {
+    return 0.5f * (dsc * ama - sc * dama) / (ama * ama);
+}
+
+// (ds, dt) on the cube face `r` selects, from the derivative d of the direction.
+glm::vec3 cube_derivative(const CubeFace& f, const glm::vec3& r, const glm::vec3& d) {
+    const float ama = std::fabs(r[f.major]);
+    const float dama = r[f.major] >= 0.0f ? d[f.major] : -d[f.major];
+    return {face_derivative(f.s_sign * r[f.s_axis], f.s_sign * d[f.s_axis], ama, dama),
+            face_derivative(f.t_sign * r[f.t_axis], f.t_sign * d[f.t_axis], ama, dama), 0.0f};
+}
+
+// |(du, dv, dw)| for the derivative d of (s, t, r): only the target's dimensions count.
+float scaled_length(const glm::vec3& d, const TextureImage& base, int dims) {
+    const glm::vec3 uvw(d.x * float(base.width), dims > 1 ? d.y * float(base.height) : 0.0f,
+                        dims > 2 ? d.z * float(base.depth) : 0.0f);
+    return glm::length(uvw);
+}
+
+}  // namespace
+
+float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx, const glm::vec3& ddy) {
+    // §3.8.8: u = s * w_t etc. with the sizes of level_base.
+    const TextureImage* base = level_image(texture, 0, texture.sampler.base_level);
+    if (!base) return 0.0f;  // incomplete: the lookup gives (0, 0, 0, 1) whatever the LOD
+    const int dims = texture_dims(texture.target());
+    glm::vec3 dx = ddx, dy = ddy;
+    if (texture.target() == TextureTarget::Cube) {
+        const CubeFace& face = kCubeFaces[cube_face(coord)];
+        dx = cube_derivative(face, coord, ddx);
+        dy = cube_derivative(face, coord, ddy);
+    }
+    // rho = max of the lengths of (du/dx, dv/dx, dw/dx) and (du/dy, dv/dy, dw/dy).
+    const float rho = std::max(scaled_length(dx, *base, dims), scaled_length(dy, *base, dims));
+    if (!(rho > 0.0f)) return -kLodLimit;  // no change across the pixel (or NaN): magnification
+    return std::min(std::log2(rho), kLodLimit);
+}
+
+glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod) {
+    if (!texture.complete()) return {0.0f, 0.0f, 0.0f, 1.0f};
+    const SamplerState& st = texture.sampler;
+    const Lookup lk = make_lookup(texture, coord, ref);
+    const glm::vec4 v = filter(lk, clamp_lambda(lod + st.lod_bias, st));
+    return texture.depth() ? expand_depth(st.depth_mode, v.r) : v;
+}
+
+}  // namespace glslrun::rt

@@ -1,0 +1,32 @@
+// Texture sampling as GL 2.1 §3.8.8–3.8.14 defines it, one lane at a time:
+// level-of-detail selection, magnification/minification, mipmap choice,
+// wrap modes and the border, nearest/linear filtering, cube-face selection,
+// depth comparison and DEPTH_TEXTURE_MODE. The interpreter's `tex` kernel
+// decodes an instruction's operands and calls these per active lane.
+#pragma once
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "glslrun/glslrun.h"
+
+namespace glslrun::rt {
+
+using TextureUnits = std::array<GLState::TextureUnit, kMaxTextureUnits>;
+
+// The implicit level of detail, log2(rho) of §3.8.8 (before any bias or
+// clamp), from the derivatives of the (already projected) coordinates over
+// the screen. Only the components of the texture's dimensionality are read.
+// For a cube map, `coord` is the direction and the derivatives are projected
+// onto the face it selects.
+float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx, const glm::vec3& ddy);
+
+// One texture lookup. `coord` is (s, t, r) as far as the target uses them
+// (cube: the direction); `ref` is the depth-comparison reference, used when
+// the texture is a depth texture with compare on; `lod` is lambda_base: the
+// implicit LOD plus the shader's bias, or the explicit Lod argument. The
+// texture object's own lod_bias, min/max_lod and base/max_level apply here.
+// An incomplete texture gives (0, 0, 0, 1).
+glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod);
+
+}  // namespace glslrun::rt

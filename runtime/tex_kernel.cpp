@@ -1,0 +1,70 @@
+// The interpreter's `tex` kernel: decodes the operand block that the frontend
+// laid out (ir::TexInfo) and samples every active lane.
+//
+//   uniform sampler2D tex;            // unit from the uniform, per lane
+//   gl_FragColor = texture2DProj(tex, gl_TexCoord[0]);
+//
+// reaches here as coord = (s/q, t/q), ddx/ddy of those, and no bias. A unit
+// out of range, or no texture bound to the sampler's target on that unit,
+// samples as (0, 0, 0, 1): GL 2.1 §3.8.10's result for an incomplete texture.
+#include <cstring>
+
+#include "runtime/interp_kernels.h"
+#include "runtime/sampling.h"
+
+namespace glslrun::rt::kernels {
+
+namespace {
+
+const Texture* bound_texture(const Machine& m, uint32_t unit_word, ir::TexTarget target) {
+    if (!m.textures) return nullptr;
+    const int32_t unit = static_cast<int32_t>(unit_word);
+    if (unit < 0 || unit >= kMaxTextureUnits) return nullptr;
+    return m.textures[unit].bound[size_t(target)].get();
+}
+
+struct Operands {
+    const float* block;  // operand k of lane i at block[k * kLanes + i]
+    float at(uint32_t k, int lane) const { return block[size_t(k) * kLanes + size_t(lane)]; }
+    glm::vec3 vec(uint32_t first, uint32_t dims, int lane) const {
+        glm::vec3 v(0.0f);
+        for (uint32_t d = 0; d < dims; ++d) v[int(d)] = at(first + d, lane);
+        return v;
+    }
+};
+
+glm::vec4 sample_lane(const Texture& texture, const ir::TexInfo& info, const Operands& ops, int lane) {
+    const uint32_t dims = info.dims();
+    const glm::vec3 coord = ops.vec(0, dims, lane);
+    const float ref = info.shadow ? ops.at(info.ref_at(), lane) : 0.0f;
+    float lod = 0.0f;
+    if (info.lod == ir::TexLod::Explicit) {
+        lod = ops.at(info.lod_at(), lane);
+    } else {
+        lod = implicit_lod(texture, coord, ops.vec(info.ddx_at(), dims, lane), ops.vec(info.ddy_at(), dims, lane));
+        if (info.lod == ir::TexLod::ImplicitBias) lod += ops.at(info.lod_at(), lane);
+    }
+    return sample_texture(texture, coord, ref, lod);
+}
+
+}  // namespace
+
+void tex(const Step& s, Machine& m) {
+    const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
+    const Operands ops{reinterpret_cast<const float*>(s.src[1])};
+    const LaneMask active = m.mask.active();
+    alignas(64) float out[ir::kTexResults][kLanes] = {};
+    for (int i = 0; i < kLanes; ++i) {
+        if (!((active >> i) & 1)) continue;
+        const Texture* texture = bound_texture(m, s.src[0][i], info.target);
+        const glm::vec4 texel = texture ? sample_lane(*texture, info, ops, i) : glm::vec4(0, 0, 0, 1);
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = texel[int(c)];
+    }
+    for (uint32_t c = 0; c < ir::kTexResults; ++c) {
+        uint32_t words[kLanes];
+        std::memcpy(words, out[c], sizeof words);
+        m.write(s.dst + size_t(c) * kLanes, words);
+    }
+}
+
+}  // namespace glslrun::rt::kernels

@@ -1,0 +1,161 @@
+#include "tools/glref/gl_textures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace glslrun::glref {
+
+namespace {
+
+GLenum gl_target(TextureTarget t) {
+    switch (t) {
+    case TextureTarget::Tex1D: return GL_TEXTURE_1D;
+    case TextureTarget::Tex2D: return GL_TEXTURE_2D;
+    case TextureTarget::Tex3D: return GL_TEXTURE_3D;
+    case TextureTarget::Cube: return GL_TEXTURE_CUBE_MAP;
+    }
+    return GL_TEXTURE_2D;
+}
+
+GLenum gl_filter(TextureFilter f) {
+    switch (f) {
+    case TextureFilter::Nearest: return GL_NEAREST;
+    case TextureFilter::Linear: return GL_LINEAR;
+    case TextureFilter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
+    case TextureFilter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
+    case TextureFilter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+    case TextureFilter::LinearMipmapLinear: return GL_LINEAR_MIPMAP_LINEAR;
+    }
+    return GL_LINEAR;
+}
+
+GLenum gl_wrap(TextureWrap w) {
+    switch (w) {
+    case TextureWrap::Repeat: return GL_REPEAT;
+    case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+    case TextureWrap::Clamp: return GL_CLAMP;
+    case TextureWrap::ClampToBorder: return GL_CLAMP_TO_BORDER;
+    case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    }
+    return GL_REPEAT;
+}
+
+GLenum gl_depth_mode(DepthTextureMode m) {
+    switch (m) {
+    case DepthTextureMode::Luminance: return GL_LUMINANCE;
+    case DepthTextureMode::Intensity: return GL_INTENSITY;
+    case DepthTextureMode::Alpha: return GL_ALPHA;
+    }
+    return GL_LUMINANCE;
+}
+
+// glTexImage's internalformat, format and type for glslrun's formats, and
+// the client data in that type.
+struct Upload {
+    GLint internal_format = GL_RGBA8;
+    GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
+    std::vector<uint8_t> bytes;
+    std::vector<float> floats;
+    const void* data() const { return bytes.empty() ? static_cast<const void*>(floats.data()) : bytes.data(); }
+};
+
+// RGBA8 texels are already k/255 in glslrun, so the bytes are exact; depth
+// goes as floats (.r), as does RGBA32F.
+Upload texel_data(TextureFormat format, const TextureImage& image) {
+    Upload u;
+    if (format == TextureFormat::RGBA8) {
+        u.bytes.reserve(image.texels.size() * 4);
+        for (const glm::vec4& t : image.texels)
+            for (int c = 0; c < 4; ++c)
+                u.bytes.push_back(uint8_t(std::lround(std::clamp(t[c], 0.0f, 1.0f) * 255.0f)));
+    } else if (format == TextureFormat::RGBA32F) {
+        u.internal_format = GL_RGBA32F;
+        u.type = GL_FLOAT;
+        for (const glm::vec4& t : image.texels) u.floats.insert(u.floats.end(), {t.r, t.g, t.b, t.a});
+    } else {
+        u.internal_format = GL_DEPTH_COMPONENT;
+        u.format = GL_DEPTH_COMPONENT;
+        u.type = GL_FLOAT;
+        for (const glm::vec4& t : image.texels) u.floats.push_back(t.r);
+    }
+    return u;
+}
+
+void tex_image(const GLFunctions& gl, const Texture& t, int face, int level) {
+    const TextureImage& image = t.levels(face)[size_t(level)];
+    Upload u = texel_data(t.format(), image);
+    GLenum target = gl_target(t.target());
+    if (t.target() == TextureTarget::Cube) target = GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
+    switch (t.target()) {
+    case TextureTarget::Tex1D:
+        glTexImage1D(target, level, u.internal_format, image.width, 0, u.format, u.type, u.data());
+        break;
+    case TextureTarget::Tex3D:
+        gl.TexImage3D(target, level, u.internal_format, image.width, image.height, image.depth, 0, u.format, u.type,
+                      u.data());
+        break;
+    default:
+        glTexImage2D(target, level, u.internal_format, image.width, image.height, 0, u.format, u.type, u.data());
+    }
+}
+
+void tex_parameters(GLenum target, const SamplerState& s) {
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GLint(gl_filter(s.min_filter)));
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GLint(gl_filter(s.mag_filter)));
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GLint(gl_wrap(s.wrap_s)));
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GLint(gl_wrap(s.wrap_t)));
+    glTexParameteri(target, GL_TEXTURE_WRAP_R, GLint(gl_wrap(s.wrap_r)));
+    glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(s.border_color));
+    glTexParameterf(target, GL_TEXTURE_MIN_LOD, s.min_lod);
+    glTexParameterf(target, GL_TEXTURE_MAX_LOD, s.max_lod);
+    glTexParameterf(target, GL_TEXTURE_LOD_BIAS, s.lod_bias);
+    glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, s.base_level);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, s.max_level);
+    glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, s.compare ? GL_COMPARE_R_TO_TEXTURE : GL_NONE);
+    // CompareFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
+    glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GLint(GL_NEVER + int(s.compare_func)));
+    glTexParameteri(target, GL_DEPTH_TEXTURE_MODE, GLint(gl_depth_mode(s.depth_mode)));
+}
+
+Status upload_one(const GLFunctions& gl, const scene::TextureSetting& setting, bool upload_generated_levels) {
+    const Texture& t = *setting.texture;
+    GLenum target = gl_target(t.target());
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    gl.ActiveTexture(GLenum(GL_TEXTURE0 + setting.unit));
+    glBindTexture(target, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // The parameters first: mipmap generation makes levels base_level+1 ..
+    // max_level from base_level, in GL as in glslrun's generate_mipmaps().
+    tex_parameters(target, t.sampler);
+    bool generate = setting.generate_mipmap && !upload_generated_levels;
+    for (int face = 0; face < t.faces(); ++face) {
+        int levels = generate ? std::min(t.sampler.base_level + 1, int(t.levels(face).size()))
+                              : int(t.levels(face).size());
+        for (int level = 0; level < levels; ++level)
+            if (t.levels(face)[size_t(level)].width > 0) tex_image(gl, t, face, level);  // width 0: never given
+    }
+    // Without a base_level image GL refuses to generate and glslrun generates nothing.
+    size_t base = size_t(t.sampler.base_level);
+    if (generate && base < t.levels(0).size() && t.levels(0)[base].width > 0) gl.GenerateMipmap(target);
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR)
+        return Error(fmt::format("Mesa reported {} while creating the texture of unit {}", gl_error_name(e), setting.unit),
+                     setting.where.file, setting.where.line);
+    return Ok{};
+}
+
+}  // namespace
+
+Status upload_textures(const GLFunctions& gl, const scene::Scene& scene, bool upload_generated_levels) {
+    for (const scene::TextureSetting& setting : scene.textures)
+        if (Status st = upload_one(gl, setting, upload_generated_levels); !st) return st;
+    gl.ActiveTexture(GL_TEXTURE0);
+    return Ok{};
+}
+
+}  // namespace glslrun::glref
