@@ -236,15 +236,17 @@ bool Texture::complete() const {
 // texture unbinds every target of the unit (GL's texture object 0 has no
 // images, so it samples as (0, 0, 0, 1) just like nothing bound). A unit
 // outside [0, kMaxTextureUnits) is ignored, as glActiveTexture refuses it.
-void GLState::bind_texture(int unit, std::shared_ptr<const Texture> texture) {
-    if (unit < 0 || unit >= kMaxTextureUnits) return;
+Status GLState::bind_texture(int unit, std::shared_ptr<const Texture> texture) {
+    if (unit < 0 || unit >= kMaxTextureUnits)
+        return Error(fmt::format("texture unit {} does not exist (units are 0..{})", unit, kMaxTextureUnits - 1));
     auto& bound = texture_units[size_t(unit)].bound;
     if (!texture) {
         bound.fill(nullptr);
-        return;
+        return Ok{};
     }
     const size_t target = size_t(texture->target());
     bound[target] = std::move(texture);
+    return Ok{};
 }
 
 }  // namespace glslrun

@@ -242,7 +242,10 @@ struct GLState {
     // own target on the unit its uniform names; none there samples as (0, 0, 0, 1).
     struct TextureUnit { std::array<std::shared_ptr<const Texture>, 4> bound; };  // by TextureTarget
     std::array<TextureUnit, kMaxTextureUnits> texture_units;
-    void bind_texture(int unit, std::shared_ptr<const Texture> texture);  // unit in [0, kMaxTextureUnits)
+    // glActiveTexture(unit) + glBindTexture: fills the slot of the texture's
+    // target; null unbinds every target of the unit. A unit outside
+    // [0, kMaxTextureUnits) is an error, as GL_INVALID_ENUM is.
+    Status bind_texture(int unit, std::shared_ptr<const Texture> texture);
 };
 Status apply_builtin_uniforms(Program& program, const GLState& gl);
 

@@ -77,7 +77,7 @@ float centre(uint32_t i, int size) { return (float(i % uint32_t(size)) + 0.5f) /
 
 TEST_CASE("texture2D and texture2DProj sample the texel under the coordinate", "[texture]") {
     GLState gl;
-    gl.bind_texture(0, make(TextureTarget::Tex2D, {image(4, 8, 1)}));
+    REQUIRE(gl.bind_texture(0, make(TextureTarget::Tex2D, {image(4, 8, 1)})).ok());
     auto inputs = std::vector{make_attrib("c", 4, kFrags, [](uint32_t l, uint32_t comp) {
         const float q = (l % 3 == 0) ? 2.0f : (l % 3 == 1) ? 0.5f : 4.0f;  // powers of two: exact division
         return comp == 0 ? centre(l, 4) * q : comp == 1 ? centre(l / 4, 8) * q : comp == 2 ? q : q;
@@ -99,8 +99,8 @@ TEST_CASE("texture2D and texture2DProj sample the texel under the coordinate", "
 
 TEST_CASE("texture1D, texture3D and their Proj forms", "[texture]") {
     GLState gl;
-    gl.bind_texture(0, make(TextureTarget::Tex1D, {image(8, 1, 1)}));
-    gl.bind_texture(1, make(TextureTarget::Tex3D, {image(2, 4, 2)}));
+    REQUIRE(gl.bind_texture(0, make(TextureTarget::Tex1D, {image(8, 1, 1)})).ok());
+    REQUIRE(gl.bind_texture(1, make(TextureTarget::Tex3D, {image(2, 4, 2)})).ok());
     auto inputs = std::vector{make_attrib("c", 4, kFrags, [](uint32_t l, uint32_t comp) {
         return comp == 0 ? centre(l, 8) : comp == 1 ? centre(l / 2, 4) : comp == 2 ? centre(l / 3, 2) : 1.0f;
     })};
@@ -134,7 +134,7 @@ TEST_CASE("textureCube selects the face of the major axis", "[texture]") {
     std::vector<TextureImage> faces;
     for (const glm::vec4& c : face_color) faces.push_back(solid(2, 2, c));
     GLState gl;
-    gl.bind_texture(2, make(TextureTarget::Cube, faces));
+    REQUIRE(gl.bind_texture(2, make(TextureTarget::Cube, faces)).ok());
     // Lane l points mostly along face l % 6, with small lane-dependent minor components.
     auto dir = [](uint32_t l, uint32_t comp) {
         const uint32_t face = l % 6, axis = face / 2;
@@ -166,8 +166,8 @@ TEST_CASE("shadow1D, shadow2D and shadow2DProj compare the reference with the de
         t->sampler.compare_func = glslrun::CompareFunc::Lequal;
     }
     GLState gl;
-    gl.bind_texture(0, std::make_shared<const Texture>(std::move(*t2)));
-    gl.bind_texture(1, std::make_shared<const Texture>(std::move(*t1)));
+    REQUIRE(gl.bind_texture(0, std::make_shared<const Texture>(std::move(*t2))).ok());
+    REQUIRE(gl.bind_texture(1, std::make_shared<const Texture>(std::move(*t1))).ok());
     auto inputs = std::vector{make_attrib("c", 4, kFrags, [](uint32_t l, uint32_t comp) {
         return comp == 0 ? centre(l, 4) : comp == 1 ? centre(l / 4, 2) : comp == 2 ? 0.0625f * float(l % 16) : 1.0f;
     })};
@@ -200,7 +200,7 @@ TEST_CASE("shadow1D, shadow2D and shadow2DProj compare the reference with the de
 // per pixel and its level of detail q % 4; the bias adds to it.
 TEST_CASE("implicit level of detail from quad derivatives, with bias", "[texture]") {
     GLState gl;
-    gl.bind_texture(0, mip_levels());
+    REQUIRE(gl.bind_texture(0, mip_levels()).ok());
     auto inputs = std::vector{make_attrib("c", 2, kFrags, [](uint32_t l, uint32_t comp) {
         const float scale = float(1u << ((l / 4) % 4));
         const glm::vec2 p = frag_xy(l);
@@ -225,7 +225,7 @@ TEST_CASE("implicit level of detail from quad derivatives, with bias", "[texture
 
 TEST_CASE("vertex shaders sample level 0, or the level their Lod form names", "[texture]") {
     GLState gl;
-    gl.bind_texture(1, mip_levels());
+    REQUIRE(gl.bind_texture(1, mip_levels()).ok());
     glslrun::Program p = compile_vs(R"(
         uniform sampler2D t;
         attribute vec4 a;
@@ -250,9 +250,9 @@ TEST_CASE("vertex shaders sample level 0, or the level their Lod form names", "[
 
 TEST_CASE("samplers pick their unit: uniforms, arrays, function parameters, nothing bound", "[texture]") {
     GLState gl;
-    gl.bind_texture(0, make(TextureTarget::Tex2D, {solid(1, 1, {1, 0, 0, 1})}));
-    gl.bind_texture(3, make(TextureTarget::Tex2D, {solid(1, 1, {0, 0.5f, 0, 1})}));
-    gl.bind_texture(5, make(TextureTarget::Tex3D, {image(1, 1, 1)}));  // wrong target for a sampler2D
+    REQUIRE(gl.bind_texture(0, make(TextureTarget::Tex2D, {solid(1, 1, {1, 0, 0, 1})})).ok());
+    REQUIRE(gl.bind_texture(3, make(TextureTarget::Tex2D, {solid(1, 1, {0, 0.5f, 0, 1})})).ok());
+    REQUIRE(gl.bind_texture(5, make(TextureTarget::Tex3D, {image(1, 1, 1)})).ok());  // wrong target for a sampler2D
     auto inputs = std::vector{make_attrib("c", 2, kFrags, [](uint32_t l, uint32_t comp) {
         return 0.03f * float(l) + 0.5f * float(comp);
     })};
@@ -280,7 +280,7 @@ TEST_CASE("samplers pick their unit: uniforms, arrays, function parameters, noth
 
 TEST_CASE("lookups under divergent control flow write only their lanes", "[texture]") {
     GLState gl;
-    gl.bind_texture(0, make(TextureTarget::Tex2D, {image(4, 8, 1)}));
+    REQUIRE(gl.bind_texture(0, make(TextureTarget::Tex2D, {image(4, 8, 1)})).ok());
     auto inputs = std::vector{make_attrib("c", 2, kFrags, [](uint32_t l, uint32_t comp) {
         return comp == 0 ? centre(l, 4) : centre(l / 4, 8);
     })};

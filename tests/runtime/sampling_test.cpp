@@ -714,15 +714,17 @@ TEST_CASE("bind_texture fills the slot of the texture's target", "[sampling][bin
     GLState gl;
     auto t2 = std::make_shared<const Texture>(make(TextureTarget::Tex2D, {solid(1, 1, {})}));
     auto cube = std::make_shared<const Texture>(make(TextureTarget::Cube, std::vector<TextureImage>(6, solid(1, 1, {}))));
-    gl.bind_texture(3, t2);
-    gl.bind_texture(3, cube);
+    REQUIRE(gl.bind_texture(3, t2).ok());
+    REQUIRE(gl.bind_texture(3, cube).ok());
     CHECK(gl.texture_units[3].bound[size_t(TextureTarget::Tex2D)] == t2);
     CHECK(gl.texture_units[3].bound[size_t(TextureTarget::Cube)] == cube);
     CHECK(gl.texture_units[3].bound[size_t(TextureTarget::Tex1D)] == nullptr);
     CHECK(gl.texture_units[0].bound[size_t(TextureTarget::Tex2D)] == nullptr);
-    gl.bind_texture(-1, t2);  // out of range: ignored
-    gl.bind_texture(kMaxTextureUnits, t2);
-    gl.bind_texture(3, nullptr);  // unbinds every target of the unit
+    CHECK_THAT(gl.bind_texture(-1, t2).error().str(), Catch::Contains("texture unit -1 does not exist"));
+    CHECK_FALSE(gl.bind_texture(kMaxTextureUnits, t2).ok());
+    for (const auto& unit : gl.texture_units)
+        if (&unit != &gl.texture_units[3]) CHECK(unit.bound[size_t(TextureTarget::Tex2D)] == nullptr);
+    CHECK(gl.bind_texture(3, nullptr).ok());  // unbinds every target of the unit
     for (const auto& slot : gl.texture_units[3].bound) CHECK(slot == nullptr);
 }
 

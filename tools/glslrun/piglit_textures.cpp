@@ -246,8 +246,7 @@ Status run_texture_command(GLState& gl, TextureState& state, const TextureComman
     }
     auto texture = make_texture(cmd);
     if (!texture) return texture.error();
-    gl.bind_texture(cmd.unit, std::make_shared<const Texture>(std::move(*texture)));
-    return Ok{};
+    return gl.bind_texture(cmd.unit, std::make_shared<const Texture>(std::move(*texture)));
 }
 
 Status run_texparameter(GLState& gl, const TextureState& state, const TexParameter& p) {

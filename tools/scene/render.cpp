@@ -83,7 +83,8 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
     GLState bound = scene.gl;
-    for (const TextureSetting& t : scene.textures) bound.bind_texture(t.unit, t.texture);
+    for (const TextureSetting& t : scene.textures)
+        if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st.error();
     DrawStats total;
     for (const Object& object : scene.objects) {
         GLState gl = bound;
