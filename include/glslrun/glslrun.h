@@ -78,6 +78,9 @@ struct ExecOptions {
     // Iterations of all loops of one batch together; past it the draw stops
     // with a clear error instead of hanging.
     uint64_t max_loop_iterations = 1u << 22;
+    // Worker threads of draw(); 0 means one per core. Images are
+    // bit-identical whatever the count.
+    unsigned threads = 0;
 };
 
 enum class Stage { Vertex, Fragment };
