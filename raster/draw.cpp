@@ -1,6 +1,6 @@
 // draw(): vertex shading, primitive assembly, clipping, the viewport
-// transform, facing and culling, then triangles/lines/points into the
-// fragment stage.
+// transform, facing, culling and triangle setup, binning into tiles, then the
+// tiles (raster/tiles.h) on the worker threads.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +11,7 @@
 #include "raster/clip.h"
 #include "raster/fragments.h"
 #include "raster/points_lines.h"
+#include "raster/tiles.h"
 #include "raster/triangle.h"
 #include "runtime/execute.h"
 
@@ -26,14 +27,18 @@ int find_output(const ir::Shader& vs, const char* name) {
 
 struct DrawContext {
     const GLState& gl;
-    FragmentStage& stage;
+    const FragmentStage& stage;
     const exec::VertexOutputs& vs;
     std::vector<ClipVertex> vertices;  // per vertex of the arrays
     Rect scissor;
     glm::vec4 viewport;  // x y w h
     ClipParams clip;
     int point_size_output = -1;
-    AttrArena arena;
+    // Per vertex of the arrays: its fragment attribute vector (front colours).
+    std::vector<float> front_attrs;
+    AttrArena arena;  // attributes of clipped and flat-shaded vertices, for the whole draw
+    std::vector<BinnedPrim> prims;
+    TileBins bins;
 };
 
 FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
@@ -48,80 +53,97 @@ FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
     return v;
 }
 
-// The FS attribute vector of a (possibly clipped) vertex.
-float* fs_attrs(DrawContext& c, const float* vs_attrs, bool back) {
+// The FS attribute vector of a (possibly clipped) vertex. Unclipped vertices
+// with front colours share the one computed per vertex of the arrays.
+const float* fs_attrs(DrawContext& c, const ClipVertex& v, bool back) {
+    if (!back && v.source >= 0) return c.front_attrs.data() + size_t(v.source) * c.stage.attr_count();
     float* dst = c.arena.alloc(c.stage.attr_count());
-    c.stage.gather(vs_attrs, c.vs.offset, back, dst);
+    c.stage.gather(v.attrs, c.vs.offset, back, dst);
     return dst;
 }
 
 // Gives every vertex the provoking vertex's colours (glShadeModel(GL_FLAT)).
-void set_attrs(DrawContext& c, const std::vector<const float*>& vs_attrs, uint32_t provoking_id, bool back,
-               std::vector<FsVertex>& verts) {
-    const float* flat = c.gl.flat_shading ? fs_attrs(c, c.vertices[provoking_id].attrs, back) : nullptr;
-    for (size_t i = 0; i < verts.size(); ++i) {
-        float* attrs = fs_attrs(c, vs_attrs[i], back);
-        if (flat) c.stage.copy_colors(flat, attrs);
+void set_attrs(DrawContext& c, const ClipVertex* poly, size_t n, uint32_t provoking_id, bool back,
+               FsVertex* verts) {
+    if (!c.gl.flat_shading) {
+        for (size_t i = 0; i < n; ++i) verts[i].attrs = fs_attrs(c, poly[i], back);
+        return;
+    }
+    const float* flat = fs_attrs(c, c.vertices[provoking_id], back);
+    for (size_t i = 0; i < n; ++i) {
+        const float* own = fs_attrs(c, poly[i], back);
+        float* attrs = c.arena.alloc(c.stage.attr_count());
+        std::copy(own, own + c.stage.attr_count(), attrs);
+        c.stage.copy_colors(flat, attrs);
         verts[i].attrs = attrs;
     }
 }
 
-double signed_area(const std::vector<FsVertex>& poly) {
+double signed_area(const FsVertex* poly, size_t n) {
     double sum = 0;
-    for (size_t i = 0; i < poly.size(); ++i) {
+    for (size_t i = 0; i < n; ++i) {
         const glm::vec2& a = poly[i].win;
-        const glm::vec2& b = poly[(i + 1) % poly.size()].win;
+        const glm::vec2& b = poly[(i + 1) % n].win;
         sum += double(a.x) * b.y - double(b.x) * a.y;
     }
     return sum;
 }
 
-void rasterize_triangle(DrawContext& c, const FsPrimitive& prim) {
-    std::array<glm::vec2, 3> win{prim.v[0].win, prim.v[1].win, prim.v[2].win};
-    auto setup = setup_triangle(win, c.scissor);
-    if (!setup) return;
-    for_each_quad(*setup, c.scissor, [&](int x, int y, unsigned mask) {
-        std::array<glm::dvec3, 4> weights;
-        for (int i = 0; i < 4; ++i) weights[i] = barycentric(*setup, x + kQuadDx[i], y + kQuadDy[i]);
-        c.stage.add_quad(prim, x, y, mask, weights);
-    });
+void bin(DrawContext& c, BinnedPrim& p) {
+    c.bins.add(uint32_t(c.prims.size()), p.bounds);
+    c.prims.push_back(p);
 }
 
-void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    std::vector<ClipVertex> poly{c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
-    uint32_t codes[3] = {outcode(poly[0], c.clip), outcode(poly[1], c.clip), outcode(poly[2], c.clip)};
-    if (codes[0] & codes[1] & codes[2]) return;
-    if (codes[0] | codes[1] | codes[2]) clip_polygon(poly, c.clip, c.arena);
-    if (poly.size() < 3) return;
-    std::vector<FsVertex> verts;
-    for (const ClipVertex& v : poly) verts.push_back(to_window(c, v.pos));
-    double area = signed_area(verts);
+void add_triangle(DrawContext& c, const std::array<FsVertex, 3>& v, bool front) {
+    auto setup = setup_triangle({v[0].win, v[1].win, v[2].win}, c.scissor);
+    if (!setup) return;
+    BinnedPrim p;
+    p.fs.v = v;
+    p.fs.front = front;
+    p.tri = *setup;
+    p.bounds = setup->bbox;
+    set_triangle_planes(p.fs, p.tri);
+    bin(c, p);
+}
+
+// A convex polygon in the view volume: facing, culling, attributes, then a fan of triangles.
+void draw_polygon(DrawContext& c, const ClipVertex* poly, size_t n, uint32_t provoking_id) {
+    std::array<FsVertex, kMaxClipVertices> verts;
+    for (size_t i = 0; i < n; ++i) verts[i] = to_window(c, poly[i].pos);
+    double area = signed_area(verts.data(), n);
     if (!(area != 0.0)) return;  // degenerate or NaN
     bool front = (area > 0) == c.gl.front_ccw;
     if (c.gl.cull_face && front != c.gl.cull_back) return;
     bool back_colors = c.gl.vertex_program_two_side && !front;
-    std::vector<const float*> vs_attrs;
-    for (const ClipVertex& v : poly) vs_attrs.push_back(v.attrs);
-    set_attrs(c, vs_attrs, provoking_id, back_colors, verts);
-    for (size_t k = 1; k + 1 < verts.size(); ++k) {
-        FsPrimitive prim;
-        prim.v = {verts[0], verts[k], verts[k + 1]};
-        prim.front = front;
-        rasterize_triangle(c, prim);
-    }
+    set_attrs(c, poly, n, provoking_id, back_colors, verts.data());
+    for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, {verts[0], verts[k], verts[k + 1]}, front);
+}
+
+void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
+    const ClipVertex tri[3] = {c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
+    uint32_t codes[3] = {outcode(tri[0], c.clip), outcode(tri[1], c.clip), outcode(tri[2], c.clip)};
+    if (codes[0] & codes[1] & codes[2]) return;
+    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon(c, tri, 3, provoking_id);
+    ClipPolygon poly{tri[0], tri[1], tri[2]};
+    clip_polygon(poly, c.clip, c.arena);
+    if (poly.size() >= 3) draw_polygon(c, poly.begin(), poly.size(), provoking_id);
 }
 
 void draw_line(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    ClipVertex a = c.vertices[ids[0]], b = c.vertices[ids[1]];
-    uint32_t ca = outcode(a, c.clip), cb = outcode(b, c.clip);
+    ClipVertex ends[2] = {c.vertices[ids[0]], c.vertices[ids[1]]};
+    uint32_t ca = outcode(ends[0], c.clip), cb = outcode(ends[1], c.clip);
     if (ca & cb) return;
-    if ((ca | cb) && !clip_segment(a, b, c.clip, c.arena)) return;
-    std::vector<FsVertex> verts{to_window(c, a.pos), to_window(c, b.pos)};
-    set_attrs(c, {a.attrs, b.attrs}, provoking_id, false, verts);
-    FsPrimitive prim;
-    prim.v = {verts[0], verts[1], verts[1]};
-    prim.count = 2;
-    rasterize_line(c.stage, prim, c.scissor);
+    if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, c.arena)) return;
+    BinnedPrim p;
+    p.fs.count = 2;
+    p.fs.v[0] = to_window(c, ends[0].pos);
+    p.fs.v[1] = to_window(c, ends[1].pos);
+    set_attrs(c, ends, 2, provoking_id, false, p.fs.v.data());
+    set_line_planes(p.fs);
+    // A line's pixels lie within one pixel of its end points.
+    glm::vec2 lo = glm::min(p.fs.v[0].win, p.fs.v[1].win), hi = glm::max(p.fs.v[0].win, p.fs.v[1].win);
+    p.bounds = {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2};
+    bin(c, p);
 }
 
 void draw_point(DrawContext& c, uint32_t id) {
@@ -129,14 +151,16 @@ void draw_point(DrawContext& c, uint32_t id) {
     ClipParams frustum = c.clip;
     frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
     if (outcode(v, frustum)) return;
-    FsPrimitive prim;
-    prim.v[0] = to_window(c, v.pos);
-    prim.v[0].attrs = fs_attrs(c, v.attrs, false);
-    prim.count = 1;
-    prim.point_center = prim.v[0].win;
-    prim.point_size = c.gl.point_size;
-    if (c.point_size_output >= 0) prim.point_size = v.attrs[c.vs.offset[size_t(c.point_size_output)]];
-    rasterize_point(c.stage, prim, c.scissor);
+    BinnedPrim p;
+    p.fs.v[0] = to_window(c, v.pos);
+    p.fs.v[0].attrs = fs_attrs(c, v, false);
+    p.fs.count = 1;
+    p.fs.point_center = p.fs.v[0].win;
+    float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
+    p.fs.point_size = float(point_pixels(size));
+    set_point_planes(p.fs);
+    p.bounds = point_rect(p.fs);
+    bin(c, p);
 }
 
 std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out,
@@ -149,6 +173,7 @@ std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::Ver
         const float* attrs = out.vertex(i);
         ClipVertex& v = verts[i];
         v.attrs = attrs;
+        v.source = int(i);
         if (position >= 0) {
             const float* p = attrs + out.offset[size_t(position)];
             v.pos = {p[0], p[1], p[2], p[3]};
@@ -192,19 +217,23 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = program.state().ir.vertex;
-    FragmentStage stage(program, gl, fb, stats);
-    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, {}, {}, -1, {}};
-    c.scissor = scissor_rect(gl, fb, &c.viewport);
-    if (c.scissor.x0 >= c.scissor.x1 || c.scissor.y0 >= c.scissor.y1) return stats;
-    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(c.viewport[2], c.viewport[3]));
+    glm::vec4 viewport;
+    Rect scissor = scissor_rect(gl, fb, &viewport);
+    if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
+    FragmentStage stage(program, gl, fb);
+    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), scissor, viewport,
+                  {}, find_output(vs, "gl_PointSize"), {}, {}, {}, TileBins(scissor)};
+    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
     c.clip.user_planes = gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
     c.clip.attr_count = shaded->stride;
-    c.point_size_output = find_output(vs, "gl_PointSize");
+    c.front_attrs.resize(size_t(vertex_count) * stage.attr_count());
+    for (uint32_t v = 0; v < vertex_count; ++v)
+        stage.gather(shaded->vertex(v), shaded->offset, false, c.front_attrs.data() + size_t(v) * stage.attr_count());
     uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
     auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
-    for (const AssembledPrim& p : assemble(prim, stream)) {
-        if (stage.failed()) break;
-        c.arena.clear();
+    std::vector<AssembledPrim> assembled = assemble(prim, stream);
+    c.prims.reserve(assembled.size());
+    for (const AssembledPrim& p : assembled) {
         std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
         if (p.count == 3) {
             ++stats.triangles;
@@ -215,8 +244,13 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
             draw_point(c, ids[0]);
         }
     }
-    if (Status st = stage.finish(); !st) return st.error();
-    stats.raster_seconds = std::max(0.0, seconds_since(raster_start) - stats.fragment_seconds);
+    stats.raster_seconds = seconds_since(raster_start);
+    auto fragment_start = Clock::now();
+    TileResult tiles = c.bins.render(TileTarget{program, gl, fb, scissor}, c.prims, stage, program.exec.threads);
+    stats.fragment_seconds = seconds_since(fragment_start);
+    stats.fragments_shaded = tiles.fragments_shaded;
+    stats.fragments_written = tiles.fragments_written;
+    if (!tiles.status) return tiles.status.error();
     return stats;
 }
 
