@@ -234,7 +234,8 @@ void main() {
 
 TEST_CASE("lines and points across tile borders are identical with any thread count", "[raster][threads]") {
     Program p = compile(kColorVs, "#version 120\nvoid main() { gl_FragColor = vec4(gl_Color.rgb, gl_PointCoord.x); }");
-    Geometry g = random_geometry(5, 2000);
+    // Over 4096 vertices: the vertices are shaded on the workers too.
+    Geometry g = random_geometry(5, 6000);
     GLState gl;
     gl.depth_test = true;
     gl.depth_func = GLState::DepthFunc::Lequal;
@@ -267,5 +268,26 @@ void main() {
         if (threads == 1) first = stats.error().str();
         CHECK(stats.error().str() == first);
         CHECK(first.find("fs:5") != std::string::npos);
+    }
+}
+
+TEST_CASE("a vertex shader's loop-cap error is the same with any thread count", "[raster][threads]") {
+    Program p = compile(R"(
+void main() {
+    float x = 0.0;
+    while (x < 1.0) { x += gl_Vertex.x > 0.9 ? 0.0 : 0.5; }
+    gl_Position = gl_Vertex * x;
+})", "void main() { gl_FragColor = vec4(1.0); }");
+    p.exec.max_loop_iterations = 1000;
+    Geometry g = random_geometry(9, 9000);
+    std::string first;
+    for (unsigned threads : {1u, 2u, 3u, 7u, 64u}) {
+        p.exec.threads = threads;
+        Framebuffer fb(300, 200);
+        auto stats = draw(p, GLState{}, fb, Primitive::Points, {g.pos, g.color}, g.count);
+        REQUIRE_FALSE(stats.ok());
+        if (threads == 1) first = stats.error().str();
+        CHECK(stats.error().str() == first);
+        CHECK(first.find("vs:4") != std::string::npos);
     }
 }
