@@ -35,9 +35,11 @@ const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initi
 
 Plane to_plane(double a, double b, double c) { return {float(a), float(b), float(c)}; }
 
+// Whole registers are copied, a constant size: lanes past the batch are not
+// live, so their values do not matter.
 void store_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, const Lanes& v, int lanes) {
     if (kind == ir::Kind::F32) {
-        std::memcpy(in.lanes_f(r), v.data(), sizeof(float) * size_t(lanes));
+        std::memcpy(in.lanes_f(r), v.data(), sizeof v);
         return;
     }
     for (int lane = 0; lane < lanes; ++lane) exec::set_lane(in, kind, r, lane, v[size_t(lane)]);
@@ -45,7 +47,7 @@ void store_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, const Lanes& v, 
 
 void load_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes) {
     if (kind == ir::Kind::F32) {
-        std::memcpy(v.data(), in.lanes_f(r), sizeof(float) * size_t(lanes));
+        std::memcpy(v.data(), in.lanes_f(r), sizeof v);
         return;
     }
     for (int lane = 0; lane < lanes; ++lane) v[size_t(lane)] = exec::lane_as_float(in, kind, r, lane);

@@ -1,8 +1,6 @@
 // Colour and depth writes, shared by the fragment stage and the tests.
 // Inline: the fragment stage calls them per lane.
 #pragma once
-#include <cmath>
-
 #include "glslrun/glslrun.h"
 
 namespace glslrun::raster {
@@ -11,7 +9,10 @@ namespace glslrun::raster {
 inline float quantize_unorm8(float v) {
     if (!(v > 0.0f)) return 0.0f;  // also NaN
     if (v >= 1.0f) return 1.0f;
-    return std::nearbyint(v * 255.0f) / 255.0f;
+    // Adding 2^23 rounds to an integer, ties to even: nearbyint() without
+    // a library call, for the values 0..255 that can occur here.
+    constexpr float kRound = 8388608.0f;
+    return ((v * 255.0f + kRound) - kRound) / 255.0f;
 }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
