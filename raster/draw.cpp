@@ -37,7 +37,7 @@ struct DrawContext {
     // Per vertex of the arrays: its fragment attribute vector (front colours).
     std::vector<float> front_attrs;
     AttrArena arena;  // attributes of clipped and flat-shaded vertices, for the whole draw
-    std::vector<BinnedPrim> prims;
+    std::vector<FsPrimitive> prims;
     TileBins bins;
 };
 
@@ -89,21 +89,19 @@ double signed_area(const FsVertex* poly, size_t n) {
     return sum;
 }
 
-void bin(DrawContext& c, BinnedPrim& p) {
-    c.bins.add(uint32_t(c.prims.size()), p.bounds);
+void bin(DrawContext& c, const FsPrimitive& p, const Rect& bounds) {
+    c.bins.add(uint32_t(c.prims.size()), bounds);
     c.prims.push_back(p);
 }
 
 void add_triangle(DrawContext& c, const std::array<FsVertex, 3>& v, bool front) {
     auto setup = setup_triangle({v[0].win, v[1].win, v[2].win}, c.scissor);
     if (!setup) return;
-    BinnedPrim p;
-    p.fs.v = v;
-    p.fs.front = front;
-    p.tri = *setup;
-    p.bounds = setup->bbox;
-    set_triangle_planes(p.fs, p.tri);
-    bin(c, p);
+    FsPrimitive p;
+    p.v = v;
+    p.front = front;
+    set_triangle_planes(p, *setup);
+    bin(c, p, setup->bbox);
 }
 
 // A convex polygon in the view volume: facing, culling, attributes, then a fan of triangles.
@@ -134,16 +132,15 @@ void draw_line(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t prov
     uint32_t ca = outcode(ends[0], c.clip), cb = outcode(ends[1], c.clip);
     if (ca & cb) return;
     if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, c.arena)) return;
-    BinnedPrim p;
-    p.fs.count = 2;
-    p.fs.v[0] = to_window(c, ends[0].pos);
-    p.fs.v[1] = to_window(c, ends[1].pos);
-    set_attrs(c, ends, 2, provoking_id, false, p.fs.v.data());
-    set_line_planes(p.fs);
+    FsPrimitive p;
+    p.count = 2;
+    p.v[0] = to_window(c, ends[0].pos);
+    p.v[1] = to_window(c, ends[1].pos);
+    set_attrs(c, ends, 2, provoking_id, false, p.v.data());
+    set_line_planes(p);
     // A line's pixels lie within one pixel of its end points.
-    glm::vec2 lo = glm::min(p.fs.v[0].win, p.fs.v[1].win), hi = glm::max(p.fs.v[0].win, p.fs.v[1].win);
-    p.bounds = {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2};
-    bin(c, p);
+    glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
+    bin(c, p, {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2});
 }
 
 void draw_point(DrawContext& c, uint32_t id) {
@@ -151,16 +148,15 @@ void draw_point(DrawContext& c, uint32_t id) {
     ClipParams frustum = c.clip;
     frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
     if (outcode(v, frustum)) return;
-    BinnedPrim p;
-    p.fs.v[0] = to_window(c, v.pos);
-    p.fs.v[0].attrs = fs_attrs(c, v, false);
-    p.fs.count = 1;
-    p.fs.point_center = p.fs.v[0].win;
+    FsPrimitive p;
+    p.v[0] = to_window(c, v.pos);
+    p.v[0].attrs = fs_attrs(c, v, false);
+    p.count = 1;
+    p.point_center = p.v[0].win;
     float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
-    p.fs.point_size = float(point_pixels(size));
-    set_point_planes(p.fs);
-    p.bounds = point_rect(p.fs);
-    bin(c, p);
+    p.point_size = float(point_pixels(size));
+    set_point_planes(p);
+    bin(c, p, point_rect(p));
 }
 
 std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out,

@@ -7,12 +7,12 @@ namespace glslrun::raster {
 
 // RGBA8 storage: clamp to [0,1] and round to the nearest n/255 (NaN -> 0).
 inline float quantize_unorm8(float v) {
-    if (!(v > 0.0f)) return 0.0f;  // also NaN
-    if (v >= 1.0f) return 1.0f;
-    // Adding 2^23 rounds to an integer, ties to even: nearbyint() without
-    // a library call, for the values 0..255 that can occur here.
+    // Branch-free, so that loops over a batch vectorize. Adding 2^23 rounds
+    // to an integer, ties to even: nearbyint() without a library call.
     constexpr float kRound = 8388608.0f;
-    return ((v * 255.0f + kRound) - kRound) / 255.0f;
+    float c = v > 0.0f ? v : 0.0f;  // also NaN
+    c = c < 1.0f ? c : 1.0f;
+    return ((c * 255.0f + kRound) - kRound) / 255.0f;
 }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);

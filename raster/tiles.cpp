@@ -45,24 +45,27 @@ void TileBins::add(uint32_t prim, const Rect& bounds) {
             bins_[size_t(ty - cy0) * size_t(columns_) + size_t(tx - cx0)].push_back(prim);
 }
 
-void TileBins::render_tile(const TileTarget& target, const std::vector<BinnedPrim>& prims, size_t tile,
+void TileBins::render_tile(const TileTarget& target, const std::vector<FsPrimitive>& prims, size_t tile,
                            FragmentStage& stage) const {
     Rect clip = tile_rect(tile);
     for (uint32_t index : bins_[tile]) {
-        const BinnedPrim& p = prims[index];
-        if (p.fs.count == 3) {
-            for_each_quad(p.tri, clip, [&](int x, int y, unsigned mask) { stage.add_quad(p.fs, x, y, mask); });
-        } else if (p.fs.count == 2) {
-            rasterize_line(stage, p.fs, clip);
+        const FsPrimitive& p = prims[index];
+        if (p.count == 3) {
+            // Set up again rather than stored: it is cheap, and it halves the
+            // memory a draw of many small triangles writes and reads.
+            auto setup = setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor);
+            if (setup) for_each_quad(*setup, clip, [&](int x, int y, unsigned mask) { stage.add_quad(p, x, y, mask); });
+        } else if (p.count == 2) {
+            rasterize_line(stage, p, clip);
         } else {
-            rasterize_point(stage, p.fs, clip);
+            rasterize_point(stage, p, clip);
         }
         if (stage.error()) break;
     }
     stage.flush();
 }
 
-TileResult TileBins::render(const TileTarget& target, const std::vector<BinnedPrim>& prims, FragmentStage& stage,
+TileResult TileBins::render(const TileTarget& target, const std::vector<FsPrimitive>& prims, FragmentStage& stage,
                             unsigned threads) const {
     std::vector<size_t> tiles;  // the non-empty ones, in order
     for (size_t t = 0; t < bins_.size(); ++t)

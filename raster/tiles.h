@@ -15,13 +15,6 @@ namespace glslrun::raster {
 inline constexpr int kTileSize = 64;
 static_assert(kTileSize % kBlockSize == 0);
 
-// A primitive ready for rasterization.
-struct BinnedPrim {
-    FsPrimitive fs;
-    TriangleSetup tri;  // triangles only
-    Rect bounds;        // the pixels it may cover, within the scissor
-};
-
 struct TileTarget {
     const Program& program;
     const GLState& gl;
@@ -38,16 +31,17 @@ struct TileResult {
 class TileBins {
 public:
     explicit TileBins(const Rect& scissor);
+    // bounds: the pixels primitive `prim` may cover.
     void add(uint32_t prim, const Rect& bounds);
     // Renders every tile on up to `threads` threads (0: one per core); `stage`
     // serves the calling thread. A shader error is the one of the first
     // failing tile, so it does not depend on the thread count either.
-    TileResult render(const TileTarget& target, const std::vector<BinnedPrim>& prims, FragmentStage& stage,
+    TileResult render(const TileTarget& target, const std::vector<FsPrimitive>& prims, FragmentStage& stage,
                       unsigned threads) const;
 
 private:
     Rect tile_rect(size_t tile) const;
-    void render_tile(const TileTarget& target, const std::vector<BinnedPrim>& prims, size_t tile,
+    void render_tile(const TileTarget& target, const std::vector<FsPrimitive>& prims, size_t tile,
                      FragmentStage& stage) const;
 
     Rect scissor_;
