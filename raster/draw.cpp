@@ -30,6 +30,7 @@ struct DrawContext {
     const FragmentStage& stage;
     const exec::VertexOutputs& vs;
     std::vector<ClipVertex> vertices;  // per vertex of the arrays
+    std::vector<uint32_t> outcodes;    // per vertex of the arrays, against `clip`
     Rect scissor;
     glm::vec4 viewport;  // x y w h
     ClipParams clip;
@@ -119,7 +120,7 @@ void draw_polygon(DrawContext& c, const ClipVertex* poly, size_t n, uint32_t pro
 
 void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
     const ClipVertex tri[3] = {c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
-    uint32_t codes[3] = {outcode(tri[0], c.clip), outcode(tri[1], c.clip), outcode(tri[2], c.clip)};
+    uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
     if (codes[0] & codes[1] & codes[2]) return;
     if (!(codes[0] | codes[1] | codes[2])) return draw_polygon(c, tri, 3, provoking_id);
     ClipPolygon poly{tri[0], tri[1], tri[2]};
@@ -129,7 +130,7 @@ void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t 
 
 void draw_line(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
     ClipVertex ends[2] = {c.vertices[ids[0]], c.vertices[ids[1]]};
-    uint32_t ca = outcode(ends[0], c.clip), cb = outcode(ends[1], c.clip);
+    uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
     if (ca & cb) return;
     if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, c.arena)) return;
     FsPrimitive p;
@@ -217,11 +218,13 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     Rect scissor = scissor_rect(gl, fb, &viewport);
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
-    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), scissor, viewport,
+    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, scissor, viewport,
                   {}, find_output(vs, "gl_PointSize"), {}, {}, {}, TileBins(scissor)};
     c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
     c.clip.user_planes = gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
     c.clip.attr_count = shaded->stride;
+    c.outcodes.reserve(vertex_count);
+    for (const ClipVertex& v : c.vertices) c.outcodes.push_back(outcode(v, c.clip));
     c.front_attrs.resize(size_t(vertex_count) * stage.attr_count());
     for (uint32_t v = 0; v < vertex_count; ++v)
         stage.gather(shaded->vertex(v), shaded->offset, false, c.front_attrs.data() + size_t(v) * stage.attr_count());
