@@ -39,7 +39,12 @@ public:
     ClipPolygon(std::initializer_list<ClipVertex> vs) {
         for (const ClipVertex& v : vs) push_back(v);
     }
-    void push_back(const ClipVertex& v) { v_[size_++] = v; }
+    // Rounding can make a clipped polygon very slightly non-convex, so that a
+    // plane adds more than one vertex; extra vertices are then dropped rather
+    // than written out of bounds.
+    void push_back(const ClipVertex& v) {
+        if (size_ < v_.size()) v_[size_++] = v;
+    }
     void clear() { size_ = 0; }
     size_t size() const { return size_; }
     ClipVertex& operator[](size_t i) { return v_[i]; }

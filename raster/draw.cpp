@@ -191,6 +191,43 @@ Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport)
     return Rect{std::max(vx, 0), std::max(vy, 0), std::min(vx + vw, fb.width), std::min(vy + vh, fb.height)};
 }
 
+// Clip parameters, then per vertex of the arrays its outcode and its
+// fragment attribute vector.
+void prepare(DrawContext& c, const glm::vec4& viewport, uint32_t vertex_count) {
+    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
+    c.clip.user_planes = c.gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
+    c.clip.attr_count = c.vs.stride;
+    c.outcodes.reserve(vertex_count);
+    for (const ClipVertex& v : c.vertices) c.outcodes.push_back(outcode(v, c.clip));
+    uint32_t n = c.stage.attr_count();
+    c.front_attrs.resize(size_t(vertex_count) * n);
+    for (uint32_t v = 0; v < vertex_count; ++v)
+        c.stage.gather(c.vs.vertex(v), c.vs.offset, false, c.front_attrs.data() + size_t(v) * n);
+}
+
+// Assembles, clips and sets up every primitive, binning it; returns the
+// number of triangles assembled.
+uint64_t set_up_primitives(DrawContext& c, Primitive prim, uint32_t vertex_count,
+                           std::span<const uint32_t> indices) {
+    uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
+    auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
+    std::vector<AssembledPrim> assembled = assemble(prim, stream);
+    c.prims.reserve(assembled.size());
+    uint64_t triangles = 0;
+    for (const AssembledPrim& p : assembled) {
+        std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
+        if (p.count == 3) {
+            ++triangles;
+            draw_triangle(c, ids, id(p.provoking));
+        } else if (p.count == 2) {
+            draw_line(c, ids, id(p.provoking));
+        } else {
+            draw_point(c, ids[0]);
+        }
+    }
+    return triangles;
+}
+
 }  // namespace
 }  // namespace raster
 
@@ -220,29 +257,8 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     FragmentStage stage(program, gl, fb);
     DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, scissor, viewport,
                   {}, find_output(vs, "gl_PointSize"), {}, {}, {}, TileBins(scissor)};
-    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
-    c.clip.user_planes = gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
-    c.clip.attr_count = shaded->stride;
-    c.outcodes.reserve(vertex_count);
-    for (const ClipVertex& v : c.vertices) c.outcodes.push_back(outcode(v, c.clip));
-    c.front_attrs.resize(size_t(vertex_count) * stage.attr_count());
-    for (uint32_t v = 0; v < vertex_count; ++v)
-        stage.gather(shaded->vertex(v), shaded->offset, false, c.front_attrs.data() + size_t(v) * stage.attr_count());
-    uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
-    auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
-    std::vector<AssembledPrim> assembled = assemble(prim, stream);
-    c.prims.reserve(assembled.size());
-    for (const AssembledPrim& p : assembled) {
-        std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
-        if (p.count == 3) {
-            ++stats.triangles;
-            draw_triangle(c, ids, id(p.provoking));
-        } else if (p.count == 2) {
-            draw_line(c, ids, id(p.provoking));
-        } else {
-            draw_point(c, ids[0]);
-        }
-    }
+    prepare(c, viewport, vertex_count);
+    stats.triangles = set_up_primitives(c, prim, vertex_count, indices);
     stats.raster_seconds = seconds_since(raster_start);
     auto fragment_start = Clock::now();
     TileResult tiles = c.bins.render(TileTarget{program, gl, fb, scissor}, c.prims, stage, program.exec.threads);
