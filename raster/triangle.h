@@ -62,12 +62,6 @@ inline bool covers(const TriangleSetup& t, const std::array<int64_t, 3>& e) {
     return s * e[0] + t.bias[0] >= 0 && s * e[1] + t.bias[1] >= 0 && s * e[2] + t.bias[2] >= 0;
 }
 
-// Screen-space (linear) barycentric weights at the centre of pixel (x, y).
-inline glm::dvec3 barycentric(const TriangleSetup& t, int x, int y) {
-    auto e = edge_values(t, x, y);
-    return {double(e[0]) * t.inv_area2, double(e[1]) * t.inv_area2, double(e[2]) * t.inv_area2};
-}
-
 enum class BlockCover { Outside, Partial, Inside };
 
 // Edge functions are linear, so a rectangle is inside (outside) an edge when
