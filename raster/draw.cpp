@@ -14,6 +14,7 @@
 #include "raster/tiles.h"
 #include "raster/triangle.h"
 #include "runtime/execute.h"
+#include "runtime/parallel.h"
 
 namespace glslrun {
 namespace raster {
@@ -37,9 +38,14 @@ struct DrawContext {
     int point_size_output = -1;
     // Per vertex of the arrays: its fragment attribute vector (front colours).
     std::vector<float> front_attrs;
-    AttrArena arena;  // attributes of clipped and flat-shaded vertices, for the whole draw
+};
+
+// What setting up one job of primitives produces, in submission order.
+struct SetupOut {
+    AttrArena arena;  // attributes of clipped and flat-shaded vertices, until the draw ends
     std::vector<FsPrimitive> prims;
-    TileBins bins;
+    std::vector<Rect> bounds;  // per primitive: the pixels it may cover
+    uint64_t triangles = 0;
 };
 
 FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
@@ -56,24 +62,24 @@ FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
 
 // The FS attribute vector of a (possibly clipped) vertex. Unclipped vertices
 // with front colours share the one computed per vertex of the arrays.
-const float* fs_attrs(DrawContext& c, const ClipVertex& v, bool back) {
+const float* fs_attrs(const DrawContext& c, SetupOut& out, const ClipVertex& v, bool back) {
     if (!back && v.source >= 0) return c.front_attrs.data() + size_t(v.source) * c.stage.attr_count();
-    float* dst = c.arena.alloc(c.stage.attr_count());
+    float* dst = out.arena.alloc(c.stage.attr_count());
     c.stage.gather(v.attrs, c.vs.offset, back, dst);
     return dst;
 }
 
 // Gives every vertex the provoking vertex's colours (glShadeModel(GL_FLAT)).
-void set_attrs(DrawContext& c, const ClipVertex* poly, size_t n, uint32_t provoking_id, bool back,
+void set_attrs(const DrawContext& c, SetupOut& out, const ClipVertex* poly, size_t n, uint32_t provoking_id, bool back,
                FsVertex* verts) {
     if (!c.gl.flat_shading) {
-        for (size_t i = 0; i < n; ++i) verts[i].attrs = fs_attrs(c, poly[i], back);
+        for (size_t i = 0; i < n; ++i) verts[i].attrs = fs_attrs(c, out, poly[i], back);
         return;
     }
-    const float* flat = fs_attrs(c, c.vertices[provoking_id], back);
+    const float* flat = fs_attrs(c, out, c.vertices[provoking_id], back);
     for (size_t i = 0; i < n; ++i) {
-        const float* own = fs_attrs(c, poly[i], back);
-        float* attrs = c.arena.alloc(c.stage.attr_count());
+        const float* own = fs_attrs(c, out, poly[i], back);
+        float* attrs = out.arena.alloc(c.stage.attr_count());
         std::copy(own, own + c.stage.attr_count(), attrs);
         c.stage.copy_colors(flat, attrs);
         verts[i].attrs = attrs;
@@ -90,23 +96,23 @@ double signed_area(const FsVertex* poly, size_t n) {
     return sum;
 }
 
-void bin(DrawContext& c, const FsPrimitive& p, const Rect& bounds) {
-    c.bins.add(uint32_t(c.prims.size()), bounds);
-    c.prims.push_back(p);
+void bin(SetupOut& out, const FsPrimitive& p, const Rect& bounds) {
+    out.prims.push_back(p);
+    out.bounds.push_back(bounds);
 }
 
-void add_triangle(DrawContext& c, const std::array<FsVertex, 3>& v, bool front) {
+void add_triangle(const DrawContext& c, SetupOut& out, const std::array<FsVertex, 3>& v, bool front) {
     auto setup = setup_triangle({v[0].win, v[1].win, v[2].win}, c.scissor);
     if (!setup) return;
     FsPrimitive p;
     p.v = v;
     p.front = front;
     set_triangle_planes(p, *setup);
-    bin(c, p, setup->bbox);
+    bin(out, p, setup->bbox);
 }
 
 // A convex polygon in the view volume: facing, culling, attributes, then a fan of triangles.
-void draw_polygon(DrawContext& c, const ClipVertex* poly, size_t n, uint32_t provoking_id) {
+void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* poly, size_t n, uint32_t provoking_id) {
     std::array<FsVertex, kMaxClipVertices> verts;
     for (size_t i = 0; i < n; ++i) verts[i] = to_window(c, poly[i].pos);
     double area = signed_area(verts.data(), n);
@@ -114,50 +120,50 @@ void draw_polygon(DrawContext& c, const ClipVertex* poly, size_t n, uint32_t pro
     bool front = (area > 0) == c.gl.front_ccw;
     if (c.gl.cull_face && front != c.gl.cull_back) return;
     bool back_colors = c.gl.vertex_program_two_side && !front;
-    set_attrs(c, poly, n, provoking_id, back_colors, verts.data());
-    for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, {verts[0], verts[k], verts[k + 1]}, front);
+    set_attrs(c, out, poly, n, provoking_id, back_colors, verts.data());
+    for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, out, {verts[0], verts[k], verts[k + 1]}, front);
 }
 
-void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
+void draw_triangle(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
     const ClipVertex tri[3] = {c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
     uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
     if (codes[0] & codes[1] & codes[2]) return;
-    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon(c, tri, 3, provoking_id);
+    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon(c, out, tri, 3, provoking_id);
     ClipPolygon poly{tri[0], tri[1], tri[2]};
-    clip_polygon(poly, c.clip, c.arena);
-    if (poly.size() >= 3) draw_polygon(c, poly.begin(), poly.size(), provoking_id);
+    clip_polygon(poly, c.clip, out.arena);
+    if (poly.size() >= 3) draw_polygon(c, out, poly.begin(), poly.size(), provoking_id);
 }
 
-void draw_line(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
+void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
     ClipVertex ends[2] = {c.vertices[ids[0]], c.vertices[ids[1]]};
     uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
     if (ca & cb) return;
-    if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, c.arena)) return;
+    if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, out.arena)) return;
     FsPrimitive p;
     p.count = 2;
     p.v[0] = to_window(c, ends[0].pos);
     p.v[1] = to_window(c, ends[1].pos);
-    set_attrs(c, ends, 2, provoking_id, false, p.v.data());
+    set_attrs(c, out, ends, 2, provoking_id, false, p.v.data());
     set_line_planes(p);
     // A line's pixels lie within one pixel of its end points.
     glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
-    bin(c, p, {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2});
+    bin(out, p, {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2});
 }
 
-void draw_point(DrawContext& c, uint32_t id) {
+void draw_point(const DrawContext& c, SetupOut& out, uint32_t id) {
     const ClipVertex& v = c.vertices[id];
     ClipParams frustum = c.clip;
     frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
     if (outcode(v, frustum)) return;
     FsPrimitive p;
     p.v[0] = to_window(c, v.pos);
-    p.v[0].attrs = fs_attrs(c, v, false);
+    p.v[0].attrs = fs_attrs(c, out, v, false);
     p.count = 1;
     p.point_center = p.v[0].win;
     float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
     p.point_size = float(point_pixels(size));
     set_point_planes(p);
-    bin(c, p, point_rect(p));
+    bin(out, p, point_rect(p));
 }
 
 std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out,
@@ -205,27 +211,61 @@ void prepare(DrawContext& c, const glm::vec4& viewport, uint32_t vertex_count) {
         c.stage.gather(c.vs.vertex(v), c.vs.offset, false, c.front_attrs.data() + size_t(v) * n);
 }
 
-// Assembles, clips and sets up every primitive, binning it; returns the
-// number of triangles assembled.
-uint64_t set_up_primitives(DrawContext& c, Primitive prim, uint32_t vertex_count,
-                           std::span<const uint32_t> indices) {
-    uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
+// Primitives per setup job, and the draw size below which setup stays on
+// the calling thread.
+constexpr size_t kSetupJob = 8192;
+constexpr size_t kParallelSetup = 2 * kSetupJob;
+
+void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<AssembledPrim>& assembled, size_t begin,
+                  size_t end, std::span<const uint32_t> indices) {
     auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
-    std::vector<AssembledPrim> assembled = assemble(prim, stream);
-    c.prims.reserve(assembled.size());
-    uint64_t triangles = 0;
-    for (const AssembledPrim& p : assembled) {
+    out.prims.reserve(end - begin);
+    out.bounds.reserve(end - begin);
+    for (size_t i = begin; i < end; ++i) {
+        const AssembledPrim& p = assembled[i];
         std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
         if (p.count == 3) {
-            ++triangles;
-            draw_triangle(c, ids, id(p.provoking));
+            ++out.triangles;
+            draw_triangle(c, out, ids, id(p.provoking));
         } else if (p.count == 2) {
-            draw_line(c, ids, id(p.provoking));
+            draw_line(c, out, ids, id(p.provoking));
         } else {
-            draw_point(c, ids[0]);
+            draw_point(c, out, ids[0]);
         }
     }
-    return triangles;
+}
+
+// Assembles, clips and sets up every primitive, in jobs on the workers when
+// there are many; `outs` keeps the jobs' attribute storage.
+void set_up_primitives(const DrawContext& c, Primitive prim, uint32_t vertex_count,
+                       std::span<const uint32_t> indices, unsigned threads, std::vector<SetupOut>& outs) {
+    uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
+    std::vector<AssembledPrim> assembled = assemble(prim, stream);
+    size_t jobs = std::max<size_t>(1, (assembled.size() + kSetupJob - 1) / kSetupJob);
+    outs = std::vector<SetupOut>(jobs);
+    unsigned workers = assembled.size() < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
+    rt::JobQueue queue(jobs);
+    rt::run_workers(workers, [&](unsigned) {
+        for (size_t job; queue.next(&job);)
+            set_up_range(c, outs[job], assembled, job * kSetupJob, std::min(assembled.size(), (job + 1) * kSetupJob),
+                         indices);
+    });
+}
+
+// Bins the jobs' primitives in submission order.
+std::vector<FsPrimitive> bin_primitives(std::vector<SetupOut>& outs, TileBins& bins, uint64_t* triangles) {
+    std::vector<FsPrimitive> prims;
+    size_t total = 0;
+    *triangles = 0;
+    for (const SetupOut& out : outs) total += out.prims.size(), *triangles += out.triangles;
+    if (outs.size() == 1) prims = std::move(outs[0].prims);
+    prims.reserve(total);
+    for (const SetupOut& out : outs)
+        if (outs.size() > 1) prims.insert(prims.end(), out.prims.begin(), out.prims.end());
+    uint32_t index = 0;
+    for (const SetupOut& out : outs)
+        for (const Rect& r : out.bounds) bins.add(index++, r);
+    return prims;
 }
 
 }  // namespace
@@ -256,12 +296,15 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
     DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, scissor, viewport,
-                  {}, find_output(vs, "gl_PointSize"), {}, {}, {}, TileBins(scissor)};
+                  {}, find_output(vs, "gl_PointSize"), {}};
     prepare(c, viewport, vertex_count);
-    stats.triangles = set_up_primitives(c, prim, vertex_count, indices);
+    std::vector<SetupOut> outs;
+    set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, outs);
+    TileBins bins(scissor);
+    std::vector<FsPrimitive> prims = bin_primitives(outs, bins, &stats.triangles);
     stats.raster_seconds = seconds_since(raster_start);
     auto fragment_start = Clock::now();
-    TileResult tiles = c.bins.render(TileTarget{program, gl, fb, scissor}, c.prims, stage, program.exec.threads);
+    TileResult tiles = bins.render(TileTarget{program, gl, fb, scissor}, prims, stage, program.exec.threads);
     stats.fragment_seconds = seconds_since(fragment_start);
     stats.fragments_shaded = tiles.fragments_shaded;
     stats.fragments_written = tiles.fragments_written;

@@ -109,6 +109,23 @@ Geometry random_geometry(unsigned seed, uint32_t vertices) {
     return g;
 }
 
+// Many small triangles, some crossing the near or far plane (clipped).
+Geometry small_triangles(unsigned seed, uint32_t triangles) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> centre(-1.1f, 1.1f), offset(-0.06f, 0.06f), depth(-1.3f, 1.3f),
+        unit(0.0f, 1.0f);
+    Geometry g;
+    for (uint32_t t = 0; t < triangles; ++t) {
+        float cx = centre(rng), cy = centre(rng), cz = depth(rng);
+        for (int v = 0; v < 3; ++v) {
+            g.pos.data.insert(g.pos.data.end(), {cx + offset(rng), cy + offset(rng), cz + 4 * offset(rng), 1.0f});
+            g.color.data.insert(g.color.data.end(), {unit(rng), unit(rng), unit(rng), 1.0f});
+        }
+    }
+    g.count = triangles * 3;
+    return g;
+}
+
 // Draws g once per pass (program and state) into one frame.
 struct Pass {
     Program* program;
@@ -204,6 +221,23 @@ TEST_CASE("a later triangle at equal depth wins with GL_LEQUAL, on every tile", 
                 INFO("threads " << threads << " pixel " << x << "," << y);
                 REQUIRE(fb.pixel(x, y) == glm::vec4(0, 1, 0, 1));
             }
+    }
+}
+
+TEST_CASE("large draws set up primitives on the workers, with identical results", "[raster][threads]") {
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    Geometry g = small_triangles(13, 40000);  // several setup jobs
+    GLState gl;
+    gl.depth_test = true;
+    for (bool flat : {false, true}) {
+        gl.flat_shading = flat;  // attribute vectors made per primitive
+        Frame one = draw_geometry(p, g, Primitive::Triangles, 1, gl);
+        CHECK(one.stats.triangles == 40000u);
+        CHECK(distinct_colors(one.fb) > 20u);
+        for (unsigned threads : kThreadCounts) {
+            INFO("flat " << flat << ", threads " << threads);
+            check_same(one, draw_geometry(p, g, Primitive::Triangles, threads, gl));
+        }
     }
 }
 
