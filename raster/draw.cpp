@@ -241,13 +241,17 @@ void set_up_primitives(const DrawContext& c, Primitive prim, uint32_t vertex_cou
                        std::span<const uint32_t> indices, unsigned threads, std::vector<SetupOut>& outs) {
     uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
     std::vector<AssembledPrim> assembled = assemble(prim, stream);
-    size_t jobs = std::max<size_t>(1, (assembled.size() + kSetupJob - 1) / kSetupJob);
-    outs = std::vector<SetupOut>(jobs);
+    size_t jobs = (assembled.size() + kSetupJob - 1) / kSetupJob;
     unsigned workers = assembled.size() < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
+    // One thread: one job, whose primitives need no copy. A primitive's setup
+    // does not depend on its job, so neither do the results.
+    size_t job_size = workers == 1 ? std::max<size_t>(assembled.size(), 1) : kSetupJob;
+    jobs = std::max<size_t>(1, (assembled.size() + job_size - 1) / job_size);
+    outs = std::vector<SetupOut>(jobs);
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
         for (size_t job; queue.next(&job);)
-            set_up_range(c, outs[job], assembled, job * kSetupJob, std::min(assembled.size(), (job + 1) * kSetupJob),
+            set_up_range(c, outs[job], assembled, job * job_size, std::min(assembled.size(), (job + 1) * job_size),
                          indices);
     });
 }
