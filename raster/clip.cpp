@@ -1,10 +1,22 @@
 #include "raster/clip.h"
 
+#include <algorithm>
+
 namespace glslrun::raster {
 
-namespace {
+float* AttrArena::alloc(size_t n) {
+    while (block_ < blocks_.size() && used_ + n > blocks_[block_].size) ++block_, used_ = 0;
+    if (block_ == blocks_.size()) {
+        size_t size = std::max(n, kBlockFloats);
+        blocks_.push_back({std::make_unique<float[]>(size), size});
+        used_ = 0;
+    }
+    float* p = blocks_[block_].data.get() + used_;
+    used_ += n;
+    return p;
+}
 
-constexpr int kFrustumPlanes = 6;
+namespace {
 
 float plane_distance(const ClipVertex& v, int plane, float guard) {
     const glm::vec4& p = v.pos;
@@ -47,8 +59,8 @@ uint32_t outcode(const ClipVertex& v, const ClipParams& params) {
     return code;
 }
 
-void clip_polygon(std::vector<ClipVertex>& poly, const ClipParams& params, AttrArena& arena) {
-    std::vector<ClipVertex> next;
+void clip_polygon(ClipPolygon& poly, const ClipParams& params, AttrArena& arena) {
+    ClipPolygon next;
     for (int plane = 0; plane < kFrustumPlanes + kMaxUserPlanes && poly.size() >= 3; ++plane) {
         if (!plane_active(plane, params)) continue;
         next.clear();
@@ -65,7 +77,7 @@ void clip_polygon(std::vector<ClipVertex>& poly, const ClipParams& params, AttrA
                 next.push_back(lerp_vertex(in, out, d_in / (d_in - d_out), params, arena));
             }
         }
-        poly.swap(next);
+        poly = next;
     }
 }
 

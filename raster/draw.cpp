@@ -1,6 +1,6 @@
 // draw(): vertex shading, primitive assembly, clipping, the viewport
-// transform, facing and culling, then triangles/lines/points into the
-// fragment stage.
+// transform, facing, culling and triangle setup, binning into tiles, then the
+// tiles (raster/tiles.h) on the worker threads.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,8 +11,10 @@
 #include "raster/clip.h"
 #include "raster/fragments.h"
 #include "raster/points_lines.h"
+#include "raster/tiles.h"
 #include "raster/triangle.h"
 #include "runtime/execute.h"
+#include "runtime/parallel.h"
 
 namespace glslrun {
 namespace raster {
@@ -26,14 +28,24 @@ int find_output(const ir::Shader& vs, const char* name) {
 
 struct DrawContext {
     const GLState& gl;
-    FragmentStage& stage;
+    const FragmentStage& stage;
     const exec::VertexOutputs& vs;
     std::vector<ClipVertex> vertices;  // per vertex of the arrays
+    std::vector<uint32_t> outcodes;    // per vertex of the arrays, against `clip`
     Rect scissor;
     glm::vec4 viewport;  // x y w h
     ClipParams clip;
     int point_size_output = -1;
-    AttrArena arena;
+    // Per vertex of the arrays: its fragment attribute vector (front colours).
+    std::vector<float> front_attrs;
+};
+
+// What setting up one job of primitives produces, in submission order.
+struct SetupOut {
+    AttrArena arena;  // attributes of clipped and flat-shaded vertices, until the draw ends
+    std::vector<FsPrimitive> prims;
+    std::vector<Rect> bounds;  // per primitive: the pixels it may cover
+    uint64_t triangles = 0;
 };
 
 FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
@@ -48,95 +60,110 @@ FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
     return v;
 }
 
-// The FS attribute vector of a (possibly clipped) vertex.
-float* fs_attrs(DrawContext& c, const float* vs_attrs, bool back) {
-    float* dst = c.arena.alloc(c.stage.attr_count());
-    c.stage.gather(vs_attrs, c.vs.offset, back, dst);
+// The FS attribute vector of a (possibly clipped) vertex. Unclipped vertices
+// with front colours share the one computed per vertex of the arrays.
+const float* fs_attrs(const DrawContext& c, SetupOut& out, const ClipVertex& v, bool back) {
+    if (!back && v.source >= 0) return c.front_attrs.data() + size_t(v.source) * c.stage.attr_count();
+    float* dst = out.arena.alloc(c.stage.attr_count());
+    c.stage.gather(v.attrs, c.vs.offset, back, dst);
     return dst;
 }
 
 // Gives every vertex the provoking vertex's colours (glShadeModel(GL_FLAT)).
-void set_attrs(DrawContext& c, const std::vector<const float*>& vs_attrs, uint32_t provoking_id, bool back,
-               std::vector<FsVertex>& verts) {
-    const float* flat = c.gl.flat_shading ? fs_attrs(c, c.vertices[provoking_id].attrs, back) : nullptr;
-    for (size_t i = 0; i < verts.size(); ++i) {
-        float* attrs = fs_attrs(c, vs_attrs[i], back);
-        if (flat) c.stage.copy_colors(flat, attrs);
+void set_attrs(const DrawContext& c, SetupOut& out, const ClipVertex* poly, size_t n, uint32_t provoking_id, bool back,
+               FsVertex* verts) {
+    if (!c.gl.flat_shading) {
+        for (size_t i = 0; i < n; ++i) verts[i].attrs = fs_attrs(c, out, poly[i], back);
+        return;
+    }
+    const float* flat = fs_attrs(c, out, c.vertices[provoking_id], back);
+    for (size_t i = 0; i < n; ++i) {
+        const float* own = fs_attrs(c, out, poly[i], back);
+        float* attrs = out.arena.alloc(c.stage.attr_count());
+        std::copy(own, own + c.stage.attr_count(), attrs);
+        c.stage.copy_colors(flat, attrs);
         verts[i].attrs = attrs;
     }
 }
 
-double signed_area(const std::vector<FsVertex>& poly) {
+double signed_area(const FsVertex* poly, size_t n) {
     double sum = 0;
-    for (size_t i = 0; i < poly.size(); ++i) {
+    for (size_t i = 0; i < n; ++i) {
         const glm::vec2& a = poly[i].win;
-        const glm::vec2& b = poly[(i + 1) % poly.size()].win;
+        const glm::vec2& b = poly[(i + 1) % n].win;
         sum += double(a.x) * b.y - double(b.x) * a.y;
     }
     return sum;
 }
 
-void rasterize_triangle(DrawContext& c, const FsPrimitive& prim) {
-    std::array<glm::vec2, 3> win{prim.v[0].win, prim.v[1].win, prim.v[2].win};
-    auto setup = setup_triangle(win, c.scissor);
-    if (!setup) return;
-    for_each_quad(*setup, c.scissor, [&](int x, int y, unsigned mask) {
-        std::array<glm::dvec3, 4> weights;
-        for (int i = 0; i < 4; ++i) weights[i] = barycentric(*setup, x + kQuadDx[i], y + kQuadDy[i]);
-        c.stage.add_quad(prim, x, y, mask, weights);
-    });
+void bin(SetupOut& out, const FsPrimitive& p, const Rect& bounds) {
+    out.prims.push_back(p);
+    out.bounds.push_back(bounds);
 }
 
-void draw_triangle(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    std::vector<ClipVertex> poly{c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
-    uint32_t codes[3] = {outcode(poly[0], c.clip), outcode(poly[1], c.clip), outcode(poly[2], c.clip)};
-    if (codes[0] & codes[1] & codes[2]) return;
-    if (codes[0] | codes[1] | codes[2]) clip_polygon(poly, c.clip, c.arena);
-    if (poly.size() < 3) return;
-    std::vector<FsVertex> verts;
-    for (const ClipVertex& v : poly) verts.push_back(to_window(c, v.pos));
-    double area = signed_area(verts);
+void add_triangle(const DrawContext& c, SetupOut& out, const std::array<FsVertex, 3>& v, bool front) {
+    auto setup = setup_triangle({v[0].win, v[1].win, v[2].win}, c.scissor);
+    if (!setup) return;
+    FsPrimitive p;
+    p.v = v;
+    p.front = front;
+    set_triangle_planes(p, *setup);
+    bin(out, p, setup->bbox);
+}
+
+// A convex polygon in the view volume: facing, culling, attributes, then a fan of triangles.
+void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* poly, size_t n, uint32_t provoking_id) {
+    std::array<FsVertex, kMaxClipVertices> verts;
+    for (size_t i = 0; i < n; ++i) verts[i] = to_window(c, poly[i].pos);
+    double area = signed_area(verts.data(), n);
     if (!(area != 0.0)) return;  // degenerate or NaN
     bool front = (area > 0) == c.gl.front_ccw;
     if (c.gl.cull_face && front != c.gl.cull_back) return;
     bool back_colors = c.gl.vertex_program_two_side && !front;
-    std::vector<const float*> vs_attrs;
-    for (const ClipVertex& v : poly) vs_attrs.push_back(v.attrs);
-    set_attrs(c, vs_attrs, provoking_id, back_colors, verts);
-    for (size_t k = 1; k + 1 < verts.size(); ++k) {
-        FsPrimitive prim;
-        prim.v = {verts[0], verts[k], verts[k + 1]};
-        prim.front = front;
-        rasterize_triangle(c, prim);
-    }
+    set_attrs(c, out, poly, n, provoking_id, back_colors, verts.data());
+    for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, out, {verts[0], verts[k], verts[k + 1]}, front);
 }
 
-void draw_line(DrawContext& c, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    ClipVertex a = c.vertices[ids[0]], b = c.vertices[ids[1]];
-    uint32_t ca = outcode(a, c.clip), cb = outcode(b, c.clip);
+void draw_triangle(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
+    const ClipVertex tri[3] = {c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
+    uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
+    if (codes[0] & codes[1] & codes[2]) return;
+    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon(c, out, tri, 3, provoking_id);
+    ClipPolygon poly{tri[0], tri[1], tri[2]};
+    clip_polygon(poly, c.clip, out.arena);
+    if (poly.size() >= 3) draw_polygon(c, out, poly.begin(), poly.size(), provoking_id);
+}
+
+void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
+    ClipVertex ends[2] = {c.vertices[ids[0]], c.vertices[ids[1]]};
+    uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
     if (ca & cb) return;
-    if ((ca | cb) && !clip_segment(a, b, c.clip, c.arena)) return;
-    std::vector<FsVertex> verts{to_window(c, a.pos), to_window(c, b.pos)};
-    set_attrs(c, {a.attrs, b.attrs}, provoking_id, false, verts);
-    FsPrimitive prim;
-    prim.v = {verts[0], verts[1], verts[1]};
-    prim.count = 2;
-    rasterize_line(c.stage, prim, c.scissor);
+    if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, out.arena)) return;
+    FsPrimitive p;
+    p.count = 2;
+    p.v[0] = to_window(c, ends[0].pos);
+    p.v[1] = to_window(c, ends[1].pos);
+    set_attrs(c, out, ends, 2, provoking_id, false, p.v.data());
+    set_line_planes(p);
+    // A line's pixels lie within one pixel of its end points.
+    glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
+    bin(out, p, {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2});
 }
 
-void draw_point(DrawContext& c, uint32_t id) {
+void draw_point(const DrawContext& c, SetupOut& out, uint32_t id) {
     const ClipVertex& v = c.vertices[id];
     ClipParams frustum = c.clip;
     frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
     if (outcode(v, frustum)) return;
-    FsPrimitive prim;
-    prim.v[0] = to_window(c, v.pos);
-    prim.v[0].attrs = fs_attrs(c, v.attrs, false);
-    prim.count = 1;
-    prim.point_center = prim.v[0].win;
-    prim.point_size = c.gl.point_size;
-    if (c.point_size_output >= 0) prim.point_size = v.attrs[c.vs.offset[size_t(c.point_size_output)]];
-    rasterize_point(c.stage, prim, c.scissor);
+    FsPrimitive p;
+    p.v[0] = to_window(c, v.pos);
+    p.v[0].attrs = fs_attrs(c, out, v, false);
+    p.count = 1;
+    p.point_center = p.v[0].win;
+    float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
+    p.point_size = float(point_pixels(size));
+    set_point_planes(p);
+    bin(out, p, point_rect(p));
 }
 
 std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out,
@@ -149,6 +176,7 @@ std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::Ver
         const float* attrs = out.vertex(i);
         ClipVertex& v = verts[i];
         v.attrs = attrs;
+        v.source = int(i);
         if (position >= 0) {
             const float* p = attrs + out.offset[size_t(position)];
             v.pos = {p[0], p[1], p[2], p[3]};
@@ -167,6 +195,81 @@ Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport)
     if (vw <= 0 || vh <= 0) vx = 0, vy = 0, vw = fb.width, vh = fb.height;
     *viewport = glm::vec4(vx, vy, vw, vh);
     return Rect{std::max(vx, 0), std::max(vy, 0), std::min(vx + vw, fb.width), std::min(vy + vh, fb.height)};
+}
+
+// Clip parameters, then per vertex of the arrays its outcode and its
+// fragment attribute vector.
+void prepare(DrawContext& c, const glm::vec4& viewport, uint32_t vertex_count) {
+    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
+    c.clip.user_planes = c.gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
+    c.clip.attr_count = c.vs.stride;
+    c.outcodes.reserve(vertex_count);
+    for (const ClipVertex& v : c.vertices) c.outcodes.push_back(outcode(v, c.clip));
+    uint32_t n = c.stage.attr_count();
+    c.front_attrs.resize(size_t(vertex_count) * n);
+    for (uint32_t v = 0; v < vertex_count; ++v)
+        c.stage.gather(c.vs.vertex(v), c.vs.offset, false, c.front_attrs.data() + size_t(v) * n);
+}
+
+// Primitives per setup job, and the draw size below which setup stays on
+// the calling thread.
+constexpr size_t kSetupJob = 8192;
+constexpr size_t kParallelSetup = 2 * kSetupJob;
+
+void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<AssembledPrim>& assembled, size_t begin,
+                  size_t end, std::span<const uint32_t> indices) {
+    auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
+    out.prims.reserve(end - begin);
+    out.bounds.reserve(end - begin);
+    for (size_t i = begin; i < end; ++i) {
+        const AssembledPrim& p = assembled[i];
+        std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
+        if (p.count == 3) {
+            ++out.triangles;
+            draw_triangle(c, out, ids, id(p.provoking));
+        } else if (p.count == 2) {
+            draw_line(c, out, ids, id(p.provoking));
+        } else {
+            draw_point(c, out, ids[0]);
+        }
+    }
+}
+
+// Assembles, clips and sets up every primitive, in jobs on the workers when
+// there are many; `outs` keeps the jobs' attribute storage.
+void set_up_primitives(const DrawContext& c, Primitive prim, uint32_t vertex_count,
+                       std::span<const uint32_t> indices, unsigned threads, std::vector<SetupOut>& outs) {
+    uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
+    std::vector<AssembledPrim> assembled = assemble(prim, stream);
+    size_t jobs = (assembled.size() + kSetupJob - 1) / kSetupJob;
+    unsigned workers = assembled.size() < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
+    // One thread: one job, whose primitives need no copy. A primitive's setup
+    // does not depend on its job, so neither do the results.
+    size_t job_size = workers == 1 ? std::max<size_t>(assembled.size(), 1) : kSetupJob;
+    jobs = std::max<size_t>(1, (assembled.size() + job_size - 1) / job_size);
+    outs = std::vector<SetupOut>(jobs);
+    rt::JobQueue queue(jobs);
+    rt::run_workers(workers, [&](unsigned) {
+        for (size_t job; queue.next(&job);)
+            set_up_range(c, outs[job], assembled, job * job_size, std::min(assembled.size(), (job + 1) * job_size),
+                         indices);
+    });
+}
+
+// Bins the jobs' primitives in submission order.
+std::vector<FsPrimitive> bin_primitives(std::vector<SetupOut>& outs, TileBins& bins, uint64_t* triangles) {
+    std::vector<FsPrimitive> prims;
+    size_t total = 0;
+    *triangles = 0;
+    for (const SetupOut& out : outs) total += out.prims.size(), *triangles += out.triangles;
+    if (outs.size() == 1) prims = std::move(outs[0].prims);
+    prims.reserve(total);
+    for (const SetupOut& out : outs)
+        if (outs.size() > 1) prims.insert(prims.end(), out.prims.begin(), out.prims.end());
+    uint32_t index = 0;
+    for (const SetupOut& out : outs)
+        for (const Rect& r : out.bounds) bins.add(index++, r);
+    return prims;
 }
 
 }  // namespace
@@ -192,31 +295,24 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = program.state().ir.vertex;
-    FragmentStage stage(program, gl, fb, stats);
-    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, {}, {}, -1, {}};
-    c.scissor = scissor_rect(gl, fb, &c.viewport);
-    if (c.scissor.x0 >= c.scissor.x1 || c.scissor.y0 >= c.scissor.y1) return stats;
-    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(c.viewport[2], c.viewport[3]));
-    c.clip.user_planes = gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
-    c.clip.attr_count = shaded->stride;
-    c.point_size_output = find_output(vs, "gl_PointSize");
-    uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
-    auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
-    for (const AssembledPrim& p : assemble(prim, stream)) {
-        if (stage.failed()) break;
-        c.arena.clear();
-        std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
-        if (p.count == 3) {
-            ++stats.triangles;
-            draw_triangle(c, ids, id(p.provoking));
-        } else if (p.count == 2) {
-            draw_line(c, ids, id(p.provoking));
-        } else {
-            draw_point(c, ids[0]);
-        }
-    }
-    if (Status st = stage.finish(); !st) return st.error();
-    stats.raster_seconds = std::max(0.0, seconds_since(raster_start) - stats.fragment_seconds);
+    glm::vec4 viewport;
+    Rect scissor = scissor_rect(gl, fb, &viewport);
+    if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
+    FragmentStage stage(program, gl, fb);
+    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, scissor, viewport,
+                  {}, find_output(vs, "gl_PointSize"), {}};
+    prepare(c, viewport, vertex_count);
+    std::vector<SetupOut> outs;
+    set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, outs);
+    TileBins bins(scissor);
+    std::vector<FsPrimitive> prims = bin_primitives(outs, bins, &stats.triangles);
+    stats.raster_seconds = seconds_since(raster_start);
+    auto fragment_start = Clock::now();
+    TileResult tiles = bins.render(TileTarget{program, gl, fb, scissor}, prims, stage, program.exec.threads);
+    stats.fragment_seconds = seconds_since(fragment_start);
+    stats.fragments_shaded = tiles.fragments_shaded;
+    stats.fragments_written = tiles.fragments_written;
+    if (!tiles.status) return tiles.status.error();
     return stats;
 }
 

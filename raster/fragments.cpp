@@ -1,7 +1,9 @@
 #include "raster/fragments.h"
 
 #include <algorithm>
-#include <chrono>
+#include <bit>
+#include <cmath>
+#include <cstring>
 
 #include "raster/framebuffer.h"
 #include "runtime/execute.h"
@@ -14,7 +16,15 @@ struct FragmentStage::InputPlan {
     uint32_t attr_offset = 0;  // Varying: where in the attribute vector
 };
 
+// Per lane of the batch: the perspective-correct weights of vertices 1 and 2
+// (vertex 0's is implied) and the interpolated 1/w.
+struct FragmentStage::Weights {
+    std::array<float, rt::kLanes> p1, p2, inv_w;
+};
+
 namespace {
+
+using Lanes = std::array<float, rt::kLanes>;
 
 const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initializer_list<const char*> names) {
     for (const char* name : names)
@@ -23,10 +33,71 @@ const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initi
     return nullptr;
 }
 
+Plane to_plane(double a, double b, double c) { return {float(a), float(b), float(c)}; }
+
+// Whole registers are copied, a constant size: lanes past the batch are not
+// live, so their values do not matter.
+void store_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, const Lanes& v, int lanes) {
+    if (kind == ir::Kind::F32) {
+        std::memcpy(in.lanes_f(r), v.data(), sizeof v);
+        return;
+    }
+    for (int lane = 0; lane < lanes; ++lane) exec::set_lane(in, kind, r, lane, v[size_t(lane)]);
+}
+
+void load_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes) {
+    if (kind == ir::Kind::F32) {
+        std::memcpy(v.data(), in.lanes_f(r), sizeof v);
+        return;
+    }
+    for (int lane = 0; lane < lanes; ++lane) v[size_t(lane)] = exec::lane_as_float(in, kind, r, lane);
+}
+
 }  // namespace
 
-FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb, DrawStats& stats)
-    : program_(program), gl_(gl), fb_(fb), stats_(stats) {
+void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& t) {
+    prim.ox = t.bbox.x0;
+    prim.oy = t.bbox.y0;
+    // The weights are the edge functions over twice the area, exact at the
+    // origin (integers) and with per-pixel steps of kSubpixelOne.
+    std::array<int64_t, 3> e = edge_values(t, prim.ox, prim.oy);
+    double za = 0, zb = 0, zc = 0;
+    for (int i = 0; i < 3; ++i) {
+        double a = double(t.ea[i]) * double(kSubpixelOne) * t.inv_area2;
+        double b = double(t.eb[i]) * double(kSubpixelOne) * t.inv_area2;
+        double c = double(e[i]) * t.inv_area2;
+        prim.weight[i] = to_plane(a, b, c);
+        za += a * prim.v[i].z;
+        zb += b * prim.v[i].z;
+        zc += c * prim.v[i].z;
+    }
+    prim.z = to_plane(za, zb, zc);
+}
+
+void set_line_planes(FsPrimitive& prim) {
+    prim.v[2] = prim.v[1];
+    glm::dvec2 a = prim.v[0].win, d = glm::dvec2(prim.v[1].win) - a;
+    int major = std::fabs(d.x) >= std::fabs(d.y) ? 0 : 1;
+    prim.ox = pixel_floor(prim.v[0].win.x);
+    prim.oy = pixel_floor(prim.v[0].win.y);
+    if (!(d[major] != 0.0)) return set_point_planes(prim);  // no pixels
+    // t: the pixel centre projected onto the major axis, 0 at v0 and 1 at v1.
+    glm::dvec2 centre(prim.ox + 0.5, prim.oy + 0.5);
+    double step = 1.0 / d[major], t0 = (centre[major] - a[major]) * step;
+    double ta = major == 0 ? step : 0.0, tb = major == 1 ? step : 0.0;
+    prim.weight = {to_plane(-ta, -tb, 1.0 - t0), to_plane(ta, tb, t0), Plane{}};
+    double dz = double(prim.v[1].z) - prim.v[0].z;
+    prim.z = to_plane(ta * dz, tb * dz, prim.v[0].z + t0 * dz);
+}
+
+void set_point_planes(FsPrimitive& prim) {
+    prim.v[1] = prim.v[2] = prim.v[0];
+    prim.weight = {Plane{0, 0, 1}, Plane{}, Plane{}};
+    prim.z = Plane{0, 0, prim.v[0].z};
+}
+
+FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb)
+    : program_(program), gl_(gl), fb_(fb) {
     const Program::State& st = program.state();
     const ir::Shader& fs = st.ir.fragment;
     interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), program.exec.max_loop_iterations,
@@ -49,6 +120,9 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     }
     color_out_ = find_binding(fs.outputs, {"gl_FragColor", "gl_FragData[0]", "gl_FragData"});
     depth_out_ = find_binding(fs.outputs, {"gl_FragDepth"});
+    // Without discard or gl_FragDepth the depth test cannot depend on the
+    // shader, so it runs before shading and culls hidden quads.
+    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_;
 }
 
 FragmentStage::~FragmentStage() = default;
@@ -72,105 +146,144 @@ void FragmentStage::copy_colors(const float* from, float* to) const {
         if (s.is_color) std::copy(from + s.offset, from + s.offset + s.count, to + s.offset);
 }
 
-void FragmentStage::fill_lane(const FsPrimitive& prim, int lane, int x, int y, const glm::dvec3& l) {
-    double inv_w = 0, z = 0;
-    for (int i = 0; i < prim.count; ++i) {
-        inv_w += l[i] * prim.v[i].inv_w;
-        z += l[i] * prim.v[i].z;
+void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask) {
+    if (error_) return;
+    int base = quads_ * 4;
+    for (int i = 0; i < 4; ++i) {
+        int lane = base + i, px = x + kQuadDx[i], py = y + kQuadDy[i];
+        float z = prim.z.c + prim.z.a * float(px - prim.ox) + prim.z.b * float(py - prim.oy);
+        lane_x_[lane] = px;
+        lane_y_[lane] = py;
+        lane_z_[lane] = std::clamp(z, 0.0f, 1.0f);
+        if (!early_depth_ || !((mask >> i) & 1u)) continue;
+        float& stored = fb_.depth[size_t(py) * fb_.width + px];
+        if (depth_passes(gl_.depth_func, lane_z_[lane], stored)) stored = lane_z_[lane];
+        else mask &= ~(1u << i);
     }
-    double persp[3] = {0, 0, 0};
-    for (int i = 0; i < prim.count; ++i) persp[i] = inv_w != 0 ? l[i] * prim.v[i].inv_w / inv_w : l[i];
-    lane_x_[lane] = x;
-    lane_y_[lane] = y;
-    lane_z_[lane] = float(std::clamp(z, 0.0, 1.0));
-    rt::Interpreter& in = *interp_;
-    for (const InputPlan& p : inputs_) {
-        const ir::Binding& b = *p.binding;
-        for (uint32_t c = 0; c < b.count; ++c) {
-            float value = 0;
-            switch (p.source) {
-            case InputPlan::Source::Varying: {
-                double sum = 0;
-                for (int i = 0; i < prim.count; ++i) sum += persp[i] * prim.v[i].attrs[p.attr_offset + c];
-                value = float(sum);
-                break;
-            }
-            case InputPlan::Source::FragCoord: {
-                const float coord[4] = {float(x) + 0.5f, float(y) + 0.5f, float(z), float(inv_w)};
-                value = c < 4 ? coord[c] : 0.0f;
-                break;
-            }
-            case InputPlan::Source::FrontFacing: value = prim.front ? 1.0f : 0.0f; break;
-            case InputPlan::Source::PointCoord: {
-                if (prim.count != 1) break;
-                float s = 0.5f + (float(x) + 0.5f - prim.point_center.x) / prim.point_size;
-                float t = 0.5f - (float(y) + 0.5f - prim.point_center.y) / prim.point_size;
-                value = c == 0 ? s : t;
-                break;
-            }
-            case InputPlan::Source::Zero: break;
-            }
-            exec::set_lane(in, b.kind, b.first + c, lane, value);
+    if (!mask) return;
+    quad_prim_[size_t(quads_)] = &prim;
+    covered_ |= rt::LaneMask(mask) << base;
+    if (++quads_ == rt::kLanes / 4) flush();
+}
+
+void FragmentStage::compute_weights(Weights& w) const {
+    for (int q = 0; q < quads_; ++q) {
+        const FsPrimitive& p = *quad_prim_[size_t(q)];
+        for (int lane = q * 4; lane < q * 4 + 4; ++lane) {
+            float x = float(lane_x_[lane] - p.ox), y = float(lane_y_[lane] - p.oy);
+            float l[3];
+            for (int k = 0; k < 3; ++k) l[k] = p.weight[k].c + p.weight[k].a * x + p.weight[k].b * y;
+            float w1 = l[1] * p.v[1].inv_w, w2 = l[2] * p.v[2].inv_w;
+            float inv_w = l[0] * p.v[0].inv_w + w1 + w2;
+            w.inv_w[lane] = inv_w;
+            float r = inv_w != 0.0f ? 1.0f / inv_w : 0.0f;
+            w.p1[lane] = inv_w != 0.0f ? w1 * r : l[1];
+            w.p2[lane] = inv_w != 0.0f ? w2 * r : l[2];
         }
     }
 }
 
-void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask,
-                             const std::array<glm::dvec3, 4>& weights) {
-    if (error_) return;
-    int base = quads_ * 4;
-    for (int i = 0; i < 4; ++i) {
-        fill_lane(prim, base + i, x + kQuadDx[i], y + kQuadDy[i], weights[i]);
-        if ((mask >> i) & 1u) covered_ |= rt::LaneMask(1) << (base + i);
+// Component `attr` of the attribute vectors, perspective correct.
+void FragmentStage::interpolate(uint32_t attr, const Weights& w, Lanes& v) const {
+    for (int q = 0; q < quads_; ++q) {
+        const FsPrimitive& prim = *quad_prim_[size_t(q)];
+        float a0 = prim.v[0].attrs[attr];
+        float d1 = prim.v[1].attrs[attr] - a0, d2 = prim.v[2].attrs[attr] - a0;
+        for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = a0 + w.p1[lane] * d1 + w.p2[lane] * d2;
     }
-    if (++quads_ == rt::kLanes / 4) flush();
+}
+
+// Component c of gl_FragCoord, gl_FrontFacing or gl_PointCoord (0 for inputs
+// no varying feeds).
+void FragmentStage::builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const {
+    using Source = InputPlan::Source;
+    for (int q = 0; q < quads_; ++q) {
+        const FsPrimitive& prim = *quad_prim_[size_t(q)];
+        for (int lane = q * 4; lane < q * 4 + 4; ++lane) {
+            float fx = float(lane_x_[lane]) + 0.5f, fy = float(lane_y_[lane]) + 0.5f, value = 0;
+            switch (Source(source)) {
+            case Source::FragCoord: {
+                const float coord[4] = {fx, fy, lane_z_[lane], w.inv_w[lane]};
+                value = c < 4 ? coord[c] : 0.0f;
+                break;
+            }
+            case Source::FrontFacing: value = prim.front ? 1.0f : 0.0f; break;
+            case Source::PointCoord:
+                if (prim.count != 1) break;
+                value = c == 0 ? 0.5f + (fx - prim.point_center.x) / prim.point_size
+                               : 0.5f - (fy - prim.point_center.y) / prim.point_size;
+                break;
+            default: break;
+            }
+            v[size_t(lane)] = value;
+        }
+    }
+}
+
+void FragmentStage::fill_inputs(const Weights& w) {
+    Lanes v{};
+    for (const InputPlan& p : inputs_) {
+        const ir::Binding& b = *p.binding;
+        for (uint32_t c = 0; c < b.count; ++c) {
+            if (p.source == InputPlan::Source::Varying) interpolate(p.attr_offset + c, w, v);
+            else builtin_input(int(p.source), c, w, v);
+            store_lanes(*interp_, b.kind, b.first + c, v, quads_ * 4);
+        }
+    }
 }
 
 void FragmentStage::flush() {
     if (quads_ == 0) return;
     int lanes = quads_ * 4;
+    Weights w;
+    compute_weights(w);
+    fill_inputs(w);
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
     rt::RunError run_error;
-    rt::Interpreter& in = *interp_;
-    auto start = std::chrono::steady_clock::now();
-    bool ok = in.run(live, &run_error);
-    stats_.fragment_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    quads_ = 0;
+    bool ok = interp_->run(live, &run_error);
     rt::LaneMask covered = covered_;
     covered_ = 0;
     if (!ok) {
+        quads_ = 0;
         error_ = exec::run_error(program_.state(), ir::Stage::Fragment, run_error);
         return;
     }
-    rt::LaneMask alive = in.alive() & covered;
-    for (int lane = 0; lane < lanes; ++lane) {
-        if (!((covered >> lane) & 1u)) continue;
-        ++stats_.fragments_shaded;
-        if (!((alive >> lane) & 1u)) continue;
-        int x = lane_x_[lane], y = lane_y_[lane];
-        size_t pixel = size_t(y) * fb_.width + x;
-        if (gl_.depth_test) {
-            float z = lane_z_[lane];
-            if (depth_out_) {
-                float written = exec::lane_as_float(in, depth_out_->kind, depth_out_->first, lane);
-                z = written > 0.0f ? std::min(written, 1.0f) : 0.0f;  // NaN -> 0
-            }
-            if (!depth_passes(gl_.depth_func, z, fb_.depth[pixel])) continue;
-            fb_.depth[pixel] = z;
-        }
-        ++stats_.fragments_written;
-        if (!color_out_) continue;
-        glm::vec4 c(0.0f);
-        for (uint32_t k = 0; k < std::min<uint32_t>(4, color_out_->count); ++k)
-            c[int(k)] = exec::lane_as_float(in, color_out_->kind, color_out_->first + k, lane);
-        write_color(fb_, x, y, c);
-    }
+    write_outputs(covered);
+    quads_ = 0;
 }
 
-Status FragmentStage::finish() {
-    flush();
-    if (error_) return *error_;
-    return Ok{};
+// Depth test (unless done early) and colour writes over the batch, in lane
+// order: two quads of the batch may cover the same pixel.
+void FragmentStage::write_outputs(rt::LaneMask covered) {
+    rt::Interpreter& in = *interp_;
+    int lanes = quads_ * 4;
+    shaded_ += uint64_t(std::popcount(covered));
+    rt::LaneMask alive = in.alive() & covered;
+    Lanes z = lane_z_;
+    if (depth_out_) {
+        load_lanes(in, depth_out_->kind, depth_out_->first, z, lanes);
+        for (float& d : z) d = d > 0.0f ? std::min(d, 1.0f) : 0.0f;  // NaN -> 0
+    }
+    std::array<Lanes, 4> rgba{};
+    uint32_t channels = color_out_ ? std::min<uint32_t>(4, color_out_->count) : 0;
+    for (uint32_t k = 0; k < channels; ++k) {
+        load_lanes(in, color_out_->kind, color_out_->first + k, rgba[k], lanes);
+        if (!fb_.float_color)
+            for (float& c : rgba[k]) c = quantize_unorm8(c);
+    }
+    bool late_depth = gl_.depth_test && !early_depth_;
+    for (int lane = 0; lane < lanes; ++lane) {
+        if (!((alive >> lane) & 1u)) continue;
+        size_t pixel = size_t(lane_y_[lane]) * fb_.width + lane_x_[lane];
+        if (late_depth) {
+            if (!depth_passes(gl_.depth_func, z[size_t(lane)], fb_.depth[pixel])) continue;
+            fb_.depth[pixel] = z[size_t(lane)];
+        }
+        ++written_;
+        if (!color_out_) continue;
+        float* dst = &fb_.color[pixel * 4];
+        for (int k = 0; k < 4; ++k) dst[k] = rgba[size_t(k)][size_t(lane)];
+    }
 }
 
 }  // namespace glslrun::raster

@@ -1,7 +1,8 @@
 // The fragment stage: packs 2x2 quads from any primitive into batches of
 // kLanes/4 quads, interpolates the fragment shader's inputs (perspective
-// correct), runs the shader, then depth-tests and writes the covered, alive
-// lanes in submission order, so results do not depend on the batch size.
+// correct) from per-primitive plane equations over whole lane arrays, runs
+// the shader, then depth-tests and writes the covered, alive lanes in
+// submission order, so results do not depend on the batch size.
 #pragma once
 #include <array>
 #include <memory>
@@ -22,13 +23,29 @@ struct FsVertex {
     const float* attrs = nullptr;  // the stage's attribute vector (attr_count() floats)
 };
 
+// A screen-space linear function: at the centre of pixel (x, y) it is
+// c + a * (x - ox) + b * (y - oy), with (ox, oy) the primitive's origin.
+// The origin keeps the terms small, so that float evaluation stays accurate.
+struct Plane {
+    float a = 0, b = 0, c = 0;
+};
+
 struct FsPrimitive {
-    std::array<FsVertex, 3> v;
+    std::array<FsVertex, 3> v;  // lines repeat vertex 1, points vertex 0
     int count = 3;  // 1 point, 2 line, 3 triangle
     bool front = true;
-    glm::vec2 point_center{0.0f};  // points only: window position and size
+    glm::vec2 point_center{0.0f};  // points only: window position and size (whole pixels)
     float point_size = 1;
+    // Interpolation (set_*_planes): the screen-space (linear) weights of the
+    // three vertices, and the window depth.
+    int ox = 0, oy = 0;
+    std::array<Plane, 3> weight;
+    Plane z;
 };
+
+void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& setup);
+void set_line_planes(FsPrimitive& prim);
+void set_point_planes(FsPrimitive& prim);
 
 // How the stage's attribute vector maps onto VS outputs; one entry per
 // fragment input fed by a varying.
@@ -40,7 +57,7 @@ struct VaryingSlot {
 
 class FragmentStage {
 public:
-    FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb, DrawStats& stats);
+    FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb);
     ~FragmentStage();
 
     uint32_t attr_count() const { return attr_count_; }
@@ -50,32 +67,44 @@ public:
     // Copies the colour attributes of `from` into `to` (flat shading).
     void copy_colors(const float* from, float* to) const;
 
-    // weights: screen-space linear weights of the primitive's vertices per lane.
-    void add_quad(const FsPrimitive& prim, int x, int y, unsigned mask,
-                  const std::array<glm::dvec3, 4>& weights);
-    // Shades what is pending; returns the first shader error of the draw.
-    Status finish();
-    bool failed() const { return error_.has_value(); }
+    // Queues a quad of `prim` (which must stay alive until flush()). With the
+    // early depth test, the depth test and depth write happen here.
+    void add_quad(const FsPrimitive& prim, int x, int y, unsigned mask);
+    // Shades what is pending; after a shader error, error() holds it and
+    // further quads are ignored until clear_error().
+    void flush();
+    const std::optional<Error>& error() const { return error_; }
+    void clear_error() { error_.reset(); }
+    // Fragment counts of this stage so far.
+    uint64_t fragments_shaded() const { return shaded_; }
+    uint64_t fragments_written() const { return written_; }
 
 private:
     struct InputPlan;
-    void fill_lane(const FsPrimitive& prim, int lane, int x, int y, const glm::dvec3& l);
-    void flush();
+    struct Weights;
+    using Lanes = std::array<float, rt::kLanes>;
+    void compute_weights(Weights& w) const;
+    void interpolate(uint32_t attr, const Weights& w, Lanes& v) const;
+    void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
+    void fill_inputs(const Weights& w);
+    void write_outputs(rt::LaneMask covered);
 
     const Program& program_;
     const GLState& gl_;
     Framebuffer& fb_;
-    DrawStats& stats_;
     std::unique_ptr<rt::Interpreter> interp_;
     std::vector<InputPlan> inputs_;
     std::vector<VaryingSlot> varyings_;
     uint32_t attr_count_ = 0;
     const ir::Binding* color_out_ = nullptr;
     const ir::Binding* depth_out_ = nullptr;
+    bool early_depth_ = false;  // depth tested in add_quad: no discard, no gl_FragDepth
     int quads_ = 0;
+    std::array<const FsPrimitive*, rt::kLanes / 4> quad_prim_{};
     std::array<int, rt::kLanes> lane_x_{}, lane_y_{};
     std::array<float, rt::kLanes> lane_z_{};
     rt::LaneMask covered_ = 0;
+    uint64_t shaded_ = 0, written_ = 0;
     std::optional<Error> error_;
 };
 

@@ -29,30 +29,9 @@ glm::vec4 Framebuffer::pixel(int x, int y) const {
 
 namespace raster {
 
-float quantize_unorm8(float v) {
-    if (!(v > 0.0f)) return 0.0f;  // also NaN
-    if (v >= 1.0f) return 1.0f;
-    return std::nearbyint(v * 255.0f) / 255.0f;
-}
-
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c) {
     float* p = &fb.color[(size_t(y) * fb.width + x) * 4];
     for (int k = 0; k < 4; ++k) p[k] = fb.float_color ? c[k] : quantize_unorm8(c[k]);
-}
-
-bool depth_passes(GLState::DepthFunc func, float incoming, float stored) {
-    using F = GLState::DepthFunc;
-    switch (func) {
-    case F::Never: return false;
-    case F::Less: return incoming < stored;
-    case F::Equal: return incoming == stored;
-    case F::Lequal: return incoming <= stored;
-    case F::Greater: return incoming > stored;
-    case F::Notequal: return incoming != stored;
-    case F::Gequal: return incoming >= stored;
-    case F::Always: return true;
-    }
-    return false;
 }
 
 }  // namespace raster

@@ -1,12 +1,35 @@
 // Colour and depth writes, shared by the fragment stage and the tests.
+// Inline: the fragment stage calls them per lane.
 #pragma once
 #include "glslrun/glslrun.h"
 
 namespace glslrun::raster {
 
 // RGBA8 storage: clamp to [0,1] and round to the nearest n/255 (NaN -> 0).
-float quantize_unorm8(float v);
+inline float quantize_unorm8(float v) {
+    // Branch-free, so that loops over a batch vectorize. Adding 2^23 rounds
+    // to an integer, ties to even: nearbyint() without a library call.
+    constexpr float kRound = 8388608.0f;
+    float c = v > 0.0f ? v : 0.0f;  // also NaN
+    c = c < 1.0f ? c : 1.0f;
+    return ((c * 255.0f + kRound) - kRound) / 255.0f;
+}
+
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
-bool depth_passes(GLState::DepthFunc func, float incoming, float stored);
+
+inline bool depth_passes(GLState::DepthFunc func, float incoming, float stored) {
+    using F = GLState::DepthFunc;
+    switch (func) {
+    case F::Never: return false;
+    case F::Less: return incoming < stored;
+    case F::Equal: return incoming == stored;
+    case F::Lequal: return incoming <= stored;
+    case F::Greater: return incoming > stored;
+    case F::Notequal: return incoming != stored;
+    case F::Gequal: return incoming >= stored;
+    case F::Always: return true;
+    }
+    return false;
+}
 
 }  // namespace glslrun::raster

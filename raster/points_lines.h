@@ -8,12 +8,16 @@ namespace glslrun::raster {
 // Point size as GL rasterizes it: rounded to an integer, at least 1.
 int point_pixels(float size);
 
+// The pixels a point covers, before the scissor: a size x size square.
+Rect point_rect(const FsPrimitive& prim);
+
 // A point covers the size x size square whose lower-left pixel is
-// floor(centre - size/2 + 0.5); prim.count must be 1.
+// floor(centre - size/2 + 0.5); prim.count must be 1 and prim.point_size
+// already whole (point_pixels). prim must outlive the stage's next flush.
 void rasterize_point(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor);
 
 // A line covers one pixel per column (x-major) or row (y-major) whose centre
-// lies on [start, end); prim.count must be 2.
+// lies on [start, end); prim.count must be 2.  prim must outlive the stage's next flush.
 void rasterize_line(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor);
 
 // The pixels rasterize_line visits, in order (for tests).

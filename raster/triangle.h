@@ -3,7 +3,9 @@
 // never leave cracks nor cover a pixel twice, and iteration over aligned 2x2
 // quads (GL window coordinates: y up, row 0 at the bottom).
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -38,6 +40,12 @@ struct TriangleSetup {
 
 int64_t snap(float window_coord);
 
+// floor() as a pixel index, kept in the rasterizer's range; NaN gives 0.
+inline int pixel_floor(float v) {
+    if (!(v == v)) return 0;
+    return int(std::clamp(std::floor(v), -kMaxWindowCoord, kMaxWindowCoord));
+}
+
 // Returns nothing for degenerate triangles or ones outside the scissor.
 std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor);
 
@@ -54,26 +62,51 @@ inline bool covers(const TriangleSetup& t, const std::array<int64_t, 3>& e) {
     return s * e[0] + t.bias[0] >= 0 && s * e[1] + t.bias[1] >= 0 && s * e[2] + t.bias[2] >= 0;
 }
 
-// Screen-space (linear) barycentric weights at the centre of pixel (x, y).
-inline glm::dvec3 barycentric(const TriangleSetup& t, int x, int y) {
-    auto e = edge_values(t, x, y);
-    return {double(e[0]) * t.inv_area2, double(e[1]) * t.inv_area2, double(e[2]) * t.inv_area2};
+enum class BlockCover { Outside, Partial, Inside };
+
+// Edge functions are linear, so a rectangle is inside (outside) an edge when
+// all four corner pixels are.
+inline BlockCover classify_block(const TriangleSetup& t, const Rect& b) {
+    const std::array<std::array<int64_t, 3>, 4> corner{edge_values(t, b.x0, b.y0), edge_values(t, b.x1 - 1, b.y0),
+                                                       edge_values(t, b.x0, b.y1 - 1),
+                                                       edge_values(t, b.x1 - 1, b.y1 - 1)};
+    int64_t s = t.area2 > 0 ? 1 : -1;
+    bool inside = true;
+    for (int i = 0; i < 3; ++i) {
+        int in = 0;
+        for (const auto& e : corner) in += s * e[size_t(i)] + t.bias[size_t(i)] >= 0;
+        if (in == 0) return BlockCover::Outside;
+        inside = inside && in == 4;
+    }
+    return inside ? BlockCover::Inside : BlockCover::Partial;
 }
 
+inline constexpr int kBlockSize = 8;
+
 // Calls visit(x, y, mask) for every 2x2 quad (x, y even) with at least one
-// covered pixel inside the scissor, bottom row first, left to right.
+// covered pixel inside `clip`. The walk goes over aligned 8x8 blocks (rows of
+// blocks bottom up, left to right): blocks outside an edge are skipped, and
+// pixels of blocks inside all edges are not tested one by one.
 template <class Visit>
-void for_each_quad(const TriangleSetup& t, const Rect& scissor, Visit&& visit) {
-    int x_begin = t.bbox.x0 & ~1, y_begin = t.bbox.y0 & ~1;
-    for (int y = y_begin; y < t.bbox.y1; y += 2) {
-        for (int x = x_begin; x < t.bbox.x1; x += 2) {
-            unsigned mask = 0;
-            for (int i = 0; i < 4; ++i) {
-                int px = x + kQuadDx[i], py = y + kQuadDy[i];
-                if (px < scissor.x0 || px >= scissor.x1 || py < scissor.y0 || py >= scissor.y1) continue;
-                if (covers(t, edge_values(t, px, py))) mask |= 1u << i;
-            }
-            if (mask) visit(x, y, mask);
+void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
+    Rect r{std::max(t.bbox.x0, clip.x0), std::max(t.bbox.y0, clip.y0), std::min(t.bbox.x1, clip.x1),
+           std::min(t.bbox.y1, clip.y1)};
+    for (int by = r.y0 & ~(kBlockSize - 1); by < r.y1; by += kBlockSize) {
+        for (int bx = r.x0 & ~(kBlockSize - 1); bx < r.x1; bx += kBlockSize) {
+            Rect b{std::max(bx, r.x0), std::max(by, r.y0), std::min(bx + kBlockSize, r.x1),
+                   std::min(by + kBlockSize, r.y1)};
+            BlockCover cover = classify_block(t, b);
+            if (cover == BlockCover::Outside) continue;
+            for (int y = b.y0 & ~1; y < b.y1; y += 2)
+                for (int x = b.x0 & ~1; x < b.x1; x += 2) {
+                    unsigned mask = 0;
+                    for (int i = 0; i < 4; ++i) {
+                        int px = x + kQuadDx[i], py = y + kQuadDy[i];
+                        if (px < b.x0 || px >= b.x1 || py < b.y0 || py >= b.y1) continue;
+                        if (cover == BlockCover::Inside || covers(t, edge_values(t, px, py))) mask |= 1u << i;
+                    }
+                    if (mask) visit(x, y, mask);
+                }
         }
     }
 }

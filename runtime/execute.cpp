@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include <fmt/format.h>
+
+#include "runtime/parallel.h"
 
 namespace glslrun::exec {
 
@@ -94,22 +97,21 @@ std::vector<uint32_t> output_offsets(const ir::Shader& shader, uint32_t* stride)
     return offset;
 }
 
-}  // namespace
+// Vertices per job of the workers, and the draw size below which starting
+// threads costs more than it saves.
+constexpr uint32_t kVertexJob = 64 * rt::kLanes;
+constexpr uint32_t kParallelVertices = 4096;
 
-Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
-                                     uint32_t count, const GLState& current) {
-    const Program::State& st = program.state();
+// Shades vertices [begin, end) in batches of kLanes starting at `begin` (a
+// multiple of kLanes, so batches do not depend on the thread count).
+std::optional<Error> shade_range(rt::Interpreter& interp, const Program::State& st,
+                                 const std::vector<InputSource>& plan, uint32_t begin, uint32_t end,
+                                 VertexOutputs& out) {
     const ir::Shader& vs = st.ir.vertex;
-    auto plan = plan_inputs(vs, attribs, count, current);
-    if (!plan) return plan.error();
-    VertexOutputs out;
-    out.offset = output_offsets(vs, &out.stride);
-    out.data.assign(size_t(count) * out.stride, 0.0f);
-    rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations, current.texture_units.data());
-    for (uint32_t base = 0; base < count; base += rt::kLanes) {
-        int n = int(std::min<uint32_t>(rt::kLanes, count - base));
+    for (uint32_t base = begin; base < end; base += rt::kLanes) {
+        int n = int(std::min<uint32_t>(rt::kLanes, end - base));
         for (int lane = 0; lane < n; ++lane)
-            for (const InputSource& src : *plan) fill_input(interp, src, lane, base + lane);
+            for (const InputSource& src : plan) fill_input(interp, src, lane, base + lane);
         rt::LaneMask live = n == rt::kLanes ? rt::kAllLanes : (rt::LaneMask(1) << n) - 1;
         rt::RunError error;
         if (!interp.run(live, &error)) return run_error(st, ir::Stage::Vertex, error);
@@ -121,6 +123,38 @@ Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<V
             }
         }
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+// Every vertex of the arrays is shaded exactly once, and primitives refer to
+// the shaded copies by index: for indexed meshes this is the post-transform
+// cache, one that never misses. Large draws shade jobs of vertices on
+// ExecOptions::threads workers.
+Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
+                                     uint32_t count, const GLState& current) {
+    const Program::State& st = program.state();
+    const ir::Shader& vs = st.ir.vertex;
+    auto plan = plan_inputs(vs, attribs, count, current);
+    if (!plan) return plan.error();
+    VertexOutputs out;
+    out.offset = output_offsets(vs, &out.stride);
+    out.data.assign(size_t(count) * out.stride, 0.0f);
+    size_t jobs = (size_t(count) + kVertexJob - 1) / kVertexJob;
+    unsigned workers = count < kParallelVertices ? 1 : rt::thread_count(program.exec.threads, jobs);
+    std::vector<std::optional<Error>> errors(jobs);
+    rt::JobQueue queue(jobs);
+    rt::run_workers(workers, [&](unsigned) {
+        rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations,
+                               current.texture_units.data());
+        for (size_t job; queue.next(&job);) {
+            uint32_t begin = uint32_t(job) * kVertexJob, end = std::min(count, begin + kVertexJob);
+            errors[job] = shade_range(interp, st, *plan, begin, end, out);
+            if (errors[job]) queue.fail(job);
+        }
+    });
+    if (auto failed = queue.first_failure()) return *errors[*failed];
     return out;
 }
 

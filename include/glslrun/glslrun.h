@@ -78,6 +78,9 @@ struct ExecOptions {
     // Iterations of all loops of one batch together; past it the draw stops
     // with a clear error instead of hanging.
     uint64_t max_loop_iterations = 1u << 22;
+    // Worker threads of draw(); 0 means one per core. Images are
+    // bit-identical whatever the count.
+    unsigned threads = 0;
 };
 
 enum class Stage { Vertex, Fragment };
@@ -295,8 +298,9 @@ enum class Primitive { Points, Lines, LineStrip, LineLoop, Triangles, TriangleSt
 
 struct DrawStats {
     uint64_t vertices = 0, triangles = 0, fragments_shaded = 0, fragments_written = 0;
-    // Wall time per stage; "raster" is assembly, clipping, setup and
-    // rasterization, plus the depth test and colour writes.
+    // Wall time per stage: vertex shading; "raster" is assembly, clipping,
+    // triangle setup and binning into tiles; "fragment" is the tiles'
+    // work (rasterization, shading, depth test and colour writes).
     double vertex_seconds = 0, raster_seconds = 0, fragment_seconds = 0;
     DrawStats& operator+=(const DrawStats& other);
 };

@@ -25,7 +25,7 @@ ClipVertex vertex(glm::vec4 pos, const float* attrs) {
 
 // Checks that `attr` (attribute 0) still equals the linear function
 // f(pos) = pos.x + 2 pos.y + 3 pos.z + 4 pos.w the inputs were built with.
-void check_linear_attrs(const std::vector<ClipVertex>& poly) {
+void check_linear_attrs(const ClipPolygon& poly) {
     for (const ClipVertex& v : poly) {
         float f = v.pos.x + 2 * v.pos.y + 3 * v.pos.z + 4 * v.pos.w;
         CHECK(v.attrs[0] == Approx(f).margin(1e-4));
@@ -43,7 +43,7 @@ TEST_CASE("triangles crossing the near and far planes are clipped", "[raster][cl
     CHECK(outcode(vertex(p[0], a), params) == 1u);       // behind near
     CHECK(outcode(vertex(p[1], a + 1), params) == 0u);
     CHECK(outcode(vertex(p[2], a + 2), params) == 2u);   // beyond far
-    std::vector<ClipVertex> poly{vertex(p[0], a), vertex(p[1], a + 1), vertex(p[2], a + 2)};
+    ClipPolygon poly{vertex(p[0], a), vertex(p[1], a + 1), vertex(p[2], a + 2)};
     AttrArena arena;
     clip_polygon(poly, params, arena);
     // Near cuts off one corner (a quadrilateral), far then another: a pentagon.
@@ -59,7 +59,7 @@ TEST_CASE("a triangle crossing w = 0 keeps only the w > 0 part", "[raster][clip]
     ClipParams params{4.0f, 0, 1};
     glm::vec4 p[3] = {{0, 0, 0.5f, 1}, {1, 0, 0.5f, -1}, {0, 1, 0.5f, -0.5f}};
     float a[3] = {linear(p[0]), linear(p[1]), linear(p[2])};
-    std::vector<ClipVertex> poly{vertex(p[0], a), vertex(p[1], a + 1), vertex(p[2], a + 2)};
+    ClipPolygon poly{vertex(p[0], a), vertex(p[1], a + 1), vertex(p[2], a + 2)};
     AttrArena arena;
     clip_polygon(poly, params, arena);
     REQUIRE(poly.size() >= 3);
@@ -71,7 +71,7 @@ TEST_CASE("a triangle crossing w = 0 keeps only the w > 0 part", "[raster][clip]
     check_linear_attrs(poly);
     // Entirely behind the eye: nothing left.
     glm::vec4 q[3] = {{0, 0, 0, -1}, {1, 0, 0, -1}, {0, 1, 0, -2}};
-    std::vector<ClipVertex> gone{vertex(q[0], a), vertex(q[1], a), vertex(q[2], a)};
+    ClipPolygon gone{vertex(q[0], a), vertex(q[1], a), vertex(q[2], a)};
     clip_polygon(gone, params, arena);
     CHECK(gone.size() < 3);
 }

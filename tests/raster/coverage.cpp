@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "raster/fragments.h"
 #include "raster/triangle.h"
 
 using namespace glslrun::raster;
@@ -123,15 +124,48 @@ TEST_CASE("degenerate and off-screen triangles produce nothing", "[raster][cover
     CHECK(hits == 0);
 }
 
-TEST_CASE("barycentric weights are exact at pixel centres", "[raster][coverage]") {
+TEST_CASE("plane equations give the screen-space weights and depth at pixel centres", "[raster][coverage]") {
     Rect scissor{0, 0, 16, 16};
-    auto t = setup_triangle({glm::vec2(0.5f, 0.5f), glm::vec2(8.5f, 0.5f), glm::vec2(0.5f, 8.5f)}, scissor);
+    FsPrimitive prim;
+    const glm::vec2 win[3] = {glm::vec2(0.5f, 0.5f), glm::vec2(8.5f, 0.5f), glm::vec2(0.5f, 8.5f)};
+    const float z[3] = {0.25f, 0.75f, 0.5f};
+    for (int i = 0; i < 3; ++i) prim.v[size_t(i)].win = win[i], prim.v[size_t(i)].z = z[i];
+    auto t = setup_triangle({win[0], win[1], win[2]}, scissor);
     REQUIRE(t);
+    set_triangle_planes(prim, *t);
+    auto at = [&](const Plane& p, int x, int y) { return p.c + p.a * float(x - prim.ox) + p.b * float(y - prim.oy); };
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x) {
-            glm::dvec3 l = barycentric(*t, x, y);
-            CHECK(l.x + l.y + l.z == Approx(1.0));
-            CHECK(l.y == Approx(x / 8.0));
-            CHECK(l.z == Approx(y / 8.0));
+            float l[3] = {at(prim.weight[0], x, y), at(prim.weight[1], x, y), at(prim.weight[2], x, y)};
+            CHECK(l[0] + l[1] + l[2] == Approx(1.0));
+            CHECK(l[1] == Approx(x / 8.0).margin(1e-6));
+            CHECK(l[2] == Approx(y / 8.0).margin(1e-6));
+            CHECK(at(prim.z, x, y) == Approx(0.25 + 0.5 * x / 8.0 + 0.25 * y / 8.0));
         }
+}
+
+TEST_CASE("8x8 blocks inside or outside a triangle cover what the per-pixel test covers", "[raster][coverage]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> coord(-20.0f, 140.0f);
+    const Rect scissor{3, 5, 117, 101};  // odd edges: blocks cut by the scissor
+    for (int n = 0; n < 200; ++n) {
+        auto t = setup_triangle({glm::vec2(coord(rng), coord(rng)), glm::vec2(coord(rng), coord(rng)),
+                                 glm::vec2(coord(rng), coord(rng))},
+                                scissor);
+        if (!t) continue;
+        std::vector<int> hits(size_t(128 * 128), 0);
+        for_each_quad(*t, scissor, [&](int x, int y, unsigned mask) {
+            for (int i = 0; i < 4; ++i)
+                if ((mask >> i) & 1u) ++hits[size_t(y + kQuadDy[i]) * 128 + size_t(x + kQuadDx[i])];
+        });
+        int wrong = 0;
+        for (int y = 0; y < 128; ++y)
+            for (int x = 0; x < 128; ++x) {
+                bool inside = x >= scissor.x0 && x < scissor.x1 && y >= scissor.y0 && y < scissor.y1 &&
+                              covers(*t, edge_values(*t, x, y));
+                wrong += hits[size_t(y) * 128 + size_t(x)] != (inside ? 1 : 0);
+            }
+        INFO("triangle " << n);
+        CHECK(wrong == 0);
+    }
 }

@@ -121,6 +121,8 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
+    app.add_option("--threads", o.threads, "worker threads for drawing (default: one per core); images do not depend on it")
+        ->check(CLI::Range(1, 256));
     app.add_option("--compare", o.compare,
                    "compare the rendered image, or the PNG given, with this reference PNG");
     app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")

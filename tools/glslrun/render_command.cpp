@@ -136,6 +136,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     auto start = Clock::now();
     auto prog = Program::compile(in.vertex, in.fragment);
     if (!prog) return fail(prog.error());
+    prog->exec.threads = o.threads;
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     Framebuffer fb(scene->width, scene->height);

@@ -8,6 +8,8 @@ namespace glslrun::cli {
 struct RenderOptions {
     std::string output, size, compare, diff;
     int tolerance = 0;
+    unsigned threads = 0;  // draw() worker threads; 0: one per core
+    int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;
 };
 

@@ -1,0 +1,53 @@
+// Screen tiles: draw() bins its set-up primitives into kTileSize tiles in
+// submission order, then workers render whole tiles in parallel. Within a
+// tile primitives run in submission order, and the tiles (hence the batches
+// and their quads) do not depend on the thread count, so neither do images.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "glslrun/glslrun.h"
+#include "raster/fragments.h"
+#include "raster/triangle.h"
+
+namespace glslrun::raster {
+
+inline constexpr int kTileSize = 64;
+static_assert(kTileSize % kBlockSize == 0);
+
+struct TileTarget {
+    const Program& program;
+    const GLState& gl;
+    Framebuffer& fb;
+    Rect scissor;
+};
+
+// Fragment counts and the first error, by tile order.
+struct TileResult {
+    uint64_t fragments_shaded = 0, fragments_written = 0;
+    Status status = Ok{};
+};
+
+class TileBins {
+public:
+    explicit TileBins(const Rect& scissor);
+    // bounds: the pixels primitive `prim` may cover.
+    void add(uint32_t prim, const Rect& bounds);
+    // Renders every tile on up to `threads` threads (0: one per core); `stage`
+    // serves the calling thread. A shader error is the one of the first
+    // failing tile, so it does not depend on the thread count either.
+    TileResult render(const TileTarget& target, const std::vector<FsPrimitive>& prims, FragmentStage& stage,
+                      unsigned threads) const;
+
+private:
+    Rect tile_rect(size_t tile) const;
+    void render_tile(const TileTarget& target, const std::vector<FsPrimitive>& prims, size_t tile,
+                     FragmentStage& stage) const;
+
+    Rect scissor_;
+    int columns_ = 0, rows_ = 0;
+    std::vector<std::vector<uint32_t>> bins_;  // per tile: primitive indices, ascending
+    uint64_t area_ = 0;                        // sum of the primitives' bounds, in pixels
+};
+
+}  // namespace glslrun::raster

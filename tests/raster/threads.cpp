@@ -1,0 +1,327 @@
+// The tiled, multi-threaded draw: images (colour and depth) and fragment
+// counts are bit-identical whatever Program::exec.threads is, on scenes that
+// span many tiles, with overlapping primitives, order effects at equal
+// depth, discard, gl_FragDepth, lines and points across tile borders; the
+// first shader error is the same too.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tools/scene/render.h"
+#include "tools/scene/scene.h"
+
+using namespace glslrun;
+
+namespace {
+
+const unsigned kThreadCounts[] = {2, 3, 7, 64};
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+Program compile_files(const std::string& stem) {
+    std::string dir = std::string(GLSLRUN_SOURCE_DIR) + "/shaders/";
+    auto p = Program::compile({{stem + ".vert", read_text(dir + stem + ".vert")}},
+                              {{stem + ".frag", read_text(dir + stem + ".frag")}});
+    REQUIRE(p.ok());
+    return std::move(*p);
+}
+
+Program compile(const char* vs, const char* fs) {
+    auto p = Program::compile({{"vs", vs}}, {{"fs", fs}});
+    if (!p) FAIL(p.error().str());
+    return std::move(*p);
+}
+
+struct Frame {
+    Framebuffer fb;
+    DrawStats stats;
+};
+
+// Floats that differ (bitwise equal values: same colour, same depth).
+size_t differences(const std::vector<float>& a, const std::vector<float>& b) {
+    if (a.size() != b.size()) return std::max(a.size(), b.size());
+    size_t n = 0;
+    for (size_t i = 0; i < a.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(float)) != 0;
+    return n;
+}
+
+void check_same(const Frame& a, const Frame& b) {
+    CHECK(a.stats.fragments_shaded == b.stats.fragments_shaded);
+    CHECK(a.stats.fragments_written == b.stats.fragments_written);
+    CHECK(differences(a.fb.color, b.fb.color) == 0u);
+    CHECK(differences(a.fb.depth, b.fb.depth) == 0u);
+}
+
+// Distinct colours in the image: guards against comparing two blank frames.
+size_t distinct_colors(const Framebuffer& fb) {
+    std::vector<std::array<float, 4>> seen;
+    for (size_t i = 0; i < fb.color.size() && seen.size() < 64; i += 4) {
+        std::array<float, 4> c{fb.color[i], fb.color[i + 1], fb.color[i + 2], fb.color[i + 3]};
+        if (std::find(seen.begin(), seen.end(), c) == seen.end()) seen.push_back(c);
+    }
+    return seen.size();
+}
+
+Frame render_scene_file(const std::string& scene_name, const std::string& program, unsigned threads) {
+    auto scene = scene::load_scene(std::string(GLSLRUN_SOURCE_DIR) + "/scenes/" + scene_name);
+    REQUIRE(scene.ok());
+    Program p = compile_files(program);
+    p.exec.threads = threads;
+    Frame f{Framebuffer(scene->width, scene->height), {}};
+    auto stats = scene::render_scene(p, *scene, f.fb);
+    REQUIRE(stats.ok());
+    f.stats = *stats;
+    return f;
+}
+
+// Random overlapping primitives over a 300x200 target (5x4 tiles): a few
+// depths only, so that many fragments tie and GL_LEQUAL order decides.
+struct Geometry {
+    VertexAttrib pos{"gl_Vertex", 4, {}};
+    VertexAttrib color{"gl_Color", 4, {}};
+    uint32_t count = 0;
+};
+
+Geometry random_geometry(unsigned seed, uint32_t vertices) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> xy(-1.2f, 1.2f), unit(0.0f, 1.0f);
+    std::uniform_int_distribution<int> level(0, 3);
+    Geometry g;
+    for (uint32_t v = 0; v < vertices; ++v) {
+        // Triangles take one of four depth levels, so ties are common.
+        float z = v % 3 == 0 ? float(level(rng)) * 0.25f - 0.4f : g.pos.data[g.pos.data.size() - 2];
+        g.pos.data.insert(g.pos.data.end(), {xy(rng), xy(rng), z, 1.0f});
+        g.color.data.insert(g.color.data.end(), {unit(rng), unit(rng), unit(rng), 1.0f});
+    }
+    g.count = vertices;
+    return g;
+}
+
+// Many small triangles, some crossing the near or far plane (clipped).
+Geometry small_triangles(unsigned seed, uint32_t triangles) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> centre(-1.1f, 1.1f), offset(-0.06f, 0.06f), depth(-1.3f, 1.3f),
+        unit(0.0f, 1.0f);
+    Geometry g;
+    for (uint32_t t = 0; t < triangles; ++t) {
+        float cx = centre(rng), cy = centre(rng), cz = depth(rng);
+        for (int v = 0; v < 3; ++v) {
+            g.pos.data.insert(g.pos.data.end(), {cx + offset(rng), cy + offset(rng), cz + 4 * offset(rng), 1.0f});
+            g.color.data.insert(g.color.data.end(), {unit(rng), unit(rng), unit(rng), 1.0f});
+        }
+    }
+    g.count = triangles * 3;
+    return g;
+}
+
+// Draws g once per pass (program and state) into one frame.
+struct Pass {
+    Program* program;
+    GLState gl;
+};
+
+Frame draw_passes(const std::vector<Pass>& passes, const Geometry& g, Primitive prim, unsigned threads) {
+    Frame f{Framebuffer(300, 200), {}};
+    f.fb.clear_color({0.1f, 0.2f, 0.3f, 1.0f});
+    f.fb.clear_depth(1.0f);
+    for (const Pass& pass : passes) {
+        pass.program->exec.threads = threads;
+        auto stats = draw(*pass.program, pass.gl, f.fb, prim, {g.pos, g.color}, g.count);
+        REQUIRE(stats.ok());
+        f.stats += *stats;
+    }
+    return f;
+}
+
+Frame draw_geometry(Program& p, const Geometry& g, Primitive prim, unsigned threads, GLState gl) {
+    return draw_passes({{&p, gl}}, g, prim, threads);
+}
+
+const char* kColorVs = "void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; gl_PointSize = 9.0; }";
+
+}  // namespace
+
+TEST_CASE("the spot-light teapot is identical with any thread count", "[raster][threads]") {
+    Frame one = render_scene_file("spot.toml", "spot_pix_fixed", 1);
+    CHECK(one.stats.fragments_written > 10000u);
+    CHECK(distinct_colors(one.fb) > 20u);
+    for (unsigned threads : kThreadCounts) {
+        INFO("threads " << threads);
+        check_same(one, render_scene_file("spot.toml", "spot_pix_fixed", threads));
+    }
+}
+
+TEST_CASE("the textured teapot is identical with any thread count", "[raster][threads]") {
+    Frame one = render_scene_file("textured.toml", "textured_pix", 1);
+    CHECK(distinct_colors(one.fb) > 20u);
+    for (unsigned threads : kThreadCounts) {
+        INFO("threads " << threads);
+        check_same(one, render_scene_file("textured.toml", "textured_pix", threads));
+    }
+}
+
+TEST_CASE("overlapping triangles keep submission order at equal depth", "[raster][threads]") {
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    Program second = compile(kColorVs, "void main() { gl_FragColor = gl_Color.gbra; }");
+    Geometry g = random_geometry(7, 600);
+    GLState gl;
+    gl.depth_test = true;
+    for (auto func : {GLState::DepthFunc::Lequal, GLState::DepthFunc::Less, GLState::DepthFunc::Equal}) {
+        // A second pass over the same geometry: GL_EQUAL and GL_LEQUAL redraw
+        // exactly the surfaces the first pass left (multipass rendering).
+        GLState then = gl;
+        then.depth_func = func;
+        std::vector<Pass> passes{{&p, gl}, {&second, then}};
+        Frame one = draw_passes(passes, g, Primitive::Triangles, 1);
+        CHECK(distinct_colors(one.fb) > 20u);
+        for (unsigned threads : kThreadCounts) {
+            INFO("depth func " << int(func) << ", threads " << threads);
+            check_same(one, draw_passes(passes, g, Primitive::Triangles, threads));
+        }
+    }
+}
+
+TEST_CASE("a later triangle at equal depth wins with GL_LEQUAL, on every tile", "[raster][threads]") {
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    // Two full-screen quads at the same depth: red, then green.
+    auto quad = [](float r, float gr) {
+        Geometry q;
+        const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (const auto& c : corners) {
+            q.pos.data.insert(q.pos.data.end(), {c[0], c[1], 0.3f, 1.0f});
+            q.color.data.insert(q.color.data.end(), {r, gr, 0.0f, 1.0f});
+        }
+        q.count = 4;
+        return q;
+    };
+    GLState gl;
+    gl.depth_test = true;
+    gl.depth_func = GLState::DepthFunc::Lequal;
+    for (unsigned threads : {1u, 2u, 3u, 7u, 64u}) {
+        p.exec.threads = threads;
+        Framebuffer fb(300, 200);
+        fb.clear_depth(1.0f);
+        Geometry red = quad(1, 0), green = quad(0, 1);
+        REQUIRE(draw(p, gl, fb, Primitive::Quads, {red.pos, red.color}, 4).ok());
+        REQUIRE(draw(p, gl, fb, Primitive::Quads, {green.pos, green.color}, 4).ok());
+        for (int y = 0; y < fb.height; y += 7)
+            for (int x = 0; x < fb.width; x += 5) {
+                INFO("threads " << threads << " pixel " << x << "," << y);
+                REQUIRE(fb.pixel(x, y) == glm::vec4(0, 1, 0, 1));
+            }
+    }
+}
+
+TEST_CASE("large draws set up primitives on the workers, with identical results", "[raster][threads]") {
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    Geometry g = small_triangles(13, 40000);  // several setup jobs
+    GLState gl;
+    gl.depth_test = true;
+    for (bool flat : {false, true}) {
+        gl.flat_shading = flat;  // attribute vectors made per primitive
+        Frame one = draw_geometry(p, g, Primitive::Triangles, 1, gl);
+        CHECK(one.stats.triangles == 40000u);
+        CHECK(distinct_colors(one.fb) > 20u);
+        for (unsigned threads : kThreadCounts) {
+            INFO("flat " << flat << ", threads " << threads);
+            check_same(one, draw_geometry(p, g, Primitive::Triangles, threads, gl));
+        }
+    }
+}
+
+TEST_CASE("discard and gl_FragDepth give identical images with any thread count", "[raster][threads]") {
+    Program discards = compile(kColorVs, R"(
+void main() {
+    if (fract(gl_FragCoord.x * 0.13 + gl_Color.r * 3.0) < 0.3) discard;
+    gl_FragColor = gl_Color;
+})");
+    Program writes_depth = compile(kColorVs, R"(
+void main() {
+    gl_FragDepth = fract(gl_Color.g * 7.0 + gl_FragCoord.y * 0.01);
+    gl_FragColor = gl_Color.bgra;
+})");
+    Geometry g = random_geometry(11, 450);
+    GLState gl;
+    gl.depth_test = true;
+    gl.depth_func = GLState::DepthFunc::Lequal;
+    for (Program* p : {&discards, &writes_depth}) {
+        Frame one = draw_geometry(*p, g, Primitive::Triangles, 1, gl);
+        CHECK(distinct_colors(one.fb) > 20u);
+        for (unsigned threads : kThreadCounts) {
+            INFO("threads " << threads);
+            check_same(one, draw_geometry(*p, g, Primitive::Triangles, threads, gl));
+        }
+    }
+}
+
+TEST_CASE("lines and points across tile borders are identical with any thread count", "[raster][threads]") {
+    Program p = compile(kColorVs, "#version 120\nvoid main() { gl_FragColor = vec4(gl_Color.rgb, gl_PointCoord.x); }");
+    // Over 4096 vertices: the vertices are shaded on the workers too.
+    Geometry g = random_geometry(5, 6000);
+    GLState gl;
+    gl.depth_test = true;
+    gl.depth_func = GLState::DepthFunc::Lequal;
+    for (Primitive prim : {Primitive::Lines, Primitive::LineStrip, Primitive::Points}) {
+        Frame one = draw_geometry(p, g, prim, 1, gl);
+        CHECK(distinct_colors(one.fb) > 20u);
+        for (unsigned threads : kThreadCounts) {
+            INFO("primitive " << int(prim) << ", threads " << threads);
+            check_same(one, draw_geometry(p, g, prim, threads, gl));
+        }
+    }
+}
+
+TEST_CASE("a loop-cap error is reported the same way with any thread count", "[raster][threads]") {
+    Program p = compile(kColorVs, R"(
+void main() {
+    float x = 0.0;
+    // Never ends where red > 0.5; the cap stops it.
+    while (x < 1.0) { x += gl_Color.r > 0.5 ? 0.0 : 0.25; }
+    gl_FragColor = gl_Color * x;
+})");
+    p.exec.max_loop_iterations = 1000;
+    Geometry g = random_geometry(3, 300);
+    std::string first;
+    for (unsigned threads : {1u, 2u, 3u, 7u, 64u}) {
+        p.exec.threads = threads;
+        Framebuffer fb(300, 200);
+        auto stats = draw(p, GLState{}, fb, Primitive::Triangles, {g.pos, g.color}, g.count);
+        REQUIRE_FALSE(stats.ok());
+        if (threads == 1) first = stats.error().str();
+        CHECK(stats.error().str() == first);
+        CHECK(first.find("fs:5") != std::string::npos);
+    }
+}
+
+TEST_CASE("a vertex shader's loop-cap error is the same with any thread count", "[raster][threads]") {
+    Program p = compile(R"(
+void main() {
+    float x = 0.0;
+    while (x < 1.0) { x += gl_Vertex.x > 0.9 ? 0.0 : 0.5; }
+    gl_Position = gl_Vertex * x;
+})", "void main() { gl_FragColor = vec4(1.0); }");
+    p.exec.max_loop_iterations = 1000;
+    Geometry g = random_geometry(9, 9000);
+    std::string first;
+    for (unsigned threads : {1u, 2u, 3u, 7u, 64u}) {
+        p.exec.threads = threads;
+        Framebuffer fb(300, 200);
+        auto stats = draw(p, GLState{}, fb, Primitive::Points, {g.pos, g.color}, g.count);
+        REQUIRE_FALSE(stats.ok());
+        if (threads == 1) first = stats.error().str();
+        CHECK(stats.error().str() == first);
+        CHECK(first.find("vs:4") != std::string::npos);
+    }
+}
