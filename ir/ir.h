@@ -125,6 +125,9 @@ enum class Stage : uint8_t { Vertex, Fragment };
 struct Shader {
     Stage stage = Stage::Vertex;
     std::vector<Kind> regs;  // kind of every register; size = register count
+    // Straight-line code that depends only on uniforms and constants
+    // (ir/hoist.cpp): run once per draw, for all lanes, before any batch.
+    Block prologue;
     Block body;              // global initializers, then main's body (in a Scope)
     std::vector<Function> functions;  // callees of Call nodes
     std::vector<Binding> inputs;      // filled by the caller before running

@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 
 #include "glslrun/glslrun.h"
@@ -190,13 +191,34 @@ void tex(const Step& s, Machine& m);
 
 }  // namespace kernels
 
+// A kernel recompiled for AVX2: `flatten` inlines the generic kernel and
+// everything it calls into this function, so its lane loops vectorize 8 wide.
+// The generic code itself stays baseline x86-64 (no ODR clash between ISAs),
+// and no FMA is enabled, so every lane computes the same bits either way.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GLSLRUN_HAVE_AVX2_KERNELS 1
+template <Kernel K>
+__attribute__((target("avx2"), flatten)) void avx2_kernel(const Step& s, Machine& m) {
+    K(s, m);
+}
+#endif
+
+template <bool kAvx2, Kernel K>
+constexpr Kernel pick_kernel() {
+#ifdef GLSLRUN_HAVE_AVX2_KERNELS
+    if constexpr (kAvx2) return &avx2_kernel<K>;
+#endif
+    return K;
+}
+
 // The kernel of every opcode: Alu ones from the table, Special ones by name.
-inline Kernel kernel_for(ir::Op op) {
+template <bool kAvx2>
+Kernel kernel_for(ir::Op op) {
     switch (op) {
 #define GLSLRUN_KERNEL_Alu(name) \
-    case ir::Op::name: return &kernels::alu<ir::Op::name>;
+    case ir::Op::name: return pick_kernel<kAvx2, &kernels::alu<ir::Op::name>>();
 #define GLSLRUN_KERNEL_Special(name) \
-    case ir::Op::name: return &kernels::name;
+    case ir::Op::name: return pick_kernel<kAvx2, &kernels::name>();
 #define OP(name, arity, res, opnd, kind, expr) GLSLRUN_KERNEL_##kind(name)
 #include "ir/opcodes.def"
 #undef OP
@@ -204,6 +226,20 @@ inline Kernel kernel_for(ir::Op op) {
 #undef GLSLRUN_KERNEL_Alu
     default: return nullptr;
     }
+}
+
+// Picks the kernels for the CPU that runs them, once per Interpreter.
+inline Kernel kernel_for(ir::Op op, bool avx2) { return avx2 ? kernel_for<true>(op) : kernel_for<false>(op); }
+
+// GLSLRUN_NO_AVX2=1 forces the baseline kernels: images must not change.
+inline bool cpu_has_avx2() {
+#ifdef GLSLRUN_HAVE_AVX2_KERNELS
+    const char* off = std::getenv("GLSLRUN_NO_AVX2");
+    if (off && off[0] == '1') return false;
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
 }
 
 }  // namespace glslrun::rt

@@ -52,6 +52,7 @@ struct Interpreter::Impl {
     RunError error;
     bool failed = false;
     int call_depth = 0;
+    bool avx2 = cpu_has_avx2();
 
     Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures)
         : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
@@ -60,6 +61,15 @@ struct Interpreter::Impl {
         machine.textures = textures;
         for (const ir::Function& f : s.functions) functions.push_back(compile_block(f.body));
         main = compile_block(s.body);
+        run_prologue(compile_block(s.prologue));
+    }
+
+    // Uniform code (ir/hoist.cpp), once for all lanes: instructions only,
+    // so it cannot fail.
+    void run_prologue(Range prologue) {
+        ir::FlushDenormals ftz;
+        machine.mask.reset(kAllLanes);
+        run_block(prologue.begin, prologue.end);
     }
 
     uint32_t* reg(ir::Reg r) {
@@ -86,7 +96,7 @@ struct Interpreter::Impl {
         switch (n.kind) {
         case ir::NodeKind::Instr: {
             const ir::Instr& in = n.instr;
-            s.fn = kernel_for(in.op);
+            s.fn = kernel_for(in.op, avx2);
             s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
             for (int k = 0; k < 3; ++k) {
                 s.src[k] = reg(in.src[k]);
