@@ -15,6 +15,7 @@
 // with the same operations, and a lane cannot observe the difference.
 #include <vector>
 
+#include "ir/assigned.h"
 #include "ir/flow.h"
 #include "ir/passes.h"
 
@@ -25,60 +26,6 @@ bool hoistable_op(Op op) {
     return op_info(op).kind == OpKind::Alu || op == Op::konst || op == Op::mov || op == Op::sel ||
            op == Op::uniform || op == Op::uniform_ind;
 }
-
-bool ends_in_exit(const Block& block) { return !block.empty() && flow::is_exit(block.back().kind); }
-
-// Marks the registers that some lane may read before writing them, walking
-// each block with the set of registers every lane reaching it has written.
-struct Assignment {
-    std::vector<bool> maybe_unset;
-
-    void read(Reg r, const std::vector<bool>& set) {
-        if (r < set.size() && !set[r]) maybe_unset[r] = true;
-    }
-
-    void block(const Block& b, std::vector<bool>& set) {
-        for (const Node& n : b) node(n, set);
-    }
-
-    void node(const Node& n, std::vector<bool>& set) {
-        flow::for_each_read(n, [&](Reg r) { read(r, set); });
-        switch (n.kind) {
-        case NodeKind::Instr:
-            // One store_ind writes one element per lane: no element is definitely set.
-            if (!flow::writes_range(n.instr.op)) flow::for_each_write(n.instr, [&](Reg r) { set[r] = true; });
-            break;
-        case NodeKind::If: {
-            std::vector<bool> then_set = set, else_set = set;
-            block(n.body, then_set);
-            block(n.alt, else_set);
-            // Lanes that leave in a branch never reach the join.
-            if (ends_in_exit(n.body)) set = else_set;
-            else if (ends_in_exit(n.alt)) set = then_set;
-            else for (size_t r = 0; r < set.size(); ++r) set[r] = then_set[r] && else_set[r];
-            break;
-        }
-        case NodeKind::Loop: {
-            // Visited once with the entry set: a read that depends on an
-            // earlier iteration's write stays "maybe unset". The loop may
-            // end before any write, so the exit keeps the entry set.
-            std::vector<bool> body_set = set, cont_set = set;
-            block(n.body, body_set);
-            block(n.alt, cont_set);
-            break;
-        }
-        case NodeKind::Scope:
-            if (!flow::returns_early(n.body)) {
-                block(n.body, set);
-            } else {
-                std::vector<bool> inner = set;
-                block(n.body, inner);
-            }
-            break;
-        default: break;  // Call: the callee's writes are not counted as definite
-        }
-    }
-};
 
 struct Hoister {
     Shader& shader;
@@ -144,17 +91,10 @@ void hoist_uniform_code(Shader& shader) {
         for (const Binding& b : *list)
             for (uint32_t i = 0; i < b.count; ++i) h.pin(b.first + i);
 
-    Assignment a{std::vector<bool>(regs, false)};
-    std::vector<bool> set(regs, false);
-    for (const Node& n : shader.prologue) flow::for_each_write(n.instr, [&](Reg r) { set[r] = h.hoisted[r] = true; });
-    a.block(shader.body, set);
-    // Function bodies may run before or after anything: all their reads count as maybe unset.
-    for (const Function& f : shader.functions) {
-        std::vector<bool> none(regs, false);
-        a.block(f.body, none);
-    }
+    for (const Node& n : shader.prologue) flow::for_each_write(n.instr, [&](Reg r) { h.hoisted[r] = true; });
+    std::vector<bool> unset = maybe_read_unset(shader);
     for (size_t r = 0; r < regs; ++r)
-        if (a.maybe_unset[r]) h.pinned[r] = true;
+        if (unset[r]) h.pin(Reg(r));
     h.extract(shader.body);
 }
 

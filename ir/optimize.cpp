@@ -1,5 +1,5 @@
-// The pass pipeline: inline, then (fold, copyprop, dce) until nothing changes
-// (at most a few rounds), then fuse_mad, hoist and a last dce. With
+// The pass pipeline: inline, then (fold, copyprop, dead_stores, dce) until nothing changes
+// (at most a few rounds), then fuse_mad, hoist, dce and regalloc. With
 // GLSLRUN_VERIFY the verifier runs after every pass and its first complaint is
 // returned, naming the pass.
 #include <string>
@@ -37,6 +37,8 @@ std::string optimize(Shader& shader, const PassOptions& options) {
         if (!(error = check(shader, "fold")).empty()) return error;
         propagate_copies(shader);
         if (!(error = check(shader, "copyprop")).empty()) return error;
+        eliminate_dead_stores(shader);
+        if (!(error = check(shader, "dead_stores")).empty()) return error;
         eliminate_dead_code(shader);
         if (!(error = check(shader, "dce")).empty()) return error;
         if (print(shader) == before) break;
@@ -46,7 +48,9 @@ std::string optimize(Shader& shader, const PassOptions& options) {
     hoist_uniform_code(shader);
     if (!(error = check(shader, "hoist")).empty()) return error;
     eliminate_dead_code(shader);
-    return check(shader, "dce");
+    if (!(error = check(shader, "dce")).empty()) return error;
+    allocate_registers(shader);
+    return check(shader, "regalloc");
 }
 
 }  // namespace glslrun::ir

@@ -4,6 +4,7 @@
 // name. Dispatch happens once per instruction (a function pointer per Step).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -16,6 +17,14 @@ namespace glslrun::rt {
 
 struct Step;
 
+// Bit i of a 32-lane mask word: testing against a table (not shifting by the
+// lane index) lets the blend vectorize without AVX2's variable shifts.
+inline constexpr std::array<uint32_t, 32> kLaneBit = [] {
+    std::array<uint32_t, 32> bits{};
+    for (int i = 0; i < 32; ++i) bits[size_t(i)] = 1u << i;
+    return bits;
+}();
+
 // What a kernel can touch: the register file, the uniform store, the bound
 // textures, the mask.
 struct Machine {
@@ -26,12 +35,19 @@ struct Machine {
 
     // Masked register write: inactive lanes keep their old value.
     void write(uint32_t* __restrict dst, const uint32_t* __restrict value) {
-        if (mask.full()) {
+        const LaneMask active = mask.active();
+        if (active == kAllLanes) {
             std::memcpy(dst, value, sizeof(uint32_t) * kLanes);
             return;
         }
-        const uint32_t* __restrict m = mask.words();
-        for (int i = 0; i < kLanes; ++i) dst[i] = (value[i] & m[i]) | (dst[i] & ~m[i]);
+        for (int base = 0; base < kLanes; base += 32) {
+            const uint32_t bits = uint32_t(active >> base);
+            const int n = kLanes - base < 32 ? kLanes - base : 32;
+            for (int i = 0; i < n; ++i) {
+                const uint32_t pick = 0u - uint32_t((bits & kLaneBit[size_t(i)]) != 0);
+                dst[base + i] = (value[base + i] & pick) | (dst[base + i] & ~pick);
+            }
+        }
     }
 };
 
@@ -98,8 +114,9 @@ void alu(const Step& s, Machine& m) {
     emit(s, m, [&](uint32_t* out) { alu_lanes<op>(s, out); });
 }
 
+// Straight from the source: a copy through a temporary stalls store forwarding.
 inline void mov(const Step& s, Machine& m) {
-    emit(s, m, [&](uint32_t* out) { std::memmove(out, s.src[0], sizeof(uint32_t) * kLanes); });
+    if (s.dst != s.src[0]) m.write(s.dst, s.src[0]);
 }
 
 inline void konst(const Step& s, Machine& m) {

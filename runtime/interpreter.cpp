@@ -9,6 +9,9 @@
 #include <vector>
 
 #include <fmt/format.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "runtime/interp_kernels.h"
 
@@ -129,9 +132,19 @@ struct Interpreter::Impl {
         return false;
     }
 
-    LaneMask lanes_true(const uint32_t* cond) const {
+    // Four lanes per SSE2 movemask: this runs at every If.
+    static LaneMask lanes_true(const uint32_t* cond) {
         LaneMask m = 0;
+#if defined(__SSE2__)
+        const __m128i zero = _mm_setzero_si128();
+        for (int i = 0; i < kLanes; i += 4) {
+            __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(cond + i));
+            int is_zero = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, zero)));
+            m |= LaneMask(~is_zero & 0xf) << i;
+        }
+#else
         for (int i = 0; i < kLanes; ++i) m |= LaneMask(cond[i] != 0) << i;
+#endif
         return m;
     }
 

@@ -17,12 +17,6 @@ void hoist(ir::Shader& s) {
     ir::eliminate_dead_code(s);
 }
 
-Reg input(Builder& b, const char* name, Kind k = Kind::F32) {
-    Reg r = b.reg(k);
-    b.input(name, r);
-    return r;
-}
-
 const ir::Instr* prologue_writer(const ir::Shader& s, Reg dst) {
     for (const ir::Node& n : s.prologue)
         if (n.instr.dst == dst) return &n.instr;
