@@ -149,10 +149,11 @@ struct Interpreter::Impl {
     }
 
     // Runs steps [begin, end) under the current mask; false on a run error.
+    // Instructions never change the mask, so only control flow re-checks it.
     bool run_block(uint32_t begin, uint32_t end) {
         ExecMask& mask = machine.mask;
+        if (!mask.any()) return true;
         for (uint32_t i = begin; i < end; ++i) {
-            if (!mask.any()) return true;
             const Step& s = steps[i];
             // Instructions dominate: a predictable branch, not the switch's jump table.
             if (s.kind == ir::NodeKind::Instr) [[likely]] {
@@ -179,6 +180,7 @@ struct Interpreter::Impl {
                 if (!run_call(s.body_begin, s.body_end, s.line)) return false;
                 break;
             }
+            if (!mask.any()) return true;
         }
         return true;
     }
