@@ -54,6 +54,25 @@ TEST_CASE("dead_stores keeps a write that lanes leaving early still see", "[ir][
     CHECK(count_op(t, Op::konst) == 1);
 }
 
+TEST_CASE("dead_stores looks into scopes that cannot return early", "[ir][dead_stores]") {
+    Builder b;
+    Reg x = input(b, "x");
+    Reg cond = input(b, "cond", Kind::Bool);
+    Reg zeroed = b.reg(Kind::F32), kept = b.reg(Kind::F32);
+    b.set_konst(zeroed, bits(5.0f));  // dead: the scope overwrites it first
+    b.set_konst(kept, bits(5.0f));    // kept: lanes returning early still see it
+    b.scope([&] { b.alu_to(zeroed, Op::fmul, {x, x}); });
+    b.scope([&] {
+        b.if_(cond, [&] { b.ret(); });
+        b.alu_to(kept, Op::fadd, {x, x});
+    });
+    b.output("zeroed", zeroed);
+    b.output("kept", kept);
+    ir::Shader t = check_pass(b.sh, dead_stores);
+    REQUIRE(count_op(t, Op::konst) == 1);
+    CHECK(count_nodes(t.body, [&](const ir::Node& n) { return n.instr.op == Op::konst && n.instr.dst == kept; }) == 1);
+}
+
 TEST_CASE("regalloc shares registers between disjoint live ranges", "[ir][regalloc]") {
     Builder b;
     Reg x = input(b, "x");
