@@ -4,14 +4,14 @@
 // several places (a colour accumulated over a light's terms) keep their
 // intermediate `mov`s without this pass.
 //
-// Only instructions may stand between the two writes: control flow could
-// read r, or let some lanes leave (return, break, discard) with r's first
-// value still to be read after the construct. The one exception is a Scope
-// (an inlined function) that cannot return early: every lane entering it runs
-// its body's straight-line code, so the search goes on inside it (outputs are
-// zeroed before main's scope and written inside it). Without control flow
-// between them both writes run under the same mask, so every lane that got
-// the first value gets the second before any read.
+// Between the two writes, control flow must neither read r nor let lanes
+// leave (return, break, continue, calls) with r's first value still to be
+// read after the construct: an If that does neither is passed over (lanes
+// that discard in it are dead; no one reads their r). A Scope (an inlined
+// function) that cannot return early is searched too: every lane entering it
+// runs its body's straight-line code (outputs are zeroed before main's scope
+// and written inside it). So every lane that got the first value gets the
+// second, under the same mask, before any read.
 #include "ir/flow.h"
 #include "ir/passes.h"
 
@@ -34,6 +34,22 @@ bool reads(const Node& n, Reg r) {
 
 enum class Scan { overwritten, kept, unknown };
 
+// True if n's subtree may read r or let lanes leave the code around it (or is
+// too large for the remaining budget).
+bool blocks(const Node& n, Reg r, size_t& budget) {
+    if (budget == 0) return true;
+    --budget;
+    switch (n.kind) {
+    case NodeKind::Return: case NodeKind::Break: case NodeKind::Continue: case NodeKind::Call: return true;
+    default: break;
+    }
+    if (reads(n, r)) return true;
+    for (const Block* inner : {&n.body, &n.alt})
+        for (const Node& c : *inner)
+            if (blocks(c, r, budget)) return true;
+    return false;
+}
+
 // Looks for the overwrite of r in block[from..), within `budget` nodes.
 Scan scan(const Block& block, size_t from, Reg r, size_t& budget) {
     for (size_t j = from; j < block.size(); ++j) {
@@ -42,6 +58,10 @@ Scan scan(const Block& block, size_t from, Reg r, size_t& budget) {
         if (n.kind == NodeKind::Scope && !flow::returns_early(n.body)) {
             Scan inside = scan(n.body, 0, r, budget);
             if (inside != Scan::unknown) return inside;
+            continue;
+        }
+        if (n.kind == NodeKind::If) {
+            if (blocks(n, r, budget)) return Scan::kept;
             continue;
         }
         if (n.kind != NodeKind::Instr || reads(n, r)) return Scan::kept;

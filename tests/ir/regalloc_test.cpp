@@ -73,6 +73,27 @@ TEST_CASE("dead_stores looks into scopes that cannot return early", "[ir][dead_s
     CHECK(count_nodes(t.body, [&](const ir::Node& n) { return n.instr.op == Op::konst && n.instr.dst == kept; }) == 1);
 }
 
+TEST_CASE("dead_stores passes over branches that neither read nor leave", "[ir][dead_stores]") {
+    Builder b;
+    Reg x = input(b, "x");
+    Reg cond = input(b, "cond", Kind::Bool);
+    Reg v = b.reg(Kind::F32), w = b.reg(Kind::F32);
+    b.set_konst(v, bits(5.0f));  // dead: the If only writes v, then v is overwritten
+    b.set_konst(w, bits(6.0f));  // kept: the second If reads it
+    b.if_(cond, [&] {
+        b.alu_to(v, Op::fmul, {x, x});
+        b.discard();
+    });
+    b.if_(cond, [&] { b.alu_to(x, Op::fadd, {w, x}); });
+    b.alu_to(v, Op::fadd, {x, x});
+    b.alu_to(w, Op::fadd, {x, x});
+    b.output("v", v);
+    b.output("w", w);
+    ir::Shader t = check_pass(b.sh, dead_stores);
+    REQUIRE(count_op(t, Op::konst) == 1);
+    CHECK(count_nodes(t.body, [&](const ir::Node& n) { return n.instr.op == Op::konst && n.instr.dst == w; }) == 1);
+}
+
 TEST_CASE("regalloc shares registers between disjoint live ranges", "[ir][regalloc]") {
     Builder b;
     Reg x = input(b, "x");
