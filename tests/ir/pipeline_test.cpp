@@ -66,6 +66,7 @@ std::vector<uint32_t> outputs(const ir::Shader& s, const std::vector<uint32_t>& 
 }  // namespace
 
 TEST_CASE("optimized shaders compute the unoptimized shaders' bits", "[ir][pipeline]") {
+    // Each shader with its sibling of the other stage, or a trivial one.
     const ShaderSource vs{"pass.vert", "void main() { gl_Position = ftransform(); }\n"};
     const ShaderSource fsrc{"pass.frag", "void main() { gl_FragColor = vec4(1.0); }\n"};
     int shaders = 0;
@@ -74,8 +75,10 @@ TEST_CASE("optimized shaders compute the unoptimized shaders' bits", "[ir][pipel
             const fs::path p = entry.path();
             const bool vertex = p.extension() == ".vert";
             if (!vertex && p.extension() != ".frag") continue;
-            ShaderSource src{p.filename().string(), slurp(p)};
-            auto program = frontend::compile_program({vertex ? src : vs}, {vertex ? fsrc : src}, CompileOptions{});
+            ShaderSource src{p.filename().string(), slurp(p)}, other = vertex ? fsrc : vs;
+            fs::path sibling = fs::path(p).replace_extension(vertex ? ".frag" : ".vert");
+            if (fs::exists(sibling)) other = ShaderSource{sibling.filename().string(), slurp(sibling)};
+            auto program = frontend::compile_program({vertex ? src : other}, {vertex ? other : src}, CompileOptions{});
             if (!program) continue;  // deliberately broken lecture shaders
             const ir::Shader& original = vertex ? program->vertex : program->fragment;
             ir::Shader optimized = original;
