@@ -41,7 +41,9 @@ struct Hoister {
         flow::walk(block, [&](const Node& n) {
             if (n.kind != NodeKind::Instr) return;
             const Instr& in = n.instr;
-            flow::for_each_write(in, [&](Reg r) { ++writes[r]; });
+            flow::for_each_write(in, [&](Reg r) {
+                if (r < writes.size()) ++writes[r];
+            });
             if (flow::reads_range(in.op) || flow::writes_range(in.op)) flow::for_each_in_range(in, [&](Reg r) { pin(r); });
             if (in.op == Op::tex) {
                 flow::for_each_tex_operand(in, [&](Reg r) { pin(r); });
