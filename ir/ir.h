@@ -52,6 +52,9 @@ struct Instr {
     Reg dst = kNoReg;
     Reg src[3] = {kNoReg, kNoReg, kNoReg};
     uint32_t imm[3] = {0, 0, 0};
+    // Set by ir/regalloc.cpp: no lane can read what dst held before, so the
+    // interpreter may write every lane instead of blending under the mask.
+    bool unmasked = false;
 };
 
 // What a `tex` instruction samples and where its operands are. The operand

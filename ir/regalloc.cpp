@@ -14,6 +14,11 @@
 // only moves forward through it, except around loops: a register used in a
 // loop and outside it lives through the whole loop), and a linear scan gives
 // each a register of its kind that no overlapping interval holds.
+//
+// The sole write of such a register is marked Instr::unmasked: every lane
+// that reads the register runs that write first, and the register's other
+// tenants are dead there, so the lanes the mask leaves out hold nothing
+// anyone reads and the interpreter may skip the blend.
 #include <algorithm>
 #include <vector>
 
@@ -130,6 +135,33 @@ struct Allocator {
     }
 };
 
+// Marks the instructions that are the only write of a register that is not pinned.
+void mark_unmasked(Block& block, const std::vector<bool>& pinned, const std::vector<uint32_t>& writes) {
+    for (Node& n : block) {
+        if (n.kind == NodeKind::Instr) {
+            Reg d = n.instr.dst;
+            n.instr.unmasked = d != kNoReg && d < pinned.size() && !pinned[d] && writes[d] == 1 &&
+                               !flow::writes_range(n.instr.op) && n.instr.op != Op::tex;
+        }
+        mark_unmasked(n.body, pinned, writes);
+        mark_unmasked(n.alt, pinned, writes);
+    }
+}
+
+std::vector<uint32_t> count_writes(const Shader& shader) {
+    std::vector<uint32_t> writes(shader.regs.size(), 0);
+    auto count = [&](const Node& n) {
+        if (n.kind == NodeKind::Instr)
+            flow::for_each_write(n.instr, [&](Reg r) {
+                if (r < writes.size()) ++writes[r];
+            });
+    };
+    flow::walk(shader.prologue, count);
+    flow::walk(shader.body, count);
+    for (const Function& f : shader.functions) flow::walk(f.body, count);
+    return writes;
+}
+
 void rename(Block& block, const std::vector<Reg>& map) {
     auto re = [&](Reg& r) {
         if (r != kNoReg && r < map.size()) r = map[r];
@@ -155,6 +187,10 @@ void allocate_registers(Shader& shader) {
     Allocator a{shader, std::vector<bool>(regs, false), std::vector<Interval>(regs)};
     a.pin_all();
     a.intervals(shader.body);
+    std::vector<uint32_t> writes = count_writes(shader);
+    mark_unmasked(shader.prologue, a.pinned, writes);
+    mark_unmasked(shader.body, a.pinned, writes);
+    for (Function& f : shader.functions) mark_unmasked(f.body, a.pinned, writes);
     std::vector<Kind> kinds;
     std::vector<Reg> map = a.assign(kinds);
     rename(shader.prologue, map);

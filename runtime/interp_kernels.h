@@ -60,6 +60,7 @@ struct Step {
     uint32_t* dst = nullptr;
     const uint32_t* src[3] = {nullptr, nullptr, nullptr};
     uint32_t imm[3] = {0, 0, 0};
+    bool unmasked = false;           // ir::Instr::unmasked: write every lane
     const uint32_t* cond = nullptr;  // If
     uint32_t body_begin = 0, body_end = 0;  // If then / Loop body / Scope body
     uint32_t alt_begin = 0, alt_end = 0;    // If else / Loop continue block
@@ -76,11 +77,12 @@ inline uint32_t clamp_index(uint32_t raw, uint32_t count) {
 }
 
 // Runs a lane-wise body `lanes(out)` straight into the destination when every
-// lane is active, else into a temporary that is blended in. Bodies must be
-// elementwise (lane i reads only lane i) so dst may alias an operand.
+// lane is active (or none can tell), else into a temporary that is blended in.
+// Bodies must be elementwise (lane i reads only lane i) so dst may alias an
+// operand.
 template <class Lanes>
 inline void emit(const Step& s, Machine& m, Lanes&& lanes) {
-    if (m.mask.full()) {
+    if (s.unmasked || m.mask.full()) {
         lanes(s.dst);
         return;
     }
@@ -116,7 +118,9 @@ void alu(const Step& s, Machine& m) {
 
 // Straight from the source: a copy through a temporary stalls store forwarding.
 inline void mov(const Step& s, Machine& m) {
-    if (s.dst != s.src[0]) m.write(s.dst, s.src[0]);
+    if (s.dst == s.src[0]) return;
+    if (s.unmasked) std::memcpy(s.dst, s.src[0], sizeof(uint32_t) * kLanes);
+    else m.write(s.dst, s.src[0]);
 }
 
 inline void konst(const Step& s, Machine& m) {

@@ -101,6 +101,7 @@ struct Interpreter::Impl {
             const ir::Instr& in = n.instr;
             s.fn = kernel_for(in.op, avx2);
             s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
+            s.unmasked = in.unmasked;
             for (int k = 0; k < 3; ++k) {
                 s.src[k] = reg(in.src[k]);
                 s.imm[k] = in.imm[k];

@@ -154,3 +154,28 @@ TEST_CASE("regalloc keeps indexed ranges contiguous", "[ir][regalloc]") {
     ir::Shader t = check_pass(b.sh, regalloc);
     CHECK(t.regs.size() < b.sh.regs.size());
 }
+
+TEST_CASE("regalloc lets the single write of a shared register skip the mask", "[ir][regalloc]") {
+    Builder b;
+    Reg x = input(b, "x");
+    Reg cond = input(b, "cond", Kind::Bool);
+    Reg early = chain(b, x, 4);  // temporaries whose registers the branch reuses
+    Reg var = b.reg(Kind::F32);
+    b.mov(var, x);
+    Reg t = b.reg(Kind::F32);
+    b.if_(cond, [&] {
+        b.alu_to(t, Op::fmul, {early, x});  // written once, read in the branch: unmasked
+        b.alu_to(var, Op::fadd, {var, t});  // var's second write: lanes outside keep x
+    });
+    Reg out = b.alu(Op::fadd, {var, early});
+    b.output("out", out);
+    ir::Shader s = check_pass(b.sh, regalloc);
+    const ir::Node* branch = nullptr;
+    for (const ir::Node& n : s.body)
+        if (n.kind == NodeKind::If) branch = &n;
+    REQUIRE(branch);
+    REQUIRE(branch->body.size() == 2);
+    CHECK(branch->body[0].instr.unmasked);        // the fmul
+    CHECK_FALSE(branch->body[1].instr.unmasked);  // var's second write
+    CHECK_FALSE(s.body.back().instr.unmasked);    // the output
+}
