@@ -22,6 +22,7 @@ struct Eliminator {
     void collect_reads() {
         read.assign(shader.regs.size(), false);
         auto visit = [&](const Node& n) { flow::for_each_read(n, [&](Reg r) { mark(r); }); };
+        flow::walk(shader.prologue, visit);
         flow::walk(shader.body, visit);
         for (const Function& f : shader.functions) flow::walk(f.body, visit);
         for (const Binding& b : shader.outputs)
@@ -66,6 +67,7 @@ struct Eliminator {
     bool pass() {
         changed = false;
         collect_reads();
+        sweep(shader.prologue);
         sweep(shader.body);
         for (Function& f : shader.functions) sweep(f.body);
         return changed;

@@ -52,6 +52,9 @@ struct Instr {
     Reg dst = kNoReg;
     Reg src[3] = {kNoReg, kNoReg, kNoReg};
     uint32_t imm[3] = {0, 0, 0};
+    // Set by ir/regalloc.cpp: no lane can read what dst held before, so the
+    // interpreter may write every lane instead of blending under the mask.
+    bool unmasked = false;
 };
 
 // What a `tex` instruction samples and where its operands are. The operand
@@ -125,6 +128,9 @@ enum class Stage : uint8_t { Vertex, Fragment };
 struct Shader {
     Stage stage = Stage::Vertex;
     std::vector<Kind> regs;  // kind of every register; size = register count
+    // Straight-line code that depends only on uniforms and constants
+    // (ir/hoist.cpp): run once per draw, for all lanes, before any batch.
+    Block prologue;
     Block body;              // global initializers, then main's body (in a Scope)
     std::vector<Function> functions;  // callees of Call nodes
     std::vector<Binding> inputs;      // filled by the caller before running

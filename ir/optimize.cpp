@@ -1,6 +1,7 @@
-// The pass pipeline: inline, then (fold, copyprop, dce) until nothing changes
-// (at most a few rounds). With GLSLRUN_VERIFY the verifier runs after every
-// pass and its first complaint is returned, naming the pass.
+// The pass pipeline: inline, then (fold, copyprop, dead_stores, dce) until nothing changes
+// (at most a few rounds), then fuse_mad, hoist, dce and regalloc. With
+// GLSLRUN_VERIFY the verifier runs after every pass and its first complaint is
+// returned, naming the pass.
 #include <string>
 
 #include "ir/passes.h"
@@ -36,11 +37,20 @@ std::string optimize(Shader& shader, const PassOptions& options) {
         if (!(error = check(shader, "fold")).empty()) return error;
         propagate_copies(shader);
         if (!(error = check(shader, "copyprop")).empty()) return error;
+        eliminate_dead_stores(shader);
+        if (!(error = check(shader, "dead_stores")).empty()) return error;
         eliminate_dead_code(shader);
         if (!(error = check(shader, "dce")).empty()) return error;
         if (print(shader) == before) break;
     }
-    return {};
+    fuse_multiply_add(shader);
+    if (!(error = check(shader, "fuse_mad")).empty()) return error;
+    hoist_uniform_code(shader);
+    if (!(error = check(shader, "hoist")).empty()) return error;
+    eliminate_dead_code(shader);
+    if (!(error = check(shader, "dce")).empty()) return error;
+    allocate_registers(shader);
+    return check(shader, "regalloc");
 }
 
 }  // namespace glslrun::ir

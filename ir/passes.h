@@ -30,6 +30,20 @@ void propagate_copies(Shader& shader);
 // control flow.
 void eliminate_dead_code(Shader& shader);
 
+// ir/fuse_mad.cpp: an fmul whose only reader is an fadd/fsub in the same
+// block becomes part of it (fmad, fmsub, fnmadd: the same two roundings).
+void fuse_multiply_add(Shader& shader);
+// ir/dead_stores.cpp: removes a write that the same straight-line code
+// overwrites before any read.
+void eliminate_dead_stores(Shader& shader);
+// ir/hoist.cpp: moves instructions that depend only on uniforms and constants
+// into Shader::prologue, where they run once per draw instead of per batch.
+void hoist_uniform_code(Shader& shader);
+
+// ir/regalloc.cpp: renumbers registers so that values with disjoint live
+// ranges share one; the register file shrinks. Runs last.
+void allocate_registers(Shader& shader);
+
 // ir/uniform_reads.cpp: sets Uniform::read on the leaves whose words some
 // `uniform`/`uniform_ind` instruction of either shader reads (after
 // optimization: GL's "active" uniforms, finer grained, per struct member).

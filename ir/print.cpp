@@ -113,6 +113,11 @@ std::string print(const Shader& shader) {
         print_block(out, shader.functions[i].body, 1);
         out += "}\n";
     }
+    if (!shader.prologue.empty()) {
+        out += "prologue {\n";
+        print_block(out, shader.prologue, 1);
+        out += "}\n";
+    }
     out += "main {\n";
     print_block(out, shader.body, 1);
     out += "}\n";

@@ -27,6 +27,7 @@ void mark_words(const Block& block, std::vector<bool>& read) {
 void mark_read_uniforms(Program& program) {
     std::vector<bool> read(program.uniform_words, false);
     for (const Shader* shader : {&program.vertex, &program.fragment}) {
+        mark_words(shader->prologue, read);
         mark_words(shader->body, read);
         for (const Function& f : shader->functions) mark_words(f.body, read);
     }

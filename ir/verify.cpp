@@ -160,6 +160,12 @@ std::string verify(const Shader& shader) {
     for (size_t i = 0; i < shader.functions.size() && v.error.empty(); ++i)
         if (!v.block(shader.functions[i].body, 0, 1))
             v.error = fmt::format("function {}: {}", shader.functions[i].name, v.error);
+    // The prologue runs once for all lanes: instructions only.
+    for (size_t i = 0; i < shader.prologue.size() && v.error.empty(); ++i) {
+        const Node& n = shader.prologue[i];
+        if (n.kind == NodeKind::Instr) v.instr(n);
+        else v.fail(n, "control flow in the prologue");
+    }
     if (v.error.empty()) v.block(shader.body, 0, 1);
     return v.error;
 }

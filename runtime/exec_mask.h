@@ -36,8 +36,6 @@ public:
     bool any() const { return exec_ != 0; }
     bool full() const { return exec_ == kAllLanes; }
     LaneMask alive() const { return alive_; }
-    // Per lane: ~0u when active, 0 when not (for branch-free blending).
-    const uint32_t* words() const { return words_; }
 
     // --- if / else / endif
     IfFrame if_push(LaneMask cond) {
@@ -104,13 +102,11 @@ public:
 
 private:
     LaneMask remaining(LaneMask entry) const { return entry & alive_ & ~brk_ & ~cont_ & ~ret_; }
-    void set(LaneMask m) {
-        exec_ = m;
-        for (int i = 0; i < kLanes; ++i) words_[i] = 0u - uint32_t((m >> i) & 1);
-    }
+    // Masks change at every branch; per-lane blend words are derived only by
+    // the writes that need them (Machine::write).
+    void set(LaneMask m) { exec_ = m; }
 
     LaneMask exec_ = 0, alive_ = 0, brk_ = 0, cont_ = 0, ret_ = 0;
-    alignas(64) uint32_t words_[kLanes] = {};
 };
 
 }  // namespace glslrun::rt

@@ -4,7 +4,9 @@
 // name. Dispatch happens once per instruction (a function pointer per Step).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 
 #include "glslrun/glslrun.h"
@@ -14,6 +16,14 @@
 namespace glslrun::rt {
 
 struct Step;
+
+// Bit i of a 32-lane mask word: testing against a table (not shifting by the
+// lane index) lets the blend vectorize without AVX2's variable shifts.
+inline constexpr std::array<uint32_t, 32> kLaneBit = [] {
+    std::array<uint32_t, 32> bits{};
+    for (int i = 0; i < 32; ++i) bits[size_t(i)] = 1u << i;
+    return bits;
+}();
 
 // What a kernel can touch: the register file, the uniform store, the bound
 // textures, the mask.
@@ -25,12 +35,19 @@ struct Machine {
 
     // Masked register write: inactive lanes keep their old value.
     void write(uint32_t* __restrict dst, const uint32_t* __restrict value) {
-        if (mask.full()) {
+        const LaneMask active = mask.active();
+        if (active == kAllLanes) {
             std::memcpy(dst, value, sizeof(uint32_t) * kLanes);
             return;
         }
-        const uint32_t* __restrict m = mask.words();
-        for (int i = 0; i < kLanes; ++i) dst[i] = (value[i] & m[i]) | (dst[i] & ~m[i]);
+        for (int base = 0; base < kLanes; base += 32) {
+            const uint32_t bits = uint32_t(active >> base);
+            const int n = kLanes - base < 32 ? kLanes - base : 32;
+            for (int i = 0; i < n; ++i) {
+                const uint32_t pick = 0u - uint32_t((bits & kLaneBit[size_t(i)]) != 0);
+                dst[base + i] = (value[base + i] & pick) | (dst[base + i] & ~pick);
+            }
+        }
     }
 };
 
@@ -43,6 +60,7 @@ struct Step {
     uint32_t* dst = nullptr;
     const uint32_t* src[3] = {nullptr, nullptr, nullptr};
     uint32_t imm[3] = {0, 0, 0};
+    bool unmasked = false;           // ir::Instr::unmasked: write every lane
     const uint32_t* cond = nullptr;  // If
     uint32_t body_begin = 0, body_end = 0;  // If then / Loop body / Scope body
     uint32_t alt_begin = 0, alt_end = 0;    // If else / Loop continue block
@@ -59,11 +77,12 @@ inline uint32_t clamp_index(uint32_t raw, uint32_t count) {
 }
 
 // Runs a lane-wise body `lanes(out)` straight into the destination when every
-// lane is active, else into a temporary that is blended in. Bodies must be
-// elementwise (lane i reads only lane i) so dst may alias an operand.
+// lane is active (or none can tell), else into a temporary that is blended in.
+// Bodies must be elementwise (lane i reads only lane i) so dst may alias an
+// operand.
 template <class Lanes>
 inline void emit(const Step& s, Machine& m, Lanes&& lanes) {
-    if (m.mask.full()) {
+    if (s.unmasked || m.mask.full()) {
         lanes(s.dst);
         return;
     }
@@ -97,8 +116,11 @@ void alu(const Step& s, Machine& m) {
     emit(s, m, [&](uint32_t* out) { alu_lanes<op>(s, out); });
 }
 
+// Straight from the source: a copy through a temporary stalls store forwarding.
 inline void mov(const Step& s, Machine& m) {
-    emit(s, m, [&](uint32_t* out) { std::memmove(out, s.src[0], sizeof(uint32_t) * kLanes); });
+    if (s.dst == s.src[0]) return;
+    if (s.unmasked) std::memcpy(s.dst, s.src[0], sizeof(uint32_t) * kLanes);
+    else m.write(s.dst, s.src[0]);
 }
 
 inline void konst(const Step& s, Machine& m) {
@@ -190,13 +212,34 @@ void tex(const Step& s, Machine& m);
 
 }  // namespace kernels
 
+// A kernel recompiled for AVX2: `flatten` inlines the generic kernel and
+// everything it calls into this function, so its lane loops vectorize 8 wide.
+// The generic code itself stays baseline x86-64 (no ODR clash between ISAs),
+// and no FMA is enabled, so every lane computes the same bits either way.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GLSLRUN_HAVE_AVX2_KERNELS 1
+template <Kernel K>
+__attribute__((target("avx2"), flatten)) void avx2_kernel(const Step& s, Machine& m) {
+    K(s, m);
+}
+#endif
+
+template <bool kAvx2, Kernel K>
+constexpr Kernel pick_kernel() {
+#ifdef GLSLRUN_HAVE_AVX2_KERNELS
+    if constexpr (kAvx2) return &avx2_kernel<K>;
+#endif
+    return K;
+}
+
 // The kernel of every opcode: Alu ones from the table, Special ones by name.
-inline Kernel kernel_for(ir::Op op) {
+template <bool kAvx2>
+Kernel kernel_for(ir::Op op) {
     switch (op) {
 #define GLSLRUN_KERNEL_Alu(name) \
-    case ir::Op::name: return &kernels::alu<ir::Op::name>;
+    case ir::Op::name: return pick_kernel<kAvx2, &kernels::alu<ir::Op::name>>();
 #define GLSLRUN_KERNEL_Special(name) \
-    case ir::Op::name: return &kernels::name;
+    case ir::Op::name: return pick_kernel<kAvx2, &kernels::name>();
 #define OP(name, arity, res, opnd, kind, expr) GLSLRUN_KERNEL_##kind(name)
 #include "ir/opcodes.def"
 #undef OP
@@ -204,6 +247,20 @@ inline Kernel kernel_for(ir::Op op) {
 #undef GLSLRUN_KERNEL_Alu
     default: return nullptr;
     }
+}
+
+// Picks the kernels for the CPU that runs them, once per Interpreter.
+inline Kernel kernel_for(ir::Op op, bool avx2) { return avx2 ? kernel_for<true>(op) : kernel_for<false>(op); }
+
+// GLSLRUN_NO_AVX2=1 forces the baseline kernels: images must not change.
+inline bool cpu_has_avx2() {
+#ifdef GLSLRUN_HAVE_AVX2_KERNELS
+    const char* off = std::getenv("GLSLRUN_NO_AVX2");
+    if (off && off[0] == '1') return false;
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
 }
 
 }  // namespace glslrun::rt

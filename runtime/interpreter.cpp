@@ -9,6 +9,9 @@
 #include <vector>
 
 #include <fmt/format.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "runtime/interp_kernels.h"
 
@@ -52,6 +55,7 @@ struct Interpreter::Impl {
     RunError error;
     bool failed = false;
     int call_depth = 0;
+    bool avx2 = cpu_has_avx2();
 
     Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures)
         : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
@@ -60,6 +64,15 @@ struct Interpreter::Impl {
         machine.textures = textures;
         for (const ir::Function& f : s.functions) functions.push_back(compile_block(f.body));
         main = compile_block(s.body);
+        run_prologue(compile_block(s.prologue));
+    }
+
+    // Uniform code (ir/hoist.cpp), once for all lanes: instructions only,
+    // so it cannot fail.
+    void run_prologue(Range prologue) {
+        ir::FlushDenormals ftz;
+        machine.mask.reset(kAllLanes);
+        run_block(prologue.begin, prologue.end);
     }
 
     uint32_t* reg(ir::Reg r) {
@@ -86,8 +99,9 @@ struct Interpreter::Impl {
         switch (n.kind) {
         case ir::NodeKind::Instr: {
             const ir::Instr& in = n.instr;
-            s.fn = kernel_for(in.op);
+            s.fn = kernel_for(in.op, avx2);
             s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
+            s.unmasked = in.unmasked;
             for (int k = 0; k < 3; ++k) {
                 s.src[k] = reg(in.src[k]);
                 s.imm[k] = in.imm[k];
@@ -119,17 +133,28 @@ struct Interpreter::Impl {
         return false;
     }
 
-    LaneMask lanes_true(const uint32_t* cond) const {
+    // Four lanes per SSE2 movemask: this runs at every If.
+    static LaneMask lanes_true(const uint32_t* cond) {
         LaneMask m = 0;
+#if defined(__SSE2__)
+        const __m128i zero = _mm_setzero_si128();
+        for (int i = 0; i < kLanes; i += 4) {
+            __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(cond + i));
+            int is_zero = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, zero)));
+            m |= LaneMask(~is_zero & 0xf) << i;
+        }
+#else
         for (int i = 0; i < kLanes; ++i) m |= LaneMask(cond[i] != 0) << i;
+#endif
         return m;
     }
 
     // Runs steps [begin, end) under the current mask; false on a run error.
+    // Instructions never change the mask, so only control flow re-checks it.
     bool run_block(uint32_t begin, uint32_t end) {
         ExecMask& mask = machine.mask;
+        if (!mask.any()) return true;
         for (uint32_t i = begin; i < end; ++i) {
-            if (!mask.any()) return true;
             const Step& s = steps[i];
             // Instructions dominate: a predictable branch, not the switch's jump table.
             if (s.kind == ir::NodeKind::Instr) [[likely]] {
@@ -156,6 +181,7 @@ struct Interpreter::Impl {
                 if (!run_call(s.body_begin, s.body_end, s.line)) return false;
                 break;
             }
+            if (!mask.any()) return true;
         }
         return true;
     }

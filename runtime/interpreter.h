@@ -27,8 +27,10 @@ struct RunError {
 class Interpreter {
 public:
     // `uniforms` must stay alive while the interpreter runs; it is the
-    // program's uniform store (one 32-bit word per component). `textures`
-    // (kMaxTextureUnits units, may be null: nothing bound) likewise.
+    // program's uniform store (one 32-bit word per component). Its values
+    // must not change during the interpreter's life: the shader's prologue
+    // (uniform-only code) runs once, here. `textures` (kMaxTextureUnits
+    // units, may be null: nothing bound) must stay alive too.
     Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
                 const GLState::TextureUnit* textures = nullptr);
     ~Interpreter();

@@ -37,6 +37,13 @@ inline const ir::Instr* writer_of(const ir::Shader& s, Reg dst) {
     return found;
 }
 
+// A fresh register bound as an input.
+inline Reg input(Builder& b, const char* name, Kind k = Kind::F32) {
+    Reg r = b.reg(k);
+    b.input(name, r);
+    return r;
+}
+
 // Per-lane input values by kind: varied, deterministic.
 inline uint32_t input_value(Kind k, uint32_t reg, int lane) {
     int v = int(lane * 7 + reg * 3) % 11 - 4;

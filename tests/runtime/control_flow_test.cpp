@@ -195,7 +195,7 @@ TEST_CASE("a loop past the iteration cap stops the run with an error", "[runtime
 TEST_CASE("a never-taken branch around an exponential call tree is skipped", "[runtime][cf]") {
     Builder b;
     Reg x = b.reg(Kind::I32), y = b.reg(Kind::I32);
-    Reg k1 = b.ki(1), never = b.kb(false);
+    Reg k1 = b.ki(1), never = b.kb(false), always = b.kb(true);
     // f63 increments; f_k calls f_{k+1} twice: 2^64 calls if executed.
     std::vector<uint32_t> ids(64);
     ids[63] = b.function("f63", [&] { b.alu_to(y, Op::iadd, {y, k1}); });
@@ -205,6 +205,7 @@ TEST_CASE("a never-taken branch around an exponential call tree is skipped", "[r
             b.call(ids[k + 1]);
         });
     b.if_(never, [&] { b.call(ids[0]); });
+    b.if_(always, {}, [&] { b.call(ids[0]); });  // the else side is skipped too
     b.call(ids[55]);  // 2^8 calls do run
     Runner r(b.sh);
     r.set(x, [](int l) { return bits(int32_t(l)); });
