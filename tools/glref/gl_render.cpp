@@ -379,8 +379,10 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     if (!context) return context.error();
     const GLFunctions& gl = (*context)->gl();
     if (Status st = (*context)->make_framebuffer(scene.width, scene.height); !st) return st.error();
+    auto compile_start = std::chrono::steady_clock::now();
     auto program = build_program(gl, vertex, fragment);
     if (!program) return program.error();
+    double compile_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - compile_start).count();
     if (Status st = set_scene_state(gl, scene); !st) return st.error();
     if (Status st = upload_textures(gl, scene, options.upload_generated_mipmaps); !st) return st.error();
     std::vector<double> seconds;
@@ -391,7 +393,7 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     }
     auto image = read_back(scene.width, scene.height);
     if (!image) return image.error();
-    return MesaRender{std::move(*image), (*context)->renderer(), std::move(seconds)};
+    return MesaRender{std::move(*image), (*context)->renderer(), std::move(seconds), compile_seconds};
 }
 
 }  // namespace glslrun::glref
