@@ -25,7 +25,7 @@ import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# name, vertex shader, fragment shader, scene file, teapot subdivisions
+# program: shaders/<stem>.vert and .frag, and its scene in scenes/
 PROGRAMS = {
     "spot": ("spot_pix_fixed", "spot.toml"),
     "directional": ("dir_vert", "directional.toml"),
