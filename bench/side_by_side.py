@@ -7,6 +7,7 @@ medians over the runs and the ratios. Both tools print the same `key value` line
 (tools/scene/bench_report.h); this script only parses them.
 
     /usr/bin/python3 bench/side_by_side.py --build build [--runs 5] [--plot perf.png] [--only spot]
+    /usr/bin/python3 bench/side_by_side.py --build build --threads 1,2,4,8,16 --only "spot pixel"
 
 Scene variants (teapot subdivision) are written to a temporary directory from the
 scene files in scenes/; the image size is given with --size. Thread counts: glslrun
@@ -38,15 +39,15 @@ def case(name, program, subdivisions, size, threads, renderers, kind="frames"):
                 threads=threads, renderers=renderers, kind=kind)
 
 
-def cases():
+def cases(thread_counts):
     """The cases of issue #6: the frame time at 1080p, then the first frame at 512x512."""
     out = []
     for sub in (10, 64):
-        for threads in (1, 2):
+        for threads in thread_counts:
             mesa = ["llvmpipe", "softpipe"] if threads == 1 else ["llvmpipe"]
             out.append(case(f"spot pixel, sub {sub}", "spot", sub, "1920x1080", threads, mesa))
     for program in ("directional", "minimal"):
-        for threads in (1, 2):
+        for threads in thread_counts:
             out.append(case(f"{program} vertex-bound, sub 64", program, 64, "1920x1080", threads,
                             ["llvmpipe"]))
     for program in PROGRAMS:
@@ -195,16 +196,24 @@ def main():
     ap.add_argument("--runs", type=int, default=5, help="interleaved runs per case (default 5)")
     ap.add_argument("--frames", type=int, default=10, help="--bench N for glslrun and llvmpipe (default 10)")
     ap.add_argument("--softpipe-frames", type=int, default=3, help="--bench N for softpipe (default 3)")
+    ap.add_argument("--threads", default="1,2",
+                    help="thread counts of the 1080p cases, e.g. 1,2,4,8,16 for a scaling run (default 1,2)")
     ap.add_argument("--only", default="", help="run only cases whose name contains this text")
     ap.add_argument("--plot", help="write a bar chart (PNG) here; needs python3-matplotlib")
     ap.add_argument("--json", help="write the rows as JSON here")
     args = ap.parse_args()
     if args.runs < 1 or args.frames < 1 or args.softpipe_frames < 1:
         ap.error("--runs, --frames and --softpipe-frames must be at least 1")
+    try:
+        thread_counts = [int(t) for t in args.threads.split(",")]
+    except ValueError:
+        thread_counts = []
+    if not thread_counts or not all(1 <= t <= 256 for t in thread_counts):
+        ap.error(f"--threads '{args.threads}': a comma-separated list of counts 1..256")
     for tool in ("glslrun", "glref"):
         if not os.access(os.path.join(args.build, tool), os.X_OK):
             ap.error(f"{args.build}/{tool} not found: build the glslrun and glref targets")
-    chosen = [c for c in cases() if args.only in c["name"]]
+    chosen = [c for c in cases(thread_counts) if args.only in c["name"]]
     print(f"load average at start: {load()}; {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}", flush=True)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:

@@ -44,6 +44,10 @@ check_keys "$tmp/out" 3 $times vertex_ms raster_ms fragment_ms output_ms vertice
 [ "$(value threads "$tmp/out")" = 2 ] || fail "threads is not 2"
 [ "$(value triangles "$tmp/out")" = 6400 ] || fail "triangles is not one frame's 6400 (32 patches, 10x10, 2 each)"
 "$glslrun" --compare "$tmp/one.png" "$tmp/bench.png" >/dev/null || fail "--bench changed the image"
+# Nor does the thread count (none of the runs above or below may differ by a bit).
+"$glslrun" "$vs" "$fs" "$scene" --size 64x48 -o "$tmp/t64.png" --bench 2 --threads 64 >/dev/null ||
+    fail "--threads 64 --bench 2 failed"
+"$glslrun" --compare "$tmp/one.png" "$tmp/t64.png" >/dev/null || fail "--threads 64 changed the image"
 
 # --bench with --compare and --stats: both still work, and the exit status is the comparison's.
 "$glslrun" "$vs" "$fs" "$scene" --size 64x48 -o "$tmp/c.png" --bench 1 --stats --compare "$tmp/one.png" \
