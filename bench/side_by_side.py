@@ -130,6 +130,7 @@ def summarize(c, runs):
     row = {"case": c["name"], "size": c["size"], "threads": c["threads"], "metric": key}
     for r, values in runs.items():
         row[r] = statistics.median(v[key] for v in values)
+        row[r + "_cpu_ms"] = statistics.median(v.get("cpu_median_ms", 0.0) for v in values)
         if r == "glslrun":
             for k in ("compile_ms", "first_draw_ms", "vertex_ms", "raster_ms", "fragment_ms"):
                 row["glslrun_" + k] = statistics.median(v.get(k, 0.0) for v in values)
@@ -148,16 +149,20 @@ def fmt_ratio(a, b):
 
 def table(rows):
     lines = ["| case | size | threads | glslrun ms | llvmpipe ms | softpipe ms | glslrun / llvmpipe "
-             "| softpipe / glslrun | glslrun vertex / raster / fragment ms |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| softpipe / glslrun | same, CPU time | glslrun vertex / raster / fragment ms |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         g, lp, sp = r.get("glslrun"), r.get("llvmpipe"), r.get("softpipe")
         stages = (f"{fmt_ms(r['glslrun_vertex_ms'])} / {fmt_ms(r['glslrun_raster_ms'])} / "
                   f"{fmt_ms(r['glslrun_fragment_ms'])}" if r["metric"] == "median_ms" else
                   f"compile {fmt_ms(r['glslrun_compile_ms'])}, draw {fmt_ms(r['glslrun_first_draw_ms'])}")
         what = r["case"] + (" (first frame incl. compile)" if r["metric"] == "first_frame_ms" else "")
+        cpu = "-"
+        if r["metric"] == "median_ms":  # per-frame CPU time of the process, all threads
+            g_cpu, lp_cpu, sp_cpu = (r.get(k + "_cpu_ms") for k in ("glslrun", "llvmpipe", "softpipe"))
+            cpu = f"{fmt_ratio(g_cpu, lp_cpu)}, {fmt_ratio(sp_cpu, g_cpu)}"
         lines.append(f"| {what} | {r['size']} | {r['threads']} | {fmt_ms(g)} | {fmt_ms(lp)} | {fmt_ms(sp)} "
-                     f"| {fmt_ratio(g, lp)} | {fmt_ratio(sp, g)} | {stages} |")
+                     f"| {fmt_ratio(g, lp)} | {fmt_ratio(sp, g)} | {cpu} | {stages} |")
     return "\n".join(lines)
 
 

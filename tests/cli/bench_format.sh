@@ -32,7 +32,7 @@ check_keys() {
         value "$key" "$file" | grep -Eq '^[0-9]+(\.[0-9]+)?$' || fail "$file: '$key' is not a number"
     done
 }
-times="compile_ms first_draw_ms first_frame_ms median_ms min_ms fps"
+times="compile_ms first_draw_ms first_frame_ms median_ms min_ms fps cpu_median_ms"
 
 # glslrun: every key, and the image equals a single frame's (frames reuse the framebuffer).
 "$glslrun" "$vs" "$fs" "$scene" --size 64x48 -o "$tmp/one.png" >/dev/null || fail "glslrun without --bench"

@@ -43,6 +43,7 @@ TEST_CASE("the bench report's keys and values", "[scene][bench]") {
     r.compile_s = 0.002;
     r.first_draw_s = 0.030;
     r.frame_s = {0.010, 0.030, 0.020, 0.040};
+    r.frame_cpu_s = {0.009, 0.008, 0.007};
     r.stage_s = {{"vertex", {0.001, 0.003, 0.002}}};
     r.once_s = {{"output", 0.005}};
     r.counts = {{"triangles", 6400}};
@@ -57,8 +58,9 @@ TEST_CASE("the bench report's keys and values", "[scene][bench]") {
     CHECK(v["median_ms"] == "25.000");
     CHECK(v["min_ms"] == "10.000");
     CHECK(v["fps"] == "40.00");  // 4 frames in 0.1 s
+    CHECK(v["cpu_median_ms"] == "8.000");
     CHECK(v["vertex_ms"] == "2.000");
     CHECK(v["output_ms"] == "5.000");
     CHECK(v["triangles"] == "6400");
-    CHECK(v.size() == 13);
+    CHECK(v.size() == 14);
 }

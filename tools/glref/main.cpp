@@ -113,6 +113,7 @@ void print_frames(const glref::MesaRender& render, const scene::Scene& scene, co
     r.compile_s = render.compile_seconds;
     r.first_draw_s = render.frame_seconds.at(0);
     r.frame_s.assign(render.frame_seconds.begin() + 1, render.frame_seconds.end());
+    r.frame_cpu_s.assign(render.frame_cpu_seconds.begin() + 1, render.frame_cpu_seconds.end());
     std::fputs(scene::format_bench(r).c_str(), stdout);
 }
 

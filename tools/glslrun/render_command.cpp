@@ -131,9 +131,11 @@ Status bench_frames(Program& prog, const scene::Scene& scene, Framebuffer& fb, i
     report.stage_s = {{"vertex", {}}, {"raster", {}}, {"fragment", {}}};
     for (int i = 0; i < frames; ++i) {
         auto start = Clock::now();
+        double cpu_start = scene::process_cpu_seconds();
         auto stats = scene::render_scene(prog, scene, fb);
         if (!stats) return stats.error();
         report.frame_s.push_back(ms_since(start) / 1e3);
+        report.frame_cpu_s.push_back(scene::process_cpu_seconds() - cpu_start);
         report.stage_s[0].second.push_back(stats->vertex_seconds);
         report.stage_s[1].second.push_back(stats->raster_seconds);
         report.stage_s[2].second.push_back(stats->fragment_seconds);

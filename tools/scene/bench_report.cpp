@@ -1,5 +1,7 @@
 #include "tools/scene/bench_report.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <numeric>
 
@@ -12,6 +14,12 @@ double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     size_t mid = values.size() / 2;
     return values.size() % 2 ? values[mid] : (values[mid - 1] + values[mid]) / 2;
+}
+
+double process_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
 }
 
 std::string format_bench(const BenchReport& r) {
@@ -30,6 +38,7 @@ std::string format_bench(const BenchReport& r) {
     // Throughput over all frames after the first, as a frames/s counter would show it.
     double total = std::accumulate(r.frame_s.begin(), r.frame_s.end(), 0.0);
     line("fps", fmt::format("{:.2f}", total > 0 ? double(r.frame_s.size()) / total : 0.0));
+    ms("cpu_median", median(r.frame_cpu_s));
     for (const auto& [stage, seconds] : r.stage_s) ms(stage, median(seconds));
     for (const auto& [what, seconds] : r.once_s) ms(what, seconds);
     for (const auto& [what, count] : r.counts) line(what, std::to_string(count));

@@ -15,6 +15,9 @@ struct BenchReport {
     double compile_s = 0;     // building the program (Mesa: glCompileShader + glLinkProgram)
     double first_draw_s = 0;  // the first frame (llvmpipe compiles its shaders there)
     std::vector<double> frame_s;  // the N frames after the first
+    // The same frames' process CPU time (all threads): barely moved by a
+    // neighbour's load, unlike wall time, on a shared machine.
+    std::vector<double> frame_cpu_s;
     // Per stage ("vertex", ...), one time per frame after the first; printed as their median.
     std::vector<std::pair<std::string, std::vector<double>>> stage_s;
     // Printed as they are (e.g. "output": the PNG, written once).
@@ -24,10 +27,11 @@ struct BenchReport {
 };
 
 double median(std::vector<double> values);  // 0 when empty
+double process_cpu_seconds();  // CLOCK_PROCESS_CPUTIME_ID: every thread of this process
 
 // "key value" lines: renderer, size, threads, frames, compile_ms,
-// first_draw_ms, first_frame_ms, median_ms, min_ms, fps, then
-// <stage>_ms (medians), the once-only times and the counts.
+// first_draw_ms, first_frame_ms, median_ms, min_ms, fps, cpu_median_ms,
+// then <stage>_ms (medians), the once-only times and the counts.
 std::string format_bench(const BenchReport& report);
 
 }  // namespace glslrun::scene
