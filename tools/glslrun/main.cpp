@@ -126,8 +126,10 @@ int program_cli(int argc, char** argv) {
         ->check(CLI::Range(1, 256));
     app.add_option("--bench", o.bench_frames,
                    "render N more frames into the same framebuffer and print `key value` lines: the "
-                   "first frame (compile_ms, first_draw_ms), then median_ms, fps and the median per "
-                   "stage (vertex_ms, raster_ms = setup and binning, fragment_ms), output_ms (the PNG, once)")
+                   "first frame (compile_ms, first_draw_ms), then median_ms, cpu_median_ms (process CPU "
+                   "time), fps and the median per stage (vertex_ms, raster_ms = setup and binning, "
+                   "fragment_ms), output_ms (the PNG, once)")
+        ->type_name("N")
         ->check(CLI::Range(1, 100000));
     app.add_option("--compare", o.compare,
                    "compare the rendered image, or the PNG given, with this reference PNG");
