@@ -4,6 +4,7 @@
 #include <csignal>
 #include <thread>
 
+#include "tools/glslrun/piglit_exec.h"
 #include "tools/glslrun/piglit_isolate.h"
 
 using namespace glslrun::piglit;
@@ -57,5 +58,31 @@ TEST_CASE("parallel isolated runs keep their own results", "[piglit][isolate]") 
     for (int i = 0; i < 24; ++i) {
         if (i % 5 == 4) CHECK(results[i].message == "crashed: signal 11 (SIGSEGV)");
         else CHECK(results[i].message == "r" + std::to_string(i));
+    }
+}
+
+TEST_CASE("children of a warmed-up runner give the same results as in-process runs", "[piglit][isolate]") {
+    // glslrun test compiles before it forks (warm_up_compiler), so children
+    // inherit glslang's built-in tables; results must not depend on it.
+    const std::string vs = "[vertex shader]\nvoid main() { gl_Position = gl_Vertex; }\n";
+    const std::string fs110 = "[fragment shader]\nuniform vec4 c;\nvoid main() { gl_FragColor = c; }\n";
+    const std::string fs120 =
+        "[fragment shader]\n#version 120\nuniform vec4 c;\nvoid main() { vec4 a[2] = vec4[2](c, c); gl_FragColor = a[1]; }\n";
+    const std::string draw = "[test]\nuniform vec4 c 0.0 1.0 0.0 1.0\ndraw rect -1 -1 2 2\n";
+    const std::vector<std::pair<std::string, Outcome>> tests = {
+        {"[require]\nGLSL >= 1.10\n\n" + vs + fs110 + draw + "probe all rgba 0 1 0 1\n", Outcome::Pass},
+        {"[require]\nGLSL >= 1.20\n\n" + vs + fs120 + draw + "probe all rgba 0 1 0 1\n", Outcome::Pass},
+        {"[require]\nGLSL >= 1.10\n\n" + vs + fs110 + draw + "probe rgb 3 4 1 0 0\n", Outcome::Fail},
+        {"[require]\nGLSL >= 1.10\n\n" + vs + "[fragment shader]\nvoid main() { gl_FragColor = x; }\n" + draw,
+         Outcome::Fail},
+    };
+    warm_up_compiler();
+    for (const auto& [text, expected] : tests) {
+        TestResult in_process = run_shader_test(text, ".", RunOptions{});
+        TestResult child = run_isolated([&] { return run_shader_test(text, ".", RunOptions{}); }, 30);
+        INFO(text << "\nin process: " << in_process.message << "\nchild: " << child.message);
+        CHECK(in_process.outcome == expected);
+        CHECK(child.outcome == in_process.outcome);
+        CHECK(child.message == in_process.message);
     }
 }

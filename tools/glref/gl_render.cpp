@@ -11,6 +11,7 @@
 #include "tools/glref/gl_context.h"
 #include "tools/glref/gl_textures.h"
 #include "tools/glref/gl_uniforms.h"
+#include "tools/scene/bench_report.h"
 
 namespace glslrun::glref {
 
@@ -379,19 +380,24 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     if (!context) return context.error();
     const GLFunctions& gl = (*context)->gl();
     if (Status st = (*context)->make_framebuffer(scene.width, scene.height); !st) return st.error();
+    auto compile_start = std::chrono::steady_clock::now();
     auto program = build_program(gl, vertex, fragment);
     if (!program) return program.error();
+    double compile_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - compile_start).count();
     if (Status st = set_scene_state(gl, scene); !st) return st.error();
     if (Status st = upload_textures(gl, scene, options.upload_generated_mipmaps); !st) return st.error();
-    std::vector<double> seconds;
+    std::vector<double> seconds, cpu_seconds;
     for (int frame = 0; frame < std::max(1, options.frames); ++frame) {
         auto start = std::chrono::steady_clock::now();
+        double cpu_start = scene::process_cpu_seconds();
         if (Status st = draw_frame(gl, *program, scene); !st) return st.error();
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        cpu_seconds.push_back(scene::process_cpu_seconds() - cpu_start);
     }
     auto image = read_back(scene.width, scene.height);
     if (!image) return image.error();
-    return MesaRender{std::move(*image), (*context)->renderer(), std::move(seconds)};
+    return MesaRender{std::move(*image), (*context)->renderer(), std::move(seconds), std::move(cpu_seconds),
+                      compile_seconds};
 }
 
 }  // namespace glslrun::glref

@@ -17,6 +17,8 @@ struct MesaRender {
     std::string renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     // Wall time of each frame. llvmpipe compiles its shaders during the first.
     std::vector<double> frame_seconds;
+    std::vector<double> frame_cpu_seconds;  // process CPU time (llvmpipe's threads included)
+    double compile_seconds = 0;  // glCompileShader and glLinkProgram (Mesa's front end)
 };
 
 struct MesaOptions {

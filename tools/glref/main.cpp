@@ -2,9 +2,9 @@
 // as the oracle for glslrun's images.
 //
 //   glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]
-//         [--upload-mipmaps] [--frames N]
-#include <algorithm>
+//         [--upload-mipmaps] [--frames N | --bench N]
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "tools/glref/gl_render.h"
+#include "tools/scene/bench_report.h"
 #include "tools/scene/image_compare.h"
 #include "tools/scene/scene.h"
 
@@ -24,7 +25,7 @@ using namespace glslrun;
 
 constexpr const char* kUsage =
     "usage: glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]\n"
-    "             [--upload-mipmaps] [--frames N]\n"
+    "             [--upload-mipmaps] [--frames N | --bench N]\n"
     "Renders the scene with Mesa through EGL (no X server) the way a GL 2.1 program would,\n"
     "for comparison with glslrun's image (glslrun --compare).\n"
     "  --driver D   Mesa's software rasteriser: llvmpipe (default) or softpipe\n"
@@ -32,8 +33,11 @@ constexpr const char* kUsage =
     "  --size WxH   override the scene's size\n"
     "  --upload-mipmaps  give Mesa glslrun's generated mipmap levels instead of calling\n"
     "               glGenerateMipmap (generate_mipmap = true textures)\n"
-    "  --frames N   draw the scene N times; print the first frame's time and the others' median\n"
-    "               and minimum (the first includes llvmpipe's shader compilation)\n";
+    "  --bench N    draw the scene N more times after the first and print `key value` lines\n"
+    "               as `glslrun --bench` does: compile_ms (glCompileShader and glLinkProgram),\n"
+    "               first_draw_ms (llvmpipe compiles its shaders there), median_ms, fps, ...\n"
+    "  --frames N   the same with N frames in all (N >= 2 prints the timings)\n"
+    "LP_NUM_THREADS sets llvmpipe's rasterizer threads (reported as `threads`).\n";
 
 struct Options {
     std::string driver = "llvmpipe";
@@ -53,7 +57,7 @@ std::string parse_options(int argc, char** argv, Options& o) {
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         bool has_value = i + 1 < argc;
-        if ((a == "--driver" || a == "-o" || a == "--size" || a == "--frames") && !has_value)
+        if ((a == "--driver" || a == "-o" || a == "--size" || a == "--frames" || a == "--bench") && !has_value)
             return a + " needs a value";
         if (a == "--driver") {
             o.driver = argv[++i];
@@ -63,11 +67,12 @@ std::string parse_options(int argc, char** argv, Options& o) {
             std::pair<int, int> size;
             if (!parse_size(argv[++i], size)) return fmt::format("--size '{}' is not WxH", argv[i]);
             o.size = size;
-        } else if (a == "--frames") {
+        } else if (a == "--frames" || a == "--bench") {
             char extra = 0;
-            if (std::sscanf(argv[++i], "%d%c", &o.mesa.frames, &extra) != 1 || o.mesa.frames < 1 ||
-                o.mesa.frames > 100000)
-                return fmt::format("--frames '{}' is not a count 1..100000", argv[i]);
+            int n = 0;
+            if (std::sscanf(argv[++i], "%d%c", &n, &extra) != 1 || n < 1 || n > 100000)
+                return fmt::format("{} '{}' is not a count 1..100000", a, argv[i]);
+            o.mesa.frames = a == "--bench" ? n + 1 : n;
         } else if (a == "--upload-mipmaps") {
             o.mesa.upload_generated_mipmaps = true;
         } else if (a.size() > 1 && a[0] == '-') {
@@ -97,13 +102,19 @@ int fail(const Error& e) {
     return 1;
 }
 
-// The first frame apart (llvmpipe compiles there), then the others' median and minimum.
-void print_frames(std::vector<double> seconds) {
-    std::printf("frame 1: %.2f ms (includes shader compilation)\n", seconds[0] * 1e3);
-    seconds.erase(seconds.begin());
-    std::sort(seconds.begin(), seconds.end());
-    std::printf("frames 2..%zu: median %.2f ms, min %.2f ms\n", seconds.size() + 1, seconds[seconds.size() / 2] * 1e3,
-                seconds.front() * 1e3);
+// The first frame apart (llvmpipe compiles there), in glslrun --bench's format.
+void print_frames(const glref::MesaRender& render, const scene::Scene& scene, const std::string& driver) {
+    scene::BenchReport r;
+    r.renderer = render.renderer;
+    r.width = scene.width;
+    r.height = scene.height;
+    const char* threads = std::getenv("LP_NUM_THREADS");
+    r.threads = driver == "softpipe" ? "1" : threads ? threads : "auto";
+    r.compile_s = render.compile_seconds;
+    r.first_draw_s = render.frame_seconds.at(0);
+    r.frame_s.assign(render.frame_seconds.begin() + 1, render.frame_seconds.end());
+    r.frame_cpu_s.assign(render.frame_cpu_seconds.begin() + 1, render.frame_cpu_seconds.end());
+    std::fputs(scene::format_bench(r).c_str(), stdout);
 }
 
 int run(const Options& o) {
@@ -120,7 +131,7 @@ int run(const Options& o) {
     if (!render) return fail(render.error());
     if (Status st = scene::write_png(render->image, o.output); !st) return fail(st.error());
     std::printf("%s: %dx%d, %s\n", o.output.c_str(), scene->width, scene->height, render->renderer.c_str());
-    if (o.mesa.frames > 1) print_frames(render->frame_seconds);
+    if (o.mesa.frames > 1) print_frames(*render, *scene, o.driver);
     return 0;
 }
 

@@ -1,6 +1,6 @@
 // The glslrun command line:
 //   glslrun test [options] PATH...            piglit tests (shader_runner / glslparsertest)
-//   glslrun a.vert a.frag scene.toml [-o out.png] [--stats]   a scene, rendered
+//   glslrun a.vert a.frag scene.toml [-o out.png] [--stats] [--bench N]   a scene, rendered
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
 #include <cstdio>
@@ -67,6 +67,7 @@ int run_test_command(const TestOptions& o) {
     }
     pg::RunOptions run_options;
     run_options.time_limit_s = o.time_limit;
+    if (!o.no_isolate) pg::warm_up_compiler();
     auto run_one = [&](const pg::TestCase& tc) {
         if (o.no_isolate) return pg::run_test_file(tc.path, run_options);
         // A hard limit a bit above the soft one, which is only checked between commands.
@@ -123,6 +124,13 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
     app.add_option("--threads", o.threads, "worker threads for drawing (default: one per core); images do not depend on it")
         ->check(CLI::Range(1, 256));
+    app.add_option("--bench", o.bench_frames,
+                   "render N more frames into the same framebuffer and print `key value` lines: the "
+                   "first frame (compile_ms, first_draw_ms), then median_ms, cpu_median_ms (process CPU "
+                   "time), fps and the median per stage (vertex_ms, raster_ms = setup and binning, "
+                   "fragment_ms), output_ms (the PNG, once)")
+        ->type_name("N")
+        ->check(CLI::Range(1, 100000));
     app.add_option("--compare", o.compare,
                    "compare the rendered image, or the PNG given, with this reference PNG");
     app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")
@@ -132,6 +140,7 @@ int program_cli(int argc, char** argv) {
                "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png\n"
                "  glslrun --dump-ir shaders/minimal.vert shaders/minimal.frag\n"
                "  glslrun --compare mesa.png spot.png --tolerance 1 --diff diff.png\n"
+               "  glslrun shaders/minimal.vert shaders/minimal.frag scenes/spot.toml --size 512x512 --bench 100\n"
                "Scene files: docs/scene-format.md. Piglit tests: glslrun test --help");
     CLI11_PARSE(app, argc, argv);
     if (files.empty()) {

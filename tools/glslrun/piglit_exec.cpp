@@ -443,4 +443,14 @@ TestResult run_test_file(const std::string& path, const RunOptions& options) {
     return run_parser_test(*text, ext, std::filesystem::path(path).filename().string(), options);
 }
 
+void warm_up_compiler() {
+    const ShaderSource vs{"warm-up.vert", "void main() { gl_Position = ftransform(); }\n"};
+    const ShaderSource fs{"warm-up.frag", "void main() { gl_FragColor = gl_Color; }\n"};
+    for (int version : {110, 120}) {
+        CompileOptions options;
+        options.default_version = version;
+        (void)Program::compile({vs}, {fs}, options);
+    }
+}
+
 }  // namespace glslrun::piglit

@@ -24,4 +24,10 @@ TestResult run_shader_test(const std::string& text, const std::string& dir, cons
 TestResult run_parser_test(const std::string& text, const std::string& ext, const std::string& name,
                            const RunOptions& options);
 
+// Compiles a small program per GLSL version the suite uses, so that glslang's
+// built-in symbol tables (built once per process on first use, per version and
+// stage, and read-only afterwards) exist before run_isolated forks: each
+// test's child inherits them instead of building them again.
+void warm_up_compiler();
+
 }  // namespace glslrun::piglit

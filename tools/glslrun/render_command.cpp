@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "ir/ir.h"
+#include "tools/scene/bench_report.h"
 #include "tools/scene/image_compare.h"
 #include "tools/scene/render.h"
 
@@ -123,6 +124,39 @@ int compare_with(const scene::Image& actual, const RenderOptions& o) {
     return stats->passed ? 0 : 1;
 }
 
+// --bench N: N more frames into the same framebuffer, each timed whole
+// and per stage. The first frame (compile and first draw) is timed by render().
+Status bench_frames(Program& prog, const scene::Scene& scene, Framebuffer& fb, int frames,
+                    scene::BenchReport& report) {
+    report.stage_s = {{"vertex", {}}, {"raster", {}}, {"fragment", {}}};
+    for (int i = 0; i < frames; ++i) {
+        auto start = Clock::now();
+        double cpu_start = scene::process_cpu_seconds();
+        auto stats = scene::render_scene(prog, scene, fb);
+        if (!stats) return stats.error();
+        report.frame_s.push_back(ms_since(start) / 1e3);
+        report.frame_cpu_s.push_back(scene::process_cpu_seconds() - cpu_start);
+        report.stage_s[0].second.push_back(stats->vertex_seconds);
+        report.stage_s[1].second.push_back(stats->raster_seconds);
+        report.stage_s[2].second.push_back(stats->fragment_seconds);
+    }
+    return Ok{};
+}
+
+scene::BenchReport bench_header(const scene::Scene& scene, const RenderOptions& o, const DrawStats& first,
+                                double compile_ms, double first_draw_ms) {
+    scene::BenchReport r;
+    r.renderer = "glslrun";
+    r.width = scene.width;
+    r.height = scene.height;
+    r.threads = o.threads == 0 ? "auto" : std::to_string(o.threads);
+    r.compile_s = compile_ms / 1e3;
+    r.first_draw_s = first_draw_ms / 1e3;
+    r.counts = {{"vertices", first.vertices}, {"triangles", first.triangles},
+                {"fragments", first.fragments_shaded}};
+    return r;
+}
+
 int render(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
     if (!scene) return fail(scene.error());
@@ -140,13 +174,21 @@ int render(const Inputs& in, const RenderOptions& o) {
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     Framebuffer fb(scene->width, scene->height);
+    start = Clock::now();
     auto stats = scene::render_scene(*prog, *scene, fb);
     if (!stats) return fail(stats.error());
+    scene::BenchReport bench = bench_header(*scene, o, *stats, compile_ms, ms_since(start));
+    if (o.bench_frames > 0)
+        if (Status st = bench_frames(*prog, *scene, fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
     std::string output = o.output.empty() ? default_output(in) : o.output;
     if (Status st = write_png(fb, output); !st) return fail(st.error());
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
+    if (o.bench_frames > 0) {
+        bench.once_s = {{"output", output_ms / 1e3}};
+        std::fputs(scene::format_bench(bench).c_str(), stdout);
+    }
     if (!o.compare.empty()) return compare_with(scene::read_framebuffer(fb), o);
     return 0;
 }
@@ -158,7 +200,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (!in) return fail(in.error());
     bool has_shaders = !in->vertex.empty() || !in->fragment.empty();
     if (!in->image.empty()) {
-        if (o.compare.empty() || has_shaders || !in->scene.empty())
+        if (o.compare.empty() || has_shaders || !in->scene.empty() || o.bench_frames > 0)
             return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image));
         auto image = scene::read_png(in->image);
         if (!image) return fail(image.error());
@@ -166,7 +208,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     }
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));
     if (!in->scene.empty()) return render(*in, o);
-    if (!o.output.empty() || o.stats || !o.compare.empty())
+    if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
         return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));
     // Compile only: diagnostics, and the IR with --dump-ir.
     auto prog = Program::compile(in->vertex, in->fragment);
