@@ -8,6 +8,7 @@ medians over the runs and the ratios. Both tools print the same `key value` line
 
     /usr/bin/python3 bench/side_by_side.py --build build [--runs 5] [--plot perf.png] [--only spot]
     /usr/bin/python3 bench/side_by_side.py --build build --threads 1,2,4,8,16 --only "spot pixel"
+    /usr/bin/python3 bench/side_by_side.py --build build --from-json rows.json --plot perf.png
 
 Scene variants (teapot subdivision) are written to a temporary directory from the
 scene files in scenes/; the image size is given with --size. Thread counts: glslrun
@@ -206,7 +207,15 @@ def main():
     ap.add_argument("--only", default="", help="run only cases whose name contains this text")
     ap.add_argument("--plot", help="write a bar chart (PNG) here; needs python3-matplotlib")
     ap.add_argument("--json", help="write the rows as JSON here")
+    ap.add_argument("--from-json", help="run nothing: print the table (and --plot) of rows saved by --json")
     args = ap.parse_args()
+    if args.from_json:
+        with open(args.from_json) as f:
+            rows = json.load(f)
+        print(table(rows))
+        if args.plot:
+            plot(rows, args.plot)
+        return
     if args.runs < 1 or args.frames < 1 or args.softpipe_frames < 1:
         ap.error("--runs, --frames and --softpipe-frames must be at least 1")
     try:
