@@ -159,3 +159,30 @@ TEST_CASE("extremes: the bit patterns that docs/extremes.md quotes", "[extremes]
         CHECK(bits(out.at("r", lane)) == pin.want);
     }
 }
+
+TEST_CASE("extremes: a loop bounded by +Inf stops with an error instead of hanging", "[extremes]") {
+    // t < +Inf is always true (and t += 1.0 stops growing at 2^24), so the
+    // loop never ends; GPUs and llvmpipe would hang. Lanes with a finite bound
+    // share the batch with lanes bounded by +Inf.
+    glslrun::Program prog = compile_vs(R"(
+attribute float s;
+varying float r;
+void main() {
+    float n = 0.0;
+    for (float t = 0.0; t < s; t += 1.0) n += 1.0;
+    r = n;
+    gl_Position = vec4(0.0);
+}
+)");
+    prog.exec.max_loop_iterations = 100000;
+    auto finite = std::vector{make_attrib("s", 1, kVerts, [](uint32_t l, uint32_t) { return float(l % 5); })};
+    auto ok = glslrun::run_vertices(prog, finite, kVerts);
+    REQUIRE(ok);
+    auto infinite = std::vector{make_attrib("s", 1, kVerts, [](uint32_t l, uint32_t) {
+        return l % 3 == 0 ? kInf : float(l % 5);
+    })};
+    auto result = glslrun::run_vertices(prog, infinite, kVerts);
+    REQUIRE_FALSE(result);
+    INFO(result.error().str());
+    CHECK(result.error().str().find("loop exceeded 100000 iterations") != std::string::npos);
+}
