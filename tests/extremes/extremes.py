@@ -3,6 +3,7 @@
 
   extremes.py generate             write tests/extremes/<group>.shader_test (glslrun's pinned results)
   extremes.py generate --mesa DIR  write the same files with llvmpipe's recorded results into DIR
+  extremes.py check                fail if the committed files differ from what cases.py generates
   extremes.py compare [--glslrun BIN] [--shader-runner BIN] [--markdown]
                                    run every case alone on both sides and print what each one gives
 
@@ -111,6 +112,18 @@ def generate(directory, mesa):
             f.write(text)
 
 
+def check():
+    """The committed files must be what cases.py generates (ctest extremes_generated)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        generate(tmp, False)
+        stale = [n for n in sorted(os.listdir(tmp))
+                 if not os.path.exists(os.path.join(HERE, n))
+                 or open(os.path.join(tmp, n)).read() != open(os.path.join(HERE, n)).read()]
+    for n in stale:
+        print(f"tests/extremes/{n} is stale: run tests/extremes/extremes.py generate")
+    return 1 if stale else 0
+
+
 # ------------------------------------------------------------------ compare
 def run_glslrun(binary, path):
     p = subprocess.run([binary, "test", "--no-isolate", path], capture_output=True, text=True)
@@ -173,6 +186,7 @@ def main():
     sub = ap.add_subparsers(dest="cmd", required=True)
     g = sub.add_parser("generate")
     g.add_argument("--mesa", metavar="DIR", help="write llvmpipe's expected results into DIR")
+    sub.add_parser("check")
     c = sub.add_parser("compare")
     c.add_argument("--glslrun", default=os.path.join(HERE, "../../build/glslrun"))
     c.add_argument("--shader-runner", default="/usr/lib/x86_64-linux-gnu/piglit/bin/shader_runner")
@@ -181,6 +195,8 @@ def main():
     if args.cmd == "generate":
         generate(args.mesa or HERE, bool(args.mesa))
         return 0
+    if args.cmd == "check":
+        return check()
     return compare(args)
 
 
