@@ -49,6 +49,31 @@ ClipVertex lerp_vertex(const ClipVertex& in, const ClipVertex& out, float t, con
     return r;
 }
 
+// Puts a clipped vertex exactly on the frustum plane it was clipped to. The
+// interpolation in+(out-in)*t cancels catastrophically for huge coordinates:
+// clipping (-1e30,-1e30,0,1)..(0,1e30,0,1) against y = w gives y = 0, not 1,
+// and half the triangle goes missing. The snap is a function of the vertex
+// alone, so edges shared by two triangles still clip to the same point.
+void snap_to_plane(ClipVertex& v, int plane, float guard) {
+    glm::vec4& p = v.pos;
+    switch (plane) {
+    case 0: p.z = -p.w; break;
+    case 1: p.z = p.w; break;
+    case 2: p.x = guard * p.w; break;
+    case 3: p.x = -guard * p.w; break;
+    case 4: p.y = guard * p.w; break;
+    case 5: p.y = -guard * p.w; break;
+    default: v.user[plane - kFrustumPlanes] = 0.0f; break;
+    }
+}
+
+ClipVertex clip_edge(const ClipVertex& in, const ClipVertex& out, float d_in, float d_out, int plane,
+                     const ClipParams& params, AttrArena& arena) {
+    ClipVertex r = lerp_vertex(in, out, d_in / (d_in - d_out), params, arena);
+    snap_to_plane(r, plane, params.guard);
+    return r;
+}
+
 }  // namespace
 
 uint32_t outcode(const ClipVertex& v, const ClipParams& params) {
@@ -74,7 +99,7 @@ void clip_polygon(ClipPolygon& poly, const ClipParams& params, AttrArena& arena)
                 const ClipVertex& in = a_in ? a : b;
                 const ClipVertex& out = a_in ? b : a;
                 float d_in = a_in ? da : db, d_out = a_in ? db : da;
-                next.push_back(lerp_vertex(in, out, d_in / (d_in - d_out), params, arena));
+                next.push_back(clip_edge(in, out, d_in, d_out, plane, params, arena));
             }
         }
         poly = next;
@@ -91,7 +116,7 @@ bool clip_segment(ClipVertex& a, ClipVertex& b, const ClipParams& params, AttrAr
         ClipVertex& out = a_in ? b : a;
         const ClipVertex& in = a_in ? a : b;
         float d_in = a_in ? da : db, d_out = a_in ? db : da;
-        out = lerp_vertex(in, out, d_in / (d_in - d_out), params, arena);
+        out = clip_edge(in, out, d_in, d_out, plane, params, arena);
     }
     return true;
 }
