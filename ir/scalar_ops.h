@@ -29,6 +29,12 @@ public:
     FlushDenormals& operator=(const FlushDenormals&) = delete;
 };
 
+// Flushes a denormal to a zero of its sign. FTZ/DAZ cover SSE arithmetic only:
+// libm works on the bits (log2 of 2^-127 gives -150, not -Inf) and negation
+// and abs are bit operations, so those ops flush their operands and results
+// explicitly to keep "denormals are zero" true for every op.
+inline float ftz(float a) { return std::fabs(a) < 1.17549435e-38f ? std::copysign(0.0f, a) : a; }
+
 inline float glsl_sign(float a) { return a > 0.0f ? 1.0f : (a < 0.0f ? -1.0f : 0.0f); }
 inline float glsl_fract(float a) { return a - std::floor(a); }
 // GLSL 1.10 §8.3: mod(x, y) = x - y * floor(x / y).

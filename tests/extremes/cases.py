@@ -226,10 +226,10 @@ DENORMALS = Group("denormals", "denormal inputs and results", [
     C("1 / 2^-127", "1.0 / x", "+inf", x=DENORM_BIG),
     C("sqrt(2^-127)", "sqrt(x) * 1e19", "+0", x=DENORM_BIG),
     C("inversesqrt(2^-127)", "inversesqrt(x)", "+inf", x=DENORM_BIG),
-    # glibc's log2f/logf scale a denormal by 2^23 first, which DAZ turns into 0:
-    # the result is log of 2^-150, neither the flushed -Inf nor the exact -127.
-    C("log2(2^-127)", "log2(x)", -150.0, x=DENORM_BIG, note="neither -Inf nor -127", mesa="-inf"),
-    C("log(2^-127)", "log(x)", -103.972076, x=DENORM_BIG, note="ln(2^-150)", mesa="-inf"),
+    # libm works on the bits, so DAZ alone does not reach it: glslrun flushes
+    # the operands of its libm calls (ir/scalar_ops.h ftz), as llvmpipe does.
+    C("log2(2^-127)", "log2(x)", "-inf", x=DENORM_BIG, note="the input is flushed"),
+    C("log(2^-127)", "log(x)", "-inf", x=DENORM_BIG, note="the input is flushed"),
     C("abs(-2^-127) > 0", "float(abs(-x) > 0.0)", "+0", x=DENORM_BIG),
     C("sign(2^-127)", "sign(x)", "+0", x=DENORM_BIG),
     C("2^-63 * 2^-64", "(x * y) * z", "+0", x="1.0842022e-19", y="5.421011e-20", z="1e38",
