@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
           libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev)
-[ "$mode" = test ] && packages+=(piglit)
+[ "$mode" = test ] && packages+=(piglit python3)  # python3: ctest extremes_generated
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
