@@ -55,6 +55,12 @@ check_keys "$tmp/out" 3 $times vertex_ms raster_ms fragment_ms output_ms vertice
 check_keys "$tmp/out" 1 $times
 grep -q '^fragments    ' "$tmp/out" || fail "--stats output missing with --bench"
 grep -q 'pixels' "$tmp/out" || fail "--compare summary missing with --bench"
+grep -q '^textures     none$' "$tmp/out" || fail "--stats must say that no texture is bound"
+# --stats lists the bound textures.
+"$glslrun" "$src/shaders/textured_pix.vert" "$src/shaders/textured_pix.frag" "$src/scenes/textured.toml" \
+    --size 32x32 -o "$tmp/tex.png" --stats >"$tmp/out" || fail "the textured scene failed"
+grep -Eq '^textures     unit 0: 2D [0-9]+x[0-9]+ RGBA8, [0-9]+ levels$' "$tmp/out" ||
+    fail "--stats does not list the textured scene's texture: $(grep '^textures' "$tmp/out")"
 
 # The range of N, and --bench without a scene or with images only: errors, not crashes.
 for n in 0 -1 100001 abc; do

@@ -95,6 +95,24 @@ std::string join_builtin_attributes(const Program& prog) {
     return list.empty() ? "none" : list;
 }
 
+// "unit 0: 2D 256x256 RGBA8, 9 levels" per bound texture; an incomplete one
+// samples as (0, 0, 0, 1), which is worth seeing next to a black image.
+std::string describe_textures(const scene::Scene& scene) {
+    static constexpr const char* kTargets[] = {"1D", "2D", "3D", "cube"};
+    static constexpr const char* kFormats[] = {"RGBA8", "RGBA32F", "depth"};
+    std::string out;
+    for (const scene::TextureSetting& t : scene.textures) {
+        const TextureImage& base = t.texture->levels(0).front();
+        size_t levels = t.texture->levels(0).size();
+        out += fmt::format("{}unit {}: {} {}x{}{} {}, {} level{}{}", out.empty() ? "" : "; ", t.unit,
+                           kTargets[size_t(t.texture->target())], base.width, base.height,
+                           base.depth > 1 ? fmt::format("x{}", base.depth) : "",
+                           kFormats[size_t(t.texture->format())], levels, levels == 1 ? "" : "s",
+                           t.texture->complete() ? "" : ", incomplete");
+    }
+    return out.empty() ? "none" : out;
+}
+
 void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats& s, double compile_ms,
                  double output_ms) {
     fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
@@ -105,6 +123,7 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
     fmt::print("built-in uniforms read   {}\n", join_builtins(prog));
     fmt::print("built-in attributes read {}\n", join_builtin_attributes(prog));
+    fmt::print("textures     {}\n", describe_textures(scene));
 }
 
 int compare_with(const scene::Image& actual, const RenderOptions& o) {
