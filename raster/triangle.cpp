@@ -8,7 +8,11 @@ namespace glslrun::raster {
 
 int64_t snap(float window_coord) {
     float clamped = std::clamp(window_coord, -kMaxWindowCoord, kMaxWindowCoord);
-    return std::llround(double(clamped) * double(kSubpixelOne));
+    // llround (half away from zero) without the library call, which showed at
+    // 3.6% of a frame of small triangles: x is exact in double, and so is
+    // x +- 0.5 wherever it could round to a different integer.
+    double x = double(clamped) * double(kSubpixelOne);
+    return int64_t(x + (x < 0.0 ? -0.5 : 0.5));
 }
 
 namespace {
