@@ -180,3 +180,13 @@ TEST_CASE("state commands", "[piglit][commands]") {
     CHECK(is_error("clip plane 1 2"));
     CHECK(is_error("frustum 1 2 3"));
 }
+
+TEST_CASE("depthfunc takes glDepthFunc's eight names", "[piglit][commands]") {
+    using glslrun::CompareFunc;
+    CHECK(cmd<DepthFunc>("depthfunc GL_LESS").func == CompareFunc::Less);
+    CHECK(cmd<DepthFunc>("depthfunc GL_GEQUAL").func == CompareFunc::Gequal);
+    CHECK(cmd<DepthFunc>("depthfunc  GL_ALWAYS ").func == CompareFunc::Always);
+    CHECK(cmd<DepthFunc>("depthfunc GL_NEVER").func == CompareFunc::Never);
+    CHECK(is_error("depthfunc GL_LESSER"));
+    CHECK(is_error("depthfunc"));
+}

@@ -186,3 +186,34 @@ TEST_CASE("glslparsertest files", "[piglit][exec]") {
     CHECK(parser(".frag", "pass", "1.30", "void main() {}\n").outcome == Outcome::Skip);
     CHECK(parser(".geom", "pass", "1.50", "void main() {}\n").outcome == Outcome::Skip);
 }
+
+TEST_CASE("depthfunc changes the depth test of later draws", "[piglit][exec]") {
+    // Every rect lands at window depth 0.5; the depth buffer starts at 0.
+    std::string test = kUniformColor + R"([test]
+clear color 0.0 0.0 0.0 1.0
+clear depth 0.0
+clear
+enable GL_DEPTH_TEST
+uniform vec4 color 1.0 0.0 0.0 1.0
+draw rect -1 -1 2 2
+probe all rgba 0.0 0.0 0.0 1.0
+depthfunc GL_GREATER
+uniform vec4 color 0.0 1.0 0.0 1.0
+draw rect -1 -1 2 2
+probe all rgba 0.0 1.0 0.0 1.0
+depthfunc GL_LESS
+uniform vec4 color 0.0 0.0 1.0 1.0
+draw rect -1 -1 2 2
+probe all rgba 0.0 1.0 0.0 1.0
+depthfunc GL_EQUAL
+draw rect -1 -1 2 2
+probe all rgba 0.0 0.0 1.0 1.0
+depthfunc GL_NEVER
+uniform vec4 color 1.0 0.0 0.0 1.0
+draw rect -1 -1 2 2
+probe all rgba 0.0 0.0 1.0 1.0
+)";
+    TestResult r = run(test);
+    INFO(r.message);
+    CHECK(r.outcome == Outcome::Pass);
+}

@@ -438,10 +438,22 @@ constexpr std::string_view kUnsupportedCommands[] = {
     "memory barrier", "xfb ", "probe xfb", "probe ssbo", "probe atomic", "subuniform ",
     "parameter ", "patch parameter", "provoking vertex", "polygon mode", "viewport ",
     "vertex attrib ", "active uniform", "active shader program", "verify ", "newlist",
-    "endlist", "calllist", "deletelist", "resident ", "depthfunc ", "program binary",
+    "endlist", "calllist", "deletelist", "resident ", "program binary",
     "multidraw ", "blend barrier", "fbfetch barrier", "begin query", "end query",
     "relative probe rect rgba int", "probe rect rgba int",
 };
+
+// `depthfunc GL_LEQUAL`: glDepthFunc's eight functions.
+Parsed<CommandData> parse_depth_func(std::string_view rest, std::string_view line) {
+    static constexpr std::pair<std::string_view, CompareFunc> kFuncs[] = {
+        {"GL_NEVER", CompareFunc::Never},     {"GL_LESS", CompareFunc::Less},     {"GL_EQUAL", CompareFunc::Equal},
+        {"GL_LEQUAL", CompareFunc::Lequal},   {"GL_GREATER", CompareFunc::Greater},
+        {"GL_NOTEQUAL", CompareFunc::Notequal}, {"GL_GEQUAL", CompareFunc::Gequal}, {"GL_ALWAYS", CompareFunc::Always},
+    };
+    for (const auto& [name, func] : kFuncs)
+        if (trim(rest) == name) return CommandData{DepthFunc{func}};
+    return error("bad depthfunc command \"" + std::string(line) + "\" (GL_NEVER, GL_LESS, ..., GL_ALWAYS)");
+}
 
 }  // namespace
 
@@ -479,6 +491,7 @@ Parsed<CommandData> parse_command(std::string_view raw) {
         if (!c) return bad("color");
         return CommandData{CurrentColor{*c}};
     }
+    if (eat(rest, "depthfunc")) return parse_depth_func(rest, line);
     if (eat(rest, "draw")) return parse_draw(rest, line);
     if (eat(rest, "disable")) return CommandData{Enable{std::string(rest), false}};
     if (eat(rest, "enable")) return CommandData{Enable{std::string(rest), true}};

@@ -207,6 +207,8 @@ std::optional<TestResult> ShaderTestRun::execute(const Command& cmd) {
                 link_error_expected_ = true;
             } else if constexpr (std::is_same_v<T, Enable>) {
                 return enable(line, c);
+            } else if constexpr (std::is_same_v<T, DepthFunc>) {
+                gl_.depth_func = c.func;
             } else if constexpr (std::is_same_v<T, ClipPlane>) {
                 if (c.index < 0 || c.index >= int(gl_.clip_planes.size()))
                     return line_fail(line, fmt::format("clip plane id {} out of range", c.index));

@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include "glslrun/glslrun.h"
+
 namespace glslrun::piglit {
 
 struct ParseError {
@@ -91,6 +93,7 @@ struct Probe {
 struct ProbeDepth { int x = 0, y = 0; float depth = 0; };
 struct LinkCheck { bool expect_success = true; };
 struct Enable { std::string cap; bool on = true; };
+struct DepthFunc { glslrun::CompareFunc func = glslrun::CompareFunc::Less; };  // glDepthFunc
 struct ClipPlane { int index = 0; std::array<double, 4> plane{}; };
 struct ShadeModel { bool flat = false; };
 struct CurrentColor { std::array<float, 4> rgba{}; };
@@ -121,7 +124,7 @@ struct Unsupported { std::string reason; };  // makes the test skip
 
 using CommandData = std::variant<ClearColor, ClearDepth, Clear, DrawRect, DrawArrays, Ortho,
                                  Frustum, SetUniform, Probe, ProbeDepth, LinkCheck, Enable,
-                                 ClipPlane, ShadeModel, CurrentColor, Light, Tolerance,
+                                 DepthFunc, ClipPlane, ShadeModel, CurrentColor, Light, Tolerance,
                                  TextureCommand, TexParameter, Ignored, Unsupported>;
 struct Command {
     int line = 0;
