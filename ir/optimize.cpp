@@ -2,6 +2,7 @@
 // (at most a few rounds), then fuse_mad, hoist, dce and regalloc. With
 // GLSLRUN_VERIFY the verifier runs after every pass and its first complaint is
 // returned, naming the pass.
+#include <cstdint>
 #include <string>
 
 #include "ir/passes.h"
@@ -23,6 +24,36 @@ std::string check(const Shader& shader, const char* pass) {
     return {};
 }
 
+// A structural hash, to see that a round of passes changed nothing without
+// printing the shader twice (that printing was half of the optimizer's time).
+// A collision could only end the rounds early: less optimized, never wrong.
+struct Fingerprint {
+    uint64_t h = 1469598103934665603ull;  // FNV-1a
+    void add(uint64_t v) { h = (h ^ v) * 1099511628211ull; }
+    void add(const Block& block) {
+        add(block.size());
+        for (const Node& n : block) {
+            add(uint64_t(n.kind));
+            const Instr& i = n.instr;
+            add(uint64_t(i.op) << 32 | uint64_t(i.type) << 16 | uint64_t(i.unmasked));
+            for (uint64_t v : {uint64_t(i.dst), uint64_t(i.src[0]), uint64_t(i.src[1]), uint64_t(i.src[2]),
+                               uint64_t(i.imm[0]), uint64_t(i.imm[1]), uint64_t(i.imm[2]), uint64_t(n.cond),
+                               uint64_t(n.callee)})
+                add(v);
+            add(n.body);
+            add(n.alt);
+        }
+    }
+};
+
+uint64_t fingerprint(const Shader& shader) {
+    Fingerprint f;
+    f.add(shader.regs.size());
+    f.add(shader.body);
+    for (const Function& fn : shader.functions) f.add(fn.body);
+    return f.h;
+}
+
 }  // namespace
 
 std::string optimize(Shader& shader, const PassOptions& options) {
@@ -32,7 +63,7 @@ std::string optimize(Shader& shader, const PassOptions& options) {
     inline_calls(shader, options.inline_budget);
     if (!(error = check(shader, "inline")).empty()) return error;
     for (int round = 0; round < kMaxRounds; ++round) {
-        std::string before = print(shader);
+        uint64_t before = fingerprint(shader);
         fold_constants(shader);
         if (!(error = check(shader, "fold")).empty()) return error;
         propagate_copies(shader);
@@ -41,7 +72,7 @@ std::string optimize(Shader& shader, const PassOptions& options) {
         if (!(error = check(shader, "dead_stores")).empty()) return error;
         eliminate_dead_code(shader);
         if (!(error = check(shader, "dce")).empty()) return error;
-        if (print(shader) == before) break;
+        if (fingerprint(shader) == before) break;
     }
     fuse_multiply_add(shader);
     if (!(error = check(shader, "fuse_mad")).empty()) return error;
