@@ -4,7 +4,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
+#include <string>
 
 #include "ir/flow.h"
 #include "ir/passes.h"
@@ -44,30 +48,44 @@ inline Reg input(Builder& b, const char* name, Kind k = Kind::F32) {
     return r;
 }
 
-// Per-lane input values by kind: varied, deterministic.
-inline uint32_t input_value(Kind k, uint32_t reg, int lane) {
-    int v = int(lane * 7 + reg * 3) % 11 - 4;
+// Per-lane input values by kind: varied, deterministic, and keyed by the
+// input's position among the shader's inputs, never by register number (the
+// register allocator renumbers registers).
+inline uint32_t input_value(Kind k, uint32_t index, int lane) {
+    int v = int(index * 5 + uint32_t(lane) * 3) % 13 - 6;
     switch (k) {
-    case Kind::F32: return bits(float(v) * 0.75f);
-    case Kind::I32: return bits(int32_t(v));
+    case Kind::F32: return bits(float(v) * 0.37f + 0.11f);
+    case Kind::I32: return bits(int32_t(v & 3));
     case Kind::Bool: return uint32_t(v & 1);
     }
     return 0;
 }
 
+// Every output of every lane, then the alive mask, after running `s` with
+// input_value() inputs.
 inline std::vector<uint32_t> run_outputs(const ir::Shader& s, const std::vector<uint32_t>& uniforms = {}) {
     Runner r(s, uniforms);
+    uint32_t index = 0;
     for (const ir::Binding& b : s.inputs)
-        for (uint32_t c = 0; c < b.count; ++c)
-            r.set(b.first + c, [&](int lane) { return input_value(b.kind, b.first + c, lane); });
+        for (uint32_t c = 0; c < b.count; ++c, ++index)
+            r.set(b.first + c, [&, index](int lane) { return input_value(b.kind, index, lane); });
     rt::RunError error;
-    REQUIRE(r.run(rt::kAllLanes, &error));
+    bool ok = r.run(rt::kAllLanes, &error);
+    INFO("run error: " << error.message);
+    REQUIRE(ok);
     std::vector<uint32_t> out;
     for (const ir::Binding& b : s.outputs)
         for (uint32_t c = 0; c < b.count; ++c)
             for (int lane = 0; lane < rt::kLanes; ++lane) out.push_back(r.at(b.first + c, lane));
     for (int lane = 0; lane < rt::kLanes; ++lane) out.push_back(uint32_t((r.it->alive() >> lane) & 1));
     return out;
+}
+
+inline std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
 }
 
 // Applies `pass` to a copy of `s`; checks it verifies and computes the same outputs.

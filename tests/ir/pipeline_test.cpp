@@ -10,7 +10,7 @@
 
 #include "frontend/compile.h"
 #include "ir/passes.h"
-#include "tests/runtime/ir_builder.h"
+#include "tests/ir/pass_helpers.h"
 
 namespace fs = std::filesystem;
 using namespace glslrun;
@@ -18,49 +18,12 @@ using namespace glslrun::test;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// Deterministic values by position, never by register number (the register
-// allocator renumbers registers).
-uint32_t value(Kind k, uint32_t index, int lane) {
-    int v = int(index * 5 + uint32_t(lane) * 3) % 13 - 6;
-    switch (k) {
-    case Kind::F32: return bits(float(v) * 0.37f + 0.11f);
-    case Kind::I32: return bits(int32_t(v & 3));
-    case Kind::Bool: return uint32_t(v & 1);
-    }
-    return 0;
-}
-
 std::vector<uint32_t> uniform_store(const ir::Program& p) {
     std::vector<uint32_t> words(std::max<uint32_t>(p.uniform_words, 1), 0);
     for (const ir::Uniform& u : p.uniforms)
         for (uint32_t w = 0; w < u.type.components() * u.array_size && u.slot + w < words.size(); ++w)
-            words[u.slot + w] = value(u.type.kind, u.slot + w, 0);
+            words[u.slot + w] = input_value(u.type.kind, u.slot + w, 0);
     return words;
-}
-
-std::vector<uint32_t> outputs(const ir::Shader& s, const std::vector<uint32_t>& uniforms) {
-    Runner r(s, uniforms);
-    uint32_t index = 0;
-    for (const ir::Binding& b : s.inputs)
-        for (uint32_t c = 0; c < b.count; ++c, ++index)
-            r.set(b.first + c, [&](int lane) { return value(b.kind, index, lane); });
-    rt::RunError error;
-    bool ok = r.run(rt::kAllLanes, &error);
-    INFO("run error: " << error.message);
-    REQUIRE(ok);
-    std::vector<uint32_t> out;
-    for (const ir::Binding& b : s.outputs)
-        for (uint32_t c = 0; c < b.count; ++c)
-            for (int lane = 0; lane < rt::kLanes; ++lane) out.push_back(r.at(b.first + c, lane));
-    for (int lane = 0; lane < rt::kLanes; ++lane) out.push_back(uint32_t((r.it->alive() >> lane) & 1));
-    return out;
 }
 
 }  // namespace
@@ -75,9 +38,9 @@ TEST_CASE("optimized shaders compute the unoptimized shaders' bits", "[ir][pipel
             const fs::path p = entry.path();
             const bool vertex = p.extension() == ".vert";
             if (!vertex && p.extension() != ".frag") continue;
-            ShaderSource src{p.filename().string(), slurp(p)}, other = vertex ? fsrc : vs;
+            ShaderSource src{p.filename().string(), read_file(p)}, other = vertex ? fsrc : vs;
             fs::path sibling = fs::path(p).replace_extension(vertex ? ".frag" : ".vert");
-            if (fs::exists(sibling)) other = ShaderSource{sibling.filename().string(), slurp(sibling)};
+            if (fs::exists(sibling)) other = ShaderSource{sibling.filename().string(), read_file(sibling)};
             auto program = frontend::compile_program({vertex ? src : other}, {vertex ? other : src}, CompileOptions{});
             if (!program) continue;  // deliberately broken lecture shaders
             const ir::Shader& original = vertex ? program->vertex : program->fragment;
@@ -86,7 +49,7 @@ TEST_CASE("optimized shaders compute the unoptimized shaders' bits", "[ir][pipel
             REQUIRE(ir::optimize(optimized, {}) == "");
             REQUIRE(ir::verify(optimized) == "");
             std::vector<uint32_t> uniforms = uniform_store(*program);
-            CHECK(outputs(original, uniforms) == outputs(optimized, uniforms));
+            CHECK(run_outputs(original, uniforms) == run_outputs(optimized, uniforms));
             ++shaders;
         }
     }

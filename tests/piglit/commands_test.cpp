@@ -1,24 +1,9 @@
 // [test] command lines: probes, uniforms, draws, state.
 #include <catch2/catch.hpp>
 
-#include "tools/glslrun/piglit_parse.h"
+#include "tests/piglit/command_helpers.h"
 
 using namespace glslrun::piglit;
-
-namespace {
-
-template <class T>
-T cmd(std::string_view line) {
-    auto p = parse_command(line);
-    if (!parsed_ok(p)) FAIL("parse error for \"" << line << "\": " << std::get<ParseError>(p).message);
-    const CommandData& d = std::get<CommandData>(p);
-    if (!std::holds_alternative<T>(d)) FAIL("\"" << line << "\" parsed to alternative " << d.index());
-    return std::get<T>(d);
-}
-
-bool is_error(std::string_view line) { return !parsed_ok(parse_command(line)); }
-
-}  // namespace
 
 TEST_CASE("probe syntax", "[piglit][commands]") {
     Probe p = cmd<Probe>("probe rgb 25 30 0.0 1.0 0.5");

@@ -2,6 +2,7 @@
 // build, texparameter, and texture tests end to end.
 #include <catch2/catch.hpp>
 
+#include "tests/piglit/command_helpers.h"
 #include "tools/glslrun/piglit_exec.h"
 #include "tools/glslrun/piglit_textures.h"
 
@@ -15,21 +16,6 @@ using glslrun::TextureTarget;
 using glslrun::TextureWrap;
 
 namespace {
-
-template <class T>
-T cmd(std::string_view line) {
-    auto p = parse_command(line);
-    if (!parsed_ok(p)) FAIL("parse error for \"" << line << "\": " << std::get<ParseError>(p).message);
-    const CommandData& d = std::get<CommandData>(p);
-    if (!std::holds_alternative<T>(d)) FAIL("\"" << line << "\" parsed to alternative " << d.index());
-    return std::get<T>(d);
-}
-
-std::string parse_error(std::string_view line) {
-    auto p = parse_command(line);
-    if (parsed_ok(p)) FAIL("\"" << line << "\" parsed, but should not");
-    return std::get<ParseError>(p).message;
-}
 
 const glm::vec4 kRed{1, 0, 0, 1}, kGreen{0, 1, 0, 1}, kBlue{0, 0, 1, 1}, kWhite{1, 1, 1, 1};
 
