@@ -74,6 +74,15 @@ struct CompileOptions {
     uint32_t inline_budget = 4000;  // IR nodes a call site may add when inlined
 };
 
+// How shaders evaluate floating point (docs/precision.md).
+//   Reference: the whole IR in double, libm's double functions; the ground
+//              truth that the error report measures against. Slow.
+//   Precise:   fp32 with glslrun's own built-ins (<= 2 ULP where the docs say
+//              so), identical bits on every x86-64 machine. The default.
+//   Fast:      fp32 with GPU-style approximations (reciprocal and rsqrt
+//              estimates, polynomial exp2/log2, pow as exp2(y*log2 x)).
+enum class Precision { Reference, Precise, Fast };
+
 struct ExecOptions {
     // Iterations of all loops of one batch together; past it the draw stops
     // with a clear error instead of hanging.
@@ -81,6 +90,7 @@ struct ExecOptions {
     // Worker threads of draw(); 0 means one per core. Images are
     // bit-identical whatever the count.
     unsigned threads = 0;
+    Precision precision = Precision::Precise;
 };
 
 enum class Stage { Vertex, Fragment };
