@@ -22,6 +22,13 @@ void add_quad(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t 
 
 std::vector<AssembledPrim> assemble(Primitive prim, uint32_t n) {
     std::vector<AssembledPrim> out;
+    assemble(prim, n, out);
+    return out;
+}
+
+void assemble(Primitive prim, uint32_t n, std::vector<AssembledPrim>& out) {
+    out.clear();
+    out.reserve(n);  // no mode makes more primitives than vertices
     switch (prim) {
     case Primitive::Points:
         for (uint32_t i = 0; i < n; ++i) out.push_back({{i, i, i}, i, 1});
@@ -58,7 +65,6 @@ std::vector<AssembledPrim> assemble(Primitive prim, uint32_t n) {
         for (uint32_t i = 1; i + 1 < n; ++i) add_tri(out, 0, i, i + 1, 0);
         break;
     }
-    return out;
 }
 
 }  // namespace glslrun::raster

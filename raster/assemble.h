@@ -18,5 +18,7 @@ struct AssembledPrim {
 // Quads split 0-1-2 / 0-2-3 as llvmpipe does; polygons become fans around
 // vertex 0. Incomplete trailing primitives are dropped.
 std::vector<AssembledPrim> assemble(Primitive prim, uint32_t n);
+// The same into `out`, whose storage is reused.
+void assemble(Primitive prim, uint32_t n, std::vector<AssembledPrim>& out);
 
 }  // namespace glslrun::raster

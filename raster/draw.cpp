@@ -11,6 +11,7 @@
 #include "raster/clip.h"
 #include "raster/fragments.h"
 #include "raster/points_lines.h"
+#include "raster/scratch.h"
 #include "raster/tiles.h"
 #include "raster/triangle.h"
 #include "runtime/execute.h"
@@ -30,22 +31,14 @@ struct DrawContext {
     const GLState& gl;
     const FragmentStage& stage;
     const exec::VertexOutputs& vs;
-    std::vector<ClipVertex> vertices;  // per vertex of the arrays
-    std::vector<uint32_t> outcodes;    // per vertex of the arrays, against `clip`
+    const std::vector<ClipVertex>& vertices;  // per vertex of the arrays
+    std::vector<uint32_t>& outcodes;          // per vertex of the arrays, against `clip`
     Rect scissor;
     glm::vec4 viewport;  // x y w h
     ClipParams clip;
     int point_size_output = -1;
     // Per vertex of the arrays: its fragment attribute vector (front colours).
-    std::vector<float> front_attrs;
-};
-
-// What setting up one job of primitives produces, in submission order.
-struct SetupOut {
-    AttrArena arena;  // attributes of clipped and flat-shaded vertices, until the draw ends
-    std::vector<FsPrimitive> prims;
-    std::vector<Rect> bounds;  // per primitive: the pixels it may cover
-    uint64_t triangles = 0;
+    std::vector<float>& front_attrs;
 };
 
 FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
@@ -105,6 +98,10 @@ void add_triangle(const DrawContext& c, SetupOut& out, const std::array<FsVertex
     auto setup = setup_triangle({v[0].win, v[1].win, v[2].win}, c.scissor);
     if (!setup) return;
     FsPrimitive p;
+    if (auto small = small_coverage(*setup)) {
+        if (!small->mask) return;  // between pixel centres: no fragments
+        p.cover = *small;
+    }
     p.v = v;
     p.front = front;
     set_triangle_planes(p, *setup);
@@ -166,12 +163,12 @@ void draw_point(const DrawContext& c, SetupOut& out, uint32_t id) {
     bin(out, p, point_rect(p));
 }
 
-std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out,
-                                           uint32_t count, const GLState& gl) {
+void make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out, uint32_t count, const GLState& gl,
+                        std::vector<ClipVertex>& verts) {
     int position = find_output(vs, "gl_Position");
     int clip_vertex = find_output(vs, "gl_ClipVertex");
     int plane_source = clip_vertex >= 0 ? clip_vertex : position;
-    std::vector<ClipVertex> verts(count);
+    verts.assign(count, ClipVertex{});
     for (uint32_t i = 0; i < count; ++i) {
         const float* attrs = out.vertex(i);
         ClipVertex& v = verts[i];
@@ -187,7 +184,6 @@ std::vector<ClipVertex> make_clip_vertices(const ir::Shader& vs, const exec::Ver
             for (int k = 0; k < kMaxUserPlanes; ++k) v.user[k] = glm::dot(gl.clip_planes[k], eye);
         }
     }
-    return verts;
 }
 
 Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport) {
@@ -203,7 +199,7 @@ void prepare(DrawContext& c, const glm::vec4& viewport, uint32_t vertex_count) {
     c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
     c.clip.user_planes = c.gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
     c.clip.attr_count = c.vs.stride;
-    c.outcodes.reserve(vertex_count);
+    c.outcodes.clear();
     for (const ClipVertex& v : c.vertices) c.outcodes.push_back(outcode(v, c.clip));
     uint32_t n = c.stage.attr_count();
     c.front_attrs.resize(size_t(vertex_count) * n);
@@ -237,39 +233,36 @@ void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<Assembl
 
 // Assembles, clips and sets up every primitive, in jobs on the workers when
 // there are many; `outs` keeps the jobs' attribute storage.
-void set_up_primitives(const DrawContext& c, Primitive prim, uint32_t vertex_count,
-                       std::span<const uint32_t> indices, unsigned threads, std::vector<SetupOut>& outs) {
+std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint32_t vertex_count,
+                                       std::span<const uint32_t> indices, unsigned threads, DrawScratch& scratch) {
     uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
-    std::vector<AssembledPrim> assembled = assemble(prim, stream);
+    std::vector<AssembledPrim>& assembled = scratch.assembled;
+    assemble(prim, stream, assembled);
     size_t jobs = (assembled.size() + kSetupJob - 1) / kSetupJob;
     unsigned workers = assembled.size() < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
     // One thread: one job, whose primitives need no copy. A primitive's setup
     // does not depend on its job, so neither do the results.
     size_t job_size = workers == 1 ? std::max<size_t>(assembled.size(), 1) : kSetupJob;
     jobs = std::max<size_t>(1, (assembled.size() + job_size - 1) / job_size);
-    outs = std::vector<SetupOut>(jobs);
+    if (scratch.setup.size() < jobs) scratch.setup.resize(jobs);
+    std::span<SetupOut> outs(scratch.setup.data(), jobs);
+    for (SetupOut& out : outs) out.clear();
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
         for (size_t job; queue.next(&job);)
             set_up_range(c, outs[job], assembled, job * job_size, std::min(assembled.size(), (job + 1) * job_size),
                          indices);
     });
+    return outs;
 }
 
-// Bins the jobs' primitives in submission order.
-std::vector<FsPrimitive> bin_primitives(std::vector<SetupOut>& outs, TileBins& bins, uint64_t* triangles) {
-    std::vector<FsPrimitive> prims;
-    size_t total = 0;
+// Bins the jobs' primitives in submission order, where the jobs left them.
+void bin_primitives(std::span<const SetupOut> outs, TileBins& bins, uint64_t* triangles) {
     *triangles = 0;
-    for (const SetupOut& out : outs) total += out.prims.size(), *triangles += out.triangles;
-    if (outs.size() == 1) prims = std::move(outs[0].prims);
-    prims.reserve(total);
-    for (const SetupOut& out : outs)
-        if (outs.size() > 1) prims.insert(prims.end(), out.prims.begin(), out.prims.end());
-    uint32_t index = 0;
-    for (const SetupOut& out : outs)
-        for (const Rect& r : out.bounds) bins.add(index++, r);
-    return prims;
+    for (const SetupOut& out : outs) {
+        *triangles += out.triangles;
+        for (size_t i = 0; i < out.prims.size(); ++i) bins.add(&out.prims[i], out.bounds[i]);
+    }
 }
 
 }  // namespace
@@ -285,12 +278,15 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
         if (index >= vertex_count)
             return Error(fmt::format("index {} is out of range ({} vertices)", index, vertex_count));
     if (Status st = apply_builtin_uniforms(program, gl); !st) return st.error();
+    auto& scratch_ptr = program.state().draw_scratch;
+    if (!scratch_ptr) scratch_ptr = std::make_shared<DrawScratch>();
+    DrawScratch& scratch = *scratch_ptr;
     DrawStats stats;
     using Clock = std::chrono::steady_clock;
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     auto start = Clock::now();
-    auto shaded = exec::shade_vertices(program, attribs, vertex_count, gl);
-    if (!shaded) return shaded.error();
+    if (Status st = exec::shade_vertices(program, attribs, vertex_count, gl, scratch.shaded); !st)
+        return st.error();
     stats.vertex_seconds = seconds_since(start);
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
@@ -299,16 +295,16 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     Rect scissor = scissor_rect(gl, fb, &viewport);
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
-    DrawContext c{gl, stage, *shaded, make_clip_vertices(vs, *shaded, vertex_count, gl), {}, scissor, viewport,
-                  {}, find_output(vs, "gl_PointSize"), {}};
+    make_clip_vertices(vs, scratch.shaded, vertex_count, gl, scratch.vertices);
+    DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
+                  {}, find_output(vs, "gl_PointSize"), scratch.front_attrs};
     prepare(c, viewport, vertex_count);
-    std::vector<SetupOut> outs;
-    set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, outs);
-    TileBins bins(scissor);
-    std::vector<FsPrimitive> prims = bin_primitives(outs, bins, &stats.triangles);
+    auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
+    scratch.bins.reset(scissor);
+    bin_primitives(outs, scratch.bins, &stats.triangles);
     stats.raster_seconds = seconds_since(raster_start);
     auto fragment_start = Clock::now();
-    TileResult tiles = bins.render(TileTarget{program, gl, fb, scissor}, prims, stage, program.exec.threads);
+    TileResult tiles = scratch.bins.render(TileTarget{program, gl, fb, scissor}, stage, program.exec.threads);
     stats.fragment_seconds = seconds_since(fragment_start);
     stats.fragments_shaded = tiles.fragments_shaded;
     stats.fragments_written = tiles.fragments_written;

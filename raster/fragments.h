@@ -41,6 +41,9 @@ struct FsPrimitive {
     int ox = 0, oy = 0;
     std::array<Plane, 3> weight;
     Plane z;
+    // Triangles: the coverage of a small one; mask 0 for the others, which
+    // tiles set up again (small triangles that cover nothing are not kept).
+    SmallCoverage cover;
 };
 
 void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& setup);

@@ -22,10 +22,13 @@ Rect intersect(const Rect& a, const Rect& b) {
 
 }  // namespace
 
-TileBins::TileBins(const Rect& scissor) : scissor_(scissor) {
+void TileBins::reset(const Rect& scissor) {
+    scissor_ = scissor;
+    area_ = 0;
     // Tiles are aligned to the framebuffer's origin, so 2x2 quads never straddle two.
     columns_ = std::max(0, (scissor.x1 + kTileSize - 1) / kTileSize - scissor.x0 / kTileSize);
     rows_ = std::max(0, (scissor.y1 + kTileSize - 1) / kTileSize - scissor.y0 / kTileSize);
+    for (auto& bin : bins_) bin.clear();
     bins_.resize(size_t(columns_) * size_t(rows_));
 }
 
@@ -35,7 +38,7 @@ Rect TileBins::tile_rect(size_t tile) const {
     return intersect(Rect{x, y, x + kTileSize, y + kTileSize}, scissor_);
 }
 
-void TileBins::add(uint32_t prim, const Rect& bounds) {
+void TileBins::add(const FsPrimitive* prim, const Rect& bounds) {
     Rect r = intersect(bounds, scissor_);
     if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
     area_ += uint64_t(r.x1 - r.x0) * uint64_t(r.y1 - r.y0);
@@ -45,16 +48,18 @@ void TileBins::add(uint32_t prim, const Rect& bounds) {
             bins_[size_t(ty - cy0) * size_t(columns_) + size_t(tx - cx0)].push_back(prim);
 }
 
-void TileBins::render_tile(const TileTarget& target, const std::vector<FsPrimitive>& prims, size_t tile,
-                           FragmentStage& stage) const {
+void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage& stage) const {
     Rect clip = tile_rect(tile);
-    for (uint32_t index : bins_[tile]) {
-        const FsPrimitive& p = prims[index];
-        if (p.count == 3) {
-            // Set up again rather than stored: it is cheap, and it halves the
-            // memory a draw of many small triangles writes and reads.
+    for (const FsPrimitive* prim : bins_[tile]) {
+        const FsPrimitive& p = *prim;
+        auto add_quad = [&](int x, int y, unsigned mask) { stage.add_quad(p, x, y, mask); };
+        if (p.count == 3 && p.cover.mask) {
+            for_each_small_quad(p.cover, clip, add_quad);
+        } else if (p.count == 3) {
+            // Larger triangles are set up again rather than stored: they are
+            // few, and it saves the memory of their edge functions.
             auto setup = setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor);
-            if (setup) for_each_quad(*setup, clip, [&](int x, int y, unsigned mask) { stage.add_quad(p, x, y, mask); });
+            if (setup) for_each_quad(*setup, clip, add_quad);
         } else if (p.count == 2) {
             rasterize_line(stage, p, clip);
         } else {
@@ -65,8 +70,7 @@ void TileBins::render_tile(const TileTarget& target, const std::vector<FsPrimiti
     stage.flush();
 }
 
-TileResult TileBins::render(const TileTarget& target, const std::vector<FsPrimitive>& prims, FragmentStage& stage,
-                            unsigned threads) const {
+TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsigned threads) const {
     std::vector<size_t> tiles;  // the non-empty ones, in order
     for (size_t t = 0; t < bins_.size(); ++t)
         if (!bins_[t].empty()) tiles.push_back(t);
@@ -79,7 +83,7 @@ TileResult TileBins::render(const TileTarget& target, const std::vector<FsPrimit
         if (k > 0) stages[k] = std::make_unique<FragmentStage>(target.program, target.gl, target.fb);
         FragmentStage& s = k > 0 ? *stages[k] : stage;
         for (size_t i; queue.next(&i);) {
-            render_tile(target, prims, tiles[i], s);
+            render_tile(target, tiles[i], s);
             if (!s.error()) continue;
             errors[i] = *s.error();
             s.clear_error();

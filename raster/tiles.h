@@ -28,26 +28,28 @@ struct TileResult {
     Status status = Ok{};
 };
 
+// The bins keep their storage across reset(), so that a renderer that draws
+// again (draw() keeps them in the Program) does not allocate them anew.
 class TileBins {
 public:
-    explicit TileBins(const Rect& scissor);
-    // bounds: the pixels primitive `prim` may cover.
-    void add(uint32_t prim, const Rect& bounds);
+    // Empties the bins for a draw into `scissor`.
+    void reset(const Rect& scissor);
+    // bounds: the pixels `prim` may cover. Primitives are added in submission
+    // order and must stay alive and unmoved until render() returns.
+    void add(const FsPrimitive* prim, const Rect& bounds);
     // Renders every tile on up to `threads` threads (0: one per core); `stage`
     // serves the calling thread. A shader error is the one of the first
     // failing tile, so it does not depend on the thread count either.
-    TileResult render(const TileTarget& target, const std::vector<FsPrimitive>& prims, FragmentStage& stage,
-                      unsigned threads) const;
+    TileResult render(const TileTarget& target, FragmentStage& stage, unsigned threads) const;
 
 private:
     Rect tile_rect(size_t tile) const;
-    void render_tile(const TileTarget& target, const std::vector<FsPrimitive>& prims, size_t tile,
-                     FragmentStage& stage) const;
+    void render_tile(const TileTarget& target, size_t tile, FragmentStage& stage) const;
 
     Rect scissor_;
     int columns_ = 0, rows_ = 0;
-    std::vector<std::vector<uint32_t>> bins_;  // per tile: primitive indices, ascending
-    uint64_t area_ = 0;                        // sum of the primitives' bounds, in pixels
+    std::vector<std::vector<const FsPrimitive*>> bins_;  // per tile, in submission order
+    uint64_t area_ = 0;                                  // sum of the primitives' bounds, in pixels
 };
 
 }  // namespace glslrun::raster

@@ -57,4 +57,27 @@ std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win,
     return t;
 }
 
+std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {
+    SmallCoverage c{t.bbox.x0 & ~1, t.bbox.y0 & ~1, 0};
+    if (t.bbox.x1 - c.x > kSmallSize || t.bbox.y1 - c.y > kSmallSize) return std::nullopt;
+    // covers() with the orientation and the fill rule's bias folded into each
+    // edge, stepped from pixel to pixel instead of evaluated per pixel.
+    const int64_t s = t.area2 > 0 ? 1 : -1;
+    std::array<int64_t, 3> row = edge_values(t, t.bbox.x0, t.bbox.y0), dx{}, dy{};
+    for (size_t i = 0; i < 3; ++i) {
+        row[i] = s * row[i] + t.bias[i];
+        dx[i] = s * t.ea[i] * kSubpixelOne;
+        dy[i] = s * t.eb[i] * kSubpixelOne;
+    }
+    for (int y = t.bbox.y0; y < t.bbox.y1; ++y) {
+        std::array<int64_t, 3> e = row;
+        for (int x = t.bbox.x0; x < t.bbox.x1; ++x) {
+            if ((e[0] | e[1] | e[2]) >= 0) c.mask |= uint64_t(1) << ((y - c.y) * kSmallSize + (x - c.x));
+            for (size_t i = 0; i < 3; ++i) e[i] += dx[i];
+        }
+        for (size_t i = 0; i < 3; ++i) row[i] += dy[i];
+    }
+    return c;
+}
+
 }  // namespace glslrun::raster

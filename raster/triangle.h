@@ -111,4 +111,45 @@ void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
     }
 }
 
+// Coverage of a small triangle, one whose candidate pixels lie within the
+// kSmallSize square at (x, y) (x, y even, so the square holds whole quads):
+// bit j * kSmallSize + i is pixel (x + i, y + j). Computed once at setup, so
+// that tiles need neither the edge functions nor the block walk, and
+// triangles that cover no pixel centre can be dropped before binning.
+inline constexpr int kSmallSize = 8;
+struct SmallCoverage {
+    int x = 0, y = 0;
+    uint64_t mask = 0;
+};
+
+// Nothing when the triangle's bounding box does not fit the square.
+std::optional<SmallCoverage> small_coverage(const TriangleSetup& t);
+
+// Calls visit(x, y, mask) for the quads of `c` with a covered pixel inside
+// `clip`, in the order for_each_quad visits them, so that a tile's batches
+// (and the loop cap's iteration count per batch) are the same either way.
+template <class Visit>
+void for_each_small_quad(const SmallCoverage& c, const Rect& clip, Visit&& visit) {
+    uint64_t columns = 0, mask = 0;
+    for (int i = 0; i < kSmallSize; ++i)
+        if (c.x + i >= clip.x0 && c.x + i < clip.x1) columns |= uint64_t(1) << i;
+    for (int j = 0; j < kSmallSize; ++j)
+        if (c.y + j >= clip.y0 && c.y + j < clip.y1) mask |= columns << (j * kSmallSize);
+    mask &= c.mask;
+    if (!mask) return;
+    // Where the square crosses a block boundary, the walk finishes the lower
+    // (left) block before it starts the next.
+    static_assert(kSmallSize == kBlockSize);
+    const int sx = kBlockSize - (c.x & (kBlockSize - 1)), sy = kBlockSize - (c.y & (kBlockSize - 1));
+    const int row_ranges[3] = {0, sy, kSmallSize}, column_ranges[3] = {0, sx, kSmallSize};
+    for (int r = 0; r < 2; ++r)
+        for (int k = 0; k < 2; ++k)
+            for (int j = row_ranges[r]; j < row_ranges[r + 1]; j += 2)
+                for (int i = column_ranges[k]; i < column_ranges[k + 1]; i += 2) {
+                    unsigned low = unsigned(mask >> (j * kSmallSize + i)) & 3u;
+                    unsigned high = unsigned(mask >> ((j + 1) * kSmallSize + i)) & 3u;
+                    if (low | high) visit(c.x + i, c.y + j, low | high << 2);
+                }
+}
+
 }  // namespace glslrun::raster

@@ -132,15 +132,15 @@ std::optional<Error> shade_range(rt::Interpreter& interp, const Program::State& 
 // the shaded copies by index: for indexed meshes this is the post-transform
 // cache, one that never misses. Large draws shade jobs of vertices on
 // ExecOptions::threads workers.
-Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
-                                     uint32_t count, const GLState& current) {
+Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs, uint32_t count,
+                      const GLState& current, VertexOutputs& out) {
     const Program::State& st = program.state();
     const ir::Shader& vs = st.ir.vertex;
     auto plan = plan_inputs(vs, attribs, count, current);
     if (!plan) return plan.error();
-    VertexOutputs out;
     out.offset = output_offsets(vs, &out.stride);
-    out.data.assign(size_t(count) * out.stride, 0.0f);
+    // Not cleared: shade_range writes every component of every vertex.
+    out.data.resize(size_t(count) * out.stride);
     size_t jobs = (size_t(count) + kVertexJob - 1) / kVertexJob;
     unsigned workers = count < kParallelVertices ? 1 : rt::thread_count(program.exec.threads, jobs);
     std::vector<std::optional<Error>> errors(jobs);
@@ -155,7 +155,7 @@ Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<V
         }
     });
     if (auto failed = queue.first_failure()) return *errors[*failed];
-    return out;
+    return Ok{};
 }
 
 }  // namespace glslrun::exec
@@ -164,15 +164,16 @@ namespace glslrun {
 
 Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
                                                uint32_t count, const GLState* gl) {
-    auto shaded = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{});
-    if (!shaded) return shaded.error();
+    exec::VertexOutputs shaded;
+    if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded); !st)
+        return st.error();
     const ir::Shader& vs = program.state().ir.vertex;
     std::vector<ShaderOutput> outputs;
     for (size_t o = 0; o < vs.outputs.size(); ++o) {
         ShaderOutput out{vs.outputs[o].name, vs.outputs[o].count, {}};
         out.data.reserve(size_t(count) * out.components);
         for (uint32_t v = 0; v < count; ++v) {
-            const float* src = shaded->vertex(v) + shaded->offset[o];
+            const float* src = shaded.vertex(v) + shaded.offset[o];
             out.data.insert(out.data.end(), src, src + out.components);
         }
         outputs.push_back(std::move(out));

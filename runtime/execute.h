@@ -20,8 +20,9 @@ struct VertexOutputs {
 
 // Runs the vertex shader on vertices [0, count). Attributes the arrays lack
 // take `current`'s values (gl_Color, gl_SecondaryColor, gl_Normal) or (0,0,0,1).
-Result<VertexOutputs> shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
-                                     uint32_t count, const GLState& current);
+// `out` is overwritten; its storage is reused (draw() keeps it between draws).
+Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs, uint32_t count,
+                      const GLState& current, VertexOutputs& out);
 
 // An interpreter failure (loop cap) as a user-facing error.
 Error run_error(const Program::State& state, ir::Stage stage, const rt::RunError& error);

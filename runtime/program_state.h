@@ -2,6 +2,7 @@
 // runtime/gl_state.cpp, runtime/execute.cpp and raster/draw.cpp.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,11 +10,16 @@
 #include "ir/ir.h"
 
 namespace glslrun {
+namespace raster { struct DrawScratch; }
 
 struct Program::State {
     ir::Program ir;
     std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
     std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
+    // draw()'s working memory, reused by the next draw (raster/scratch.h);
+    // made at the first draw. shared_ptr: its deleter works with the type
+    // incomplete here.
+    std::shared_ptr<raster::DrawScratch> draw_scratch;
 };
 
 }  // namespace glslrun

@@ -1,0 +1,43 @@
+// draw()'s working memory, kept by the Program between draws (Program::State::
+// draw_scratch). A 262k-triangle draw needs tens of MB of vertex, clip,
+// primitive and bin storage; allocated afresh per draw, the kernel's page
+// faults on it were a fifth of the frame (perf). Every draw empties what it
+// uses first, so nothing of one draw reaches the next but capacity.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "raster/assemble.h"
+#include "raster/clip.h"
+#include "raster/fragments.h"
+#include "raster/tiles.h"
+#include "runtime/execute.h"
+
+namespace glslrun::raster {
+
+// What setting up one job of primitives produces, in submission order.
+struct SetupOut {
+    AttrArena arena;  // attributes of clipped and flat-shaded vertices, until the draw ends
+    std::vector<FsPrimitive> prims;
+    std::vector<Rect> bounds;  // per primitive: the pixels it may cover
+    uint64_t triangles = 0;
+
+    void clear() {
+        arena.clear();
+        prims.clear();
+        bounds.clear();
+        triangles = 0;
+    }
+};
+
+struct DrawScratch {
+    exec::VertexOutputs shaded;
+    std::vector<ClipVertex> vertices;  // per vertex of the arrays
+    std::vector<uint32_t> outcodes;    // per vertex of the arrays
+    std::vector<float> front_attrs;    // per vertex of the arrays: its fragment attribute vector
+    std::vector<AssembledPrim> assembled;
+    std::vector<SetupOut> setup;  // per job; only the first `jobs` are used by a draw
+    TileBins bins;
+};
+
+}  // namespace glslrun::raster
