@@ -41,8 +41,9 @@ struct DrawContext {
     std::vector<float>& front_attrs;
 };
 
-FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
-    FsVertex v;
+// Writes in place (attrs are set later): returned by value, the vertex went
+// through memory and stalled the next loads (perf: a third of draw_polygon).
+void to_window(const DrawContext& c, const glm::vec4& clip, FsVertex& v) {
     float inv_w = 1.0f / clip.w;
     glm::vec3 ndc = glm::vec3(clip) * inv_w;
     v.win.x = (ndc.x + 1.0f) * c.viewport[2] * 0.5f + c.viewport[0];
@@ -50,7 +51,6 @@ FsVertex to_window(const DrawContext& c, const glm::vec4& clip) {
     float n = c.gl.depth_near, f = c.gl.depth_far;
     v.z = std::clamp((ndc.z * (f - n) + (f + n)) * 0.5f, std::min(n, f), std::max(n, f));
     v.inv_w = inv_w;
-    return v;
 }
 
 // The FS attribute vector of a (possibly clipped) vertex. Unclipped vertices
@@ -63,15 +63,15 @@ const float* fs_attrs(const DrawContext& c, SetupOut& out, const ClipVertex& v, 
 }
 
 // Gives every vertex the provoking vertex's colours (glShadeModel(GL_FLAT)).
-void set_attrs(const DrawContext& c, SetupOut& out, const ClipVertex* poly, size_t n, uint32_t provoking_id, bool back,
-               FsVertex* verts) {
+void set_attrs(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, size_t n, uint32_t provoking_id,
+               bool back, FsVertex* verts) {
     if (!c.gl.flat_shading) {
-        for (size_t i = 0; i < n; ++i) verts[i].attrs = fs_attrs(c, out, poly[i], back);
+        for (size_t i = 0; i < n; ++i) verts[i].attrs = fs_attrs(c, out, *poly[i], back);
         return;
     }
     const float* flat = fs_attrs(c, out, c.vertices[provoking_id], back);
     for (size_t i = 0; i < n; ++i) {
-        const float* own = fs_attrs(c, out, poly[i], back);
+        const float* own = fs_attrs(c, out, *poly[i], back);
         float* attrs = out.arena.alloc(c.stage.attr_count());
         std::copy(own, own + c.stage.attr_count(), attrs);
         c.stage.copy_colors(flat, attrs);
@@ -94,53 +94,59 @@ void bin(SetupOut& out, const FsPrimitive& p, const Rect& bounds) {
     out.bounds.push_back(bounds);
 }
 
-void add_triangle(const DrawContext& c, SetupOut& out, const std::array<FsVertex, 3>& v, bool front) {
-    auto setup = setup_triangle({v[0].win, v[1].win, v[2].win}, c.scissor);
+void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const FsVertex& v1, const FsVertex& v2,
+                  bool front) {
+    auto setup = setup_triangle({v0.win, v1.win, v2.win}, c.scissor);
     if (!setup) return;
-    FsPrimitive p;
-    if (auto small = small_coverage(*setup)) {
-        if (!small->mask) return;  // between pixel centres: no fragments
-        p.cover = *small;
-    }
-    p.v = v;
+    auto small = small_coverage(*setup);
+    if (small && !small->mask) return;  // between pixel centres: no fragments
+    FsPrimitive& p = out.prims.emplace_back();  // built in place: it is large
+    if (small) p.cover = *small;
+    p.v = {v0, v1, v2};
     p.front = front;
     set_triangle_planes(p, *setup);
-    bin(out, p, setup->bbox);
+    out.bounds.push_back(setup->bbox);
 }
 
-// A convex polygon in the view volume: facing, culling, attributes, then a fan of triangles.
-void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* poly, size_t n, uint32_t provoking_id) {
-    std::array<FsVertex, kMaxClipVertices> verts;
-    for (size_t i = 0; i < n; ++i) verts[i] = to_window(c, poly[i].pos);
+// A convex polygon of n <= N vertices in the view volume: facing, culling,
+// attributes, then a fan of triangles.
+template <size_t N>
+void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, size_t n,
+                  uint32_t provoking_id) {
+    std::array<FsVertex, N> verts;
+    for (size_t i = 0; i < n; ++i) to_window(c, poly[i]->pos, verts[i]);
     double area = signed_area(verts.data(), n);
     if (!(area != 0.0)) return;  // degenerate or NaN
     bool front = (area > 0) == c.gl.front_ccw;
     if (c.gl.cull_face && front != c.gl.cull_back) return;
     bool back_colors = c.gl.vertex_program_two_side && !front;
     set_attrs(c, out, poly, n, provoking_id, back_colors, verts.data());
-    for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, out, {verts[0], verts[k], verts[k + 1]}, front);
+    for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, out, verts[0], verts[k], verts[k + 1], front);
 }
 
 void draw_triangle(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    const ClipVertex tri[3] = {c.vertices[ids[0]], c.vertices[ids[1]], c.vertices[ids[2]]};
+    const ClipVertex* tri[3] = {&c.vertices[ids[0]], &c.vertices[ids[1]], &c.vertices[ids[2]]};
     uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
     if (codes[0] & codes[1] & codes[2]) return;
-    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon(c, out, tri, 3, provoking_id);
-    ClipPolygon poly{tri[0], tri[1], tri[2]};
+    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon<3>(c, out, tri, 3, provoking_id);
+    ClipPolygon poly{*tri[0], *tri[1], *tri[2]};
     clip_polygon(poly, c.clip, out.arena);
-    if (poly.size() >= 3) draw_polygon(c, out, poly.begin(), poly.size(), provoking_id);
+    std::array<const ClipVertex*, kMaxClipVertices> clipped;
+    for (size_t i = 0; i < poly.size(); ++i) clipped[i] = &poly[i];
+    if (poly.size() >= 3) draw_polygon<kMaxClipVertices>(c, out, clipped.data(), poly.size(), provoking_id);
 }
 
 void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
     ClipVertex ends[2] = {c.vertices[ids[0]], c.vertices[ids[1]]};
+    const ClipVertex* end_ptrs[2] = {&ends[0], &ends[1]};
     uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
     if (ca & cb) return;
     if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, out.arena)) return;
     FsPrimitive p;
     p.count = 2;
-    p.v[0] = to_window(c, ends[0].pos);
-    p.v[1] = to_window(c, ends[1].pos);
-    set_attrs(c, out, ends, 2, provoking_id, false, p.v.data());
+    to_window(c, ends[0].pos, p.v[0]);
+    to_window(c, ends[1].pos, p.v[1]);
+    set_attrs(c, out, end_ptrs, 2, provoking_id, false, p.v.data());
     set_line_planes(p);
     // A line's pixels lie within one pixel of its end points.
     glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
@@ -153,7 +159,7 @@ void draw_point(const DrawContext& c, SetupOut& out, uint32_t id) {
     frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
     if (outcode(v, frustum)) return;
     FsPrimitive p;
-    p.v[0] = to_window(c, v.pos);
+    to_window(c, v.pos, p.v[0]);
     p.v[0].attrs = fs_attrs(c, out, v, false);
     p.count = 1;
     p.point_center = p.v[0].win;

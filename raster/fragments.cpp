@@ -61,11 +61,12 @@ void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& t) {
     // The weights are the edge functions over twice the area, exact at the
     // origin (integers) and with per-pixel steps of kSubpixelOne.
     std::array<int64_t, 3> e = edge_values(t, prim.ox, prim.oy);
+    const double inv_area2 = 1.0 / double(t.area2);
     double za = 0, zb = 0, zc = 0;
     for (int i = 0; i < 3; ++i) {
-        double a = double(t.ea[i]) * double(kSubpixelOne) * t.inv_area2;
-        double b = double(t.eb[i]) * double(kSubpixelOne) * t.inv_area2;
-        double c = double(e[i]) * t.inv_area2;
+        double a = double(t.ea[i]) * double(kSubpixelOne) * inv_area2;
+        double b = double(t.eb[i]) * double(kSubpixelOne) * inv_area2;
+        double c = double(e[i]) * inv_area2;
         prim.weight[i] = to_plane(a, b, c);
         za += a * prim.v[i].z;
         zb += b * prim.v[i].z;

@@ -30,7 +30,6 @@ std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win,
     }
     t.area2 = (t.fx[1] - t.fx[0]) * (t.fy[2] - t.fy[0]) - (t.fy[1] - t.fy[0]) * (t.fx[2] - t.fx[0]);
     if (t.area2 == 0) return std::nullopt;
-    t.inv_area2 = 1.0 / double(t.area2);
     for (int i = 0; i < 3; ++i) {
         int a = (i + 1) % 3, b = (i + 2) % 3;
         int64_t dx = t.fx[b] - t.fx[a], dy = t.fy[b] - t.fy[a];
@@ -69,11 +68,13 @@ std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {
         dx[i] = s * t.ea[i] * kSubpixelOne;
         dy[i] = s * t.eb[i] * kSubpixelOne;
     }
+    // Branch-free: a test per pixel mispredicted often (perf).
     for (int y = t.bbox.y0; y < t.bbox.y1; ++y) {
-        std::array<int64_t, 3> e = row;
+        int64_t e0 = row[0], e1 = row[1], e2 = row[2];
         for (int x = t.bbox.x0; x < t.bbox.x1; ++x) {
-            if ((e[0] | e[1] | e[2]) >= 0) c.mask |= uint64_t(1) << ((y - c.y) * kSmallSize + (x - c.x));
-            for (size_t i = 0; i < 3; ++i) e[i] += dx[i];
+            uint64_t inside = ~uint64_t(e0 | e1 | e2) >> 63;  // 1 when no edge value is negative
+            c.mask |= inside << ((y - c.y) * kSmallSize + (x - c.x));
+            e0 += dx[0], e1 += dx[1], e2 += dx[2];
         }
         for (size_t i = 0; i < 3; ++i) row[i] += dy[i];
     }

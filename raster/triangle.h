@@ -34,7 +34,6 @@ struct TriangleSetup {
     std::array<int64_t, 3> ea{}, eb{}, ec{};
     std::array<int64_t, 3> bias{};  // 0 if ties on the edge are inside (top-left), else -1
     int64_t area2 = 0;              // twice the signed area in subpixel units (> 0: CCW)
-    double inv_area2 = 0;
     Rect bbox;  // covered pixels lie inside, already clipped to the scissor
 };
 
