@@ -96,16 +96,16 @@ void bin(SetupOut& out, const FsPrimitive& p, const Rect& bounds) {
 
 void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const FsVertex& v1, const FsVertex& v2,
                   bool front) {
-    auto setup = setup_triangle({v0.win, v1.win, v2.win}, c.scissor);
-    if (!setup) return;
-    auto small = small_coverage(*setup);
+    TriangleSetup setup;
+    if (!setup_triangle({v0.win, v1.win, v2.win}, c.scissor, setup)) return;
+    auto small = small_coverage(setup);
     if (small && !small->mask) return;  // between pixel centres: no fragments
     FsPrimitive& p = out.prims.emplace_back();  // built in place: it is large
     if (small) p.cover = *small;
     p.v = {v0, v1, v2};
     p.front = front;
-    set_triangle_planes(p, *setup);
-    out.bounds.push_back(setup->bbox);
+    set_triangle_planes(p, setup);
+    out.bounds.push_back(setup.bbox);
 }
 
 // A convex polygon of n <= N vertices in the view volume: facing, culling,

@@ -16,6 +16,11 @@ namespace {
 // thousands of tiny primitives).
 constexpr uint64_t kParallelPixels = 128 * 128;
 
+void prefetch(const FsPrimitive* p) {
+    const char* bytes = reinterpret_cast<const char*>(p);
+    for (size_t offset = 0; offset < sizeof(FsPrimitive); offset += 64) __builtin_prefetch(bytes + offset);
+}
+
 Rect intersect(const Rect& a, const Rect& b) {
     return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
@@ -50,16 +55,21 @@ void TileBins::add(const FsPrimitive* prim, const Rect& bounds) {
 
 void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage& stage) const {
     Rect clip = tile_rect(tile);
-    for (const FsPrimitive* prim : bins_[tile]) {
-        const FsPrimitive& p = *prim;
+    const std::vector<const FsPrimitive*>& bin = bins_[tile];
+    for (size_t i = 0; i < bin.size(); ++i) {
+        const FsPrimitive& p = *bin[i];
+        // Consecutive primitives of a bin are rarely adjacent in memory: the
+        // loads of p missed the cache (perf: 15% of render_tile on one load).
+        if (i + 1 < bin.size()) prefetch(bin[i + 1]);
         auto add_quad = [&](int x, int y, unsigned mask) { stage.add_quad(p, x, y, mask); };
         if (p.count == 3 && p.cover.mask) {
             for_each_small_quad(p.cover, clip, add_quad);
         } else if (p.count == 3) {
             // Larger triangles are set up again rather than stored: they are
             // few, and it saves the memory of their edge functions.
-            auto setup = setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor);
-            if (setup) for_each_quad(*setup, clip, add_quad);
+            TriangleSetup setup;
+            if (setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor, setup))
+                for_each_quad(setup, clip, add_quad);
         } else if (p.count == 2) {
             rasterize_line(stage, p, clip);
         } else {

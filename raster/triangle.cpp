@@ -23,13 +23,18 @@ int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1)
 
 std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor) {
     TriangleSetup t;
+    if (!setup_triangle(win, scissor, t)) return std::nullopt;
+    return t;
+}
+
+bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, TriangleSetup& t) {
     for (int i = 0; i < 3; ++i) {
-        if (!std::isfinite(win[i].x) || !std::isfinite(win[i].y)) return std::nullopt;
+        if (!std::isfinite(win[i].x) || !std::isfinite(win[i].y)) return false;
         t.fx[i] = snap(win[i].x);
         t.fy[i] = snap(win[i].y);
     }
     t.area2 = (t.fx[1] - t.fx[0]) * (t.fy[2] - t.fy[0]) - (t.fy[1] - t.fy[0]) * (t.fx[2] - t.fx[0]);
-    if (t.area2 == 0) return std::nullopt;
+    if (t.area2 == 0) return false;
     for (int i = 0; i < 3; ++i) {
         int a = (i + 1) % 3, b = (i + 2) % 3;
         int64_t dx = t.fx[b] - t.fx[a], dy = t.fy[b] - t.fy[a];
@@ -52,8 +57,7 @@ std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win,
     t.bbox.y0 = int(std::max<int64_t>(first(min_y), scissor.y0));
     t.bbox.x1 = int(std::min<int64_t>(last(max_x) + 1, scissor.x1));
     t.bbox.y1 = int(std::min<int64_t>(last(max_y) + 1, scissor.y1));
-    if (t.bbox.x0 >= t.bbox.x1 || t.bbox.y0 >= t.bbox.y1) return std::nullopt;
-    return t;
+    return t.bbox.x0 < t.bbox.x1 && t.bbox.y0 < t.bbox.y1;
 }
 
 std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {

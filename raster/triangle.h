@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -28,12 +29,14 @@ struct Rect {
 inline constexpr int kQuadDx[4] = {0, 1, 0, 1};
 inline constexpr int kQuadDy[4] = {0, 0, 1, 1};
 
+// setup_triangle() sets every field; there are no initializers, because
+// zeroing this per triangle showed in profiles.
 struct TriangleSetup {
-    std::array<int64_t, 3> fx{}, fy{};  // snapped vertex positions
+    std::array<int64_t, 3> fx, fy;  // snapped vertex positions
     // Edge i is opposite vertex i: E_i(p) = a*px + b*py + c, with E_i(v_i) = area2.
-    std::array<int64_t, 3> ea{}, eb{}, ec{};
-    std::array<int64_t, 3> bias{};  // 0 if ties on the edge are inside (top-left), else -1
-    int64_t area2 = 0;              // twice the signed area in subpixel units (> 0: CCW)
+    std::array<int64_t, 3> ea, eb, ec;
+    std::array<int64_t, 3> bias;  // 0 if ties on the edge are inside (top-left), else -1
+    int64_t area2;                // twice the signed area in subpixel units (> 0: CCW)
     Rect bbox;  // covered pixels lie inside, already clipped to the scissor
 };
 
@@ -47,6 +50,9 @@ inline int pixel_floor(float v) {
 
 // Returns nothing for degenerate triangles or ones outside the scissor.
 std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor);
+// The same into `t` (false: nothing to draw, `t` unspecified), without the
+// optional's copy, for the per-triangle paths.
+bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, TriangleSetup& t);
 
 // Edge function values at the centre of pixel (x, y).
 inline std::array<int64_t, 3> edge_values(const TriangleSetup& t, int x, int y) {
@@ -124,31 +130,46 @@ struct SmallCoverage {
 // Nothing when the triangle's bounding box does not fit the square.
 std::optional<SmallCoverage> small_coverage(const TriangleSetup& t);
 
+// Bits [lo, hi) of a 64-bit word.
+inline uint64_t bit_range(int lo, int hi) {
+    lo = std::clamp(lo, 0, 64), hi = std::clamp(hi, 0, 64);
+    if (lo >= hi) return 0;
+    uint64_t below_hi = hi == 64 ? ~uint64_t(0) : (uint64_t(1) << hi) - 1;
+    return below_hi & ~((uint64_t(1) << lo) - 1);
+}
+
+// The pixels of the square whose columns (rows) are in [lo, hi) of it.
+inline uint64_t square_columns(int lo, int hi) {
+    return bit_range(std::clamp(lo, 0, kSmallSize), std::clamp(hi, 0, kSmallSize)) * 0x0101010101010101u;
+}
+inline uint64_t square_rows(int lo, int hi) {
+    return bit_range(kSmallSize * std::clamp(lo, 0, kSmallSize), kSmallSize * std::clamp(hi, 0, kSmallSize));
+}
+
 // Calls visit(x, y, mask) for the quads of `c` with a covered pixel inside
 // `clip`, in the order for_each_quad visits them, so that a tile's batches
 // (and the loop cap's iteration count per batch) are the same either way.
 template <class Visit>
 void for_each_small_quad(const SmallCoverage& c, const Rect& clip, Visit&& visit) {
-    uint64_t columns = 0, mask = 0;
-    for (int i = 0; i < kSmallSize; ++i)
-        if (c.x + i >= clip.x0 && c.x + i < clip.x1) columns |= uint64_t(1) << i;
-    for (int j = 0; j < kSmallSize; ++j)
-        if (c.y + j >= clip.y0 && c.y + j < clip.y1) mask |= columns << (j * kSmallSize);
-    mask &= c.mask;
-    if (!mask) return;
-    // Where the square crosses a block boundary, the walk finishes the lower
-    // (left) block before it starts the next.
-    static_assert(kSmallSize == kBlockSize);
+    static_assert(kSmallSize == 8 && kBlockSize == 8);
+    const uint64_t mask = c.mask & square_columns(clip.x0 - c.x, clip.x1 - c.x) &
+                          square_rows(clip.y0 - c.y, clip.y1 - c.y);
+    // Bit j * 8 + i (i, j even): quad (i, j) has a covered pixel.
+    uint64_t quads = (mask | mask >> 1 | mask >> 8 | mask >> 9) & 0x0055005500550055u;
+    if (!quads) return;
+    // for_each_quad walks rows of 8x8 blocks, and each block by rows: where
+    // the square crosses a block boundary it finishes the lower (left) part
+    // before the next; within a part, bit order is its order.
     const int sx = kBlockSize - (c.x & (kBlockSize - 1)), sy = kBlockSize - (c.y & (kBlockSize - 1));
-    const int row_ranges[3] = {0, sy, kSmallSize}, column_ranges[3] = {0, sx, kSmallSize};
-    for (int r = 0; r < 2; ++r)
-        for (int k = 0; k < 2; ++k)
-            for (int j = row_ranges[r]; j < row_ranges[r + 1]; j += 2)
-                for (int i = column_ranges[k]; i < column_ranges[k + 1]; i += 2) {
-                    unsigned low = unsigned(mask >> (j * kSmallSize + i)) & 3u;
-                    unsigned high = unsigned(mask >> ((j + 1) * kSmallSize + i)) & 3u;
-                    if (low | high) visit(c.x + i, c.y + j, low | high << 2);
-                }
+    const uint64_t rows[2] = {square_rows(0, sy), square_rows(sy, kSmallSize)};
+    const uint64_t columns[2] = {square_columns(0, sx), square_columns(sx, kSmallSize)};
+    for (uint64_t row : rows)
+        for (uint64_t column : columns)
+            for (uint64_t part = quads & row & column; part; part &= part - 1) {
+                int bit = std::countr_zero(part);
+                unsigned low = unsigned(mask >> bit) & 3u, high = unsigned(mask >> (bit + kSmallSize)) & 3u;
+                visit(c.x + (bit & 7), c.y + (bit >> 3), low | high << 2);
+            }
 }
 
 }  // namespace glslrun::raster

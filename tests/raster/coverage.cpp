@@ -169,3 +169,38 @@ TEST_CASE("8x8 blocks inside or outside a triangle cover what the per-pixel test
         CHECK(wrong == 0);
     }
 }
+
+TEST_CASE("small triangles' coverage visits the quads for_each_quad visits, in its order", "[raster][coverage]") {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> corner(0.0f, 40.0f), offset(-4.5f, 4.5f);
+    std::uniform_int_distribution<int> edge(0, 44);
+    using Visits = std::vector<std::array<int, 3>>;
+    int small = 0, empty = 0, nonempty = 0;
+    for (int n = 0; n < 4000; ++n) {
+        glm::vec2 a(corner(rng), corner(rng));
+        glm::vec2 b = a + glm::vec2(offset(rng), offset(rng)), c = a + glm::vec2(offset(rng), offset(rng));
+        const Rect scissor{edge(rng) / 4, edge(rng) / 4, 48 - edge(rng) / 4, 48 - edge(rng) / 4};
+        auto t = setup_triangle({a, b, c}, scissor);
+        if (!t) continue;
+        auto cover = small_coverage(*t);
+        if (!cover) continue;
+        ++small;
+        // Clip rectangles with odd and even edges, inside and across the square.
+        const Rect clip{edge(rng), edge(rng), edge(rng) + 2, edge(rng) + 2};
+        for (const Rect& r : {scissor, clip}) {
+            Visits walk, direct;
+            for_each_quad(*t, r, [&](int x, int y, unsigned m) { walk.push_back({x, y, int(m)}); });
+            for_each_small_quad(*cover, r, [&](int x, int y, unsigned m) { direct.push_back({x, y, int(m)}); });
+            INFO("triangle " << n);
+            REQUIRE(walk == direct);
+        }
+        Visits all;
+        for_each_quad(*t, scissor, [&](int x, int y, unsigned m) { all.push_back({x, y, int(m)}); });
+        CHECK((cover->mask == 0) == all.empty());
+        ++(all.empty() ? empty : nonempty);
+    }
+    // The cases the test is about occurred: small triangles with and without pixels.
+    CHECK(small > 1000);
+    CHECK(empty > 50);
+    CHECK(nonempty > 500);
+}
