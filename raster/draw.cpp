@@ -43,7 +43,7 @@ struct DrawContext {
 
 // Writes in place (attrs are set later): returned by value, the vertex went
 // through memory and stalled the next loads (perf: a third of draw_polygon).
-void to_window(const DrawContext& c, const glm::vec4& clip, FsVertex& v) {
+[[gnu::always_inline]] inline void to_window(const DrawContext& c, const glm::vec4& clip, FsVertex& v) {
     float inv_w = 1.0f / clip.w;
     glm::vec3 ndc = glm::vec3(clip) * inv_w;
     v.win.x = (ndc.x + 1.0f) * c.viewport[2] * 0.5f + c.viewport[0];
@@ -169,26 +169,25 @@ void draw_point(const DrawContext& c, SetupOut& out, uint32_t id) {
     bin(out, p, point_rect(p));
 }
 
-void make_clip_vertices(const ir::Shader& vs, const exec::VertexOutputs& out, uint32_t count, const GLState& gl,
-                        std::vector<ClipVertex>& verts) {
-    int position = find_output(vs, "gl_Position");
-    int clip_vertex = find_output(vs, "gl_ClipVertex");
-    int plane_source = clip_vertex >= 0 ? clip_vertex : position;
-    verts.assign(count, ClipVertex{});
-    for (uint32_t i = 0; i < count; ++i) {
-        const float* attrs = out.vertex(i);
-        ClipVertex& v = verts[i];
-        v.attrs = attrs;
-        v.source = int(i);
-        if (position >= 0) {
-            const float* p = attrs + out.offset[size_t(position)];
-            v.pos = {p[0], p[1], p[2], p[3]};
-        }
-        if (plane_source >= 0 && gl.clip_plane_enabled) {
-            const float* p = attrs + out.offset[size_t(plane_source)];
-            glm::vec4 eye{p[0], p[1], p[2], p[3]};
-            for (int k = 0; k < kMaxUserPlanes; ++k) v.user[k] = glm::dot(gl.clip_planes[k], eye);
-        }
+// Where a vertex's clip position and user-plane distances come from.
+struct ClipSources {
+    int position = -1, plane_source = -1;
+};
+
+void make_clip_vertex(const exec::VertexOutputs& out, const ClipSources& src, const GLState& gl, uint32_t i,
+                      ClipVertex& v) {
+    const float* attrs = out.vertex(i);
+    v = ClipVertex{};
+    v.attrs = attrs;
+    v.source = int(i);
+    if (src.position >= 0) {
+        const float* p = attrs + out.offset[size_t(src.position)];
+        v.pos = {p[0], p[1], p[2], p[3]};
+    }
+    if (src.plane_source >= 0 && gl.clip_plane_enabled) {
+        const float* p = attrs + out.offset[size_t(src.plane_source)];
+        glm::vec4 eye{p[0], p[1], p[2], p[3]};
+        for (int k = 0; k < kMaxUserPlanes; ++k) v.user[k] = glm::dot(gl.clip_planes[k], eye);
     }
 }
 
@@ -199,18 +198,39 @@ Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport)
     return Rect{std::max(vx, 0), std::max(vy, 0), std::min(vx + vw, fb.width), std::min(vy + vh, fb.height)};
 }
 
-// Clip parameters, then per vertex of the arrays its outcode and its
-// fragment attribute vector.
-void prepare(DrawContext& c, const glm::vec4& viewport, uint32_t vertex_count) {
-    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(viewport[2], viewport[3]));
+// Vertices per job of prepare(), and the count below which it stays on the calling thread.
+constexpr uint32_t kPrepareJob = 8192;
+constexpr uint32_t kParallelPrepare = 2 * kPrepareJob;
+
+// Clip parameters, then per vertex of the arrays its clip vertex, outcode
+// and fragment attribute vector: on the workers for large draws (each
+// vertex's results are its own, so they do not depend on the thread count).
+void prepare(DrawContext& c, const ir::Shader& vs, uint32_t vertex_count, unsigned threads,
+             std::vector<ClipVertex>& vertices) {
+    c.clip.guard = std::max(1.0f, float(1 << 19) / std::max(c.viewport[2], c.viewport[3]));
     c.clip.user_planes = c.gl.clip_plane_enabled & ((1u << kMaxUserPlanes) - 1);
     c.clip.attr_count = c.vs.stride;
-    c.outcodes.clear();
-    for (const ClipVertex& v : c.vertices) c.outcodes.push_back(outcode(v, c.clip));
-    uint32_t n = c.stage.attr_count();
+    ClipSources src;
+    src.position = find_output(vs, "gl_Position");
+    int clip_vertex = find_output(vs, "gl_ClipVertex");
+    src.plane_source = clip_vertex >= 0 ? clip_vertex : src.position;
+    const uint32_t n = c.stage.attr_count();
+    vertices.resize(vertex_count);
+    c.outcodes.resize(vertex_count);
     c.front_attrs.resize(size_t(vertex_count) * n);
-    for (uint32_t v = 0; v < vertex_count; ++v)
-        c.stage.gather(c.vs.vertex(v), c.vs.offset, false, c.front_attrs.data() + size_t(v) * n);
+    size_t jobs = (size_t(vertex_count) + kPrepareJob - 1) / kPrepareJob;
+    unsigned workers = vertex_count < kParallelPrepare ? 1 : rt::thread_count(threads, jobs);
+    rt::JobQueue queue(jobs);
+    rt::run_workers(workers, [&](unsigned) {
+        for (size_t job; queue.next(&job);) {
+            uint32_t end = uint32_t(std::min<size_t>(vertex_count, (job + 1) * kPrepareJob));
+            for (uint32_t v = uint32_t(job) * kPrepareJob; v < end; ++v) {
+                make_clip_vertex(c.vs, src, c.gl, v, vertices[v]);
+                c.outcodes[v] = outcode(vertices[v], c.clip);
+                c.stage.gather(c.vs.vertex(v), c.vs.offset, false, c.front_attrs.data() + size_t(v) * n);
+            }
+        }
+    });
 }
 
 // Primitives per setup job, and the draw size below which setup stays on
@@ -301,10 +321,9 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     Rect scissor = scissor_rect(gl, fb, &viewport);
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
-    make_clip_vertices(vs, scratch.shaded, vertex_count, gl, scratch.vertices);
     DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
                   {}, find_output(vs, "gl_PointSize"), scratch.front_attrs};
-    prepare(c, viewport, vertex_count);
+    prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
     auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
     scratch.bins.reset(scissor);
     bin_primitives(outs, scratch.bins, &stats.triangles);
