@@ -156,10 +156,17 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
         lane_x_[lane] = px;
         lane_y_[lane] = py;
         lane_z_[lane] = std::clamp(z, 0.0f, 1.0f);
-        if (!early_depth_ || !((mask >> i) & 1u)) continue;
-        float& stored = fb_.depth[size_t(py) * fb_.width + px];
-        if (depth_passes(gl_.depth_func, lane_z_[lane], stored)) stored = lane_z_[lane];
-        else mask &= ~(1u << i);
+    }
+    if (early_depth_) {
+        // Covered pixels only; the function read once (stores to the depth
+        // buffer would otherwise make the compiler reload it per lane).
+        const GLState::DepthFunc func = gl_.depth_func;
+        for (unsigned bits = mask; bits; bits &= bits - 1) {
+            int i = std::countr_zero(bits), lane = base + i;
+            float& stored = fb_.depth[size_t(lane_y_[lane]) * fb_.width + lane_x_[lane]];
+            if (depth_passes(func, lane_z_[lane], stored)) stored = lane_z_[lane];
+            else mask &= ~(1u << i);
+        }
     }
     if (!mask) return;
     quad_prim_[size_t(quads_)] = &prim;
@@ -267,14 +274,10 @@ void FragmentStage::write_outputs(rt::LaneMask covered) {
     }
     std::array<Lanes, 4> rgba{};
     uint32_t channels = color_out_ ? std::min<uint32_t>(4, color_out_->count) : 0;
-    for (uint32_t k = 0; k < channels; ++k) {
-        load_lanes(in, color_out_->kind, color_out_->first + k, rgba[k], lanes);
-        if (!fb_.float_color)
-            for (float& c : rgba[k]) c = quantize_unorm8(c);
-    }
+    for (uint32_t k = 0; k < channels; ++k) load_lanes(in, color_out_->kind, color_out_->first + k, rgba[k], lanes);
     bool late_depth = gl_.depth_test && !early_depth_;
-    for (int lane = 0; lane < lanes; ++lane) {
-        if (!((alive >> lane) & 1u)) continue;
+    for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
         size_t pixel = size_t(lane_y_[lane]) * fb_.width + lane_x_[lane];
         if (late_depth) {
             if (!depth_passes(gl_.depth_func, z[size_t(lane)], fb_.depth[pixel])) continue;
@@ -282,8 +285,9 @@ void FragmentStage::write_outputs(rt::LaneMask covered) {
         }
         ++written_;
         if (!color_out_) continue;
+        // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
         float* dst = &fb_.color[pixel * 4];
-        for (int k = 0; k < 4; ++k) dst[k] = rgba[size_t(k)][size_t(lane)];
+        for (size_t k = 0; k < 4; ++k) dst[k] = fb_.float_color ? rgba[k][size_t(lane)] : quantize_unorm8(rgba[k][size_t(lane)]);
     }
 }
 
