@@ -39,6 +39,9 @@ struct DrawContext {
     int point_size_output = -1;
     // Per vertex of the arrays: its fragment attribute vector (front colours).
     std::vector<float>& front_attrs;
+    // Per vertex of the arrays: its window position, depth and 1/w, which
+    // the triangles that need no clipping share (a vertex is in about six).
+    std::vector<FsVertex>& window;
 };
 
 // Writes in place (attrs are set later): returned by value, the vertex went
@@ -110,11 +113,10 @@ void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const
 
 // A convex polygon of n <= N vertices in the view volume: facing, culling,
 // attributes, then a fan of triangles.
+// `verts` holds the vertices' window positions.
 template <size_t N>
-void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, size_t n,
-                  uint32_t provoking_id) {
-    std::array<FsVertex, N> verts;
-    for (size_t i = 0; i < n; ++i) to_window(c, poly[i]->pos, verts[i]);
+void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, std::array<FsVertex, N>& verts,
+                  size_t n, uint32_t provoking_id) {
     double area = signed_area(verts.data(), n);
     if (!(area != 0.0)) return;  // degenerate or NaN
     bool front = (area > 0) == c.gl.front_ccw;
@@ -128,12 +130,20 @@ void draw_triangle(const DrawContext& c, SetupOut& out, const std::array<uint32_
     const ClipVertex* tri[3] = {&c.vertices[ids[0]], &c.vertices[ids[1]], &c.vertices[ids[2]]};
     uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
     if (codes[0] & codes[1] & codes[2]) return;
-    if (!(codes[0] | codes[1] | codes[2])) return draw_polygon<3>(c, out, tri, 3, provoking_id);
+    if (!(codes[0] | codes[1] | codes[2])) {
+        std::array<FsVertex, 3> verts{c.window[ids[0]], c.window[ids[1]], c.window[ids[2]]};
+        return draw_polygon(c, out, tri, verts, 3, provoking_id);
+    }
     ClipPolygon poly{*tri[0], *tri[1], *tri[2]};
     clip_polygon(poly, c.clip, out.arena);
+    if (poly.size() < 3) return;
     std::array<const ClipVertex*, kMaxClipVertices> clipped;
-    for (size_t i = 0; i < poly.size(); ++i) clipped[i] = &poly[i];
-    if (poly.size() >= 3) draw_polygon<kMaxClipVertices>(c, out, clipped.data(), poly.size(), provoking_id);
+    std::array<FsVertex, kMaxClipVertices> verts;
+    for (size_t i = 0; i < poly.size(); ++i) {
+        clipped[i] = &poly[i];
+        to_window(c, poly[i].pos, verts[i]);
+    }
+    draw_polygon(c, out, clipped.data(), verts, poly.size(), provoking_id);
 }
 
 void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
@@ -218,6 +228,7 @@ void prepare(DrawContext& c, const ir::Shader& vs, uint32_t vertex_count, unsign
     vertices.resize(vertex_count);
     c.outcodes.resize(vertex_count);
     c.front_attrs.resize(size_t(vertex_count) * n);
+    c.window.resize(vertex_count);
     size_t jobs = (size_t(vertex_count) + kPrepareJob - 1) / kPrepareJob;
     unsigned workers = vertex_count < kParallelPrepare ? 1 : rt::thread_count(threads, jobs);
     rt::JobQueue queue(jobs);
@@ -227,6 +238,7 @@ void prepare(DrawContext& c, const ir::Shader& vs, uint32_t vertex_count, unsign
             for (uint32_t v = uint32_t(job) * kPrepareJob; v < end; ++v) {
                 make_clip_vertex(c.vs, src, c.gl, v, vertices[v]);
                 c.outcodes[v] = outcode(vertices[v], c.clip);
+                to_window(c, vertices[v].pos, c.window[v]);
                 c.stage.gather(c.vs.vertex(v), c.vs.offset, false, c.front_attrs.data() + size_t(v) * n);
             }
         }
@@ -322,7 +334,7 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
     DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
-                  {}, find_output(vs, "gl_PointSize"), scratch.front_attrs};
+                  {}, find_output(vs, "gl_PointSize"), scratch.front_attrs, scratch.window};
     prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
     auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
     scratch.bins.reset(scissor);

@@ -155,7 +155,7 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
         float z = prim.z.c + prim.z.a * float(px - prim.ox) + prim.z.b * float(py - prim.oy);
         lane_x_[lane] = px;
         lane_y_[lane] = py;
-        lane_z_[lane] = std::clamp(z, 0.0f, 1.0f);
+        lane_z_[lane] = std::min(std::max(z, 0.0f), 1.0f);  // std::clamp, without its branches
     }
     if (early_depth_) {
         // Covered pixels only; the function read once (stores to the depth

@@ -35,6 +35,7 @@ struct DrawScratch {
     std::vector<ClipVertex> vertices;  // per vertex of the arrays
     std::vector<uint32_t> outcodes;    // per vertex of the arrays
     std::vector<float> front_attrs;    // per vertex of the arrays: its fragment attribute vector
+    std::vector<FsVertex> window;      // per vertex of the arrays: window coordinates
     std::vector<AssembledPrim> assembled;
     std::vector<SetupOut> setup;  // per job; only the first `jobs` are used by a draw
     TileBins bins;
