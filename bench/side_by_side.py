@@ -6,7 +6,7 @@ Builds nothing: it runs BUILD/glslrun --bench and BUILD/glref --bench, interleav
 medians over the runs and the ratios. Both tools print the same `key value` lines
 (tools/scene/bench_report.h); this script only parses them.
 
-    /usr/bin/python3 bench/side_by_side.py --build build [--runs 5] [--plot perf.png] [--only spot]
+    /usr/bin/python3 bench/side_by_side.py --build build [--runs 5] [--plot perf.png] [--only spot] [--first-threads 1,2]
     /usr/bin/python3 bench/side_by_side.py --build build --threads 1,2,4,8,16 --only "spot pixel"
     /usr/bin/python3 bench/side_by_side.py --build build --from-json rows.json --plot perf.png
 
@@ -40,7 +40,7 @@ def case(name, program, subdivisions, size, threads, renderers, kind="frames"):
                 threads=threads, renderers=renderers, kind=kind)
 
 
-def cases(thread_counts):
+def cases(thread_counts, first_thread_counts):
     """The cases of issue #6: the frame time at 1080p, then the first frame at 512x512."""
     out = []
     for sub in (10, 64):
@@ -51,9 +51,10 @@ def cases(thread_counts):
         for threads in thread_counts:
             out.append(case(f"{program} vertex-bound, sub 64", program, 64, "1920x1080", threads,
                             ["llvmpipe"]))
-    for program in PROGRAMS:
-        out.append(case(f"{program} first frame", program, 10, "512x512", 1,
-                        ["llvmpipe", "softpipe"], kind="first"))
+    for threads in first_thread_counts:
+        for program in PROGRAMS:
+            out.append(case(f"{program} first frame", program, 10, "512x512", threads,
+                            ["llvmpipe", "softpipe"], kind="first"))
     return out
 
 
@@ -196,6 +197,17 @@ def load():
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
+def parse_counts(ap, option, text):
+    """A comma-separated list of thread counts 1..256, or an argparse error."""
+    try:
+        counts = [int(t) for t in text.split(",")]
+    except ValueError:
+        counts = []
+    if not counts or not all(1 <= t <= 256 for t in counts):
+        ap.error(f"{option} '{text}': a comma-separated list of counts 1..256")
+    return counts
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", required=True, help="build directory with glslrun and glref")
@@ -204,6 +216,8 @@ def main():
     ap.add_argument("--softpipe-frames", type=int, default=3, help="--bench N for softpipe (default 3)")
     ap.add_argument("--threads", default="1,2",
                     help="thread counts of the 1080p cases, e.g. 1,2,4,8,16 for a scaling run (default 1,2)")
+    ap.add_argument("--first-threads", default="1",
+                    help="thread counts of the first-frame cases (default 1; softpipe always uses one)")
     ap.add_argument("--only", default="", help="run only cases whose name contains this text")
     ap.add_argument("--plot", help="write a bar chart (PNG) here; needs python3-matplotlib")
     ap.add_argument("--json", help="write the rows as JSON here")
@@ -218,16 +232,12 @@ def main():
         return
     if args.runs < 1 or args.frames < 1 or args.softpipe_frames < 1:
         ap.error("--runs, --frames and --softpipe-frames must be at least 1")
-    try:
-        thread_counts = [int(t) for t in args.threads.split(",")]
-    except ValueError:
-        thread_counts = []
-    if not thread_counts or not all(1 <= t <= 256 for t in thread_counts):
-        ap.error(f"--threads '{args.threads}': a comma-separated list of counts 1..256")
+    thread_counts = parse_counts(ap, "--threads", args.threads)
+    first_thread_counts = parse_counts(ap, "--first-threads", args.first_threads)
     for tool in ("glslrun", "glref"):
         if not os.access(os.path.join(args.build, tool), os.X_OK):
             ap.error(f"{args.build}/{tool} not found: build the glslrun and glref targets")
-    chosen = [c for c in cases(thread_counts) if args.only in c["name"]]
+    chosen = [c for c in cases(thread_counts, first_thread_counts) if args.only in c["name"]]
     print(f"load average at start: {load()}; {os.cpu_count()} cores; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}", flush=True)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
