@@ -60,28 +60,31 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
     return t.bbox.x0 < t.bbox.x1 && t.bbox.y0 < t.bbox.y1;
 }
 
-std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {
-    SmallCoverage c{t.bbox.x0 & ~1, t.bbox.y0 & ~1, 0};
-    if (t.bbox.x1 - c.x > kSmallSize || t.bbox.y1 - c.y > kSmallSize) return std::nullopt;
-    // covers() with the orientation and the fill rule's bias folded into each
-    // edge, stepped from pixel to pixel instead of evaluated per pixel.
+uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
     const int64_t s = t.area2 > 0 ? 1 : -1;
-    std::array<int64_t, 3> row = edge_values(t, t.bbox.x0, t.bbox.y0), dx{}, dy{};
+    std::array<int64_t, 3> row = edge_values(t, r.x0, r.y0), dx{}, dy{};
     for (size_t i = 0; i < 3; ++i) {
         row[i] = s * row[i] + t.bias[i];
         dx[i] = s * t.ea[i] * kSubpixelOne;
         dy[i] = s * t.eb[i] * kSubpixelOne;
     }
-    // Branch-free: a test per pixel mispredicted often (perf).
-    for (int y = t.bbox.y0; y < t.bbox.y1; ++y) {
+    uint64_t mask = 0;
+    for (int y = r.y0; y < r.y1; ++y) {
         int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-        for (int x = t.bbox.x0; x < t.bbox.x1; ++x) {
+        for (int x = r.x0; x < r.x1; ++x) {
             uint64_t inside = ~uint64_t(e0 | e1 | e2) >> 63;  // 1 when no edge value is negative
-            c.mask |= inside << ((y - c.y) * kSmallSize + (x - c.x));
+            mask |= inside << ((y - oy) * kSquareSize + (x - ox));
             e0 += dx[0], e1 += dx[1], e2 += dx[2];
         }
         for (size_t i = 0; i < 3; ++i) row[i] += dy[i];
     }
+    return mask;
+}
+
+std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {
+    SmallCoverage c{t.bbox.x0 & ~1, t.bbox.y0 & ~1, 0};
+    if (t.bbox.x1 - c.x > kSquareSize || t.bbox.y1 - c.y > kSquareSize) return std::nullopt;
+    c.mask = coverage_mask(t, c.x, c.y, t.bbox);
     return c;
 }
 

@@ -88,6 +88,51 @@ inline BlockCover classify_block(const TriangleSetup& t, const Rect& b) {
 
 inline constexpr int kBlockSize = 8;
 
+// Pixel masks of an 8x8 square at (ox, oy): bit j * 8 + i is pixel
+// (ox + i, oy + j). Blocks and small triangles' coverage use them.
+inline constexpr int kSquareSize = kBlockSize;
+static_assert(kSquareSize * kSquareSize == 64);
+
+// Bits [lo, hi) of a 64-bit word.
+inline uint64_t bit_range(int lo, int hi) {
+    lo = std::clamp(lo, 0, 64), hi = std::clamp(hi, 0, 64);
+    if (lo >= hi) return 0;
+    uint64_t below_hi = hi == 64 ? ~uint64_t(0) : (uint64_t(1) << hi) - 1;
+    return below_hi & ~((uint64_t(1) << lo) - 1);
+}
+
+// The pixels of the square whose columns (rows) are in [lo, hi) of it.
+inline uint64_t square_columns(int lo, int hi) {
+    return bit_range(std::clamp(lo, 0, kSquareSize), std::clamp(hi, 0, kSquareSize)) * 0x0101010101010101u;
+}
+inline uint64_t square_rows(int lo, int hi) {
+    return bit_range(kSquareSize * std::clamp(lo, 0, kSquareSize), kSquareSize * std::clamp(hi, 0, kSquareSize));
+}
+// The pixels of rectangle r in the square at (ox, oy).
+inline uint64_t square_rect(int ox, int oy, const Rect& r) {
+    return square_columns(r.x0 - ox, r.x1 - ox) & square_rows(r.y0 - oy, r.y1 - oy);
+}
+
+// The pixels of r (which must lie in the square at (ox, oy)) that t covers:
+// covers() with the orientation and the fill rule's bias folded into each
+// edge, stepped from pixel to pixel, without branches (a test per pixel
+// mispredicted often: perf).
+uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r);
+
+// Calls visit(x, y, mask) for each quad of `part` (pixels of the square at
+// (ox, oy), ox and oy even) with a pixel in `pixels`, in bit order: rows
+// bottom up, left to right.
+template <class Visit>
+void visit_quads(uint64_t pixels, uint64_t part, int ox, int oy, Visit&& visit) {
+    // Bit j * 8 + i (i, j even): quad (i, j) has a pixel.
+    uint64_t quads = (pixels | pixels >> 1 | pixels >> 8 | pixels >> 9) & 0x0055005500550055u & part;
+    for (; quads; quads &= quads - 1) {
+        int bit = std::countr_zero(quads);
+        unsigned low = unsigned(pixels >> bit) & 3u, high = unsigned(pixels >> (bit + kSquareSize)) & 3u;
+        visit(ox + (bit & 7), oy + (bit >> 3), low | high << 2);
+    }
+}
+
 // Calls visit(x, y, mask) for every 2x2 quad (x, y even) with at least one
 // covered pixel inside `clip`. The walk goes over aligned 8x8 blocks (rows of
 // blocks bottom up, left to right): blocks outside an edge are skipped, and
@@ -102,26 +147,17 @@ void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
                    std::min(by + kBlockSize, r.y1)};
             BlockCover cover = classify_block(t, b);
             if (cover == BlockCover::Outside) continue;
-            for (int y = b.y0 & ~1; y < b.y1; y += 2)
-                for (int x = b.x0 & ~1; x < b.x1; x += 2) {
-                    unsigned mask = 0;
-                    for (int i = 0; i < 4; ++i) {
-                        int px = x + kQuadDx[i], py = y + kQuadDy[i];
-                        if (px < b.x0 || px >= b.x1 || py < b.y0 || py >= b.y1) continue;
-                        if (cover == BlockCover::Inside || covers(t, edge_values(t, px, py))) mask |= 1u << i;
-                    }
-                    if (mask) visit(x, y, mask);
-                }
+            uint64_t pixels = cover == BlockCover::Inside ? square_rect(bx, by, b) : coverage_mask(t, bx, by, b);
+            visit_quads(pixels, ~uint64_t(0), bx, by, visit);
         }
     }
 }
 
 // Coverage of a small triangle, one whose candidate pixels lie within the
-// kSmallSize square at (x, y) (x, y even, so the square holds whole quads):
-// bit j * kSmallSize + i is pixel (x + i, y + j). Computed once at setup, so
-// that tiles need neither the edge functions nor the block walk, and
-// triangles that cover no pixel centre can be dropped before binning.
-inline constexpr int kSmallSize = 8;
+// 8x8 square at (x, y) (x, y even, so the square holds whole quads, but not
+// necessarily aligned to a block). Computed once at setup, so that tiles
+// need neither the edge functions nor the block walk, and triangles that
+// cover no pixel centre can be dropped before binning.
 struct SmallCoverage {
     int x = 0, y = 0;
     uint64_t mask = 0;
@@ -130,46 +166,20 @@ struct SmallCoverage {
 // Nothing when the triangle's bounding box does not fit the square.
 std::optional<SmallCoverage> small_coverage(const TriangleSetup& t);
 
-// Bits [lo, hi) of a 64-bit word.
-inline uint64_t bit_range(int lo, int hi) {
-    lo = std::clamp(lo, 0, 64), hi = std::clamp(hi, 0, 64);
-    if (lo >= hi) return 0;
-    uint64_t below_hi = hi == 64 ? ~uint64_t(0) : (uint64_t(1) << hi) - 1;
-    return below_hi & ~((uint64_t(1) << lo) - 1);
-}
-
-// The pixels of the square whose columns (rows) are in [lo, hi) of it.
-inline uint64_t square_columns(int lo, int hi) {
-    return bit_range(std::clamp(lo, 0, kSmallSize), std::clamp(hi, 0, kSmallSize)) * 0x0101010101010101u;
-}
-inline uint64_t square_rows(int lo, int hi) {
-    return bit_range(kSmallSize * std::clamp(lo, 0, kSmallSize), kSmallSize * std::clamp(hi, 0, kSmallSize));
-}
-
 // Calls visit(x, y, mask) for the quads of `c` with a covered pixel inside
 // `clip`, in the order for_each_quad visits them, so that a tile's batches
 // (and the loop cap's iteration count per batch) are the same either way.
 template <class Visit>
 void for_each_small_quad(const SmallCoverage& c, const Rect& clip, Visit&& visit) {
-    static_assert(kSmallSize == 8 && kBlockSize == 8);
-    const uint64_t mask = c.mask & square_columns(clip.x0 - c.x, clip.x1 - c.x) &
-                          square_rows(clip.y0 - c.y, clip.y1 - c.y);
-    // Bit j * 8 + i (i, j even): quad (i, j) has a covered pixel.
-    uint64_t quads = (mask | mask >> 1 | mask >> 8 | mask >> 9) & 0x0055005500550055u;
-    if (!quads) return;
-    // for_each_quad walks rows of 8x8 blocks, and each block by rows: where
-    // the square crosses a block boundary it finishes the lower (left) part
-    // before the next; within a part, bit order is its order.
+    const uint64_t pixels = c.mask & square_rect(c.x, c.y, clip);
+    if (!pixels) return;
+    // Where the square crosses a block boundary, for_each_quad finishes the
+    // lower (left) block before it starts the next.
     const int sx = kBlockSize - (c.x & (kBlockSize - 1)), sy = kBlockSize - (c.y & (kBlockSize - 1));
-    const uint64_t rows[2] = {square_rows(0, sy), square_rows(sy, kSmallSize)};
-    const uint64_t columns[2] = {square_columns(0, sx), square_columns(sx, kSmallSize)};
+    const uint64_t rows[2] = {square_rows(0, sy), square_rows(sy, kSquareSize)};
+    const uint64_t columns[2] = {square_columns(0, sx), square_columns(sx, kSquareSize)};
     for (uint64_t row : rows)
-        for (uint64_t column : columns)
-            for (uint64_t part = quads & row & column; part; part &= part - 1) {
-                int bit = std::countr_zero(part);
-                unsigned low = unsigned(mask >> bit) & 3u, high = unsigned(mask >> (bit + kSmallSize)) & 3u;
-                visit(c.x + (bit & 7), c.y + (bit >> 3), low | high << 2);
-            }
+        for (uint64_t column : columns) visit_quads(pixels, row & column, c.x, c.y, visit);
 }
 
 }  // namespace glslrun::raster
