@@ -155,7 +155,7 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
         float z = prim.z.c + prim.z.a * float(px - prim.ox) + prim.z.b * float(py - prim.oy);
         lane_x_[lane] = px;
         lane_y_[lane] = py;
-        lane_z_[lane] = std::min(std::max(z, 0.0f), 1.0f);  // std::clamp, without its branches
+        lane_z_[lane] = clamp01(z);
     }
     if (early_depth_) {
         // Covered pixels only; the function read once (stores to the depth
@@ -164,8 +164,10 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
         for (unsigned bits = mask; bits; bits &= bits - 1) {
             int i = std::countr_zero(bits), lane = base + i;
             float& stored = fb_.depth[size_t(lane_y_[lane]) * fb_.width + lane_x_[lane]];
-            if (depth_passes(func, lane_z_[lane], stored)) stored = lane_z_[lane];
-            else mask &= ~(1u << i);
+            // Stored either way, so that the outcome needs no branch.
+            bool passes = depth_passes(func, lane_z_[lane], stored);
+            stored = passes ? lane_z_[lane] : stored;
+            mask &= ~(unsigned(!passes) << i);
         }
     }
     if (!mask) return;

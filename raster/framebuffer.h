@@ -1,6 +1,11 @@
 // Colour and depth writes, shared by the fragment stage and the tests.
 // Inline: the fragment stage calls them per lane.
 #pragma once
+#include <algorithm>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include "glslrun/glslrun.h"
 
 namespace glslrun::raster {
@@ -16,6 +21,17 @@ inline float quantize_unorm8(float v) {
 }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
+
+// std::clamp(v, 0, 1), NaN and -0 kept, without branches (they mispredicted
+// per fragment: perf). maxss/minss return their second operand on NaN and
+// on ties, which is what std::clamp returns.
+inline float clamp01(float v) {
+#if defined(__SSE2__)
+    return _mm_cvtss_f32(_mm_min_ss(_mm_set_ss(1.0f), _mm_max_ss(_mm_set_ss(0.0f), _mm_set_ss(v))));
+#else
+    return std::clamp(v, 0.0f, 1.0f);
+#endif
+}
 
 inline bool depth_passes(GLState::DepthFunc func, float incoming, float stored) {
     using F = GLState::DepthFunc;
