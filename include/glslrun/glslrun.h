@@ -318,6 +318,9 @@ struct DrawStats {
 // Draws with the program's current uniforms. Built-in uniforms are taken
 // from `gl` (apply_builtin_uniforms is called for you). Attributes the mesh
 // lacks take GL's current values (gl.current_color, ...). `indices` may be empty.
+// The program keeps the draw's working memory for its next draw (no page
+// faults on fresh buffers per draw), so one Program must not draw on two
+// threads at once; separate Programs may.
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                        const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                        std::span<const uint32_t> indices = {});
