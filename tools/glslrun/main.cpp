@@ -131,6 +131,15 @@ int program_cli(int argc, char** argv) {
                    "fragment_ms), output_ms (the PNG, once)")
         ->type_name("N")
         ->check(CLI::Range(1, 100000));
+    app.add_option("--precision", o.precision,
+                   "how shaders evaluate floating point: reference (double, the ground truth; slow), "
+                   "precise (fp32, the default) or fast (GPU-style approximations); docs/precision.md")
+        ->type_name("MODE");
+    app.add_option("--error-report", o.error_report,
+                   "render the scene in --precision's mode and in reference, and write the error of every "
+                   "shader output (ULP, 8-bit) as a table, `key value` lines and heat maps into DIR "
+                   "(created if missing)")
+        ->type_name("DIR");
     app.add_option("--compare", o.compare,
                    "compare the rendered image, or the PNG given, with this reference PNG");
     app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")
@@ -141,6 +150,8 @@ int program_cli(int argc, char** argv) {
                "  glslrun --dump-ir shaders/minimal.vert shaders/minimal.frag\n"
                "  glslrun --compare mesa.png spot.png --tolerance 1 --diff diff.png\n"
                "  glslrun shaders/minimal.vert shaders/minimal.frag scenes/spot.toml --size 512x512 --bench 100\n"
+               "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml --precision fast "
+               "--error-report err/\n"
                "Scene files: docs/scene-format.md. Piglit tests: glslrun test --help");
     CLI11_PARSE(app, argc, argv);
     if (files.empty()) {

@@ -7,6 +7,8 @@ namespace glslrun::cli {
 
 struct RenderOptions {
     std::string output, size, compare, diff;
+    std::string precision = "precise";  // --precision: reference, precise or fast
+    std::string error_report;           // --error-report DIR
     int tolerance = 0;
     unsigned threads = 0;  // draw() worker threads; 0: one per core
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
