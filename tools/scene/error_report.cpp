@@ -144,13 +144,15 @@ bool is_color_output(const std::string& name) { return name == "gl_FragColor" ||
 // The colour output's name, and notes about fragment outputs that draw() does not store.
 std::string fragment_outputs(const Program& prog, const Scene& scene, bool& writes_depth,
                              std::vector<std::string>& notes) {
-    std::string color;
+    std::string color, unstored;
     writes_depth = false;
     for (const ir::Binding& b : prog.ir().fragment.outputs) {
         if (is_color_output(b.name) && color.empty()) color = b.name;
         else if (b.name == "gl_FragDepth") writes_depth = true;
-        else notes.push_back(fmt::format("{}: not compared (draw() stores one colour buffer)", b.name));
+        else unstored += (unstored.empty() ? "" : ", ") + b.name;
     }
+    if (!unstored.empty())
+        notes.push_back(fmt::format("not compared, as draw() stores one colour buffer: {}", unstored));
     if (color.empty()) notes.push_back("the fragment shader writes no colour: no pixel counts as covered");
     if (writes_depth && !scene.gl.depth_test)
         notes.push_back("gl_FragDepth: not compared (the scene's depth test is off, so no depth is stored)");
