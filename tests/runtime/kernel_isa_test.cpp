@@ -33,8 +33,8 @@ uint32_t word(int operand, int lane, int round) {
 
 struct Case {
     std::vector<uint32_t> file = std::vector<uint32_t>(5 * kLanes);  // dst, a, b, c, uniforms
-    rt::Step step;
-    rt::Machine machine;
+    rt::Step<uint32_t> step;
+    rt::Machine<uint32_t> machine;
 
     Case(int round, rt::LaneMask mask) {
         for (int lane = 0; lane < kLanes; ++lane) {
@@ -45,11 +45,12 @@ struct Case {
         step.dst = &file[0];
         for (int k = 0; k < 3; ++k) step.src[k] = &file[(k + 1) * kLanes];
         step.imm[0] = uint32_t(round) % kLanes;  // konst value / uniform word
+        step.value = step.imm[0];
         machine.regs = file.data();
         machine.uniforms = &file[4 * kLanes];
         machine.mask.reset(mask);
     }
-    std::vector<uint32_t> run(rt::Kernel k) {
+    std::vector<uint32_t> run(rt::Kernel<uint32_t> k) {
         ir::FlushDenormals ftz;
         k(step, machine);
         return std::vector<uint32_t>(file.begin(), file.begin() + kLanes);

@@ -145,14 +145,3 @@ TEST_CASE("error report: key lines, once each", "[scene][error]") {
     CHECK_THAT(table, Catch::Contains("fast against reference"));
     CHECK_THAT(table, Catch::Contains("log2"));
 }
-
-TEST_CASE("error report: precision names", "[scene][error]") {
-    for (Precision p : {Precision::Reference, Precision::Precise, Precision::Fast}) {
-        auto parsed = parse_precision(precision_name(p));
-        REQUIRE(parsed);
-        CHECK(*parsed == p);
-    }
-    auto bad = parse_precision("exact");
-    REQUIRE_FALSE(bad);
-    CHECK_THAT(bad.error().str(), Catch::Contains("reference, precise or fast"));
-}

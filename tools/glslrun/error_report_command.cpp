@@ -29,10 +29,10 @@ Status prepare_directory(const std::string& dir) {
 }  // namespace
 
 int run_error_report(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
-                     const scene::Scene& scene, Precision mode, const RenderOptions& o) {
+                     const scene::Scene& scene, const RenderOptions& o) {
     if (Status st = prepare_directory(o.error_report); !st) return fail(st.error());
     scene::ErrorReportOptions options;
-    options.mode = mode;
+    options.mode = o.precision;
     options.threads = o.threads;
     auto report = scene::measure_error(vertex, fragment, scene, options);
     if (!report) return fail(report.error());

@@ -7,10 +7,10 @@
 
 namespace glslrun::cli {
 
-// Measures `mode` against Precision::Reference on the scene, writes the
+// Measures options.precision against Precision::Reference on the scene, writes the
 // images into DIR (created when missing) and prints the table and the
 // `key value` lines. Returns the process exit status.
 int run_error_report(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
-                     const scene::Scene& scene, Precision mode, const RenderOptions& options);
+                     const scene::Scene& scene, const RenderOptions& options);
 
 }  // namespace glslrun::cli

@@ -15,21 +15,6 @@
 
 namespace glslrun::scene {
 
-const char* precision_name(Precision p) {
-    switch (p) {
-    case Precision::Reference: return "reference";
-    case Precision::Precise: return "precise";
-    case Precision::Fast: return "fast";
-    }
-    return "?";
-}
-
-Result<Precision> parse_precision(const std::string& name) {
-    for (Precision p : {Precision::Reference, Precision::Precise, Precision::Fast})
-        if (name == precision_name(p)) return p;
-    return Error(fmt::format("unknown precision mode '{}': use reference, precise or fast", name));
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;

@@ -16,10 +16,6 @@
 
 namespace glslrun::scene {
 
-const char* precision_name(Precision p);
-// "reference", "precise", "fast"; anything else is an error naming them.
-Result<Precision> parse_precision(const std::string& name);
-
 // One vertex shader output over every vertex of every object. worst.x is the
 // vertex, worst.y the object (its index in the scene).
 struct VaryingError {
