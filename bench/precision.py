@@ -210,11 +210,16 @@ def plot(rows, path):
     markers = {"reference": "s", "precise": "o", "fast": "^"}
     for ax, key, label in ((axes[0], "mean_ulp", "mean ULP error of the colour (pixels covered in both)"),
                            (axes[1], "max_8bit", "max 8-bit difference of the colour")):
+        # One thin line per case through its modes, so a case's price of speed is visible.
+        for case in {(r["program"], r["scene"]) for r in rows}:
+            pts = [(r["error"][key], r["fragments_per_s"] / 1e6) for m in MODES for r in rows
+                   if (r["program"], r["scene"]) == case and r["mode"] == m]
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], color="grey", linewidth=0.5, alpha=0.5)
         for mode in MODES:
             pts = [(r["error"][key], r["fragments_per_s"] / 1e6) for r in rows if r["mode"] == mode]
             if pts:
                 ax.scatter([p[0] for p in pts], [p[1] for p in pts], marker=markers[mode], label=mode, alpha=0.8)
-        ax.set_xscale("symlog", linthresh=1 if key == "mean_ulp" else 1)
+        ax.set_xscale("symlog", linthresh=1)
         ax.set_yscale("log")
         ax.set_xlabel(label + " (symlog)")
         ax.set_ylabel("Mfragments/s (log)")
