@@ -118,11 +118,11 @@ inline void emit(const Step<W>& s, Machine<W>& m, Lanes&& lanes) {
     m.write(s.dst, out);
 }
 
-// Lane loop of an Alu op into `out`. Operands may alias `out` lane for lane
+// Lane loop of `L::eval` (L: ir::alu::Lane<op>, or a Fast-mode lane of
+// runtime/fast_kernels.h) into `out`. Operands may alias `out` lane for lane
 // (dst == src), which is safe elementwise: ivdep tells GCC so.
-template <class W, ir::Op op>
+template <class W, class L>
 inline void alu_lanes(const Step<W>& s, W* out) {
-    using L = ir::alu::Lane<op>;
     const W* a = s.src[0];
     const W* b = s.src[1];
     const W* c = s.src[2];
@@ -140,7 +140,7 @@ inline void alu_lanes(const Step<W>& s, W* out) {
 
 template <class W, ir::Op op>
 void alu(const Step<W>& s, Machine<W>& m) {
-    emit(s, m, [&](W* out) { alu_lanes<W, op>(s, out); });
+    emit(s, m, [&](W* out) { alu_lanes<W, ir::alu::Lane<op>>(s, out); });
 }
 
 // Straight from the source: a copy through a temporary stalls store forwarding.

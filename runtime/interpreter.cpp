@@ -14,7 +14,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "runtime/interp_kernels.h"
+#include "runtime/fast_kernels.h"
 
 namespace glslrun::rt {
 
@@ -86,7 +86,7 @@ struct Core {
     static constexpr bool flushes_denormals() { return sizeof(W) == sizeof(uint32_t); }
 
     Kernel<W> kernel(ir::Op op) const {
-        if constexpr (sizeof(W) == sizeof(uint32_t)) return kernel_for(op, avx2);
+        if constexpr (sizeof(W) == sizeof(uint32_t)) return kernel_for(op, avx2, precision);
         else return kernel_for(op);
     }
 
