@@ -11,6 +11,7 @@
 #include "ir/fast_math.h"
 #include "ir/scalar_ops.h"
 #include "runtime/interp_kernels.h"
+#include "runtime/interpreter.h"
 
 namespace glslrun::rt {
 
@@ -68,9 +69,22 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 
 }  // namespace fast
 
-// The fp32 modes' kernel of `op`: Fast's where it has one, else Precise's.
-inline Kernel<uint32_t> kernel_for(ir::Op op, bool avx2, Precision precision) {
-    if (precision != Precision::Fast) return kernel_for(op, avx2);
+// The FastOps class of an op with a Fast kernel; 0 for the others.
+inline uint32_t fast_op_class(ir::Op op) {
+    switch (op) {
+    case ir::Op::fdiv: return kFastDivision;
+    case ir::Op::frsqrt: return kFastRsqrt;
+    case ir::Op::fexp: case ir::Op::fexp2: case ir::Op::flog: case ir::Op::flog2: return kFastExpLog;
+    case ir::Op::fpow: return kFastPow;
+    case ir::Op::fsin: case ir::Op::fcos: return kFastSinCos;
+    default: return 0;
+    }
+}
+
+// The fp32 modes' kernel of `op`: Fast's where it has one and its class is in
+// `fast_ops`, else Precise's.
+inline Kernel<uint32_t> kernel_for(ir::Op op, bool avx2, Precision precision, uint32_t fast_ops = kAllFastOps) {
+    if (precision != Precision::Fast || !(fast_op_class(op) & fast_ops)) return kernel_for(op, avx2);
     return avx2 ? fast::kernel_for<true>(op) : fast::kernel_for<false>(op);
 }
 

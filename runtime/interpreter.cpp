@@ -60,11 +60,12 @@ struct Core {
     int call_depth = 0;
     bool avx2 = cpu_has_avx2();
     Precision precision;
+    uint32_t fast_ops;
 
     Core(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
-         Precision precision)
+         Precision precision, uint32_t fast_ops = kAllFastOps)
         : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes),
-          precision(precision) {
+          precision(precision), fast_ops(fast_ops) {
         machine.regs = file.data;
         machine.uniforms = uniforms;
         machine.textures = textures;
@@ -86,7 +87,7 @@ struct Core {
     static constexpr bool flushes_denormals() { return sizeof(W) == sizeof(uint32_t); }
 
     Kernel<W> kernel(ir::Op op) const {
-        if constexpr (sizeof(W) == sizeof(uint32_t)) return kernel_for(op, avx2, precision);
+        if constexpr (sizeof(W) == sizeof(uint32_t)) return kernel_for(op, avx2, precision, fast_ops);
         else return kernel_for(op);
     }
 
@@ -272,8 +273,8 @@ namespace {
 class Narrow final : public Engine {
 public:
     Narrow(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
-           Precision precision)
-        : core_(s, uniforms, max_iters, textures, precision) {}
+           Precision precision, uint32_t fast_ops)
+        : core_(s, uniforms, max_iters, textures, precision, fast_ops) {}
     uint32_t* lanes(ir::Reg r) override { return core_.reg(r); }
     bool run(LaneMask live, RunError* error) override {
         ir::FlushDenormals ftz;
@@ -328,11 +329,11 @@ private:
 }  // namespace
 
 Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
-                         const GLState::TextureUnit* textures, Precision precision) {
+                         const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops) {
     if (precision == Precision::Reference)
         engine_ = std::make_unique<Wide>(shader, uniforms, max_loop_iterations, textures);
     else
-        engine_ = std::make_unique<Narrow>(shader, uniforms, max_loop_iterations, textures, precision);
+        engine_ = std::make_unique<Narrow>(shader, uniforms, max_loop_iterations, textures, precision, fast_ops);
 }
 
 Interpreter::~Interpreter() = default;

@@ -19,6 +19,18 @@ static_assert(kLanes % 4 == 0 && kLanes >= 8 && kLanes <= 64);
 using LaneMask = uint64_t;  // bit i = lane i
 inline constexpr LaneMask kAllLanes = kLanes == 64 ? ~LaneMask(0) : ((LaneMask(1) << kLanes) - 1);
 
+// Precision::Fast's approximations by class (runtime/fast_kernels.h), as bits
+// of a mask: the error report switches them on one class at a time to find
+// which one causes an error (an ablation). Not part of the public API.
+enum FastOps : uint32_t {
+    kFastDivision = 1u << 0,  // fdiv as a * rcp(b)
+    kFastRsqrt = 1u << 1,     // frsqrt
+    kFastExpLog = 1u << 2,    // fexp, fexp2, flog, flog2
+    kFastPow = 1u << 3,       // fpow
+    kFastSinCos = 1u << 4,    // fsin, fcos
+    kAllFastOps = (1u << 5) - 1,
+};
+
 struct RunError {
     std::string message;
     int line = 0;
@@ -35,8 +47,11 @@ public:
     // units, may be null: nothing bound) must stay alive too.
     // `precision` (glslrun.h): Precise and Fast run fp32 registers, Fast with
     // approximate kernels for a few ops; Reference runs double registers.
+    // `fast_ops` (FastOps bits): the classes Fast approximates; the others
+    // keep their Precise kernels.
     Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
-                const GLState::TextureUnit* textures = nullptr, Precision precision = Precision::Precise);
+                const GLState::TextureUnit* textures = nullptr, Precision precision = Precision::Precise,
+                uint32_t fast_ops = kAllFastOps);
     ~Interpreter();
 
     // kLanes words of register r: floats, ints and bools (0/1) as raw bits.

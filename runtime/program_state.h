@@ -14,6 +14,9 @@ struct Program::State {
     ir::Program ir;
     std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
     std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
+    // rt::FastOps bits: the op classes Precision::Fast approximates. All of
+    // them, except in the error report's ablation (tools/scene/error_report.cpp).
+    uint32_t fast_ops = ~0u;
 };
 
 }  // namespace glslrun

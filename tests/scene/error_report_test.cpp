@@ -145,3 +145,38 @@ TEST_CASE("error report: key lines, once each", "[scene][error]") {
     CHECK_THAT(table, Catch::Contains("fast against reference"));
     CHECK_THAT(table, Catch::Contains("log2"));
 }
+
+TEST_CASE("error report: Fast's ablation finds the op class that causes the error", "[scene][error]") {
+    Scene scene = quad_scene();
+    REQUIRE(resize_scene(scene, 64, 64));  // 32x32 covered pixels, 1024 different sin arguments
+    // Only sin runs of the ops Fast approximates (at a few ULP of error).
+    ErrorReport r = measure("varying vec3 v; void main() { gl_FragColor = vec4(sin(v * 2.0) * 0.5, 1.0); }",
+                            Precision::Fast, scene);
+    REQUIRE(r.ablation.size() == 7);
+    std::map<std::string, const AblationRow*> rows;
+    for (const AblationRow& a : r.ablation) rows[a.ops] = &a;
+    for (const char* name : {"none", "division", "inversesqrt", "exp_log", "pow", "sin_cos", "all"}) {
+        INFO(name);
+        REQUIRE(rows.count(name) == 1);
+        CHECK(rows[name]->color.compared == 32 * 32 * 4);
+    }
+    const AblationRow& none = *rows["none"];
+    CHECK(rows["sin_cos"]->color.max_ulp >= none.color.max_ulp);
+    CHECK(rows["sin_cos"]->color.sum_ulp > none.color.sum_ulp);
+    // The classes the shader does not use change no bit: their rows are precise's.
+    for (const char* name : {"division", "inversesqrt", "exp_log", "pow"}) {
+        INFO(name);
+        CHECK(rows[name]->color.max_ulp == none.color.max_ulp);
+        CHECK(rows[name]->color.sum_ulp == none.color.sum_ulp);
+    }
+    // "all" is the report's own Fast render.
+    CHECK(rows["all"]->color.sum_ulp == r.outputs[0].total().sum_ulp);
+    CHECK(rows["all"]->color.sum_ulp == rows["sin_cos"]->color.sum_ulp);
+    auto keys = parse_keys(format_error_keys(r));
+    CHECK(keys.count("ablation.sin_cos.max_ulp") == 1);
+    CHECK(keys.count("ablation.none.max_8bit") == 1);
+    CHECK_THAT(format_error_table(r, {}), Catch::Contains("where fast's error comes from"));
+
+    // Precise and Reference have no ablation.
+    CHECK(measure("void main() { gl_FragColor = vec4(0.5); }", Precision::Precise, scene).ablation.empty());
+}

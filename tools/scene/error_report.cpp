@@ -11,6 +11,8 @@
 
 #include "ir/ir.h"
 #include "raster/framebuffer.h"
+#include "runtime/interpreter.h"
+#include "runtime/program_state.h"
 #include "tools/scene/render.h"
 
 namespace glslrun::scene {
@@ -144,6 +146,34 @@ std::string fragment_outputs(const Program& prog, const Scene& scene, bool& writ
     return color.empty() ? "color" : color;
 }
 
+AblationRow ablation_row(std::string ops, const ImageError& e) {
+    return {std::move(ops), e.total(), e.covered_one, e.differing_8bit, e.worst_8bit};
+}
+
+// Fast with one class of approximations at a time. `fast` is left as it was.
+Result<std::vector<AblationRow>> ablate(Program& fast, const Scene& scene, const FloatImage& reference,
+                                        const ImageError& all_fast) {
+    static constexpr std::pair<const char*, uint32_t> kClasses[] = {
+        {"none", 0},           {"division", rt::kFastDivision}, {"inversesqrt", rt::kFastRsqrt},
+        {"exp_log", rt::kFastExpLog}, {"pow", rt::kFastPow},   {"sin_cos", rt::kFastSinCos}};
+    std::vector<AblationRow> rows;
+    uint32_t saved = fast.state().fast_ops;
+    for (const auto& [name, ops] : kClasses) {
+        fast.state().fast_ops = ops;
+        auto frame = render_frame(fast, scene);
+        if (!frame) {
+            fast.state().fast_ops = saved;
+            return frame.error();
+        }
+        auto e = compare_float_images(all_fast.name, reference, frame->color, /*quantized=*/true);
+        if (!e) return e.error();
+        rows.push_back(ablation_row(name, *e));
+    }
+    fast.state().fast_ops = saved;
+    rows.push_back(ablation_row("all", all_fast));
+    return rows;
+}
+
 }  // namespace
 
 Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
@@ -173,6 +203,11 @@ Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const
                                           act_frame->depth, /*quantized=*/false);
         if (!depth) return depth.error();
         report.outputs.push_back(std::move(*depth));
+    }
+    if (options.mode == Precision::Fast) {
+        auto rows = ablate(*actual, scene, ref_frame->color, report.outputs[0]);
+        if (!rows) return rows.error();
+        report.ablation = std::move(*rows);
     }
     report.reference_image = to_image(ref_frame->color);
     report.mode_image = to_image(act_frame->color);

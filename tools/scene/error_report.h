@@ -25,6 +25,16 @@ struct VaryingError {
     WorstPlace worst;
 };
 
+// Where Fast's error comes from: the colour rendered with one class of Fast's
+// approximations (rt::FastOps) and Precise kernels for every other op,
+// against the reference. "none" is Precise, "all" is Fast.
+struct AblationRow {
+    std::string ops;  // none, division, inversesqrt, exp_log, pow, sin_cos, all
+    ChannelError color;  // all channels
+    uint64_t covered_one = 0, differing_8bit = 0;
+    WorstPlace worst_8bit;
+};
+
 struct ErrorReport {
     Precision mode = Precision::Precise;
     std::string scene;
@@ -32,6 +42,7 @@ struct ErrorReport {
     double reference_ms = 0, mode_ms = 0;  // the two renders, wall time
     std::vector<ImageError> outputs;       // the colour, then the depth where it is stored
     std::vector<VaryingError> varyings;
+    std::vector<AblationRow> ablation;     // mode Fast only
     Image reference_image, mode_image;     // as the PNGs of a normal render would hold them
     std::vector<std::string> notes;        // what is not compared, and why
 };
@@ -41,7 +52,8 @@ struct ErrorReportOptions {
     unsigned threads = 0;  // ExecOptions::threads; the images do not depend on it
 };
 
-// Compiles the program once per mode and renders `scene` in both.
+// Compiles the program once per mode and renders `scene` in both; in Fast,
+// also once per class of approximations (ErrorReport::ablation).
 Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
                                   const Scene& scene, const ErrorReportOptions& options);
 

@@ -77,6 +77,21 @@ std::string vertex_section(const ErrorReport& r) {
     return out;
 }
 
+std::string ablation_section(const ErrorReport& r) {
+    if (r.ablation.empty()) return "";
+    std::string out = fmt::format(
+        "\nwhere fast's error comes from: the colour with one class of approximations, every other op precise\n"
+        "{:<12} {:>10} {:>12} {:>9} {:>11} {:>12}   worst pixel in 8 bits\n", "fast ops", "max ULP",
+        "mean ULP", "max 8-bit", "pixels off", "edge moved");
+    for (const AblationRow& a : r.ablation) {
+        out += fmt::format("{:<12} {:>10} {:>12.4g} {:>9} {:>11} {:>12}", a.ops, ulp_text(a.color.max_ulp),
+                           a.color.mean_ulp(), a.color.max_8bit, a.differing_8bit, a.covered_one);
+        if (a.worst_8bit.found && a.worst_8bit.diff_8bit > 0) out += fmt::format("   x {} y {}", a.worst_8bit.x, a.worst_8bit.y);
+        out += "\n";
+    }
+    return out + "(none: precise; all: fast. \"edge moved\": pixels covered in one image only)\n";
+}
+
 void key(std::string& out, const std::string& name, const std::string& value) {
     out += fmt::format("{:<36} {}\n", name, value);
 }
@@ -140,6 +155,7 @@ std::string format_error_table(const ErrorReport& r, const std::vector<std::stri
                        "output", "channel", "max ULP", "mean ULP", "max abs", "max 8-bit", "mean 8-bit");
     for (const ImageError& e : r.outputs) out += image_section(e, r);
     out += vertex_section(r);
+    out += ablation_section(r);
     for (const std::string& note : r.notes) out += "note: " + note + "\n";
     if (!files.empty()) {
         out += "\nfiles:";
@@ -159,6 +175,12 @@ std::string format_error_keys(const ErrorReport& r) {
     key(out, "mode_ms", fmt::format("{:.3f}", r.mode_ms));
     for (const ImageError& e : r.outputs) image_keys(out, e);
     for (const VaryingError& v : r.varyings) channel_keys(out, "vertex." + v.name, v.error, false);
+    for (const AblationRow& a : r.ablation) {
+        std::string p = "ablation." + a.ops;
+        channel_keys(out, p, a.color, true);
+        key(out, p + ".differing_pixels", std::to_string(a.differing_8bit));
+        key(out, p + ".covered_one", std::to_string(a.covered_one));
+    }
     return out;
 }
 
