@@ -40,9 +40,6 @@ inline float ftz(float a) { return std::fabs(a) < 1.17549435e-38f ? std::copysig
 // denormals: its ftz is the identity.
 inline double ftz(double a) { return a; }
 
-// Precision::Reference keeps every float in a double and flushes nothing.
-inline double ftz(double a) { return a; }
-
 // T is float, or double in Precision::Reference (ir/alu_eval.h).
 template <class T>
 T glsl_sign(T a) { return a > T(0) ? T(1) : (a < T(0) ? T(-1) : T(0)); }

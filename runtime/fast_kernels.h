@@ -75,7 +75,6 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 // The FastOps class of an op with a Fast kernel; 0 for the others.
 inline uint32_t fast_op_class(ir::Op op) {
     switch (op) {
-    case ir::Op::fdiv: return kFastDivision;
     case ir::Op::frsqrt: return kFastRsqrt;
     case ir::Op::fexp: case ir::Op::fexp2: case ir::Op::flog: case ir::Op::flog2: return kFastExpLog;
     case ir::Op::fpow: return kFastPow;

@@ -23,12 +23,11 @@ inline constexpr LaneMask kAllLanes = kLanes == 64 ? ~LaneMask(0) : ((LaneMask(1
 // of a mask: the error report switches them on one class at a time to find
 // which one causes an error (an ablation). Not part of the public API.
 enum FastOps : uint32_t {
-    kFastDivision = 1u << 0,  // fdiv as a * rcp(b)
-    kFastRsqrt = 1u << 1,     // frsqrt
-    kFastExpLog = 1u << 2,    // fexp, fexp2, flog, flog2
-    kFastPow = 1u << 3,       // fpow
-    kFastSinCos = 1u << 4,    // fsin, fcos
-    kAllFastOps = (1u << 5) - 1,
+    kFastRsqrt = 1u << 0,   // frsqrt
+    kFastExpLog = 1u << 1,  // fexp, fexp2, flog, flog2
+    kFastPow = 1u << 2,     // fpow
+    kFastSinCos = 1u << 3,  // fsin, fcos
+    kAllFastOps = (1u << 4) - 1,
 };
 
 struct RunError {
