@@ -8,7 +8,7 @@ scene, and for each mode (reference, precise, fast), it runs
     BUILD/glslrun VS FS SCENE --precision MODE --error-report DIR error against reference
 
 and prints a markdown table: fragments shaded per second (fragments of one frame over
-the median frame time), the speed against precise, and the colour's error against
+the median frame time, wall and process CPU time), the speed against precise, and the colour's error against
 reference (max and mean ULP over pixels covered in both images, max 8-bit difference,
 pixels that differ in 8 bits). Both commands print `key value` lines; this script only
 parses them. Runs of one case are interleaved over the modes (--runs), medians reported.
@@ -141,11 +141,16 @@ def measure(program, scene, kind, args, tmp):
                "size": runs[mode][0].get("size"), "threads": args.threads, "frames": runs[mode][0].get("frames"),
                "median_ms": median_ms, "cpu_median_ms": statistics.median(v["cpu_median_ms"] for v in runs[mode]),
                "fragments": fragments, "fragments_per_s": fragments / (median_ms / 1e3) if median_ms > 0 else 0.0}
+        # The process's CPU time per frame: what a neighbour's load on a shared machine barely moves.
+        row["fragment_ms"] = statistics.median(v.get("fragment_ms", 0.0) for v in runs[mode])
+        row["cpu_fragments_per_s"] = fragments / (row["cpu_median_ms"] / 1e3) if row["cpu_median_ms"] > 0 else 0.0
         row["error"] = error_of(program, scene, mode, args, tmp)
         rows.append(row)
     precise = next((r for r in rows if r["mode"] == "precise"), None)
     for r in rows:
         r["speed_vs_precise"] = r["fragments_per_s"] / precise["fragments_per_s"] if precise else None
+        r["cpu_speed_vs_precise"] = (r["cpu_fragments_per_s"] / precise["cpu_fragments_per_s"]
+                                     if precise and precise["cpu_fragments_per_s"] else None)
     return rows
 
 
@@ -162,20 +167,23 @@ def meets(row):
     if row["mode"] == "reference" or "lecture" not in row["kind"]:
         return ""
     notes = ["<= 1/255: " + ("yes" if row["error"]["max_8bit"] <= 1 else "**no**")]
-    if row["mode"] == "fast" and "pixel" in row["kind"] and row["speed_vs_precise"] is not None:
-        notes.append(">= 1.5x: " + ("yes" if row["speed_vs_precise"] >= 1.5 else "**no**"))
+    speed = row.get("cpu_speed_vs_precise")  # CPU time: the machine is shared, wall time is not reliable
+    if row["mode"] == "fast" and "pixel" in row["kind"] and speed is not None:
+        notes.append(">= 1.5x: " + ("yes" if speed >= 1.5 else "**no**"))
     return ", ".join(notes)
 
 
 def table(rows):
-    lines = ["| program | scene | mode | Mfragments/s | vs precise | max ULP | mean ULP | max 8-bit "
-             "| pixels off (8-bit) | targets |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| program | scene | mode | Mfrag/s (wall) | Mfrag/s (CPU) | vs precise (wall, CPU) | max ULP "
+             "| mean ULP | max 8-bit | pixels off (8-bit) | targets |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         e = r["error"]
         off = f"{int(e['differing_pixels'])} of {int(e['covered'])}"
         lines.append(f"| {r['program']} | {r['scene']} | {r['mode']} | {r['fragments_per_s'] / 1e6:.2f} "
-                     f"| {fmt_num(r['speed_vs_precise'])} | {fmt_num(e['max_ulp'])} | {fmt_num(e['mean_ulp'])} "
+                     f"| {r['cpu_fragments_per_s'] / 1e6:.2f} "
+                     f"| {fmt_num(r['speed_vs_precise'])}, {fmt_num(r.get('cpu_speed_vs_precise'))} "
+                     f"| {fmt_num(e['max_ulp'])} | {fmt_num(e['mean_ulp'])} "
                      f"| {int(e['max_8bit'])} | {off} | {meets(r)} |")
     return "\n".join(lines)
 
@@ -212,17 +220,17 @@ def plot(rows, path):
                            (axes[1], "max_8bit", "max 8-bit difference of the colour")):
         # One thin line per case through its modes, so a case's price of speed is visible.
         for case in {(r["program"], r["scene"]) for r in rows}:
-            pts = [(r["error"][key], r["fragments_per_s"] / 1e6) for m in MODES for r in rows
+            pts = [(r["error"][key], r["cpu_fragments_per_s"] / 1e6) for m in MODES for r in rows
                    if (r["program"], r["scene"]) == case and r["mode"] == m]
             ax.plot([p[0] for p in pts], [p[1] for p in pts], color="grey", linewidth=0.5, alpha=0.5)
         for mode in MODES:
-            pts = [(r["error"][key], r["fragments_per_s"] / 1e6) for r in rows if r["mode"] == mode]
+            pts = [(r["error"][key], r["cpu_fragments_per_s"] / 1e6) for r in rows if r["mode"] == mode]
             if pts:
                 ax.scatter([p[0] for p in pts], [p[1] for p in pts], marker=markers[mode], label=mode, alpha=0.8)
         ax.set_xscale("symlog", linthresh=1)
         ax.set_yscale("log")
         ax.set_xlabel(label + " (symlog)")
-        ax.set_ylabel("Mfragments/s (log)")
+        ax.set_ylabel("Mfragments per CPU second (log)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend()
     axes[1].axvline(1.0, color="grey", linestyle="--", linewidth=1)  # the 1/255 target
