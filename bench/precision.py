@@ -227,13 +227,18 @@ def plot(rows, path):
             pts = [(r["error"][key], r["cpu_fragments_per_s"] / 1e6) for r in rows if r["mode"] == mode]
             if pts:
                 ax.scatter([p[0] for p in pts], [p[1] for p in pts], marker=markers[mode], label=mode, alpha=0.8)
-        ax.set_xscale("symlog", linthresh=1)
+        if key == "mean_ulp":
+            ax.set_xscale("symlog", linthresh=1)
+            label += " (symlog)"
+        else:  # a small integer
+            ax.set_xticks(range(0, int(max([r["error"][key] for r in rows], default=0)) + 2))
         ax.set_yscale("log")
-        ax.set_xlabel(label + " (symlog)")
+        ax.set_xlabel(label)
         ax.set_ylabel("Mfragments per CPU second (log)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend()
-    axes[1].axvline(1.0, color="grey", linestyle="--", linewidth=1)  # the 1/255 target
+    axes[1].axvline(1.0, color="grey", linestyle="--", linewidth=1, label="target: 1/255")
+    axes[1].legend()
     fig.suptitle("glslrun precision modes: speed against error vs reference, one point per scene and mode")
     fig.tight_layout()
     fig.savefig(path, dpi=100)
