@@ -32,6 +32,8 @@ import sys
 import tempfile
 import time
 
+from side_by_side import parse_bench  # the `key value` lines of --bench and --error-report
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MODES = ("reference", "precise", "fast")
 
@@ -59,21 +61,6 @@ CASES = [
 ]
 
 
-def parse_keys(text):
-    """`key value` lines as a dict; numbers as floats."""
-    values = {}
-    for line in text.splitlines():
-        m = re.match(r"^(\S+)\s+(.*)$", line)
-        if not m:
-            continue
-        key, value = m.groups()
-        try:
-            values[key] = float(value)
-        except ValueError:
-            values[key] = value
-    return values
-
-
 def shader_args(program, scene, args):
     stem = os.path.join(REPO, "shaders", program)
     out = [stem + ".vert", stem + ".frag", os.path.join(REPO, "scenes", scene), "--threads", str(args.threads)]
@@ -84,7 +71,7 @@ def run(cmd):
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=1800)
     if p.returncode != 0:
         sys.exit(f"failed ({p.returncode}): {' '.join(cmd)}\n{p.stderr}")
-    return parse_keys(p.stdout)
+    return parse_bench(p.stdout)
 
 
 def bench_once(program, scene, mode, args, tmp):

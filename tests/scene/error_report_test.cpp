@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <map>
-#include <sstream>
 
+#include "tests/scene/key_lines.h"
 #include "tools/scene/error_report.h"
 
 using namespace glslrun;
@@ -49,18 +49,6 @@ ErrorReport measure(const char* fragment, Precision mode, const Scene& scene) {
     return std::move(*r);
 }
 
-std::map<std::string, std::string> parse_keys(const std::string& text) {
-    std::map<std::string, std::string> values;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        size_t space = line.find(' ');
-        REQUIRE(space != std::string::npos);
-        std::string key = line.substr(0, space);
-        REQUIRE(values.count(key) == 0);
-        values[key] = line.substr(line.find_first_not_of(' ', space));
-    }
-    return values;
-}
 
 }  // namespace
 
@@ -132,7 +120,7 @@ TEST_CASE("error report: discarded fragments are not covered", "[scene][error]")
 TEST_CASE("error report: key lines, once each", "[scene][error]") {
     Scene scene = quad_scene();
     ErrorReport r = measure("void main() { gl_FragColor = vec4(0.5); }", Precision::Fast, scene);
-    auto keys = parse_keys(format_error_keys(r));
+    auto keys = scene_test::parse_key_lines(format_error_keys(r));
     CHECK(keys["mode"] == "fast");
     CHECK(keys["size"] == "8x8");
     CHECK(keys["frag.gl_FragColor.covered_both"] == "16");
@@ -172,7 +160,7 @@ TEST_CASE("error report: Fast's ablation finds the op class that causes the erro
     // "all" is the report's own Fast render.
     CHECK(rows["all"]->color.sum_ulp == r.outputs[0].total().sum_ulp);
     CHECK(rows["all"]->color.sum_ulp == rows["sin_cos"]->color.sum_ulp);
-    auto keys = parse_keys(format_error_keys(r));
+    auto keys = scene_test::parse_key_lines(format_error_keys(r));
     CHECK(keys.count("ablation.sin_cos.max_ulp") == 1);
     CHECK(keys.count("ablation.none.max_8bit") == 1);
     CHECK_THAT(format_error_table(r, {}), Catch::Contains("where fast's error comes from"));
