@@ -32,7 +32,7 @@ import sys
 import tempfile
 import time
 
-from side_by_side import parse_bench  # the `key value` lines of --bench and --error-report
+from side_by_side import load, parse_bench  # the load average; `key value` lines
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MODES = ("reference", "precise", "fast")
@@ -230,10 +230,6 @@ def plot(rows, path):
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     print(f"plot: {path}")
-
-
-def load():
-    return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
 def main():
