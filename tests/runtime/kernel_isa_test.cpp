@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ir/alu_eval.h"
-#include "runtime/interp_kernels.h"
+#include "runtime/fast_kernels.h"
 
 using namespace glslrun;
 using rt::kLanes;
@@ -77,16 +77,19 @@ TEST_CASE("AVX2 kernels compute the same bits as the baseline kernels") {
     }
     const rt::LaneMask masks[] = {rt::kAllLanes, rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes, 1};
     int checked = 0;
+    // Fast mode's kernels (runtime/fast_kernels.h) must be as portable.
+    for (Precision precision : {Precision::Precise, Precision::Fast})
     for (int o = 0; o < int(ir::Op::Count_); ++o) {
         ir::Op op = ir::Op(o);
         if (!lane_wise(op)) continue;
         for (rt::LaneMask mask : masks)
             for (int round = 0; round < 6; ++round) {
-                INFO(ir::op_info(op).name << " round " << round << " mask " << mask);
+                INFO(ir::op_info(op).name << " round " << round << " mask " << mask << " "
+                                          << precision_name(precision));
                 Case base(round, mask), avx(round, mask);
-                std::vector<uint32_t> expected = base.run(rt::kernel_for(op, false));
-                std::vector<uint32_t> actual = avx.run(rt::kernel_for(op, true));
-                REQUIRE(rt::kernel_for(op, true) != rt::kernel_for(op, false));
+                std::vector<uint32_t> expected = base.run(rt::kernel_for(op, false, precision));
+                std::vector<uint32_t> actual = avx.run(rt::kernel_for(op, true, precision));
+                REQUIRE(rt::kernel_for(op, true, precision) != rt::kernel_for(op, false, precision));
                 for (int lane = 0; lane < kLanes; ++lane) {
                     INFO("lane " << lane << ": " << expected[lane] << " against " << actual[lane]);
                     CHECK(same_result(op, expected[lane], actual[lane]));
@@ -95,5 +98,5 @@ TEST_CASE("AVX2 kernels compute the same bits as the baseline kernels") {
                 ++checked;
             }
     }
-    CHECK(checked > 300);
+    CHECK(checked > 600);
 }
