@@ -72,13 +72,20 @@ std::vector<uint32_t> run_op(Op op, const std::vector<std::vector<uint32_t>>& op
 
 }  // namespace
 
-TEST_CASE("every Alu op matches the table expression on every lane", "[runtime][alu]") {
+// Calls f(op, info, operand kind) for every Alu op of the table.
+template <class F>
+void for_each_alu_op(F&& f) {
     for (size_t o = 0; o < size_t(Op::Count_); ++o) {
         Op op = Op(o);
         if (!ir::alu::is_alu(op)) continue;
         const ir::OpInfo& info = ir::op_info(op);
         INFO("op " << info.name);
-        Kind in_kind = operand_kind(info.operand);
+        f(op, info, operand_kind(info.operand));
+    }
+}
+
+TEST_CASE("every Alu op matches the table expression on every lane", "[runtime][alu]") {
+    for_each_alu_op([](Op op, const ir::OpInfo& info, Kind in_kind) {
         std::vector<std::vector<uint32_t>> operands(3, std::vector<uint32_t>(kLanes));
         for (int k = 0; k < 3; ++k)
             for (int i = 0; i < kLanes; ++i) operands[k][i] = sample(in_kind, k, i);
@@ -89,19 +96,14 @@ TEST_CASE("every Alu op matches the table expression on every lane", "[runtime][
             uint32_t expect = ir::alu::eval(op, operands[0][i], operands[1][i], operands[2][i]);
             CHECK(same_word(result, out[i], expect));
         }
-    }
+    });
 }
 
 // Reference mode: the operands are shader inputs (widened to 64-bit words at
 // run()) and the result an output (rounded back to 32 bits after it).
 TEST_CASE("Reference: every Alu op is the table expression in double on every lane", "[runtime][alu][precision]") {
     int checked = 0;
-    for (size_t o = 0; o < size_t(Op::Count_); ++o) {
-        Op op = Op(o);
-        if (!ir::alu::is_alu(op)) continue;
-        const ir::OpInfo& info = ir::op_info(op);
-        INFO("op " << info.name);
-        Kind in_kind = operand_kind(info.operand);
+    for_each_alu_op([&](Op op, const ir::OpInfo& info, Kind in_kind) {
         Builder b;
         std::vector<Reg> src;
         for (int k = 0; k < 3; ++k) src.push_back(b.reg(in_kind));
@@ -121,7 +123,7 @@ TEST_CASE("Reference: every Alu op is the table expression in double on every la
             CHECK(same_word(b.sh.regs[d], it.lanes(d)[i], rt::narrow<uint64_t>(b.sh.regs[d], expect)));
             ++checked;
         }
-    }
+    });
     CHECK(checked > 50 * kLanes);
 }
 
