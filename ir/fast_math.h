@@ -36,11 +36,12 @@ namespace detail {
 inline constexpr float kInf = std::numeric_limits<float>::infinity();
 inline constexpr float kRoundMagic = 0x1.8p23f;  // x + this - this rounds x to an integer (|x| < 2^22)
 
-template <size_t N>
+// Written as a template recursion, not a loop: the interpreter's lane loops
+// vectorize only when no inner loop is left in them.
+template <size_t I = 0, size_t N>
 inline float poly(float x, const float (&c)[N]) {
-    float r = c[N - 1];
-    for (size_t i = N - 1; i-- > 0;) r = r * x + c[i];
-    return r;
+    if constexpr (I + 1 == N) return c[I];
+    else return poly<I + 1>(x, c) * x + c[I];
 }
 
 // Coefficients from tools/mathfit/fit.py, rounded to float.

@@ -48,11 +48,12 @@ inline float invalid_nan() { return std::bit_cast<float>(0xFFC00000u); }
 inline float positive_nan() { return std::bit_cast<float>(0x7FC00000u); }
 
 // Polynomial evaluation (Horner), coefficients lowest degree first.
-template <size_t N>
+// Written as a template recursion, not a loop: the interpreter's lane loops
+// vectorize only when no inner loop is left in them.
+template <size_t I = 0, size_t N>
 inline double poly(double x, const double (&c)[N]) {
-    double r = c[N - 1];
-    for (size_t i = N - 1; i-- > 0;) r = r * x + c[i];
-    return r;
+    if constexpr (I + 1 == N) return c[I];
+    else return poly<I + 1>(x, c) * x + c[I];
 }
 
 // Coefficients from tools/mathfit/fit.py (max absolute error of the fit).
@@ -140,19 +141,28 @@ inline Reduced reduce_pi2(float x) {
     return {r, uint32_t(std::bit_cast<uint64_t>(shifted)) & 3u};
 }
 
-// Odd integers decide pow's sign for x < 0: |y| < 2^51 is rounded with the
-// magic number; larger floats are all even.
-struct IntegerKind {
-    bool integer;
-    bool odd;
-};
-inline IntegerKind integer_kind(float y) {
-    const double ay = std::fabs(double(y));
-    const double capped = ay < 0x1p51 ? ay : 0x1p51;  // Inf and NaN: 2^51, even (NaN is handled by callers)
-    const double shifted = capped + kRoundMagic;
-    const bool integer = (shifted - kRoundMagic) == capped;
-    return {integer, integer && (std::bit_cast<uint64_t>(shifted) & 1u) != 0};
+// a if it is a NaN, else b, quieted. Not a + b: the compiler may swap the
+// operands of a commutative addition, and with two NaNs x86 returns the first.
+inline float first_nan(float a, float b) { return std::isnan(a) ? a + a : b + b; }
+
+inline bool signalling(float x) { return std::isnan(x) & ((std::bit_cast<uint32_t>(x) & 0x00400000u) == 0); }
+
+// Odd integers decide pow's sign for x < 0. In float and uint32_t only (the
+// lane loops do not vectorize when double and float masks meet): below 2^23
+// adding 2^23 rounds to an integer whose parity is the last mantissa bit;
+// floats in [2^23, 2^24) are integers with their own parity; above, even.
+inline bool is_integer(float y) {
+    const float ay = std::fabs(y);
+    return (ay >= 0x1p23f) | (((ay + 0x1p23f) - 0x1p23f) == ay);  // NaN: false
 }
+// The sign bit for pow(x, y): x's when y is an odd integer, else 0.
+inline uint32_t odd_power_sign(float x, float y) {
+    const float ay = std::fabs(y);
+    const uint32_t low = std::bit_cast<uint32_t>(ay + 0x1p23f) & 1u;
+    const uint32_t odd = ay < 0x1p23f ? low : (ay < 0x1p24f ? std::bit_cast<uint32_t>(ay) & 1u : 0u);
+    return (is_integer(y) ? odd << 31 : 0u) & std::bit_cast<uint32_t>(x);
+}
+inline float flip_sign(float v, uint32_t sign) { return std::bit_cast<float>(std::bit_cast<uint32_t>(v) ^ sign); }
 
 }  // namespace detail
 
@@ -174,22 +184,25 @@ inline float log(float x) {
     return x > 0.0f && x < detail::kInf ? core : detail::log_special(x);
 }
 
-// C99 Annex F powf: pow(x, +-0) = 1 and pow(1, y) = 1 even for NaN;
-// pow(-1, +-Inf) = 1; x < 0 takes the sign of odd integer y and is NaN for a
-// finite non-integer y; pow(+-0, y < 0) = +-Inf. y * log2|x| in double has a
-// relative error near 2^-50, so 2^(y log2|x|) stays within float rounding.
+// C99 Annex F powf, as glibc implements it: pow(x, +-0) = 1 and pow(1, y) = 1
+// even for a quiet NaN (not a signalling one); pow(-1, +-Inf) = 1; x < 0
+// takes the sign of odd integer y and is NaN for a finite non-integer y;
+// pow(+-0, y < 0) = +-Inf; a NaN x with the sign set loses it for odd y (glibc
+// squares x and negates). y * log2|x| in double has a relative error near
+// 2^-50, so 2^(y log2|x|) stays within float rounding.
 inline float pow(float x, float y) {
     using namespace detail;
     const float ax = std::fabs(x);
     const double l = ax == 0.0f ? -double(kInf) : (ax == kInf ? double(kInf) : log2_core(ax));
-    const IntegerKind yk = integer_kind(y);
     const double magnitude = exp2_core(double(y) * l);
-    const bool negative = std::signbit(x) && yk.odd;
-    float r = float(negative ? -magnitude : magnitude);
-    r = x < 0.0f && ax < kInf && !yk.integer && std::fabs(y) < kInf ? invalid_nan() : r;
-    r = std::isnan(x) || std::isnan(y) ? x + y : r;  // x + y: x's payload first, as glibc
+    const uint32_t sign = odd_power_sign(x, y);
+    float r = flip_sign(float(magnitude), sign);
+    r = (x < 0.0f) & (ax < kInf) & !is_integer(y) & (std::fabs(y) < kInf) ? invalid_nan() : r;
+    const float nan = first_nan(x, y);
+    r = std::isnan(x) || std::isnan(y) ? flip_sign(nan, sign) : r;
     r = x == -1.0f && std::fabs(y) == kInf ? 1.0f : r;
-    return x == 1.0f || y == 0.0f ? 1.0f : r;
+    r = x == 1.0f ? (signalling(y) ? nan : 1.0f) : r;
+    return y == 0.0f ? (signalling(x) ? nan : 1.0f) : r;
 }
 
 // ---- trigonometry ------------------------------------------------------------
@@ -205,7 +218,7 @@ inline float sin(float x) {
     const double s = red.r * poly(z, kSinPoly);
     const double c = poly(z, kCosPoly);
     const double v = (red.quadrant & 1u) ? c : s;
-    const float r = float((red.quadrant & 2u) ? -v : v);
+    const float r = x == 0.0f ? x : float((red.quadrant & 2u) ? -v : v);  // keeps -0
     return std::fabs(x) < kInf ? r : x - x;  // Inf - Inf: the default NaN; NaN stays itself
 }
 
@@ -227,7 +240,7 @@ inline float tan(float x) {
     const double s = red.r * poly(z, kSinPoly);
     const double c = poly(z, kCosPoly);
     const bool odd = (red.quadrant & 1u) != 0;
-    const float r = float((odd ? -c : s) / (odd ? s : c));
+    const float r = x == 0.0f ? x : float((odd ? -c : s) / (odd ? s : c));
     return std::fabs(x) < kInf ? r : x - x;
 }
 
@@ -239,7 +252,7 @@ inline float atan(float x) {
 }
 
 // C99 Annex F atan2f: signed zeros pick +-0 or +-pi, infinities give
-// multiples of pi/4, NaN gives y + x.
+// multiples of pi/4, NaN gives x's NaN, else y's (as glibc).
 inline float atan2(float y, float x) {
     using namespace detail;
     const double ay = std::fabs(double(y)), ax = std::fabs(double(x));
@@ -248,7 +261,7 @@ inline float atan2(float y, float x) {
     a = ay == double(kInf) && ax == double(kInf) ? kPi4 : a;
     a = std::signbit(x) ? kPi - a : a;
     const float r = std::copysign(float(a), y);
-    return std::isnan(x) || std::isnan(y) ? y + x : r;
+    return std::isnan(x) || std::isnan(y) ? first_nan(x, y) : r;
 }
 
 // asin(x) = atan2(x, sqrt(1 - x^2)); (1-x)(1+x) loses nothing in double.

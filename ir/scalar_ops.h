@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "ir/precise_math.h"  // math::exp etc., used by opcodes.def
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif
@@ -34,8 +36,8 @@ public:
 // and abs are bit operations, so those ops flush their operands and results
 // explicitly to keep "denormals are zero" true for every op.
 inline float ftz(float a) { return std::fabs(a) < 1.17549435e-38f ? std::copysign(0.0f, a) : a; }
-
-// Precision::Reference keeps every float in a double and flushes nothing.
+// The Reference mode evaluates the same expressions in double and keeps
+// denormals: its ftz is the identity.
 inline double ftz(double a) { return a; }
 
 // T is float, or double in Precision::Reference (ir/alu_eval.h).
