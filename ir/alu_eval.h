@@ -66,12 +66,14 @@ struct Lane;
 #undef GLSLRUN_ALU_Alu
 #undef GLSLRUN_ALU_Special
 
-// Dynamic form for the folder: evaluates Alu op `op` on raw words.
-inline uint32_t eval(Op op, uint32_t a, uint32_t b, uint32_t c) {
+// Dynamic form for the folder (and the tests): evaluates Alu op `op` on raw
+// words W (uint32_t, or uint64_t: Reference's doubles).
+template <class W>
+W eval(Op op, W a, W b, W c) {
     switch (op) {
 #define GLSLRUN_ALU_Special(name)
 #define GLSLRUN_ALU_Alu(name) \
-    case Op::name: return Lane<Op::name>::eval(a, b, c);
+    case Op::name: return Lane<Op::name>::eval<W>(a, b, c);
 #define OP(name, arity, res, opnd, kind, expr) GLSLRUN_ALU_##kind(name)
 #include "ir/opcodes.def"
 #undef OP
