@@ -12,6 +12,12 @@ namespace glslrun::test::mathsweep {
 
 inline constexpr float kInf = std::numeric_limits<float>::infinity();
 
+// On the bits: under DAZ a denormal compares equal to 0.
+inline bool is_denormal(float x) {
+    const uint32_t b = std::bit_cast<uint32_t>(x);
+    return (b & 0x7F800000u) == 0 && (b & 0x007FFFFFu) != 0;
+}
+
 // Error of `got` in units in the last place of the float nearest `ref`
 // (ULPs of the denormal spacing below 2^-126). A float overflow of `ref`
 // counts as exact when `got` is the matching infinity.
