@@ -83,6 +83,7 @@ expect_error "cannot create" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tm
 expect_error "needs a scene" "$vs" "$fs" --error-report "$tmp/x"
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" --bench 2
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" -o "$tmp/x.png"
+expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" --stats
 
 [ $failures = 0 ] && echo "error report: all checks passed"
 exit $((failures != 0))

@@ -240,9 +240,10 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));
     if (!o.error_report.empty() && in->scene.empty())
         return fail(Error("--error-report needs a scene file (scene.toml) to render"));
-    if (!o.error_report.empty() && (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty()))
-        return fail(Error("--error-report writes its own images into its directory: it does not combine "
-                          "with -o, --bench or --compare"));
+    if (!o.error_report.empty() &&
+        (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
+        return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "
+                          "--bench, --compare, --stats or --dump-ir"));
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
         return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));
