@@ -14,12 +14,13 @@
 // Measured error bounds (tests/ir/fast_math_test.cpp asserts them; the
 // measured values are in docs/precision.md, "Built-in functions"):
 //   rcp, rsqrt       relative 2^-22 (about 2 ULP)
-//   exp2, log2       relative 2^-21 / absolute 2^-21 near log2 = 0
-//   exp, log, pow    exp2/log2's error plus the rounding of the argument
-//                    (relative ~|x| 2^-24 for exp, ~|y log2 x| 2^-21 for pow)
-//   sin, cos         absolute 2^-22 for |x| <= 2^12, degrading linearly
-//                    with |x| beyond (the reduction is exact while
-//                    |x| < 2^16)
+//   exp2             relative 2^-21.5
+//   log2, log        relative 2^-21.5, absolute where |result| < 1
+//   exp              relative 2^-21 (1 + |x|): x log2(e) is rounded to float
+//   pow              relative 2^-21 (1 + |y log2 x|)
+//   sin, cos         absolute 2^-23 for |x| <= 2^12, 2^-19.5 for
+//                    |x| <= 2^16, growing with |x| beyond (the reduction
+//                    is exact while |x| < 2^13 pi/2)
 // Special cases follow IEEE like the Precise functions, except pow, which
 // follows llvmpipe (docs/extremes.md): pow(0, y) = 0 for every y (so
 // pow(0, 0) = 0), pow(x < 0, y) = NaN, pow(NaN, y) = 0.
@@ -129,8 +130,9 @@ inline float pow(float x, float y) {
 
 namespace detail {
 
-// x = k pi/2 + r in float: pi/2 in three parts (8, 12 and 24 bits, as
-// cephes's DP1..DP3), k * part exact while |k| < 2^12 for the first two.
+// x = k pi/2 + r in float: pi/2 in three parts (8, 11 and 24 bits, as
+// cephes's DP1..DP3); k * part is exact for the first two while |k| < 2^13,
+// so the reduction is exact for |x| < 2^13 pi/2 and degrades beyond.
 struct Reduced {
     float r;
     uint32_t quadrant;

@@ -8,7 +8,7 @@
 // AVX2 kernels (-ffp-contract=off: no FMA contraction).
 //
 // How: each float function evaluates in double - range reduction, then a
-// Chebyshev-fitted polynomial (tools/mathfit/fit.py) accurate to 2^-40 or
+// Chebyshev-fitted polynomial (tools/mathfit/fit.py) accurate to 2^-45 or
 // better - and rounds once to float, so results are within ~0.5 ULP (measured
 // bounds: tests/ir/precise_math_test.cpp and docs/precision.md).
 //
@@ -57,10 +57,11 @@ inline double poly(double x, const double (&c)[N]) {
 }
 
 // Coefficients from tools/mathfit/fit.py (max absolute error of the fit).
-// 2^r, |r| <= 1/2 (2^-40.2).
+// 2^r, |r| <= 1/2 (2^-46.0).
 inline constexpr double kExp2Poly[] = {
-    1.0, 0.6931471805459223, 0.2402265069581291, 0.05550410941250814, 0.009618129159433652,
-    0.0013333450524916463, 0.00015403455822606227, 1.5310090890738245e-05, 1.3255232837537796e-06};
+    1.0000000000000135,    0.6931471805599462,    0.24022650695640124,   0.05550410866465154,
+    0.009618129193986148,  0.001333355820082724,  0.00015403433712550652, 1.52526729004753e-05,
+    1.3259654090085932e-06, 1.0205910984889862e-07};
 // log2(m) = s * P(s^2), s = (m-1)/(m+1), |s| <= 3 - 2 sqrt 2 (2^-50.8).
 inline constexpr double kLog2Poly[] = {2.885390081777927,   0.9617966939243325,  0.577078017247236,
                                        0.41219840190016577, 0.3206163989221177,  0.26144389073771435,

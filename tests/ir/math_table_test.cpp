@@ -113,7 +113,64 @@ void sweep_pairs(Row& row, bool pow, P precise, G glibc, R reference) {
     }
 }
 
+// Max relative error (absolute where |ref| < abs_below) of a Fast function
+// over every 97th float of [lo, hi] whose input and result are normal.
+template <class F, class R>
+double fast_max_error(float lo, float hi, double abs_below, F fast, R reference) {
+    double worst = 0.0;
+    every_float(97, [&](float x) {
+        if (!(x >= lo && x <= hi) || is_denormal(x)) return;
+        const double ref = reference(double(x));
+        if (!(std::fabs(ref) >= 0x1p-125 && std::fabs(ref) <= 0x1p127)) return;
+        const double err = std::fabs(double(fast(x)) - ref);
+        worst = std::max(worst, std::fabs(ref) < abs_below ? err : err / std::fabs(ref));
+    });
+    return worst;
+}
+
 }  // namespace
+
+TEST_CASE("table of the Fast approximations", "[.precision_table]") {
+    ir::FlushDenormals flush;
+    struct FastRow {
+        const char* name;
+        const char* range;
+        const char* kind;
+        double error;
+    };
+    const float huge = std::numeric_limits<float>::max();
+    const FastRow rows[] = {
+        {"rcp", "all normal x", "relative",
+         fast_max_error(-huge, huge, 0.0, [](float x) { return math::fast::rcp(x); }, [](double x) { return 1.0 / x; })},
+        {"rsqrt", "x > 0", "relative",
+         fast_max_error(0.0f, huge, 0.0, [](float x) { return math::fast::rsqrt(x); },
+                        [](double x) { return 1.0 / std::sqrt(x); })},
+        {"exp2", "all x", "relative",
+         fast_max_error(-huge, huge, 0.0, [](float x) { return math::fast::exp2(x); }, [](double x) { return std::exp2(x); })},
+        {"log2", "x > 0", "relative, absolute where |log2 x| < 1",
+         fast_max_error(0.0f, huge, 1.0, [](float x) { return math::fast::log2(x); }, [](double x) { return std::log2(x); })},
+        {"exp", "|x| <= 1", "relative",
+         fast_max_error(-1.0f, 1.0f, 0.0, [](float x) { return math::fast::exp(x); }, [](double x) { return std::exp(x); })},
+        {"exp", "all x", "relative",
+         fast_max_error(-huge, huge, 0.0, [](float x) { return math::fast::exp(x); }, [](double x) { return std::exp(x); })},
+        {"log", "x > 0", "relative, absolute where |log x| < 1",
+         fast_max_error(0.0f, huge, 1.0, [](float x) { return math::fast::log(x); }, [](double x) { return std::log(x); })},
+        {"sin", "|x| <= 2^12", "absolute",
+         fast_max_error(-4096.0f, 4096.0f, 2.0, [](float x) { return math::fast::sin(x); }, [](double x) { return std::sin(x); })},
+        {"cos", "|x| <= 2^12", "absolute",
+         fast_max_error(-4096.0f, 4096.0f, 2.0, [](float x) { return math::fast::cos(x); }, [](double x) { return std::cos(x); })},
+        {"sin", "|x| <= 2^16", "absolute",
+         fast_max_error(-65536.0f, 65536.0f, 2.0, [](float x) { return math::fast::sin(x); },
+                        [](double x) { return std::sin(x); })},
+        {"sin", "|x| <= 2^20", "absolute",
+         fast_max_error(-1048576.0f, 1048576.0f, 2.0, [](float x) { return math::fast::sin(x); },
+                        [](double x) { return std::sin(x); })},
+    };
+    std::printf("| function | range | error | max error | log2 |\n|---|---|---|---|---|\n");
+    for (const FastRow& r : rows)
+        std::printf("| %s | %s | %s | %.3g | %.1f |\n", r.name, r.range, r.kind, r.error, std::log2(r.error));
+    CHECK(rows[0].error < 1e-6);
+}
 
 TEST_CASE("table of the built-in functions", "[.precision_table]") {
     ir::FlushDenormals flush;

@@ -21,7 +21,7 @@ def safe(f, at_zero):
 
 KERNELS = {
     # 2^r on |r| <= 1/2 (exp2: x = k + r).
-    "exp2": (lambda r: mp.power(2, r), [-0.5 * MARGIN, 0.5 * MARGIN], 8),
+    "exp2": (lambda r: mp.power(2, r), [-0.5 * MARGIN, 0.5 * MARGIN], 9),
     # log2(m) = s * P(s^2), s = (m-1)/(m+1): P(z) = 2 atanh(sqrt z) / (sqrt z ln 2).
     "log2": (safe(lambda z: 2 * mp.atanh(mp.sqrt(z)) / (mp.sqrt(z) * mp.log(2)), 2 / mp.log(2)),
              [0, (S_MAX * MARGIN) ** 2], 6),
