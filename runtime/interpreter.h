@@ -24,6 +24,8 @@ struct RunError {
     int line = 0;
 };
 
+class Engine;  // runtime/interpreter.cpp: the interpreter for one register word size
+
 class Interpreter {
 public:
     // `uniforms` must stay alive while the interpreter runs; it is the
@@ -31,11 +33,17 @@ public:
     // must not change during the interpreter's life: the shader's prologue
     // (uniform-only code) runs once, here. `textures` (kMaxTextureUnits
     // units, may be null: nothing bound) must stay alive too.
+    // `precision` (glslrun.h): Precise and Fast run fp32 registers, Fast with
+    // approximate kernels for a few ops; Reference runs double registers.
     Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
-                const GLState::TextureUnit* textures = nullptr);
+                const GLState::TextureUnit* textures = nullptr, Precision precision = Precision::Precise);
     ~Interpreter();
 
     // kLanes words of register r: floats, ints and bools (0/1) as raw bits.
+    // In Reference mode the shader works on doubles behind these words: the
+    // inputs (ir::Shader::inputs) are read from them at run() and the outputs
+    // (ir::Shader::outputs) rounded back to float into them after it; other
+    // registers are not exchanged.
     uint32_t* lanes(ir::Reg r);
     float* lanes_f(ir::Reg r) { return reinterpret_cast<float*>(lanes(r)); }
 
@@ -47,8 +55,7 @@ public:
     LaneMask alive() const;
 
 private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
+    std::unique_ptr<Engine> engine_;
 };
 
 }  // namespace glslrun::rt

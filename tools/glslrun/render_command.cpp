@@ -117,6 +117,7 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                  double output_ms) {
     fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
+    fmt::print("precision    {}\n", precision_name(prog.exec.precision));
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
@@ -169,6 +170,7 @@ scene::BenchReport bench_header(const scene::Scene& scene, const RenderOptions& 
     r.width = scene.width;
     r.height = scene.height;
     r.threads = o.threads == 0 ? "auto" : std::to_string(o.threads);
+    r.precision = precision_name(o.precision);
     r.compile_s = compile_ms / 1e3;
     r.first_draw_s = first_draw_ms / 1e3;
     r.counts = {{"vertices", first.vertices}, {"triangles", first.triangles},
@@ -190,6 +192,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     auto prog = Program::compile(in.vertex, in.fragment);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
+    prog->exec.precision = o.precision;
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     Framebuffer fb(scene->width, scene->height);

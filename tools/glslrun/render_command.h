@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "glslrun/glslrun.h"
+
 namespace glslrun::cli {
 
 struct RenderOptions {
@@ -11,6 +13,7 @@ struct RenderOptions {
     unsigned threads = 0;  // draw() worker threads; 0: one per core
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;
+    Precision precision = Precision::Precise;  // --precision
 };
 
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for
