@@ -14,7 +14,12 @@ namespace glslrun::rt {
 
 // Compile-time batch width (8..64). Fragment batches hold kLanes/4 2x2 quads:
 // lanes 4q+0..3 are (x,y) (x+1,y) (x,y+1) (x+1,y+1).
-inline constexpr int kLanes = 16;
+// GLSLRUN_LANES exists so that a test can build other widths and check that
+// images do not depend on it (tools/setup.sh test).
+#ifndef GLSLRUN_LANES
+#define GLSLRUN_LANES 16
+#endif
+inline constexpr int kLanes = GLSLRUN_LANES;
 static_assert(kLanes % 4 == 0 && kLanes >= 8 && kLanes <= 64);
 using LaneMask = uint64_t;  // bit i = lane i
 inline constexpr LaneMask kAllLanes = kLanes == 64 ? ~LaneMask(0) : ((LaneMask(1) << kLanes) - 1);
