@@ -1,6 +1,7 @@
 // Interpreter throughput: million fragment-shader invocations per second on one
 // core, for the lecture's per-pixel spot-light shader on synthetic inputs.
-// Run: glslrun_bench [seconds]. Whole-frame benchmarks live in glslrun itself.
+// Run: glslrun_bench [seconds] [reference|precise|fast]. Whole-frame benchmarks
+// live in glslrun itself.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -71,7 +72,16 @@ int main(int argc, char** argv) {
     }
     const auto& fs = prog->ir().fragment;
     namespace rt = glslrun::rt;
-    rt::Interpreter interp(fs, prog->state().uniforms.data(), 1u << 20);
+    glslrun::Precision precision = glslrun::Precision::Precise;
+    if (argc > 2) {
+        auto parsed = glslrun::parse_precision(argv[2]);
+        if (!parsed) {
+            std::fprintf(stderr, "bench: %s\n", parsed.error().str().c_str());
+            return 1;
+        }
+        precision = *parsed;
+    }
+    rt::Interpreter interp(fs, prog->state().uniforms.data(), 1u << 20, nullptr, precision);
     const auto* normal = find_input(fs, "normal");
     const auto* ec_pos = find_input(fs, "ecPos");
     if (!normal || !ec_pos) {
@@ -113,8 +123,8 @@ int main(int argc, char** argv) {
     };
     count(fs.body);
     double invocations = double(batches) * rt::kLanes;
-    std::printf("spot_pix_fixed.frag: %zu IR instructions per batch (+%zu in the per-draw prologue), %d lanes\n",
-                instructions, fs.prologue.size(), rt::kLanes);
+    std::printf("spot_pix_fixed.frag: %zu IR instructions per batch (+%zu in the per-draw prologue), %d lanes, %s\n",
+                instructions, fs.prologue.size(), rt::kLanes, glslrun::precision_name(precision));
     std::printf("%.2f M invocations/s on one core (%.0f invocations in %.2f s)\n", invocations / elapsed / 1e6,
                 invocations, elapsed);
     std::printf("%.2f M invocations per CPU-second (%.2f CPU-s; the wall-clock figure suffers from other load)\n",

@@ -73,10 +73,10 @@ def scene_variant(tmp, program, subdivisions):
 
 
 def parse_bench(text):
-    """The `key value` lines of --bench as a dict; numbers as floats."""
+    """The `key value` lines of --bench (and --error-report) as a dict; numbers as floats."""
     values = {}
     for line in text.splitlines():
-        m = re.match(r"^([a-z_]+)\s+(.*)$", line)
+        m = re.match(r"^([A-Za-z0-9_.\[\]]+)\s+(.*)$", line)
         if not m:
             continue
         key, value = m.groups()

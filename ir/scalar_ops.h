@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "ir/precise_math.h"  // math::exp etc., used by opcodes.def
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif
@@ -34,11 +36,18 @@ public:
 // and abs are bit operations, so those ops flush their operands and results
 // explicitly to keep "denormals are zero" true for every op.
 inline float ftz(float a) { return std::fabs(a) < 1.17549435e-38f ? std::copysign(0.0f, a) : a; }
+// The Reference mode evaluates the same expressions in double and keeps
+// denormals: its ftz is the identity.
+inline double ftz(double a) { return a; }
 
-inline float glsl_sign(float a) { return a > 0.0f ? 1.0f : (a < 0.0f ? -1.0f : 0.0f); }
-inline float glsl_fract(float a) { return a - std::floor(a); }
+// T is float, or double in Precision::Reference (ir/alu_eval.h).
+template <class T>
+T glsl_sign(T a) { return a > T(0) ? T(1) : (a < T(0) ? T(-1) : T(0)); }
+template <class T>
+T glsl_fract(T a) { return a - std::floor(a); }
 // GLSL 1.10 §8.3: mod(x, y) = x - y * floor(x / y).
-inline float glsl_mod(float a, float b) { return a - b * std::floor(a / b); }
+template <class T>
+T glsl_mod(T a, T b) { return a - b * std::floor(a / b); }
 
 inline int32_t wrap_add(int32_t a, int32_t b) {
     return static_cast<int32_t>(static_cast<uint32_t>(a) + static_cast<uint32_t>(b));
@@ -62,10 +71,12 @@ inline int32_t safe_imod(int32_t a, int32_t b) {
 }
 // float -> int truncates toward zero; NaN gives 0 and out-of-range values
 // saturate instead of invoking undefined behaviour.
-inline int32_t f2i_trunc(float a) {
+// (2147483647.0f is 2^31: as a float or a double, every value from it on saturates.)
+template <class T>
+int32_t f2i_trunc(T a) {
     if (std::isnan(a)) return 0;
-    if (a >= 2147483647.0f) return std::numeric_limits<int32_t>::max();
-    if (a <= -2147483648.0f) return std::numeric_limits<int32_t>::min();
+    if (a >= T(2147483647.0f)) return std::numeric_limits<int32_t>::max();
+    if (a <= T(-2147483648.0f)) return std::numeric_limits<int32_t>::min();
     return static_cast<int32_t>(a);
 }
 

@@ -173,7 +173,7 @@ Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& a
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
         rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations,
-                               current.texture_units.data());
+                               current.texture_units.data(), program.exec.precision, st.fast_ops);
         for (size_t job; queue.next(&job);) {
             uint32_t begin = uint32_t(job) * kVertexJob, end = std::min(count, begin + kVertexJob);
             errors[job] = shade_range(interp, st, *plan, begin, end, out);
@@ -218,7 +218,8 @@ Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const st
     std::vector<ShaderOutput> outputs;
     for (const ir::Binding& b : fs.outputs) outputs.push_back({b.name, b.count, std::vector<float>(size_t(count) * b.count)});
     ShaderOutput discarded{"discarded", 1, std::vector<float>(count)};
-    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations, state.texture_units.data());
+    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations, state.texture_units.data(),
+                           program.exec.precision, st.fast_ops);
     for (uint32_t base = 0; base < count; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, count - base));
         // Padding up to a whole quad repeats the last fragment as helper lanes.

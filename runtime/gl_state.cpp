@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "ir/precise_math.h"
 #include "runtime/program_state.h"
 
 namespace glslrun {
@@ -78,7 +79,8 @@ void emit_light(const Emit& emit, int i, const LightState& l) {
     emit_vec3(emit, p + "spotDirection", l.spot_direction);
     emit_float(emit, p + "spotExponent", l.spot_exponent);
     emit_float(emit, p + "spotCutoff", l.spot_cutoff);
-    float cos_cutoff = l.spot_cutoff == 180.0f ? -1.0f : std::cos(glm::radians(l.spot_cutoff));
+    // math::cos, not libm: the uniform reaches the image, so it must not depend on the libm version.
+    float cos_cutoff = l.spot_cutoff == 180.0f ? -1.0f : math::cos(glm::radians(l.spot_cutoff));
     emit_float(emit, p + "spotCosCutoff", cos_cutoff);
     emit_float(emit, p + "constantAttenuation", l.constant_attenuation);
     emit_float(emit, p + "linearAttenuation", l.linear_attenuation);

@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -15,6 +16,7 @@
 
 namespace glslrun::rt {
 
+template <class W>
 struct Step;
 
 // Bit i of a 32-lane mask word: testing against a table (not shifting by the
@@ -25,43 +27,68 @@ inline constexpr std::array<uint32_t, 32> kLaneBit = [] {
     return bits;
 }();
 
+// The register word W: uint32_t (fp32 modes), or uint64_t in
+// Precision::Reference, where a float register holds a double. The uniform
+// store and the interpreter's callers always see 32-bit words; these convert
+// one word of kind k across that boundary (exact when widening).
+template <class W>
+W widen(ir::Kind k, uint32_t w) {
+    if constexpr (sizeof(W) == sizeof(uint32_t)) return w;
+    else if (k == ir::Kind::F32) return std::bit_cast<W>(double(std::bit_cast<float>(w)));
+    else return w;  // i32 in the low half, bools 0/1
+}
+template <class W>
+uint32_t narrow(ir::Kind k, W w) {
+    if constexpr (sizeof(W) == sizeof(uint32_t)) return w;
+    else if (k == ir::Kind::F32) return std::bit_cast<uint32_t>(float(std::bit_cast<double>(w)));
+    else return uint32_t(w);
+}
+// The float type of a register word.
+template <class W>
+using FloatOf = typename ir::alu::Word<ir::TypeClass::F, W>::T;
+
 // What a kernel can touch: the register file, the uniform store, the bound
 // textures, the mask.
+template <class W>
 struct Machine {
-    uint32_t* regs = nullptr;  // register r lane i at regs[r * kLanes + i]
+    W* regs = nullptr;  // register r lane i at regs[r * kLanes + i]
     const uint32_t* uniforms = nullptr;
     const GLState::TextureUnit* textures = nullptr;  // kMaxTextureUnits units, or none at all
     ExecMask mask;
 
     // Masked register write: inactive lanes keep their old value.
-    void write(uint32_t* __restrict dst, const uint32_t* __restrict value) {
+    void write(W* __restrict dst, const W* __restrict value) {
         const LaneMask active = mask.active();
         if (active == kAllLanes) {
-            std::memcpy(dst, value, sizeof(uint32_t) * kLanes);
+            std::memcpy(dst, value, sizeof(W) * kLanes);
             return;
         }
         for (int base = 0; base < kLanes; base += 32) {
             const uint32_t bits = uint32_t(active >> base);
             const int n = kLanes - base < 32 ? kLanes - base : 32;
             for (int i = 0; i < n; ++i) {
-                const uint32_t pick = 0u - uint32_t((bits & kLaneBit[size_t(i)]) != 0);
+                const W pick = W(0) - W((bits & kLaneBit[size_t(i)]) != 0);
                 dst[base + i] = (value[base + i] & pick) | (dst[base + i] & ~pick);
             }
         }
     }
 };
 
-using Kernel = void (*)(const Step&, Machine&);
+template <class W>
+using Kernel = void (*)(const Step<W>&, Machine<W>&);
 
 // One compiled IR node. Blocks are ranges [begin, end) of a flat Step array.
+template <class W>
 struct Step {
     ir::NodeKind kind = ir::NodeKind::Instr;
-    Kernel fn = nullptr;  // Instr
-    uint32_t* dst = nullptr;
-    const uint32_t* src[3] = {nullptr, nullptr, nullptr};
+    Kernel<W> fn = nullptr;  // Instr
+    W* dst = nullptr;
+    const W* src[3] = {nullptr, nullptr, nullptr};
     uint32_t imm[3] = {0, 0, 0};
+    W value = 0;                     // konst: imm[0] as a register word
+    ir::Kind type = ir::Kind::F32;   // ir::Instr::type
     bool unmasked = false;           // ir::Instr::unmasked: write every lane
-    const uint32_t* cond = nullptr;  // If
+    const W* cond = nullptr;         // If
     uint32_t body_begin = 0, body_end = 0;  // If then / Loop body / Scope body
     uint32_t alt_begin = 0, alt_end = 0;    // If else / Loop continue block
     uint32_t callee = 0;                    // Call
@@ -70,8 +97,8 @@ struct Step {
 
 namespace kernels {
 
-inline uint32_t clamp_index(uint32_t raw, uint32_t count) {
-    int32_t i = static_cast<int32_t>(raw);
+inline uint32_t clamp_index(uint64_t raw, uint32_t count) {
+    int32_t i = static_cast<int32_t>(static_cast<uint32_t>(raw));
     if (i < 0) return 0;
     return std::min(static_cast<uint32_t>(i), count - 1);
 }
@@ -80,85 +107,91 @@ inline uint32_t clamp_index(uint32_t raw, uint32_t count) {
 // lane is active (or none can tell), else into a temporary that is blended in.
 // Bodies must be elementwise (lane i reads only lane i) so dst may alias an
 // operand.
-template <class Lanes>
-inline void emit(const Step& s, Machine& m, Lanes&& lanes) {
+template <class W, class Lanes>
+inline void emit(const Step<W>& s, Machine<W>& m, Lanes&& lanes) {
     if (s.unmasked || m.mask.full()) {
         lanes(s.dst);
         return;
     }
-    alignas(64) uint32_t out[kLanes];
+    alignas(64) W out[kLanes];
     lanes(out);
     m.write(s.dst, out);
 }
 
-// Lane loop of an Alu op into `out`. Operands may alias `out` lane for lane
+// Lane loop of `L::eval` (L: ir::alu::Lane<op>, or a Fast-mode lane of
+// runtime/fast_kernels.h) into `out`. Operands may alias `out` lane for lane
 // (dst == src), which is safe elementwise: ivdep tells GCC so.
-template <ir::Op op>
-inline void alu_lanes(const Step& s, uint32_t* out) {
-    using L = ir::alu::Lane<op>;
-    const uint32_t* a = s.src[0];
-    const uint32_t* b = s.src[1];
-    const uint32_t* c = s.src[2];
+template <class W, class L>
+inline void alu_lanes(const Step<W>& s, W* out) {
+    const W* a = s.src[0];
+    const W* b = s.src[1];
+    const W* c = s.src[2];
     if constexpr (L::arity == 1) {
 #pragma GCC ivdep
-        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], 0, 0);
+        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], W(0), W(0));
     } else if constexpr (L::arity == 2) {
 #pragma GCC ivdep
-        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], 0);
+        for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], W(0));
     } else {
 #pragma GCC ivdep
         for (int i = 0; i < kLanes; ++i) out[i] = L::eval(a[i], b[i], c[i]);
     }
 }
 
-template <ir::Op op>
-void alu(const Step& s, Machine& m) {
-    emit(s, m, [&](uint32_t* out) { alu_lanes<op>(s, out); });
+template <class W, ir::Op op>
+void alu(const Step<W>& s, Machine<W>& m) {
+    emit(s, m, [&](W* out) { alu_lanes<W, ir::alu::Lane<op>>(s, out); });
 }
 
 // Straight from the source: a copy through a temporary stalls store forwarding.
-inline void mov(const Step& s, Machine& m) {
+template <class W>
+void mov(const Step<W>& s, Machine<W>& m) {
     if (s.dst == s.src[0]) return;
-    if (s.unmasked) std::memcpy(s.dst, s.src[0], sizeof(uint32_t) * kLanes);
+    if (s.unmasked) std::memcpy(s.dst, s.src[0], sizeof(W) * kLanes);
     else m.write(s.dst, s.src[0]);
 }
 
-inline void konst(const Step& s, Machine& m) {
-    emit(s, m, [&](uint32_t* out) {
-        const uint32_t v = s.imm[0];
+template <class W>
+void konst(const Step<W>& s, Machine<W>& m) {
+    emit(s, m, [&](W* out) {
+        const W v = s.value;
         for (int i = 0; i < kLanes; ++i) out[i] = v;
     });
 }
 
-inline void sel(const Step& s, Machine& m) {
-    emit(s, m, [&](uint32_t* out) {
-        const uint32_t* c = s.src[0];
-        const uint32_t* x = s.src[1];
-        const uint32_t* y = s.src[2];
+template <class W>
+void sel(const Step<W>& s, Machine<W>& m) {
+    emit(s, m, [&](W* out) {
+        const W* c = s.src[0];
+        const W* x = s.src[1];
+        const W* y = s.src[2];
 #pragma GCC ivdep
         for (int i = 0; i < kLanes; ++i) {
-            uint32_t pick = 0u - (c[i] != 0);
+            W pick = W(0) - W(c[i] != 0);
             out[i] = (x[i] & pick) | (y[i] & ~pick);
         }
     });
 }
 
-inline void uniform(const Step& s, Machine& m) {
-    emit(s, m, [&](uint32_t* out) {
-        const uint32_t v = m.uniforms[s.imm[0]];
+template <class W>
+void uniform(const Step<W>& s, Machine<W>& m) {
+    emit(s, m, [&](W* out) {
+        const W v = widen<W>(s.type, m.uniforms[s.imm[0]]);
         for (int i = 0; i < kLanes; ++i) out[i] = v;
     });
 }
 
-inline void uniform_ind(const Step& s, Machine& m) {
-    alignas(64) uint32_t out[kLanes];
+template <class W>
+void uniform_ind(const Step<W>& s, Machine<W>& m) {
+    alignas(64) W out[kLanes];
     for (int i = 0; i < kLanes; ++i)
-        out[i] = m.uniforms[s.imm[0] + clamp_index(s.src[0][i], s.imm[1]) * s.imm[2]];
+        out[i] = widen<W>(s.type, m.uniforms[s.imm[0] + clamp_index(s.src[0][i], s.imm[1]) * s.imm[2]]);
     m.write(s.dst, out);
 }
 
-inline void load_ind(const Step& s, Machine& m) {
-    alignas(64) uint32_t out[kLanes];
+template <class W>
+void load_ind(const Step<W>& s, Machine<W>& m) {
+    alignas(64) W out[kLanes];
     for (int i = 0; i < kLanes; ++i) {
         uint32_t r = s.imm[0] + clamp_index(s.src[0][i], s.imm[1]) * s.imm[2];
         out[i] = m.regs[size_t(r) * kLanes + i];
@@ -167,7 +200,8 @@ inline void load_ind(const Step& s, Machine& m) {
 }
 
 // Each lane writes its own element, so only the active lanes store.
-inline void store_ind(const Step& s, Machine& m) {
+template <class W>
+void store_ind(const Step<W>& s, Machine<W>& m) {
     LaneMask active = m.mask.active();
     for (int i = 0; i < kLanes; ++i) {
         if (!((active >> i) & 1)) continue;
@@ -178,37 +212,46 @@ inline void store_ind(const Step& s, Machine& m) {
 
 // Fine derivatives within each 2x2 quad: lanes 4q+0..3 are (x,y) (x+1,y)
 // (x,y+1) (x+1,y+1). Each row gets its own ddx, each column its own ddy.
-inline void ddx(const Step& s, Machine& m) {
-    alignas(64) float out[kLanes];
-    float v[kLanes];
+template <class W>
+void ddx(const Step<W>& s, Machine<W>& m) {
+    using F = FloatOf<W>;
+    alignas(64) F out[kLanes];
+    F v[kLanes];
     std::memcpy(v, s.src[0], sizeof v);
     for (int q = 0; q < kLanes; q += 4) {
-        float row0 = v[q + 1] - v[q + 0], row1 = v[q + 3] - v[q + 2];
+        F row0 = v[q + 1] - v[q + 0], row1 = v[q + 3] - v[q + 2];
         out[q + 0] = out[q + 1] = row0;
         out[q + 2] = out[q + 3] = row1;
     }
-    uint32_t words[kLanes];
+    W words[kLanes];
     std::memcpy(words, out, sizeof words);
     m.write(s.dst, words);
 }
 
-inline void ddy(const Step& s, Machine& m) {
-    alignas(64) float out[kLanes];
-    float v[kLanes];
+template <class W>
+void ddy(const Step<W>& s, Machine<W>& m) {
+    using F = FloatOf<W>;
+    alignas(64) F out[kLanes];
+    F v[kLanes];
     std::memcpy(v, s.src[0], sizeof v);
     for (int q = 0; q < kLanes; q += 4) {
-        float col0 = v[q + 2] - v[q + 0], col1 = v[q + 3] - v[q + 1];
+        F col0 = v[q + 2] - v[q + 0], col1 = v[q + 3] - v[q + 1];
         out[q + 0] = out[q + 2] = col0;
         out[q + 1] = out[q + 3] = col1;
     }
-    uint32_t words[kLanes];
+    W words[kLanes];
     std::memcpy(words, out, sizeof words);
     m.write(s.dst, words);
 }
 
 // Texture lookups (runtime/tex_kernel.cpp): src[1] points at the operand
 // block (the compiler resolves imm[0]), dst at the first of four results.
-void tex(const Step& s, Machine& m);
+// Reference mode samples with the same float sampler: coordinates are
+// rounded to float, the texel widened back.
+template <class W>
+void tex(const Step<W>& s, Machine<W>& m);
+extern template void tex<uint32_t>(const Step<uint32_t>&, Machine<uint32_t>&);
+extern template void tex<uint64_t>(const Step<uint64_t>&, Machine<uint64_t>&);
 
 }  // namespace kernels
 
@@ -218,28 +261,28 @@ void tex(const Step& s, Machine& m);
 // and no FMA is enabled, so every lane computes the same bits either way.
 #if defined(__x86_64__) && defined(__GNUC__)
 #define GLSLRUN_HAVE_AVX2_KERNELS 1
-template <Kernel K>
-__attribute__((target("avx2"), flatten)) void avx2_kernel(const Step& s, Machine& m) {
+template <class W, Kernel<W> K>
+__attribute__((target("avx2"), flatten)) void avx2_kernel(const Step<W>& s, Machine<W>& m) {
     K(s, m);
 }
 #endif
 
-template <bool kAvx2, Kernel K>
-constexpr Kernel pick_kernel() {
+template <class W, bool kAvx2, Kernel<W> K>
+constexpr Kernel<W> pick_kernel() {
 #ifdef GLSLRUN_HAVE_AVX2_KERNELS
-    if constexpr (kAvx2) return &avx2_kernel<K>;
+    if constexpr (kAvx2) return &avx2_kernel<W, K>;
 #endif
     return K;
 }
 
 // The kernel of every opcode: Alu ones from the table, Special ones by name.
-template <bool kAvx2>
-Kernel kernel_for(ir::Op op) {
+template <class W, bool kAvx2>
+Kernel<W> kernel_for(ir::Op op) {
     switch (op) {
 #define GLSLRUN_KERNEL_Alu(name) \
-    case ir::Op::name: return pick_kernel<kAvx2, &kernels::alu<ir::Op::name>>();
+    case ir::Op::name: return pick_kernel<W, kAvx2, &kernels::alu<W, ir::Op::name>>();
 #define GLSLRUN_KERNEL_Special(name) \
-    case ir::Op::name: return pick_kernel<kAvx2, &kernels::name>();
+    case ir::Op::name: return pick_kernel<W, kAvx2, &kernels::name<W>>();
 #define OP(name, arity, res, opnd, kind, expr) GLSLRUN_KERNEL_##kind(name)
 #include "ir/opcodes.def"
 #undef OP
@@ -250,7 +293,12 @@ Kernel kernel_for(ir::Op op) {
 }
 
 // Picks the kernels for the CPU that runs them, once per Interpreter.
-inline Kernel kernel_for(ir::Op op, bool avx2) { return avx2 ? kernel_for<true>(op) : kernel_for<false>(op); }
+inline Kernel<uint32_t> kernel_for(ir::Op op, bool avx2) {
+    return avx2 ? kernel_for<uint32_t, true>(op) : kernel_for<uint32_t, false>(op);
+}
+// Reference mode: baseline kernels only (its speed is secondary, and this
+// halves what the 64-bit word costs to compile).
+inline Kernel<uint64_t> kernel_for(ir::Op op) { return kernel_for<uint64_t, false>(op); }
 
 // GLSLRUN_NO_AVX2=1 forces the baseline kernels: images must not change.
 inline bool cpu_has_avx2() {

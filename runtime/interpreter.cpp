@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "runtime/interp_kernels.h"
+#include "runtime/fast_kernels.h"
 
 namespace glslrun::rt {
 
@@ -23,11 +24,12 @@ namespace {
 // guards against a malformed shader that calls itself.
 constexpr int kMaxCallDepth = 1024;
 
+template <class W>
 struct AlignedWords {
     static constexpr std::align_val_t kAlign{64};
-    uint32_t* data = nullptr;
-    explicit AlignedWords(size_t n) : data(static_cast<uint32_t*>(::operator new[](n * sizeof(uint32_t), kAlign))) {
-        std::memset(data, 0, n * sizeof(uint32_t));
+    W* data = nullptr;
+    explicit AlignedWords(size_t n) : data(static_cast<W*>(::operator new[](n * sizeof(W), kAlign))) {
+        std::memset(data, 0, n * sizeof(W));
     }
     ~AlignedWords() { ::operator delete[](data, kAlign); }
     AlignedWords(const AlignedWords&) = delete;
@@ -38,27 +40,32 @@ struct Range {
     uint32_t begin = 0, end = 0;
 };
 
-}  // namespace
-
-struct Interpreter::Impl {
+// The interpreter over register words W (interp_kernels.h): one copy of the
+// control-flow code serves the fp32 modes (uint32_t) and Reference (uint64_t).
+template <class W>
+struct Core {
     size_t reg_count;  // the shader itself is not kept: Steps hold everything
     uint64_t max_loop_iterations;
     // Counts the iterations of all loops of one run together, so nested
     // loops cannot multiply the cap into an effective hang.
     uint64_t loop_iterations_left = 0;
     // One extra register of zeros backs operands that an op does not read.
-    AlignedWords file;
-    Machine machine;
-    std::vector<Step> steps;
+    AlignedWords<W> file;
+    Machine<W> machine;
+    std::vector<Step<W>> steps;
     std::vector<Range> functions;
     Range main;
     RunError error;
     bool failed = false;
     int call_depth = 0;
     bool avx2 = cpu_has_avx2();
+    Precision precision;
+    uint32_t fast_ops;
 
-    Impl(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures)
-        : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes) {
+    Core(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
+         Precision precision, uint32_t fast_ops = kAllFastOps)
+        : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes),
+          precision(precision), fast_ops(fast_ops) {
         machine.regs = file.data;
         machine.uniforms = uniforms;
         machine.textures = textures;
@@ -68,14 +75,23 @@ struct Interpreter::Impl {
     }
 
     // Uniform code (ir/hoist.cpp), once for all lanes: instructions only,
-    // so it cannot fail.
+    // so it cannot fail. Its results stay in W words (doubles in Reference).
     void run_prologue(Range prologue) {
-        ir::FlushDenormals ftz;
+        std::optional<ir::FlushDenormals> ftz;
+        if (flushes_denormals()) ftz.emplace();
         machine.mask.reset(kAllLanes);
         run_block(prologue.begin, prologue.end);
     }
 
-    uint32_t* reg(ir::Reg r) {
+    // The fp32 modes flush denormals (ir/scalar_ops.h); Reference does not.
+    static constexpr bool flushes_denormals() { return sizeof(W) == sizeof(uint32_t); }
+
+    Kernel<W> kernel(ir::Op op) const {
+        if constexpr (sizeof(W) == sizeof(uint32_t)) return kernel_for(op, avx2, precision, fast_ops);
+        else return kernel_for(op);
+    }
+
+    W* reg(ir::Reg r) {
         if (r == ir::kNoReg || r >= reg_count) return file.data + reg_count * kLanes;
         return file.data + size_t(r) * kLanes;
     }
@@ -86,22 +102,24 @@ struct Interpreter::Impl {
         Range range{uint32_t(steps.size()), uint32_t(steps.size() + block.size())};
         steps.resize(range.end);
         for (size_t i = 0; i < block.size(); ++i) {
-            Step step = compile_node(block[i]);
+            Step<W> step = compile_node(block[i]);
             steps[range.begin + i] = step;
         }
         return range;
     }
 
-    Step compile_node(const ir::Node& n) {
-        Step s;
+    Step<W> compile_node(const ir::Node& n) {
+        Step<W> s;
         s.kind = n.kind;
         s.line = n.loc.line;
         switch (n.kind) {
         case ir::NodeKind::Instr: {
             const ir::Instr& in = n.instr;
-            s.fn = kernel_for(in.op, avx2);
+            s.fn = kernel(in.op);
             s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
             s.unmasked = in.unmasked;
+            s.type = in.type;
+            s.value = widen<W>(in.type, in.imm[0]);
             for (int k = 0; k < 3; ++k) {
                 s.src[k] = reg(in.src[k]);
                 s.imm[k] = in.imm[k];
@@ -134,9 +152,13 @@ struct Interpreter::Impl {
     }
 
     // Four lanes per SSE2 movemask: this runs at every If.
-    static LaneMask lanes_true(const uint32_t* cond) {
+    static LaneMask lanes_true(const W* cond) {
         LaneMask m = 0;
 #if defined(__SSE2__)
+        if constexpr (sizeof(W) != sizeof(uint32_t)) {  // Reference: speed is secondary
+            for (int i = 0; i < kLanes; ++i) m |= LaneMask(cond[i] != 0) << i;
+            return m;
+        }
         const __m128i zero = _mm_setzero_si128();
         for (int i = 0; i < kLanes; i += 4) {
             __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(cond + i));
@@ -155,7 +177,7 @@ struct Interpreter::Impl {
         ExecMask& mask = machine.mask;
         if (!mask.any()) return true;
         for (uint32_t i = begin; i < end; ++i) {
-            const Step& s = steps[i];
+            const Step<W>& s = steps[i];
             // Instructions dominate: a predictable branch, not the switch's jump table.
             if (s.kind == ir::NodeKind::Instr) [[likely]] {
                 s.fn(s, machine);
@@ -187,7 +209,7 @@ struct Interpreter::Impl {
     }
 
     // A branch whose mask is empty is skipped entirely.
-    bool run_if(const Step& s) {
+    bool run_if(const Step<W>& s) {
         ExecMask& mask = machine.mask;
         ExecMask::IfFrame frame = mask.if_push(lanes_true(s.cond));
         if (mask.any() && !run_block(s.body_begin, s.body_end)) return false;
@@ -197,7 +219,7 @@ struct Interpreter::Impl {
         return true;
     }
 
-    bool run_loop(const Step& s) {
+    bool run_loop(const Step<W>& s) {
         ExecMask& mask = machine.mask;
         ExecMask::LoopFrame frame = mask.loop_begin();
         for (;;) {
@@ -235,21 +257,91 @@ struct Interpreter::Impl {
     }
 };
 
+}  // namespace
+
+// What Interpreter forwards to: Narrow (fp32 words) or Wide (Reference).
+class Engine {
+public:
+    virtual ~Engine() = default;
+    virtual uint32_t* lanes(ir::Reg r) = 0;
+    virtual bool run(LaneMask live, RunError* error) = 0;
+    virtual LaneMask alive() const = 0;
+};
+
+namespace {
+
+class Narrow final : public Engine {
+public:
+    Narrow(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
+           Precision precision, uint32_t fast_ops)
+        : core_(s, uniforms, max_iters, textures, precision, fast_ops) {}
+    uint32_t* lanes(ir::Reg r) override { return core_.reg(r); }
+    bool run(LaneMask live, RunError* error) override {
+        ir::FlushDenormals ftz;
+        bool ok = core_.run(live);
+        if (!ok && error) *error = core_.error;
+        return ok;
+    }
+    LaneMask alive() const override { return core_.machine.mask.alive(); }
+
+private:
+    Core<uint32_t> core_;
+};
+
+// Reference mode: the shader runs on doubles; callers exchange 32-bit words
+// through `boundary_`, converted only for the shader's inputs and outputs.
+class Wide final : public Engine {
+public:
+    Wide(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures)
+        : core_(s, uniforms, max_iters, textures, Precision::Reference), boundary_((s.regs.size() + 1) * kLanes),
+          inputs_(s.inputs), outputs_(s.outputs) {}
+    uint32_t* lanes(ir::Reg r) override {
+        if (r == ir::kNoReg || r >= core_.reg_count) return boundary_.data + core_.reg_count * kLanes;
+        return boundary_.data + size_t(r) * kLanes;
+    }
+    bool run(LaneMask live, RunError* error) override {
+        for (const ir::Binding& b : inputs_)
+            for (uint32_t c = 0; c < b.count; ++c) {
+                const uint32_t* from = lanes(b.first + c);
+                uint64_t* to = core_.reg(b.first + c);
+                for (int i = 0; i < kLanes; ++i) to[i] = widen<uint64_t>(b.kind, from[i]);
+            }
+        bool ok = core_.run(live);
+        if (!ok && error) *error = core_.error;
+        // Only the lanes that ran: the others keep what the caller left there.
+        for (const ir::Binding& b : outputs_)
+            for (uint32_t c = 0; c < b.count; ++c) {
+                const uint64_t* from = core_.reg(b.first + c);
+                uint32_t* to = lanes(b.first + c);
+                for (int i = 0; i < kLanes; ++i)
+                    if ((live >> i) & 1) to[i] = narrow<uint64_t>(b.kind, from[i]);
+            }
+        return ok;
+    }
+    LaneMask alive() const override { return core_.machine.mask.alive(); }
+
+private:
+    Core<uint64_t> core_;
+    AlignedWords<uint32_t> boundary_;
+    std::vector<ir::Binding> inputs_, outputs_;
+};
+
+}  // namespace
+
 Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
-                         const GLState::TextureUnit* textures)
-    : impl_(std::make_unique<Impl>(shader, uniforms, max_loop_iterations, textures)) {}
+                         const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops) {
+    if (precision == Precision::Reference)
+        engine_ = std::make_unique<Wide>(shader, uniforms, max_loop_iterations, textures);
+    else
+        engine_ = std::make_unique<Narrow>(shader, uniforms, max_loop_iterations, textures, precision, fast_ops);
+}
 
 Interpreter::~Interpreter() = default;
 
-uint32_t* Interpreter::lanes(ir::Reg r) { return impl_->reg(r); }
+uint32_t* Interpreter::lanes(ir::Reg r) { return engine_->lanes(r); }
 
-bool Interpreter::run(LaneMask live, RunError* error) {
-    ir::FlushDenormals ftz;
-    bool ok = impl_->run(live);
-    if (!ok && error) *error = impl_->error;
-    return ok;
-}
+bool Interpreter::run(LaneMask live, RunError* error) { return engine_->run(live, error); }
 
-LaneMask Interpreter::alive() const { return impl_->machine.mask.alive(); }
+LaneMask Interpreter::alive() const { return engine_->alive(); }
 
 }  // namespace glslrun::rt

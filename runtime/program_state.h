@@ -20,6 +20,9 @@ struct Program::State {
     // made at the first draw. shared_ptr: its deleter works with the type
     // incomplete here.
     std::shared_ptr<raster::DrawScratch> draw_scratch;
+    // rt::FastOps bits: the op classes Precision::Fast approximates. All of
+    // them, except in the error report's ablation (tools/scene/error_report.cpp).
+    uint32_t fast_ops = ~0u;
 };
 
 }  // namespace glslrun

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "ir/precise_math.h"
 #include "runtime/texture_levels.h"
 
 namespace glslrun::rt {
@@ -323,7 +324,7 @@ float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::ve
     // rho = max of the lengths of (du/dx, dv/dx, dw/dx) and (du/dy, dv/dy, dw/dy).
     const float rho = std::max(scaled_length(dx, *base, dims), scaled_length(dy, *base, dims));
     if (!(rho > 0.0f)) return -kLodLimit;  // no change across the pixel (or NaN): magnification
-    return std::min(std::log2(rho), kLodLimit);
+    return std::min(math::log2(rho), kLodLimit);
 }
 
 glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod) {

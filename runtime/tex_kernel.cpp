@@ -16,16 +16,19 @@ namespace glslrun::rt::kernels {
 
 namespace {
 
-const Texture* bound_texture(const Machine& m, uint32_t unit_word, ir::TexTarget target) {
+template <class W>
+const Texture* bound_texture(const Machine<W>& m, W unit_word, ir::TexTarget target) {
     if (!m.textures) return nullptr;
-    const int32_t unit = static_cast<int32_t>(unit_word);
+    const int32_t unit = static_cast<int32_t>(static_cast<uint32_t>(unit_word));
     if (unit < 0 || unit >= kMaxTextureUnits) return nullptr;
     return m.textures[unit].bound[size_t(target)].get();
 }
 
+// The sampler works in float: Reference mode's doubles are rounded here.
+template <class W>
 struct Operands {
-    const float* block;  // operand k of lane i at block[k * kLanes + i]
-    float at(uint32_t k, int lane) const { return block[size_t(k) * kLanes + size_t(lane)]; }
+    const FloatOf<W>* block;  // operand k of lane i at block[k * kLanes + i]
+    float at(uint32_t k, int lane) const { return float(block[size_t(k) * kLanes + size_t(lane)]); }
     glm::vec3 vec(uint32_t first, uint32_t dims, int lane) const {
         glm::vec3 v(0.0f);
         for (uint32_t d = 0; d < dims; ++d) v[int(d)] = at(first + d, lane);
@@ -33,7 +36,8 @@ struct Operands {
     }
 };
 
-glm::vec4 sample_lane(const Texture& texture, const ir::TexInfo& info, const Operands& ops, int lane) {
+template <class W>
+glm::vec4 sample_lane(const Texture& texture, const ir::TexInfo& info, const Operands<W>& ops, int lane) {
     const uint32_t dims = info.dims();
     const glm::vec3 coord = ops.vec(0, dims, lane);
     const float ref = info.shadow ? ops.at(info.ref_at(), lane) : 0.0f;
@@ -49,22 +53,27 @@ glm::vec4 sample_lane(const Texture& texture, const ir::TexInfo& info, const Ope
 
 }  // namespace
 
-void tex(const Step& s, Machine& m) {
+template <class W>
+void tex(const Step<W>& s, Machine<W>& m) {
+    using F = FloatOf<W>;
     const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
-    const Operands ops{reinterpret_cast<const float*>(s.src[1])};
+    const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
     const LaneMask active = m.mask.active();
-    alignas(64) float out[ir::kTexResults][kLanes] = {};
+    alignas(64) F out[ir::kTexResults][kLanes] = {};
     for (int i = 0; i < kLanes; ++i) {
         if (!((active >> i) & 1)) continue;
         const Texture* texture = bound_texture(m, s.src[0][i], info.target);
         const glm::vec4 texel = texture ? sample_lane(*texture, info, ops, i) : glm::vec4(0, 0, 0, 1);
-        for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = texel[int(c)];
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = F(texel[int(c)]);
     }
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
-        uint32_t words[kLanes];
+        W words[kLanes];
         std::memcpy(words, out[c], sizeof words);
         m.write(s.dst + size_t(c) * kLanes, words);
     }
 }
+
+template void tex<uint32_t>(const Step<uint32_t>&, Machine<uint32_t>&);
+template void tex<uint64_t>(const Step<uint64_t>&, Machine<uint64_t>&);
 
 }  // namespace glslrun::rt::kernels

@@ -30,6 +30,16 @@ demo)
 test)
     (cd build && ctest --output-on-failure -j "$(nproc)")
     GLSLRUN=build/glslrun bash tools/piglit_suite.sh
+    # Images must not depend on the interpreter's batch width: build glslrun
+    # with 8 and 64 lanes and compare every scene image in every mode.
+    bash tools/image_hashes.sh build/glslrun > build/hashes-16.txt
+    for lanes in 8 64; do
+        cmake -S . -B "build-lanes$lanes" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLSLRUN_LANES=$lanes > /dev/null
+        cmake --build "build-lanes$lanes" -j "$(nproc)" --target glslrun > /dev/null
+        bash tools/image_hashes.sh "build-lanes$lanes/glslrun" > "build/hashes-$lanes.txt"
+        diff build/hashes-16.txt "build/hashes-$lanes.txt" || { echo "images differ with $lanes lanes" >&2; exit 1; }
+        echo "batch width $lanes: $(wc -l < build/hashes-16.txt) images identical to 16 lanes"
+    done
     ;;
 *)
     echo "usage: tools/setup.sh [demo|test]" >&2

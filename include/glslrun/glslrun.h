@@ -82,6 +82,9 @@ struct CompileOptions {
 //   Fast:      fp32 with GPU-style approximations (reciprocal and rsqrt
 //              estimates, polynomial exp2/log2, pow as exp2(y*log2 x)).
 enum class Precision { Reference, Precise, Fast };
+// "reference", "precise", "fast" (the command line's --precision names).
+const char* precision_name(Precision p);
+Result<Precision> parse_precision(std::string_view name);
 
 struct ExecOptions {
     // Iterations of all loops of one batch together; past it the draw stops

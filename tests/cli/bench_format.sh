@@ -42,6 +42,7 @@ check_keys "$tmp/out" 3 $times vertex_ms raster_ms fragment_ms output_ms vertice
 [ "$(value renderer "$tmp/out")" = glslrun ] || fail "renderer is not glslrun"
 [ "$(value size "$tmp/out")" = 64x48 ] || fail "size is not 64x48"
 [ "$(value threads "$tmp/out")" = 2 ] || fail "threads is not 2"
+[ "$(value precision "$tmp/out")" = precise ] || fail "precision is not the default, precise"
 [ "$(value triangles "$tmp/out")" = 6400 ] || fail "triangles is not one frame's 6400 (32 patches, 10x10, 2 each)"
 "$glslrun" --compare "$tmp/one.png" "$tmp/bench.png" >/dev/null || fail "--bench changed the image"
 # Nor does the thread count (none of the runs above or below may differ by a bit).
@@ -61,6 +62,21 @@ grep -q '^textures     none$' "$tmp/out" || fail "--stats must say that no textu
     --size 32x32 -o "$tmp/tex.png" --stats >"$tmp/out" || fail "the textured scene failed"
 grep -Eq '^textures     unit 0: 2D [0-9]+x[0-9]+ RGBA8, [0-9]+ levels$' "$tmp/out" ||
     fail "--stats does not list the textured scene's texture: $(grep '^textures' "$tmp/out")"
+
+# --precision: named by --bench and --stats; a bad name is a usage error that names the option.
+for mode in reference fast; do
+    "$glslrun" "$vs" "$fs" "$scene" --size 32x24 -o "$tmp/p.png" --bench 1 --stats --precision $mode >"$tmp/out" ||
+        fail "--precision $mode failed"
+    grep -q "^precision        $mode$" "$tmp/out" || fail "--bench does not say precision $mode"
+    grep -q "^precision    $mode$" "$tmp/out" || fail "--stats does not say precision $mode"
+done
+"$glslrun" "$vs" "$fs" "$scene" --size 8x8 -o "$tmp/x.png" --precision double >/dev/null 2>"$tmp/err"
+rc=$?
+[ $rc -gt 0 ] && [ $rc -lt 128 ] || fail "--precision double: exit status $rc"
+grep -q -- "--precision: unknown precision 'double'" "$tmp/err" || fail "--precision double: $(cat "$tmp/err")"
+if "$glslrun" test --precision exact "$src/tests/extremes" >/dev/null 2>&1; then
+    fail "glslrun test --precision exact was accepted"
+fi
 
 # The range of N, and --bench without a scene or with images only: errors, not crashes.
 for n in 0 -1 100001 abc; do

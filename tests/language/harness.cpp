@@ -78,6 +78,16 @@ static glslrun::CompileOptions with_env_overrides(glslrun::CompileOptions option
     return options;
 }
 
+// And in another precision mode: GLSLRUN_LANG_PRECISION=reference|fast (the
+// comparisons then allow kModeTolerance, see check_output).
+glslrun::Precision suite_precision() {
+    const char* name = std::getenv("GLSLRUN_LANG_PRECISION");
+    if (!name) return glslrun::Precision::Precise;
+    auto parsed = glslrun::parse_precision(name);
+    if (!parsed) FAIL("GLSLRUN_LANG_PRECISION: " << parsed.error().str());
+    return *parsed;
+}
+
 glslrun::Program compile_or_fail(const std::string& vs, const std::string& fs,
                                  const glslrun::CompileOptions& options) {
     auto result = glslrun::Program::compile({{"test.vert", vs}}, {{"test.frag", fs}},
@@ -86,6 +96,7 @@ glslrun::Program compile_or_fail(const std::string& vs, const std::string& fs,
         FAIL("compile failed:\n" << result.error().str() << "\n--- vertex shader:\n" << numbered(vs)
                                  << "--- fragment shader:\n" << numbered(fs));
     }
+    result->exec.precision = suite_precision();
     return std::move(result.value());
 }
 
@@ -199,6 +210,9 @@ int count_mismatches(const Outputs& outs, std::string_view name, uint32_t compon
 
 void check_output(const Outputs& outs, std::string_view name, uint32_t components,
                   const Expected& expected, float tol) {
+    // The expectations are fp32 results (C++ floats, libm), exact for most
+    // tests: another mode may differ from them by its own error.
+    if (suite_precision() != glslrun::Precision::Precise) tol = std::max(tol, kModeTolerance);
     std::string report;
     int bad = count_mismatches(outs, name, components, expected, tol, &report);
     INFO("output '" << std::string(name) << "': " << bad << " mismatches\n" << report);

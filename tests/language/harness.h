@@ -82,6 +82,11 @@ int count_mismatches(const Outputs& outs, std::string_view name, uint32_t compon
 inline constexpr float kExact = 0.0f;
 inline constexpr float kTight = 1e-6f;  // plain arithmetic
 inline constexpr float kLoose = 2e-5f;  // transcendental functions
+// Any check's tolerance when the suite runs in Reference or Fast mode.
+inline constexpr float kModeTolerance = 2e-5f;
+// GLSLRUN_LANG_PRECISION (reference|precise|fast; default precise): the mode
+// compile_or_fail gives every program.
+glslrun::Precision suite_precision();
 
 // Fragment grid: quad q covers (x,y) (x+1,y) (x,y+1) (x+1,y+1), quads laid
 // out 5 per row; this is the pixel position of fragment i.

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "ir/alu_eval.h"
+#include "runtime/interp_kernels.h"
 #include "tests/runtime/ir_builder.h"
 
 using namespace glslrun;
@@ -43,6 +44,15 @@ bool same_word(Kind k, uint32_t a, uint32_t b) {
     return a == b;
 }
 
+// dst = op(src[0..arity-1]).
+Reg build_alu(Builder& b, Op op, const std::vector<Reg>& src) {
+    switch (ir::op_info(op).arity) {
+    case 1: return b.alu(op, {src[0]});
+    case 2: return b.alu(op, {src[0], src[1]});
+    default: return b.alu(op, {src[0], src[1], src[2]});
+    }
+}
+
 // Runs `op` on constant-free per-lane operands; returns the dst register words.
 std::vector<uint32_t> run_op(Op op, const std::vector<std::vector<uint32_t>>& operands, Kind* result) {
     Builder b;
@@ -50,12 +60,7 @@ std::vector<uint32_t> run_op(Op op, const std::vector<std::vector<uint32_t>>& op
     Kind in_kind = operand_kind(info.operand);
     std::vector<Reg> src;
     for (int k = 0; k < info.arity; ++k) src.push_back(b.reg(in_kind));
-    Reg d;
-    switch (info.arity) {
-    case 1: d = b.alu(op, {src[0]}); break;
-    case 2: d = b.alu(op, {src[0], src[1]}); break;
-    default: d = b.alu(op, {src[0], src[1], src[2]}); break;
-    }
+    Reg d = build_alu(b, op, src);
     *result = b.sh.regs[d];
     Runner r(b.sh);
     for (int k = 0; k < info.arity; ++k) r.set(src[k], [&](int i) { return operands[k][i]; });
@@ -67,13 +72,20 @@ std::vector<uint32_t> run_op(Op op, const std::vector<std::vector<uint32_t>>& op
 
 }  // namespace
 
-TEST_CASE("every Alu op matches the table expression on every lane", "[runtime][alu]") {
+// Calls f(op, info, operand kind) for every Alu op of the table.
+template <class F>
+void for_each_alu_op(F&& f) {
     for (size_t o = 0; o < size_t(Op::Count_); ++o) {
         Op op = Op(o);
         if (!ir::alu::is_alu(op)) continue;
         const ir::OpInfo& info = ir::op_info(op);
         INFO("op " << info.name);
-        Kind in_kind = operand_kind(info.operand);
+        f(op, info, operand_kind(info.operand));
+    }
+}
+
+TEST_CASE("every Alu op matches the table expression on every lane", "[runtime][alu]") {
+    for_each_alu_op([](Op op, const ir::OpInfo& info, Kind in_kind) {
         std::vector<std::vector<uint32_t>> operands(3, std::vector<uint32_t>(kLanes));
         for (int k = 0; k < 3; ++k)
             for (int i = 0; i < kLanes; ++i) operands[k][i] = sample(in_kind, k, i);
@@ -84,7 +96,35 @@ TEST_CASE("every Alu op matches the table expression on every lane", "[runtime][
             uint32_t expect = ir::alu::eval(op, operands[0][i], operands[1][i], operands[2][i]);
             CHECK(same_word(result, out[i], expect));
         }
-    }
+    });
+}
+
+// Reference mode: the operands are shader inputs (widened to 64-bit words at
+// run()) and the result an output (rounded back to 32 bits after it).
+TEST_CASE("Reference: every Alu op is the table expression in double on every lane", "[runtime][alu][precision]") {
+    int checked = 0;
+    for_each_alu_op([&](Op op, const ir::OpInfo& info, Kind in_kind) {
+        Builder b;
+        std::vector<Reg> src;
+        for (int k = 0; k < 3; ++k) src.push_back(b.reg(in_kind));
+        for (int k = 0; k < info.arity; ++k) b.input("operand", src[size_t(k)]);
+        Reg d = build_alu(b, op, src);
+        b.output("result", d);
+        std::vector<uint32_t> uniforms{0};
+        rt::Interpreter it(b.sh, uniforms.data(), 16, nullptr, glslrun::Precision::Reference);
+        for (int k = 0; k < info.arity; ++k)
+            for (int i = 0; i < kLanes; ++i) it.lanes(src[size_t(k)])[i] = sample(in_kind, k, i);
+        REQUIRE(it.run(rt::kAllLanes, nullptr));
+        for (int i = 0; i < kLanes; ++i) {
+            INFO("lane " << i);
+            uint64_t w[3] = {};
+            for (int k = 0; k < info.arity; ++k) w[k] = rt::widen<uint64_t>(in_kind, sample(in_kind, k, i));
+            uint64_t expect = ir::alu::eval<uint64_t>(op, w[0], w[1], w[2]);
+            CHECK(same_word(b.sh.regs[d], it.lanes(d)[i], rt::narrow<uint64_t>(b.sh.regs[d], expect)));
+            ++checked;
+        }
+    });
+    CHECK(checked > 50 * kLanes);
 }
 
 TEST_CASE("Alu ops have GLSL semantics", "[runtime][alu]") {

@@ -3,29 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <map>
-#include <sstream>
 #include <string>
 
+#include "tests/scene/key_lines.h"
 #include "tools/scene/bench_report.h"
 
 using namespace glslrun::scene;
-
-namespace {
-
-std::map<std::string, std::string> parse(const std::string& text) {
-    std::map<std::string, std::string> values;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        size_t space = line.find(' ');
-        REQUIRE(space != std::string::npos);
-        std::string key = line.substr(0, space);
-        REQUIRE(values.count(key) == 0);
-        values[key] = line.substr(line.find_first_not_of(' ', space));
-    }
-    return values;
-}
-
-}  // namespace
 
 TEST_CASE("median of odd and even counts, unsorted", "[scene][bench]") {
     CHECK(median({}) == 0);
@@ -47,7 +30,7 @@ TEST_CASE("the bench report's keys and values", "[scene][bench]") {
     r.stage_s = {{"vertex", {0.001, 0.003, 0.002}}};
     r.once_s = {{"output", 0.005}};
     r.counts = {{"triangles", 6400}};
-    auto v = parse(format_bench(r));
+    auto v = scene_test::parse_key_lines(format_bench(r));
     CHECK(v["renderer"] == "llvmpipe (LLVM 15.0.6, 256 bits)");
     CHECK(v["size"] == "640x480");
     CHECK(v["threads"] == "auto");

@@ -1,6 +1,8 @@
 // The glslrun command line:
 //   glslrun test [options] PATH...            piglit tests (shader_runner / glslparsertest)
 //   glslrun a.vert a.frag scene.toml [-o out.png] [--stats] [--bench N]   a scene, rendered
+//     (--precision reference|precise|fast, here and for `glslrun test`;
+//      --error-report DIR measures the mode's error against reference)
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
 #include <cstdio>
@@ -33,6 +35,18 @@ std::optional<std::string> read_text(const std::string& path) {
     return buf.str();
 }
 
+// --precision NAME, for rendering and for `glslrun test`; a bad name is a usage error.
+void add_precision_option(CLI::App& app, Precision& precision) {
+    app.add_option_function<std::string>(
+           "--precision",
+           [&precision](const std::string& name) { precision = parse_precision(name).value(); },
+           "reference (double, slow), precise (fp32, the default) or fast (fp32, GPU-style approximations)")
+        ->check([](const std::string& name) {
+            auto parsed = parse_precision(name);
+            return parsed ? std::string() : parsed.error().diagnostics.front().message;
+        });
+}
+
 // ------------------------------------------------------------ glslrun test ---
 struct TestOptions {
     std::vector<std::string> paths;
@@ -40,6 +54,7 @@ struct TestOptions {
     std::string tsv, expect, root;
     double time_limit = 120;
     bool no_isolate = false;
+    Precision precision = Precision::Precise;
 };
 
 int run_test_command(const TestOptions& o) {
@@ -67,6 +82,7 @@ int run_test_command(const TestOptions& o) {
     }
     pg::RunOptions run_options;
     run_options.time_limit_s = o.time_limit;
+    run_options.precision = o.precision;
     if (!o.no_isolate) pg::warm_up_compiler();
     auto run_one = [&](const pg::TestCase& tc) {
         if (o.no_isolate) return pg::run_test_file(tc.path, run_options);
@@ -102,6 +118,7 @@ int test_main(int argc, char** argv) {
     app.add_flag("--no-isolate", o.no_isolate,
                  "run tests in this process (default: one forked process per test, so a crash "
                  "or hang fails only that test)");
+    add_precision_option(app, o.precision);
     CLI11_PARSE(app, argc, argv);
     return run_test_command(o);
 }
@@ -124,6 +141,7 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
     app.add_option("--threads", o.threads, "worker threads for drawing (default: one per core); images do not depend on it")
         ->check(CLI::Range(1, 256));
+    add_precision_option(app, o.precision);
     app.add_option("--bench", o.bench_frames,
                    "render N more frames into the same framebuffer and print `key value` lines: the "
                    "first frame (compile_ms, first_draw_ms), then median_ms, cpu_median_ms (process CPU "
@@ -131,6 +149,11 @@ int program_cli(int argc, char** argv) {
                    "fragment_ms), output_ms (the PNG, once)")
         ->type_name("N")
         ->check(CLI::Range(1, 100000));
+    app.add_option("--error-report", o.error_report,
+                   "render the scene in --precision's mode and in reference, and write the error of every "
+                   "shader output (ULP, 8-bit) as a table, `key value` lines and heat maps into DIR "
+                   "(created if missing)")
+        ->type_name("DIR");
     app.add_option("--compare", o.compare,
                    "compare the rendered image, or the PNG given, with this reference PNG");
     app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")
@@ -141,6 +164,8 @@ int program_cli(int argc, char** argv) {
                "  glslrun --dump-ir shaders/minimal.vert shaders/minimal.frag\n"
                "  glslrun --compare mesa.png spot.png --tolerance 1 --diff diff.png\n"
                "  glslrun shaders/minimal.vert shaders/minimal.frag scenes/spot.toml --size 512x512 --bench 100\n"
+               "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml --precision fast "
+               "--error-report err/\n"
                "Scene files: docs/scene-format.md. Piglit tests: glslrun test --help");
     CLI11_PARSE(app, argc, argv);
     if (files.empty()) {

@@ -12,6 +12,7 @@ namespace glslrun::piglit {
 struct RunOptions {
     double time_limit_s = 120;  // checked between commands; loop caps stop runaway shaders
     uint64_t max_loop_iterations = 0;  // 0: the library's default
+    Precision precision = Precision::Precise;
     Capabilities caps;
 };
 

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "error_report_command.h"
 #include "ir/ir.h"
 #include "tools/scene/bench_report.h"
 #include "tools/scene/image_compare.h"
@@ -117,6 +118,7 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                  double output_ms) {
     fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
+    fmt::print("precision    {}\n", precision_name(prog.exec.precision));
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
@@ -169,6 +171,7 @@ scene::BenchReport bench_header(const scene::Scene& scene, const RenderOptions& 
     r.width = scene.width;
     r.height = scene.height;
     r.threads = o.threads == 0 ? "auto" : std::to_string(o.threads);
+    r.precision = precision_name(o.precision);
     r.compile_s = compile_ms / 1e3;
     r.first_draw_s = first_draw_ms / 1e3;
     r.counts = {{"vertices", first.vertices}, {"triangles", first.triangles},
@@ -176,20 +179,29 @@ scene::BenchReport bench_header(const scene::Scene& scene, const RenderOptions& 
     return r;
 }
 
-int render(const Inputs& in, const RenderOptions& o) {
+// The scene file, with --size applied; its warnings are printed.
+Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
-    if (!scene) return fail(scene.error());
+    if (!scene) return scene.error();
     // Legal but likely unintended (an incomplete texture samples as black).
     for (const Diagnostic& w : scene->warnings) fmt::print(stderr, "{}\n", w.str());
     if (!o.size.empty()) {
         auto size = parse_size(o.size);
-        if (!size) return fail(size.error());
-        if (Status st = scene::resize_scene(*scene, size->first, size->second); !st) return fail(st.error());
+        if (!size) return size.error();
+        if (Status st = scene::resize_scene(*scene, size->first, size->second); !st) return st.error();
     }
+    return scene;
+}
+
+int render(const Inputs& in, const RenderOptions& o) {
+    auto scene = load_sized_scene(in, o);
+    if (!scene) return fail(scene.error());
+    if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
     auto start = Clock::now();
     auto prog = Program::compile(in.vertex, in.fragment);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
+    prog->exec.precision = o.precision;
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     Framebuffer fb(scene->width, scene->height);
@@ -226,6 +238,12 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
         return compare_with(*image, o);
     }
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));
+    if (!o.error_report.empty() && in->scene.empty())
+        return fail(Error("--error-report needs a scene file (scene.toml) to render"));
+    if (!o.error_report.empty() &&
+        (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
+        return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "
+                          "--bench, --compare, --stats or --dump-ir"));
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
         return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));

@@ -3,14 +3,18 @@
 #include <string>
 #include <vector>
 
+#include "glslrun/glslrun.h"
+
 namespace glslrun::cli {
 
 struct RenderOptions {
     std::string output, size, compare, diff;
+    std::string error_report;  // --error-report DIR: measure `precision` against Reference
     int tolerance = 0;
     unsigned threads = 0;  // draw() worker threads; 0: one per core
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;
+    Precision precision = Precision::Precise;  // --precision
 };
 
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for

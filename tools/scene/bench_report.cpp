@@ -29,6 +29,7 @@ std::string format_bench(const BenchReport& r) {
     line("renderer", r.renderer);
     line("size", fmt::format("{}x{}", r.width, r.height));
     line("threads", r.threads);
+    if (!r.precision.empty()) line("precision", r.precision);
     line("frames", std::to_string(r.frame_s.size()));
     ms("compile", r.compile_s);
     ms("first_draw", r.first_draw_s);

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "tools/scene/meshes.h"
+#include "tools/scene/trig.h"
 
 namespace glslrun::scene {
 
@@ -52,7 +53,8 @@ glm::dvec2 unit_circle(int k, int count) {
         return quarter[size_t(4 * k / count)];
     }
     const double angle = 2 * std::numbers::pi * k / count;
-    return {std::cos(angle), std::sin(angle)};
+    const auto [sin, cos] = sin_cos(angle);
+    return {cos, sin};
 }
 
 // Two triangles per grid cell of `columns` x `rows` cells laid out row-major

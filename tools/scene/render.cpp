@@ -76,22 +76,31 @@ Status apply_uniforms(Program& program, const std::vector<UniformSetting>& setti
     return Ok{};
 }
 
-Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
-    fb.clear_color(scene.clear_color);
-    fb.clear_depth(scene.clear_depth);
-    if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
-    // glActiveTexture + glBindTexture per [textures.N], once: texture
-    // bindings are context state that every object's draw sees.
+Result<GLState> bind_scene_textures(const Scene& scene) {
     GLState bound = scene.gl;
     for (const TextureSetting& t : scene.textures)
         if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st.error();
+    return bound;
+}
+
+GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object) {
+    GLState gl = bound;
+    gl.modelview = scene.view * object.model;
+    if (object.front_material) gl.front_material = *object.front_material;
+    if (object.back_material) gl.back_material = *object.back_material;
+    if (object.color) gl.current_color = *object.color;
+    return gl;
+}
+
+Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb) {
+    if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
+    // glActiveTexture + glBindTexture per [textures.N], once: texture
+    // bindings are context state that every object's draw sees.
+    auto bound = bind_scene_textures(scene);
+    if (!bound) return bound.error();
     DrawStats total;
     for (const Object& object : scene.objects) {
-        GLState gl = bound;
-        gl.modelview = scene.view * object.model;
-        if (object.front_material) gl.front_material = *object.front_material;
-        if (object.back_material) gl.back_material = *object.back_material;
-        if (object.color) gl.current_color = *object.color;
+        GLState gl = object_gl_state(scene, *bound, object);
         if (Status st = apply_uniforms(program, object.uniforms); !st) return st.error();
         const Mesh& m = object.mesh;
         auto stats = draw(program, gl, fb, m.primitive, m.attribs, m.vertex_count, m.indices);
@@ -99,6 +108,12 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
         total += *stats;
     }
     return total;
+}
+
+Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
+    fb.clear_color(scene.clear_color);
+    fb.clear_depth(scene.clear_depth);
+    return draw_scene_objects(program, scene, fb);
 }
 
 }  // namespace glslrun::scene

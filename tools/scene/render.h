@@ -9,6 +9,15 @@ namespace glslrun::scene {
 // the file's numbers to the declared types. Errors cite the scene's file:line.
 Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings);
 
+// scene.gl with the scene's textures bound to their units.
+Result<GLState> bind_scene_textures(const Scene& scene);
+// The state one object is drawn with: `bound` (from bind_scene_textures)
+// with modelview = view * model, the material overrides and the current colour.
+GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object);
+
+// Draws every object into fb as it is, without clearing it.
+Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb);
+
 // Clears fb to the scene's clear colour and depth, then draws every object.
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb);
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "tools/scene/scene_reader.h"
+#include "tools/scene/trig.h"
 
 namespace glslrun::scene {
 
@@ -30,7 +31,8 @@ glm::dmat4 gl_look_at(glm::dvec3 eye, glm::dvec3 center, glm::dvec3 up) {
 
 glm::dmat4 gl_perspective(double fovy, double aspect, double near, double far) {
     double half = fovy / 2 * std::numbers::pi / 180;
-    double cot = std::cos(half) / std::sin(half);
+    const auto [sin, cos] = sin_cos(half);
+    double cot = cos / sin;
     glm::dmat4 m(0.0);
     m[0][0] = cot / aspect;
     m[1][1] = cot;
@@ -70,7 +72,7 @@ std::pair<double, double> sin_cos_degrees(double degrees) {
     if (d == 180) return {0, -1};
     if (d == 270) return {-1, 0};
     double rad = degrees * std::numbers::pi / 180;
-    return {std::sin(rad), std::cos(rad)};
+    return sin_cos(rad);
 }
 
 }  // namespace

@@ -1,0 +1,93 @@
+// Precision::Fast's kernels: the ops that GPUs approximate (inversesqrt,
+// exp/exp2/log/log2, pow, sin, cos) call glslrun::math::fast (ir/fast_math.h);
+// every other op keeps its Precise kernel.
+//
+// Division too: a * math::fast::rcp(b) was measured slower than the CPU's
+// divider (vdivps), which is also exact. glslrun_bench (the spot shader alone,
+// 13 fdiv per invocation): Precise 27 M invocations per CPU-second, Fast with
+// rcp division 30 M, Fast with hardware division 37.5 M. GPUs approximate
+// division because they lack a divider; a CPU has one. Like the table's
+// libm ops they flush denormal operands and results, and the fast functions
+// are plain float arithmetic, so Fast images are identical on every x86-64
+// machine and for every thread count, as Precise ones are.
+#pragma once
+#include <bit>
+#include <cstdint>
+
+#include "ir/fast_math.h"
+#include "ir/scalar_ops.h"
+#include "runtime/interp_kernels.h"
+#include "runtime/interpreter.h"
+
+namespace glslrun::rt {
+
+namespace fast {
+
+// FastLane<op>: arity and eval on raw 32-bit words, as ir::alu::Lane<op>.
+template <ir::Op op>
+struct FastLane;
+
+#define GLSLRUN_FAST_LANE(op_name, arity_, expr)                                                       \
+    template <>                                                                                        \
+    struct FastLane<ir::Op::op_name> {                                                                 \
+        static constexpr int arity = arity_;                                                           \
+        static uint32_t eval(uint32_t wa, [[maybe_unused]] uint32_t wb, uint32_t) {                    \
+            [[maybe_unused]] const float a = std::bit_cast<float>(wa);                                 \
+            [[maybe_unused]] const float b = std::bit_cast<float>(wb);                                 \
+            return std::bit_cast<uint32_t>(ir::ftz(expr));                                              \
+        }                                                                                              \
+    };
+GLSLRUN_FAST_LANE(frsqrt, 1, math::fast::rsqrt(a))
+GLSLRUN_FAST_LANE(fexp, 1, math::fast::exp(ir::ftz(a)))
+GLSLRUN_FAST_LANE(fexp2, 1, math::fast::exp2(ir::ftz(a)))
+GLSLRUN_FAST_LANE(flog, 1, math::fast::log(ir::ftz(a)))
+GLSLRUN_FAST_LANE(flog2, 1, math::fast::log2(ir::ftz(a)))
+GLSLRUN_FAST_LANE(fpow, 2, math::fast::pow(ir::ftz(a), ir::ftz(b)))
+GLSLRUN_FAST_LANE(fsin, 1, math::fast::sin(ir::ftz(a)))
+GLSLRUN_FAST_LANE(fcos, 1, math::fast::cos(ir::ftz(a)))
+#undef GLSLRUN_FAST_LANE
+
+template <ir::Op op>
+void alu(const Step<uint32_t>& s, Machine<uint32_t>& m) {
+    kernels::emit(s, m, [&](uint32_t* out) { kernels::alu_lanes<uint32_t, FastLane<op>>(s, out); });
+}
+
+template <bool kAvx2>
+Kernel<uint32_t> kernel_for(ir::Op op) {
+    switch (op) {
+#define GLSLRUN_FAST_CASE(name) \
+    case ir::Op::name: return pick_kernel<uint32_t, kAvx2, &alu<ir::Op::name>>();
+        GLSLRUN_FAST_CASE(frsqrt)
+        GLSLRUN_FAST_CASE(fexp)
+        GLSLRUN_FAST_CASE(fexp2)
+        GLSLRUN_FAST_CASE(flog)
+        GLSLRUN_FAST_CASE(flog2)
+        GLSLRUN_FAST_CASE(fpow)
+        GLSLRUN_FAST_CASE(fsin)
+        GLSLRUN_FAST_CASE(fcos)
+#undef GLSLRUN_FAST_CASE
+    default: return rt::kernel_for<uint32_t, kAvx2>(op);
+    }
+}
+
+}  // namespace fast
+
+// The FastOps class of an op with a Fast kernel; 0 for the others.
+inline uint32_t fast_op_class(ir::Op op) {
+    switch (op) {
+    case ir::Op::frsqrt: return kFastRsqrt;
+    case ir::Op::fexp: case ir::Op::fexp2: case ir::Op::flog: case ir::Op::flog2: return kFastExpLog;
+    case ir::Op::fpow: return kFastPow;
+    case ir::Op::fsin: case ir::Op::fcos: return kFastSinCos;
+    default: return 0;
+    }
+}
+
+// The fp32 modes' kernel of `op`: Fast's where it has one and its class is in
+// `fast_ops`, else Precise's.
+inline Kernel<uint32_t> kernel_for(ir::Op op, bool avx2, Precision precision, uint32_t fast_ops = kAllFastOps) {
+    if (precision != Precision::Fast || !(fast_op_class(op) & fast_ops)) return kernel_for(op, avx2);
+    return avx2 ? fast::kernel_for<true>(op) : fast::kernel_for<false>(op);
+}
+
+}  // namespace glslrun::rt

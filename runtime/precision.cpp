@@ -1,0 +1,23 @@
+// The names of the precision modes, as the command line spells them.
+#include <fmt/format.h>
+
+#include "glslrun/glslrun.h"
+
+namespace glslrun {
+
+const char* precision_name(Precision p) {
+    switch (p) {
+    case Precision::Reference: return "reference";
+    case Precision::Precise: return "precise";
+    case Precision::Fast: return "fast";
+    }
+    return "unknown";
+}
+
+Result<Precision> parse_precision(std::string_view name) {
+    for (Precision p : {Precision::Reference, Precision::Precise, Precision::Fast})
+        if (name == precision_name(p)) return p;
+    return Error(fmt::format("unknown precision '{}': use reference, precise or fast", name));
+}
+
+}  // namespace glslrun
