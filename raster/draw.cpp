@@ -303,13 +303,12 @@ void bin_primitives(std::span<const SetupOut> outs, TileBins& bins, uint64_t* tr
     }
 }
 
-}  // namespace
-}  // namespace raster
-
-Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
-                       const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices) {
-    using namespace raster;
+// draw(), with the tiles clearing the framebuffer first where `clear` is
+// given; *cleared says whether they did (they do unless draw() fails or
+// returns before its tiles).
+Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
+                             const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
+                             std::span<const uint32_t> indices, const StoredClear* clear, bool* cleared) {
     if (fb.color.size() != size_t(fb.width) * fb.height * 4 || fb.depth.size() != size_t(fb.width) * fb.height)
         return Error("framebuffer storage does not match its size");
     for (uint32_t index : indices)
@@ -341,12 +340,40 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
     bin_primitives(outs, scratch.bins, &stats.triangles);
     stats.raster_seconds = seconds_since(raster_start);
     auto fragment_start = Clock::now();
-    TileResult tiles = scratch.bins.render(TileTarget{program, gl, fb, scissor}, stage, program.exec.threads);
+    TileResult tiles = scratch.bins.render(TileTarget{program, gl, fb, scissor}, stage, program.exec.threads, clear);
+    *cleared = true;
     stats.fragment_seconds = seconds_since(fragment_start);
     stats.fragments_shaded = tiles.fragments_shaded;
     stats.fragments_written = tiles.fragments_written;
     if (!tiles.status) return tiles.status.error();
     return stats;
+}
+
+}  // namespace
+}  // namespace raster
+
+Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
+                       const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
+                       std::span<const uint32_t> indices) {
+    bool cleared = false;
+    return raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, nullptr, &cleared);
+}
+
+Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
+                       Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
+                       std::span<const uint32_t> indices) {
+    bool storage_ok = fb.color.size() == size_t(fb.width) * fb.height * 4 && fb.depth.size() == size_t(fb.width) * fb.height;
+    raster::StoredClear stored = raster::stored_clear(fb, clear);
+    bool any = storage_ok && (stored.color || stored.depth);
+    bool cleared = false;
+    auto result = raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, any ? &stored : nullptr,
+                                     &cleared);
+    // Failed or empty draws clear as glClear did before them.
+    if (!cleared || !any) {
+        if (clear.color) fb.clear_color(*clear.color);
+        if (clear.depth) fb.clear_depth(*clear.depth);
+    }
+    return result;
 }
 
 DrawStats& DrawStats::operator+=(const DrawStats& o) {

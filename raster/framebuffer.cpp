@@ -9,16 +9,22 @@ Framebuffer::Framebuffer(int w, int h, bool float_target)
     : width(std::max(w, 0)), height(std::max(h, 0)), float_color(float_target),
       color(size_t(width) * height * 4, 0.0f), depth(size_t(width) * height, 1.0f) {}
 
+namespace {
+
+void fill_pixels(float* p, size_t pixels, glm::vec4 c) {
+    for (size_t i = 0; i < pixels; ++i, p += 4)
+        for (int k = 0; k < 4; ++k) p[k] = c[k];
+}
+
+}  // namespace
+
+// The whole storage, whatever its size (draw() rejects a mismatch with width x height).
 void Framebuffer::clear_color(glm::vec4 c) {
-    if (!float_color)
-        for (int i = 0; i < 4; ++i) c[i] = raster::quantize_unorm8(c[i]);
-    for (size_t i = 0; i < color.size(); i += 4)
-        for (int k = 0; k < 4; ++k) color[i + k] = c[k];
+    fill_pixels(color.data(), color.size() / 4, raster::stored_clear(*this, {c, std::nullopt}).c);
 }
 
 void Framebuffer::clear_depth(float d) {
-    float v = std::isnan(d) ? 0.0f : std::clamp(d, 0.0f, 1.0f);
-    std::fill(depth.begin(), depth.end(), v);
+    std::fill(depth.begin(), depth.end(), raster::stored_clear(*this, {std::nullopt, d}).d);
 }
 
 glm::vec4 Framebuffer::pixel(int x, int y) const {
@@ -28,6 +34,27 @@ glm::vec4 Framebuffer::pixel(int x, int y) const {
 }
 
 namespace raster {
+
+StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
+    StoredClear out;
+    out.color = clear.color.has_value();
+    out.depth = clear.depth.has_value();
+    if (clear.color) {
+        out.c = *clear.color;
+        if (!fb.float_color)
+            for (int i = 0; i < 4; ++i) out.c[i] = quantize_unorm8(out.c[i]);
+    }
+    if (clear.depth) out.d = std::isnan(*clear.depth) ? 0.0f : std::clamp(*clear.depth, 0.0f, 1.0f);
+    return out;
+}
+
+void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1) {
+    for (int y = y0; y < y1; ++y) {
+        size_t row = size_t(y) * size_t(fb.width);
+        if (clear.color) fill_pixels(&fb.color[(row + size_t(x0)) * 4], size_t(x1 - x0), clear.c);
+        if (clear.depth) std::fill(&fb.depth[row + size_t(x0)], &fb.depth[row + size_t(x1)], clear.d);
+    }
+}
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c) {
     float* p = &fb.color[(size_t(y) * fb.width + x) * 4];

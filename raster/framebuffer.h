@@ -22,6 +22,17 @@ inline float quantize_unorm8(float v) {
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 
+// A clear's values as the framebuffer stores them: the colour quantised for
+// RGBA8, the depth clamped to [0, 1] (NaN -> 0).
+struct StoredClear {
+    bool color = false, depth = false;
+    glm::vec4 c{0.0f};
+    float d = 1.0f;
+};
+StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear);
+// Clears the pixels [x0, x1) x [y0, y1), which must lie in the framebuffer.
+void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1);
+
 // std::clamp(v, 0, 1), NaN and -0 kept, without branches (they mispredicted
 // per fragment: perf). maxss/minss return their second operand on NaN and
 // on ties, which is what std::clamp returns.

@@ -80,20 +80,50 @@ void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage&
     stage.flush();
 }
 
-TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsigned threads) const {
-    std::vector<size_t> tiles;  // the non-empty ones, in order
-    for (size_t t = 0; t < bins_.size(); ++t)
-        if (!bins_[t].empty()) tiles.push_back(t);
-    std::vector<std::optional<Error>> errors(tiles.size());
-    unsigned workers = area_ < kParallelPixels ? 1 : rt::thread_count(threads, tiles.size());
+std::vector<TileBins::Job> TileBins::jobs(const Framebuffer& fb, bool clear) const {
+    std::vector<Job> out;
+    if (!clear) {
+        for (size_t t = 0; t < bins_.size(); ++t)
+            if (!bins_[t].empty()) out.push_back({Rect{}, t});
+        return out;
+    }
+    // Both grids are aligned to the framebuffer's origin and row-major, so
+    // the jobs keep the bins' order (and the first failure stays the same).
+    int cx0 = scissor_.x0 / kTileSize, cy0 = scissor_.y0 / kTileSize;
+    for (int y = 0; y < fb.height; y += kTileSize) {
+        for (int x = 0; x < fb.width; x += kTileSize) {
+            Job job{{x, y, std::min(x + kTileSize, fb.width), std::min(y + kTileSize, fb.height)}};
+            int bx = x / kTileSize - cx0, by = y / kTileSize - cy0;
+            if (bx >= 0 && by >= 0 && bx < columns_ && by < rows_) {
+                size_t t = size_t(by) * size_t(columns_) + size_t(bx);
+                if (!bins_[t].empty()) job.bin = t;
+            }
+            out.push_back(job);
+        }
+    }
+    return out;
+}
+
+TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsigned threads,
+                            const StoredClear* clear) const {
+    const std::vector<Job> todo = jobs(target.fb, clear != nullptr);
+    std::vector<std::optional<Error>> errors(todo.size());
+    std::vector<char> started(todo.size(), 0);  // each written by the one worker that takes the job
+    // Clearing a pixel costs far less than shading one.
+    uint64_t work = area_ + (clear ? uint64_t(target.fb.width) * uint64_t(target.fb.height) / 16 : 0);
+    unsigned workers = work < kParallelPixels ? 1 : rt::thread_count(threads, todo.size());
     // Each worker has its own stage (interpreter, batch); stage 0 is the caller's.
     std::vector<std::unique_ptr<FragmentStage>> stages(workers);
-    rt::JobQueue queue(tiles.size());
+    rt::JobQueue queue(todo.size());
     rt::run_workers(workers, [&](unsigned k) {
         if (k > 0) stages[k] = std::make_unique<FragmentStage>(target.program, target.gl, target.fb);
         FragmentStage& s = k > 0 ? *stages[k] : stage;
         for (size_t i; queue.next(&i);) {
-            render_tile(target, tiles[i], s);
+            const Job& job = todo[i];
+            started[i] = 1;
+            if (clear) clear_rect(target.fb, *clear, job.clear.x0, job.clear.y0, job.clear.x1, job.clear.y1);
+            if (job.bin == SIZE_MAX) continue;
+            render_tile(target, job.bin, s);
             if (!s.error()) continue;
             errors[i] = *s.error();
             s.clear_error();
@@ -106,7 +136,12 @@ TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsi
         result.fragments_shaded += s->fragments_shaded();
         result.fragments_written += s->fragments_written();
     }
-    if (auto failed = queue.first_failure()) result.status = *errors[*failed];
+    if (auto failed = queue.first_failure()) {
+        result.status = *errors[*failed];
+        // The jobs after a failure are skipped; their tiles are still cleared.
+        for (size_t i = 0; clear && i < todo.size(); ++i)
+            if (!started[i]) clear_rect(target.fb, *clear, todo[i].clear.x0, todo[i].clear.y0, todo[i].clear.x1, todo[i].clear.y1);
+    }
     return result;
 }
 

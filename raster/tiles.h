@@ -4,10 +4,12 @@
 // and their quads) do not depend on the thread count, so neither do images.
 #pragma once
 #include <cstdint>
+#include <cstddef>
 #include <vector>
 
 #include "glslrun/glslrun.h"
 #include "raster/fragments.h"
+#include "raster/framebuffer.h"
 #include "raster/triangle.h"
 
 namespace glslrun::raster {
@@ -40,9 +42,18 @@ public:
     // Renders every tile on up to `threads` threads (0: one per core); `stage`
     // serves the calling thread. A shader error is the one of the first
     // failing tile, so it does not depend on the thread count either.
-    TileResult render(const TileTarget& target, FragmentStage& stage, unsigned threads) const;
+    // With `clear`, every tile of the whole framebuffer is cleared first, by
+    // the job that renders it (in cache), tiles without primitives too.
+    TileResult render(const TileTarget& target, FragmentStage& stage, unsigned threads,
+                      const StoredClear* clear = nullptr) const;
 
 private:
+    // One job: a framebuffer tile to clear (with a clear) and the bin to render there, if any.
+    struct Job {
+        Rect clear;
+        size_t bin = SIZE_MAX;
+    };
+    std::vector<Job> jobs(const Framebuffer& fb, bool clear) const;
     Rect tile_rect(size_t tile) const;
     void render_tile(const TileTarget& target, size_t tile, FragmentStage& stage) const;
 

@@ -328,6 +328,19 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
                        const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                        std::span<const uint32_t> indices = {});
 
+// glClear followed by a draw, as one call: the draw's tile jobs clear their
+// tiles (in cache, on the worker threads) before they render them, and clear
+// the tiles that no primitive touches too, so the whole framebuffer is
+// cleared when draw() returns, even when it fails. The pixels are those of
+// fb.clear_color() and fb.clear_depth() followed by draw().
+struct ClearValues {
+    std::optional<glm::vec4> color;
+    std::optional<float> depth;
+};
+Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
+                       Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
+                       std::span<const uint32_t> indices = {});
+
 // PNG output (RGBA8, top row first as images expect).
 Status write_png(const Framebuffer& fb, const std::string& path);
 

@@ -325,3 +325,67 @@ void main() {
         CHECK(first.find("vs:4") != std::string::npos);
     }
 }
+
+// draw() with ClearValues clears in its tile jobs (every tile of the
+// framebuffer, tiles without primitives and outside the viewport too).
+namespace {
+
+// A framebuffer whose every float is `dirty`: what a clear must overwrite.
+Framebuffer dirty_framebuffer(int w, int h, bool float_color) {
+    Framebuffer fb(w, h, float_color);
+    std::fill(fb.color.begin(), fb.color.end(), 0.77f);
+    std::fill(fb.depth.begin(), fb.depth.end(), 0.33f);
+    return fb;
+}
+
+}  // namespace
+
+TEST_CASE("a draw that clears gives the pixels of a clear, then the draw", "[raster][threads][clear]") {
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    Geometry g = small_triangles(5, 400);
+    const ClearValues both{glm::vec4(0.1f, 0.25f, 1.5f, -0.5f), 0.9f};
+    const ClearValues kinds[] = {both, {both.color, std::nullopt}, {std::nullopt, 0.6f}, {}};
+    const std::array<int, 4> viewports[] = {{0, 0, 0, 0}, {20, 10, 150, 100}, {400, 400, 10, 10}};
+    for (auto [w, h] : {std::pair{300, 200}, std::pair{130, 70}})
+        for (bool float_color : {false, true})
+            for (size_t kind = 0; kind < std::size(kinds); ++kind)
+                for (const auto& viewport : viewports)
+                    for (unsigned threads : {1u, 2u, 7u}) {
+                        INFO(w << "x" << h << " float " << float_color << " clear " << kind << " viewport "
+                               << viewport[0] << " threads " << threads);
+                        const ClearValues& clear = kinds[kind];
+                        GLState gl;
+                        gl.depth_test = true;
+                        gl.viewport = viewport;
+                        p.exec.threads = threads;
+                        Framebuffer eager = dirty_framebuffer(w, h, float_color);
+                        if (clear.color) eager.clear_color(*clear.color);
+                        if (clear.depth) eager.clear_depth(*clear.depth);
+                        REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+                        Framebuffer fused = dirty_framebuffer(w, h, float_color);
+                        REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+                        CHECK(differences(eager.color, fused.color) == 0u);
+                        CHECK(differences(eager.depth, fused.depth) == 0u);
+                    }
+}
+
+TEST_CASE("a draw that clears and fails leaves no pixel uncleared", "[raster][threads][clear]") {
+    Program p = compile(kColorVs, R"(
+void main() {
+    float x = 0.0;
+    while (x < 1.0) { x += gl_Color.r > 0.5 ? 0.0 : 0.25; }
+    gl_FragColor = gl_Color * x;
+})");
+    p.exec.max_loop_iterations = 1000;
+    Geometry g = random_geometry(3, 300);
+    for (unsigned threads : {1u, 2u, 3u, 7u}) {
+        INFO("threads " << threads);
+        p.exec.threads = threads;
+        Framebuffer fb = dirty_framebuffer(300, 200, false);
+        auto stats = draw(p, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f}, Primitive::Triangles,
+                          {g.pos, g.color}, g.count);
+        REQUIRE_FALSE(stats.ok());
+        CHECK(std::count(fb.color.begin(), fb.color.end(), 0.77f) == 0);
+        CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+    }
+}

@@ -1,6 +1,7 @@
 #include "tools/scene/render.h"
 
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -92,7 +93,10 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     return gl;
 }
 
-Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb) {
+namespace {
+
+// Draws the objects; the first draw takes `pending` (and empties it).
+Result<DrawStats> draw_objects(Program& program, const Scene& scene, Framebuffer& fb, ClearValues& pending) {
     if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
@@ -103,17 +107,29 @@ Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Frame
         GLState gl = object_gl_state(scene, *bound, object);
         if (Status st = apply_uniforms(program, object.uniforms); !st) return st.error();
         const Mesh& m = object.mesh;
-        auto stats = draw(program, gl, fb, m.primitive, m.attribs, m.vertex_count, m.indices);
+        // The first draw clears, in its tiles on the workers (it clears even when it fails).
+        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive, m.attribs, m.vertex_count,
+                          m.indices);
         if (!stats) return stats.error();
         total += *stats;
     }
     return total;
 }
 
+}  // namespace
+
+Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb,
+                                     const ClearValues& clear) {
+    ClearValues pending = clear;
+    auto result = draw_objects(program, scene, fb, pending);
+    // No object, or an error before the first draw: the clear still happens.
+    if (pending.color) fb.clear_color(*pending.color);
+    if (pending.depth) fb.clear_depth(*pending.depth);
+    return result;
+}
+
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
-    fb.clear_color(scene.clear_color);
-    fb.clear_depth(scene.clear_depth);
-    return draw_scene_objects(program, scene, fb);
+    return draw_scene_objects(program, scene, fb, ClearValues{scene.clear_color, scene.clear_depth});
 }
 
 }  // namespace glslrun::scene

@@ -15,10 +15,13 @@ Result<GLState> bind_scene_textures(const Scene& scene);
 // with modelview = view * model, the material overrides and the current colour.
 GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object);
 
-// Draws every object into fb as it is, without clearing it.
-Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb);
+// Draws every object into fb as it is, or cleared first to `clear` (by the
+// first draw's tiles: draw() with ClearValues).
+Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb,
+                                     const ClearValues& clear = {});
 
-// Clears fb to the scene's clear colour and depth, then draws every object.
+// Clears fb to the scene's clear colour and depth, then draws every object
+// (the clear within the first draw).
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb);
 
 }  // namespace glslrun::scene
