@@ -206,6 +206,40 @@ inline float pow(float x, float y) {
     return y == 0.0f ? (signalling(x) ? nan : 1.0f) : r;
 }
 
+// pow's common case, x in [+0, Inf) with y finite and nonzero (x^y > 0, or
+// 0 or +Inf for x = 0): no sign, NaN or Annex F rule applies, so pow is
+// just 2^(y log2 x) there - bit for bit what pow above returns (the tests
+// check it). pow_batch evaluates it for every lane and pow only where needed.
+inline bool pow_is_common(float x, float y) {
+    return (std::bit_cast<uint32_t>(x) < 0x7F800000u) & (std::fabs(y) < detail::kInf) & (y != 0.0f);
+}
+inline float pow_common(float x, float y) {
+    const double l = x == 0.0f ? -double(detail::kInf) : detail::log2_core(x);
+    return float(detail::exp2_core(double(y) * l));
+}
+
+// pow over a batch of N lanes, as the interpreter's kernel runs it: the
+// branch-free pow pays for its special cases (signs, NaNs, integer y) in
+// every lane, a third of its time, although shaders hardly ever need them.
+// Pass one computes pow_common in every lane (vectorized) and notes whether
+// some lane is not common; only then does pass two recompute those lanes
+// with pow. The same bits as pow, lane by lane. `out` may alias x or y.
+// (The result goes through a local array: written straight to `out`, which
+// may alias, GCC's vector code was 25% slower.)
+template <int N>
+inline void pow_batch(const float* x, const float* y, float* out) {
+    float r[N];
+    uint32_t rare = 0;
+    for (int i = 0; i < N; ++i) {
+        r[i] = pow_common(x[i], y[i]);
+        rare |= uint32_t(!pow_is_common(x[i], y[i]));
+    }
+    if (rare != 0) [[unlikely]]
+        for (int i = 0; i < N; ++i)
+            if (!pow_is_common(x[i], y[i])) r[i] = pow(x[i], y[i]);
+    for (int i = 0; i < N; ++i) out[i] = r[i];
+}
+
 // ---- trigonometry ------------------------------------------------------------
 // Accurate (within the documented ULP bound) for |x| < 2^29 pi/2 ~ 8.4e8,
 // where the reduction is exact. Beyond it results are deterministic but
