@@ -17,15 +17,10 @@ struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
-std::vector<png_byte> to_rgba8(const Framebuffer& fb) {
-    std::vector<png_byte> bytes(size_t(fb.width) * fb.height * 4);
-    for (int y = 0; y < fb.height; ++y) {
-        const float* src = &fb.color[size_t(fb.height - 1 - y) * fb.width * 4];
-        png_byte* dst = &bytes[size_t(y) * fb.width * 4];
-        for (int i = 0; i < fb.width * 4; ++i)
-            dst[i] = png_byte(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
-    }
-    return bytes;
+// Framebuffer row y (bottom first) as RGBA8 bytes.
+void to_rgba8(const Framebuffer& fb, int y, png_byte* dst) {
+    const float* src = &fb.color[size_t(y) * fb.width * 4];
+    for (int i = 0; i < fb.width * 4; ++i) dst[i] = png_byte(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
 }
 
 }  // namespace
@@ -40,9 +35,9 @@ Status write_png(const Framebuffer& fb, const std::string& path) {
         png_destroy_write_struct(&png, nullptr);
         return Error("libpng: out of memory");
     }
-    std::vector<png_byte> bytes = to_rgba8(fb);
-    std::vector<png_bytep> rows(fb.height);
-    for (int y = 0; y < fb.height; ++y) rows[y] = &bytes[size_t(y) * fb.width * 4];
+    // One row at a time: a whole image's bytes (1 MB at 512x512) cost more
+    // in page faults than their conversion (perf, docs/performance.md).
+    std::vector<png_byte> row(size_t(fb.width) * 4);
     // libpng reports errors by longjmp; nothing with a destructor is created below.
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
@@ -54,7 +49,10 @@ Status write_png(const Framebuffer& fb, const std::string& path) {
     // Speed over size: the default level costs more than a whole 512x512 frame.
     png_set_compression_level(png, 1);
     png_write_info(png, info);
-    png_write_image(png, rows.data());
+    for (int y = fb.height - 1; y >= 0; --y) {
+        to_rgba8(fb, y, row.data());
+        png_write_row(png, row.data());
+    }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     if (std::fflush(file.get()) != 0) return Error("cannot write '" + path + "'");

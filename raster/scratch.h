@@ -10,6 +10,7 @@
 #include "raster/assemble.h"
 #include "raster/clip.h"
 #include "raster/fragments.h"
+#include "raster/huge_pages.h"
 #include "raster/tiles.h"
 #include "runtime/execute.h"
 
@@ -18,7 +19,7 @@ namespace glslrun::raster {
 // What setting up one job of primitives produces, in submission order.
 struct SetupOut {
     AttrArena arena;  // attributes of clipped and flat-shaded vertices, until the draw ends
-    std::vector<FsPrimitive> prims;
+    std::vector<FsPrimitive, HugePageAllocator<FsPrimitive>> prims;
     std::vector<Rect> bounds;  // per primitive: the pixels it may cover
     uint64_t triangles = 0;
 

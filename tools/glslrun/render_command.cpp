@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -179,6 +181,34 @@ scene::BenchReport bench_header(const scene::Scene& scene, const RenderOptions& 
     return r;
 }
 
+// The "#version" line of a shader source, or "" without one (GLSL 1.10).
+std::string version_line(const std::string& text) {
+    size_t at = text.find("#version");
+    if (at == std::string::npos) return {};
+    return text.substr(at, text.find('\n', at) - at) + "\n";
+}
+
+// glslang builds its built-in symbol tables at the first compile of each
+// version and stage in a process (about 2.5 ms, docs/performance.md). A
+// one-line program of the same versions, compiled on a thread while the
+// scene loads and the framebuffer is allocated, builds them there; the real
+// compile then finds them built. Its result (and any error) is not used.
+std::jthread warm_up_compiler(const Inputs& in) {
+    auto tiny = [](const std::vector<ShaderSource>& stage, const char* name, const char* body) {
+        std::vector<ShaderSource> out;
+        if (!stage.empty()) out.push_back({name, version_line(stage[0].text) + body});
+        return out;
+    };
+    try {
+        return std::jthread([vs = tiny(in.vertex, "warm-up.vert", "void main() { gl_Position = vec4(0.0); }\n"),
+                             fs = tiny(in.fragment, "warm-up.frag", "void main() { gl_FragColor = vec4(0.0); }\n")] {
+            (void)Program::compile(vs, fs);
+        });
+    } catch (const std::system_error&) {
+        return {};  // no thread to be had: the compile builds the tables itself
+    }
+}
+
 // The scene file, with --size applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
@@ -194,9 +224,14 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) 
 }
 
 int render(const Inputs& in, const RenderOptions& o) {
+    std::jthread warm_up = warm_up_compiler(in);
     auto scene = load_sized_scene(in, o);
     if (!scene) return fail(scene.error());
     if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
+    // Allocated before the compile, so that its page faults (2.7 ms at
+    // 512x512, perf) overlap the warm-up too.
+    Framebuffer fb(scene->width, scene->height);
+    if (warm_up.joinable()) warm_up.join();
     auto start = Clock::now();
     auto prog = Program::compile(in.vertex, in.fragment);
     if (!prog) return fail(prog.error());
@@ -204,7 +239,6 @@ int render(const Inputs& in, const RenderOptions& o) {
     prog->exec.precision = o.precision;
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
-    Framebuffer fb(scene->width, scene->height);
     start = Clock::now();
     auto stats = scene::render_scene(*prog, *scene, fb);
     if (!stats) return fail(stats.error());
