@@ -117,7 +117,7 @@ def error_of(program, scene, mode, args, tmp):
 
 # The ops Fast runs with its own approximations (runtime/fast_kernels.h); every
 # other op has the same kernel as in Precise.
-FAST_OPS = {"frsqrt", "fexp", "fexp2", "flog", "flog2", "fpow", "fsin", "fcos"}
+FAST_OPS = {"frsqrt", "fsqrt_divisor", "fdiv_by_sqrt", "fexp", "fexp2", "flog", "flog2", "fpow", "fsin", "fcos"}
 
 
 def fragment_op_mix(program, args):

@@ -1,5 +1,5 @@
 // The pass pipeline: inline, then (fold, copyprop, dead_stores, dce) until nothing changes
-// (at most a few rounds), then fuse_mad, hoist, dce and regalloc. With
+// (at most a few rounds), then fuse_mad, hoist, dce, sqrt_divisor and regalloc. With
 // GLSLRUN_VERIFY the verifier runs after every pass and its first complaint is
 // returned, naming the pass.
 #include <cstdint>
@@ -80,6 +80,8 @@ std::string optimize(Shader& shader, const PassOptions& options) {
     if (!(error = check(shader, "hoist")).empty()) return error;
     eliminate_dead_code(shader);
     if (!(error = check(shader, "dce")).empty()) return error;
+    mark_sqrt_divisors(shader);
+    if (!(error = check(shader, "sqrt_divisor")).empty()) return error;
     allocate_registers(shader);
     return check(shader, "regalloc");
 }

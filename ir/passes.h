@@ -40,6 +40,11 @@ void eliminate_dead_stores(Shader& shader);
 // into Shader::prologue, where they run once per draw instead of per batch.
 void hoist_uniform_code(Shader& shader);
 
+// ir/sqrt_divisor.cpp: an fsqrt whose every read is an fdiv's divisor
+// becomes fsqrt_divisor and those fdivs fdiv_by_sqrt (the same values,
+// except in Fast mode: rsqrt and multiplies). After hoist and dce.
+void mark_sqrt_divisors(Shader& shader);
+
 // ir/regalloc.cpp: renumbers registers so that values with disjoint live
 // ranges share one; the register file shrinks. Runs last.
 void allocate_registers(Shader& shader);

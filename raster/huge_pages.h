@@ -17,6 +17,16 @@ namespace glslrun::raster {
 inline constexpr size_t kHugePage = size_t(2) << 20;
 inline constexpr size_t kHugePageMinimum = size_t(1) << 20;
 
+// A block of `bytes` >= kHugePageMinimum: 2 MB-aligned, its size rounded up
+// to 2 MB, advised for huge pages; std::free releases it. Null when out of memory.
+inline void* allocate_huge(size_t bytes) {
+    if (bytes > size_t(-1) - kHugePage) return nullptr;
+    size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    void* p = std::aligned_alloc(kHugePage, rounded);
+    if (p) (void)madvise(p, rounded, MADV_HUGEPAGE);  // advice: refused, small pages stay
+    return p;
+}
+
 template <class T>
 struct HugePageAllocator {
     using value_type = T;
@@ -28,10 +38,8 @@ struct HugePageAllocator {
         if (n > size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
         size_t bytes = n * sizeof(T);
         if (bytes < kHugePageMinimum) return static_cast<T*>(::operator new(bytes));
-        size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-        void* p = std::aligned_alloc(kHugePage, rounded);
+        void* p = allocate_huge(bytes);
         if (!p) throw std::bad_alloc();
-        (void)madvise(p, rounded, MADV_HUGEPAGE);  // advice: failure leaves small pages
         return static_cast<T*>(p);
     }
     void deallocate(T* p, size_t n) {

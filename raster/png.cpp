@@ -46,8 +46,11 @@ Status write_png(const Framebuffer& fb, const std::string& path) {
     png_init_io(png, file.get());
     png_set_IHDR(png, info, png_uint_32(fb.width), png_uint_32(fb.height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    // Speed over size: the default level costs more than a whole 512x512 frame.
+    // Speed over size: the default level costs more than a whole 512x512 frame,
+    // and libpng's adaptive filter choice is half of what remains (512x512 spot:
+    // 5.5 ms of CPU) for 3% smaller files than the SUB filter alone.
     png_set_compression_level(png, 1);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
     for (int y = fb.height - 1; y >= 0; --y) {
         to_rgba8(fb, y, row.data());

@@ -1,6 +1,8 @@
 // Precision::Fast's kernels: the ops that GPUs approximate (inversesqrt,
-// exp/exp2/log/log2, pow, sin, cos) call glslrun::math::fast (ir/fast_math.h);
-// every other op keeps its Precise kernel.
+// exp/exp2/log/log2, pow, sin, cos) call glslrun::math::fast (ir/fast_math.h),
+// and a square root read only as a divisor (normalize, x / sqrt(y):
+// ir/sqrt_divisor.cpp) becomes the fast rsqrt and multiplies; every other op
+// keeps its Precise kernel.
 //
 // Division too: a * math::fast::rcp(b) was measured slower than the CPU's
 // divider (vdivps), which is also exact. glslrun_bench (the spot shader alone,
@@ -38,6 +40,10 @@ struct FastLane;
         }                                                                                              \
     };
 GLSLRUN_FAST_LANE(frsqrt, 1, math::fast::rsqrt(a))
+// A square root read only as a divisor (ir/sqrt_divisor.cpp): its register
+// holds 1/sqrt(a) in Fast, and the divisions by it are multiplies.
+GLSLRUN_FAST_LANE(fsqrt_divisor, 1, math::fast::rsqrt(a))
+GLSLRUN_FAST_LANE(fdiv_by_sqrt, 2, a * b)
 GLSLRUN_FAST_LANE(fexp, 1, math::fast::exp(ir::ftz(a)))
 GLSLRUN_FAST_LANE(fexp2, 1, math::fast::exp2(ir::ftz(a)))
 GLSLRUN_FAST_LANE(flog, 1, math::fast::log(ir::ftz(a)))
@@ -58,6 +64,8 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 #define GLSLRUN_FAST_CASE(name) \
     case ir::Op::name: return pick_kernel<uint32_t, kAvx2, &alu<ir::Op::name>>();
         GLSLRUN_FAST_CASE(frsqrt)
+        GLSLRUN_FAST_CASE(fsqrt_divisor)
+        GLSLRUN_FAST_CASE(fdiv_by_sqrt)
         GLSLRUN_FAST_CASE(fexp)
         GLSLRUN_FAST_CASE(fexp2)
         GLSLRUN_FAST_CASE(flog)
@@ -75,7 +83,8 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 // The FastOps class of an op with a Fast kernel; 0 for the others.
 inline uint32_t fast_op_class(ir::Op op) {
     switch (op) {
-    case ir::Op::frsqrt: return kFastRsqrt;
+    // One class: fsqrt_divisor's register means 1/sqrt only if fdiv_by_sqrt multiplies.
+    case ir::Op::frsqrt: case ir::Op::fsqrt_divisor: case ir::Op::fdiv_by_sqrt: return kFastRsqrt;
     case ir::Op::fexp: case ir::Op::fexp2: case ir::Op::flog: case ir::Op::flog2: return kFastExpLog;
     case ir::Op::fpow: return kFastPow;
     case ir::Op::fsin: case ir::Op::fcos: return kFastSinCos;

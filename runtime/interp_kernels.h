@@ -138,9 +138,25 @@ inline void alu_lanes(const Step<W>& s, W* out) {
     }
 }
 
+// fpow in the fp32 modes: math::pow_batch, the common case in every lane and
+// pow's special cases only where a lane needs them (ir/precise_math.h); the
+// same bits as the table's ftz(math::pow(ftz(a), ftz(b))), lane by lane.
+inline void pow_lanes(const Step<uint32_t>& s, uint32_t* out) {
+    alignas(64) float x[kLanes], y[kLanes], r[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+        x[i] = ir::ftz(std::bit_cast<float>(s.src[0][i]));
+        y[i] = ir::ftz(std::bit_cast<float>(s.src[1][i]));
+    }
+    math::pow_batch<kLanes>(x, y, r);
+    for (int i = 0; i < kLanes; ++i) out[i] = std::bit_cast<uint32_t>(ir::ftz(r[i]));
+}
+
 template <class W, ir::Op op>
 void alu(const Step<W>& s, Machine<W>& m) {
-    emit(s, m, [&](W* out) { alu_lanes<W, ir::alu::Lane<op>>(s, out); });
+    if constexpr (op == ir::Op::fpow && sizeof(W) == sizeof(uint32_t))
+        emit(s, m, [&](W* out) { pow_lanes(s, out); });
+    else
+        emit(s, m, [&](W* out) { alu_lanes<W, ir::alu::Lane<op>>(s, out); });
 }
 
 // Straight from the source: a copy through a temporary stalls store forwarding.

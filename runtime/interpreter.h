@@ -28,7 +28,7 @@ inline constexpr LaneMask kAllLanes = kLanes == 64 ? ~LaneMask(0) : ((LaneMask(1
 // of a mask: the error report switches them on one class at a time to find
 // which one causes an error (an ablation). Not part of the public API.
 enum FastOps : uint32_t {
-    kFastRsqrt = 1u << 0,   // frsqrt
+    kFastRsqrt = 1u << 0,   // frsqrt, and fsqrt_divisor with fdiv_by_sqrt (normalize)
     kFastExpLog = 1u << 1,  // fexp, fexp2, flog, flog2
     kFastPow = 1u << 2,     // fpow
     kFastSinCos = 1u << 3,  // fsin, fcos

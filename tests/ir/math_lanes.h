@@ -25,6 +25,12 @@ inline void binary_lanes(const float* __restrict a, const float* __restrict b, f
     }
 }
 
+// Precise pow as the interpreter's fpow kernel runs it (math::pow_batch).
+template <class Batch>
+inline void batch_lanes(const float* a, const float* b, float* out, size_t n, Batch batch) {
+    for (size_t base = 0; base + kLanes <= n; base += kLanes) batch(a + base, b + base, out + base);
+}
+
 #if defined(__x86_64__) && defined(__GNUC__)
 #define GLSLRUN_TEST_AVX2_LANES 1
 template <class F>
@@ -36,6 +42,11 @@ template <class F>
 __attribute__((target("avx2"), flatten)) void binary_lanes_avx2(const float* __restrict a, const float* __restrict b,
                                                                 float* __restrict out, size_t n, F f) {
     binary_lanes(a, b, out, n, f);
+}
+template <class Batch>
+__attribute__((target("avx2"), flatten)) void batch_lanes_avx2(const float* a, const float* b, float* out, size_t n,
+                                                               Batch batch) {
+    batch_lanes(a, b, out, n, batch);
 }
 inline bool has_avx2() { return __builtin_cpu_supports("avx2"); }
 #endif

@@ -94,6 +94,17 @@ void time_binary(Row& row, const std::vector<float>& a, const std::vector<float>
 #endif
 }
 
+// Precise pow's lane timings again, as the interpreter's fpow kernel runs it:
+// math::pow_batch (common case in every lane, special cases only if needed).
+void time_pow_batch(Row& row, const std::vector<float>& a, const std::vector<float>& b) {
+    std::vector<float> out(kBatch);
+    const auto batch = [](const float* x, const float* y, float* r) { math::pow_batch<kLanes>(x, y, r); };
+    row.t_base = ns_per_lane([&] { batch_lanes(a.data(), b.data(), out.data(), kBatch, batch); });
+#ifdef GLSLRUN_TEST_AVX2_LANES
+    if (has_avx2()) row.t_avx2 = ns_per_lane([&] { batch_lanes_avx2(a.data(), b.data(), out.data(), kBatch, batch); });
+#endif
+}
+
 // Random pairs (x, y) for pow (x > 0, |y| in [2^-8, 2^9)) or atan2 (any).
 template <class P, class G, class R>
 void sweep_pairs(Row& row, bool pow, P precise, G glibc, R reference) {
@@ -208,6 +219,7 @@ TEST_CASE("table of the built-in functions", "[.precision_table]") {
                 [](double x, double y) { return std::pow(x, y); });
     time_binary(pow, uniform(0.0f, 4.0f, 22), uniform(0.0f, 64.0f, 23), [](float x, float y) { return math::pow(x, y); },
                 [](float x, float y) { return std::pow(x, y); }, [](float x, float y) { return math::fast::pow(x, y); });
+    time_pow_batch(pow, uniform(0.0f, 4.0f, 22), uniform(0.0f, 64.0f, 23));
     rows.push_back(pow);
     Row atan2{"atan2", "all pairs", {}, {}};
     sweep_pairs(atan2, false, [](float y, float x) { return math::atan2(y, x); },

@@ -215,6 +215,45 @@ TEST_CASE("interpreter lanes compute the precise built-ins bit for bit", "[ir][m
     }
 }
 
+// The interpreter's fpow kernel computes pow_common where pow_is_common and
+// pow elsewhere (math::pow_batch): the two must agree bit for bit there.
+TEST_CASE("pow's common case gives pow's bits", "[ir][math]") {
+    ir::FlushDenormals flush;
+    Lcg rng{5};
+    const std::vector<float> special = special_inputs();
+    uint32_t common = 0;
+    auto check = [&](float x, float y) {
+        if (!math::pow_is_common(x, y)) return;
+        ++common;
+        INFO("pow(" << x << ", " << y << ")");
+        CHECK(std::bit_cast<uint32_t>(math::pow_common(x, y)) == std::bit_cast<uint32_t>(math::pow(x, y)));
+    };
+    for (float x : special)
+        for (float y : special) check(ir::ftz(x), ir::ftz(y));
+    for (int i = 0; i < 200000; ++i) {
+        const float x = std::bit_cast<float>(rng.next()), y = std::bit_cast<float>(rng.next());
+        check(std::fabs(x), y);
+        check(std::fabs(x), float(int32_t(rng.next() % 61u) - 30) * 0.25f);
+        check(0.0f, y);
+        check(1.0f, y);
+    }
+    CHECK(common > 600000);
+    // Whole batches: all common (the fast path), and one rare lane among them.
+    for (int batch = 0; batch < 1000; ++batch) {
+        float xs[rt::kLanes], ys[rt::kLanes], out[rt::kLanes];
+        for (int lane = 0; lane < rt::kLanes; ++lane) {
+            xs[lane] = lane % 5 == 0 ? 0.0f : std::fabs(std::bit_cast<float>(rng.next() & 0x7F7FFFFFu));
+            ys[lane] = float(int32_t(rng.next() % 257u) - 128) * 0.5f;
+        }
+        if (batch % 2) xs[rng.next() % rt::kLanes] = special[rng.next() % special.size()];
+        math::pow_batch<rt::kLanes>(xs, ys, out);
+        for (int lane = 0; lane < rt::kLanes; ++lane) {
+            INFO("pow_batch(" << xs[lane] << ", " << ys[lane] << ") lane " << lane);
+            CHECK(std::bit_cast<uint32_t>(out[lane]) == std::bit_cast<uint32_t>(math::pow(xs[lane], ys[lane])));
+        }
+    }
+}
+
 // If this fails, some function's bits changed: on purpose (update the hash
 // and say so in docs/precision.md) or through a compiler or machine
 // difference (a determinism bug).

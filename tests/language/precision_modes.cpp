@@ -246,3 +246,33 @@ TEST_CASE("Fast is within the fast functions' tolerance of Precise on every lane
     // Division is the CPU's exact one in Fast too (runtime/fast_kernels.h).
     for (uint32_t l = 0; l < count; ++l) CHECK(fast.at("r2", l, 3) == pre.at("r2", l, 3));
 }
+
+// normalize and x / sqrt(y) (ir/sqrt_divisor.cpp): Precise keeps the square
+// root and the divisions, bit for bit; Fast multiplies by its rsqrt.
+TEST_CASE("Fast computes normalize with rsqrt; Precise keeps its bits", "[precision]") {
+    const uint32_t count = 301;
+    auto value = [](uint32_t l, uint32_t c) {
+        return std::sin(float(l * 4 + c) * 0.7f) * (c == 3 ? 50.0f : 3.0f) + (c == 3 ? 60.0f : 0.0f);
+    };
+    auto attribs = std::vector{make_attrib("a", 4, count, value)};
+    glslrun::Program p = compile_vs(R"(
+        attribute vec4 a;
+        varying vec4 r0;
+        void main() {
+            r0 = vec4(normalize(a.xyz), a.x / sqrt(a.w));
+            gl_Position = vec4(0.0);
+        })");
+    Outputs pre = run_vs_in(p, Precision::Precise, attribs, count);
+    Outputs fast = run_vs_in(p, Precision::Fast, attribs, count);
+    int differing = 0;
+    for (uint32_t l = 0; l < count; ++l) {
+        const float x = value(l, 0), y = value(l, 1), z = value(l, 2);
+        const float len = std::sqrt(x * x + y * y + z * z);
+        INFO("lane " << l);
+        CHECK(pre.vec("r0", l) == glm::vec4(x / len, y / len, z / len, x / std::sqrt(value(l, 3))));
+        for (int c = 0; c < 4; ++c) differing += fast.at("r0", l, c) != pre.at("r0", l, c);
+    }
+    // rsqrt's 2^-22 relative and a multiply's rounding.
+    check_output(fast, "r0", 4, [&](uint32_t l) { return pre.vec("r0", l); }, 1e-6f);
+    CHECK(differing > int(count) / 4);
+}

@@ -168,3 +168,21 @@ TEST_CASE("error report: Fast's ablation finds the op class that causes the erro
     // Precise and Reference have no ablation.
     CHECK(measure("void main() { gl_FragColor = vec4(0.5); }", Precision::Precise, scene).ablation.empty());
 }
+
+TEST_CASE("error report: normalize's error is in the inversesqrt class", "[scene][error]") {
+    Scene scene = quad_scene();
+    REQUIRE(resize_scene(scene, 64, 64));
+    // Fast computes normalize as v * rsqrt(dot(v, v)) (ir/sqrt_divisor.cpp).
+    ErrorReport r = measure("varying vec3 v; void main() { gl_FragColor = vec4(normalize(v + 0.1) * 0.5 + 0.5, 1.0); }",
+                            Precision::Fast, scene);
+    std::map<std::string, const AblationRow*> rows;
+    for (const AblationRow& a : r.ablation) rows[a.ops] = &a;
+    REQUIRE(rows.size() == 6);
+    const AblationRow& none = *rows["none"];
+    CHECK(rows["inversesqrt"]->color.sum_ulp != none.color.sum_ulp);
+    for (const char* name : {"exp_log", "pow", "sin_cos"}) {
+        INFO(name);
+        CHECK(rows[name]->color.sum_ulp == none.color.sum_ulp);
+    }
+    CHECK(rows["all"]->color.sum_ulp == rows["inversesqrt"]->color.sum_ulp);
+}

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 #include <fmt/format.h>
@@ -198,10 +199,14 @@ std::jthread warm_up_compiler(const Inputs& in) {
         if (!stage.empty()) out.push_back({name, version_line(stage[0].text) + body});
         return out;
     };
-    return std::jthread([vs = tiny(in.vertex, "warm-up.vert", "void main() { gl_Position = vec4(0.0); }\n"),
-                         fs = tiny(in.fragment, "warm-up.frag", "void main() { gl_FragColor = vec4(0.0); }\n")] {
-        (void)Program::compile(vs, fs);
-    });
+    try {
+        return std::jthread([vs = tiny(in.vertex, "warm-up.vert", "void main() { gl_Position = vec4(0.0); }\n"),
+                             fs = tiny(in.fragment, "warm-up.frag", "void main() { gl_FragColor = vec4(0.0); }\n")] {
+            (void)Program::compile(vs, fs);
+        });
+    } catch (const std::system_error&) {
+        return {};  // no thread to be had: the compile builds the tables itself
+    }
 }
 
 // The scene file, with --size applied; its warnings are printed.
@@ -226,7 +231,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     // Allocated before the compile, so that its page faults (2.7 ms at
     // 512x512, perf) overlap the warm-up too.
     Framebuffer fb(scene->width, scene->height);
-    warm_up.join();
+    if (warm_up.joinable()) warm_up.join();
     auto start = Clock::now();
     auto prog = Program::compile(in.vertex, in.fragment);
     if (!prog) return fail(prog.error());

@@ -154,6 +154,7 @@ AblationRow ablation_row(std::string ops, const ImageError& e) {
 Result<std::vector<AblationRow>> ablate(Program& fast, const Scene& scene, const FloatImage& reference,
                                         const ImageError& all_fast) {
     static constexpr std::pair<const char*, uint32_t> kClasses[] = {
+        // inversesqrt: frsqrt, and the square roots only divided by (normalize, x / sqrt(y); ir/sqrt_divisor.cpp).
         {"none", 0}, {"inversesqrt", rt::kFastRsqrt}, {"exp_log", rt::kFastExpLog}, {"pow", rt::kFastPow},
         {"sin_cos", rt::kFastSinCos}};
     std::vector<AblationRow> rows;

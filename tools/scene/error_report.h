@@ -29,7 +29,7 @@ struct VaryingError {
 // approximations (rt::FastOps) and Precise kernels for every other op,
 // against the reference. "none" is Precise, "all" is Fast.
 struct AblationRow {
-    std::string ops;  // none, inversesqrt, exp_log, pow, sin_cos, all
+    std::string ops;  // none, inversesqrt (with normalize, x / sqrt(y)), exp_log, pow, sin_cos, all
     ChannelError color;  // all channels
     uint64_t covered_one = 0, differing_8bit = 0;
     WorstPlace worst_8bit;

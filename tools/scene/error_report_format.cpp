@@ -89,7 +89,8 @@ std::string ablation_section(const ErrorReport& r) {
         if (a.worst_8bit.found && a.worst_8bit.diff_8bit > 0) out += fmt::format("   x {} y {}", a.worst_8bit.x, a.worst_8bit.y);
         out += "\n";
     }
-    return out + "(none: precise; all: fast. \"edge moved\": pixels covered in one image only)\n";
+    return out + "(none: precise; all: fast; inversesqrt includes normalize and x / sqrt(y). \"edge moved\": "
+                 "pixels covered in one image only)\n";
 }
 
 void key(std::string& out, const std::string& name, const std::string& value) {
