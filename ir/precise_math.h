@@ -264,25 +264,27 @@ inline void pow_batch(const float* x, const float* y, float* out) {
 // meaningless (there a float's spacing is 64 or more, many periods); sin and
 // cos stay within [-1, 1] and tan finite. NaN and +-Inf give glibc's NaNs.
 
-inline float sin(float x) {
-    using namespace detail;
-    const Reduced red = reduce_pi2(x);
+namespace detail {
+// sin(r + (k + shift) pi/2) for x = k pi/2 + r: shift 0 gives sin x, 1 gives cos x.
+inline double sin_quadrant(const Reduced& red, uint32_t shift) {
     const double z = red.r * red.r;
     const double s = red.r * estrin(z, kSinPoly);
     const double c = estrin(z, kCosPoly);
-    const double v = (red.quadrant & 1u) ? c : s;
-    const float r = x == 0.0f ? x : float((red.quadrant & 2u) ? -v : v);  // keeps -0
+    const uint32_t q = red.quadrant + shift;
+    const double v = (q & 1u) ? c : s;
+    return (q & 2u) ? -v : v;
+}
+}  // namespace detail
+
+inline float sin(float x) {
+    using namespace detail;
+    const float r = x == 0.0f ? x : float(sin_quadrant(reduce_pi2(x), 0));  // keeps -0
     return std::fabs(x) < kInf ? r : x - x;  // Inf - Inf: the default NaN; NaN stays itself
 }
 
 inline float cos(float x) {
     using namespace detail;
-    const Reduced red = reduce_pi2(x);
-    const double z = red.r * red.r;
-    const double s = red.r * estrin(z, kSinPoly);
-    const double c = estrin(z, kCosPoly);
-    const double v = (red.quadrant & 1u) ? s : c;
-    const float r = float(((red.quadrant + 1u) & 2u) ? -v : v);
+    const float r = float(sin_quadrant(reduce_pi2(x), 1));
     return std::fabs(x) < kInf ? r : x - x;
 }
 
