@@ -1,15 +1,19 @@
 // Worker threads for draw(): a queue of numbered jobs that reports the first
 // failure by job number (so errors do not depend on the thread count), and a
-// helper that runs workers on std::threads owned by the caller's scope.
+// helper that runs workers on threads owned by the caller's scope.
 #pragma once
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
-#include <system_error>
 #include <thread>
+#include <type_traits>
 #include <vector>
+
+#include <pthread.h>
+#include <sched.h>
 
 namespace glslrun::rt {
 
@@ -51,18 +55,53 @@ private:
     std::atomic<size_t> next_{0}, failed_{SIZE_MAX};
 };
 
+// Threads started by one thread, joined when this goes out of scope.
+// Linux (6.18 on the machine of docs/performance.md) often starts a new
+// thread on its creator's CPU, where it waits for the creator's time slice
+// (about 3 ms) while other CPUs idle: a draw's workers then ran one after
+// the other. So each thread starts on the other CPUs the creator may use,
+// and takes the creator's CPU set back as soon as it runs.
+class WorkerThreads {
+public:
+    WorkerThreads() = default;
+    WorkerThreads(const WorkerThreads&) = delete;
+    WorkerThreads& operator=(const WorkerThreads&) = delete;
+    ~WorkerThreads();
+    // Runs entry(arg) on a new thread; false when none could be started.
+    bool start(void (*entry)(void*), void* arg);
+
+    struct Thread {
+        void (*entry)(void*);
+        void* arg;
+        const cpu_set_t* restore;  // the creator's CPU set, or null
+        pthread_t id;
+    };
+
+private:
+    void find_other_cpus();
+
+    std::vector<std::unique_ptr<Thread>> threads_;
+    bool looked_ = false, elsewhere_ok_ = false;
+    cpu_set_t inherited_, elsewhere_;
+};
+
 // Calls work(k) for k in [0, workers), k = 0 on the calling thread, and
 // returns when all are done. When a thread cannot be started the others do
 // its share, so `work` must take its jobs from a shared JobQueue.
 template <class Work>
 void run_workers(unsigned workers, Work&& work) {
-    std::vector<std::jthread> threads;
+    using Fn = std::remove_reference_t<Work>;
+    struct Call {
+        Fn* work;
+        unsigned k;
+    };
+    std::vector<Call> calls;
+    calls.reserve(workers);  // the threads hold pointers into it
+    WorkerThreads threads;   // joined before `calls` goes
     for (unsigned k = 1; k < workers; ++k) {
-        try {
-            threads.emplace_back([&work, k] { work(k); });
-        } catch (const std::system_error&) {
-            break;
-        }
+        calls.push_back({&work, k});
+        auto entry = [](void* p) { (*static_cast<Call*>(p)->work)(static_cast<Call*>(p)->k); };
+        if (!threads.start(entry, &calls.back())) break;
     }
     work(0u);
 }
