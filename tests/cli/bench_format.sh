@@ -9,10 +9,7 @@ set -u
 src=$1
 glslrun=$2
 glref=${3:-}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+. "$src/tests/cli/common.sh"
 
 vs=$src/shaders/spot_pix_fixed.vert
 fs=$src/shaders/spot_pix_fixed.frag
@@ -99,5 +96,4 @@ if [ -n "$glref" ]; then
     if "$glref" "$vs" "$fs" "$scene" --bench 0 >/dev/null 2>&1; then fail "glref --bench 0 was accepted"; fi
 fi
 
-[ $failures = 0 ] && echo "bench format: all checks passed"
-exit $((failures != 0))
+finish "bench format: all checks passed"

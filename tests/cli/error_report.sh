@@ -8,10 +8,7 @@
 set -u
 src=$1
 glslrun=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+. "$src/tests/cli/common.sh"
 
 vs=$src/shaders/spot_pix_fixed.vert
 fs=$src/shaders/spot_pix_fixed.frag
@@ -85,5 +82,4 @@ expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" -o "$tmp/x.png"
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" --stats
 
-[ $failures = 0 ] && echo "error report: all checks passed"
-exit $((failures != 0))
+finish "error report: all checks passed"

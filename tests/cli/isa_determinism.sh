@@ -9,13 +9,11 @@
 set -u
 src=$1
 glslrun=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
+. "$src/tests/cli/common.sh"
 render() {  # name program scene no_avx2 threads precision
     GLSLRUN_NO_AVX2=$4 "$glslrun" "$src/shaders/$2.vert" "$src/shaders/$2.frag" "$src/scenes/$3" \
         --size 160x120 --threads "$5" --precision "$6" -o "$tmp/$1.png" >/dev/null ||
-        { echo "FAIL: $2 on $3 did not render ($6)" >&2; failures=$((failures + 1)); }
+        fail "$2 on $3 did not render ($6)"
 }
 for precision in precise fast reference; do
     for case in "spot_pix_fixed spot.toml" "dir_vert directional.toml" "two_side two_side.toml" \
@@ -24,10 +22,8 @@ for precision in precise fast reference; do
         render avx2 "$1" "$2" "" 1 $precision
         render base "$1" "$2" 1 3 $precision
         if ! cmp -s "$tmp/avx2.png" "$tmp/base.png"; then
-            echo "FAIL: $1 on $2 ($precision) differs between AVX2 and baseline kernels, 1 and 3 threads" >&2
-            failures=$((failures + 1))
+            fail "$1 on $2 ($precision) differs between AVX2 and baseline kernels, 1 and 3 threads"
         fi
     done
 done
-[ $failures -eq 0 ] && echo "all images identical"
-exit $((failures > 0))
+finish "all images identical"

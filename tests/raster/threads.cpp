@@ -291,20 +291,26 @@ void main() {
     gl_FragColor = gl_Color * x;
 })";
 
-TEST_CASE("a loop-cap error is reported the same way with any thread count", "[raster][threads]") {
-    Program p = compile(kColorVs, kRunawayFs);
+// Draws `g` with every thread count and requires the same loop-cap error,
+// naming `where` (the runaway loop's "stage:line").
+static void check_loop_cap_error(Program& p, const Geometry& g, Primitive prim, const char* where) {
     p.exec.max_loop_iterations = 1000;
-    Geometry g = random_geometry(3, 300);
     std::string first;
     for (unsigned threads : {1u, 2u, 3u, 7u, 64u}) {
+        INFO("threads " << threads);
         p.exec.threads = threads;
         Framebuffer fb(300, 200);
-        auto stats = draw(p, GLState{}, fb, Primitive::Triangles, {g.pos, g.color}, g.count);
+        auto stats = draw(p, GLState{}, fb, prim, {g.pos, g.color}, g.count);
         REQUIRE_FALSE(stats.ok());
         if (threads == 1) first = stats.error().str();
         CHECK(stats.error().str() == first);
-        CHECK(first.find("fs:4") != std::string::npos);  // the while loop's line
+        CHECK(first.find(where) != std::string::npos);
     }
+}
+
+TEST_CASE("a loop-cap error is reported the same way with any thread count", "[raster][threads]") {
+    Program p = compile(kColorVs, kRunawayFs);
+    check_loop_cap_error(p, random_geometry(3, 300), Primitive::Triangles, "fs:4");
 }
 
 TEST_CASE("a vertex shader's loop-cap error is the same with any thread count", "[raster][threads]") {
@@ -314,18 +320,7 @@ void main() {
     while (x < 1.0) { x += gl_Vertex.x > 0.9 ? 0.0 : 0.5; }
     gl_Position = gl_Vertex * x;
 })", "void main() { gl_FragColor = vec4(1.0); }");
-    p.exec.max_loop_iterations = 1000;
-    Geometry g = random_geometry(9, 9000);
-    std::string first;
-    for (unsigned threads : {1u, 2u, 3u, 7u, 64u}) {
-        p.exec.threads = threads;
-        Framebuffer fb(300, 200);
-        auto stats = draw(p, GLState{}, fb, Primitive::Points, {g.pos, g.color}, g.count);
-        REQUIRE_FALSE(stats.ok());
-        if (threads == 1) first = stats.error().str();
-        CHECK(stats.error().str() == first);
-        CHECK(first.find("vs:4") != std::string::npos);
-    }
+    check_loop_cap_error(p, random_geometry(9, 9000), Primitive::Points, "vs:4");
 }
 
 // draw() with ClearValues clears in its tile jobs (every tile of the

@@ -9,6 +9,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <string>
 
 using namespace glslrun;
 
@@ -21,10 +22,8 @@ std::string read_text(const std::string& path) {
     return ss.str();
 }
 
-// A plane of 4x4 quads, vertices on the half-integers, seen head-on: the
-// view is an exact translation, so a light at (0.5, 0.5, 0) lands exactly on
-// a vertex in eye space.
-const char* kPlaneScene = R"(
+// The view and material both scenes share.
+const std::string kView = R"(
 [output]
 size = [96, 96]
 clear_color = [0.1, 0.2, 0.3, 1]
@@ -37,7 +36,12 @@ perspective = { fovy = 40, near = 1, far = 20 }
 ambient = [0.2, 0.2, 0.2, 1]
 diffuse = [0.7, 0.6, 0.3, 1]
 specular = [0.9, 0.9, 0.9, 1]
+)";
 
+// A plane of 4x4 quads, vertices on the half-integers, seen head-on: the
+// view is an exact translation, so a light at (0.5, 0.5, 0) lands exactly on
+// a vertex in eye space.
+const std::string kPlaneScene = kView + R"(
 [[objects]]
 mesh = "plane"
 size = 2
@@ -45,22 +49,9 @@ subdivisions = 4
 )";
 
 // A sphere lit from the side, so half of it faces away from the light.
-const char* kSphereScene = R"(
-[output]
-size = [96, 96]
-clear_color = [0.1, 0.2, 0.3, 1]
-
-[camera]
-look_at = { eye = [0, 0, 4], center = [0, 0, 0], up = [0, 1, 0] }
-perspective = { fovy = 40, near = 1, far = 20 }
-
+const std::string kSphereScene = kView + R"(
 [state]
 depth_test = true
-
-[material]
-ambient = [0.2, 0.2, 0.2, 1]
-diffuse = [0.7, 0.6, 0.3, 1]
-specular = [0.9, 0.9, 0.9, 1]
 
 [[objects]]
 mesh = "sphere"
