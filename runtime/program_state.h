@@ -21,7 +21,7 @@ struct Program::State {
     // incomplete here.
     std::shared_ptr<raster::DrawScratch> draw_scratch;
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
-    // them, except in the error report's ablation (tools/scene/error_report.cpp).
+    // them, except in the error report's ablation (scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
 };
 

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "tools/glref/gl_render.h"
-#include "tools/scene/image_compare.h"
-#include "tools/scene/render.h"
-#include "tools/scene/scene.h"
+#include "scene/image_compare.h"
+#include "scene/render.h"
+#include "scene/scene.h"
 
 namespace reference {
 

@@ -1,4 +1,4 @@
-// The built-in meshes and OBJ loading (tools/scene/meshes.h). The teapot must
+// The built-in meshes and OBJ loading (scene/meshes.h). The teapot must
 // be exactly the geometry of notes/scenes.md, since images are compared with
 // Mesa's pixel by pixel: counts, numbering, normals and winding are checked.
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 #include <unistd.h>
 
-#include "tools/scene/meshes.h"
+#include "scene/meshes.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "glslrun/glslrun.h"
-#include "tools/scene/image_compare.h"
-#include "tools/scene/scene.h"
+#include "scene/image_compare.h"
+#include "scene/scene.h"
 
 namespace glslrun::glref {
 

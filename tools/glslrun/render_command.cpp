@@ -14,9 +14,9 @@
 
 #include "error_report_command.h"
 #include "ir/ir.h"
-#include "tools/scene/bench_report.h"
-#include "tools/scene/image_compare.h"
-#include "tools/scene/render.h"
+#include "scene/bench_report.h"
+#include "scene/image_compare.h"
+#include "scene/render.h"
 
 namespace glslrun::cli {
 namespace {

@@ -1,7 +1,7 @@
 // Draws a Scene with glslrun: per object, modelview = view * model, the
 // material overrides, the current colour and the uniforms, then draw().
 #pragma once
-#include "tools/scene/scene.h"
+#include "scene/scene.h"
 
 namespace glslrun::scene {
 

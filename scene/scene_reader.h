@@ -1,4 +1,4 @@
-// Internal to the scene parser (tools/scene/scene_*.cpp): typed readers over
+// Internal to the scene parser (scene/scene_*.cpp): typed readers over
 // toml++ nodes, GL's matrix constructions, and the parser's sections.
 //
 // A reader that finds a mistake throws SceneFailure; parse_scene() turns it
@@ -15,7 +15,7 @@
 #include <glm/glm.hpp>
 #include <toml++/toml.h>
 
-#include "tools/scene/scene.h"
+#include "scene/scene.h"
 
 namespace glslrun::scene::detail {
 

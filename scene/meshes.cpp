@@ -10,8 +10,8 @@
 
 #include <glm/glm.hpp>
 
-#include "tools/scene/meshes.h"
-#include "tools/scene/trig.h"
+#include "scene/meshes.h"
+#include "scene/trig.h"
 
 namespace glslrun::scene {
 

@@ -1,4 +1,4 @@
-#include "tools/scene/render.h"
+#include "scene/render.h"
 
 #include <cmath>
 #include <utility>

@@ -1,4 +1,4 @@
-#include "tools/scene/image_compare.h"
+#include "scene/image_compare.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -11,7 +11,7 @@
 #include <png.h>
 
 #include "raster/framebuffer.h"
-#include "tools/scene/scene.h"
+#include "scene/scene.h"
 
 namespace glslrun::scene {
 

@@ -6,7 +6,7 @@
 #pragma once
 #include <string>
 
-#include "tools/scene/scene.h"
+#include "scene/scene.h"
 
 namespace glslrun::scene {
 

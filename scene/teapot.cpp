@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "tools/scene/meshes.h"
+#include "scene/meshes.h"
 
 namespace glslrun::scene {
 

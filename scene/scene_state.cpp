@@ -4,7 +4,7 @@
 // makes (GL_INVALID_VALUE becomes an error citing the line).
 #include <fmt/format.h>
 
-#include "tools/scene/scene_reader.h"
+#include "scene/scene_reader.h"
 
 namespace glslrun::scene::detail {
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/scene/image_compare.h"
+#include "scene/image_compare.h"
 
 namespace glslrun::scene {
 

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "tools/scene/meshes.h"
-#include "tools/scene/scene_reader.h"
+#include "scene/meshes.h"
+#include "scene/scene_reader.h"
 
 namespace glslrun::scene::detail {
 

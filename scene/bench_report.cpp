@@ -1,4 +1,4 @@
-#include "tools/scene/bench_report.h"
+#include "scene/bench_report.h"
 
 #include <time.h>
 

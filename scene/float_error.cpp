@@ -1,4 +1,4 @@
-#include "tools/scene/float_error.h"
+#include "scene/float_error.h"
 
 #include <algorithm>
 #include <bit>

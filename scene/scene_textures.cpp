@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "tools/scene/scene_reader.h"
-#include "tools/scene/texture_images.h"
+#include "scene/scene_reader.h"
+#include "scene/texture_images.h"
 
 namespace glslrun::scene::detail {
 

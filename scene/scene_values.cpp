@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "tools/scene/scene_reader.h"
+#include "scene/scene_reader.h"
 
 namespace glslrun::scene::detail {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "tools/scene/float_error.h"
-#include "tools/scene/scene.h"
+#include "scene/float_error.h"
+#include "scene/scene.h"
 
 namespace glslrun::scene {
 

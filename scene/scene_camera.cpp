@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "tools/scene/scene_reader.h"
-#include "tools/scene/trig.h"
+#include "scene/scene_reader.h"
+#include "scene/trig.h"
 
 namespace glslrun::scene {
 

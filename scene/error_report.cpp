@@ -1,7 +1,7 @@
 // The measuring half of the error report: two renders of one scene into float
 // framebuffers, the vertex outputs of both modes, and their comparison.
 // Formatting and files: error_report_format.cpp.
-#include "tools/scene/error_report.h"
+#include "scene/error_report.h"
 
 #include <bit>
 #include <chrono>
@@ -13,7 +13,7 @@
 #include "raster/framebuffer.h"
 #include "runtime/interpreter.h"
 #include "runtime/program_state.h"
-#include "tools/scene/render.h"
+#include "scene/render.h"
 
 namespace glslrun::scene {
 
