@@ -16,6 +16,8 @@
 #include "frontend/diagnostic_hints.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
+#include "frontend/glslang_fold.h"
+#include "frontend/language_version.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
 #include "frontend/source_rewrite.h"
@@ -26,7 +28,7 @@ namespace {
 
 void init_glslang() {
     // Thread-safe once per process (C++ static initialization).
-    static const bool initialized = [] { return glslang::InitializeProcess(); }();
+    static const bool initialized = [] { return glslang::InitializeProcess() && glslang_fold_hooks_linked(); }();
     (void)initialized;
 }
 
@@ -208,6 +210,7 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
                                     const CompileOptions& options) {
     init_glslang();
     if (vs.empty() && fs.empty()) return Error("no shaders to link");
+    if (auto refused = refuse_unsupported_versions({&vs, &fs}, options.default_version)) return std::move(*refused);
     PoolScope pool;
     std::vector<Diagnostic> diags;
     StageUnits units[2] = {{EShLangVertex, vs, {}, {}, {}, {}}, {EShLangFragment, fs, {}, {}, {}, {}}};
@@ -243,6 +246,8 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
 
 Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
     init_glslang();
+    std::vector<ShaderSource> one{source};
+    if (auto refused = refuse_unsupported_versions({&one}, default_version)) return std::move(*refused);
     PoolScope pool;
     std::vector<Diagnostic> diags;
     StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}, {}};
