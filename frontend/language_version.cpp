@@ -54,19 +54,27 @@ std::optional<VersionLine> find_version_directive(const std::string& s) {
     return std::nullopt;
 }
 
+bool is_desktop_version(int n) {
+    for (int v : {110, 120, 130, 140, 150, 330, 400, 410, 420, 430, 440, 450, 460})
+        if (n == v) return true;
+    return false;
+}
+
 std::string dotted(int version) { return fmt::format("{}.{:02}", version / 100, version % 100); }
 
 }  // namespace
 
-std::optional<Diagnostic> unsupported_version(const ShaderSource& source, int default_version) {
+std::optional<VersionRefusal> unsupported_version(const ShaderSource& source, int default_version) {
     constexpr const char* kRuns = "glslrun runs GLSL 1.10 and 1.20 only";
     std::optional<VersionLine> v = find_version_directive(source.text);
     if (!v) {
         if (default_version == 110 || default_version == 120) return std::nullopt;
-        return Diagnostic{source.name, 0,
-                          fmt::format("GLSL {} (the default version for sources without #version) is not supported: {}",
-                                      dotted(default_version), kRuns),
-                          false};
+        return VersionRefusal{Diagnostic{source.name, 0,
+                                         fmt::format("GLSL {} (the default version for sources without #version) is "
+                                                     "not supported: {}",
+                                                     dotted(default_version), kRuns),
+                                         false},
+                              true};
     }
     bool digits = !v->number.empty() && v->number.find_first_not_of("0123456789") == std::string::npos;
     if (!digits || v->number.size() > 4) return std::nullopt;  // malformed: glslang reports it
@@ -74,20 +82,30 @@ std::optional<Diagnostic> unsupported_version(const ShaderSource& source, int de
     if ((number == 110 || number == 120) && v->profile.empty()) return std::nullopt;
     std::string directive = "#version " + v->number + (v->profile.empty() ? "" : " " + v->profile);
     bool es = v->profile == "es" || number == 100;
+    bool known = es ? (number == 100 && v->profile.empty()) || ((number == 300 || number == 310 || number == 320) && es)
+                    : is_desktop_version(number) && (v->profile.empty() || (number >= 150 && v->profile != "es"));
+    if (!known)
+        return VersionRefusal{
+            Diagnostic{source.name, v->line, fmt::format("'{}' : not a GLSL version: {}", directive, kRuns), false},
+            false};
     std::string language = es ? "GLSL ES " + dotted(number) : "GLSL " + dotted(number);
     if (!es && !v->profile.empty()) language += " " + v->profile + " profile";
-    return Diagnostic{source.name, v->line,
-                      fmt::format("'{}' : {} is not supported: {}", directive, language, kRuns), false};
+    return VersionRefusal{
+        Diagnostic{source.name, v->line, fmt::format("'{}' : {} is not supported: {}", directive, language, kRuns), false},
+        true};
 }
 
 std::optional<Error> refuse_unsupported_versions(const std::vector<const std::vector<ShaderSource>*>& stages,
                                                  int default_version) {
     Error e;
+    e.unsupported_version = true;
     for (const std::vector<ShaderSource>* units : stages)
         for (const ShaderSource& src : *units)
-            if (auto d = unsupported_version(src, default_version)) e.diagnostics.push_back(std::move(*d));
+            if (auto r = unsupported_version(src, default_version)) {
+                e.diagnostics.push_back(std::move(r->diagnostic));
+                e.unsupported_version = e.unsupported_version && r->other_language;
+            }
     if (e.diagnostics.empty()) return std::nullopt;
-    e.unsupported_version = true;
     return e;
 }
 

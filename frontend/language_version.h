@@ -10,11 +10,17 @@
 
 namespace glslrun::frontend {
 
+struct VersionRefusal {
+    Diagnostic diagnostic;
+    bool other_language = false;  // a real GLSL or GLSL ES version (else not a version at all)
+};
+
 // The refusal of a unit whose #version (or, without one, `default_version`)
 // is not 110 or 120, or names a profile; nullopt when glslrun runs it.
-std::optional<Diagnostic> unsupported_version(const ShaderSource& source, int default_version);
+std::optional<VersionRefusal> unsupported_version(const ShaderSource& source, int default_version);
 
-// The refusals of every unit of both stages, as one Error; nullopt if none.
+// The refusals of every unit of both stages, as one Error (marked
+// unsupported_version when every refusal is of a real version); nullopt if none.
 std::optional<Error> refuse_unsupported_versions(const std::vector<const std::vector<ShaderSource>*>& stages,
                                                  int default_version);
 
