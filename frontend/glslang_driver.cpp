@@ -90,7 +90,7 @@ struct StageUnits {
 // numbers are kept by each).
 std::string prepare_source(const std::string& text) {
     std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(text)));
-    return rewrite_bool_literal_compares(brace_do_while_bodies(s));
+    return rewrite_bool_literal_compares(brace_do_while_bodies(hoist_nested_structs(s)));
 }
 
 struct ParsedUnit {

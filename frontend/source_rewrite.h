@@ -13,6 +13,12 @@ namespace glslrun::frontend {
 // non-compound body shadow the test's names. Braces give the spec's scoping.
 std::string brace_do_while_bodies(const std::string& src);
 
+// GLSL 1.10/1.20 §4.1.8 allow a named structure definition inside another
+// one (its name is scoped like the enclosing structure); glslang rejects it.
+// Each nested definition moves, on one line, in front of the outermost
+// enclosing `struct`, leaving its name in place.
+std::string hoist_nested_structs(const std::string& src);
+
 // Mesa compatibility: backslash-newline line continuation is spliced in every
 // GLSL version, as Mesa's preprocessor does (glslang accepts it only from
 // GLSL 4.20, even inside a skipped #ifdef, and piglit relies on Mesa here).
@@ -50,6 +56,8 @@ struct UnaryPlusOperand {
     bool call = false;
 };
 std::vector<UnaryPlusOperand> unary_plus_operands(const std::string& src);
+// Identifiers (outside comments and directives) that are one of `words`.
+std::vector<TokenPos> word_positions(const std::string& src, const std::vector<std::string>& words);
 // `[` directly holding nothing but a vector constructor: `[ivec2(2, 2)]`.
 std::vector<TokenPos> vector_constructor_subscripts(const std::string& src);
 

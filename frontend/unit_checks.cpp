@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "frontend/declaration_checks.h"
 #include "frontend/source_rewrite.h"
 
 namespace glslrun::frontend {
@@ -170,6 +171,7 @@ void check_unit_rules(glslang::TIntermediate& unit, const std::string& text, con
     root->traverse(&checker);
     checker.finish();
     check_unary_plus(checker, text, file, out);
+    check_declarations(unit, text, file, out);
     // glslang takes the first component of a vector array size (or index).
     for (int line : stringification_lines(text))
         out.push_back(Diagnostic{file, line, "'#' : the stringification operator is not supported in GLSL", false});

@@ -14,7 +14,10 @@ using namespace glslrun;
 
 namespace {
 
-enum class Verdict { Pass, Fail, LinkFail };
+// AcceptedGap: the spec makes it an error, glslrun still compiles it (each
+// such case is listed in docs/semantics.md); the case notices the day it
+// stops compiling.
+enum class Verdict { Pass, Fail, LinkFail, AcceptedGap };
 
 struct SpecCase {
     std::string where;  // file:line of the header
@@ -47,10 +50,13 @@ std::vector<SpecCase> parse_cases(const std::filesystem::path& file) {
         std::string stage, verdict;
         words >> stage >> c.version >> verdict;
         REQUIRE((stage == "vert" || stage == "frag"));
-        REQUIRE((verdict == "pass" || verdict == "fail" || verdict == "link-fail"));
+        REQUIRE((verdict == "pass" || verdict == "fail" || verdict == "link-fail" || verdict == "accepted-gap"));
         REQUIRE((c.version == 110 || c.version == 120));
         c.stage = stage == "vert" ? Stage::Vertex : Stage::Fragment;
-        c.verdict = verdict == "pass" ? Verdict::Pass : verdict == "fail" ? Verdict::Fail : Verdict::LinkFail;
+        c.verdict = verdict == "pass"        ? Verdict::Pass
+                    : verdict == "fail"      ? Verdict::Fail
+                    : verdict == "link-fail" ? Verdict::LinkFail
+                                             : Verdict::AcceptedGap;
         cases.push_back(std::move(c));
     }
     return cases;
@@ -63,7 +69,7 @@ std::string run_case(const SpecCase& c) {
     if (c.verdict == Verdict::Fail)
         return compiled ? "compiled, but the rule makes it an error" : "";
     if (!compiled) return "does not compile:\n" + compiled.error().str();
-    if (c.verdict == Verdict::Pass) return "";
+    if (c.verdict != Verdict::LinkFail) return "";
     CompileOptions options;
     options.default_version = c.version;
     std::vector<ShaderSource> one{src}, none;
@@ -78,7 +84,7 @@ TEST_CASE("spec sentences: every case gets its verdict") {
     std::map<std::string, std::vector<SpecCase>> files;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         if (entry.path().extension() == ".cases") files[entry.path().string()] = parse_cases(entry.path());
-    REQUIRE(files.size() >= 4);
+    REQUIRE(files.size() >= 5);
     for (const auto& [path, cases] : files) {
         CHECK(cases.size() >= 10);  // a chapter with a handful of cases is a parse problem
         for (const SpecCase& c : cases) {
