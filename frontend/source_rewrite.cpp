@@ -8,6 +8,7 @@
 #include <cctype>
 #include <optional>
 #include <regex>
+#include <sstream>
 #include <vector>
 
 namespace glslrun::frontend {
@@ -421,6 +422,33 @@ std::string hoist_nested_structs(const std::string& src) {
         s = s.substr(0, n->outer) + definition + "; " + s.substr(n->outer, n->begin - n->outer) + in_place + s.substr(n->end);
     }
     return s;
+}
+
+}  // namespace glslrun::frontend
+
+namespace glslrun::frontend {
+
+std::vector<DirectiveProblem> directive_problems(const std::string& src) {
+    std::vector<DirectiveProblem> out;
+    if (src.find('#') == std::string::npos) return out;
+    bool seen_code = false;
+    for (const Token& t : lex(src)) {
+        if (t.kind != Token::Directive) {
+            seen_code = true;
+            continue;
+        }
+        std::istringstream words(t.text.substr(1));
+        std::string directive, name;
+        words >> directive >> name;
+        name = name.substr(0, name.find('('));
+        int line = position_of(src, t.pos).line;
+        if ((directive == "define" || directive == "undef") &&
+            (name == "__LINE__" || name == "__FILE__" || name == "__VERSION__"))
+            out.push_back({line, "'#" + directive + "' : the predefined macro " + name + " cannot be redefined or undefined"});
+        if (directive == "extension" && seen_code)
+            out.push_back({line, "'#extension' : must come before any code that is not a preprocessor directive"});
+    }
+    return out;
 }
 
 }  // namespace glslrun::frontend

@@ -42,6 +42,16 @@ std::string drop_float_suffixes(const std::string& src);
 // outside every #if/#ifdef are checked: one in a skipped region is legal.
 std::vector<int> stringification_lines(const std::string& src);
 
+// Directives GLSL 1.10 §3.3 forbids that glslang accepts: #define or #undef
+// of __LINE__, __FILE__, __VERSION__ (predefined; Mesa refuses too, and
+// define_predefined_macros relies on it), and #extension after code (the
+// default granularity is the whole shader, so it comes first).
+struct DirectiveProblem {
+    int line = 0;
+    std::string message;
+};
+std::vector<DirectiveProblem> directive_problems(const std::string& src);
+
 // Token-level views of the source for checks the AST cannot make (the AST
 // drops unary `+` and the type of an array-size expression). Positions are
 // 1-based lines and 0-based columns of the token's first character.

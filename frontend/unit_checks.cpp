@@ -175,6 +175,7 @@ void check_unit_rules(glslang::TIntermediate& unit, const std::string& text, con
     // glslang takes the first component of a vector array size (or index).
     for (int line : stringification_lines(text))
         out.push_back(Diagnostic{file, line, "'#' : the stringification operator is not supported in GLSL", false});
+    for (const DirectiveProblem& d : directive_problems(text)) out.push_back(Diagnostic{file, d.line, d.message, false});
     for (const TokenPos& p : vector_constructor_subscripts(text))
         out.push_back(Diagnostic{file, p.line, "array size or index must be a scalar integer expression", false});
 }
