@@ -82,8 +82,8 @@ std::optional<VersionRefusal> unsupported_version(const ShaderSource& source, in
     if ((number == 110 || number == 120) && v->profile.empty()) return std::nullopt;
     std::string directive = "#version " + v->number + (v->profile.empty() ? "" : " " + v->profile);
     bool es = v->profile == "es" || number == 100;
-    bool known = es ? (number == 100 && v->profile.empty()) || ((number == 300 || number == 310 || number == 320) && es)
-                    : is_desktop_version(number) && (v->profile.empty() || (number >= 150 && v->profile != "es"));
+    bool known = es ? number == 100 || number == 300 || number == 310 || number == 320
+                    : is_desktop_version(number) && (v->profile.empty() || (number >= 150 && (v->profile == "core" || v->profile == "compatibility")));
     if (!known)
         return VersionRefusal{
             Diagnostic{source.name, v->line, fmt::format("'{}' : not a GLSL version: {}", directive, kRuns), false},
