@@ -13,12 +13,12 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/compile.h"
-#include "frontend/dead_calls.h"
+#include "frontend/call_graph.h"
 #include "frontend/diagnostic_hints.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
 #include "frontend/glslang_fold.h"
-#include "frontend/int_min_max.h"
+#include "frontend/int_builtins.h"
 #include "frontend/language_version.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
@@ -114,7 +114,10 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     std::string preamble = lang == EShLangVertex ? "#extension GL_ARB_shader_texture_lod : enable\n" : "";
     preamble += helpers;
     out.shader->setPreamble(preamble.c_str());
-    out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    {
+        FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
+        out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    }
     parse_info_log(out.shader->getInfoLog(), file, out.diags);
     return out;
 }
@@ -126,9 +129,9 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
     for (size_t i = 0; i < st.sources.size(); ++i) {
         const ShaderSource& src = st.sources[i];
         ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, {}, default_version);
-        if (std::set<int> lines = min_max_retry_lines(unit.diags, st.texts[i]); !unit.ok && !lines.empty()) {
-            std::string renamed = rename_min_max_calls(st.texts[i], lines);
-            ParsedUnit retry = parse_unit(st.lang, renamed, src.name, min_max_helpers(), default_version);
+        if (std::set<int> lines = int_builtin_retry_lines(unit.diags, st.texts[i]); !unit.ok && !lines.empty()) {
+            std::string renamed = rename_int_builtin_calls(st.texts[i], lines);
+            ParsedUnit retry = parse_unit(st.lang, renamed, src.name, int_builtin_helpers(), default_version);
             if (retry.ok) {
                 unit = std::move(retry);
                 st.texts[i] = std::move(renamed);
@@ -148,7 +151,7 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
 bool link_units(StageUnits& st, std::vector<Diagnostic>& diags) {
     st.program = std::make_unique<glslang::TProgram>();
     for (auto& sh : st.shaders) {
-        drop_dead_calls(*sh->getIntermediate());
+        prepare_call_graph(*sh->getIntermediate());
         st.program->addShader(sh.get());
     }
     bool ok = st.program->link(kMessages);

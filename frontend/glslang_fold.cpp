@@ -10,7 +10,8 @@
 //    (aggregate EOpMul), so they are rejected there;
 //  - folds degrees()/radians() in double from an unrounded literal, so
 //    int(degrees(3.1415926535)) is 179 where float arithmetic gives 180.
-// See docs/semantics.md (glslang 12's gaps).
+// GLSL 1.10 has no built-in calls in constant expressions: see
+// FoldVersionScope. See docs/semantics.md (glslang 12's gaps).
 #include "frontend/glslang_fold.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -32,6 +33,14 @@ gl::TIntermTyped* __wrap__ZN7glslang13TIntermediate4foldEPNS_16TIntermAggregateE
 }
 
 namespace {
+
+thread_local int parsing_version = 0;  // of the unit being parsed on this thread; 0: none
+
+// Operations that are built-in function calls (not operators or constructors).
+bool is_builtin_call(gl::TOperator op) {
+    return (op >= gl::EOpRadians && op <= gl::EOpNoise) || op == gl::EOpAny || op == gl::EOpAll ||
+           op == gl::EOpVectorLogicalNot;
+}
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -77,6 +86,7 @@ bool is_float(const gl::TType& t) { return t.getBasicType() == gl::EbtFloat; }
 
 gl::TIntermTyped* __wrap__ZNK7glslang20TIntermConstantUnion4foldENS_9TOperatorERKNS_5TTypeE(
     const gl::TIntermConstantUnion* self, gl::TOperator op, const gl::TType& type) {
+    if (parsing_version == 110 && is_builtin_call(op)) return nullptr;  // glslang keeps the call
     if (op == gl::EOpTranspose && self->getType().isMatrix() && is_float(self->getType())) return fold_transpose(*self, type);
     if ((op == gl::EOpDegrees || op == gl::EOpRadians) && is_float(self->getType())) return fold_angle(*self, op, type);
     return __real__ZNK7glslang20TIntermConstantUnion4foldENS_9TOperatorERKNS_5TTypeE(self, op, type);
@@ -84,6 +94,8 @@ gl::TIntermTyped* __wrap__ZNK7glslang20TIntermConstantUnion4foldENS_9TOperatorER
 
 gl::TIntermTyped* __wrap__ZN7glslang13TIntermediate4foldEPNS_16TIntermAggregateE(gl::TIntermediate* self,
                                                                               gl::TIntermAggregate* node) {
+    bool constructor = node->getOp() > gl::EOpConstructGuardStart && node->getOp() < gl::EOpConstructGuardEnd;
+    if (self->getVersion() == 110 && !constructor) return node;  // glslang keeps the call
     const gl::TIntermSequence& args = node->getSequence();
     bool matrix_comp_mult = node->getOp() == gl::EOpMul && args.size() == 2 && node->getType().isMatrix() &&
                             is_float(node->getType()) && args[0]->getAsConstantUnion() && args[1]->getAsConstantUnion();
@@ -91,4 +103,11 @@ gl::TIntermTyped* __wrap__ZN7glslang13TIntermediate4foldEPNS_16TIntermAggregateE
     return __real__ZN7glslang13TIntermediate4foldEPNS_16TIntermAggregateE(self, node);
 }
 
-bool glslrun::frontend::glslang_fold_hooks_linked() { return true; }
+namespace glslrun::frontend {
+
+FoldVersionScope::FoldVersionScope(int version) : saved_(parsing_version) { parsing_version = version; }
+FoldVersionScope::~FoldVersionScope() { parsing_version = saved_; }
+
+bool glslang_fold_hooks_linked() { return true; }
+
+}  // namespace glslrun::frontend

@@ -64,6 +64,13 @@ std::string dotted(int version) { return fmt::format("{}.{:02}", version / 100, 
 
 }  // namespace
 
+int unit_version(const ShaderSource& source, int default_version) {
+    std::optional<VersionLine> v = find_version_directive(source.text);
+    if (!v || v->number.empty() || v->number.size() > 4 || v->number.find_first_not_of("0123456789") != std::string::npos)
+        return default_version;
+    return std::stoi(v->number);
+}
+
 std::optional<VersionRefusal> unsupported_version(const ShaderSource& source, int default_version) {
     constexpr const char* kRuns = "glslrun runs GLSL 1.10 and 1.20 only";
     std::optional<VersionLine> v = find_version_directive(source.text);

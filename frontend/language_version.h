@@ -10,6 +10,9 @@
 
 namespace glslrun::frontend {
 
+// The unit's GLSL version: its #version number, else `default_version`.
+int unit_version(const ShaderSource& source, int default_version);
+
 struct VersionRefusal {
     Diagnostic diagnostic;
     bool other_language = false;  // a real GLSL or GLSL ES version (else not a version at all)

@@ -67,6 +67,14 @@ public:
         return true;
     }
 
+    // GLSL 1.10 §5.2: [] is the only operator on arrays, so ?: cannot
+    // choose between arrays (1.20 allows it; glslang allows it in 1.10).
+    bool visitSelection(gl::TVisit, gl::TIntermSelection* n) override {
+        if (n->getType().isArray() && unit_.getVersion() < 120)
+            error(n->getLoc().line, "'?:' : the operands cannot be arrays in GLSL 1.10");
+        return true;
+    }
+
     bool visitUnary(gl::TVisit, gl::TIntermUnary* n) override {
         gl::TOperator op = n->getOp();
         if (op == gl::EOpPostIncrement || op == gl::EOpPostDecrement || op == gl::EOpPreIncrement ||

@@ -105,7 +105,7 @@ TEST_CASE("a call in code that constant folding removes needs no definition") {
     CHECK(e.find("No function definition (body) found") != std::string::npos);
 }
 
-TEST_CASE("min, max and clamp on int and ivec before GLSL 1.30, as Mesa (docs/semantics.md)") {
+TEST_CASE("min, max, clamp, abs and sign on int and ivec before GLSL 1.30, as Mesa (docs/semantics.md)") {
     for (int version : {110, 120}) {
         INFO(version);
         std::string fs = std::string(version == 120 ? "#version 120\n" : "") +
@@ -121,6 +121,11 @@ TEST_CASE("min, max and clamp on int and ivec before GLSL 1.30, as Mesa (docs/se
         CHECK(eval_fs(fs, {{"n", {7.0f}}}, version) == std::vector<float>{4.0f, 8.0f, 45.0f, 2.5f});
         CHECK(eval_fs(fs, {{"n", {-3.0f}}}, version) == std::vector<float>{-3.0f, 4.0f, -20.0f + 0.0f + 1.0f + 5.0f, -3.0f});
     }
+    // abs and sign too.
+    const char* abs_sign =
+        "uniform int n;\n"
+        "void main() { ivec2 s = sign(ivec2(n, -n)); gl_FragColor = vec4(float(abs(n)), float(s.x), float(s.y), abs(-1.5)); }\n";
+    CHECK(eval_fs(abs_sign, {{"n", {-3.0f}}}) == std::vector<float>{3.0f, -1.0f, 1.0f, 1.5f});
     // The float built-ins stay constant expressions.
     CHECK(eval_fs("#version 120\nconst float c = min(1.0, 2.0);\nfloat s[int(max(c, 3.0))];\n"
                   "void main() { gl_FragColor = vec4(float(s.length())); }\n",

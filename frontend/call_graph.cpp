@@ -1,7 +1,7 @@
-// Dead calls (dead_calls.h). glslang keeps its call graph in a protected
+// The call graph corrections (call_graph.h). glslang keeps its call graph in a protected
 // member of TIntermediate; a pointer to member taken in a derived class is
 // the one legal way to reach it.
-#include "frontend/dead_calls.h"
+#include "frontend/call_graph.h"
 
 #include <map>
 #include <set>
@@ -43,13 +43,18 @@ int constant_branch(const gl::TIntermSelection& n) {
     return c->getConstArray()[0].getBConst() ? 1 : 0;
 }
 
-void drop_dead_calls(gl::TIntermediate& unit) {
+void prepare_call_graph(gl::TIntermediate& unit) {
     TIntermNode* root = unit.getTreeRoot();
     if (!root || !root->getAsAggregate()) return;
     std::map<std::string, std::set<std::string>> live;  // caller -> callees
+    LiveCalls global_initializers;
     for (TIntermNode* child : root->getAsAggregate()->getSequence()) {
         gl::TIntermAggregate* fn = child->getAsAggregate();
-        if (!fn || fn->getOp() != gl::EOpFunction) continue;
+        if (fn && fn->getOp() == gl::EOpLinkerObjects) continue;
+        if (!fn || fn->getOp() != gl::EOpFunction) {
+            child->traverse(&global_initializers);
+            continue;
+        }
         LiveCalls walk;
         fn->traverse(&walk);
         live[fn->getName().c_str()] = std::move(walk.callees);
@@ -59,6 +64,9 @@ void drop_dead_calls(gl::TIntermediate& unit) {
         auto body = live.find(call.caller.c_str());
         return body != live.end() && !body->second.count(call.callee.c_str());
     });
+    // Global initializers run before main: what they call is reachable.
+    for (const std::string& callee : global_initializers.callees)
+        graph.emplace_back(gl::TString(unit.getEntryPointMangledName().c_str()), gl::TString(callee.c_str()));
 }
 
 }  // namespace glslrun::frontend

@@ -1,5 +1,5 @@
-// The int min/max/clamp overloads (int_min_max.h).
-#include "frontend/int_min_max.h"
+// The int overloads of min, max, clamp, abs and sign (int_builtins.h).
+#include "frontend/int_builtins.h"
 
 #include <cctype>
 
@@ -29,6 +29,18 @@ std::string build_helpers() {
             out += fmt::format("ivec{0} glslrun_{1}(ivec{0} a, int b) {{ return glslrun_{1}(a, ivec{0}(b)); }}\n", n, f);
         }
     }
+    out += "int glslrun_abs(int a) { return a < 0 ? -a : a; }\n"
+           "int glslrun_sign(int a) { return a > 0 ? 1 : a < 0 ? -1 : 0; }\n";
+    for (int n = 1; n <= 4; ++n) {
+        std::string v = n == 1 ? "float" : fmt::format("vec{}", n);
+        for (const char* f : {"abs", "sign"}) {
+            out += fmt::format("{0} glslrun_{1}({0} a) {{ return {1}(a); }}\n", v, f);
+            if (n == 1) continue;
+            std::string comps;
+            for (int i = 0; i < n; ++i) comps += fmt::format("{}glslrun_{}(a.{})", i ? ", " : "", f, names[i]);
+            out += fmt::format("ivec{0} glslrun_{1}(ivec{0} a) {{ return ivec{0}({2}); }}\n", n, f, comps);
+        }
+    }
     for (std::string t : {"float", "vec2", "vec3", "vec4", "int", "ivec2", "ivec3", "ivec4"}) {
         out += fmt::format("{0} glslrun_clamp({0} x, {0} lo, {0} hi) {{ return glslrun_min(glslrun_max(x, lo), hi); }}\n", t);
         if (t != "float" && t != "int") {
@@ -42,16 +54,16 @@ std::string build_helpers() {
 
 }  // namespace
 
-std::set<int> min_max_retry_lines(const std::vector<Diagnostic>& diags, const std::string& src) {
+std::set<int> int_builtin_retry_lines(const std::vector<Diagnostic>& diags, const std::string& src) {
     std::set<int> lines;
     for (const Diagnostic& d : diags)
         if (!d.warning && d.line > 0) lines.insert(d.line);
     // Renaming changes nothing unless one of the lines holds such a call.
-    if (lines.empty() || rename_min_max_calls(src, lines) == src) return {};
+    if (lines.empty() || rename_int_builtin_calls(src, lines) == src) return {};
     return lines;
 }
 
-std::string rename_min_max_calls(const std::string& src, const std::set<int>& lines) {
+std::string rename_int_builtin_calls(const std::string& src, const std::set<int>& lines) {
     std::string out;
     out.reserve(src.size() + 64);
     int line = 1;
@@ -64,7 +76,8 @@ std::string rename_min_max_calls(const std::string& src, const std::set<int>& li
             while (end < src.size() && word_char(src[end])) ++end;
             std::string word = src.substr(i, end - i);
             size_t next = src.find_first_not_of(" \t", end);
-            if ((word == "min" || word == "max" || word == "clamp") && next != std::string::npos && src[next] == '(')
+            bool renamed = word == "min" || word == "max" || word == "clamp" || word == "abs" || word == "sign";
+            if (renamed && next != std::string::npos && src[next] == '(')
                 out += "glslrun_";
             out += word;
             i = end - 1;
@@ -75,7 +88,7 @@ std::string rename_min_max_calls(const std::string& src, const std::set<int>& li
     return out;
 }
 
-const std::string& min_max_helpers() {
+const std::string& int_builtin_helpers() {
     static const std::string helpers = build_helpers();
     return helpers;
 }
