@@ -24,6 +24,10 @@ void check_interface_type(const gl::TIntermSymbol& sym, EShLanguage stage, const
     gl::TStorageQualifier q = t.getQualifier().storage;
     bool attribute = stage == EShLangVertex && q == gl::EvqVaryingIn;
     bool varying = (stage == EShLangVertex && q == gl::EvqVaryingOut) || (stage == EShLangFragment && q == gl::EvqVaryingIn);
+    // 1.20 §4.3.6: centroid qualifies varyings only (glslang takes `centroid vec4 v;` as a global).
+    if (t.getQualifier().centroid && !varying)
+        out.push_back(Diagnostic{file, sym.getLoc().line,
+                                 fmt::format("'{}' : centroid applies to varyings only", sym.getName().c_str()), false});
     if ((!attribute && !varying) || is_builtin_name(sym.getName())) return;
     if (t.getBasicType() == gl::EbtFloat && !t.isStruct()) return;
     const char* what = attribute ? "an attribute must be float, a float vector or a float matrix (GLSL §4.3.3)"

@@ -10,7 +10,8 @@
 
 namespace glslrun::frontend {
 
-// Attribute and varying types, one name space for functions and variables,
+// Attribute and varying types, centroid on varyings only, one name space for
+// functions and variables,
 // the words GLSL 1.20 reserves. `text` is the source glslang parsed.
 void check_declarations(glslang::TIntermediate& unit, const std::string& text, const std::string& file,
                         std::vector<Diagnostic>& out);
