@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 
 namespace glslrun::scene {
 

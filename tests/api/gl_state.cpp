@@ -187,7 +187,7 @@ void main() {
     gl_Position = ftransform();
 }
 )", "varying vec4 sink; void main() { gl_FragColor = sink; }");
-    Program::State& st = p.state();
+    Program::State& st = state_of(p);
     const uint32_t sentinel = 0xdeadbeefu;
     std::fill(st.uniforms.begin(), st.uniforms.end(), sentinel);
     REQUIRE(apply_builtin_uniforms(p, GLState{}).ok());

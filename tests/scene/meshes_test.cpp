@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 #include <unistd.h>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

@@ -6,7 +6,7 @@
 #pragma once
 #include <string>
 
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::scene {
 
