@@ -26,7 +26,7 @@ std::string read_file(const std::string& path) {
     return ss.str();
 }
 
-// The spot scene of shared/notes/scenes.md, in eye space.
+// The spot scene (scenes/spot.toml), in eye space.
 glslrun::GLState spot_scene() {
     glslrun::GLState gl;
     auto& light = gl.lights[0];

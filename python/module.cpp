@@ -185,7 +185,7 @@ void register_error(py::module_& m) {
                 diagnostics.append(py::make_tuple(d.file, d.line, d.message, d.warning));
             std::string text = e.error.str();
             while (!text.empty() && text.back() == '\n') text.pop_back();
-            py::object instance = error_type(text);
+            py::object instance = py::handle(error_type.ptr())(text);
             instance.attr("diagnostics") = diagnostics;
             PyErr_SetObject(error_type.ptr(), instance.ptr());
         }

@@ -48,7 +48,8 @@ py::dict keys_to_dict(const std::string& lines) {
     while (std::getline(in, line)) {
         size_t space = line.find(' ');
         if (space == std::string::npos) continue;
-        std::string key = line.substr(0, space), value = line.substr(space + 1);
+        size_t start = line.find_first_not_of(' ', space);
+        std::string key = line.substr(0, space), value = start == std::string::npos ? "" : line.substr(start);
         char* end = nullptr;
         double number = std::strtod(value.c_str(), &end);
         bool numeric = !value.empty() && end == value.c_str() + value.size();

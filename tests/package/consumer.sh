@@ -6,9 +6,9 @@
 # byte-identical to the command line's PNG; the Python module must import
 # from the staged prefix. Last, a project that adds this tree with
 # add_subdirectory() must configure.
-#   consumer.sh SOURCE_DIR BUILD_DIR GLSLRUN_BINARY
+#   consumer.sh SOURCE_DIR BUILD_DIR GLSLRUN_BINARY [PYTHON]
 set -eu
-src=$1 build=$2 cli=$3
+src=$1 build=$2 cli=$3 python=${4:-python3}
 stage=$build/package/stage out=$build/package
 rm -rf "$out"
 mkdir -p "$out"
@@ -40,7 +40,7 @@ cmp "$out/spot-cli.png" "$out/spot-pc.png"
 
 if ls "$stage"/lib/python3*/dist-packages/glslrun*.so > /dev/null 2>&1; then
     echo "python3 -c 'import glslrun' from the staged prefix:"
-    PYTHONPATH=$(echo "$stage"/lib/python3*/dist-packages) python3 -c \
+    PYTHONPATH=$(echo "$stage"/lib/python3*/dist-packages) "$python" -c \
         "import glslrun; a = glslrun.render('$src/shaders/minimal.vert', '$src/shaders/minimal.frag', '$src/scenes/quad.toml'); print(' ', glslrun.__version__, a.shape, a.dtype)"
 fi
 
