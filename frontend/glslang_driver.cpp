@@ -88,9 +88,10 @@ struct StageUnits {
 
 // The source rewrites that work around glslang before it parses (line
 // numbers are kept by each).
-std::string prepare_source(const std::string& text) {
-    std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(text)));
-    return rewrite_bool_literal_compares(brace_do_while_bodies(hoist_nested_structs(s)));
+std::string prepare_source(const ShaderSource& src, int default_version) {
+    std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(src.text)));
+    if (unit_version(src, default_version) == 110) s = hoist_nested_structs(s);
+    return rewrite_bool_literal_compares(brace_do_while_bodies(s));
 }
 
 struct ParsedUnit {
@@ -125,7 +126,7 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
 bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
     bool ok = true;
     st.texts.clear();
-    for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src.text));
+    for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
     for (size_t i = 0; i < st.sources.size(); ++i) {
         const ShaderSource& src = st.sources[i];
         ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, {}, default_version);

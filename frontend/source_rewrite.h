@@ -13,8 +13,9 @@ namespace glslrun::frontend {
 // non-compound body shadow the test's names. Braces give the spec's scoping.
 std::string brace_do_while_bodies(const std::string& src);
 
-// GLSL 1.10/1.20 §4.1.8 allow a named structure definition inside another
-// one (its name is scoped like the enclosing structure); glslang rejects it.
+// GLSL 1.10 §4.1.8 allows a named structure definition inside another one
+// (its name is scoped like the enclosing structure; GLSL 1.20 forbids it, as
+// Mesa reads both); glslang rejects it. For 1.10 units only.
 // Each nested definition moves, on one line, in front of the outermost
 // enclosing `struct`, leaving its name in place.
 std::string hoist_nested_structs(const std::string& src);
