@@ -3,7 +3,6 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -86,13 +85,33 @@ py::dict to_dict(const std::vector<ShaderOutput>& outputs, uint32_t count) {
     return out;
 }
 
-py::dict run_batch(const Program& program, const py::dict& inputs, uint32_t count, bool vertices) {
+// The state one object of `scene` is drawn with (matrices, lights, material,
+// textures, the scene's and the object's uniforms), applied to the program
+// as a draw would apply it.
+GLState object_state(Program& program, const scene::Scene& scene, size_t object) {
+    if (object >= scene.objects.size())
+        throw py::index_error("the scene has " + std::to_string(scene.objects.size()) + " objects");
+    const scene::Object& o = scene.objects[object];
+    GLState gl = scene::object_gl_state(scene, take(scene::bind_scene_textures(scene)), o);
+    check(scene::apply_uniforms(program, scene.uniforms));
+    check(scene::apply_uniforms(program, o.uniforms));
+    check(apply_builtin_uniforms(program, gl));
+    return gl;
+}
+
+py::dict run_batch(Program& program, const py::dict& inputs, uint32_t count, const scene::Scene* scene,
+                   size_t object, bool vertices) {
     std::vector<VertexAttrib> attribs = to_attribs(inputs, count);
     if (count == 0) throw py::value_error("nothing to run: no inputs and no count");
+    GLState gl;  // GL's defaults: identity matrices, ...
+    if (scene)
+        gl = object_state(program, *scene, object);
+    else
+        check(apply_builtin_uniforms(program, gl));
     std::vector<ShaderOutput> outputs;
     {
         py::gil_scoped_release release;
-        outputs = take(vertices ? run_vertices(program, attribs, count) : run_fragments(program, attribs, count));
+        outputs = take(vertices ? run_vertices(program, attribs, count, &gl) : run_fragments(program, attribs, count, &gl));
     }
     return to_dict(outputs, count);
 }
@@ -161,15 +180,20 @@ void bind_program(py::module_& m) {
         .def("dump_ir", &Program::dump_ir)
         .def(
             "run_vertices",
-            [](const Program& p, const py::dict& inputs, uint32_t count) { return run_batch(p, inputs, count, true); },
-            py::arg("inputs"), py::arg("count") = 0,
-            "Runs the vertex shader on arrays {attribute: (count, components)}; returns {output: array}.")
+            [](Program& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
+                return run_batch(p, inputs, count, scene, object, true);
+            },
+            py::arg("inputs"), py::arg("count") = 0, py::arg("scene") = nullptr, py::arg("object") = 0,
+            "Runs the vertex shader on arrays {attribute: (count, components)}; returns {output: array}. "
+            "With a scene, in the state its object number `object` is drawn with; else in GL's defaults.")
         .def(
             "run_fragments",
-            [](const Program& p, const py::dict& inputs, uint32_t count) { return run_batch(p, inputs, count, false); },
-            py::arg("inputs"), py::arg("count") = 0,
+            [](Program& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
+                return run_batch(p, inputs, count, scene, object, false);
+            },
+            py::arg("inputs"), py::arg("count") = 0, py::arg("scene") = nullptr, py::arg("object") = 0,
             "Runs the fragment shader on arrays {input: (count, components)} in 2x2 quads; returns {output: "
-            "array}, with 'discarded'.");
+            "array}, with 'discarded'. `scene` and `object` as for run_vertices.");
 }
 
 }  // namespace
