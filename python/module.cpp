@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace glslrun::python {
 namespace {
 
 using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
-using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // The declaration `name` sets: "arr[2]" is an element of "arr", "s[1].f" a leaf of its own.
 const UniformInfo* find_declaration(const std::vector<UniformInfo>& infos, std::string name) {
@@ -39,16 +40,18 @@ void set_uniform(Program& program, const std::string& name, const py::object& va
         if (!values) throw py::type_error("uniform '" + name + "' takes numbers");
         check(program.set_uniform(name, std::span<const float>(values.data(), size_t(values.size()))));
     } else {
-        // bool and sampler uniforms take ints; Python bools and whole floats convert.
-        FloatArray exact = FloatArray::ensure(value);
-        if (!exact) throw py::type_error("uniform '" + name + "' takes numbers");
-        std::vector<int32_t> ints(size_t(exact.size()));
+        // int, bool and sampler uniforms take whole numbers (Python bools too).
+        DoubleArray numbers = DoubleArray::ensure(value);
+        if (!numbers) throw py::type_error("uniform '" + name + "' takes numbers");
+        std::vector<int32_t> ints(size_t(numbers.size()));
         for (size_t i = 0; i < ints.size(); ++i) {
-            float f = exact.data()[i];
-            if (f != float(int32_t(f)))
-                throw ErrorException{Error("uniform '" + name + "' is " + u->type + "; " + std::to_string(f) +
-                                           " is not an integer")};
-            ints[i] = int32_t(f);
+            double d = numbers.data()[i];
+            if (!(d >= INT32_MIN && d <= INT32_MAX) || d != double(int32_t(d))) {
+                std::string number = py::str(py::float_(d));
+                throw ErrorException{Error("uniform '" + name + "' is " + u->type + "; " + number +
+                                           " is not a 32-bit integer")};
+            }
+            ints[i] = int32_t(d);
         }
         check(program.set_uniform(name, std::span<const int32_t>(ints)));
     }
@@ -111,7 +114,8 @@ py::dict run_batch(Program& program, const py::dict& inputs, uint32_t count, con
     std::vector<ShaderOutput> outputs;
     {
         py::gil_scoped_release release;
-        outputs = take(vertices ? run_vertices(program, attribs, count, &gl) : run_fragments(program, attribs, count, &gl));
+        outputs = take(vertices ? run_vertices(program, attribs, count, &gl)
+                                : run_fragments(program, attribs, count, &gl));
     }
     return to_dict(outputs, count);
 }

@@ -178,8 +178,10 @@ def test_uniform_mistakes_are_errors():
         program.set_uniform("nope", 1.0)
     with pytest.raises(glslrun.Error, match="components"):
         program.set_uniform("offset", [1.0, 2.0])
-    with pytest.raises(glslrun.Error, match="not an integer"):
+    with pytest.raises(glslrun.Error, match="1.5 is not a 32-bit integer"):
         program.set_uniform("mode", 1.5)
+    with pytest.raises(glslrun.Error, match="not a 32-bit integer"):
+        program.set_uniform("mode", 2**31)
     with pytest.raises(glslrun.Error, match="precision"):
         program.precision = "exact"
     program.precision = "fast"
