@@ -10,7 +10,7 @@
 #include "ir/ir.h"
 
 namespace glslrun {
-namespace raster { struct DrawScratch; }
+namespace raster { struct DrawScratch; class DrawProbe; }
 
 struct Program::State {
     ir::Program ir;
@@ -23,6 +23,8 @@ struct Program::State {
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
     // them, except in the error report's ablation (scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
+    // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
+    raster::DrawProbe* probe = nullptr;
 };
 
 }  // namespace glslrun

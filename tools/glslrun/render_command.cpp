@@ -40,11 +40,7 @@ std::optional<std::string> read_text(const std::string& path) {
     return buf.str();
 }
 
-// The files on the command line, sorted by their extensions.
-struct Inputs {
-    std::vector<ShaderSource> vertex, fragment;
-    std::string scene, image;
-};
+}  // namespace
 
 Result<Inputs> classify(const std::vector<std::string>& files) {
     Inputs in;
@@ -68,6 +64,8 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
     }
     return in;
 }
+
+namespace {
 
 Result<std::pair<int, int>> parse_size(const std::string& text) {
     int width = 0, height = 0;
@@ -209,7 +207,8 @@ std::jthread warm_up_compiler(const Inputs& in) {
     }
 }
 
-// The scene file, with --size applied; its warnings are printed.
+}  // namespace
+
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
     if (!scene) return scene.error();
@@ -222,6 +221,8 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) 
     }
     return scene;
 }
+
+namespace {
 
 int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);
