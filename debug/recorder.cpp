@@ -147,8 +147,11 @@ void LaneRecorder::branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask t
     s.kind = TraceStep::Kind::Branch;
     s.where = names_.where(n.loc);
     s.taken = on(taken);
+    // "file:21" then "file:21  if: ..." says the same twice.
+    if (!trace.steps.empty() && trace.steps.back().kind == TraceStep::Kind::Statement &&
+        trace.steps.back().where == s.where)
+        trace.steps.pop_back();
     add(std::move(s));
-    last_ = {};  // the branch's first statement is shown even on the if's line
 }
 
 void LaneRecorder::loop_iteration(const ir::Node& n, uint64_t iteration, rt::LaneMask active) {
