@@ -17,14 +17,41 @@
 
 namespace glslrun::debug {
 
+namespace {
+
+// The optimizer's value-changing decisions, with every variable kept: fold
+// and copyprop (whose common subexpressions decide which square roots only
+// divide, Fast's rsqrt) run as in ir/optimize.cpp, the variables' registers
+// count as outputs so dce keeps their writes, and sqrt_divisor runs last.
+// No inlining (calls stay calls, callees keep their variables' registers),
+// no dead_stores (every assignment stays visible), no hoist (no statement
+// moves out of its place), no regalloc (registers keep their variables).
+void optimize_keeping_variables(ir::Shader& shader) {
+    std::vector<ir::Binding> outputs = shader.outputs;
+    for (const ir::Variable& v : shader.variables)
+        if (v.count > 0) shader.outputs.push_back(ir::Binding{v.name, shader.regs[v.first], v.first, v.count});
+    for (int round = 0; round < 3; ++round) {
+        ir::fold_constants(shader);
+        ir::propagate_copies(shader);
+        ir::eliminate_dead_code(shader);
+    }
+    shader.outputs = std::move(outputs);
+    ir::mark_sqrt_divisors(shader);
+}
+
+}  // namespace
+
 Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
                                       const std::vector<ShaderSource>& fragment, Precision precision) {
     CompileOptions options;
     options.optimize = false;
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
-    if (precision == Precision::Fast)
-        for (ir::Shader* s : {&program->state().ir.vertex, &program->state().ir.fragment}) ir::mark_sqrt_divisors(*s);
+    for (ir::Shader* s : {&program->state().ir.vertex, &program->state().ir.fragment}) {
+        optimize_keeping_variables(*s);
+        if (std::string problem = ir::verify(*s); !problem.empty())
+            return Error("internal error: the debugging program: " + problem);
+    }
     program->exec.precision = precision;
     return program;
 }

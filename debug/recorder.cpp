@@ -92,6 +92,10 @@ void LaneRecorder::add(TraceStep step) {
         trace.truncated = true;
         return;
     }
+    // "file:21" then "file:21  if: ..." says the same twice.
+    if (step.kind != TraceStep::Kind::Statement && step.kind != TraceStep::Kind::Assign && !trace.steps.empty() &&
+        trace.steps.back().kind == TraceStep::Kind::Statement && trace.steps.back().where == step.where)
+        trace.steps.pop_back();
     step.depth = depth_;
     trace.steps.push_back(std::move(step));
 }
@@ -100,8 +104,10 @@ void LaneRecorder::add(TraceStep step) {
 void LaneRecorder::flush_assignments() {
     for (const ir::Variable* var : dirty_) {
         TraceStep s;
-    s.kind = TraceStep::Kind::Assign;
-        s.name = var->name;
+        s.kind = TraceStep::Kind::Assign;
+        // A callee's parameters are written by its caller: "light.i".
+        bool foreign = !var->function.empty() && var->function != functions_.back();
+        s.name = foreign ? var->function + "." + var->name : var->name;
         s.type = var->type;
         s.value = read_values(*regs_, var->first, var->count, lane_);
         add(std::move(s));
@@ -130,7 +136,12 @@ void LaneRecorder::instr(const ir::Node& n, rt::LaneMask active, const rt::LaneR
     statement(n.loc);
     const ir::Instr& in = n.instr;
     if (in.op == ir::Op::uniform || in.op == ir::Op::uniform_ind) {
-        int u = names_.uniform_at(in.imm[0]);
+        uint32_t slot = in.imm[0];
+        if (in.op == ir::Op::uniform_ind && in.imm[1] > 0) {  // base + clamp(index, 0, count - 1) * stride
+            int32_t index = std::clamp<int32_t>(regs.read(in.src[0], lane_).i, 0, int32_t(in.imm[1]) - 1);
+            slot += uint32_t(index) * in.imm[2];
+        }
+        int u = names_.uniform_at(slot);
         if (u >= 0 && std::find(uniforms_read_.begin(), uniforms_read_.end(), u) == uniforms_read_.end())
             uniforms_read_.push_back(u);
     }
@@ -147,11 +158,8 @@ void LaneRecorder::branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask t
     s.kind = TraceStep::Kind::Branch;
     s.where = names_.where(n.loc);
     s.taken = on(taken);
-    // "file:21" then "file:21  if: ..." says the same twice.
-    if (!trace.steps.empty() && trace.steps.back().kind == TraceStep::Kind::Statement &&
-        trace.steps.back().where == s.where)
-        trace.steps.pop_back();
     add(std::move(s));
+    last_ = n.loc;  // the branch's line is shown: its statements there need no line of their own
 }
 
 void LaneRecorder::loop_iteration(const ir::Node& n, uint64_t iteration, rt::LaneMask active) {
@@ -180,9 +188,11 @@ void LaneRecorder::jump(const ir::Node& n, rt::LaneMask active) {
         s.name = kJumps[size_t(n.kind)];
     }
     if (n.kind == ir::NodeKind::Discard) trace.discarded = true;
+    std::string callee = s.name;
     add(std::move(s));
     if (n.kind == ir::NodeKind::Call) {
         ++depth_;
+        functions_.push_back(callee);
         last_ = {};
     }
 }
@@ -194,6 +204,7 @@ void LaneRecorder::leave(const ir::Node& n) {
     if (!ours) return;
     if (regs_) flush_assignments();
     depth_ = std::max(0, depth_ - 1);
+    if (functions_.size() > 1) functions_.pop_back();
     last_ = {};
 }
 

@@ -66,6 +66,7 @@ private:
     const rt::LaneReader* regs_ = nullptr;
     std::vector<int> uniforms_read_;
     std::vector<bool> calls_;  // per Call being run: whether the lane entered it
+    std::vector<std::string> functions_{"main"};  // the lane's call stack
 };
 
 // The first NaN or infinity that each lane computes (any float result).

@@ -331,6 +331,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     if (Status st = exec::shade_vertices(program, attribs, vertex_count, gl, scratch.shaded); !st)
         return st.error();
     stats.vertex_seconds = seconds_since(start);
+    if (raster::DrawProbe* probe = program.state().probe)
+        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded});
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = program.state().ir.vertex;
@@ -344,8 +346,6 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
     scratch.bins.reset(scissor);
     bin_primitives(outs, scratch.bins, &stats.triangles);
-    if (raster::DrawProbe* probe = program.state().probe)
-        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded});
     stats.raster_seconds = seconds_since(raster_start);
     auto fragment_start = Clock::now();
     TileResult tiles = scratch.bins.render(TileTarget{program, gl, fb, scissor}, stage, program.exec.threads, clear);

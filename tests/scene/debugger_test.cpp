@@ -86,12 +86,15 @@ void check_matches_pixel(const Traced& t) {
 TEST_CASE("golden traces of the lecture's spot programs", "[debug]") {
     struct Case {
         const char* program;
+        const char* scene;
         int x, y;
     };
     // 240,172: inside the cone, facing away from the light (docs/debugging.md);
-    // 256,256: lit, with a hidden back face behind it.
-    for (Case c : {Case{"spot_pix_oops", 240, 172}, Case{"spot_pix_fixed", 240, 172}, Case{"spot_pix_fixed", 256, 256}}) {
-        Traced t = trace_pixel(c.program, "spot.toml", c.x, c.y);
+    // 256,256: lit, with a hidden back face behind it; multi_light: a loop
+    // over three lights calling a function.
+    for (Case c : {Case{"spot_pix_oops", "spot.toml", 240, 172}, Case{"spot_pix_fixed", "spot.toml", 240, 172},
+                   Case{"spot_pix_fixed", "spot.toml", 256, 256}, Case{"multi_light", "multi_light.toml", 230, 200}}) {
+        Traced t = trace_pixel(c.program, c.scene, c.x, c.y);
         check_golden(fmt::format("{}_{}_{}.txt", c.program, c.x, c.y), debug::format_text(t.trace));
         check_matches_pixel(t);
     }
