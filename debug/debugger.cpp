@@ -13,7 +13,7 @@
 #include "raster/probe.h"
 #include "raster/triangle.h"
 #include "runtime/program_state.h"
-#include "scene/render.h"
+#include "glslrun/scene/render.h"
 
 namespace glslrun::debug {
 
@@ -47,7 +47,7 @@ Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
     options.optimize = false;
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
-    for (ir::Shader* s : {&program->state().ir.vertex, &program->state().ir.fragment}) {
+    for (ir::Shader* s : {&state_of(*program).ir.vertex, &state_of(*program).ir.fragment}) {
         optimize_keeping_variables(*s);
         if (std::string problem = ir::verify(*s); !problem.empty())
             return Error("internal error: the debugging program: " + problem);
@@ -120,7 +120,7 @@ bool same_bits(const std::vector<NamedValue>& a, const std::vector<NamedValue>& 
 template <class Fill>
 InvocationTrace replay(const Program& debug, const ir::Shader& shader, const DrawSnapshot& draw, rt::LaneMask live,
                        int lane, Fill&& fill) {
-    ShaderNames names(shader, debug.state().ir);
+    ShaderNames names(shader, state_of(debug).ir);
     LaneRecorder recorder(names, draw.uniforms.data(), lane);
     rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations,
                              draw.gl.texture_units.data(), debug.exec.precision, ~0u, recorder);
@@ -143,7 +143,7 @@ class Probe : public raster::DrawProbe {
 public:
     explicit Probe(const Program& program) : program_(program) {}
     void begin_draw(const raster::ProbeDraw& d) override {
-        draws_.push_back({program_.state().uniforms, d.gl, d.attribs, d.vertex_count, d.shaded});
+        draws_.push_back({state_of(program_).uniforms, d.gl, d.attribs, d.vertex_count, d.shaded});
     }
     uint32_t draw_index() const { return uint32_t(draws_.size() - 1); }
     const std::vector<DrawSnapshot>& draws() const { return draws_; }
@@ -167,7 +167,7 @@ class PixelProbe final : public Probe {
 public:
     PixelProbe(const Program& program, int x, int y) : Probe(program), x_(x), y_(y) {}
     void before_run(const raster::ProbeBatch& b) override {
-        const ir::Shader& fs = program_.state().ir.fragment;
+        const ir::Shader& fs = state_of(program_).ir.fragment;
         for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1) {
             int lane = std::countr_zero(bits);
             if (b.x[size_t(lane)] != x_ || b.y[size_t(lane)] != y_) continue;
@@ -186,7 +186,7 @@ public:
             using O = FragmentTrace::Outcome;
             bool is_alive = (alive >> c.lane) & 1, is_written = (written >> c.lane) & 1;
             c.info.outcome = !is_alive ? O::Discarded : is_written ? O::Written : O::DepthFailed;
-            c.info.rendered = outputs_of(program_.state().ir.fragment.outputs, b.interp, c.lane);
+            c.info.rendered = outputs_of(state_of(program_).ir.fragment.outputs, b.interp, c.lane);
             captures_.push_back(std::move(c));
         }
         pending_.clear();
@@ -210,7 +210,7 @@ private:
 FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Capture& c) {
     FragmentTrace f = std::move(c.info);
     if (!f.shaded) return f;
-    const ir::Shader& fs = debug.state().ir.fragment;
+    const ir::Shader& fs = state_of(debug).ir.fragment;
     f.trace = replay(debug, fs, draw, c.live, c.lane, [&](rt::TracedInterpreter& in) {
         for (const ir::Binding& b : fs.inputs)
             for (const auto& [name, words] : c.inputs)
@@ -224,7 +224,7 @@ FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Ca
 
 Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, const DrawSnapshot& draw,
                                   uint32_t draw_index, uint32_t vertex) {
-    const ir::Shader& vs = debug.state().ir.vertex;
+    const ir::Shader& vs = state_of(debug).ir.vertex;
     auto words = exec::vertex_input_words(vs, draw.attribs, draw.vertex_count, draw.gl, vertex);
     if (!words) return words.error();
     VertexTrace t{draw_index, vertex, true, {}};
@@ -233,7 +233,7 @@ Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, 
             for (uint32_t k = 0; k < vs.inputs[i].count; ++k) in.lanes(vs.inputs[i].first + k)[0] = (*words)[i][k];
     });
     // The render's outputs of this vertex (VertexOutputs holds floats).
-    const std::vector<ir::Binding>& outs = program.state().ir.vertex.outputs;
+    const std::vector<ir::Binding>& outs = state_of(program).ir.vertex.outputs;
     for (const NamedValue& v : t.trace.outputs)
         for (size_t o = 0; o < outs.size(); ++o)
             if (outs[o].name == v.name)
@@ -250,9 +250,9 @@ Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, 
 Status render_with_probe(Program& program, const scene::Scene& scene, Framebuffer& fb, raster::DrawProbe& probe) {
     unsigned threads = program.exec.threads;
     program.exec.threads = 1;  // one fragment stage, in tile order
-    program.state().probe = &probe;
+    state_of(program).probe = &probe;
     auto stats = scene::render_scene(program, scene, fb);
-    program.state().probe = nullptr;
+    state_of(program).probe = nullptr;
     program.exec.threads = threads;
     if (!stats) return stats.error();
     return Ok{};
@@ -260,7 +260,7 @@ Status render_with_probe(Program& program, const scene::Scene& scene, Framebuffe
 
 Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
                          const TraceRequest& request) {
-    if (debug.state().ir.uniform_words != program.state().ir.uniform_words)
+    if (state_of(debug).ir.uniform_words != state_of(program).ir.uniform_words)
         return Error("internal error: the debugging program's uniforms differ from the program's");
     PixelTrace out;
     int wy = -1;

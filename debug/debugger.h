@@ -12,7 +12,7 @@
 
 #include "debug/trace.h"
 #include "glslrun/glslrun.h"
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::raster { class DrawProbe; }
 

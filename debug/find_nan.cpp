@@ -9,7 +9,7 @@
 #include "raster/fragments.h"
 #include "raster/probe.h"
 #include "runtime/program_state.h"
-#include "scene/render.h"
+#include "glslrun/scene/render.h"
 
 namespace glslrun::debug {
 namespace {
@@ -21,19 +21,19 @@ public:
 
     void begin_draw(const raster::ProbeDraw& d) override {
         ++draw_;
-        uniforms_ = program_.state().uniforms;
+        uniforms_ = state_of(program_).uniforms;
         gl_ = d.gl;
         if (!report.nan) check_vertices(d);
     }
 
     void before_run(const raster::ProbeBatch& b) override {
         if (report.nan) return;
-        const ir::Shader& fs = debug_.state().ir.fragment;
-        ShaderNames names(fs, debug_.state().ir);
+        const ir::Shader& fs = state_of(debug_).ir.fragment;
+        ShaderNames names(fs, state_of(debug_).ir);
         NanWatch watch(names);
         rt::TracedInterpreter in(fs, uniforms_.data(), debug_.exec.max_loop_iterations, gl_.texture_units.data(),
                                  debug_.exec.precision, ~0u, watch);
-        const ir::Shader& rendered = program_.state().ir.fragment;
+        const ir::Shader& rendered = state_of(program_).ir.fragment;
         for (const ir::Binding& to : fs.inputs)
             for (const ir::Binding& from : rendered.inputs)
                 if (from.name == to.name)
@@ -49,7 +49,7 @@ public:
 
     void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask) override {
         if (!colour_range_ || report.out_of_range) return;
-        const ir::Shader& fs = program_.state().ir.fragment;
+        const ir::Shader& fs = state_of(program_).ir.fragment;
         for (const ir::Binding& out : fs.outputs) {
             if (out.name != "gl_FragColor" && !out.name.starts_with("gl_FragData")) continue;
             for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
@@ -86,8 +86,8 @@ private:
 
     // The draw's vertices in batches, as the render shades them.
     void check_vertices(const raster::ProbeDraw& d) {
-        const ir::Shader& vs = debug_.state().ir.vertex;
-        ShaderNames names(vs, debug_.state().ir);
+        const ir::Shader& vs = state_of(debug_).ir.vertex;
+        ShaderNames names(vs, state_of(debug_).ir);
         for (uint32_t base = 0; base < d.vertex_count && !report.nan; base += rt::kLanes) {
             NanWatch watch(names);
             rt::TracedInterpreter in(vs, uniforms_.data(), debug_.exec.max_loop_iterations, gl_.texture_units.data(),

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "debug/debugger.h"
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 using namespace glslrun;
 

@@ -18,8 +18,8 @@
 #include "ir/ir.h"
 #include "runtime/program_state.h"
 #include "scene/bench_report.h"
-#include "scene/image_compare.h"
-#include "scene/render.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/render.h"
 
 namespace glslrun::cli {
 namespace {
@@ -89,9 +89,9 @@ std::string default_output(const Inputs& in) {
 std::string builtin_values(const Program& prog, size_t width) {
     std::string out;
     const std::string indent(25, ' ');
-    for (const ir::Uniform& u : prog.ir().uniforms) {
+    for (const ir::Uniform& u : state_of(prog).ir.uniforms) {
         if (!u.builtin || !u.read) continue;
-        debug::NamedValue v = debug::uniform_value(u, prog.state().uniforms.data());
+        debug::NamedValue v = debug::uniform_value(u, state_of(prog).uniforms.data());
         std::vector<std::string> lines = debug::format_matrix_rows(v.value, v.type);
         std::string head = (out.empty() ? "" : indent) + u.name + " =";
         if (lines.size() > 1) out += head + "\n";  // a matrix: its rows below the name
@@ -118,7 +118,7 @@ size_t terminal_width() {
 
 std::string join_builtin_attributes(const Program& prog) {
     std::string list;
-    for (const ir::Binding& b : prog.ir().vertex.inputs)
+    for (const ir::Binding& b : state_of(prog).ir.vertex.inputs)
         if (b.name.starts_with("gl_")) list += (list.empty() ? "" : ", ") + b.name;
     return list.empty() ? "none" : list;
 }

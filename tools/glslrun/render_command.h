@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "glslrun/glslrun.h"
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::cli {
 
