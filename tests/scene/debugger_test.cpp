@@ -167,3 +167,35 @@ TEST_CASE("--find-nan names the line and the pixel of the first NaN", "[debug]")
     REQUIRE(report->out_of_range);  // b is far outside [0,1] almost everywhere
     CHECK(debug::format_text(*report).find("nan.frag:4: fdiv(1, 0) = inf") != std::string::npos);
 }
+
+TEST_CASE("--find-nan looks at the vertices first, in draw order", "[debug]") {
+    // Vertex 2 of the quad (x > 0, y > 0) takes log(-x) on line 3.
+    ShaderSource vs{"nan.vert",
+                    "void main() {\n"
+                    "    float w = 1.0;\n"
+                    "    if (gl_Vertex.x > 0.0 && gl_Vertex.y > 0.0) w = log(-gl_Vertex.x);\n"
+                    "    gl_Position = vec4(gl_Vertex.xy, 0.0, w);\n"
+                    "}\n"};
+    ShaderSource fs{"nan.frag", "void main() { gl_FragColor = vec4(1.0); }\n"};
+    auto scene = scene::load_scene(kRoot + "/scenes/quad.toml");
+    REQUIRE(scene);
+    auto prog = Program::compile({vs}, {fs});
+    REQUIRE(prog);
+    auto dbg = debug::compile_for_debugging({vs}, {fs}, Precision::Precise);
+    REQUIRE(dbg);
+    Framebuffer fb(scene->width, scene->height);
+    auto report = debug::find_nan(*prog, *dbg, *scene, fb, false);
+    REQUIRE(report);
+    REQUIRE(report->nan);
+    CHECK(report->nan->vertex);
+    CHECK(report->nan->draw == 0);
+    CHECK(report->nan->event.where == "nan.vert:3");
+    CHECK(report->nan->event.op == "flog");
+    CHECK_FALSE(report->out_of_range);  // not asked for
+    // The quad's vertex with x > 0 and y > 0.
+    auto trace = debug::trace(*prog, *dbg, *scene, fb, debug::TraceRequest{std::nullopt, report->nan->vertex_index, 0});
+    REQUIRE(trace);
+    REQUIRE(trace->vertices.size() == 1);
+    CHECK(trace->vertices[0].trace.first_nan);
+    CHECK(trace->vertices[0].matches_render);
+}
