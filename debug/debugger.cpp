@@ -77,17 +77,12 @@ struct Capture {
     std::vector<std::pair<std::string, Words>> inputs;  // optimized input bindings: kLanes words per component
 };
 
-float as_float(ir::Kind kind, uint32_t w) {
-    return kind == ir::Kind::F32 ? std::bit_cast<float>(w) : kind == ir::Kind::I32 ? float(int32_t(w)) : float(w != 0);
-}
-
-NamedValue output_value(const ir::Binding& b, const uint32_t* const* regs, int lane) {
-    NamedValue v{b.name, b.count > 1 ? (b.kind == ir::Kind::F32 ? "vec" : b.kind == ir::Kind::I32 ? "ivec" : "bvec") +
-                                           std::to_string(b.count) : "",
-                 {b.kind, false, {}}};
-    if (v.type.empty()) v.type = b.kind == ir::Kind::F32 ? "float" : b.kind == ir::Kind::I32 ? "int" : "bool";
+// One lane of a binding's registers, as the interpreter's callers see them (32-bit words).
+template <class Interp>
+NamedValue binding_value(const ir::Binding& b, Interp& in, int lane) {
+    NamedValue v{b.name, binding_type(b), {b.kind, false, {}}};
     for (uint32_t c = 0; c < b.count; ++c) {
-        uint32_t w = regs[c][lane];
+        uint32_t w = in.lanes(b.first + c)[lane];
         v.value.c.push_back(b.kind == ir::Kind::F32 ? double(std::bit_cast<float>(w)) : double(int32_t(w)));
     }
     return v;
@@ -96,11 +91,7 @@ NamedValue output_value(const ir::Binding& b, const uint32_t* const* regs, int l
 template <class Interp>
 std::vector<NamedValue> outputs_of(const std::vector<ir::Binding>& outputs, Interp& in, int lane) {
     std::vector<NamedValue> out;
-    for (const ir::Binding& b : outputs) {
-        std::vector<const uint32_t*> regs;
-        for (uint32_t c = 0; c < b.count; ++c) regs.push_back(in.lanes(b.first + c));
-        out.push_back(output_value(b, regs.data(), lane));
-    }
+    for (const ir::Binding& b : outputs) out.push_back(binding_value(b, in, lane));
     return out;
 }
 
@@ -125,12 +116,7 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
     rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations,
                              draw.gl.texture_units.data(), debug.exec.precision, ~0u, recorder);
     fill(in);
-    for (const ir::Binding& b : shader.inputs) {
-        Values v;
-        for (uint32_t c = 0; c < b.count; ++c) v.c.push_back(as_float(b.kind, in.lanes(b.first + c)[lane]));
-        v.kind = b.kind;
-        recorder.trace.inputs.push_back({b.name, "", v});
-    }
+    for (const ir::Binding& b : shader.inputs) recorder.trace.inputs.push_back(binding_value(b, in, lane));
     rt::RunError error;
     bool ok = in.run(live, &error);
     recorder.finish(nullptr);
@@ -239,7 +225,7 @@ Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, 
             if (outs[o].name == v.name)
                 for (size_t k = 0; k < v.value.c.size(); ++k) {
                     float rendered = draw.shaded.vertex(vertex)[draw.shaded.offset[o] + k];
-                    float traced = v.value.kind == ir::Kind::F32 ? float(v.value.c[k]) : float(v.value.c[k]);
+                    float traced = float(v.value.c[k]);  // VertexOutputs converts ints and bools to float too
                     if (std::bit_cast<uint32_t>(rendered) != std::bit_cast<uint32_t>(traced)) t.matches_render = false;
                 }
     return t;

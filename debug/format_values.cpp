@@ -13,6 +13,10 @@ std::string type_name(const ir::ValueType& t) {
     return t.kind == ir::Kind::F32 ? "float" : t.kind == ir::Kind::I32 ? "int" : "bool";
 }
 
+std::string binding_type(const ir::Binding& b) {
+    return type_name(ir::ValueType{b.kind, 1, uint8_t(b.count), false});
+}
+
 namespace {
 
 std::string scalar(const Values& v, double x) {

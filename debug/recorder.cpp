@@ -11,10 +11,7 @@ namespace glslrun::debug {
 ShaderNames::ShaderNames(const ir::Shader& shader, const ir::Program& program)
     : shader_(shader), program_(program), var_of_(shader.regs.size(), -1), uniform_of_(program.uniform_words, -1) {
     vars_ = shader.variables;
-    for (const ir::Binding& b : shader.outputs) {
-        std::string type = b.count == 1 ? "float" : fmt::format("vec{}", b.count);
-        vars_.push_back(ir::Variable{b.name, "", b.kind == ir::Kind::F32 ? type : "", b.first, b.count});
-    }
+    for (const ir::Binding& b : shader.outputs) vars_.push_back(ir::Variable{b.name, "", binding_type(b), b.first, b.count});
     for (size_t v = 0; v < vars_.size(); ++v) {
         const ir::Variable& var = vars_[v];
         for (uint32_t c = 0; c < var.count && var.first + c < var_of_.size(); ++c) var_of_[var.first + c] = int(v);

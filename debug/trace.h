@@ -66,6 +66,8 @@ struct InvocationTrace {
 
 // "float", "vec3", "mat4", "bvec2", "sampler" for a uniform's type.
 std::string type_name(const ir::ValueType& t);
+// "float", "vec3", "ivec2", "bool" for a binding's registers.
+std::string binding_type(const ir::Binding& b);
 // "0.5", "vec3(1, 0, 0.25)", "mat2(vec2(1, 0), vec2(0, 1))"; matrices as columns.
 std::string format_value(const Values& v, const std::string& type);
 // The same on several lines, one row of the matrix per line, for --stats.
