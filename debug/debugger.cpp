@@ -177,15 +177,6 @@ public:
         }
         pending_.clear();
     }
-    void culled(const raster::FsPrimitive& p, int x, int y, unsigned mask, const float* z) override {
-        for (int i = 0; i < 4; ++i)
-            if ((mask >> i) & 1 && x + raster::kQuadDx[i] == x_ && y + raster::kQuadDy[i] == y_) {
-                Capture c{describe(p, draw_index(), z[i]), 0, 0, {}};
-                c.info.outcome = FragmentTrace::Outcome::EarlyDepthFailed;
-                c.info.shaded = false;
-                captures_.push_back(std::move(c));
-            }
-    }
     std::vector<Capture> captures_;
 
 private:
@@ -195,7 +186,6 @@ private:
 
 FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Capture& c) {
     FragmentTrace f = std::move(c.info);
-    if (!f.shaded) return f;
     const ir::Shader& fs = state_of(debug).ir.fragment;
     f.trace = replay(debug, fs, draw, c.live, c.lane, [&](rt::TracedInterpreter& in) {
         for (const ir::Binding& b : fs.inputs)

@@ -25,13 +25,12 @@ Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
                                       const std::vector<ShaderSource>& fragment, Precision precision);
 
 struct FragmentTrace {
-    enum class Outcome : uint8_t { Written, DepthFailed, EarlyDepthFailed, Discarded };
+    enum class Outcome : uint8_t { Written, DepthFailed, Discarded };
     uint32_t draw = 0, primitive = 0;
     std::array<uint32_t, 3> vertices{};
     bool front = true;
     float depth = 0;  // window z
     Outcome outcome = Outcome::Written;
-    bool shaded = true;           // false: culled by the early depth test
     bool matches_render = true;   // the replay's outputs equal the render's, bit for bit
     std::vector<NamedValue> rendered;  // the render's outputs (before quantization)
     InvocationTrace trace;
@@ -55,7 +54,8 @@ struct TraceRequest {
     uint32_t draw = 0;
 };
 
-// Renders the scene into `fb` (one thread) and traces what `request` asks.
+// Renders the scene into `fb` (one thread, and no early depth test: hidden
+// fragments are shaded too; the same image) and traces what `request` asks.
 Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
                          const TraceRequest& request);
 

@@ -69,8 +69,6 @@ public:
         }
     }
 
-    void culled(const raster::FsPrimitive&, int, int, unsigned, const float*) override {}
-
     NanReport report;
 
 private:

@@ -12,14 +12,13 @@ const char* outcome_text(FragmentTrace::Outcome o) {
     switch (o) {
     case FragmentTrace::Outcome::Written: return "passes the depth test, written";
     case FragmentTrace::Outcome::DepthFailed: return "fails the depth test";
-    case FragmentTrace::Outcome::EarlyDepthFailed: return "fails the early depth test (not shaded)";
     case FragmentTrace::Outcome::Discarded: return "discarded";
     }
     return "?";
 }
 
 const char* outcome_key(FragmentTrace::Outcome o) {
-    static constexpr const char* kKeys[] = {"written", "depth_failed", "early_depth_failed", "discarded"};
+    static constexpr const char* kKeys[] = {"written", "depth_failed", "discarded"};
     return kKeys[size_t(o)];
 }
 
@@ -121,7 +120,6 @@ std::string format_text(const PixelTrace& t) {
         out += fmt::format("fragment {} at pixel {},{}: draw {}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
                            i, t.x, t.y, f.draw, f.primitive, f.vertices[0], f.vertices[1], f.vertices[2],
                            f.front ? "front" : "back", f.depth, outcome_text(f.outcome));
-        if (!f.shaded) continue;
         text_invocation(out, f.trace);
         if (!f.matches_render) out += "  WARNING: the replay's outputs differ from the render's\n";
     }
@@ -141,7 +139,7 @@ std::string format_json(const PixelTrace& t) {
                                  "\"outcome\":\"{}\",\"matches_render\":{},\"rendered\":{},\"trace\":{}}}",
                                  i ? ",\n" : "\n", f.draw, f.primitive, f.vertices[0], f.vertices[1], f.vertices[2],
                                  f.front, f.depth, outcome_key(f.outcome), f.matches_render, json_named(f.rendered),
-                                 f.shaded ? json_invocation(f.trace) : "null");
+                                 json_invocation(f.trace));
     }
     std::string vertices = "[";
     for (size_t i = 0; i < t.vertices.size(); ++i)

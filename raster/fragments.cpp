@@ -123,8 +123,10 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     depth_out_ = find_binding(fs.outputs, {"gl_FragDepth"});
     // Without discard or gl_FragDepth the depth test cannot depend on the
     // shader, so it runs before shading and culls hidden quads.
-    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_;
+    // The shader debugger sees every fragment shaded: the late test gives the
+    // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
+    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !probe_;
 }
 
 ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
@@ -166,7 +168,6 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
         // Covered pixels only; the function read once (stores to the depth
         // buffer would otherwise make the compiler reload it per lane).
         const GLState::DepthFunc func = gl_.depth_func;
-        const unsigned inside = mask;
         for (unsigned bits = mask; bits; bits &= bits - 1) {
             int i = std::countr_zero(bits), lane = base + i;
             float& stored = fb_.depth[size_t(lane_y_[lane]) * fb_.width + lane_x_[lane]];
@@ -175,8 +176,6 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
             stored = passes ? lane_z_[lane] : stored;
             mask &= ~(unsigned(!passes) << i);
         }
-        if (probe_ && mask != inside) [[unlikely]]
-            probe_->culled(prim, x, y, inside & ~mask, &lane_z_[size_t(base)]);
     }
     if (!mask) return;
     quad_prim_[size_t(quads_)] = &prim;
@@ -268,15 +267,18 @@ void FragmentStage::flush() {
         error_ = exec::run_error(state_of(program_), ir::Stage::Fragment, run_error);
         return;
     }
-    rt::LaneMask written = write_outputs(covered);
     if (probe_) [[unlikely]]
-        probe_->after_write(probe_batch(covered), interp_->alive() & covered, written);
+        probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered));
+    else
+        write_outputs<false>(covered);
     quads_ = 0;
 }
 
 // Depth test (unless done early) and colour writes over the batch, in lane
 // order: two quads of the batch may cover the same pixel.
-// Returns the lanes written (alive, and passing the depth test).
+// kProbed: returns the lanes written (alive, and passing the depth test), for
+// the probe; without it, 0 (no work for it per lane).
+template <bool kProbed>
 rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
     rt::Interpreter& in = *interp_;
     int lanes = quads_ * 4;
@@ -300,7 +302,7 @@ rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
             fb_.depth[pixel] = z[size_t(lane)];
         }
         ++written_;
-        written |= rt::LaneMask(1) << lane;
+        if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
         if (!color_out_) continue;
         // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
         float* dst = &fb_.color[pixel * 4];

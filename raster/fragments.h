@@ -95,6 +95,7 @@ private:
     void interpolate(uint32_t attr, const Weights& w, Lanes& v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
     void fill_inputs(const Weights& w);
+    template <bool kProbed>
     rt::LaneMask write_outputs(rt::LaneMask covered);
     ProbeBatch probe_batch(rt::LaneMask covered);
 

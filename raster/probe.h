@@ -1,7 +1,6 @@
 // An observer of draw() for the shader debugger (debug/: trace, --find-nan),
 // set in Program::State::probe. draw() and the fragment stage test the pointer
-// once per draw, per batch and per early-culled quad; the interpreter knows
-// nothing of it. A probe sees one thread's work only when the draw runs on
+// once per draw and per batch; the interpreter knows nothing of it. A probe sees one thread's work only when the draw runs on
 // one thread (ExecOptions::threads = 1), which also gives tile order.
 #pragma once
 #include <array>
@@ -45,9 +44,8 @@ public:
     virtual void before_run(const ProbeBatch& batch) = 0;
     // After the depth test and colour writes: `alive` did not discard,
     // `written` passed the depth test (or there is none) and were written.
+    // With a probe there is no early depth test: every fragment is shaded.
     virtual void after_write(const ProbeBatch& batch, rt::LaneMask alive, rt::LaneMask written) = 0;
-    // A quad of `prim` whose lanes `culled` failed the early depth test (never shaded).
-    virtual void culled(const FsPrimitive& prim, int x, int y, unsigned culled, const float* z) = 0;
 };
 
 }  // namespace glslrun::raster

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "debug/debugger.h"
+#include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
 
 using namespace glslrun;
@@ -69,7 +70,7 @@ void check_golden(const std::string& name, const std::string& actual) {
 void check_matches_pixel(const Traced& t) {
     const debug::FragmentTrace* visible = nullptr;
     for (const auto& f : t.trace.fragments) {
-        if (f.shaded) CHECK(f.matches_render);
+        CHECK(f.matches_render);
         if (f.outcome == debug::FragmentTrace::Outcome::Written) visible = &f;
     }
     REQUIRE(visible);
@@ -97,6 +98,15 @@ TEST_CASE("golden traces of the lecture's spot programs", "[debug]") {
         Traced t = trace_pixel(c.program, c.scene, c.x, c.y);
         check_golden(fmt::format("{}_{}_{}.txt", c.program, c.x, c.y), debug::format_text(t.trace));
         check_matches_pixel(t);
+        // Tracing never changes the image: the traced render's floats are a plain render's.
+        Framebuffer plain(t.fb.width, t.fb.height, true);
+        auto prog = Program::compile({shader(std::string("shaders/") + c.program + ".vert")},
+                                     {shader(std::string("shaders/") + c.program + ".frag")});
+        auto scene = scene::load_scene(kRoot + "/scenes/" + c.scene);
+        REQUIRE((prog && scene));
+        REQUIRE(scene::render_scene(*prog, *scene, plain));
+        CHECK(plain.color == t.fb.color);
+        CHECK(plain.depth == t.fb.depth);
     }
 }
 
@@ -106,8 +116,7 @@ TEST_CASE("a pixel covered by several primitives lists each with its depth outco
     int written = 0, hidden = 0;
     for (const auto& f : t.trace.fragments) {
         written += f.outcome == debug::FragmentTrace::Outcome::Written;
-        hidden += f.outcome == debug::FragmentTrace::Outcome::EarlyDepthFailed ||
-                  f.outcome == debug::FragmentTrace::Outcome::DepthFailed;
+        hidden += f.outcome == debug::FragmentTrace::Outcome::DepthFailed;
     }
     CHECK(written >= 1);
     CHECK(hidden >= 1);
@@ -115,7 +124,7 @@ TEST_CASE("a pixel covered by several primitives lists each with its depth outco
     REQUIRE(t.trace.vertices.size() == 3);
     for (const auto& v : t.trace.vertices) CHECK(v.matches_render);
     std::string json = debug::format_json(t.trace);
-    CHECK(json.find("\"outcome\":\"early_depth_failed\"") != std::string::npos);
+    CHECK(json.find("\"outcome\":\"depth_failed\"") != std::string::npos);
 }
 
 TEST_CASE("a discarding shader traces its discard; late depth outcomes", "[debug]") {
@@ -130,7 +139,6 @@ TEST_CASE("a discarding shader traces its discard; late depth outcomes", "[debug
     REQUIRE_FALSE(t.trace.fragments.empty());
     bool saw_discard = false;
     for (const auto& f : t.trace.fragments) {
-        CHECK(f.outcome != debug::FragmentTrace::Outcome::EarlyDepthFailed);  // discard: no early test
         if (f.outcome == debug::FragmentTrace::Outcome::Discarded) {
             saw_discard = true;
             CHECK(f.trace.discarded);
