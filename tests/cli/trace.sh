@@ -50,6 +50,12 @@ grep -q "gl_Position = vec4(" "$tmp/vertex.txt" || fail "trace --vertex: gl_Posi
 "$glslrun" trace --find-nan --size 64x64 "$vs" "$fs" "$scene" >"$tmp/nan.txt" || fail "--find-nan exited with $?"
 grep -q "^no NaN or infinity" "$tmp/nan.txt" || fail "--find-nan found a NaN in the spot light"
 
+# --stats: the built-in uniforms read, with values; a matrix as rows under its name.
+COLUMNS=100 "$glslrun" "$vs" "$fs" "$scene" --size 64x64 -o "$tmp/s.png" --stats >"$tmp/stats.txt" || fail "--stats exited with $?"
+grep -A4 "gl_ModelViewMatrix =$" "$tmp/stats.txt" | grep -c "^ *|.* -5 |$" | grep -qx 1 || fail "--stats: no modelview matrix rows"
+grep -q "gl_LightSource\[0\].spotCosCutoff = 0.9396926$" "$tmp/stats.txt" || fail "--stats: no spotCosCutoff value"
+awk 'length > 100 { exit 1 }' "$tmp/stats.txt" || fail "--stats: a line longer than 100 columns"
+
 # Bad arguments: a message and status 1 (CLI11's usage errors: nonzero too).
 expect_error() {
     if "$glslrun" trace "$@" >"$tmp/err.out" 2>"$tmp/err.txt"; then fail "trace $*: exit status 0"; fi
