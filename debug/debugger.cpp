@@ -113,8 +113,8 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
                        int lane, Fill&& fill) {
     ShaderNames names(shader, state_of(debug).ir);
     LaneRecorder recorder(names, draw.uniforms.data(), lane);
-    rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations,
-                             draw.gl.texture_units.data(), debug.exec.precision, ~0u, recorder);
+    rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations, draw.gl.texture_units.data(),
+                             debug.exec.precision, ~0u, recorder);
     fill(in);
     for (const ir::Binding& b : shader.inputs) recorder.trace.inputs.push_back(binding_value(b, in, lane));
     rt::RunError error;
@@ -157,11 +157,14 @@ public:
         for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1) {
             int lane = std::countr_zero(bits);
             if (b.x[size_t(lane)] != x_ || b.y[size_t(lane)] != y_) continue;
-            Capture c{describe(*b.quad_prim[lane / 4], draw_index(), b.z[size_t(lane)]), lane,
-                      b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1, {}};
+            Capture c{describe(*b.quad_prim[lane / 4], draw_index(), b.z[size_t(lane)]),
+                      lane,
+                      b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1,
+                      {}};
             for (const ir::Binding& in : fs.inputs) {
                 Words w;
-                for (uint32_t k = 0; k < in.count; ++k) w.insert(w.end(), b.interp.lanes(in.first + k), b.interp.lanes(in.first + k) + rt::kLanes);
+                for (uint32_t k = 0; k < in.count; ++k)
+                    w.insert(w.end(), b.interp.lanes(in.first + k), b.interp.lanes(in.first + k) + rt::kLanes);
                 c.inputs.emplace_back(in.name, std::move(w));
             }
             pending_.push_back(std::move(c));

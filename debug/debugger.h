@@ -14,7 +14,9 @@
 #include "glslrun/glslrun.h"
 #include "glslrun/scene/scene.h"
 
-namespace glslrun::raster { class DrawProbe; }
+namespace glslrun::raster {
+class DrawProbe;
+}
 
 namespace glslrun::debug {
 
@@ -31,7 +33,7 @@ struct FragmentTrace {
     bool front = true;
     float depth = 0;  // window z
     Outcome outcome = Outcome::Written;
-    bool matches_render = true;   // the replay's outputs equal the render's, bit for bit
+    bool matches_render = true;        // the replay's outputs equal the render's, bit for bit
     std::vector<NamedValue> rendered;  // the render's outputs (before quantization)
     InvocationTrace trace;
 };
@@ -43,7 +45,7 @@ struct VertexTrace {
 };
 
 struct PixelTrace {
-    int x = 0, y = 0;  // image coordinates, top-left origin
+    int x = 0, y = 0;                      // image coordinates, top-left origin
     std::vector<FragmentTrace> fragments;  // in draw order
     std::vector<VertexTrace> vertices;     // of the fragments' primitives, or --vertex
 };
@@ -60,9 +62,9 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
                          const TraceRequest& request);
 
 struct NanFinding {
-    bool vertex = false;            // in the vertex stage (else a fragment)
+    bool vertex = false;  // in the vertex stage (else a fragment)
     uint32_t draw = 0, primitive = 0, vertex_index = 0;
-    int x = 0, y = 0;               // fragments: image coordinates, top-left origin
+    int x = 0, y = 0;  // fragments: image coordinates, top-left origin
     NanEvent event;
 };
 

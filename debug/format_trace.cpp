@@ -10,9 +10,12 @@ namespace {
 
 const char* outcome_text(FragmentTrace::Outcome o) {
     switch (o) {
-    case FragmentTrace::Outcome::Written: return "passes the depth test, written";
-    case FragmentTrace::Outcome::DepthFailed: return "fails the depth test";
-    case FragmentTrace::Outcome::Discarded: return "discarded";
+        case FragmentTrace::Outcome::Written:
+            return "passes the depth test, written";
+        case FragmentTrace::Outcome::DepthFailed:
+            return "fails the depth test";
+        case FragmentTrace::Outcome::Discarded:
+            return "discarded";
     }
     return "?";
 }
@@ -35,16 +38,25 @@ void text_invocation(std::string& out, const InvocationTrace& t) {
     for (const TraceStep& s : t.steps) {
         std::string pad(size_t(4 + 2 * s.depth), ' ');
         switch (s.kind) {
-        case TraceStep::Kind::Statement: out += pad + s.where + "\n"; break;
-        case TraceStep::Kind::Assign:
-            out += fmt::format("{}    {} = {}\n", pad, s.name, format_value(s.value, s.type));
-            break;
-        case TraceStep::Kind::Branch:
-            out += fmt::format("{}{}  if: {}\n", pad, s.where, s.taken ? "true, then-branch" : "false, else-branch");
-            break;
-        case TraceStep::Kind::Loop: out += fmt::format("{}{}  loop iteration {}\n", pad, s.where, s.iteration); break;
-        case TraceStep::Kind::Jump: out += fmt::format("{}{}  {}\n", pad, s.where, s.name); break;
-        case TraceStep::Kind::Call: out += fmt::format("{}{}  call {}\n", pad, s.where, s.name); break;
+            case TraceStep::Kind::Statement:
+                out += pad + s.where + "\n";
+                break;
+            case TraceStep::Kind::Assign:
+                out += fmt::format("{}    {} = {}\n", pad, s.name, format_value(s.value, s.type));
+                break;
+            case TraceStep::Kind::Branch:
+                out +=
+                    fmt::format("{}{}  if: {}\n", pad, s.where, s.taken ? "true, then-branch" : "false, else-branch");
+                break;
+            case TraceStep::Kind::Loop:
+                out += fmt::format("{}{}  loop iteration {}\n", pad, s.where, s.iteration);
+                break;
+            case TraceStep::Kind::Jump:
+                out += fmt::format("{}{}  {}\n", pad, s.where, s.name);
+                break;
+            case TraceStep::Kind::Call:
+                out += fmt::format("{}{}  call {}\n", pad, s.where, s.name);
+                break;
         }
     }
     if (t.truncated) out += "    ... (stopped: too many steps, or the loop cap)\n";
@@ -58,8 +70,10 @@ std::string json_string(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
         if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int(c));
-        else out += c;
+        if (static_cast<unsigned char>(c) < 0x20)
+            out += fmt::format("\\u{:04x}", int(c));
+        else
+            out += c;
     }
     return out + "\"";
 }
@@ -91,7 +105,8 @@ std::string json_step(const TraceStep& s) {
     std::string out = fmt::format("{{\"kind\":\"{}\",\"depth\":{}", kKinds[size_t(s.kind)], s.depth);
     if (!s.where.empty()) out += ",\"where\":" + json_string(s.where);
     if (!s.name.empty()) out += ",\"name\":" + json_string(s.name);
-    if (s.kind == TraceStep::Kind::Assign) out += ",\"type\":" + json_string(s.type) + ",\"value\":" + json_values(s.value);
+    if (s.kind == TraceStep::Kind::Assign)
+        out += ",\"type\":" + json_string(s.type) + ",\"value\":" + json_values(s.value);
     if (s.kind == TraceStep::Kind::Branch) out += fmt::format(",\"taken\":{}", s.taken);
     if (s.kind == TraceStep::Kind::Loop) out += fmt::format(",\"iteration\":{}", s.iteration);
     return out + "}";
@@ -104,10 +119,10 @@ std::string json_invocation(const InvocationTrace& t) {
     if (t.first_nan)
         nan = fmt::format("{{\"where\":{},\"op\":{},\"result\":{}}}", json_string(t.first_nan->where),
                           json_string(t.first_nan->op), json_values(t.first_nan->result));
-    return fmt::format("{{\"inputs\":{},\"uniforms\":{},\"steps\":{}],\"outputs\":{},\"discarded\":{},"
-                       "\"truncated\":{},\"first_nan\":{}}}",
-                       json_named(t.inputs), json_named(t.uniforms), steps, json_named(t.outputs), t.discarded,
-                       t.truncated, nan);
+    return fmt::format(
+        "{{\"inputs\":{},\"uniforms\":{},\"steps\":{}],\"outputs\":{},\"discarded\":{},"
+        "\"truncated\":{},\"first_nan\":{}}}",
+        json_named(t.inputs), json_named(t.uniforms), steps, json_named(t.outputs), t.discarded, t.truncated, nan);
 }
 
 }  // namespace
@@ -117,9 +132,10 @@ std::string format_text(const PixelTrace& t) {
     if (t.fragments.empty() && t.vertices.empty()) return fmt::format("pixel {},{}: no fragment\n", t.x, t.y);
     for (size_t i = 0; i < t.fragments.size(); ++i) {
         const FragmentTrace& f = t.fragments[i];
-        out += fmt::format("fragment {} at pixel {},{}: draw {}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
-                           i, t.x, t.y, f.draw, f.primitive, f.vertices[0], f.vertices[1], f.vertices[2],
-                           f.front ? "front" : "back", f.depth, outcome_text(f.outcome));
+        out +=
+            fmt::format("fragment {} at pixel {},{}: draw {}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
+                        i, t.x, t.y, f.draw, f.primitive, f.vertices[0], f.vertices[1], f.vertices[2],
+                        f.front ? "front" : "back", f.depth, outcome_text(f.outcome));
         text_invocation(out, f.trace);
         if (!f.matches_render) out += "  WARNING: the replay's outputs differ from the render's\n";
     }
@@ -135,11 +151,11 @@ std::string format_json(const PixelTrace& t) {
     std::string fragments = "[";
     for (size_t i = 0; i < t.fragments.size(); ++i) {
         const FragmentTrace& f = t.fragments[i];
-        fragments += fmt::format("{}{{\"draw\":{},\"primitive\":{},\"vertices\":[{},{},{}],\"front\":{},\"depth\":{},"
-                                 "\"outcome\":\"{}\",\"matches_render\":{},\"rendered\":{},\"trace\":{}}}",
-                                 i ? ",\n" : "\n", f.draw, f.primitive, f.vertices[0], f.vertices[1], f.vertices[2],
-                                 f.front, f.depth, outcome_key(f.outcome), f.matches_render, json_named(f.rendered),
-                                 json_invocation(f.trace));
+        fragments += fmt::format(
+            "{}{{\"draw\":{},\"primitive\":{},\"vertices\":[{},{},{}],\"front\":{},\"depth\":{},"
+            "\"outcome\":\"{}\",\"matches_render\":{},\"rendered\":{},\"trace\":{}}}",
+            i ? ",\n" : "\n", f.draw, f.primitive, f.vertices[0], f.vertices[1], f.vertices[2], f.front, f.depth,
+            outcome_key(f.outcome), f.matches_render, json_named(f.rendered), json_invocation(f.trace));
     }
     std::string vertices = "[";
     for (size_t i = 0; i < t.vertices.size(); ++i)

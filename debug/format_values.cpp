@@ -13,17 +13,18 @@ std::string type_name(const ir::ValueType& t) {
     return t.kind == ir::Kind::F32 ? "float" : t.kind == ir::Kind::I32 ? "int" : "bool";
 }
 
-std::string binding_type(const ir::Binding& b) {
-    return type_name(ir::ValueType{b.kind, 1, uint8_t(b.count), false});
-}
+std::string binding_type(const ir::Binding& b) { return type_name(ir::ValueType{b.kind, 1, uint8_t(b.count), false}); }
 
 namespace {
 
 std::string scalar(const Values& v, double x) {
     switch (v.kind) {
-    case ir::Kind::F32: return v.wide ? fmt::format("{}", x) : fmt::format("{}", float(x));
-    case ir::Kind::I32: return fmt::format("{}", int64_t(x));
-    case ir::Kind::Bool: return x != 0 ? "true" : "false";
+        case ir::Kind::F32:
+            return v.wide ? fmt::format("{}", x) : fmt::format("{}", float(x));
+        case ir::Kind::I32:
+            return fmt::format("{}", int64_t(x));
+        case ir::Kind::Bool:
+            return x != 0 ? "true" : "false";
     }
     return "?";
 }

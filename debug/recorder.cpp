@@ -11,7 +11,8 @@ namespace glslrun::debug {
 ShaderNames::ShaderNames(const ir::Shader& shader, const ir::Program& program)
     : shader_(shader), program_(program), var_of_(shader.regs.size(), -1), uniform_of_(program.uniform_words, -1) {
     vars_ = shader.variables;
-    for (const ir::Binding& b : shader.outputs) vars_.push_back(ir::Variable{b.name, "", binding_type(b), b.first, b.count});
+    for (const ir::Binding& b : shader.outputs)
+        vars_.push_back(ir::Variable{b.name, "", binding_type(b), b.first, b.count});
     for (size_t v = 0; v < vars_.size(); ++v) {
         const ir::Variable& var = vars_[v];
         for (uint32_t c = 0; c < var.count && var.first + c < var_of_.size(); ++c) var_of_[var.first + c] = int(v);
@@ -44,7 +45,8 @@ NamedValue uniform_value(const ir::Uniform& u, const uint32_t* store) {
     if (u.is_array) out.type += fmt::format("[{}]", u.array_size);
     for (uint32_t w = 0; w < u.type.components() * u.array_size; ++w) {
         uint32_t word = store[u.slot + w];
-        out.value.c.push_back(u.type.kind == ir::Kind::F32 ? double(std::bit_cast<float>(word)) : double(int32_t(word)));
+        out.value.c.push_back(u.type.kind == ir::Kind::F32 ? double(std::bit_cast<float>(word))
+                                                           : double(int32_t(word)));
     }
     return out;
 }
@@ -208,7 +210,8 @@ void LaneRecorder::leave(const ir::Node& n) {
 void LaneRecorder::finish(const rt::LaneReader* regs) {
     if (regs) regs_ = regs;
     if (regs_) flush_assignments();
-    for (int u : uniforms_read_) trace.uniforms.push_back(uniform_value(names_.program().uniforms[size_t(u)], uniforms_));
+    for (int u : uniforms_read_)
+        trace.uniforms.push_back(uniform_value(names_.program().uniforms[size_t(u)], uniforms_));
 }
 
 }  // namespace glslrun::debug

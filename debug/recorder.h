@@ -65,7 +65,7 @@ private:
     std::vector<const ir::Variable*> dirty_;
     const rt::LaneReader* regs_ = nullptr;
     std::vector<int> uniforms_read_;
-    std::vector<bool> calls_;  // per Call being run: whether the lane entered it
+    std::vector<bool> calls_;                     // per Call being run: whether the lane entered it
     std::vector<std::string> functions_{"main"};  // the lane's call stack
 };
 

@@ -35,7 +35,7 @@ struct TraceStep {
         Call,       // `name`: a call of that function starts; depth + 1 until it returns
     };
     Kind kind = Kind::Statement;
-    int depth = 0;  // call depth
+    int depth = 0;      // call depth
     std::string where;  // "file:line"
     std::string name;
     std::string type;
@@ -47,7 +47,7 @@ struct TraceStep {
 // The first NaN or infinity of an invocation: the instruction that made it.
 struct NanEvent {
     std::string where;
-    std::string op;                     // the IR operation, e.g. "fdiv"
+    std::string op;  // the IR operation, e.g. "fdiv"
     std::vector<Values> operands;
     Values result;
     std::string variable;  // the variable it was written to, if any

@@ -1,7 +1,8 @@
 // An observer of draw() for the shader debugger (debug/: trace, --find-nan),
 // set in Program::State::probe. draw() and the fragment stage test the pointer
-// once per draw and per batch; the interpreter knows nothing of it. A probe sees one thread's work only when the draw runs on
-// one thread (ExecOptions::threads = 1), which also gives tile order.
+// once per draw and per batch; the interpreter knows nothing of it. A probe
+// sees all the work only when the draw runs on one thread
+// (ExecOptions::threads = 1), which also gives tile order.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -24,7 +25,7 @@ struct ProbeBatch {
     const std::array<int, rt::kLanes>& x;
     const std::array<int, rt::kLanes>& y;
     const std::array<float, rt::kLanes>& z;  // window depth
-    const FsPrimitive* const* quad_prim;    // per quad
+    const FsPrimitive* const* quad_prim;     // per quad
     rt::LaneMask covered = 0;
 };
 

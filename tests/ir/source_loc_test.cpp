@@ -35,22 +35,23 @@ std::set<int> lines_of(const ir::Block& block, ir::Op op) {
 
 TEST_CASE("inlined calls keep the callee's lines, hoisted code its own", "[ir][loc]") {
     ir::Shader s = fragment({{"f.frag",
-                              "uniform float k;\n"                       // 1
-                              "// the multiply below is twice's\n"       // 2
-                              "float twice(float x) {\n"                 // 3
-                              "    return x * 2.0;\n"                    // 4
-                              "}\n"                                      // 5
-                              "void main() {\n"                          // 6
-                              "    float u = k + 1.0;\n"                 // 7
+                              "uniform float k;\n"                                     // 1
+                              "// the multiply below is twice's\n"                     // 2
+                              "float twice(float x) {\n"                               // 3
+                              "    return x * 2.0;\n"                                  // 4
+                              "}\n"                                                    // 5
+                              "void main() {\n"                                        // 6
+                              "    float u = k + 1.0;\n"                               // 7
                               "    gl_FragColor = vec4(twice(gl_FragCoord.x) / u);\n"  // 8
                               "}\n"}});
     REQUIRE(s.sources == std::vector<std::string>{"f.frag"});
     REQUIRE_FALSE(s.variables.empty());
     bool named_u = false;
-    for (const ir::Variable& v : s.variables) named_u = named_u || (v.name == "u" && v.function == "main" && v.count == 1);
+    for (const ir::Variable& v : s.variables)
+        named_u = named_u || (v.name == "u" && v.function == "main" && v.count == 1);
     CHECK(named_u);
     REQUIRE(ir::optimize(s, {}).empty());
-    CHECK(lines_of(s.body, ir::Op::fmul) == std::set<int>{4});    // twice's multiply, inlined into main
+    CHECK(lines_of(s.body, ir::Op::fmul) == std::set<int>{4});      // twice's multiply, inlined into main
     CHECK(lines_of(s.prologue, ir::Op::fadd) == std::set<int>{7});  // k + 1.0, hoisted
     CHECK(lines_of(s.body, ir::Op::fdiv) == std::set<int>{8});
     CHECK(s.variables.empty());  // regalloc renumbered the registers

@@ -2,7 +2,9 @@
 #pragma once
 #include "glslrun/glslrun.h"
 
-namespace CLI { class App; }
+namespace CLI {
+class App;
+}
 
 namespace glslrun::cli {
 
