@@ -24,8 +24,9 @@ ShaderNames::ShaderNames(const ir::Shader& shader, const ir::Program& program)
     }
 }
 
-std::string ShaderNames::where(const ir::SourceLoc& loc) const {
+std::string ShaderNames::where(const ir::SourceLoc& loc, bool column) const {
     const std::string& file = loc.source < shader_.sources.size() ? shader_.sources[loc.source] : std::string();
+    if (column && loc.column) return fmt::format("{}:{}:{}", file, loc.line, loc.column);
     return fmt::format("{}:{}", file, loc.line);
 }
 
@@ -93,7 +94,8 @@ void LaneRecorder::add(TraceStep step) {
     }
     // "file:21" then "file:21  if: ..." says the same twice.
     if (step.kind != TraceStep::Kind::Statement && step.kind != TraceStep::Kind::Assign && !trace.steps.empty() &&
-        trace.steps.back().kind == TraceStep::Kind::Statement && trace.steps.back().where == step.where)
+        trace.steps.back().kind == TraceStep::Kind::Statement &&
+        (step.where == trace.steps.back().where || step.where.starts_with(trace.steps.back().where + ":")))
         trace.steps.pop_back();
     step.depth = depth_;
     trace.steps.push_back(std::move(step));
@@ -155,7 +157,7 @@ void LaneRecorder::branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask t
     if (regs_) flush_assignments();
     TraceStep s;
     s.kind = TraceStep::Kind::Branch;
-    s.where = names_.where(n.loc);
+    s.where = names_.where(n.loc, true);  // the column tells apart the ifs of `a && b` on one line
     s.taken = on(taken);
     add(std::move(s));
     last_ = n.loc;  // the branch's line is shown: its statements there need no line of their own

@@ -16,7 +16,8 @@ namespace glslrun::debug {
 class ShaderNames {
 public:
     ShaderNames(const ir::Shader& shader, const ir::Program& program);
-    std::string where(const ir::SourceLoc& loc) const;
+    // "file:line", with ":column" when asked and known.
+    std::string where(const ir::SourceLoc& loc, bool column = false) const;
     // The variable (or shader output) register r belongs to, or null.
     const ir::Variable* variable(ir::Reg r) const {
         return r < var_of_.size() && var_of_[r] >= 0 ? &vars_[size_t(var_of_[r])] : nullptr;
