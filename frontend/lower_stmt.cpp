@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "frontend/call_graph.h"
 #include "frontend/lower.h"
 
 namespace glslrun::frontend {
@@ -178,6 +179,12 @@ Reg StageLowering::condition(gl::TIntermTyped* n) {
 }
 
 void StageLowering::selection(gl::TIntermSelection* n) {
+    // Code that constant folding removes is not lowered: its calls may have
+    // no body (call_graph.h).
+    if (int branch = constant_branch(*n); branch >= 0) {
+        stmt(branch ? n->getTrueBlock() : n->getFalseBlock());
+        return;
+    }
     Reg c = condition(n->getCondition());
     ir::Block then_block = build([&] { stmt(n->getTrueBlock()); });
     ir::Block else_block = build([&] { stmt(n->getFalseBlock()); });

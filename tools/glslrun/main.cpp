@@ -27,7 +27,7 @@ namespace {
 using namespace glslrun;
 namespace pg = glslrun::piglit;
 
-constexpr const char* kVersion = "glslrun 0.1 (GLSL 1.10/1.20 on the CPU)";
+constexpr const char* kVersion = "glslrun " GLSLRUN_VERSION_STRING " (GLSL 1.10/1.20 on the CPU)";
 
 std::optional<std::string> read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
