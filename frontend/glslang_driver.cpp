@@ -259,6 +259,9 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
     UniformTable uniforms;
     StageLowering vlow(ir::Stage::Vertex, uniforms, diags, units[0].first_file());
     StageLowering flow(ir::Stage::Fragment, uniforms, diags, units[1].first_file());
+    for (int stage = 0; stage < 2; ++stage)
+        for (const ShaderSource& source : units[stage].sources)
+            (stage == 0 ? vlow : flow).shader.sources.push_back(source.name.empty() ? "(fixed function)" : source.name);
     vlow.run(units[0].program->getIntermediate(EShLangVertex));
     flow.run(units[1].program->getIntermediate(EShLangFragment));
     LinkInput li{&vlow, &flow, !vs.empty(), units[0].first_file(), units[1].first_file()};

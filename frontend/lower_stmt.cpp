@@ -1,4 +1,7 @@
 // Statements and control flow, plus the emission helpers.
+#include <algorithm>
+#include <cstdlib>
+
 #include <fmt/format.h>
 
 #include "frontend/call_graph.h"
@@ -30,6 +33,7 @@ void StageLowering::emit(const ir::Instr& in) {
 }
 
 void StageLowering::emit_node(ir::Node n) {
+    n.loc = loc_;
     n.loc.line = line_;
     cur_->push_back(std::move(n));
 }
@@ -117,7 +121,22 @@ Value StageLowering::fail(TIntermNode* n, const std::string& message, const gl::
 }
 
 void StageLowering::set_line(TIntermNode* n) {
-    if (n && n->getLoc().line > 0) line_ = n->getLoc().line;
+    if (!n || n->getLoc().line <= 0) return;
+    const gl::TSourceLoc& at = n->getLoc();
+    line_ = at.line;
+    // The driver names the stage's sources "#0", "#1"... (internal_source_name).
+    const char* name = at.getFilename();
+    unsigned source = name && name[0] == '#' ? unsigned(std::strtoul(name + 1, nullptr, 10)) : 0;
+    if (source >= shader.sources.size()) source = 0;
+    loc_ = ir::SourceLoc{line_, uint16_t(std::clamp(at.column, 0, 0xffff)), uint16_t(source)};
+}
+
+// For the trace (ir::Variable): locals, parameters and register globals.
+void StageLowering::name_variable(const std::string& name, const std::string& function, const gl::TType& type,
+                                  Reg first) {
+    if (name.empty() || name.starts_with("anon@") || name.starts_with("tempArg")) return;
+    uint32_t count = flat_size(type);
+    shader.variables.push_back(ir::Variable{name, function, type_signature(type), first, count});
 }
 
 // ---------------------------------------------------------- statements ---
@@ -182,6 +201,7 @@ void StageLowering::loop(gl::TIntermLoop* n) {
         ir::Node brk;
         brk.kind = ir::NodeKind::Break;
         ir::Block then_block;
+        brk.loc = loc_;
         brk.loc.line = line_;
         then_block.push_back(brk);
         emit_if(nc, std::move(then_block), {});

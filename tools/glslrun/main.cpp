@@ -5,6 +5,7 @@
 //      --error-report DIR measures the mode's error against reference)
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
+//   glslrun trace --pixel X,Y a.vert a.frag scene.toml   the shader debugger (docs/debugging.md)
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
 #include "render_command.h"
+#include "trace_command.h"
 
 namespace {
 
@@ -179,5 +181,7 @@ int program_cli(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+    if (argc >= 2 && std::string_view(argv[1]) == "trace")
+        return glslrun::cli::trace_main(argc - 1, argv + 1, add_precision_option);
     return program_cli(argc, argv);
 }
