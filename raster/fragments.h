@@ -12,7 +12,7 @@
 #include "glslrun/glslrun.h"
 #include "ir/ir.h"
 #include "raster/triangle.h"
-#include "runtime/interpreter.h"
+#include "runtime/backend.h"
 
 namespace glslrun::raster {
 
@@ -95,7 +95,7 @@ private:
     const Program& program_;
     const GLState& gl_;
     Framebuffer& fb_;
-    std::unique_ptr<rt::Interpreter> interp_;
+    std::unique_ptr<rt::Executor> interp_;
     std::vector<InputPlan> inputs_;
     std::vector<VaryingSlot> varyings_;
     uint32_t attr_count_ = 0;

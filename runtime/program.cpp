@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "ir/passes.h"
+#include "runtime/backend_cache.h"
 #include "runtime/program_state.h"
 
 #if __has_include("frontend/compile.h")
@@ -15,7 +16,7 @@
 
 namespace glslrun {
 
-Program::Program() : state_(std::make_unique<State>()) {}
+Program::Program() : state_(std::make_unique<State>()) { state_->backends = std::make_shared<rt::BackendCache>(); }
 Program::Program(Program&&) noexcept = default;
 Program& Program::operator=(Program&&) noexcept = default;
 Program::~Program() = default;

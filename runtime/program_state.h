@@ -11,6 +11,7 @@
 
 namespace glslrun {
 namespace raster { struct DrawScratch; }
+namespace rt { class BackendCache; }
 
 struct Program::State {
     ir::Program ir;
@@ -23,6 +24,9 @@ struct Program::State {
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
     // them, except in the error report's ablation (tools/scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
+    // The shaders compiled by the backends (runtime/backend_cache.h), made
+    // with the State; shared_ptr for the same reason as draw_scratch.
+    std::shared_ptr<rt::BackendCache> backends;
 };
 
 }  // namespace glslrun

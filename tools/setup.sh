@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
-          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev)
+          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev)
 [ "$mode" = test ] && packages+=(piglit python3)  # python3: ctest extremes_generated
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,181 @@
+// The JIT's LLVM set-up: one ORC LLJIT per compiled shader (its code lives
+// as long as the program's cache keeps it), a target machine for the
+// baseline x86-64 ISA or AVX2 (x86-64-v3) chosen as the interpreter chooses
+// its kernels, never contracting a * b + c into an FMA; and the executor
+// that runs the generated functions over its own register file.
+#include "runtime/jit/jit.h"
+
+#include <chrono>
+#include <deque>
+#include <mutex>
+#include <functional>
+
+#include <fmt/format.h>
+#include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/Verifier.h>
+#include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/Host.h>
+#include <llvm/Support/TargetSelect.h>
+
+#include "runtime/aligned_words.h"
+#include "runtime/jit/codegen.h"
+
+namespace glslrun::rt::jit {
+
+namespace {
+
+void initialise_llvm() {
+    static std::once_flag once;  // LLVM's target registry is process-wide
+    std::call_once(once, [] {
+        llvm::InitializeNativeTarget();
+        llvm::InitializeNativeTargetAsmPrinter();
+    });
+}
+
+// Whether some function can reach itself through Call nodes (GLSL forbids
+// it; the emitter writes callees out in place, so it needs a finite tree).
+bool calls_recursively(const ir::Shader& shader) {
+    std::vector<int> state(shader.functions.size(), 0);  // 0 new, 1 on the path, 2 done
+    std::function<bool(const ir::Block&)> visit = [&](const ir::Block& block) {
+        for (const ir::Node& n : block) {
+            if (n.kind == ir::NodeKind::Call && n.callee < shader.functions.size()) {
+                int& s = state[n.callee];
+                if (s == 1) return true;
+                if (s == 0) {
+                    s = 1;
+                    if (visit(shader.functions[n.callee].body)) return true;
+                    s = 2;
+                }
+            }
+            if (visit(n.body) || visit(n.alt)) return true;
+        }
+        return false;
+    };
+    return visit(shader.body) || visit(shader.prologue);
+}
+
+llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
+    llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
+    builder.setCPU(avx2 ? "x86-64-v3" : "x86-64");
+    builder.setCodeGenOptLevel(llvm::CodeGenOpt::Default);
+    builder.getOptions().AllowFPOpFusion = llvm::FPOpFusion::Strict;
+    return builder;
+}
+
+void optimise(llvm::Module& module, llvm::TargetMachine& machine) {
+    llvm::LoopAnalysisManager loops;
+    llvm::FunctionAnalysisManager functions;
+    llvm::CGSCCAnalysisManager cgscc;
+    llvm::ModuleAnalysisManager modules;
+    llvm::PassBuilder builder(&machine);
+    builder.registerModuleAnalyses(modules);
+    builder.registerCGSCCAnalyses(cgscc);
+    builder.registerFunctionAnalyses(functions);
+    builder.registerLoopAnalyses(loops);
+    builder.crossRegisterProxies(loops, functions, cgscc, modules);
+    builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O2).run(module, modules);
+}
+
+class JitShader final : public CompiledShader {
+public:
+    std::unique_ptr<llvm::orc::LLJIT> jit;
+    std::deque<CallOut> call_outs;  // the generated code points at these
+    ShaderFn main = nullptr, prologue = nullptr;
+    uint32_t reg_count = 0;
+
+    std::unique_ptr<Executor> instantiate(const ExecParams& params) const override;
+};
+
+class JitExecutor final : public Executor {
+public:
+    JitExecutor(const JitShader& code, const ExecParams& p)
+        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms) {
+        ctx_.max_loop_iterations = p.max_loop_iterations;
+        ctx_.machine.uniforms = p.uniforms;
+        ctx_.machine.textures = p.textures;
+        ctx_.machine.regs = regs_.data;
+        ctx_.reg_count = code.reg_count;
+        ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
+        code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
+    }
+    uint32_t* lanes(ir::Reg r) override {
+        return regs_.data + size_t(r == ir::kNoReg || r >= code_.reg_count ? code_.reg_count : r) * kLanes;
+    }
+    bool run(LaneMask live, RunError* error) override {
+        ir::FlushDenormals ftz;
+        const Failure failure = Failure(code_.main(&ctx_, regs_.data, uniforms_, live));
+        if (failure == Failure::None) return true;
+        if (error) {
+            error->line = ctx_.error_line;
+            error->message = failure == Failure::LoopCap
+                                 ? fmt::format("loop exceeded {} iterations", ctx_.max_loop_iterations)
+                                 : "call to a missing function";
+        }
+        return false;
+    }
+    LaneMask alive() const override { return ctx_.alive; }
+    Backend backend() const override { return Backend::Jit; }
+
+private:
+    const JitShader& code_;
+    AlignedWords<uint32_t> regs_;
+    const uint32_t* uniforms_;
+    Context ctx_;
+};
+
+std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const {
+    return std::make_unique<JitExecutor>(*this, params);
+}
+
+}  // namespace
+
+std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
+                                        bool avx2, CompileStats* stats) {
+    if (precision == Precision::Reference || calls_recursively(shader)) return nullptr;
+    const auto start = std::chrono::steady_clock::now();
+    initialise_llvm();
+    auto code = std::make_unique<JitShader>();
+    code->reg_count = uint32_t(shader.regs.size());
+
+    auto context = std::make_unique<llvm::LLVMContext>();
+    auto module = std::make_unique<llvm::Module>("shader", *context);
+    auto machine = target_for(avx2).createTargetMachine();
+    if (!machine) {
+        llvm::consumeError(machine.takeError());
+        return nullptr;
+    }
+    module->setDataLayout((*machine)->createDataLayout());
+    module->setTargetTriple((*machine)->getTargetTriple().str());
+    {
+        Emitter emitter(*context, *module, shader, precision, fast_ops, avx2, code->call_outs);
+        emitter.define("glslrun_main", shader.body);
+        emitter.define("glslrun_prologue", shader.prologue);
+    }
+    if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
+    optimise(*module, **machine);
+
+    auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
+    if (!jit) {
+        llvm::consumeError(jit.takeError());
+        return nullptr;
+    }
+    code->jit = std::move(*jit);
+    if (auto err = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
+        llvm::consumeError(std::move(err));
+        return nullptr;
+    }
+    for (auto [name, fn] : {std::pair{"glslrun_main", &code->main}, std::pair{"glslrun_prologue", &code->prologue}}) {
+        auto symbol = code->jit->lookup(name);
+        if (!symbol) {
+            llvm::consumeError(symbol.takeError());
+            return nullptr;
+        }
+        *fn = symbol->toPtr<ShaderFn>();
+    }
+    if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return code;
+}
+
+}  // namespace glslrun::rt::jit
