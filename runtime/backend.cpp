@@ -51,23 +51,28 @@ private:
 
 }  // namespace
 
+std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds) {
+    if (llvm_seconds) *llvm_seconds = 0;
+#ifdef GLSLRUN_HAVE_JIT
+    if (backend == Backend::Jit) {
+        jit::CompileStats stats;
+        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, &stats);
+        if (llvm_seconds) *llvm_seconds = stats.seconds;
+        if (code) return code;
+    }
+#endif
+    return std::make_unique<InterpretedShader>(shader);
+}
+
 const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key) {
     std::lock_guard lock(mutex_);
     std::unique_ptr<CompiledShader>& slot = shaders_[key];
-    if (slot) return *slot;
-#ifdef GLSLRUN_HAVE_JIT
-    if (key.backend == Backend::Jit) {
-        jit::CompileStats stats;
-        slot = jit::compile(shader, key.precision, key.fast_ops, key.avx2, &stats);
-        if (slot) {
-            jit_compile_seconds_ += stats.seconds;
-            return *slot;
-        }
-        // LLVM could not compile it (jit::compile says why in debug builds):
-        // the interpreter computes the same bits.
+    if (!slot) {
+        double seconds = 0;
+        slot = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+        jit_compile_seconds_ += seconds;
     }
-#endif
-    slot = std::make_unique<InterpretedShader>(shader);
     return *slot;
 }
 

@@ -81,6 +81,14 @@ public:
     virtual std::unique_ptr<Executor> instantiate(const ExecParams& params) const = 0;
 };
 
+// `shader` compiled by `backend` (Interp or Jit) for `precision`,
+// `fast_ops` and the vector ISA (`avx2`, else baseline x86-64). The JIT
+// declines what it cannot take (Reference, a recursive call graph, a build
+// without it): the interpreter then serves, with the same bits.
+// *llvm_seconds (may be null) receives LLVM's compile time.
+std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr);
+
 // An executor of `program`'s shader for `stage`, from the code cached on the
 // program (compiled at the first call for its key; thread-safe). The
 // program's uniforms, options and `textures` as the draw has them.

@@ -201,9 +201,11 @@ void Emitter::emit_call(const ir::Block& body) {
     store_mask(exec_, remaining(entry));
 }
 
-// Returns from the function with `failure`; the insertion point is left in
+// Returns from the function with `failure` (alive() as the interpreter
+// leaves it); the insertion point is left in
 // a fresh block that nothing reaches.
 void Emitter::emit_failure(Failure failure, int line) {
+    b_.CreateStore(load_mask(alive_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kAliveOffset));
     b_.CreateStore(b_.getInt32(line), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kErrorLineOffset));
     b_.CreateRet(b_.getInt32(int32_t(failure)));
     b_.SetInsertPoint(new_block("after_failure"));
