@@ -83,8 +83,8 @@ public:
 
 // `shader` compiled by `backend` (Interp or Jit) for `precision`,
 // `fast_ops` and the vector ISA (`avx2`, else baseline x86-64). The JIT
-// declines what it cannot take (Reference, a recursive call graph, a build
-// without it): the interpreter then serves, with the same bits.
+// declines what it cannot take (Reference, a recursive call graph, calls
+// that expand to too much code, a build without it): the interpreter then serves, with the same bits.
 // *llvm_seconds (may be null) receives LLVM's compile time.
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr);

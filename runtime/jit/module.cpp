@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <deque>
 #include <mutex>
-#include <functional>
 
 #include <fmt/format.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
@@ -42,26 +41,44 @@ void initialise_llvm() {
     });
 }
 
-// Whether some function can reach itself through Call nodes (GLSL forbids
-// it; the emitter writes callees out in place, so it needs a finite tree).
-bool calls_recursively(const ir::Shader& shader) {
-    std::vector<int> state(shader.functions.size(), 0);  // 0 new, 1 on the path, 2 done
-    std::function<bool(const ir::Block&)> visit = [&](const ir::Block& block) {
-        for (const ir::Node& n : block) {
-            if (n.kind == ir::NodeKind::Call && n.callee < shader.functions.size()) {
-                int& s = state[n.callee];
-                if (s == 1) return true;
-                if (s == 0) {
-                    s = 1;
-                    if (visit(shader.functions[n.callee].body)) return true;
-                    s = 2;
-                }
-            }
-            if (visit(n.body) || visit(n.alt)) return true;
+// The emitter writes callees out in place (GLSL has no recursion), so the
+// JIT takes a shader only if its calls expand to at most this many nodes:
+// piglit's glsl-*-inline-explosion calls grow exponentially, and the
+// interpreter, which runs calls as calls, serves such shaders.
+constexpr uint64_t kMaxExpandedNodes = 20000;
+
+// The node count of `block` with its calls expanded, memoized per function;
+// UINT64_MAX for a recursive call graph or past the limit.
+class ExpandedSize {
+public:
+    explicit ExpandedSize(const ir::Shader& s) : shader_(s), size_(s.functions.size(), kUnknown) {}
+    uint64_t of(const ir::Block& block) {
+        uint64_t n = 0;
+        for (const ir::Node& node : block) {
+            n = add(add(add(n, 1), of(node.body)), of(node.alt));
+            if (node.kind == ir::NodeKind::Call && node.callee < shader_.functions.size()) n = add(n, of_function(node.callee));
+            if (n == kTooLarge) return n;
         }
-        return false;
-    };
-    return visit(shader.body) || visit(shader.prologue);
+        return n;
+    }
+
+private:
+    static constexpr uint64_t kUnknown = UINT64_MAX - 1, kOnPath = UINT64_MAX - 2, kTooLarge = UINT64_MAX;
+    static uint64_t add(uint64_t a, uint64_t b) { return a > kMaxExpandedNodes || b > kMaxExpandedNodes || a + b > kMaxExpandedNodes ? kTooLarge : a + b; }
+    uint64_t of_function(uint32_t f) {
+        if (size_[f] == kOnPath) return kTooLarge;  // recursion
+        if (size_[f] != kUnknown) return size_[f];
+        size_[f] = kOnPath;
+        return size_[f] = of(shader_.functions[f].body);
+    }
+    const ir::Shader& shader_;
+    std::vector<uint64_t> size_;
+};
+
+bool jit_takes(const ir::Shader& shader) {
+    ExpandedSize size(shader);
+    const uint64_t body = size.of(shader.body), prologue = size.of(shader.prologue);
+    return body <= kMaxExpandedNodes && prologue <= kMaxExpandedNodes && body + prologue <= kMaxExpandedNodes;
 }
 
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
@@ -157,7 +174,7 @@ std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const
 
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                         bool avx2, CompileStats* stats) {
-    if (precision == Precision::Reference || calls_recursively(shader)) return nullptr;
+    if (precision == Precision::Reference || !jit_takes(shader)) return nullptr;
     const auto start = std::chrono::steady_clock::now();
     initialise_llvm();
     auto code = std::make_unique<JitShader>();
