@@ -1,9 +1,7 @@
 // The backend factory and the per-program cache of compiled shaders.
 #include "runtime/backend.h"
 
-#include <map>
-#include <mutex>
-#include <tuple>
+#include <system_error>
 
 #include "runtime/backend_cache.h"
 #include "runtime/interp_kernels.h"
@@ -65,8 +63,12 @@ std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend
     return std::make_unique<InterpretedShader>(shader);
 }
 
-const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key) {
-    std::lock_guard lock(mutex_);
+BackendCache::~BackendCache() {
+    for (std::thread& t : threads_) t.join();
+}
+
+// Called with the lock held.
+const CompiledShader& BackendCache::compile_now(const ir::Shader& shader, const Key& key) {
     std::unique_ptr<CompiledShader>& slot = shaders_[key];
     if (!slot) {
         double seconds = 0;
@@ -74,6 +76,37 @@ const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key
         jit_compile_seconds_ += seconds;
     }
     return *slot;
+}
+
+const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key, bool wait) {
+    std::unique_lock lock(mutex_);
+    if (auto found = shaders_.find(key); found != shaders_.end() && found->second) return *found->second;
+    if (key.backend != Backend::Jit) return compile_now(shader, key);
+    if (compiling_[key]) {
+        if (wait) {
+            compiled_.wait(lock, [&] { return shaders_[key] != nullptr; });
+            return *shaders_[key];
+        }
+    } else if (!wait) {
+        try {
+            threads_.emplace_back([this, &shader, key] {
+                double seconds = 0;
+                auto code = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+                std::lock_guard done(mutex_);
+                shaders_[key] = std::move(code);
+                jit_compile_seconds_ += seconds;
+                compiled_.notify_all();
+            });
+            compiling_[key] = true;
+        } catch (const std::system_error&) {
+            return compile_now(shader, key);  // no thread to be had: compile here
+        }
+    } else {
+        return compile_now(shader, key);
+    }
+    Key interp = key;
+    interp.backend = Backend::Interp;
+    return compile_now(shader, interp);
 }
 
 double BackendCache::jit_compile_seconds() const {
@@ -89,7 +122,7 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
                       st.fast_ops};
     BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
                           params.fast_ops, cpu_has_avx2()};
-    return st.backends->get(shader, key).instantiate(params);
+    return st.backends->get(shader, key, program.exec.backend == Backend::Jit).instantiate(params);
 }
 
 }  // namespace glslrun::rt

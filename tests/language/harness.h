@@ -87,7 +87,7 @@ inline constexpr float kModeTolerance = 2e-5f;
 // GLSLRUN_LANG_PRECISION (reference|precise|fast; default precise): the mode
 // compile_or_fail gives every program.
 glslrun::Precision suite_precision();
-// GLSLRUN_LANG_BACKEND (interp|jit|auto; default auto): the backend.
+// GLSLRUN_LANG_BACKEND (interp|jit|auto; default jit where built in): the backend.
 glslrun::Backend suite_backend();
 
 // Fragment grid: quad q covers (x,y) (x+1,y) (x,y+1) (x+1,y+1), quads laid
