@@ -4,7 +4,7 @@
 Builds nothing: it runs BUILD/glslrun --bench and BUILD/glref --bench, interleaved
 (one run of every renderer of a case, then the next run), and prints per case the
 medians over the runs and the ratios. Both tools print the same `key value` lines
-(tools/scene/bench_report.h); this script only parses them.
+(scene/bench_report.h); this script only parses them.
 
     /usr/bin/python3 bench/side_by_side.py --build build [--runs 5] [--plot perf.png] [--only spot] [--first-threads 1,2]
     /usr/bin/python3 bench/side_by_side.py --build build --threads 1,2,4,8,16 --only "spot pixel"

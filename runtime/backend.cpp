@@ -116,7 +116,7 @@ double BackendCache::jit_compile_seconds() const {
 
 std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
                                         const GLState::TextureUnit* textures) {
-    const Program::State& st = program.state();
+    const Program::State& st = state_of(program);
     const ir::Shader& shader = stage == ir::Stage::Vertex ? st.ir.vertex : st.ir.fragment;
     ExecParams params{st.uniforms.data(), program.exec.max_loop_iterations, textures, program.exec.precision,
                       st.fast_ops};

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "tools/scene/render.h"
-#include "tools/scene/scene.h"
+#include "glslrun/scene/render.h"
+#include "glslrun/scene/scene.h"
 
 using namespace glslrun;
 

@@ -1,4 +1,4 @@
-// The `key value` lines of --bench (tools/scene/bench_report.h), which
+// The `key value` lines of --bench (scene/bench_report.h), which
 // bench/side_by_side.py parses for glslrun and glref alike.
 #include <catch2/catch.hpp>
 
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "tests/scene/key_lines.h"
-#include "tools/scene/bench_report.h"
+#include "scene/bench_report.h"
 
 using namespace glslrun::scene;
 

@@ -1,4 +1,4 @@
-// The error report's measuring side (tools/scene/error_report.h) on small
+// The error report's measuring side (scene/error_report.h) on small
 // scenes: coverage, the outputs it compares, its notes, its key lines.
 // The statistics themselves: float_error_test.cpp.
 #include <catch2/catch.hpp>
@@ -6,7 +6,7 @@
 #include <map>
 
 #include "tests/scene/key_lines.h"
-#include "tools/scene/error_report.h"
+#include "glslrun/scene/error_report.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

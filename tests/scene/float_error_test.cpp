@@ -1,4 +1,4 @@
-// The error report's statistics (tools/scene/float_error.h) on crafted
+// The error report's statistics (scene/float_error.h) on crafted
 // values and buffers: the ULP distance at its edges (zeros, denormals, Inf,
 // NaN, sign changes), the 8-bit differences, coverage and the worst pixel.
 #include <catch2/catch.hpp>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "tools/scene/float_error.h"
+#include "glslrun/scene/float_error.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

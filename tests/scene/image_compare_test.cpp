@@ -1,4 +1,4 @@
-// Image reading and comparison (tools/scene/image_compare.h): the measure the
+// Image reading and comparison (scene/image_compare.h): the measure the
 // reference tests and `glslrun --compare` rely on.
 #include <catch2/catch.hpp>
 
@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "tools/scene/image_compare.h"
+#include "glslrun/scene/image_compare.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

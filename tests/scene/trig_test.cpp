@@ -1,4 +1,4 @@
-// tools/scene/trig.h: the scene's own double sin/cos against long double libm
+// scene/trig.h: the scene's own double sin/cos against long double libm
 // (which is far more precise than a double), and exact at the quarter turns.
 #include <catch2/catch.hpp>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-#include "tools/scene/trig.h"
+#include "scene/trig.h"
 
 using glslrun::scene::sin_cos;
 

@@ -11,7 +11,7 @@
 #include "tools/glref/gl_context.h"
 #include "tools/glref/gl_textures.h"
 #include "tools/glref/gl_uniforms.h"
-#include "tools/scene/bench_report.h"
+#include "scene/bench_report.h"
 
 namespace glslrun::glref {
 

@@ -1,10 +1,10 @@
 // User uniforms of a scene, set on a Mesa program with glUniform*: the same
-// names and numbers tools/scene/render.cpp gives glslrun.
+// names and numbers scene/render.cpp gives glslrun.
 #pragma once
 #include <vector>
 
 #include "tools/glref/gl_context.h"
-#include "tools/scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::glref {
 

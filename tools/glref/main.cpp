@@ -15,9 +15,9 @@
 #include <fmt/format.h>
 
 #include "tools/glref/gl_render.h"
-#include "tools/scene/bench_report.h"
-#include "tools/scene/image_compare.h"
-#include "tools/scene/scene.h"
+#include "scene/bench_report.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/scene.h"
 
 namespace {
 

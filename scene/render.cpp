@@ -1,0 +1,175 @@
+#include "glslrun/scene/render.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace glslrun::scene {
+
+const VertexAttrib* Mesh::find(std::string_view name) const {
+    for (const VertexAttrib& a : attribs)
+        if (a.name == name) return &a;
+    return nullptr;
+}
+
+namespace {
+
+// "arr[2]" and "s[1].f[0]" name an element of what uniforms() lists as
+// "arr" and "s[1].f": drop a trailing subscript to find the declaration.
+const UniformInfo* find_declaration(const std::vector<UniformInfo>& infos, std::string_view name) {
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const UniformInfo& u : infos)
+            if (u.name == name) return &u;
+        if (name.empty() || name.back() != ']') break;
+        name = name.substr(0, name.rfind('['));
+    }
+    return nullptr;
+}
+
+bool is_integer_type(std::string_view type) {
+    return type.starts_with("int") || type.starts_with("ivec") || type.starts_with("bool") ||
+           type.starts_with("bvec") || type.starts_with("sampler");
+}
+
+Error error_at(const SourceLoc& where, std::string message) {
+    return Error(std::move(message), where.file, where.line);
+}
+
+Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const UniformSetting& s) {
+    const UniformInfo* info = find_declaration(infos, s.name);
+    if (!info)
+        return error_at(s.where, fmt::format("the program has no active uniform '{}' (is it "
+                                             "declared and used by a shader?)", s.name));
+    Status st = Ok{};
+    if (is_integer_type(info->type)) {
+        if (!s.integral && info->type.starts_with("sampler"))
+            return error_at(s.where, fmt::format("uniform '{}' is a {}: its value is a texture unit, an "
+                                                 "integer (write 0, not 0.0)", s.name, info->type));
+        if (!s.integral)
+            return error_at(s.where, fmt::format("uniform '{}' is a {}: its values must be "
+                                                 "integers or booleans", s.name, info->type));
+        std::vector<int32_t> ints;
+        for (double v : s.values) {
+            if (std::abs(v) > 2147483647.0)
+                return error_at(s.where, fmt::format("uniform '{}': {} does not fit in an int", s.name, v));
+            ints.push_back(int32_t(v));
+        }
+        st = program.set_uniform(s.name, ints);
+    } else {
+        std::vector<float> floats(s.values.begin(), s.values.end());
+        st = program.set_uniform(s.name, floats);
+    }
+    if (!st) {
+        std::string why = st.error().diagnostics.empty() ? "rejected" : st.error().diagnostics[0].message;
+        return error_at(s.where, why);
+    }
+    return Ok{};
+}
+
+}  // namespace
+
+Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings) {
+    if (settings.empty()) return Ok{};
+    std::vector<UniformInfo> infos = program.uniforms();
+    for (const UniformSetting& s : settings)
+        if (Status st = apply_one(program, infos, s); !st) return st;
+    return Ok{};
+}
+
+Result<GLState> bind_scene_textures(const Scene& scene) {
+    GLState bound = scene.gl;
+    for (const TextureSetting& t : scene.textures)
+        if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st.error();
+    return bound;
+}
+
+GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object) {
+    GLState gl = bound;
+    gl.modelview = scene.view * object.model;
+    if (object.front_material) gl.front_material = *object.front_material;
+    if (object.back_material) gl.back_material = *object.back_material;
+    if (object.color) gl.current_color = *object.color;
+    return gl;
+}
+
+namespace {
+
+// Draws the objects; the first draw takes `pending` (and empties it).
+Result<DrawStats> draw_objects(Program& program, const Scene& scene, Framebuffer& fb, ClearValues& pending) {
+    if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
+    // glActiveTexture + glBindTexture per [textures.N], once: texture
+    // bindings are context state that every object's draw sees.
+    auto bound = bind_scene_textures(scene);
+    if (!bound) return bound.error();
+    DrawStats total;
+    for (const Object& object : scene.objects) {
+        GLState gl = object_gl_state(scene, *bound, object);
+        if (Status st = apply_uniforms(program, object.uniforms); !st) return st.error();
+        const Mesh& m = object.mesh;
+        // The first draw clears, in its tiles on the workers (it clears even when it fails).
+        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive, m.attribs, m.vertex_count,
+                          m.indices);
+        if (!stats) return stats.error();
+        total += *stats;
+    }
+    return total;
+}
+
+}  // namespace
+
+Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb,
+                                     const ClearValues& clear) {
+    ClearValues pending = clear;
+    auto result = draw_objects(program, scene, fb, pending);
+    // No object, or an error before the first draw: the clear still happens.
+    if (pending.color) fb.clear_color(*pending.color);
+    if (pending.depth) fb.clear_depth(*pending.depth);
+    return result;
+}
+
+Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
+    return draw_scene_objects(program, scene, fb, ClearValues{scene.clear_color, scene.clear_depth});
+}
+
+Result<Image> render_image(Program& program, const Scene& scene) {
+    Framebuffer fb(scene.width, scene.height);
+    auto stats = render_scene(program, scene, fb);
+    if (!stats) return stats.error();
+    return read_framebuffer(fb);
+}
+
+Result<std::vector<ShaderSource>> read_shader_files(const std::vector<std::string>& paths) {
+    std::vector<ShaderSource> sources;
+    for (const std::string& path : paths) {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) return Error("cannot read the file", path);
+        std::stringstream text;
+        text << in.rdbuf();
+        sources.push_back({path, text.str()});
+    }
+    return sources;
+}
+
+Result<Program> compile_files(const std::vector<std::string>& vertex_paths,
+                              const std::vector<std::string>& fragment_paths, const CompileOptions& options) {
+    auto vertex = read_shader_files(vertex_paths);
+    if (!vertex) return vertex.error();
+    auto fragment = read_shader_files(fragment_paths);
+    if (!fragment) return fragment.error();
+    return Program::compile(*vertex, *fragment, options);
+}
+
+Result<Image> render_files(const std::string& vertex_path, const std::string& fragment_path,
+                           const std::string& scene_path, const ExecOptions& exec) {
+    auto scene = load_scene(scene_path);
+    if (!scene) return scene.error();
+    auto program = compile_files({vertex_path}, {fragment_path});
+    if (!program) return program.error();
+    program->exec = exec;
+    return render_image(*program, *scene);
+}
+
+}  // namespace glslrun::scene

@@ -1,0 +1,94 @@
+// parse_scene / load_scene: the top level of a scene file (docs/scene-format.md).
+// The sections are read in dependency order, not file order: the size before
+// the camera (aspect), the camera before clip planes and lights (view), the
+// scene's materials before the objects' overrides.
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "scene/scene_reader.h"
+
+namespace glslrun::scene {
+
+namespace {
+
+using detail::Section;
+
+void read_output(const Section& s, Scene& scene) {
+    s.allow({"size", "clear_color", "clear_depth"});
+    if (const toml::node* n = s.get("size")) {
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != 2)
+            detail::fail(*n, fmt::format("'output.size' must be [width, height] (got {})",
+                                         detail::describe(*n)));
+        // Checked as 64-bit integers before anything is sized by them.
+        int64_t w = detail::integer((*a)[0], "output.size[0]", INT64_MIN, INT64_MAX);
+        int64_t h = detail::integer((*a)[1], "output.size[1]", INT64_MIN, INT64_MAX);
+        if (std::string why = detail::size_problem(w, h); !why.empty()) detail::fail(*n, why);
+        scene.width = int(w);
+        scene.height = int(h);
+    }
+    s.read_color("clear_color", scene.clear_color);
+    s.read("clear_depth", scene.clear_depth, {.lo = 0, .hi = 1, .why = "glClearDepth"});
+}
+
+Section section(const toml::node& n, const char* name) { return Section(detail::table(n, name), name); }
+
+// Lights the file leaves out keep GL's eye-space defaults; no transform.
+void init_lights(Scene& scene) {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        LightSetting& l = scene.lights[i];
+        l.enabled = false;
+        l.as_given = scene.gl.lights[i];
+        l.has_position = l.has_spot_direction = false;
+    }
+}
+
+Scene build_scene(const toml::table& root, const std::string& path) {
+    Section top(root, "");
+    top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
+               "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects"});
+    Scene scene;
+    scene.path = path;
+    init_lights(scene);
+    if (const toml::node* n = top.get("output")) read_output(section(*n, "output"), scene);
+    if (const toml::node* n = top.get("camera")) detail::read_camera(section(*n, "camera"), scene);
+    if (const toml::node* n = top.get("lights")) detail::read_lights(*n, scene);
+    detail::read_render_state(top, scene);
+    std::string dir = std::filesystem::path(path).parent_path().string();
+    if (const toml::node* n = top.get("textures")) detail::read_textures(*n, dir, scene);
+    if (const toml::node* n = top.get("uniforms")) detail::read_uniforms(*n, "uniforms", scene.uniforms);
+    if (const toml::node* n = top.get("objects")) detail::read_objects(*n, dir, scene);
+    scene.gl.modelview = scene.view;
+    scene.gl.projection = scene.projection;
+    derive_eye_space_lights(scene);
+    return scene;
+}
+
+}  // namespace
+
+Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
+    try {
+        toml::table root = toml::parse(toml_text, path);
+        return build_scene(root, path);
+    } catch (const toml::parse_error& e) {
+        return Error(std::string(e.description()), path, int(e.source().begin.line));
+    } catch (const detail::SceneFailure& f) {
+        return f.error;
+    }
+}
+
+Result<Scene> load_scene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error(fmt::format("cannot open scene file '{}': {}", path, std::strerror(errno)), path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return Error(fmt::format("cannot read scene file '{}'", path), path);
+    return parse_scene(text.str(), path);
+}
+
+}  // namespace glslrun::scene

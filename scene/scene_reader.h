@@ -1,0 +1,110 @@
+// Internal to the scene parser (scene/scene_*.cpp): typed readers over
+// toml++ nodes, GL's matrix constructions, and the parser's sections.
+//
+// A reader that finds a mistake throws SceneFailure; parse_scene() turns it
+// into the Error it returns. The first mistake ends the parse, so no reader
+// needs an error path of its own and every function stays straight-line.
+#pragma once
+#include <cfloat>
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <toml++/toml.h>
+
+#include "glslrun/scene/scene.h"
+
+namespace glslrun::scene::detail {
+
+struct SceneFailure {
+    Error error;
+};
+
+// Throws SceneFailure citing the region's file and line.
+[[noreturn]] void fail(const toml::source_region& where, std::string message);
+[[noreturn]] void fail(const toml::node& at, std::string message);
+SourceLoc location(const toml::node& n);
+
+// "a string", "an array of 2 values", ... for "(got ...)" in messages.
+std::string describe(const toml::node& n);
+// The candidate closest to `word` by edit distance, or "" when none is close
+// enough to be a plausible typo.
+std::string closest(std::string_view word, const std::vector<std::string_view>& candidates);
+// "did you mean 'x'?" or "valid keys: a, b, c".
+std::string suggestion(std::string_view word, const std::vector<std::string_view>& candidates,
+                       std::string_view noun = "keys");
+
+// An allowed interval for a number; messages print it as GL states it.
+struct Range {
+    double lo = -FLT_MAX, hi = FLT_MAX;
+    bool lo_open = false, hi_open = false;  // the bound itself excluded ("> 0")
+    const char* why = nullptr;  // appended in parentheses: "GL_SPOT_EXPONENT"
+};
+void check_range(const toml::node& at, const std::string& what, double v, const Range& r);
+
+// Typed readers. `what` names the value in messages ("lights.0.diffuse").
+// Every number must be finite and representable as a float.
+double number(const toml::node& n, const std::string& what);
+int64_t integer(const toml::node& n, const std::string& what, int64_t lo, int64_t hi);
+bool boolean(const toml::node& n, const std::string& what);
+const toml::table& table(const toml::node& n, const std::string& what);
+const toml::array& array(const toml::node& n, const std::string& what);
+std::vector<double> numbers(const toml::node& n, const std::string& what, size_t min, size_t max);
+glm::dvec4 color(const toml::node& n, const std::string& what);  // 3 or 4; alpha 1
+glm::dmat4 matrix(const toml::node& n, const std::string& what);  // 16 numbers or 4 columns
+// Index of the string among `options`.
+size_t choice(const toml::node& n, const std::string& what, const std::vector<std::string_view>& options);
+// "0".."count-1" as a table key (lights, texture units).
+int index_key(const toml::key& k, int count, const std::string& what, std::string_view limit_message);
+
+// A TOML table being read: its keys are checked against the allowed ones,
+// and optional values are read by key, leaving the output alone when absent.
+class Section {
+public:
+    Section(const toml::table& t, std::string path) : table_(t), path_(std::move(path)) {}
+    // Fails on the first key (in file order) not in `keys`, with a suggestion.
+    void allow(const std::vector<std::string_view>& keys) const;
+    const toml::node* get(std::string_view key) const { return table_.get(key); }
+    const toml::node& require(std::string_view key, std::string_view why) const;
+    std::string name(std::string_view key) const;  // "lights.0" + "diffuse"
+    const std::string& path() const { return path_; }
+    const toml::table& table() const { return table_; }
+
+    bool read(std::string_view key, bool& out) const;
+    bool read(std::string_view key, float& out, const Range& r = {}) const;
+    bool read_color(std::string_view key, glm::vec4& out) const;
+    bool read_vec(std::string_view key, glm::vec3& out) const;  // exactly 3
+    bool read_vec(std::string_view key, glm::vec4& out) const;  // exactly 4
+private:
+    const toml::table& table_;
+    std::string path_;
+};
+
+// GL's matrices, in double (GLU computes in double and GL rounds once when it
+// loads the result as float).
+glm::dmat4 gl_look_at(glm::dvec3 eye, glm::dvec3 center, glm::dvec3 up);
+glm::dmat4 gl_perspective(double fovy, double aspect, double near, double far);
+glm::dmat4 gl_ortho(double l, double r, double b, double t, double n, double f);
+glm::dmat4 gl_frustum(double l, double r, double b, double t, double n, double f);
+glm::dmat4 gl_rotate(double degrees, glm::dvec3 axis);  // axis non-zero
+glm::dmat4 projection_of(const Camera& camera, int width, int height);
+
+// Sections of the file (scene_camera.cpp, scene_state.cpp, scene_uniforms.cpp,
+// scene_objects.cpp, scene_textures.cpp).
+glm::dmat4 transform_list(const toml::node& n, const std::string& what);
+void read_camera(const Section& camera, Scene& scene);
+void read_lights(const toml::node& n, Scene& scene);
+void read_material(const Section& s, MaterialState& m);
+void read_render_state(const Section& top, Scene& scene);
+void read_uniforms(const toml::node& n, const std::string& what, std::vector<UniformSetting>& out);
+std::vector<VertexAttrib> read_attributes(const toml::node& n, const std::string& what,
+                                          uint32_t vertex_count);
+void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scene);
+void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene);  // scene_textures.cpp
+// "" when width x height is acceptable, else why not.
+std::string size_problem(int64_t width, int64_t height);
+
+}  // namespace glslrun::scene::detail

@@ -1,0 +1,386 @@
+// [textures.N]: a texture object bound to unit N. Each key is one glTexImage
+// or glTexParameter call (docs/scene-format.md); the texels come from an
+// image file or a procedural pattern, and the finished glslrun::Texture is
+// what both renderers use.
+#include <algorithm>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "scene/scene_reader.h"
+#include "glslrun/scene/texture_images.h"
+
+namespace glslrun::scene::detail {
+
+namespace {
+
+// Each list is in its enum's order (glslrun.h), so a choice's index is the value.
+const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map"};
+const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component"};
+const std::vector<std::string_view> kFilters = {"nearest", "linear", "nearest_mipmap_nearest",
+                                                "linear_mipmap_nearest", "nearest_mipmap_linear",
+                                                "linear_mipmap_linear"};
+const std::vector<std::string_view> kWraps = {"repeat", "clamp_to_edge", "clamp", "clamp_to_border",
+                                              "mirrored_repeat"};
+const std::vector<std::string_view> kCompareFuncs = {"never",   "less",     "equal",  "lequal",
+                                                     "greater", "notequal", "gequal", "always"};
+const std::vector<std::string_view> kDepthModes = {"luminance", "intensity", "alpha"};
+
+// Where texels come from: exactly one per texture, or per cube face / level.
+const std::vector<std::string_view> kImageSources = {"image", "checkerboard", "rgbw", "solid"};
+const std::vector<std::string_view> kDepthKeys = {"compare_mode", "compare_func", "depth_texture_mode"};
+
+const std::vector<std::string_view> kTextureKeys = {
+    "target", "internal_format", "image", "checkerboard", "rgbw", "solid", "faces", "levels",
+    "generate_mipmap", "min_filter", "mag_filter", "wrap_s", "wrap_t", "wrap_r", "border_color", "min_lod",
+    "max_lod", "lod_bias", "base_level", "max_level", "compare_mode", "compare_func", "depth_texture_mode"};
+
+// What every source of one texture needs to know.
+struct Context {
+    TextureTarget target = TextureTarget::Tex2D;
+    TextureFormat format = TextureFormat::RGBA8;
+    std::string dir;  // the scene file's directory: image paths are relative to it
+};
+
+int dimensions(TextureTarget t) {
+    switch (t) {
+    case TextureTarget::Tex1D: return 1;
+    case TextureTarget::Tex3D: return 3;
+    default: return 2;
+    }
+}
+
+const char* size_form(TextureTarget t) {
+    switch (t) {
+    case TextureTarget::Tex1D: return "[width]";
+    case TextureTarget::Tex3D: return "[width, height, depth]";
+    default: return "[width, height]";
+    }
+}
+
+// ------------------------------------------------------------ sources ---
+// `size = [...]` of a procedural image, as many numbers as the target has
+// dimensions, each within GL's maximum, all within kMaxTextureTexels.
+Size3 read_size(const Section& s, const Context& c) {
+    const toml::node& n = s.require("size", fmt::format("{} in texels", size_form(c.target)));
+    int dims = dimensions(c.target);
+    const toml::array* a = n.as_array();
+    if (!a || int(a->size()) != dims)
+        fail(n, fmt::format("'{}' must be {} for a {} texture (got {})", s.name("size"), size_form(c.target),
+                            kTargets[size_t(c.target)], describe(n)));
+    int max = c.target == TextureTarget::Tex3D ? kMax3DTextureSize : kMaxTextureSize;
+    Size3 size{1, 1, 1};
+    for (int i = 0; i < dims; ++i)
+        size[size_t(i)] = int(integer((*a)[size_t(i)], fmt::format("{}[{}]", s.name("size"), i), 1, max));
+    int64_t texels = int64_t(size[0]) * size[1] * size[2];
+    if (texels > kMaxTextureTexels)
+        fail(n, fmt::format("'{}' is {} texels; a texture may hold at most {}", s.name("size"), texels,
+                            kMaxTextureTexels));
+    return size;
+}
+
+// A colour for texels: 3 or 4 numbers, or one number for a grey (L, L, L, 1)
+// as GL_LUMINANCE expands it (for a depth texture: the depth). Normalized
+// formats store [0, 1] only, so other values would be silently clamped.
+glm::vec4 texel_color(const toml::node& n, const std::string& what, const Context& c) {
+    glm::dvec4 v = n.is_number() ? glm::dvec4(glm::dvec3(number(n, what)), 1.0) : color(n, what);
+    if (c.format == TextureFormat::RGBA32F) return glm::vec4(v);
+    for (int i = 0; i < 4; ++i)
+        if (v[i] < 0 || v[i] > 1)
+            fail(n, fmt::format("'{}' must be in [0, 1]: {} stores no other values (internal_format = "
+                                "\"rgba32f\" does); got {}", what, kFormats[size_t(c.format)], v[i]));
+    return glm::vec4(v);
+}
+
+Size3 read_square_size(const Section& s, Size3 size, int dims) {
+    Size3 square{1, 1, 1};
+    for (int i = 0; i < dims; ++i) square[size_t(i)] = std::max(1, size[size_t(i)] / 8);  // 8 squares a side
+    const toml::node* n = s.get("square_size");
+    if (!n) return square;
+    if (n->is_integer()) {
+        int64_t v = integer(*n, s.name("square_size"), 1, kMaxTextureSize);
+        for (int i = 0; i < dims; ++i) square[size_t(i)] = int(v);
+        return square;
+    }
+    const toml::array* a = n->as_array();
+    if (!a || int(a->size()) != dims)
+        fail(*n, fmt::format("'{}' must be an integer or {} integers (got {})", s.name("square_size"), dims,
+                             describe(*n)));
+    for (int i = 0; i < dims; ++i)
+        square[size_t(i)] = int(integer((*a)[size_t(i)], fmt::format("{}[{}]", s.name("square_size"), i), 1,
+                                        kMaxTextureSize));
+    return square;
+}
+
+TextureImage read_checkerboard(const Section& s, const Context& c) {
+    s.allow({"size", "square_size", "colors"});
+    Size3 size = read_size(s, c);
+    Size3 square = read_square_size(s, size, dimensions(c.target));
+    std::array<glm::vec4, 2> colors{glm::vec4(0, 0, 0, 1), glm::vec4(1, 1, 1, 1)};
+    if (const toml::node* n = s.get("colors")) {
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != 2)
+            fail(*n, fmt::format("'{}' must be two colours (got {})", s.name("colors"), describe(*n)));
+        for (size_t i = 0; i < 2; ++i)
+            colors[i] = texel_color((*a)[i], fmt::format("{}[{}]", s.name("colors"), i), c);
+    }
+    return checkerboard_image(size, square, colors);
+}
+
+TextureImage read_rgbw(const Section& s, const Context& c) {
+    s.allow({"size", "alpha"});
+    Size3 size = read_size(s, c);
+    bool alpha = false;
+    s.read("alpha", alpha);
+    return rgbw_image(size, dimensions(c.target), alpha);
+}
+
+TextureImage read_solid(const Section& s, const Context& c) {
+    s.allow({"size", "color"});
+    Size3 size = read_size(s, c);
+    return solid_image(size, texel_color(s.require("color", "3 or 4 numbers, or one for a grey"),
+                                         s.name("color"), c));
+}
+
+// 2D images are flipped so that the picture stands upright with t up; cube
+// faces are not: GL's cube map face layout has t = 0 at the top of each face
+// as seen from the centre, which is the first row of an image file.
+TextureImage read_image_file(const toml::node& n, const std::string& what, const Context& c) {
+    auto file = n.as_string();
+    if (!file) fail(n, fmt::format("'{}' must be a file name (got {})", what, describe(n)));
+    if (c.target == TextureTarget::Tex3D)
+        fail(n, fmt::format("'{}': 3d textures take checkerboard, rgbw or solid, not image files", what));
+    std::filesystem::path path(file->get());
+    if (path.is_relative() && !c.dir.empty()) path = std::filesystem::path(c.dir) / path;
+    Result<TextureImage> image = read_texture_image(path.string(), c.target != TextureTarget::Cube);
+    if (!image) {
+        // The scene's line first, then what is wrong with the file.
+        Error e(fmt::format("'{}': cannot use the image", what), location(n).file, location(n).line);
+        for (const Diagnostic& d : image.error().diagnostics) e.diagnostics.push_back(d);
+        throw SceneFailure{std::move(e)};
+    }
+    if (c.target == TextureTarget::Tex1D && image->height != 1)
+        fail(n, fmt::format("'{}' is {}x{}: a 1d texture needs an image 1 texel high", what, image->width,
+                            image->height));
+    return std::move(*image);
+}
+
+// The one source key present in `s` among `keys`, or nullptr.
+const toml::key* source_key(const Section& s, const std::vector<std::string_view>& keys,
+                            std::string_view needs) {
+    const toml::key* found = nullptr;
+    for (auto&& [k, v] : s.table()) {
+        if (std::find(keys.begin(), keys.end(), k.str()) == keys.end()) continue;
+        if (found)
+            fail(k.source(), fmt::format("[{}] has both '{}' and '{}'; give one source of texels", s.path(),
+                                         found->str(), k.str()));
+        found = &k;
+    }
+    if (!found) fail(s.table(), fmt::format("[{}] needs {}", s.path(), needs));
+    return found;
+}
+
+TextureImage read_image_source(const Section& s, std::string_view key, const Context& c) {
+    const toml::node& n = *s.get(key);
+    std::string what = s.name(key);
+    if (key == "image") return read_image_file(n, what, c);
+    Section sub(table(n, what), what);
+    if (key == "checkerboard") return read_checkerboard(sub, c);
+    if (key == "rgbw") return read_rgbw(sub, c);
+    return read_solid(sub, c);
+}
+
+// All images of one texture together (faces, levels) stay within the limit
+// each of them has alone.
+void check_total(const toml::node& at, const std::string& texture, int64_t texels) {
+    if (texels > kMaxTextureTexels)
+        fail(at, fmt::format("[{}] holds {} texels in all; a texture may hold at most {}", texture, texels,
+                             kMaxTextureTexels));
+}
+
+// An element of `faces` or `levels`: a file name, or a table with one source.
+TextureImage read_element(const toml::node& n, const std::string& what, const Context& c) {
+    if (n.is_string()) return read_image_file(n, what, c);
+    Section s(table(n, what), what);
+    s.allow(kImageSources);
+    const toml::key* k = source_key(s, kImageSources, "one of image, checkerboard, rgbw or solid");
+    return read_image_source(s, k->str(), c);
+}
+
+std::vector<TextureImage> read_list(const Section& s, std::string_view key, const Context& c, size_t min,
+                                    size_t max) {
+    const toml::node& n = *s.get(key);
+    const toml::array& a = array(n, s.name(key));
+    if (a.size() < min || a.size() > max)
+        fail(n, min == max ? fmt::format("'{}' must have {} elements (got {})", s.name(key), min, a.size())
+                           : fmt::format("'{}' must have {} to {} elements (got {})", s.name(key), min, max,
+                                         a.size()));
+    std::vector<TextureImage> images;
+    int64_t texels = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        images.push_back(read_element(a[i], fmt::format("{}[{}]", s.name(key), i), c));
+        texels += int64_t(images.back().texels.size());
+        check_total(a[i], s.path(), texels);  // before reading more
+    }
+    return images;
+}
+
+// ------------------------------------------------------------- target ---
+Context read_context(const Section& s, const std::string& dir) {
+    Context c;
+    c.dir = dir;
+    if (const toml::node* n = s.get("target")) {
+        c.target = TextureTarget(choice(*n, s.name("target"), kTargets));
+        if (s.get("faces") && c.target != TextureTarget::Cube)
+            fail(*s.get("faces"), fmt::format("'{}' is for target = \"cube_map\" (this is \"{}\")",
+                                              s.name("faces"), kTargets[size_t(c.target)]));
+    } else if (s.get("faces")) {
+        c.target = TextureTarget::Cube;  // six faces can only be a cube map
+    }
+    if (const toml::node* n = s.get("internal_format"))
+        c.format = TextureFormat(choice(*n, s.name("internal_format"), kFormats));
+    return c;
+}
+
+std::string first_message(const Error& e) {
+    return e.diagnostics.empty() ? std::string("refused") : e.diagnostics[0].message;
+}
+
+// glTexImage for every face or level the file gives; Texture::create checks
+// the sizes against the target (1D, square equal cube faces, GL's maxima).
+Texture build_texture(const Section& s, const Context& c) {
+    const toml::key* k = source_key(s, {"image", "checkerboard", "rgbw", "solid", "faces", "levels"},
+                                    "a source of texels: image, checkerboard, rgbw, solid, faces (cube_map) "
+                                    "or levels");
+    std::string_view key = k->str();
+    std::vector<TextureImage> level0, more_levels;
+    if (key == "faces") {
+        level0 = read_list(s, key, c, 6, 6);
+    } else if (key == "levels") {
+        if (c.target == TextureTarget::Cube)
+            fail(*s.get(key), fmt::format("'{}': a cube_map takes 'faces' (mipmaps: generate_mipmap = true)",
+                                          s.name(key)));
+        more_levels = read_list(s, key, c, 1, 32);
+        level0.push_back(std::move(more_levels.front()));
+        more_levels.erase(more_levels.begin());
+    } else {
+        TextureImage image = read_image_source(s, key, c);
+        size_t faces = c.target == TextureTarget::Cube ? 6 : 1;
+        check_total(*s.get(key), s.path(), int64_t(image.texels.size() * faces));  // before the copies
+        level0.assign(faces, image);
+    }
+    Result<Texture> texture = Texture::create(c.target, std::move(level0), c.format);
+    if (!texture) fail(*s.get(key), fmt::format("[{}]: {}", s.path(), first_message(texture.error())));
+    for (size_t i = 0; i < more_levels.size(); ++i)
+        if (Status st = texture->set_level(0, int(i + 1), std::move(more_levels[i])); !st)
+            fail(*s.get(key), fmt::format("'{}[{}]': {}", s.name(key), i + 1, first_message(st.error())));
+    return std::move(*texture);
+}
+
+// ----------------------------------------------------------- sampling ---
+void read_filters_and_wraps(const Section& s, SamplerState& st) {
+    if (auto n = s.get("min_filter")) st.min_filter = TextureFilter(choice(*n, s.name("min_filter"), kFilters));
+    // GL_TEXTURE_MAG_FILTER has no mipmap modes (GL_INVALID_ENUM).
+    if (auto n = s.get("mag_filter"))
+        st.mag_filter = TextureFilter(choice(*n, s.name("mag_filter"), {"nearest", "linear"}));
+    if (auto n = s.get("wrap_s")) st.wrap_s = TextureWrap(choice(*n, s.name("wrap_s"), kWraps));
+    if (auto n = s.get("wrap_t")) st.wrap_t = TextureWrap(choice(*n, s.name("wrap_t"), kWraps));
+    if (auto n = s.get("wrap_r")) st.wrap_r = TextureWrap(choice(*n, s.name("wrap_r"), kWraps));
+}
+
+int read_level(const Section& s, std::string_view key, int fallback) {
+    const toml::node* n = s.get(key);
+    // GL_INVALID_VALUE below 0; GL takes any larger value.
+    return n ? int(integer(*n, s.name(key), 0, INT32_MAX)) : fallback;
+}
+
+void read_border_color(const Section& s, SamplerState& st) {
+    const toml::node* n = s.get("border_color");
+    if (!n) return;
+    glm::dvec4 v = color(*n, s.name("border_color"));
+    // GL 2.1 clamps GL_TEXTURE_BORDER_COLOR to [0, 1]; outside is a mistake worth reporting.
+    for (int i = 0; i < 4; ++i)
+        check_range(*n, s.name("border_color"), v[i], {.lo = 0, .hi = 1, .why = "GL_TEXTURE_BORDER_COLOR"});
+    st.border_color = glm::vec4(v);
+}
+
+void read_depth_state(const Section& s, const Context& c, SamplerState& st) {
+    for (std::string_view key : kDepthKeys)
+        if (const toml::node* n = s.get(key); n && c.format != TextureFormat::Depth)
+            fail(*n, fmt::format("'{}' applies to depth textures only (internal_format = \"depth_component\")",
+                                 s.name(key)));
+    if (auto n = s.get("compare_mode"))
+        st.compare = choice(*n, s.name("compare_mode"), {"none", "compare_r_to_texture"}) == 1;
+    if (auto n = s.get("compare_func"))
+        st.compare_func = CompareFunc(choice(*n, s.name("compare_func"), kCompareFuncs));
+    if (auto n = s.get("depth_texture_mode"))
+        st.depth_mode = DepthTextureMode(choice(*n, s.name("depth_texture_mode"), kDepthModes));
+}
+
+SamplerState read_sampler(const Section& s, const Context& c) {
+    SamplerState st;
+    read_filters_and_wraps(s, st);
+    read_border_color(s, st);
+    s.read("min_lod", st.min_lod);
+    s.read("max_lod", st.max_lod);
+    s.read("lod_bias", st.lod_bias);
+    st.base_level = read_level(s, "base_level", st.base_level);
+    st.max_level = read_level(s, "max_level", st.max_level);
+    read_depth_state(s, c, st);
+    return st;
+}
+
+bool is_mipmap_filter(TextureFilter f) { return f != TextureFilter::Nearest && f != TextureFilter::Linear; }
+
+// GL samples an incomplete texture as (0, 0, 0, 1) without a word; the most
+// common cause is GL's default min filter on a texture without mipmaps.
+void warn_if_incomplete(const Texture& t, int unit, const SourceLoc& where, Scene& scene) {
+    if (t.complete()) return;
+    std::string why = "its mipmap levels do not halve down to 1x1 (GL 2.1 section 3.8.10)";
+    size_t base = size_t(t.sampler.base_level);
+    if (base >= t.levels(0).size() || t.levels(0)[base].width == 0)
+        why = fmt::format("base_level = {} has no image", base);
+    else if (is_mipmap_filter(t.sampler.min_filter) && t.levels(0).size() == 1)
+        why = fmt::format("min_filter = \"{}\"{} needs mipmaps; add generate_mipmap = true or set min_filter = "
+                          "\"linear\"", kFilters[size_t(t.sampler.min_filter)],
+                          t.sampler.min_filter == TextureFilter::NearestMipmapLinear ? " (GL's default)" : "");
+    scene.warnings.push_back(Diagnostic{where.file, where.line,
+                                        fmt::format("texture unit {} is incomplete and samples as (0, 0, 0, 1): {}",
+                                                    unit, why),
+                                        true});
+}
+
+TextureSetting read_texture(const Section& s, int unit, const std::string& dir, Scene& scene) {
+    s.allow(kTextureKeys);
+    Context c = read_context(s, dir);
+    TextureSetting setting;
+    setting.unit = unit;
+    setting.where = location(s.table());
+    s.read("generate_mipmap", setting.generate_mipmap);
+    if (setting.generate_mipmap && s.get("levels"))
+        fail(*s.get("levels"), fmt::format("[{}] has both 'levels' and generate_mipmap = true; give one",
+                                           s.path()));
+    SamplerState sampler = read_sampler(s, c);  // before the texels: cheap mistakes first
+    Texture texture = build_texture(s, c);
+    texture.sampler = sampler;
+    if (setting.generate_mipmap) texture.generate_mipmaps();
+    warn_if_incomplete(texture, unit, setting.where, scene);
+    setting.texture = std::make_shared<const Texture>(std::move(texture));
+    return setting;
+}
+
+}  // namespace
+
+void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene) {
+    const toml::table& units = table(n, "textures");
+    for (auto&& [k, v] : units) {
+        int unit = index_key(k, kMaxTextureUnits, "textures",
+                             "texture units are 0..15 ([textures.0] .. [textures.15], GL_TEXTURE0..15)");
+        std::string what = fmt::format("textures.{}", unit);
+        scene.textures.push_back(read_texture(Section(table(v, what), what), unit, scene_dir, scene));
+    }
+    std::sort(scene.textures.begin(), scene.textures.end(),
+              [](const TextureSetting& a, const TextureSetting& b) { return a.unit < b.unit; });
+}
+
+}  // namespace glslrun::scene::detail
