@@ -32,11 +32,7 @@ bool calls_kernel(Op op) {
 }
 
 WriteMode write_mode(Op op) {
-    switch (op) {
-    case Op::mov: case Op::konst: case Op::sel: case Op::uniform: return WriteMode::Honours;
-    case Op::store_ind: return WriteMode::Scatters;
-    default: return ir::op_info(op).kind == ir::OpKind::Alu ? WriteMode::Honours : WriteMode::Blends;
-    }
+    return op == Op::ddx || op == Op::ddy ? WriteMode::Blends : WriteMode::Honours;
 }
 
 }  // namespace

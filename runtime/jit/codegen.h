@@ -15,9 +15,8 @@ namespace glslrun::rt::jit {
 
 // How an op writes its destination, as the interpreter's kernel does:
 // Honours ir::Instr::unmasked (the table's Alu ops, mov, konst, sel,
-// uniform), Blends under the mask always (the other Specials), or writes
-// only the active lanes' elements (store_ind).
-enum class WriteMode { Honours, Blends, Scatters };
+// uniform: every lane when set) or Blends under the mask always (ddx, ddy).
+enum class WriteMode { Honours, Blends };
 
 class Emitter {
 public:

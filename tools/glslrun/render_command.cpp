@@ -122,8 +122,10 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
     fmt::print("precision    {}\n", precision_name(prog.exec.precision));
-    fmt::print("backend      {} (LLVM compile {:.2f} ms)\n",
-               backend_name(effective_backend(prog.exec.backend, prog.exec.precision)),
+    const Backend backend = effective_backend(prog.exec.backend, prog.exec.precision);
+    fmt::print("backend      {}{} (LLVM compile so far {:.2f} ms)\n", backend_name(backend),
+               backend == Backend::Jit && prog.exec.backend == Backend::Auto
+                   ? " once compiled (auto: the interpreter draws until then)" : "",
                prog.jit_compile_seconds() * 1e3);
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
