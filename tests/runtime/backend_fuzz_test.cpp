@@ -16,7 +16,7 @@
 // sign, min/max, int() and the colour conversion treat every NaN alike).
 // A NaN against a number, or any other word, fails.
 //
-// GLSLRUN_FUZZ_PROGRAMS (default 100) sets how many programs; each runs
+// GLSLRUN_FUZZ_PROGRAMS (default 64) sets how many programs; each runs
 // four batches; GLSLRUN_FUZZ_PROGRAM=N runs program N alone and cuts it down
 // to the first top-level nodes that differ.
 #include <catch2/catch.hpp>
@@ -209,7 +209,7 @@ size_t first_difference(const ir::Shader& shader, const std::vector<uint32_t>& u
 
 TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fuzz]") {
     if (!jit_available()) SUCCEED("built without the JIT");
-    int programs = 100;
+    int programs = 64;
     if (const char* n = std::getenv("GLSLRUN_FUZZ_PROGRAMS")) programs = std::atoi(n);
     int first_program = 0;
     if (const char* one = std::getenv("GLSLRUN_FUZZ_PROGRAM")) first_program = std::atoi(one), programs = 1;
