@@ -9,7 +9,7 @@ constexpr TypeClass F = TypeClass::F, I = TypeClass::I, B = TypeClass::B, T = Ty
                     X = TypeClass::X;
 constexpr OpKind Alu = OpKind::Alu, Special = OpKind::Special;
 const OpInfo kOpTable[] = {
-#define OP(name, arity, res, opnd, kind, expr) {#name, arity, res, opnd, kind},
+#define OP(name, arity, res, opnd, kind, fast, expr) {#name, arity, res, opnd, kind, FastClass::fast},
 #include "ir/opcodes.def"
 #undef OP
 };

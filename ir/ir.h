@@ -27,13 +27,17 @@ enum class Kind : uint8_t { F32, I32, Bool };
 const char* kind_name(Kind k);
 
 enum class Op : uint8_t {
-#define OP(name, arity, res, opnd, kind, expr) name,
+#define OP(name, arity, res, opnd, kind, fast, expr) name,
 #include "ir/opcodes.def"
 #undef OP
     Count_
 };
 
 enum class OpKind : uint8_t { Alu, Special };
+// Precision::Fast's class of an op (the table's `fast` column): Exact ops
+// keep their Precise semantics in Fast; each other class has approximate
+// kernels, which rt::FastOps switches on class by class.
+enum class FastClass : uint8_t { Exact, Rsqrt, ExpLog, Pow, SinCos };
 // Operand/result type classes of the table: F, I, B, T (instruction type), X.
 enum class TypeClass : uint8_t { F, I, B, T, X };
 
@@ -43,6 +47,7 @@ struct OpInfo {
     TypeClass result;
     TypeClass operand;
     OpKind kind;
+    FastClass fast;
 };
 const OpInfo& op_info(Op op);
 

@@ -37,7 +37,7 @@ Plane to_plane(double a, double b, double c) { return {float(a), float(b), float
 
 // Whole registers are copied, a constant size: lanes past the batch are not
 // live, so their values do not matter.
-void store_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, const Lanes& v, int lanes) {
+void store_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, const Lanes& v, int lanes) {
     if (kind == ir::Kind::F32) {
         std::memcpy(in.lanes_f(r), v.data(), sizeof v);
         return;
@@ -45,7 +45,7 @@ void store_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, const Lanes& v, 
     for (int lane = 0; lane < lanes; ++lane) exec::set_lane(in, kind, r, lane, v[size_t(lane)]);
 }
 
-void load_lanes(rt::Interpreter& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes) {
+void load_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes) {
     if (kind == ir::Kind::F32) {
         std::memcpy(v.data(), in.lanes_f(r), sizeof v);
         return;
@@ -101,8 +101,7 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     : program_(program), gl_(gl), fb_(fb) {
     const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
-    interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), program.exec.max_loop_iterations,
-                                                gl.texture_units.data(), program.exec.precision, st.fast_ops);
+    interp_ = rt::make_executor(program, ir::Stage::Fragment, gl.texture_units.data());
     for (size_t i = 0; i < fs.inputs.size(); ++i) {
         const ir::Binding& b = fs.inputs[i];
         InputPlan plan{InputPlan::Source::Zero, &b, 0};
@@ -280,7 +279,7 @@ void FragmentStage::flush() {
 // the probe; without it, 0 (no work for it per lane).
 template <bool kProbed>
 rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
-    rt::Interpreter& in = *interp_;
+    rt::Executor& in = *interp_;
     int lanes = quads_ * 4;
     shaded_ += uint64_t(std::popcount(covered));
     rt::LaneMask alive = in.alive() & covered;

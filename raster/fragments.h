@@ -13,7 +13,7 @@
 #include "ir/ir.h"
 #include "raster/probe.h"
 #include "raster/triangle.h"
-#include "runtime/interpreter.h"
+#include "runtime/backend.h"
 
 namespace glslrun::raster {
 
@@ -102,7 +102,7 @@ private:
     const Program& program_;
     const GLState& gl_;
     Framebuffer& fb_;
-    std::unique_ptr<rt::Interpreter> interp_;
+    std::unique_ptr<rt::Executor> interp_;
     std::vector<InputPlan> inputs_;
     std::vector<VaryingSlot> varyings_;
     uint32_t attr_count_ = 0;

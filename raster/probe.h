@@ -11,7 +11,7 @@
 
 #include "glslrun/glslrun.h"
 #include "runtime/execute.h"
-#include "runtime/interpreter.h"
+#include "runtime/backend.h"
 
 namespace glslrun::raster {
 
@@ -20,7 +20,7 @@ struct FsPrimitive;
 // One batch of the fragment stage: lanes [0, lanes) hold 2x2 quads;
 // `covered` are the lanes inside their primitive.
 struct ProbeBatch {
-    rt::Interpreter& interp;  // the optimized fragment shader (Program::State::ir)
+    rt::Executor& interp;  // the optimized fragment shader (Program::State::ir), on any backend
     int lanes = 0;
     const std::array<int, rt::kLanes>& x;
     const std::array<int, rt::kLanes>& y;

@@ -38,11 +38,11 @@ uint32_t to_bits(ir::Kind kind, float value) {
 
 }  // namespace
 
-float lane_as_float(rt::Interpreter& interp, ir::Kind kind, ir::Reg r, int lane) {
+float lane_as_float(rt::Executor& interp, ir::Kind kind, ir::Reg r, int lane) {
     return from_bits(kind, interp.lanes(r)[lane]);
 }
 
-void set_lane(rt::Interpreter& interp, ir::Kind kind, ir::Reg r, int lane, float value) {
+void set_lane(rt::Executor& interp, ir::Kind kind, ir::Reg r, int lane, float value) {
     interp.lanes(r)[lane] = to_bits(kind, value);
 }
 
@@ -88,7 +88,7 @@ Result<std::vector<InputSource>> plan_inputs(const ir::Shader& shader,
     return plan;
 }
 
-void fill_input(rt::Interpreter& interp, const InputSource& src, int lane, uint32_t element) {
+void fill_input(rt::Executor& interp, const InputSource& src, int lane, uint32_t element) {
     const ir::Binding& b = *src.binding;
     for (uint32_t c = 0; c < b.count; ++c) {
         float v = default_component(c, src.fallback);
@@ -100,7 +100,7 @@ void fill_input(rt::Interpreter& interp, const InputSource& src, int lane, uint3
 
 // Lanes [0, n) of src's registers from elements base..base+n-1: per register,
 // not per element (set_lane per element was 7% of a vertex-bound frame).
-void fill_batch(rt::Interpreter& interp, const InputSource& src, uint32_t base, int n) {
+void fill_batch(rt::Executor& interp, const InputSource& src, uint32_t base, int n) {
     const ir::Binding& b = *src.binding;
     for (uint32_t c = 0; c < b.count; ++c) {
         uint32_t* dst = interp.lanes(b.first + c);
@@ -130,7 +130,7 @@ constexpr uint32_t kParallelVertices = 4096;
 
 // Shades vertices [begin, end) in batches of kLanes starting at `begin` (a
 // multiple of kLanes, so batches do not depend on the thread count).
-std::optional<Error> shade_range(rt::Interpreter& interp, const Program::State& st,
+std::optional<Error> shade_range(rt::Executor& interp, const Program::State& st,
                                  const std::vector<InputSource>& plan, uint32_t begin, uint32_t end,
                                  VertexOutputs& out) {
     const ir::Shader& vs = st.ir.vertex;
@@ -191,8 +191,8 @@ Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& a
     std::vector<std::optional<Error>> errors(jobs);
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
-        rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations,
-                               current.texture_units.data(), program.exec.precision, st.fast_ops);
+        std::unique_ptr<rt::Executor> shader = rt::make_executor(program, ir::Stage::Vertex, current.texture_units.data());
+        rt::Executor& interp = *shader;
         for (size_t job; queue.next(&job);) {
             uint32_t begin = uint32_t(job) * kVertexJob, end = std::min(count, begin + kVertexJob);
             errors[job] = shade_range(interp, st, *plan, begin, end, out);
@@ -237,8 +237,8 @@ Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const st
     std::vector<ShaderOutput> outputs;
     for (const ir::Binding& b : fs.outputs) outputs.push_back({b.name, b.count, std::vector<float>(size_t(count) * b.count)});
     ShaderOutput discarded{"discarded", 1, std::vector<float>(count)};
-    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations, state.texture_units.data(),
-                           program.exec.precision, st.fast_ops);
+    std::unique_ptr<rt::Executor> shader = rt::make_executor(program, ir::Stage::Fragment, state.texture_units.data());
+    rt::Executor& interp = *shader;
     for (uint32_t base = 0; base < count; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, count - base));
         // Padding up to a whole quad repeats the last fragment as helper lanes.

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "glslrun/glslrun.h"
-#include "runtime/interpreter.h"
+#include "runtime/backend.h"
 #include "runtime/program_state.h"
 
 namespace glslrun::exec {
@@ -36,8 +36,8 @@ Result<std::vector<std::vector<uint32_t>>> vertex_input_words(const ir::Shader& 
 Error run_error(const Program::State& state, ir::Stage stage, const rt::RunError& error);
 
 // Reads lane `lane` of register r as a float (ints and bools converted).
-float lane_as_float(rt::Interpreter& interp, ir::Kind kind, ir::Reg r, int lane);
+float lane_as_float(rt::Executor& interp, ir::Kind kind, ir::Reg r, int lane);
 // Writes a float into lane `lane` of register r in the register's kind.
-void set_lane(rt::Interpreter& interp, ir::Kind kind, ir::Reg r, int lane, float value);
+void set_lane(rt::Executor& interp, ir::Kind kind, ir::Reg r, int lane, float value);
 
 }  // namespace glslrun::exec

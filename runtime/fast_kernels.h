@@ -80,17 +80,13 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 
 }  // namespace fast
 
-// The FastOps class of an op with a Fast kernel; 0 for the others.
+// The FastOps bit of an op's class (ir/opcodes.def's `fast` column); 0 for Exact ops.
 inline uint32_t fast_op_class(ir::Op op) {
-    switch (op) {
-    // One class: fsqrt_divisor's register means 1/sqrt only if fdiv_by_sqrt multiplies.
-    case ir::Op::frsqrt: case ir::Op::fsqrt_divisor: case ir::Op::fdiv_by_sqrt: return kFastRsqrt;
-    case ir::Op::fexp: case ir::Op::fexp2: case ir::Op::flog: case ir::Op::flog2: return kFastExpLog;
-    case ir::Op::fpow: return kFastPow;
-    case ir::Op::fsin: case ir::Op::fcos: return kFastSinCos;
-    default: return 0;
-    }
+    const ir::FastClass c = ir::op_info(op).fast;
+    return c == ir::FastClass::Exact ? 0u : 1u << (uint32_t(c) - 1);
 }
+static_assert(kFastRsqrt == 1u << (uint32_t(ir::FastClass::Rsqrt) - 1) &&
+              kFastSinCos == 1u << (uint32_t(ir::FastClass::SinCos) - 1));
 
 // The fp32 modes' kernel of `op`: Fast's where it has one and its class is in
 // `fast_ops`, else Precise's.

@@ -17,6 +17,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "runtime/aligned_words.h"
 #include "runtime/fast_kernels.h"
 
 namespace glslrun::rt {
@@ -26,18 +27,6 @@ namespace {
 // GLSL has no recursion, so call depth is bounded by the program; this only
 // guards against a malformed shader that calls itself.
 constexpr int kMaxCallDepth = 1024;
-
-template <class W>
-struct AlignedWords {
-    static constexpr std::align_val_t kAlign{64};
-    W* data = nullptr;
-    explicit AlignedWords(size_t n) : data(static_cast<W*>(::operator new[](n * sizeof(W), kAlign))) {
-        std::memset(data, 0, n * sizeof(W));
-    }
-    ~AlignedWords() { ::operator delete[](data, kAlign); }
-    AlignedWords(const AlignedWords&) = delete;
-    AlignedWords& operator=(const AlignedWords&) = delete;
-};
 
 struct Range {
     uint32_t begin = 0, end = 0;
@@ -141,20 +130,11 @@ struct Core {
         s.kind = n.kind;
         s.line = n.loc.line;
         switch (n.kind) {
-        case ir::NodeKind::Instr: {
-            const ir::Instr& in = n.instr;
-            s.fn = kernel(in.op);
-            s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
-            s.unmasked = in.unmasked;
-            s.type = in.type;
-            s.value = widen<W>(in.type, in.imm[0]);
-            for (int k = 0; k < 3; ++k) {
-                s.src[k] = reg(in.src[k]);
-                s.imm[k] = in.imm[k];
-            }
-            if (in.op == ir::Op::tex) s.src[1] = reg(in.imm[0]);  // the operand block
+        case ir::NodeKind::Instr:
+            s = instr_step<W>(n.instr, kernel(n.instr.op), [this](ir::Reg r) { return reg(r); });
+            s.kind = n.kind;
+            s.line = n.loc.line;
             break;
-        }
         case ir::NodeKind::If: {
             s.cond = reg(n.cond);
             Range body = compile_block(n.body), alt = compile_block(n.alt);

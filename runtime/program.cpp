@@ -8,11 +8,12 @@
 
 #include "frontend/compile.h"
 #include "ir/passes.h"
+#include "runtime/backend_cache.h"
 #include "runtime/program_state.h"
 
 namespace glslrun {
 
-Program::Program() : state_(std::make_unique<State>()) {}
+Program::Program() : state_(std::make_unique<State>()) { state_->backends = std::make_shared<rt::BackendCache>(); }
 Program::Program(Program&&) noexcept = default;
 Program& Program::operator=(Program&&) noexcept = default;
 Program::~Program() = default;

@@ -12,6 +12,7 @@
 
 namespace glslrun {
 namespace raster { class DrawProbe; }
+namespace rt { class BackendCache; }
 
 struct Program::State {
     ir::Program ir;
@@ -26,6 +27,9 @@ struct Program::State {
     uint32_t fast_ops = ~0u;
     // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
     raster::DrawProbe* probe = nullptr;
+    // The shaders compiled by the backends (runtime/backend_cache.h), made
+    // with the State; shared_ptr for the same reason as draw_scratch.
+    std::shared_ptr<rt::BackendCache> backends;
 };
 
 inline Program::State& state_of(Program& program) { return *program.state_; }

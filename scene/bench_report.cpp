@@ -30,6 +30,7 @@ std::string format_bench(const BenchReport& r) {
     line("size", fmt::format("{}x{}", r.width, r.height));
     line("threads", r.threads);
     if (!r.precision.empty()) line("precision", r.precision);
+    if (!r.backend.empty()) line("backend", r.backend);
     line("frames", std::to_string(r.frame_s.size()));
     ms("compile", r.compile_s);
     ms("first_draw", r.first_draw_s);

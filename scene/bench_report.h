@@ -13,6 +13,7 @@ struct BenchReport {
     int width = 0, height = 0;
     std::string threads;   // as asked for: a count, or "auto"
     std::string precision;  // glslrun's --precision; empty for Mesa (not printed)
+    std::string backend;    // glslrun's backend (interp, jit); empty for Mesa (not printed)
     double compile_s = 0;     // building the program (Mesa: glCompileShader + glLinkProgram)
     double first_draw_s = 0;  // the first frame (llvmpipe compiles its shaders there)
     std::vector<double> frame_s;  // the N frames after the first
@@ -30,7 +31,7 @@ struct BenchReport {
 double median(std::vector<double> values);  // 0 when empty
 double process_cpu_seconds();  // CLOCK_PROCESS_CPUTIME_ID: every thread of this process
 
-// "key value" lines: renderer, size, threads, precision (if any), frames, compile_ms,
+// "key value" lines: renderer, size, threads, precision and backend (if any), frames, compile_ms,
 // first_draw_ms, first_frame_ms, median_ms, min_ms, fps, cpu_median_ms,
 // then <stage>_ms (medians), the once-only times and the counts.
 std::string format_bench(const BenchReport& report);

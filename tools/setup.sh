@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
-          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev
+          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
           ccache)  # the builds below (and CI's variants) reuse each other's object files
 [ "$mode" = test ] && packages+=(piglit)
@@ -42,7 +42,11 @@ test)
     # The IR verifier after every pass, in every run below (ctest sets it for its tests too).
     export GLSLRUN_VERIFY=1
     (cd build && ctest --output-on-failure -j "$(nproc)")
-    GLSLRUN=build/glslrun bash tools/piglit_suite.sh
+    # Under the JIT (built in here): --backend auto would run most tests' few
+    # draws on the interpreter while LLVM compiles (ctest runs the language
+    # suite on both backends, and backend_identical compares their images).
+    GLSLRUN=build/glslrun bash tools/piglit_suite.sh --backend jit
+    GLSLRUN=build/glslrun bash tools/piglit_suite.sh --backend interp
     # Images must not depend on the interpreter's batch width: build glslrun
     # with 8 and 64 lanes and compare every scene image in every mode.
     bash tools/image_hashes.sh build/glslrun > build/hashes-16.txt
@@ -52,6 +56,8 @@ test)
         bash tools/image_hashes.sh "build-lanes$lanes/glslrun" > "build/hashes-$lanes.txt"
         diff build/hashes-16.txt "build/hashes-$lanes.txt" || { echo "images differ with $lanes lanes" >&2; exit 1; }
         echo "batch width $lanes: $(wc -l < build/hashes-16.txt) images identical to 16 lanes"
+        # The JIT's vectors are kLanes wide too: its images against the interpreter's.
+        sh tests/cli/backend_identical.sh . "build-lanes$lanes/glslrun"
     done
     ;;
 *)

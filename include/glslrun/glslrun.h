@@ -115,6 +115,23 @@ enum class Precision { Reference, Precise, Fast };
 const char* precision_name(Precision p);
 Result<Precision> parse_precision(std::string_view name);
 
+// Who runs the shaders (runtime/backend.h):
+//   Interp: the batched interpreter, every precision mode.
+//   Jit:    native vector code compiled by LLVM, the interpreter's bits;
+//           Precise and Fast only (Reference runs on the interpreter), and
+//           only where glslrun was built with it (GLSLRUN_JIT).
+//   Auto:   the JIT where it is built in and the mode allows, else the
+//           interpreter. The default.
+enum class Backend { Interp, Jit, Auto };
+// "interp", "jit", "auto" (the command line's --backend names).
+const char* backend_name(Backend b);
+Result<Backend> parse_backend(std::string_view name);
+// Whether this build has the JIT.
+bool jit_available();
+// The backend that runs `requested` in `precision`: Auto is the JIT where
+// built in, and Reference always runs on the interpreter.
+Backend effective_backend(Backend requested, Precision precision);
+
 struct ExecOptions {
     // Iterations of all loops of one batch together; past it the draw stops
     // with a clear error instead of hanging.
@@ -123,6 +140,7 @@ struct ExecOptions {
     // bit-identical whatever the count.
     unsigned threads = 0;
     Precision precision = Precision::Precise;
+    Backend backend = Backend::Auto;
 };
 
 enum class Stage { Vertex, Fragment };
@@ -180,6 +198,8 @@ public:
     std::vector<UniformInfo> uniforms() const;
 
     ExecOptions exec;
+    // Seconds LLVM has spent compiling this program's shaders (0 without the JIT).
+    double jit_compile_seconds() const;
     std::string dump_ir() const;  // the IR printer's text for both stages
 
     struct State;  // the IR and the uniform store: runtime/program_state.h

@@ -88,6 +88,17 @@ glslrun::Precision suite_precision() {
     return *parsed;
 }
 
+// And on one backend: GLSLRUN_LANG_BACKEND=interp|jit|auto (default jit
+// where built in: auto would run most of these one-draw programs on the
+// interpreter while LLVM compiles).
+glslrun::Backend suite_backend() {
+    const char* name = std::getenv("GLSLRUN_LANG_BACKEND");
+    if (!name) return glslrun::jit_available() ? glslrun::Backend::Jit : glslrun::Backend::Interp;
+    auto parsed = glslrun::parse_backend(name);
+    if (!parsed) FAIL("GLSLRUN_LANG_BACKEND: " << parsed.error().str());
+    return *parsed;
+}
+
 glslrun::Program compile_or_fail(const std::string& vs, const std::string& fs,
                                  const glslrun::CompileOptions& options) {
     auto result = glslrun::Program::compile({{"test.vert", vs}}, {{"test.frag", fs}},
@@ -97,6 +108,7 @@ glslrun::Program compile_or_fail(const std::string& vs, const std::string& fs,
                                  << "--- fragment shader:\n" << numbered(fs));
     }
     result->exec.precision = suite_precision();
+    result->exec.backend = suite_backend();
     return std::move(result.value());
 }
 

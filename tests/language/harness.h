@@ -87,6 +87,8 @@ inline constexpr float kModeTolerance = 2e-5f;
 // GLSLRUN_LANG_PRECISION (reference|precise|fast; default precise): the mode
 // compile_or_fail gives every program.
 glslrun::Precision suite_precision();
+// GLSLRUN_LANG_BACKEND (interp|jit|auto; default jit where built in): the backend.
+glslrun::Backend suite_backend();
 
 // Fragment grid: quad q covers (x,y) (x+1,y) (x,y+1) (x+1,y+1), quads laid
 // out 5 per row; this is the pixel position of fragment i.

@@ -1,7 +1,7 @@
 // The glslrun command line:
 //   glslrun test [options] PATH...            piglit tests (shader_runner / glslparsertest)
 //   glslrun a.vert a.frag scene.toml [-o out.png] [--stats] [--bench N]   a scene, rendered
-//     (--precision reference|precise|fast, here and for `glslrun test`;
+//     (--precision reference|precise|fast and --backend interp|jit|auto, here and for `glslrun test`;
 //      --error-report DIR measures the mode's error against reference)
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
@@ -49,6 +49,22 @@ void add_precision_option(CLI::App& app, Precision& precision) {
         });
 }
 
+// --backend NAME, for rendering and for `glslrun test`; a bad name, or jit in
+// a build without it, is a usage error.
+void add_backend_option(CLI::App& app, Backend& backend) {
+    app.add_option_function<std::string>(
+           "--backend", [&backend](const std::string& name) { backend = parse_backend(name).value(); },
+           "who runs the shaders: interp (the interpreter), jit (native code compiled by LLVM, the "
+           "interpreter's bits) or auto (the default: jit where built in). Reference precision always "
+           "runs on the interpreter")
+        ->check([](const std::string& name) {
+            auto parsed = parse_backend(name);
+            if (!parsed) return parsed.error().diagnostics.front().message;
+            if (*parsed == Backend::Jit && !jit_available()) return std::string("this glslrun was built without the JIT");
+            return std::string();
+        });
+}
+
 // ------------------------------------------------------------ glslrun test ---
 struct TestOptions {
     std::vector<std::string> paths;
@@ -57,6 +73,7 @@ struct TestOptions {
     double time_limit = 120;
     bool no_isolate = false;
     Precision precision = Precision::Precise;
+    Backend backend = Backend::Auto;
 };
 
 int run_test_command(const TestOptions& o) {
@@ -85,6 +102,7 @@ int run_test_command(const TestOptions& o) {
     pg::RunOptions run_options;
     run_options.time_limit_s = o.time_limit;
     run_options.precision = o.precision;
+    run_options.backend = o.backend;
     if (!o.no_isolate) pg::warm_up_compiler();
     auto run_one = [&](const pg::TestCase& tc) {
         if (o.no_isolate) return pg::run_test_file(tc.path, run_options);
@@ -121,6 +139,7 @@ int test_main(int argc, char** argv) {
                  "run tests in this process (default: one forked process per test, so a crash "
                  "or hang fails only that test)");
     add_precision_option(app, o.precision);
+    add_backend_option(app, o.backend);
     CLI11_PARSE(app, argc, argv);
     return run_test_command(o);
 }
@@ -144,6 +163,7 @@ int program_cli(int argc, char** argv) {
     app.add_option("--threads", o.threads, "worker threads for drawing (default: one per core); images do not depend on it")
         ->check(CLI::Range(1, 256));
     add_precision_option(app, o.precision);
+    add_backend_option(app, o.backend);
     app.add_option("--bench", o.bench_frames,
                    "render N more frames into the same framebuffer and print `key value` lines: the "
                    "first frame (compile_ms, first_draw_ms), then median_ms, cpu_median_ms (process CPU "

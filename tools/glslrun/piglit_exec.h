@@ -13,6 +13,7 @@ struct RunOptions {
     double time_limit_s = 120;  // checked between commands; loop caps stop runaway shaders
     uint64_t max_loop_iterations = 0;  // 0: the library's default
     Precision precision = Precision::Precise;
+    Backend backend = Backend::Auto;
     Capabilities caps;
 };
 

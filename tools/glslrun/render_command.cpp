@@ -146,6 +146,11 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
     fmt::print("precision    {}\n", precision_name(prog.exec.precision));
+    const Backend backend = effective_backend(prog.exec.backend, prog.exec.precision);
+    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms\n", backend_name(backend),
+               backend == Backend::Jit && prog.exec.backend == Backend::Auto
+                   ? " (auto: the interpreter until compiled)" : "",
+               prog.jit_compile_seconds() * 1e3);
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
@@ -199,6 +204,7 @@ scene::BenchReport bench_header(const scene::Scene& scene, const RenderOptions& 
     r.height = scene.height;
     r.threads = o.threads == 0 ? "auto" : std::to_string(o.threads);
     r.precision = precision_name(o.precision);
+    r.backend = backend_name(effective_backend(o.backend, o.precision));
     r.compile_s = compile_ms / 1e3;
     r.first_draw_s = first_draw_ms / 1e3;
     r.counts = {{"vertices", first.vertices}, {"triangles", first.triangles},
@@ -267,6 +273,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
+    prog->exec.backend = o.backend;
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();
@@ -281,7 +288,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
     if (o.bench_frames > 0) {
-        bench.once_s = {{"output", output_ms / 1e3}};
+        bench.once_s = {{"output", output_ms / 1e3}, {"llvm_compile", prog->jit_compile_seconds()}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);
     }
     if (!o.compare.empty()) return compare_with(scene::read_framebuffer(fb), o);

@@ -16,6 +16,7 @@ struct RenderOptions {
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;
     Precision precision = Precision::Precise;  // --precision
+    Backend backend = Backend::Auto;           // --backend
 };
 
 // The files on the command line, sorted by their extensions.

@@ -1,0 +1,128 @@
+// The backend factory and the per-program cache of compiled shaders.
+#include "runtime/backend.h"
+
+#include <system_error>
+
+#include "runtime/backend_cache.h"
+#include "runtime/interp_kernels.h"
+#include "runtime/interpreter.h"
+#include "runtime/program_state.h"
+#ifdef GLSLRUN_HAVE_JIT
+#include "runtime/jit/jit.h"
+#endif
+
+namespace glslrun {
+
+bool jit_available() {
+#ifdef GLSLRUN_HAVE_JIT
+    return true;
+#else
+    return false;
+#endif
+}
+
+Backend effective_backend(Backend requested, Precision precision) {
+    if (precision == Precision::Reference || !jit_available()) return Backend::Interp;
+    return requested == Backend::Interp ? Backend::Interp : Backend::Jit;
+}
+
+double Program::jit_compile_seconds() const { return state_->backends->jit_compile_seconds(); }
+
+}  // namespace glslrun
+
+namespace glslrun::rt {
+
+namespace {
+
+// The interpreter compiles its Steps per instance (they hold pointers into
+// the instance's register file), so its shared part is the shader itself.
+class InterpretedShader final : public CompiledShader {
+public:
+    explicit InterpretedShader(const ir::Shader& shader) : shader_(shader) {}
+    std::unique_ptr<Executor> instantiate(const ExecParams& params) const override {
+        return std::make_unique<Interpreter>(shader_, params);
+    }
+
+private:
+    const ir::Shader& shader_;
+};
+
+}  // namespace
+
+std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds) {
+    if (llvm_seconds) *llvm_seconds = 0;
+#ifdef GLSLRUN_HAVE_JIT
+    if (backend == Backend::Jit) {
+        jit::CompileStats stats;
+        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, &stats);
+        if (llvm_seconds) *llvm_seconds = stats.seconds;
+        if (code) return code;
+    }
+#endif
+    return std::make_unique<InterpretedShader>(shader);
+}
+
+BackendCache::~BackendCache() {
+    for (std::thread& t : threads_) t.join();
+}
+
+// Called with the lock held.
+const CompiledShader& BackendCache::compile_now(const ir::Shader& shader, const Key& key) {
+    std::unique_ptr<CompiledShader>& slot = shaders_[key];
+    if (!slot) {
+        double seconds = 0;
+        slot = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+        jit_compile_seconds_ += seconds;
+    }
+    return *slot;
+}
+
+const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key, bool wait) {
+    std::unique_lock lock(mutex_);
+    if (auto found = shaders_.find(key); found != shaders_.end() && found->second) return *found->second;
+    if (key.backend != Backend::Jit) return compile_now(shader, key);
+    if (compiling_[key]) {
+        if (wait) {
+            compiled_.wait(lock, [&] { return shaders_[key] != nullptr; });
+            return *shaders_[key];
+        }
+    } else if (!wait) {
+        try {
+            threads_.emplace_back([this, &shader, key] {
+                double seconds = 0;
+                auto code = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+                std::lock_guard done(mutex_);
+                shaders_[key] = std::move(code);
+                jit_compile_seconds_ += seconds;
+                compiled_.notify_all();
+            });
+            compiling_[key] = true;
+        } catch (const std::system_error&) {
+            return compile_now(shader, key);  // no thread to be had: compile here
+        }
+    } else {
+        return compile_now(shader, key);
+    }
+    Key interp = key;
+    interp.backend = Backend::Interp;
+    return compile_now(shader, interp);
+}
+
+double BackendCache::jit_compile_seconds() const {
+    std::lock_guard lock(mutex_);
+    return jit_compile_seconds_;
+}
+
+std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
+                                        const GLState::TextureUnit* textures) {
+    const Program::State& st = state_of(program);
+    const ir::Shader& shader = stage == ir::Stage::Vertex ? st.ir.vertex : st.ir.fragment;
+    ExecParams params{st.uniforms.data(), program.exec.max_loop_iterations, textures, program.exec.precision,
+                      st.fast_ops};
+    BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
+                          params.fast_ops, cpu_has_avx2()};
+    return st.backends->get(shader, key, program.exec.backend == Backend::Jit).instantiate(params);
+}
+
+}  // namespace glslrun::rt

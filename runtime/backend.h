@@ -1,0 +1,98 @@
+// The backend seam: who runs a shader. A backend turns an ir::Shader into
+// `CompiledShader`, once per program and specialization key (cached on the
+// Program: runtime/backend.cpp), and each worker instantiates its own
+// `Executor` from it: a register file, the uniforms and textures of the
+// draw, and the code. The interpreter (runtime/interpreter.h) is one
+// backend; the LLVM JIT (runtime/jit/) is the other. Both compute the same
+// bits: the interpreter is the JIT's oracle (tests/runtime/backend_*).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "glslrun/glslrun.h"
+#include "ir/ir.h"
+
+namespace glslrun::rt {
+
+// Compile-time batch width (8..64). Fragment batches hold kLanes/4 2x2 quads:
+// lanes 4q+0..3 are (x,y) (x+1,y) (x,y+1) (x+1,y+1).
+// GLSLRUN_LANES exists so that a test can build other widths and check that
+// images do not depend on it (tools/setup.sh test).
+#ifndef GLSLRUN_LANES
+#define GLSLRUN_LANES 16
+#endif
+inline constexpr int kLanes = GLSLRUN_LANES;
+static_assert(kLanes % 4 == 0 && kLanes >= 8 && kLanes <= 64);
+using LaneMask = uint64_t;  // bit i = lane i
+inline constexpr LaneMask kAllLanes = kLanes == 64 ? ~LaneMask(0) : ((LaneMask(1) << kLanes) - 1);
+
+// Precision::Fast's approximations by class (runtime/fast_kernels.h), as bits
+// of a mask: the error report switches them on one class at a time to find
+// which one causes an error (an ablation). Not part of the public API.
+enum FastOps : uint32_t {
+    kFastRsqrt = 1u << 0,   // frsqrt, and fsqrt_divisor with fdiv_by_sqrt (normalize)
+    kFastExpLog = 1u << 1,  // fexp, fexp2, flog, flog2
+    kFastPow = 1u << 2,     // fpow
+    kFastSinCos = 1u << 3,  // fsin, fcos
+    kAllFastOps = (1u << 4) - 1,
+};
+
+struct RunError {
+    std::string message;
+    int line = 0;
+};
+
+// What an executor needs of the draw. `uniforms` (the program's store, one
+// 32-bit word per component) must stay alive and unchanged while the
+// executor lives: uniform-only code (the shader's prologue) runs once, when
+// it is made. `textures` (kMaxTextureUnits units, may be null: nothing
+// bound) must stay alive too.
+struct ExecParams {
+    const uint32_t* uniforms = nullptr;
+    uint64_t max_loop_iterations = 1u << 22;
+    const GLState::TextureUnit* textures = nullptr;
+    Precision precision = Precision::Precise;
+    uint32_t fast_ops = kAllFastOps;  // FastOps bits: the classes Fast approximates
+};
+
+// One worker's instance of a shader: kLanes invocations per run().
+class Executor {
+public:
+    virtual ~Executor() = default;
+    // kLanes words of register r: floats, ints and bools (0/1) as raw bits.
+    // The caller fills the shader's inputs (ir::Shader::inputs) here before
+    // run() and reads its outputs after it.
+    virtual uint32_t* lanes(ir::Reg r) = 0;
+    float* lanes_f(ir::Reg r) { return reinterpret_cast<float*>(lanes(r)); }
+    // Runs the shader for the lanes in `live` (the others are left alone).
+    // Returns false, with *error set, if a loop ran past the iteration cap.
+    virtual bool run(LaneMask live, RunError* error) = 0;
+    // After run(): the lanes that were live and did not discard.
+    virtual LaneMask alive() const = 0;
+    // "interp" or "jit": which backend this is.
+    virtual Backend backend() const = 0;
+};
+
+// A shader compiled for one specialization key, shared by the workers.
+class CompiledShader {
+public:
+    virtual ~CompiledShader() = default;
+    virtual std::unique_ptr<Executor> instantiate(const ExecParams& params) const = 0;
+};
+
+// `shader` compiled by `backend` (Interp or Jit) for `precision`,
+// `fast_ops` and the vector ISA (`avx2`, else baseline x86-64). The JIT
+// declines what it cannot take (Reference, a recursive call graph, calls
+// that expand to too much code, a build without it): the interpreter then serves, with the same bits.
+// *llvm_seconds (may be null) receives LLVM's compile time.
+std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr);
+
+// An executor of `program`'s shader for `stage`, from the code cached on the
+// program (compiled at the first call for its key; thread-safe). The
+// program's uniforms, options and `textures` as the draw has them.
+std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
+                                        const GLState::TextureUnit* textures);
+
+}  // namespace glslrun::rt

@@ -1,0 +1,100 @@
+// The emitter of one shader's LLVM IR (runtime/jit/jit.h): control.cpp
+// writes the functions, blocks and masks, alu.cpp the instructions.
+#pragma once
+#include <deque>
+#include <string>
+
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+
+#include "ir/ir.h"
+#include "runtime/jit/context.h"
+
+namespace glslrun::rt::jit {
+
+// How an op writes its destination, as the interpreter's kernel does:
+// Honours ir::Instr::unmasked (the table's Alu ops, mov, konst, sel,
+// uniform: every lane when set) or Blends under the mask always (ddx, ddy).
+enum class WriteMode { Honours, Blends };
+
+class Emitter {
+public:
+    // Kernels for the call-outs are picked for (precision, fast_ops, avx2);
+    // their records go to `call_outs`, which must outlive the code.
+    Emitter(llvm::LLVMContext& context, llvm::Module& module, const ir::Shader& shader, Precision precision,
+            uint32_t fast_ops, bool avx2, std::deque<CallOut>& call_outs);
+
+    // Defines `name`, a ShaderFn running `block` (the main body, or the
+    // prologue) as the interpreter's run() does: the run's call frame
+    // changes nothing that anyone reads after it.
+    void define(const std::string& name, const ir::Block& block);
+
+private:
+    // --- control.cpp: masks are i64 lane bits kept in allocas
+    llvm::Value* load_mask(llvm::AllocaInst* slot);
+    void store_mask(llvm::AllocaInst* slot, llvm::Value* v);
+    llvm::Value* remaining(llvm::Value* entry);
+    void branch_unless_active(llvm::BasicBlock* exit);
+    void emit_block(const ir::Block& block, llvm::BasicBlock* exit);
+    // False when the node ends the block for every lane (break, ...).
+    bool emit_node(const ir::Node& node, llvm::BasicBlock* exit);
+    void emit_if(const ir::Node& node);
+    void emit_loop(const ir::Node& node);
+    void emit_call(const ir::Block& body);
+    void emit_failure(Failure failure, int line);
+    llvm::BasicBlock* new_block(const char* name);
+
+    // --- alu.cpp: one instruction
+    void emit_instr(const ir::Instr& in);
+    bool emit_native(const ir::Instr& in, llvm::Value** result);
+    llvm::Value* emit_float_op(ir::Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c);
+    llvm::Value* emit_int_op(ir::Op op, llvm::Value* a, llvm::Value* b);
+    llvm::Value* emit_compare(ir::Op op, llvm::Value* a, llvm::Value* b);
+    llvm::Value* emit_conversion(ir::Op op, llvm::Value* a);
+    llvm::Value* emit_derivative(ir::Op op, llvm::Value* a);
+    void emit_call_out(const ir::Instr& in);
+    llvm::Value* reg_ptr(ir::Reg r);
+    llvm::Value* load_reg(ir::Reg r);  // kLanes x i32
+    llvm::Value* load_float(ir::Reg r);
+    void write_reg(ir::Reg r, llvm::Value* words, WriteMode mode, bool unmasked);
+    llvm::Value* exec_lanes();  // kLanes x i1 of the exec mask
+    llvm::Value* ftz(llvm::Value* v);
+    llvm::Value* as_bool(llvm::Value* words);  // kLanes x i1: word != 0
+    llvm::Value* from_bool(llvm::Value* lanes);  // kLanes x i32: 0 or 1
+    llvm::Value* splat_f(float v);
+    llvm::Value* splat_i(uint32_t v);
+    llvm::Value* call_intrinsic(unsigned id, std::initializer_list<llvm::Value*> args);
+
+    llvm::LLVMContext& ctx_;
+    llvm::Module& module_;
+    llvm::IRBuilder<> b_;
+    const ir::Shader& shader_;
+    Precision precision_;
+    uint32_t fast_ops_;
+    bool avx2_;
+    std::deque<CallOut>& call_outs_;
+
+    llvm::Type* i1_;
+    llvm::Type* i32_;
+    llvm::Type* i64_;
+    llvm::Type* f32_;
+    llvm::FixedVectorType* vi32_;
+    llvm::FixedVectorType* vf32_;
+    llvm::Type* ptr_;
+    llvm::Type* mask_int_;  // iN, N = kLanes
+
+    // Per function being defined.
+    llvm::Function* fn_ = nullptr;
+    llvm::Value* ctx_arg_ = nullptr;
+    llvm::Value* regs_ = nullptr;
+    llvm::Value* uniforms_ = nullptr;
+    llvm::AllocaInst* exec_ = nullptr;
+    llvm::AllocaInst* alive_ = nullptr;
+    llvm::AllocaInst* brk_ = nullptr;
+    llvm::AllocaInst* cont_ = nullptr;
+    llvm::AllocaInst* ret_ = nullptr;
+    llvm::AllocaInst* loop_left_ = nullptr;
+};
+
+}  // namespace glslrun::rt::jit

@@ -1,0 +1,214 @@
+// The JIT's functions, blocks and execution masks: the interpreter's
+// run_block / run_if / run_loop / run_call (runtime/interpreter.cpp) and
+// ExecMask (runtime/exec_mask.h), written out as LLVM IR. Masks are i64 lane
+// bits, as there; LLVM keeps them in registers (mem2reg).
+//
+// Where the interpreter skips code, so does the generated code, at the same
+// points: a block is left as soon as no lane is active (at its start and
+// after each control-flow node), so instructions run exactly where the
+// interpreter runs them, and loop iterations are counted alike.
+#include "runtime/jit/codegen.h"
+
+#include <llvm/IR/Function.h>
+
+namespace glslrun::rt::jit {
+
+Emitter::Emitter(llvm::LLVMContext& context, llvm::Module& module, const ir::Shader& shader, Precision precision,
+                 uint32_t fast_ops, bool avx2, std::deque<CallOut>& call_outs)
+    : ctx_(context), module_(module), b_(context), shader_(shader), precision_(precision), fast_ops_(fast_ops),
+      avx2_(avx2), call_outs_(call_outs) {
+    i1_ = llvm::Type::getInt1Ty(ctx_);
+    i32_ = llvm::Type::getInt32Ty(ctx_);
+    i64_ = llvm::Type::getInt64Ty(ctx_);
+    f32_ = llvm::Type::getFloatTy(ctx_);
+    vi32_ = llvm::FixedVectorType::get(i32_, kLanes);
+    vf32_ = llvm::FixedVectorType::get(f32_, kLanes);
+    ptr_ = llvm::PointerType::get(ctx_, 0);
+    mask_int_ = llvm::Type::getIntNTy(ctx_, kLanes);
+}
+
+llvm::BasicBlock* Emitter::new_block(const char* name) { return llvm::BasicBlock::Create(ctx_, name, fn_); }
+
+llvm::Value* Emitter::load_mask(llvm::AllocaInst* slot) { return b_.CreateLoad(i64_, slot); }
+void Emitter::store_mask(llvm::AllocaInst* slot, llvm::Value* v) { b_.CreateStore(v, slot); }
+
+// ExecMask::remaining: entry & alive & ~brk & ~cont & ~ret.
+llvm::Value* Emitter::remaining(llvm::Value* entry) {
+    llvm::Value* left = b_.CreateOr(b_.CreateOr(load_mask(brk_), load_mask(cont_)), load_mask(ret_));
+    return b_.CreateAnd(b_.CreateAnd(entry, load_mask(alive_)), b_.CreateNot(left));
+}
+
+void Emitter::branch_unless_active(llvm::BasicBlock* exit) {
+    llvm::BasicBlock* next = new_block("active");
+    b_.CreateCondBr(b_.CreateICmpNE(load_mask(exec_), b_.getInt64(0)), next, exit);
+    b_.SetInsertPoint(next);
+}
+
+void Emitter::define(const std::string& name, const ir::Block& block) {
+    auto* type = llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i64_}, false);
+    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    // The executor runs with FTZ and DAZ set (ir::FlushDenormals): tell LLVM,
+    // so that what it folds matches what the CPU computes.
+    fn_->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
+    fn_->addFnAttr("denormal-fp-math-f32", "preserve-sign,preserve-sign");
+    fn_->addFnAttr(llvm::Attribute::NoUnwind);
+    ctx_arg_ = fn_->getArg(0);
+    regs_ = fn_->getArg(1);
+    uniforms_ = fn_->getArg(2);
+    fn_->addParamAttr(1, llvm::Attribute::NoAlias);
+    fn_->addParamAttr(2, llvm::Attribute::NoAlias);
+    llvm::Value* live = fn_->getArg(3);
+
+    b_.SetInsertPoint(new_block("entry"));
+    exec_ = b_.CreateAlloca(i64_, nullptr, "exec");
+    alive_ = b_.CreateAlloca(i64_, nullptr, "alive");
+    brk_ = b_.CreateAlloca(i64_, nullptr, "brk");
+    cont_ = b_.CreateAlloca(i64_, nullptr, "cont");
+    ret_ = b_.CreateAlloca(i64_, nullptr, "ret");
+    loop_left_ = b_.CreateAlloca(i64_, nullptr, "loop_left");
+    live = b_.CreateAnd(live, b_.getInt64(kAllLanes));
+    // ExecMask::reset(live), then the run's call frame (call_begin).
+    store_mask(exec_, live);
+    store_mask(alive_, live);
+    for (llvm::AllocaInst* m : {brk_, cont_, ret_}) store_mask(m, b_.getInt64(0));
+    b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kMaxLoopOffset)),
+                   loop_left_);
+    llvm::BasicBlock* done = new_block("done");
+    emit_block(block, done);
+    b_.CreateBr(done);
+    b_.SetInsertPoint(done);
+    b_.CreateStore(load_mask(alive_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kAliveOffset));
+    b_.CreateRet(b_.getInt32(int32_t(Failure::None)));
+}
+
+// Leaves the block on `exit` when no lane is active, as run_block does.
+void Emitter::emit_block(const ir::Block& block, llvm::BasicBlock* exit) {
+    branch_unless_active(exit);
+    for (const ir::Node& node : block) {
+        if (!emit_node(node, exit)) {
+            b_.CreateBr(exit);
+            b_.SetInsertPoint(new_block("dead"));  // the rest of the block never runs
+            return;
+        }
+        if (node.kind != ir::NodeKind::Instr) branch_unless_active(exit);
+    }
+}
+
+bool Emitter::emit_node(const ir::Node& node, llvm::BasicBlock* exit) {
+    auto leave = [&](llvm::AllocaInst* into) {
+        llvm::Value* exec = load_mask(exec_);
+        if (into == alive_) store_mask(alive_, b_.CreateAnd(load_mask(alive_), b_.CreateNot(exec)));
+        else store_mask(into, b_.CreateOr(load_mask(into), exec));
+        store_mask(exec_, b_.getInt64(0));
+        return false;
+    };
+    switch (node.kind) {
+    case ir::NodeKind::Instr: emit_instr(node.instr); return true;
+    case ir::NodeKind::If: emit_if(node); return true;
+    case ir::NodeKind::Loop: emit_loop(node); return true;
+    case ir::NodeKind::Break: return leave(brk_);
+    case ir::NodeKind::Continue: return leave(cont_);
+    case ir::NodeKind::Return: return leave(ret_);
+    case ir::NodeKind::Discard: return leave(alive_);
+    case ir::NodeKind::Call:
+        if (node.callee >= shader_.functions.size()) {
+            emit_failure(Failure::MissingFunction, node.loc.line);
+            return true;
+        }
+        emit_call(shader_.functions[node.callee].body);
+        return true;
+    case ir::NodeKind::Scope: emit_call(node.body); return true;
+    }
+    return true;
+}
+
+// ExecMask::if_push / if_else / if_pop around the two blocks.
+void Emitter::emit_if(const ir::Node& node) {
+    llvm::Value* entry = load_mask(exec_);
+    llvm::Value* words = load_reg(node.cond);
+    llvm::Value* cond = b_.CreateZExt(b_.CreateBitCast(as_bool(words), mask_int_), i64_);
+    store_mask(exec_, b_.CreateAnd(entry, cond));
+    llvm::BasicBlock* then_done = new_block("then_done");
+    emit_block(node.body, then_done);
+    b_.CreateBr(then_done);
+    b_.SetInsertPoint(then_done);
+    store_mask(exec_, remaining(b_.CreateAnd(entry, b_.CreateNot(cond))));
+    llvm::BasicBlock* else_done = new_block("else_done");
+    emit_block(node.alt, else_done);
+    b_.CreateBr(else_done);
+    b_.SetInsertPoint(else_done);
+    store_mask(exec_, remaining(entry));
+}
+
+// ExecMask's loop frame; the iteration cap counts every iteration of every
+// loop of the run, checked before each iteration as run_loop does.
+void Emitter::emit_loop(const ir::Node& node) {
+    llvm::Value* entry = load_mask(exec_);
+    llvm::Value* saved_brk = load_mask(brk_);
+    llvm::Value* saved_cont = load_mask(cont_);
+    store_mask(brk_, b_.getInt64(0));
+    store_mask(cont_, b_.getInt64(0));
+    llvm::BasicBlock* header = new_block("loop");
+    llvm::BasicBlock* capped = new_block("loop_capped");
+    llvm::BasicBlock* body = new_block("loop_body");
+    llvm::BasicBlock* body_done = new_block("loop_body_done");
+    llvm::BasicBlock* alt_done = new_block("loop_continue_done");
+    llvm::BasicBlock* end = new_block("loop_end");
+    b_.CreateBr(header);
+
+    b_.SetInsertPoint(header);
+    llvm::Value* left = b_.CreateLoad(i64_, loop_left_);
+    b_.CreateStore(b_.CreateSub(left, b_.getInt64(1)), loop_left_);
+    b_.CreateCondBr(b_.CreateICmpEQ(left, b_.getInt64(0)), capped, body);
+    b_.SetInsertPoint(capped);
+    emit_failure(Failure::LoopCap, node.loc.line);
+    b_.CreateUnreachable();
+
+    b_.SetInsertPoint(body);
+    emit_block(node.body, body_done);
+    b_.CreateBr(body_done);
+    b_.SetInsertPoint(body_done);
+    store_mask(cont_, b_.getInt64(0));
+    store_mask(exec_, remaining(entry));
+    emit_block(node.alt, alt_done);
+    b_.CreateBr(alt_done);
+    b_.SetInsertPoint(alt_done);
+    store_mask(cont_, b_.getInt64(0));
+    llvm::Value* again = remaining(entry);
+    store_mask(exec_, again);
+    b_.CreateCondBr(b_.CreateICmpNE(again, b_.getInt64(0)), header, end);
+
+    b_.SetInsertPoint(end);
+    store_mask(brk_, saved_brk);
+    store_mask(cont_, saved_cont);
+    store_mask(exec_, remaining(entry));
+}
+
+// A call or an inlined function's scope: Return ends it for the lanes that
+// return (ExecMask::call_begin / call_end). The callee's body is emitted in
+// place: compile() refuses recursive call graphs.
+void Emitter::emit_call(const ir::Block& body) {
+    llvm::Value* entry = load_mask(exec_);
+    llvm::Value* saved[3] = {load_mask(brk_), load_mask(cont_), load_mask(ret_)};
+    for (llvm::AllocaInst* m : {brk_, cont_, ret_}) store_mask(m, b_.getInt64(0));
+    llvm::BasicBlock* done = new_block("call_done");
+    emit_block(body, done);
+    b_.CreateBr(done);
+    b_.SetInsertPoint(done);
+    store_mask(brk_, saved[0]);
+    store_mask(cont_, saved[1]);
+    store_mask(ret_, saved[2]);
+    store_mask(exec_, remaining(entry));
+}
+
+// Returns from the function with `failure` (alive() as the interpreter
+// leaves it); the insertion point is left in
+// a fresh block that nothing reaches.
+void Emitter::emit_failure(Failure failure, int line) {
+    b_.CreateStore(load_mask(alive_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kAliveOffset));
+    b_.CreateStore(b_.getInt32(line), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kErrorLineOffset));
+    b_.CreateRet(b_.getInt32(int32_t(failure)));
+    b_.SetInsertPoint(new_block("after_failure"));
+}
+
+}  // namespace glslrun::rt::jit

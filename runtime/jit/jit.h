@@ -1,0 +1,31 @@
+// The LLVM JIT backend: compiles an ir::Shader into native vector code that
+// computes the interpreter's bits (runtime/backend.h). One function per
+// shader runs a batch of kLanes invocations: registers are vectors of kLanes
+// words in the same register file layout as the interpreter's, execution
+// masks are lane bit masks with the interpreter's semantics
+// (runtime/exec_mask.h), and a branch is skipped when no lane takes it.
+//
+// Files: jit.h (this), context.h (what generated code and its call-outs
+// share), module.cpp (LLVM set-up, compiling, the executor), codegen.h and
+// control.cpp (blocks, masks, control flow), alu.cpp (the instructions),
+// callout.cpp (ops that call the interpreter's kernels).
+#pragma once
+#include <memory>
+
+#include "runtime/backend.h"
+
+namespace glslrun::rt::jit {
+
+struct CompileStats {
+    double seconds = 0;  // LLVM: IR generation, optimization and machine code
+};
+
+// Native code for `shader` in `precision` (Precise or Fast, with Fast's
+// `fast_ops` classes) for the baseline x86-64 ISA or AVX2. Null where the
+// JIT does not take the shader (a recursive call graph, calls that expand
+// to too much code, or LLVM failed):
+// the caller runs the interpreter instead, which computes the same bits.
+std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
+                                        bool avx2, CompileStats* stats);
+
+}  // namespace glslrun::rt::jit

@@ -1,0 +1,234 @@
+// The JIT's LLVM set-up: one ORC LLJIT per compiled shader (its code lives
+// as long as the program's cache keeps it), a target machine for the
+// baseline x86-64 ISA or AVX2 (x86-64-v3) chosen as the interpreter chooses
+// its kernels, never contracting a * b + c into an FMA; and the executor
+// that runs the generated functions over its own register file.
+#include "runtime/jit/jit.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <deque>
+#include <mutex>
+
+#include <fmt/format.h>
+#include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
+#include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/Verifier.h>
+#include <llvm/Passes/PassBuilder.h>
+#include <llvm/Transforms/Scalar/ADCE.h>
+#include <llvm/Transforms/Scalar/DeadStoreElimination.h>
+#include <llvm/Transforms/Scalar/EarlyCSE.h>
+#include <llvm/Transforms/Scalar/GVN.h>
+#include <llvm/Transforms/Scalar/SROA.h>
+#include <llvm/Transforms/Scalar/SimplifyCFG.h>
+#include <llvm/Support/Host.h>
+#include <llvm/Support/TargetSelect.h>
+
+#include "runtime/aligned_words.h"
+#include "runtime/jit/codegen.h"
+
+namespace glslrun::rt::jit {
+
+namespace {
+
+void initialise_llvm() {
+    static std::once_flag once;  // LLVM's target registry is process-wide
+    std::call_once(once, [] {
+        llvm::InitializeNativeTarget();
+        llvm::InitializeNativeTargetAsmPrinter();
+    });
+}
+
+// The emitter writes callees out in place (GLSL has no recursion), so the
+// JIT takes a shader only if its calls expand to at most this many nodes:
+// piglit's glsl-*-inline-explosion calls grow exponentially, and the
+// interpreter, which runs calls as calls, serves such shaders.
+constexpr uint64_t kMaxExpandedNodes = 20000;
+
+// The node count of `block` with its calls expanded, memoized per function;
+// UINT64_MAX for a recursive call graph or past the limit.
+class ExpandedSize {
+public:
+    explicit ExpandedSize(const ir::Shader& s) : shader_(s), size_(s.functions.size(), kUnknown) {}
+    uint64_t of(const ir::Block& block) {
+        uint64_t n = 0;
+        for (const ir::Node& node : block) {
+            n = add(add(add(n, 1), of(node.body)), of(node.alt));
+            if (node.kind == ir::NodeKind::Call && node.callee < shader_.functions.size()) n = add(n, of_function(node.callee));
+            if (n == kTooLarge) return n;
+        }
+        return n;
+    }
+
+private:
+    static constexpr uint64_t kUnknown = UINT64_MAX - 1, kOnPath = UINT64_MAX - 2, kTooLarge = UINT64_MAX;
+    static uint64_t add(uint64_t a, uint64_t b) { return a > kMaxExpandedNodes || b > kMaxExpandedNodes || a + b > kMaxExpandedNodes ? kTooLarge : a + b; }
+    uint64_t of_function(uint32_t f) {
+        if (size_[f] == kOnPath) return kTooLarge;  // recursion
+        if (size_[f] != kUnknown) return size_[f];
+        size_[f] = kOnPath;
+        return size_[f] = of(shader_.functions[f].body);
+    }
+    const ir::Shader& shader_;
+    std::vector<uint64_t> size_;
+};
+
+bool jit_takes(const ir::Shader& shader) {
+    ExpandedSize size(shader);
+    const uint64_t body = size.of(shader.body), prologue = size.of(shader.prologue);
+    return body <= kMaxExpandedNodes && prologue <= kMaxExpandedNodes && body + prologue <= kMaxExpandedNodes;
+}
+
+llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
+    llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
+    builder.setCPU(avx2 ? "x86-64-v3" : "x86-64");
+    builder.setCodeGenOptLevel(llvm::CodeGenOpt::Default);
+    builder.getOptions().AllowFPOpFusion = llvm::FPOpFusion::Strict;
+    return builder;
+}
+
+// A short function pipeline, without InstCombine: LLVM 15's InstCombine
+// rewrites select(c, x + y, x) as x + select(c, y, -0.0), which flushes a
+// denormal x in the lanes the select keeps (the fuzz test's program 70 found
+// it), whatever the function's denormal-fp-math says. What is left: masks
+// into registers (SROA), redundant register loads and stores of the flat
+// register file (EarlyCSE, GVN, DSE), dead code, and the CFG.
+void optimise(llvm::Module& module, llvm::TargetMachine& machine) {
+    llvm::LoopAnalysisManager loops;
+    llvm::FunctionAnalysisManager functions;
+    llvm::CGSCCAnalysisManager cgscc;
+    llvm::ModuleAnalysisManager modules;
+    llvm::PassBuilder builder(&machine);
+    builder.registerModuleAnalyses(modules);
+    builder.registerCGSCCAnalyses(cgscc);
+    builder.registerFunctionAnalyses(functions);
+    builder.registerLoopAnalyses(loops);
+    builder.crossRegisterProxies(loops, functions, cgscc, modules);
+    llvm::FunctionPassManager pipeline;
+    pipeline.addPass(llvm::SROAPass());
+    pipeline.addPass(llvm::EarlyCSEPass(true));
+    pipeline.addPass(llvm::SimplifyCFGPass());
+    pipeline.addPass(llvm::GVNPass());
+    pipeline.addPass(llvm::DSEPass());
+    pipeline.addPass(llvm::ADCEPass());
+    pipeline.addPass(llvm::SimplifyCFGPass());
+    llvm::ModulePassManager module_pipeline;
+    module_pipeline.addPass(llvm::createModuleToFunctionPassAdaptor(std::move(pipeline)));
+    module_pipeline.run(module, modules);
+}
+
+class JitShader final : public CompiledShader {
+public:
+    std::unique_ptr<llvm::orc::LLJIT> jit;
+    std::deque<CallOut> call_outs;  // the generated code points at these
+    ShaderFn main = nullptr, prologue = nullptr;
+    uint32_t reg_count = 0;
+
+    std::unique_ptr<Executor> instantiate(const ExecParams& params) const override;
+};
+
+class JitExecutor final : public Executor {
+public:
+    JitExecutor(const JitShader& code, const ExecParams& p)
+        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms) {
+        ctx_.max_loop_iterations = p.max_loop_iterations;
+        ctx_.machine.uniforms = p.uniforms;
+        ctx_.machine.textures = p.textures;
+        ctx_.machine.regs = regs_.data;
+        ctx_.reg_count = code.reg_count;
+        ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
+        code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
+    }
+    uint32_t* lanes(ir::Reg r) override {
+        return regs_.data + size_t(r == ir::kNoReg || r >= code_.reg_count ? code_.reg_count : r) * kLanes;
+    }
+    bool run(LaneMask live, RunError* error) override {
+        ir::FlushDenormals ftz;
+        const Failure failure = Failure(code_.main(&ctx_, regs_.data, uniforms_, live));
+        if (failure == Failure::None) return true;
+        if (error) {
+            error->line = ctx_.error_line;
+            error->message = failure == Failure::LoopCap
+                                 ? fmt::format("loop exceeded {} iterations", ctx_.max_loop_iterations)
+                                 : "call to a missing function";
+        }
+        return false;
+    }
+    LaneMask alive() const override { return ctx_.alive; }
+    Backend backend() const override { return Backend::Jit; }
+
+private:
+    const JitShader& code_;
+    AlignedWords<uint32_t> regs_;
+    const uint32_t* uniforms_;
+    Context ctx_;
+};
+
+std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const {
+    return std::make_unique<JitExecutor>(*this, params);
+}
+
+}  // namespace
+
+std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
+                                        bool avx2, CompileStats* stats) {
+    if (precision == Precision::Reference || !jit_takes(shader)) return nullptr;
+    const auto start = std::chrono::steady_clock::now();
+    initialise_llvm();
+    auto code = std::make_unique<JitShader>();
+    code->reg_count = uint32_t(shader.regs.size());
+
+    auto context = std::make_unique<llvm::LLVMContext>();
+    auto module = std::make_unique<llvm::Module>("shader", *context);
+    auto machine = target_for(avx2).createTargetMachine();
+    if (!machine) {
+        llvm::consumeError(machine.takeError());
+        return nullptr;
+    }
+    module->setDataLayout((*machine)->createDataLayout());
+    module->setTargetTriple((*machine)->getTargetTriple().str());
+    {
+        Emitter emitter(*context, *module, shader, precision, fast_ops, avx2, code->call_outs);
+        emitter.define("glslrun_main", shader.body);
+        emitter.define("glslrun_prologue", shader.prologue);
+    }
+    if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
+    // GLSLRUN_JIT_DUMP=1 prints the module before and after optimization (a debugging aid).
+    const bool dump = std::getenv("GLSLRUN_JIT_DUMP") != nullptr;
+    if (dump) module->print(llvm::errs(), nullptr);
+    optimise(*module, **machine);
+    if (dump) module->print(llvm::errs(), nullptr);
+
+    auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
+    if (!jit) {
+        llvm::consumeError(jit.takeError());
+        return nullptr;
+    }
+    code->jit = std::move(*jit);
+    // The baseline ISA has no rounding instruction: floor and ceil call libm.
+    auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+        code->jit->getDataLayout().getGlobalPrefix());
+    if (!process) {
+        llvm::consumeError(process.takeError());
+        return nullptr;
+    }
+    code->jit->getMainJITDylib().addGenerator(std::move(*process));
+    if (auto err = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
+        llvm::consumeError(std::move(err));
+        return nullptr;
+    }
+    for (auto [name, fn] : {std::pair{"glslrun_main", &code->main}, std::pair{"glslrun_prologue", &code->prologue}}) {
+        auto symbol = code->jit->lookup(name);
+        if (!symbol) {
+            llvm::consumeError(symbol.takeError());
+            return nullptr;
+        }
+        *fn = symbol->toPtr<ShaderFn>();
+    }
+    if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return code;
+}
+
+}  // namespace glslrun::rt::jit

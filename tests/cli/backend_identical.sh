@@ -1,0 +1,29 @@
+#!/bin/sh
+# The JIT computes the interpreter's bits: every case of the image-hash set
+# (bench/precision.py's CASES, which cover every scene in scenes/), in
+# Precise and Fast, at 1 and 2 threads, rendered by both backends, must give
+# byte-identical PNGs. Reference runs on the interpreter only (--help).
+#   tests/cli/backend_identical.sh SOURCE_DIR GLSLRUN
+set -u
+src=$1
+glslrun=$2
+. "$src/tests/cli/common.sh"
+cases=$(sed -n 's/^    ("\([a-z_]*\)", "\([a-z_]*\.toml\)", .*/\1 \2/p' "$src/bench/precision.py")
+[ -n "$cases" ] || fail "no cases found in bench/precision.py"
+compared=0
+echo "$cases" > "$tmp/cases"
+while read -r shader scene; do
+    for precision in precise fast; do
+        for threads in 1 2; do
+            for backend in interp jit; do
+                "$glslrun" "$src/shaders/$shader.vert" "$src/shaders/$shader.frag" "$src/scenes/$scene" \
+                    --precision $precision --threads $threads --backend $backend -o "$tmp/$backend.png" >/dev/null ||
+                    fail "$shader on $scene did not render ($precision, $backend)"
+            done
+            cmp -s "$tmp/interp.png" "$tmp/jit.png" ||
+                fail "$shader on $scene ($precision, $threads threads): the JIT's image differs from the interpreter's"
+            compared=$((compared + 1))
+        done
+    done
+done < "$tmp/cases"
+finish "$compared image pairs identical"
