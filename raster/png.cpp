@@ -18,17 +18,22 @@ struct FileCloser {
 };
 
 // Framebuffer row y (bottom first) as RGBA8 bytes.
-void to_rgba8(const Framebuffer& fb, int y, png_byte* dst) {
-    const float* src = &fb.color[size_t(y) * fb.width * 4];
+void to_rgba8(const Framebuffer& fb, int buffer, int y, png_byte* dst) {
+    const float* src = &fb.color_buffer(buffer)[size_t(y) * fb.width * 4];
     for (int i = 0; i < fb.width * 4; ++i) dst[i] = png_byte(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
 }
 
 }  // namespace
 
-Status write_png(const Framebuffer& fb, const std::string& path) {
+Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
     if (fb.width <= 0 || fb.height <= 0) return Error("cannot write an empty framebuffer as PNG");
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
-    if (!file) return Error("cannot open '" + path + "' for writing");
+    if (buffer < 0 || buffer >= fb.color_buffers())
+        return Error("the framebuffer has no colour buffer " + std::to_string(buffer));
+    // "-" is standard output, which stays open.
+    const bool to_stdout = path == "-";
+    std::unique_ptr<std::FILE, FileCloser> file(to_stdout ? nullptr : std::fopen(path.c_str(), "wb"));
+    std::FILE* out = to_stdout ? stdout : file.get();
+    if (!out) return Error("cannot open '" + path + "' for writing");
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -43,7 +48,7 @@ Status write_png(const Framebuffer& fb, const std::string& path) {
         png_destroy_write_struct(&png, &info);
         return Error("libpng failed writing '" + path + "'");
     }
-    png_init_io(png, file.get());
+    png_init_io(png, out);
     png_set_IHDR(png, info, png_uint_32(fb.width), png_uint_32(fb.height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // Speed over size: the default level costs more than a whole 512x512 frame,
@@ -53,12 +58,12 @@ Status write_png(const Framebuffer& fb, const std::string& path) {
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
     for (int y = fb.height - 1; y >= 0; --y) {
-        to_rgba8(fb, y, row.data());
+        to_rgba8(fb, buffer, y, row.data());
         png_write_row(png, row.data());
     }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fflush(file.get()) != 0) return Error("cannot write '" + path + "'");
+    if (std::fflush(out) != 0) return Error("cannot write '" + path + "'");
     return Ok{};
 }
 

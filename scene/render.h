@@ -5,6 +5,12 @@
 
 namespace glslrun::scene {
 
+// The colour buffers a framebuffer for the scene needs: the most that any
+// draw's glDrawBuffers names ([state] draw_buffers, objects' too).
+int color_buffers(const Scene& scene);
+// Colour buffer i's image file: out.png for buffer 0, then out.1.png, out.2.png, ...
+std::string color_buffer_path(const std::string& output, int buffer);
+
 // Sets the scene's and the object's user uniforms on the program, converting
 // the file's numbers to the declared types. Errors cite the scene's file:line.
 Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings);

@@ -66,6 +66,9 @@ struct Object {
     std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
     std::optional<MaterialState> front_material, back_material;  // overrides
     std::vector<UniformSetting> uniforms;
+    // [objects.state]: the scene's GL state with this object's render state
+    // keys on top (lights, materials and textures stay the scene's).
+    std::optional<GLState> state;
     SourceLoc where;
 };
 
@@ -95,6 +98,7 @@ struct Scene {
     int width = 512, height = 512;
     glm::vec4 clear_color{0, 0, 0, 0};  // GL's default
     float clear_depth = 1.0f;
+    int clear_stencil = 0;
     glm::mat4 view{1.0f};        // the camera: modelview before any object transform
     glm::mat4 projection{1.0f};
     // Everything else of the GL state. Lights are already in eye space

@@ -33,7 +33,7 @@ const std::vector<MeshKind>& mesh_kinds() {
 
 const std::vector<std::string_view> kCommonKeys = {
     "name", "mesh", "transform", "color", "vertex_colors", "material", "front_material",
-    "back_material", "uniforms", "attributes"};
+    "back_material", "uniforms", "attributes", "state"};
 
 std::vector<std::string_view> all_object_keys() {
     std::vector<std::string_view> keys = kCommonKeys;
@@ -166,6 +166,18 @@ void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scen
         fail(n, fmt::format("'objects' must be an array of tables ([[objects]]) (got {})", describe(n)));
     for (size_t i = 0; i < list->size(); ++i)
         scene.objects.push_back(read_object((*list)[i], i, scene_dir, scene));
+}
+
+void read_object_states(const toml::node& n, Scene& scene) {
+    const toml::array& list = *n.as_array();  // read_objects checked it
+    for (size_t i = 0; i < list.size() && i < scene.objects.size(); ++i) {
+        const toml::node* state = list[i].as_table()->get("state");
+        if (!state) continue;
+        std::string what = fmt::format("objects[{}].state", i);
+        GLState gl = scene.gl;
+        read_state_section(Section(table(*state, what), what), scene.view, gl);
+        scene.objects[i].state = std::move(gl);
+    }
 }
 
 }  // namespace glslrun::scene::detail

@@ -19,7 +19,7 @@ namespace {
 using detail::Section;
 
 void read_output(const Section& s, Scene& scene) {
-    s.allow({"size", "clear_color", "clear_depth"});
+    s.allow({"size", "clear_color", "clear_depth", "clear_stencil"});
     if (const toml::node* n = s.get("size")) {
         const toml::array* a = n->as_array();
         if (!a || a->size() != 2)
@@ -34,6 +34,9 @@ void read_output(const Section& s, Scene& scene) {
     }
     s.read_color("clear_color", scene.clear_color);
     s.read("clear_depth", scene.clear_depth, {.lo = 0, .hi = 1, .why = "glClearDepth"});
+    if (const toml::node* n = s.get("clear_stencil"))
+        scene.clear_stencil = int(detail::integer(*n, "output.clear_stencil (stencil values are 8 bits)", 0,
+                                                  (1 << kStencilBits) - 1));
 }
 
 Section section(const toml::node& n, const char* name) { return Section(detail::table(n, name), name); }
@@ -66,6 +69,7 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     scene.gl.modelview = scene.view;
     scene.gl.projection = scene.projection;
     derive_eye_space_lights(scene);
+    if (const toml::node* n = top.get("objects")) detail::read_object_states(*n, scene);
     return scene;
 }
 

@@ -99,6 +99,13 @@ void read_camera(const Section& camera, Scene& scene);
 void read_lights(const toml::node& n, Scene& scene);
 void read_material(const Section& s, MaterialState& m);
 void read_render_state(const Section& top, Scene& scene);
+// The keys of one [state] table into `gl`; world-space clip planes go through `view`.
+void read_state_section(const Section& s, const glm::mat4& view, GLState& gl);
+// [state]'s per-fragment operations (scene_fragment_state.cpp).
+const std::vector<std::string_view>& fragment_state_keys();
+void read_fragment_state(const Section& s, GLState& gl);
+// [objects.state]: each object's state is the scene's final state with its own keys on top.
+void read_object_states(const toml::node& objects, Scene& scene);
 void read_uniforms(const toml::node& n, const std::string& what, std::vector<UniformSetting>& out);
 std::vector<VertexAttrib> read_attributes(const toml::node& n, const std::string& what,
                                           uint32_t vertex_count);

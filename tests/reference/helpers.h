@@ -34,7 +34,7 @@ struct Inputs {
 inline Result<scene::Image> render_glslrun(const Inputs& in) {
     auto program = Program::compile(in.vertex, in.fragment);
     if (!program) return program.error();
-    Framebuffer fb(in.scene.width, in.scene.height);
+    Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
     auto stats = scene::render_scene(*program, in.scene, fb);
     if (!stats) return stats.error();
     return scene::read_framebuffer(fb);

@@ -134,7 +134,7 @@ int program_cli(int argc, char** argv) {
     app.add_option("files", files,
                    "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
                    "pass-through one is used)");
-    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png)");
+    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png; - for standard output); with several draw buffers, buffer i > 0 goes to NAME.i.png");
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");

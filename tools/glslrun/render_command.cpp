@@ -2,6 +2,7 @@
 // --stats, and `--compare REF.png` on the result or on a given PNG.
 #include "render_command.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -81,6 +82,32 @@ std::string default_output(const Inputs& in) {
     std::string program = in.fragment.empty() ? fs::path(in.vertex[0].name).stem().string()
                                               : fs::path(in.fragment[0].name).stem().string();
     return fmt::format("{}-{}.png", program, fs::path(in.scene).stem().string());
+}
+
+// -o takes PNG names and "-" (standard output); any other extension is an error
+// rather than PNG data under a misleading name.
+Status check_output(const std::string& output, const RenderOptions& o, int buffers) {
+    if (output == "-") {
+        if (buffers > 1)
+            return Error(fmt::format("-o - writes one image, and the scene draws {} colour buffers (draw_buffers); "
+                                     "give a file name", buffers));
+        if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty())
+            return Error("-o - writes the PNG to standard output: it does not combine with --stats, --bench, "
+                         "--dump-ir or --compare, which print there too");
+        return Ok{};
+    }
+    std::string ext = fs::path(output).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png")
+        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
+                                 "for standard output)", output));
+    return Ok{};
+}
+
+Status write_buffers(const Framebuffer& fb, const std::string& output) {
+    for (int i = 0; i < fb.color_buffers(); ++i)
+        if (Status st = write_png(fb, scene::color_buffer_path(output, i), i); !st) return st;
+    return Ok{};
 }
 
 std::string join_builtins(const Program& prog) {
@@ -227,10 +254,12 @@ int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);
     auto scene = load_sized_scene(in, o);
     if (!scene) return fail(scene.error());
+    std::string output = o.output.empty() ? default_output(in) : o.output;
+    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error());
     if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
     // Allocated before the compile, so that its page faults (2.7 ms at
     // 512x512, perf) overlap the warm-up too.
-    Framebuffer fb(scene->width, scene->height);
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     // The clock starts before the wait: what is left of building glslang's
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
@@ -248,8 +277,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (o.bench_frames > 0)
         if (Status st = bench_frames(*prog, *scene, fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
-    std::string output = o.output.empty() ? default_output(in) : o.output;
-    if (Status st = write_png(fb, output); !st) return fail(st.error());
+    if (Status st = write_buffers(fb, output); !st) return fail(st.error());
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
     if (o.bench_frames > 0) {
