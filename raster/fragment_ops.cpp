@@ -1,6 +1,7 @@
 #include "raster/fragment_ops.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 
 #include "raster/framebuffer.h"
@@ -48,6 +49,54 @@ float combine(BlendEquation eq, float s, float sf, float d, float df) {
 }
 
 uint32_t to_unorm8(float v) { return uint32_t(quantize_unorm8(v) * 255.0f + 0.5f); }
+
+// a * b / 255 rounded to the nearest integer, for a and b in 0..255.
+uint32_t mul_unorm8(uint32_t a, uint32_t b) { return (a * b * 2 + 255) / 510; }
+
+// Table 4.1's factor of one operand in 8-bit fixed point (RGB, then alpha in [3]).
+std::array<uint32_t, 4> factor8(BlendFactor f, const std::array<uint32_t, 4>& s, const std::array<uint32_t, 4>& d,
+                                const std::array<uint32_t, 4>& c) {
+    auto all = [](uint32_t v) { return std::array<uint32_t, 4>{v, v, v, v}; };
+    auto inv = [](std::array<uint32_t, 4> v) {
+        for (uint32_t& x : v) x = 255 - x;
+        return v;
+    };
+    switch (f) {
+    case BlendFactor::Zero: return all(0);
+    case BlendFactor::One: return all(255);
+    case BlendFactor::SrcColor: return s;
+    case BlendFactor::OneMinusSrcColor: return inv(s);
+    case BlendFactor::DstColor: return d;
+    case BlendFactor::OneMinusDstColor: return inv(d);
+    case BlendFactor::SrcAlpha: return all(s[3]);
+    case BlendFactor::OneMinusSrcAlpha: return all(255 - s[3]);
+    case BlendFactor::DstAlpha: return all(d[3]);
+    case BlendFactor::OneMinusDstAlpha: return all(255 - d[3]);
+    case BlendFactor::ConstantColor: return c;
+    case BlendFactor::OneMinusConstantColor: return inv(c);
+    case BlendFactor::ConstantAlpha: return all(c[3]);
+    case BlendFactor::OneMinusConstantAlpha: return all(255 - c[3]);
+    case BlendFactor::SrcAlphaSaturate: {
+        uint32_t v = std::min(s[3], 255 - d[3]);
+        return {v, v, v, 255};
+    }
+    }
+    return all(0);
+}
+
+uint32_t combine8(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_t df) {
+    int a = int(mul_unorm8(s, sf)), b = int(mul_unorm8(d, df));
+    switch (eq) {
+    case BlendEquation::Add: return uint32_t(std::min(a + b, 255));
+    case BlendEquation::Subtract: return uint32_t(std::max(a - b, 0));
+    case BlendEquation::ReverseSubtract: return uint32_t(std::max(b - a, 0));
+    case BlendEquation::Min: return std::min(s, d);
+    case BlendEquation::Max: return std::max(s, d);
+    }
+    return s;
+}
+
+std::array<uint32_t, 4> to_unorm8(glm::vec4 v) { return {to_unorm8(v.r), to_unorm8(v.g), to_unorm8(v.b), to_unorm8(v.a)}; }
 
 size_t pixel_index(const LanePixels& px, int lane, int width) {
     return size_t(px.y[lane]) * size_t(width) + size_t(px.x[lane]);
@@ -138,6 +187,16 @@ glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
     return out;
 }
 
+glm::vec4 blend_unorm8(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
+    std::array<uint32_t, 4> s8 = to_unorm8(src), d8 = to_unorm8(dst), c8 = to_unorm8(s.color);
+    std::array<uint32_t, 4> sf = factor8(s.src_rgb, s8, d8, c8), df = factor8(s.dst_rgb, s8, d8, c8);
+    uint32_t sfa = factor8(s.src_alpha, s8, d8, c8)[3], dfa = factor8(s.dst_alpha, s8, d8, c8)[3];
+    glm::vec4 out;
+    for (size_t k = 0; k < 3; ++k) out[int(k)] = float(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k])) / 255.0f;
+    out.a = float(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa)) / 255.0f;
+    return out;
+}
+
 rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
@@ -172,7 +231,7 @@ void write_color(const FragmentOps& ops, std::vector<float>& buffer, int width, 
         if (ops.logic_op) {
             for (int k = 0; k < 4; ++k) out[k] = float(logic_op(ops.logic, to_unorm8(s[k]), to_unorm8(d[k]))) / 255.0f;
         } else if (ops.blend) {
-            out = blend(ops.blend_state, s, d);
+            out = ops.float_color ? blend(ops.blend_state, s, d) : blend_unorm8(ops.blend_state, s, d);
         }
         for (int k = 0; k < 4; ++k)
             if (ops.color_mask[size_t(k)]) dst[k] = ops.float_color ? out[k] : quantize_unorm8(out[k]);
