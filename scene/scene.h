@@ -120,6 +120,12 @@ constexpr int kMaxImageSide = 16384;
 Result<Scene> parse_scene(std::string_view toml_text, const std::string& path);
 Result<Scene> load_scene(const std::string& path);  // relative mesh paths are relative to the file
 
+// `--uniform name=value`: the value as a scene's [uniforms] entry writes it
+// ("0.5", "[1, 0, 0]", "3", "true"); errors name the argument.
+Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg);
+// Appends `settings` after the scene's and every object's own uniforms, so they win.
+void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings);
+
 // Recomputes scene.gl's eye-space lights from scene.lights and scene.view;
 // call it after changing either (load_scene already did).
 void derive_eye_space_lights(Scene& scene);

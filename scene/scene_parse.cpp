@@ -86,6 +86,31 @@ Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
     }
 }
 
+Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg) {
+    size_t eq = arg.find('=');
+    std::string_view name = arg.substr(0, eq);
+    while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
+    if (eq == std::string_view::npos || name.empty() || name.find_first_of("\"\\\n") != std::string_view::npos)
+        return Error(fmt::format("--uniform '{}': expected name=value, the value written as in a scene's "
+                                 "[uniforms] (3, 0.5, [1, 0, 0], true)", arg));
+    // The value is TOML, read exactly as a scene's [uniforms] entry.
+    std::string text = fmt::format("[uniforms]\n\"{}\" = {}\n", name, arg.substr(eq + 1));
+    auto scene = parse_scene(text, "--uniform");
+    if (!scene) {
+        std::string why = scene.error().diagnostics.empty() ? "invalid" : scene.error().diagnostics[0].message;
+        return Error(fmt::format("--uniform '{}': {}", arg, why));
+    }
+    for (UniformSetting& u : scene->uniforms) u.where = {"--uniform " + std::string(arg), 0};
+    return std::move(scene->uniforms);
+}
+
+void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings) {
+    // After the file's own settings, the scene's and each object's: the command line wins everywhere.
+    scene.uniforms.insert(scene.uniforms.end(), settings.begin(), settings.end());
+    for (Object& o : scene.objects)
+        if (!o.uniforms.empty()) o.uniforms.insert(o.uniforms.end(), settings.begin(), settings.end());
+}
+
 Result<Scene> load_scene(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error(fmt::format("cannot open scene file '{}': {}", path, std::strerror(errno)), path);

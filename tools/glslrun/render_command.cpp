@@ -91,6 +91,7 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
         if (buffers > 1)
             return Error(fmt::format("-o - writes one image, and the scene draws {} colour buffers (draw_buffers); "
                                      "give a file name", buffers));
+        if (o.frames > 1) return Error("-o - writes one image; --frames writes one per frame: give a file name");
         if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty())
             return Error("-o - writes the PNG to standard output: it does not combine with --stats, --bench, "
                          "--dump-ir or --compare, which print there too");
@@ -102,6 +103,12 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
         return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
                                  "for standard output)", output));
     return Ok{};
+}
+
+// Frame i's image name: out.png -> out.0000.png, out.0001.png, ...
+std::string frame_path(const std::string& output, int frame) {
+    fs::path p(output);
+    return (p.parent_path() / fmt::format("{}.{:04}{}", p.stem().string(), frame, p.extension().string())).string();
 }
 
 Status write_buffers(const Framebuffer& fb, const std::string& output) {
@@ -236,10 +243,15 @@ std::jthread warm_up_compiler(const Inputs& in) {
     }
 }
 
-// The scene file, with --size applied; its warnings are printed.
+// The scene file, with --size and --uniform applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
     if (!scene) return scene.error();
+    for (const std::string& arg : o.uniforms) {
+        auto settings = scene::parse_uniform_override(arg);
+        if (!settings) return settings.error();
+        scene::override_uniforms(*scene, *settings);
+    }
     // Legal but likely unintended (an incomplete texture samples as black).
     for (const Diagnostic& w : scene->warnings) fmt::print(stderr, "{}\n", w.str());
     if (!o.size.empty()) {
@@ -288,6 +300,31 @@ int render(const Inputs& in, const RenderOptions& o) {
     return 0;
 }
 
+// --frames N: frame i with `uniform float time` = i / kFramesPerSecond, into out.0000.png, ...
+int render_frames(const Inputs& in, const RenderOptions& o) {
+    auto scene = load_sized_scene(in, o);
+    if (!scene) return fail(scene.error());
+    std::string output = o.output.empty() ? default_output(in) : o.output;
+    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error());
+    auto prog = Program::compile(in.vertex, in.fragment);
+    if (!prog) return fail(prog.error());
+    prog->exec.threads = o.threads;
+    prog->exec.precision = o.precision;
+    if (!prog->has_uniform(kTimeUniform))
+        fmt::print(stderr, "warning: --frames: the program has no active 'uniform float {}', so every frame is the "
+                           "same\n", kTimeUniform);
+    else
+        scene->uniforms.push_back({kTimeUniform, {0.0}, false, {"--frames", 0}});
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    for (int frame = 0; frame < o.frames; ++frame) {
+        if (prog->has_uniform(kTimeUniform)) scene->uniforms.back().values = {frame / kFramesPerSecond};
+        auto stats = scene::render_scene(*prog, *scene, fb);
+        if (!stats) return fail(stats.error());
+        if (Status st = write_buffers(fb, frame_path(output, frame)); !st) return fail(st.error());
+    }
+    return 0;
+}
+
 }  // namespace
 
 int run_render_command(const std::vector<std::string>& files, const RenderOptions& o) {
@@ -308,6 +345,10 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
         (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
         return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "
                           "--bench, --compare, --stats or --dump-ir"));
+    if (o.frames > 0 && (o.bench_frames > 0 || !o.compare.empty() || o.stats || !o.error_report.empty()))
+        return fail(Error("--frames writes a sequence of images: it does not combine with --bench, --compare, "
+                          "--stats or --error-report"));
+    if (o.frames > 0 && !in->scene.empty()) return render_frames(*in, o);
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
         return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));
