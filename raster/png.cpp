@@ -1,15 +1,20 @@
-// PNG output through libpng. The framebuffer's row 0 is the bottom (GL), an
-// image's row 0 is the top, so rows are written in reverse.
+// PNG reading and writing through libpng. The framebuffer's row 0 is the
+// bottom (GL), an image's row 0 is the top, so framebuffer rows are written in
+// reverse.
+#include "raster/png.h"
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <vector>
 
+#include <fmt/format.h>
 #include <png.h>
 
-#include "glslrun/glslrun.h"
 #include "raster/framebuffer.h"
 
-namespace glslrun {
+namespace glslrun::png {
 
 namespace {
 
@@ -17,18 +22,85 @@ struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
-// Framebuffer row y (bottom first) as RGBA8 bytes.
-void to_rgba8(const Framebuffer& fb, int buffer, int y, png_byte* dst) {
-    const float* src = &fb.color_buffer(buffer)[size_t(y) * fb.width * 4];
-    for (int i = 0; i < fb.width * 4; ++i) dst[i] = png_byte(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
+// ------------------------------------------------------------ reading ---
+// libpng reports errors by calling this and expecting it not to return; the
+// message is kept for our Error.
+struct PngErrorSink {
+    char message[256] = {};
+};
+
+void on_png_error(png_structp png, png_const_charp msg) {
+    auto* sink = static_cast<PngErrorSink*>(png_get_error_ptr(png));
+    std::snprintf(sink->message, sizeof sink->message, "%s", msg);
+    png_longjmp(png, 1);
+}
+
+// Warnings concern ancillary chunks (bad gamma, text); the pixels are fine.
+void on_png_warning(png_structp, png_const_charp) {}
+
+// Owns libpng's read structures so that every exit path frees them.
+struct PngReader {
+    PngErrorSink sink;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    PngReader() {
+        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, on_png_error, on_png_warning);
+        if (png) info = png_create_info_struct(png);
+    }
+    ~PngReader() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
+    PngReader(const PngReader&) = delete;
+    PngReader& operator=(const PngReader&) = delete;
+};
+
+// The three steps below each set their own longjmp target and create nothing
+// with a destructor after it: a libpng error unwinds no C++ object.
+bool png_read_header(png_structp png, png_infop info, std::FILE* file) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_init_io(png, file);
+    png_read_info(png, info);
+    return true;
+}
+
+// Whatever the file's format, libpng hands out RGBA8 rows; no gamma
+// transform is requested, so 8-bit values come back exactly as stored.
+bool png_request_rgba8(png_structp png, png_infop info) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_byte color = png_get_color_type(png, info);
+    png_byte depth = png_get_bit_depth(png, info);
+    bool has_trns = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+    if (color == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if (color == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+    if (has_trns) png_set_tRNS_to_alpha(png);
+    if (depth == 16) png_set_scale_16(png);  // rounds, where strip_16 would truncate
+    if (color == PNG_COLOR_TYPE_GRAY || color == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+    if (!(color & PNG_COLOR_MASK_ALPHA) && !has_trns) png_set_filler(png, 0xff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    return true;
+}
+
+bool png_read_rows(png_structp png, png_bytep* rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_image(png, rows);
+    png_read_end(png, nullptr);
+    return true;
+}
+
+Error png_failure(const std::string& path, const PngReader& r) {
+    return Error(fmt::format("cannot read '{}' as PNG: {}", path, r.sink.message[0] ? r.sink.message : "libpng failed"));
 }
 
 }  // namespace
 
-Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
-    if (fb.width <= 0 || fb.height <= 0) return Error("cannot write an empty framebuffer as PNG");
-    if (buffer < 0 || buffer >= fb.color_buffers())
-        return Error("the framebuffer has no colour buffer " + std::to_string(buffer));
+void framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* dst) {
+    const float* src = &fb.color_buffer(buffer)[size_t(y) * size_t(fb.width) * 4];
+    for (size_t i = 0; i < size_t(fb.width) * 4; ++i)
+        dst[i] = uint8_t(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
+}
+
+Status write_rgba8(const std::string& path, int width, int height,
+                   const std::function<void(int y, uint8_t* dst)>& row_of) {
+    if (width <= 0 || height <= 0) return Error("cannot write an empty image as PNG");
     // "-" is standard output, which stays open.
     const bool to_stdout = path == "-";
     std::unique_ptr<std::FILE, FileCloser> file(to_stdout ? nullptr : std::fopen(path.c_str(), "wb"));
@@ -40,16 +112,14 @@ Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
         png_destroy_write_struct(&png, nullptr);
         return Error("libpng: out of memory");
     }
-    // One row at a time: a whole image's bytes (1 MB at 512x512) cost more
-    // in page faults than their conversion (perf, docs/performance.md).
-    std::vector<png_byte> row(size_t(fb.width) * 4);
+    std::vector<png_byte> row(size_t(width) * 4);
     // libpng reports errors by longjmp; nothing with a destructor is created below.
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         return Error("libpng failed writing '" + path + "'");
     }
     png_init_io(png, out);
-    png_set_IHDR(png, info, png_uint_32(fb.width), png_uint_32(fb.height), 8, PNG_COLOR_TYPE_RGBA,
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // Speed over size: the default level costs more than a whole 512x512 frame,
     // and libpng's adaptive filter choice is half of what remains (512x512 spot:
@@ -57,14 +127,45 @@ Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
     png_set_compression_level(png, 1);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
-    for (int y = fb.height - 1; y >= 0; --y) {
-        to_rgba8(fb, buffer, y, row.data());
+    for (int y = 0; y < height; ++y) {
+        row_of(y, row.data());
         png_write_row(png, row.data());
     }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     if (std::fflush(out) != 0) return Error("cannot write '" + path + "'");
     return Ok{};
+}
+
+Result<Rgba8Image> read_rgba8(const std::string& path, int max_side) {
+    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) return Error(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
+    PngReader r;
+    if (!r.info) return Error("libpng: out of memory");
+    if (!png_read_header(r.png, r.info, file.get())) return png_failure(path, r);
+    png_uint_32 w = png_get_image_width(r.png, r.info), h = png_get_image_height(r.png, r.info);
+    if (w == 0 || h == 0 || w > png_uint_32(max_side) || h > png_uint_32(max_side))
+        return Error(fmt::format("'{}' is {}x{}: images must be 1..{} pixels per side", path, w, h, max_side));
+    if (!png_request_rgba8(r.png, r.info)) return png_failure(path, r);
+    if (png_get_rowbytes(r.png, r.info) != size_t(w) * 4)
+        return Error(fmt::format("'{}': libpng could not convert the image to RGBA8", path));
+    Rgba8Image image{int(w), int(h), std::vector<uint8_t>(size_t(w) * h * 4)};
+    std::vector<png_bytep> rows(h);
+    for (png_uint_32 y = 0; y < h; ++y) rows[y] = &image.rgba[size_t(y) * w * 4];
+    if (!png_read_rows(r.png, rows.data())) return png_failure(path, r);
+    return image;
+}
+
+}  // namespace glslrun::png
+
+namespace glslrun {
+
+Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
+    if (fb.width <= 0 || fb.height <= 0) return Error("cannot write an empty framebuffer as PNG");
+    if (buffer < 0 || buffer >= fb.color_buffers())
+        return Error("the framebuffer has no colour buffer " + std::to_string(buffer));
+    return png::write_rgba8(path, fb.width, fb.height,
+                            [&](int y, uint8_t* dst) { png::framebuffer_row(fb, buffer, fb.height - 1 - y, dst); });
 }
 
 }  // namespace glslrun

@@ -7,8 +7,8 @@
 #include <cstring>
 
 #include "raster/fragment_ops.h"
-#include "scene/render.h"
-#include "scene/scene.h"
+#include "glslrun/scene/render.h"
+#include "glslrun/scene/scene.h"
 
 using namespace glslrun;
 using namespace glslrun::raster;

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "tools/glref/gl_render.h"
-#include "scene/image_compare.h"
-#include "scene/render.h"
-#include "scene/scene.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/render.h"
+#include "glslrun/scene/scene.h"
 
 namespace reference {
 
@@ -39,11 +39,7 @@ inline Result<std::vector<scene::Image>> render_glslrun(const Inputs& in) {
     auto stats = scene::render_scene(*program, in.scene, fb);
     if (!stats) return stats.error();
     std::vector<scene::Image> images;
-    for (int i = 0; i < fb.color_buffers(); ++i) {
-        Framebuffer one(fb.width, fb.height);
-        one.color = fb.color_buffer(i);
-        images.push_back(scene::read_framebuffer(one));
-    }
+    for (int i = 0; i < fb.color_buffers(); ++i) images.push_back(scene::read_framebuffer(fb, i));
     return images;
 }
 

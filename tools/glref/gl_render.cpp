@@ -12,7 +12,7 @@
 #include "tools/glref/gl_textures.h"
 #include "tools/glref/gl_uniforms.h"
 #include "scene/bench_report.h"
-#include "scene/render.h"
+#include "glslrun/scene/render.h"
 
 namespace glslrun::glref {
 
