@@ -27,6 +27,7 @@ const std::vector<MeshKind>& mesh_kinds() {
         {"torus", {"inner_radius", "outer_radius", "sides", "rings"}},
         {"plane", {"size", "subdivisions"}},
         {"obj", {"file"}},
+        {"arrays", array_mesh_keys()},
     };
     return kinds;
 }
@@ -44,7 +45,7 @@ std::vector<std::string_view> all_object_keys() {
 }
 
 const MeshKind& mesh_kind(const Section& s) {
-    const toml::node& n = s.require("mesh", "teapot, quad, cube, sphere, torus, plane or obj");
+    const toml::node& n = s.require("mesh", "teapot, quad, cube, sphere, torus, plane, obj or arrays");
     std::vector<std::string_view> names;
     for (const MeshKind& k : mesh_kinds()) names.push_back(k.name);
     return mesh_kinds()[choice(n, s.name("mesh"), names)];
@@ -103,6 +104,7 @@ Mesh build_mesh(const Section& s, const MeshKind& kind, const std::string& scene
         return make_torus(positive(s, "inner_radius", 0.25), positive(s, "outer_radius", 1.0),
                           count(s, "sides", 16, 3), count(s, "rings", 32, 3));
     if (k == "plane") return make_plane(positive(s, "size", 1.0), count(s, "subdivisions", 1, 1));
+    if (k == "arrays") return read_array_mesh(s);
     return load_obj_mesh(s, scene_dir, object);
 }
 
