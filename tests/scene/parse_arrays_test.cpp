@@ -57,12 +57,7 @@ TEST_CASE("every GL 2.1 primitive type has its name", "[scene][arrays]") {
 }
 
 TEST_CASE("arrays that do not fit are errors citing their line", "[scene][arrays][errors]") {
-    struct Case {
-        const char* text;
-        int line;
-        const char* message;
-    };
-    const Case cases[] = {
+    check_cases({
         {"[[objects]]\nmesh = \"arrays\"\nprimitive = \"triangle\"\nvertices = [[0, 0]]\n", 3,
          "did you mean 'triangles'?"},
         {"[[objects]]\nmesh = \"arrays\"\nprimitive = \"points\"\n", 1, "vertices"},
@@ -82,9 +77,5 @@ TEST_CASE("arrays that do not fit are errors citing their line", "[scene][arrays
          "texture coordinate sets are 0..7"},
         {"[[objects]]\nmesh = \"arrays\"\nvertices = [[0, 0], [1, 0, 0]]\n", 3, "has 3 components; element 0 has 2"},
         {"[[objects]]\nmesh = \"quad\"\nvertices = [[0, 0]]\n", 3, "vertices"},
-    };
-    for (const Case& c : cases) {
-        INFO("scene:\n" << c.text);
-        check_error(c.text, c.line, c.message);
-    }
+    });
 }

@@ -121,12 +121,7 @@ TEST_CASE("glBlendFunc's two factors set RGB and alpha alike; one equation sets 
 }
 
 TEST_CASE("bad per-fragment values cite file:line", "[scene][fragment][errors]") {
-    struct Case {
-        const char* text;
-        int line;
-        const char* message;
-    };
-    const Case cases[] = {
+    check_cases({
         {"[state]\nblend = true\nblend_func = [\"src_alpha\", \"one_minus_src_alhpa\"]\n", 3,
          "'state.blend_func[1]' = \"one_minus_src_alhpa\" is not allowed; did you mean 'one_minus_src_alpha'?"},
         {"[state]\nblend_func = [\"one\"]\n", 2, "must be [src, dst] or [src_rgb, dst_rgb, src_alpha, dst_alpha]"},
@@ -146,9 +141,5 @@ TEST_CASE("bad per-fragment values cite file:line", "[scene][fragment][errors]")
         {"[output]\nclear_stencil = 300\n", 2, "must be in [0, 255]"},
         {"[[objects]]\nmesh = \"quad\"\nstate = { blend_fnc = [\"one\", \"one\"] }\n", 3,
          "unknown key 'blend_fnc' in [objects[0].state]; did you mean 'blend_func'?"},
-    };
-    for (const Case& c : cases) {
-        INFO("scene:\n" << c.text);
-        check_error(c.text, c.line, c.message);
-    }
+    });
 }
