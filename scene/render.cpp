@@ -152,7 +152,7 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
 }
 
 Result<Image> render_image(Program& program, const Scene& scene) {
-    Framebuffer fb(scene.width, scene.height);
+    Framebuffer fb(scene.width, scene.height, false, color_buffers(scene));
     auto stats = render_scene(program, scene, fb);
     if (!stats) return stats.error();
     return read_framebuffer(fb);

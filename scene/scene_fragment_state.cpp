@@ -10,8 +10,6 @@ namespace glslrun::scene::detail {
 
 namespace {
 
-const std::vector<std::string_view> kCompareFuncs = {"never", "less", "equal", "lequal",
-                                                     "greater", "notequal", "gequal", "always"};
 const std::vector<std::string_view> kStencilOps = {"keep", "zero", "replace", "incr",
                                                    "decr", "invert", "incr_wrap", "decr_wrap"};
 const std::vector<std::string_view> kBlendFactors = {
@@ -43,7 +41,7 @@ void read_stencil_value(const Section& s, std::string_view key, uint32_t& out) {
 // then stencil_back_* the back face alone (the *Separate calls with GL_BACK).
 void read_stencil_face(const Section& s, std::string_view prefix, StencilFace& f) {
     auto key = [&](std::string_view name) { return fmt::format("{}{}", prefix, name); };
-    read_enum(s, key("func"), kCompareFuncs, f.func);
+    read_enum(s, key("func"), compare_func_names(), f.func);
     uint32_t ref = uint32_t(f.ref);
     read_stencil_value(s, key("ref"), ref);
     f.ref = int(ref);
@@ -126,6 +124,12 @@ void read_color_writemask(const Section& s, GLState& gl) {
 
 }  // namespace
 
+const std::vector<std::string_view>& compare_func_names() {
+    static const std::vector<std::string_view> names = {"never", "less", "equal", "lequal",
+                                                        "greater", "notequal", "gequal", "always"};
+    return names;
+}
+
 const std::vector<std::string_view>& fragment_state_keys() {
     static const std::vector<std::string_view> keys = {
         "scissor_test", "scissor_box", "alpha_test", "alpha_test_func", "alpha_test_ref", "stencil_test",
@@ -141,7 +145,7 @@ void read_fragment_state(const Section& s, GLState& gl) {
     s.read("scissor_test", gl.scissor_test);
     read_scissor_box(s, gl);
     s.read("alpha_test", gl.alpha_test);
-    read_enum(s, "alpha_test_func", kCompareFuncs, gl.alpha_func);
+    read_enum(s, "alpha_test_func", compare_func_names(), gl.alpha_func);
     s.read("alpha_test_ref", gl.alpha_ref, {.lo = 0, .hi = 1, .why = "glAlphaFunc"});
     s.read("stencil_test", gl.stencil_test);
     for (StencilFace& face : gl.stencil) read_stencil_face(s, "stencil_", face);

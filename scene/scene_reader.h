@@ -101,6 +101,8 @@ void read_material(const Section& s, MaterialState& m);
 void read_render_state(const Section& top, Scene& scene);
 // The keys of one [state] table into `gl`; world-space clip planes go through `view`.
 void read_state_section(const Section& s, const glm::mat4& view, GLState& gl);
+// CompareFunc's names in its order: GL_NEVER .. GL_ALWAYS without GL_ (scene_fragment_state.cpp).
+const std::vector<std::string_view>& compare_func_names();
 // [state]'s per-fragment operations (scene_fragment_state.cpp).
 const std::vector<std::string_view>& fragment_state_keys();
 void read_fragment_state(const Section& s, GLState& gl);

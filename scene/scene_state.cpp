@@ -155,8 +155,7 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
     s.allow(keys);
     s.read("depth_test", gl.depth_test);
     if (auto n = s.get("depth_func"))
-        gl.depth_func = GLState::DepthFunc(choice(*n, s.name("depth_func"), {"never", "less", "equal",
-                                                  "lequal", "greater", "notequal", "gequal", "always"}));
+        gl.depth_func = GLState::DepthFunc(choice(*n, s.name("depth_func"), compare_func_names()));
     read_cull_face(s, gl);
     if (auto n = s.get("front_face")) gl.front_ccw = choice(*n, s.name("front_face"), {"ccw", "cw"}) == 0;
     if (auto n = s.get("shade_model"))

@@ -35,7 +35,8 @@ Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Frame
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb);
 
 // render_scene into a framebuffer of the scene's size, read back as the PNG
-// of `glslrun a.vert a.frag scene.toml` holds it (top row first).
+// of `glslrun a.vert a.frag scene.toml` holds it (top row first): colour
+// buffer 0 when the scene draws to several.
 Result<Image> render_image(Program& program, const Scene& scene);
 
 // Reads shader files; each source is named by its path, so diagnostics say
