@@ -341,7 +341,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
     DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
-                  {}, find_output(vs, "gl_PointSize"), scratch.front_attrs, scratch.window};
+                  {}, gl.vertex_program_point_size ? find_output(vs, "gl_PointSize") : -1, scratch.front_attrs,
+                  scratch.window};
     prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
     auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
     scratch.bins.reset(scissor);

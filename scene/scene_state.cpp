@@ -149,7 +149,8 @@ void read_material_section(const Section& top, std::string_view key, Scene& scen
 
 void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
     std::vector<std::string_view> keys = {"depth_test", "depth_func", "cull_face", "front_face", "shade_model",
-                                          "vertex_program_two_side", "point_size", "clip_planes",
+                                          "vertex_program_two_side", "point_size", "vertex_program_point_size",
+                                          "clip_planes",
                                           "clip_planes_space", "depth_range"};
     keys.insert(keys.end(), fragment_state_keys().begin(), fragment_state_keys().end());
     s.allow(keys);
@@ -162,6 +163,7 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
         gl.flat_shading = choice(*n, s.name("shade_model"), {"smooth", "flat"}) == 1;
     s.read("vertex_program_two_side", gl.vertex_program_two_side);
     s.read("point_size", gl.point_size, {.lo = 0, .lo_open = true, .why = "glPointSize"});
+    s.read("vertex_program_point_size", gl.vertex_program_point_size);
     read_clip_planes(s, view, gl);
     read_depth_range(s, gl);
     read_fragment_state(s, gl);

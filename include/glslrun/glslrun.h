@@ -319,6 +319,9 @@ struct GLState {
     uint32_t clip_plane_enabled = 0;         // bit i: GL_CLIP_PLANEi
     float depth_near = 0, depth_far = 1;
     float point_size = 1;
+    // glEnable(GL_VERTEX_PROGRAM_POINT_SIZE): points take the vertex shader's
+    // gl_PointSize; off (GL's default), point_size (glPointSize).
+    bool vertex_program_point_size = false;
     struct Fog { glm::vec4 color{0, 0, 0, 0}; float density = 1, start = 0, end = 1; } fog;
     bool light_model_local_viewer = false, light_model_two_side = false;  // fixed function only
     glm::vec4 current_color{1, 1, 1, 1};     // glColor, for gl_Color without an array

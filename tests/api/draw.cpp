@@ -217,6 +217,7 @@ TEST_CASE("points and lines", "[api][draw]") {
     Program sized = compile("void main() { gl_Position = gl_Vertex; gl_PointSize = 3.0; }",
                             "#version 120\nvoid main() { gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }");
     GLState gl;
+    gl.vertex_program_point_size = true;
     Framebuffer fb(16, 16, true);
     // Window centres (4.5, 4.5) and (10, 10) (a pixel corner).
     VertexAttrib pos = positions({4.5f / 8 - 1, 4.5f / 8 - 1, 0, 1, 10.0f / 8 - 1, 10.0f / 8 - 1, 0, 1});

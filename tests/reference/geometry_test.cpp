@@ -121,6 +121,39 @@ attributes = { weight = [1, 1, 1, 1, 1] }
 
 }  // namespace
 
+// gl_PointSize counts only with vertex_program_point_size; the other object
+// takes point_size (glPointSize). Centres off pixel boundaries.
+const char* kPointVertex = R"(
+void main() { gl_FrontColor = gl_Color; gl_PointSize = 7.0; gl_Position = ftransform(); }
+)";
+
+const char* kPointScene = R"(
+[output]
+size = [64, 64]
+clear_color = [0, 0, 0, 1]
+[state]
+point_size = 3
+[[objects]]
+mesh = "arrays"
+primitive = "points"
+vertices = [[-0.52, -0.47], [0.33, 0.61]]
+colors = [[1, 0, 0], [0, 1, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "points"
+vertices = [[0.41, -0.36], [-0.58, 0.44]]
+colors = [[0, 0, 1], [1, 1, 0]]
+state = { vertex_program_point_size = true }
+)";
+
+TEST_CASE("glslrun matches Mesa on glPointSize and gl_PointSize with GL_VERTEX_PROGRAM_POINT_SIZE", "[reference]") {
+    auto scene = scene::parse_scene(kPointScene, "points.toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::compare("geometry-point-size", {{{"points.vert", kPointVertex}},
+                                               {{"points.frag", "void main() { gl_FragColor = gl_Color; }\n"}},
+                                               std::move(*scene)});
+}
+
 TEST_CASE("glslrun matches Mesa on inline arrays of every primitive type", "[reference]") {
     auto scene = scene::parse_scene(kScene, "arrays.toml");
     if (!scene) FAIL(scene.error().str());

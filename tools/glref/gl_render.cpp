@@ -187,6 +187,7 @@ void set_render_state(const GLFunctions& gl, const GLState& g) {
     glShadeModel(g.flat_shading ? GL_FLAT : GL_SMOOTH);
     enable(GL_VERTEX_PROGRAM_TWO_SIDE, g.vertex_program_two_side);
     glPointSize(g.point_size);
+    enable(GL_VERTEX_PROGRAM_POINT_SIZE, g.vertex_program_point_size);
     glDepthRange(g.depth_near, g.depth_far);
     glDisable(GL_DITHER);  // on by default in GL; glslrun never dithers
     set_fragment_state(gl, g);
