@@ -36,8 +36,6 @@ Status check_shader(Stage stage, const ShaderSource& source, int default_version
 
 namespace frontend {
 
-std::string internal_source_name(size_t index) { return fmt::format("#{}", index); }
-
 static std::string trim(const std::string& s) {
     size_t b = s.find_first_not_of(" \t\r\n");
     if (b == std::string::npos) return {};
@@ -45,16 +43,7 @@ static std::string trim(const std::string& s) {
     return s.substr(b, e - b + 1);
 }
 
-static std::string resolve_name(const std::string& name, const std::vector<ShaderSource>& sources) {
-    if (name.size() > 1 && name[0] == '#') {
-        size_t i = std::strtoul(name.c_str() + 1, nullptr, 10);
-        if (i < sources.size()) return sources[i].name;
-    }
-    return name;
-}
-
-void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sources,
-                    const std::string& fallback_file, std::vector<Diagnostic>& out) {
+void parse_info_log(const std::string& log, const std::string& unit_file, std::vector<Diagnostic>& out) {
     static const std::regex located(R"(^(ERROR|WARNING): (.+):(\d+): '(.*?)' : +(.*?)\s*$)");
     static const std::regex global(R"(^(ERROR|WARNING): (.*?)\s*$)");
     std::istringstream in(log);
@@ -68,7 +57,8 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
             last_kept = false;
             if (token.empty() && text == "compilation terminated") continue;
             std::string message = token.empty() ? text : fmt::format("'{}' : {}", token, text);
-            std::string file = resolve_name(m[2].str(), sources);
+            // String 0 is the unit itself; another number comes from `#line L S`.
+            std::string file = m[2].str() == "0" ? unit_file : m[2].str();
             int line_no = std::stoi(m[3].str());
             // Later errors on a line that already has one are cascades of
             // the first (glslang recovers by inventing a declaration).
@@ -82,7 +72,7 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
             if (text.find("compilation errors.") != std::string::npos && text.find("No code generated") != std::string::npos)
                 continue;
             if (text.empty()) continue;
-            out.push_back(Diagnostic{fallback_file, 0, text, m[1].str() == "WARNING"});
+            out.push_back(Diagnostic{unit_file, 0, text, m[1].str() == "WARNING"});
             last_kept = true;
         } else if (last_kept && !trim(line).empty() && (line[0] == ' ' || line[0] == '\t')) {
             // Continuation of a multi-line link message.

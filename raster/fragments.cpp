@@ -128,7 +128,14 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     // (whose depth-fail update needs the fragment to survive the alpha test)
     // the depth test cannot depend on the shader, so it runs before shading
     // and culls hidden quads.
-    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test;
+    // The shader debugger sees every fragment shaded: the late test gives the
+    // same image (the same tests in the same order), only with more shading.
+    probe_ = st.probe;
+    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
+}
+
+ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
+    return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
 }
 
 FragmentStage::~FragmentStage() = default;
@@ -260,6 +267,8 @@ void FragmentStage::flush() {
     fill_inputs(w);
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
     rt::RunError run_error;
+    if (probe_) [[unlikely]]
+        probe_->before_run(probe_batch(covered_));
     bool ok = interp_->run(live, &run_error);
     rt::LaneMask covered = covered_;
     covered_ = 0;
@@ -268,7 +277,10 @@ void FragmentStage::flush() {
         error_ = exec::run_error(state_of(program_), ir::Stage::Fragment, run_error);
         return;
     }
-    write_outputs(covered);
+    if (probe_) [[unlikely]]
+        probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered));
+    else
+        write_outputs<false>(covered);
     quads_ = 0;
 }
 
@@ -283,7 +295,10 @@ void FragmentStage::load_color(int buffer, std::array<Lanes, 4>& rgba) const {
 // The per-fragment operations over the batch (late depth test or none,
 // then colour writes), in lane order: two quads of the batch may cover the
 // same pixel.
-void FragmentStage::write_outputs(rt::LaneMask covered) {
+// kProbed: returns the lanes written (alive, and passing the tests), for
+// the probe; without it, 0 (no work for it per lane on the fast path).
+template <bool kProbed>
+rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
     rt::Interpreter& in = *interp_;
     shaded_ += uint64_t(std::popcount(covered));
     rt::LaneMask alive = in.alive() & covered;
@@ -292,15 +307,18 @@ void FragmentStage::write_outputs(rt::LaneMask covered) {
         load_lanes(in, depth_out_->kind, depth_out_->first, z, quads_ * 4);
         for (float& d : z) d = d > 0.0f ? std::min(d, 1.0f) : 0.0f;  // NaN -> 0
     }
-    if (ops_.plain) write_plain(alive, z);
-    else write_with_ops(alive, z);
+    if (ops_.plain) return write_plain<kProbed>(alive, z);
+    rt::LaneMask written = write_with_ops(alive, z);
+    return kProbed ? written : 0;
 }
 
 // The fast path: at most a depth test with writes, and plain stores into one buffer.
-void FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
+template <bool kProbed>
+rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
     std::array<Lanes, 4> rgba{};
     if (color_out_[0]) load_color(0, rgba);
     bool late_depth = ops_.depth_test && !early_depth_;
+    rt::LaneMask written = 0;
     for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         size_t pixel = size_t(lane_y_[lane]) * fb_.width + lane_x_[lane];
@@ -309,14 +327,17 @@ void FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
             fb_.depth[pixel] = z[size_t(lane)];
         }
         ++written_;
+        if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
         if (!color_out_[0]) continue;
         // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
         float* dst = &fb_.color[pixel * 4];
         for (size_t k = 0; k < 4; ++k) dst[k] = fb_.float_color ? rgba[k][size_t(lane)] : quantize_unorm8(rgba[k][size_t(lane)]);
     }
+    return written;
 }
 
-void FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
+// The general path; returns the lanes written.
+rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
     std::array<Lanes, 4> rgba{};
     rt::LaneMask back = 0;
     for (int q = 0; q < quads_; ++q)
@@ -334,6 +355,7 @@ void FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
         load_color(b, rgba);
         write_color(ops_, fb_.color_buffer(b), fb_.width, px, rgba, alive);
     }
+    return alive;
 }
 
 }  // namespace glslrun::raster

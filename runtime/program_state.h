@@ -11,6 +11,7 @@
 #include "ir/ir.h"
 
 namespace glslrun {
+namespace raster { class DrawProbe; }
 
 struct Program::State {
     ir::Program ir;
@@ -23,6 +24,8 @@ struct Program::State {
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
     // them, except in the error report's ablation (scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
+    // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
+    raster::DrawProbe* probe = nullptr;
 };
 
 inline Program::State& state_of(Program& program) { return *program.state_; }

@@ -34,6 +34,8 @@ demo)
     echo "wrote spot.png with $(command -v glslrun)"
     ;;
 test)
+    # The IR verifier after every pass, in every run below (ctest sets it for its tests too).
+    export GLSLRUN_VERIFY=1
     (cd build && ctest --output-on-failure -j "$(nproc)")
     GLSLRUN=build/glslrun bash tools/piglit_suite.sh
     # Images must not depend on the interpreter's batch width: build glslrun

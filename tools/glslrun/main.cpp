@@ -5,6 +5,7 @@
 //      --error-report DIR measures the mode's error against reference)
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
+//   glslrun trace --pixel X,Y a.vert a.frag scene.toml   the shader debugger (docs/debugging.md)
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -19,13 +20,14 @@
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
 #include "render_command.h"
+#include "trace_command.h"
 
 namespace {
 
 using namespace glslrun;
 namespace pg = glslrun::piglit;
 
-constexpr const char* kVersion = "glslrun 0.1 (GLSL 1.10/1.20 on the CPU)";
+constexpr const char* kVersion = "glslrun " GLSLRUN_VERSION_STRING " (GLSL 1.10/1.20 on the CPU)";
 
 std::optional<std::string> read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -188,5 +190,7 @@ int program_cli(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+    if (argc >= 2 && std::string_view(argv[1]) == "trace")
+        return glslrun::cli::trace_main(argc - 1, argv + 1, add_precision_option);
     return program_cli(argc, argv);
 }
