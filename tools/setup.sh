@@ -11,7 +11,8 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
           libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev
-          python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest)  # the Python module
+          python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
+          ccache)  # the builds below (and CI's variants) reuse each other's object files
 [ "$mode" = test ] && packages+=(piglit)
 missing=()
 for p in "${packages[@]}"; do
@@ -22,8 +23,12 @@ if [ ${#missing[@]} -gt 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+# ccache keys on paths relative to the checkout, so the build variants of
+# `test` and a later clone share their object files.
+export CCACHE_BASEDIR=$PWD CCACHE_NOHASHDIR=1
+launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # Debian's Python packages (numpy, pybind11) belong to /usr/bin/python3.
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython3_EXECUTABLE=/usr/bin/python3 > /dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" > /dev/null
 cmake --build build -j "$(nproc)"
 cmake --install build > /dev/null  # prefix /usr/local: glslrun is on PATH, `import glslrun` works
 ldconfig
@@ -42,7 +47,7 @@ test)
     # with 8 and 64 lanes and compare every scene image in every mode.
     bash tools/image_hashes.sh build/glslrun > build/hashes-16.txt
     for lanes in 8 64; do
-        cmake -S . -B "build-lanes$lanes" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLSLRUN_LANES=$lanes > /dev/null
+        cmake -S . -B "build-lanes$lanes" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLSLRUN_LANES=$lanes "${launcher[@]}" > /dev/null
         cmake --build "build-lanes$lanes" -j "$(nproc)" --target glslrun > /dev/null
         bash tools/image_hashes.sh "build-lanes$lanes/glslrun" > "build/hashes-$lanes.txt"
         diff build/hashes-16.txt "build/hashes-$lanes.txt" || { echo "images differ with $lanes lanes" >&2; exit 1; }
