@@ -209,7 +209,13 @@ Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport)
     int vx = gl.viewport[0], vy = gl.viewport[1], vw = gl.viewport[2], vh = gl.viewport[3];
     if (vw <= 0 || vh <= 0) vx = 0, vy = 0, vw = fb.width, vh = fb.height;
     *viewport = glm::vec4(vx, vy, vw, vh);
-    return Rect{std::max(vx, 0), std::max(vy, 0), std::min(vx + vw, fb.width), std::min(vy + vh, fb.height)};
+    Rect r{std::max(vx, 0), std::max(vy, 0), std::min(vx + vw, fb.width), std::min(vy + vh, fb.height)};
+    if (!gl.scissor_test) return r;
+    // glScissor (GL 2.1 §4.1.2); in 64 bits, as x + width may exceed an int.
+    const auto& box = gl.scissor_box;
+    auto lo = [](int v, int bound) { return std::max(v, bound); };
+    auto hi = [](int v, int64_t size, int bound) { return int(std::min<int64_t>(int64_t(v) + std::max<int64_t>(size, 0), bound)); };
+    return Rect{lo(box[0], r.x0), lo(box[1], r.y0), hi(box[0], box[2], r.x1), hi(box[1], box[3], r.y1)};
 }
 
 // Vertices per job of prepare(), and the count below which it stays on the calling thread.
@@ -315,8 +321,10 @@ void bin_primitives(std::span<const SetupOut> outs, TileBins& bins, uint64_t* tr
 Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                              const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                              std::span<const uint32_t> indices, const StoredClear* clear, bool* cleared) {
-    if (fb.color.size() != size_t(fb.width) * fb.height * 4 || fb.depth.size() != size_t(fb.width) * fb.height)
-        return Error("framebuffer storage does not match its size");
+    if (!storage_matches(fb)) return Error("framebuffer storage does not match its size");
+    if (gl.draw_buffers < 1 || gl.draw_buffers > fb.color_buffers())
+        return Error(fmt::format("glDrawBuffers names {} colour buffers; the framebuffer has {}", gl.draw_buffers,
+                                 fb.color_buffers()));
     for (uint32_t index : indices)
         if (index >= vertex_count)
             return Error(fmt::format("index {} is out of range ({} vertices)", index, vertex_count));
@@ -341,7 +349,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
     FragmentStage stage(program, gl, fb);
     DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
-                  {}, find_output(vs, "gl_PointSize"), scratch.front_attrs, scratch.window};
+                  {}, gl.vertex_program_point_size ? find_output(vs, "gl_PointSize") : -1, scratch.front_attrs,
+                  scratch.window};
     prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
     auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
     scratch.bins.reset(scissor);
@@ -370,9 +379,8 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
                        Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                        std::span<const uint32_t> indices) {
-    bool storage_ok = fb.color.size() == size_t(fb.width) * fb.height * 4 && fb.depth.size() == size_t(fb.width) * fb.height;
     raster::StoredClear stored = raster::stored_clear(fb, clear);
-    bool any = storage_ok && (stored.color || stored.depth);
+    bool any = raster::storage_matches(fb) && (stored.color || stored.depth || stored.stencil);
     bool cleared = false;
     auto result = raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, any ? &stored : nullptr,
                                      &cleared);
@@ -380,6 +388,7 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, con
     if (!cleared || !any) {
         if (clear.color) fb.clear_color(*clear.color);
         if (clear.depth) fb.clear_depth(*clear.depth);
+        if (clear.stencil) fb.clear_stencil(*clear.stencil);
     }
     return result;
 }

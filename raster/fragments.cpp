@@ -24,8 +24,6 @@ struct FragmentStage::Weights {
 
 namespace {
 
-using Lanes = std::array<float, rt::kLanes>;
-
 const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initializer_list<const char*> names) {
     for (const char* name : names)
         for (const ir::Binding& b : list)
@@ -98,7 +96,7 @@ void set_point_planes(FsPrimitive& prim) {
 }
 
 FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb)
-    : program_(program), gl_(gl), fb_(fb) {
+    : program_(program), gl_(gl), fb_(fb), ops_(gl, fb) {
     const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
     interp_ = rt::make_executor(program, ir::Stage::Fragment, gl.texture_units.data());
@@ -118,14 +116,21 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
         }
         inputs_.push_back(plan);
     }
-    color_out_ = find_binding(fs.outputs, {"gl_FragColor", "gl_FragData[0]", "gl_FragData"});
+    // gl_FragColor goes to every draw buffer; gl_FragData[i] to buffer i.
+    const ir::Binding* frag_color = find_binding(fs.outputs, {"gl_FragColor"});
+    for (int i = 0; i < gl.draw_buffers && i < kMaxDrawBuffers; ++i) {
+        std::string element = "gl_FragData[" + std::to_string(i) + "]";
+        color_out_[size_t(i)] = frag_color ? frag_color : find_binding(fs.outputs, {element.c_str()});
+    }
     depth_out_ = find_binding(fs.outputs, {"gl_FragDepth"});
-    // Without discard or gl_FragDepth the depth test cannot depend on the
-    // shader, so it runs before shading and culls hidden quads.
+    // Without discard, gl_FragDepth, the alpha test and the stencil test
+    // (whose depth-fail update needs the fragment to survive the alpha test)
+    // the depth test cannot depend on the shader, so it runs before shading
+    // and culls hidden quads.
     // The shader debugger sees every fragment shaded: the late test gives the
     // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
-    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !probe_;
+    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
 }
 
 ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
@@ -153,6 +158,23 @@ void FragmentStage::copy_colors(const float* from, float* to) const {
         if (s.is_color) std::copy(from + s.offset, from + s.offset + s.count, to + s.offset);
 }
 
+// The depth test of a queued quad's covered lanes; returns those that pass.
+template <bool kWrite>
+unsigned FragmentStage::early_depth_test(int base, unsigned mask) {
+    // The function read once (stores to the depth buffer would otherwise
+    // make the compiler reload it per lane).
+    const GLState::DepthFunc func = ops_.depth_func;
+    for (unsigned bits = mask; bits; bits &= bits - 1) {
+        int i = std::countr_zero(bits), lane = base + i;
+        float& stored = fb_.depth[size_t(lane_y_[lane]) * fb_.width + lane_x_[lane]];
+        // Stored either way, so that the outcome needs no branch.
+        bool passes = depth_passes(func, lane_z_[lane], stored);
+        if (kWrite) stored = passes ? lane_z_[lane] : stored;
+        mask &= ~(unsigned(!passes) << i);
+    }
+    return mask;
+}
+
 void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask) {
     if (error_) return;
     int base = quads_ * 4;
@@ -163,19 +185,7 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
         lane_y_[lane] = py;
         lane_z_[lane] = clamp01(z);
     }
-    if (early_depth_) {
-        // Covered pixels only; the function read once (stores to the depth
-        // buffer would otherwise make the compiler reload it per lane).
-        const GLState::DepthFunc func = gl_.depth_func;
-        for (unsigned bits = mask; bits; bits &= bits - 1) {
-            int i = std::countr_zero(bits), lane = base + i;
-            float& stored = fb_.depth[size_t(lane_y_[lane]) * fb_.width + lane_x_[lane]];
-            // Stored either way, so that the outcome needs no branch.
-            bool passes = depth_passes(func, lane_z_[lane], stored);
-            stored = passes ? lane_z_[lane] : stored;
-            mask &= ~(unsigned(!passes) << i);
-        }
-    }
+    if (early_depth_) mask = ops_.depth_write ? early_depth_test<true>(base, mask) : early_depth_test<false>(base, mask);
     if (!mask) return;
     quad_prim_[size_t(quads_)] = &prim;
     covered_ |= rt::LaneMask(mask) << base;
@@ -273,41 +283,78 @@ void FragmentStage::flush() {
     quads_ = 0;
 }
 
-// Depth test (unless done early) and colour writes over the batch, in lane
-// order: two quads of the batch may cover the same pixel.
-// kProbed: returns the lanes written (alive, and passing the depth test), for
-// the probe; without it, 0 (no work for it per lane).
+// Component values of colour buffer `buffer`'s output over the batch.
+void FragmentStage::load_color(int buffer, std::array<Lanes, 4>& rgba) const {
+    const ir::Binding* out = color_out_[size_t(buffer)];
+    rgba = {};
+    uint32_t channels = std::min<uint32_t>(4, out->count);
+    for (uint32_t k = 0; k < channels; ++k) load_lanes(*interp_, out->kind, out->first + k, rgba[k], quads_ * 4);
+}
+
+// The per-fragment operations over the batch (late depth test or none,
+// then colour writes), in lane order: two quads of the batch may cover the
+// same pixel.
+// kProbed: returns the lanes written (alive, and passing the tests), for
+// the probe; without it, 0 (no work for it per lane on the fast path).
 template <bool kProbed>
 rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
     rt::Executor& in = *interp_;
-    int lanes = quads_ * 4;
     shaded_ += uint64_t(std::popcount(covered));
     rt::LaneMask alive = in.alive() & covered;
     Lanes z = lane_z_;
     if (depth_out_) {
-        load_lanes(in, depth_out_->kind, depth_out_->first, z, lanes);
+        load_lanes(in, depth_out_->kind, depth_out_->first, z, quads_ * 4);
         for (float& d : z) d = d > 0.0f ? std::min(d, 1.0f) : 0.0f;  // NaN -> 0
     }
+    if (ops_.plain) return write_plain<kProbed>(alive, z);
+    rt::LaneMask written = write_with_ops(alive, z);
+    return kProbed ? written : 0;
+}
+
+// The fast path: at most a depth test with writes, and plain stores into one buffer.
+template <bool kProbed>
+rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
     std::array<Lanes, 4> rgba{};
-    uint32_t channels = color_out_ ? std::min<uint32_t>(4, color_out_->count) : 0;
-    for (uint32_t k = 0; k < channels; ++k) load_lanes(in, color_out_->kind, color_out_->first + k, rgba[k], lanes);
-    bool late_depth = gl_.depth_test && !early_depth_;
+    if (color_out_[0]) load_color(0, rgba);
+    bool late_depth = ops_.depth_test && !early_depth_;
     rt::LaneMask written = 0;
     for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         size_t pixel = size_t(lane_y_[lane]) * fb_.width + lane_x_[lane];
         if (late_depth) {
-            if (!depth_passes(gl_.depth_func, z[size_t(lane)], fb_.depth[pixel])) continue;
+            if (!depth_passes(ops_.depth_func, z[size_t(lane)], fb_.depth[pixel])) continue;
             fb_.depth[pixel] = z[size_t(lane)];
         }
         ++written_;
         if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
-        if (!color_out_) continue;
+        if (!color_out_[0]) continue;
         // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
         float* dst = &fb_.color[pixel * 4];
         for (size_t k = 0; k < 4; ++k) dst[k] = fb_.float_color ? rgba[k][size_t(lane)] : quantize_unorm8(rgba[k][size_t(lane)]);
     }
     return written;
+}
+
+// The general path; returns the lanes written.
+rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
+    std::array<Lanes, 4> rgba{};
+    rt::LaneMask back = 0;
+    for (int q = 0; q < quads_; ++q)
+        if (!quad_prim_[size_t(q)]->front) back |= rt::LaneMask(0xF) << (q * 4);
+    LanePixels px{lane_x_.data(), lane_y_.data(), z.data(), back};
+    if (ops_.alpha_test) {
+        // The alpha of colour 0 (GL 2.1 §4.1.4); none written: alpha 0.
+        if (color_out_[0]) load_color(0, rgba);
+        alive = alpha_test(ops_, rgba[3], alive);
+    }
+    if (ops_.stencil_test || (ops_.depth_test && !early_depth_)) alive = stencil_depth_test(ops_, fb_, px, alive);
+    written_ += uint64_t(std::popcount(alive));
+    for (int b = 0; b < gl_.draw_buffers && alive; ++b) {
+        if (!color_out_[size_t(b)]) continue;
+        load_color(b, rgba);
+        write_color(ops_, fb_.color_buffer(b), fb_.width, px, rgba, alive);
+    }
+    return alive;
 }
 
 }  // namespace glslrun::raster

@@ -11,6 +11,7 @@
 
 #include "glslrun/glslrun.h"
 #include "ir/ir.h"
+#include "raster/fragment_ops.h"
 #include "raster/probe.h"
 #include "raster/triangle.h"
 #include "runtime/backend.h"
@@ -90,13 +91,18 @@ public:
 private:
     struct InputPlan;
     struct Weights;
-    using Lanes = std::array<float, rt::kLanes>;
+    template <bool kWrite>
+    unsigned early_depth_test(int base, unsigned mask);
     void compute_weights(Weights& w) const;
     void interpolate(uint32_t attr, const Weights& w, Lanes& v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
     void fill_inputs(const Weights& w);
     template <bool kProbed>
     rt::LaneMask write_outputs(rt::LaneMask covered);
+    template <bool kProbed>
+    rt::LaneMask write_plain(rt::LaneMask alive, const Lanes& z);
+    rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z);
+    void load_color(int buffer, std::array<Lanes, 4>& rgba) const;
     ProbeBatch probe_batch(rt::LaneMask covered);
 
     const Program& program_;
@@ -106,9 +112,12 @@ private:
     std::vector<InputPlan> inputs_;
     std::vector<VaryingSlot> varyings_;
     uint32_t attr_count_ = 0;
-    const ir::Binding* color_out_ = nullptr;
+    FragmentOps ops_;
+    // Per colour buffer: gl_FragData[i], or gl_FragColor for all; null: not written.
+    std::array<const ir::Binding*, kMaxDrawBuffers> color_out_{};
     const ir::Binding* depth_out_ = nullptr;
-    bool early_depth_ = false;  // depth tested in add_quad: no discard, no gl_FragDepth
+    // Depth tested in add_quad: no discard, gl_FragDepth, alpha or stencil test.
+    bool early_depth_ = false;
     int quads_ = 0;
     std::array<const FsPrimitive*, rt::kLanes / 4> quad_prim_{};
     std::array<int, rt::kLanes> lane_x_{}, lane_y_{};

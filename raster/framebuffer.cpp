@@ -5,9 +5,11 @@
 
 namespace glslrun {
 
-Framebuffer::Framebuffer(int w, int h, bool float_target)
+Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers)
     : width(std::max(w, 0)), height(std::max(h, 0)), float_color(float_target),
-      color(size_t(width) * height * 4, 0.0f), depth(size_t(width) * height, 1.0f) {}
+      color(size_t(width) * height * 4, 0.0f),
+      more_colors(size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers) - 1), color),
+      depth(size_t(width) * height, 1.0f), stencil(size_t(width) * height, 0) {}
 
 namespace {
 
@@ -20,16 +22,21 @@ void fill_pixels(float* p, size_t pixels, glm::vec4 c) {
 
 // The whole storage, whatever its size (draw() rejects a mismatch with width x height).
 void Framebuffer::clear_color(glm::vec4 c) {
-    fill_pixels(color.data(), color.size() / 4, raster::stored_clear(*this, {c, std::nullopt}).c);
+    glm::vec4 stored = raster::stored_clear(*this, ClearValues{c, std::nullopt, std::nullopt}).c;
+    for (int i = 0; i < color_buffers(); ++i) fill_pixels(color_buffer(i).data(), color_buffer(i).size() / 4, stored);
 }
 
 void Framebuffer::clear_depth(float d) {
-    std::fill(depth.begin(), depth.end(), raster::stored_clear(*this, {std::nullopt, d}).d);
+    std::fill(depth.begin(), depth.end(), raster::stored_clear(*this, ClearValues{std::nullopt, d, std::nullopt}).d);
 }
 
-glm::vec4 Framebuffer::pixel(int x, int y) const {
-    if (x < 0 || y < 0 || x >= width || y >= height) return glm::vec4(0.0f);
-    const float* p = &color[(size_t(y) * width + x) * 4];
+void Framebuffer::clear_stencil(int s) {
+    std::fill(stencil.begin(), stencil.end(), raster::stored_clear(*this, ClearValues{std::nullopt, std::nullopt, s}).s);
+}
+
+glm::vec4 Framebuffer::pixel(int x, int y, int buffer) const {
+    if (x < 0 || y < 0 || x >= width || y >= height || buffer < 0 || buffer >= color_buffers()) return glm::vec4(0.0f);
+    const float* p = &color_buffer(buffer)[(size_t(y) * width + x) * 4];
     return {p[0], p[1], p[2], p[3]};
 }
 
@@ -39,6 +46,8 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
     StoredClear out;
     out.color = clear.color.has_value();
     out.depth = clear.depth.has_value();
+    out.stencil = clear.stencil.has_value();
+    if (clear.stencil) out.s = uint8_t(*clear.stencil & ((1 << kStencilBits) - 1));
     if (clear.color) {
         out.c = *clear.color;
         if (!fb.float_color)
@@ -48,11 +57,21 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
     return out;
 }
 
+bool storage_matches(const Framebuffer& fb) {
+    const size_t pixels = size_t(fb.width) * size_t(fb.height);
+    if (fb.depth.size() != pixels || fb.stencil.size() != pixels || fb.color_buffers() > kMaxDrawBuffers) return false;
+    for (int i = 0; i < fb.color_buffers(); ++i)
+        if (fb.color_buffer(i).size() != pixels * 4) return false;
+    return true;
+}
+
 void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1) {
     for (int y = y0; y < y1; ++y) {
         size_t row = size_t(y) * size_t(fb.width);
-        if (clear.color) fill_pixels(&fb.color[(row + size_t(x0)) * 4], size_t(x1 - x0), clear.c);
+        for (int b = 0; clear.color && b < fb.color_buffers(); ++b)
+            fill_pixels(&fb.color_buffer(b)[(row + size_t(x0)) * 4], size_t(x1 - x0), clear.c);
         if (clear.depth) std::fill(&fb.depth[row + size_t(x0)], &fb.depth[row + size_t(x1)], clear.d);
+        if (clear.stencil) std::fill(&fb.stencil[row + size_t(x0)], &fb.stencil[row + size_t(x1)], clear.s);
     }
 }
 

@@ -25,11 +25,14 @@ void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 // A clear's values as the framebuffer stores them: the colour quantised for
 // RGBA8, the depth clamped to [0, 1] (NaN -> 0).
 struct StoredClear {
-    bool color = false, depth = false;
+    bool color = false, depth = false, stencil = false;
     glm::vec4 c{0.0f};
     float d = 1.0f;
+    uint8_t s = 0;
 };
 StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear);
+// Whether the framebuffer's storage matches its size (draw() refuses it otherwise).
+bool storage_matches(const Framebuffer& fb);
 // Clears the pixels [x0, x1) x [y0, y1), which must lie in the framebuffer.
 void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1);
 

@@ -92,8 +92,8 @@ Error png_failure(const std::string& path, const PngReader& r) {
 
 }  // namespace
 
-void framebuffer_row(const Framebuffer& fb, int y, uint8_t* dst) {
-    const float* src = &fb.color[size_t(y) * size_t(fb.width) * 4];
+void framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* dst) {
+    const float* src = &fb.color_buffer(buffer)[size_t(y) * size_t(fb.width) * 4];
     for (size_t i = 0; i < size_t(fb.width) * 4; ++i)
         dst[i] = uint8_t(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
 }
@@ -101,8 +101,11 @@ void framebuffer_row(const Framebuffer& fb, int y, uint8_t* dst) {
 Status write_rgba8(const std::string& path, int width, int height,
                    const std::function<void(int y, uint8_t* dst)>& row_of) {
     if (width <= 0 || height <= 0) return Error("cannot write an empty image as PNG");
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
-    if (!file) return Error("cannot open '" + path + "' for writing");
+    // "-" is standard output, which stays open.
+    const bool to_stdout = path == "-";
+    std::unique_ptr<std::FILE, FileCloser> file(to_stdout ? nullptr : std::fopen(path.c_str(), "wb"));
+    std::FILE* out = to_stdout ? stdout : file.get();
+    if (!out) return Error("cannot open '" + path + "' for writing");
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -115,7 +118,7 @@ Status write_rgba8(const std::string& path, int width, int height,
         png_destroy_write_struct(&png, &info);
         return Error("libpng failed writing '" + path + "'");
     }
-    png_init_io(png, file.get());
+    png_init_io(png, out);
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // Speed over size: the default level costs more than a whole 512x512 frame,
@@ -130,7 +133,7 @@ Status write_rgba8(const std::string& path, int width, int height,
     }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fflush(file.get()) != 0) return Error("cannot write '" + path + "'");
+    if (std::fflush(out) != 0) return Error("cannot write '" + path + "'");
     return Ok{};
 }
 
@@ -157,10 +160,12 @@ Result<Rgba8Image> read_rgba8(const std::string& path, int max_side) {
 
 namespace glslrun {
 
-Status write_png(const Framebuffer& fb, const std::string& path) {
+Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
     if (fb.width <= 0 || fb.height <= 0) return Error("cannot write an empty framebuffer as PNG");
+    if (buffer < 0 || buffer >= fb.color_buffers())
+        return Error("the framebuffer has no colour buffer " + std::to_string(buffer));
     return png::write_rgba8(path, fb.width, fb.height,
-                            [&](int y, uint8_t* dst) { png::framebuffer_row(fb, fb.height - 1 - y, dst); });
+                            [&](int y, uint8_t* dst) { png::framebuffer_row(fb, buffer, fb.height - 1 - y, dst); });
 }
 
 }  // namespace glslrun

@@ -11,7 +11,7 @@
 namespace glslrun::png {
 
 // Framebuffer row y (0 = bottom, GL's order) as the RGBA8 bytes a PNG stores.
-void framebuffer_row(const Framebuffer& fb, int y, uint8_t* dst);
+void framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* dst);
 
 // Writes a width x height RGBA8 PNG; row(y, dst) fills image row y (0 = top)
 // with width * 4 bytes. One row at a time: a whole image's bytes (1 MB at

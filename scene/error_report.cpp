@@ -47,10 +47,11 @@ Result<Program> compile_for(const std::vector<ShaderSource>& vertex, const std::
 // depth planes with their coverage. Unwritten pixels get the clear values an
 // RGBA8 framebuffer would hold.
 Result<Frame> render_frame(Program& prog, const Scene& scene) {
-    Framebuffer fb(scene.width, scene.height, /*float_color=*/true);
+    Framebuffer fb(scene.width, scene.height, /*float_color=*/true, color_buffers(scene));
     auto start = Clock::now();
     fb.clear_color(glm::vec4(std::bit_cast<float>(kUnwrittenBits)));
     fb.clear_depth(scene.clear_depth);
+    fb.clear_stencil(scene.clear_stencil);
     if (auto stats = draw_scene_objects(prog, scene, fb); !stats) return stats.error();
     Frame f;
     f.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();

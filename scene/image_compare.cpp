@@ -76,11 +76,11 @@ Status write_png(const Image& image, const std::string& path) {
     });
 }
 
-Image read_framebuffer(const Framebuffer& fb) {
+Image read_framebuffer(const Framebuffer& fb, int buffer) {
     Image image{fb.width, fb.height, std::vector<uint8_t>(size_t(fb.width) * size_t(fb.height) * 4)};
     for (int y = 0; y < fb.height; ++y) {
         // The bytes glslrun::write_png stores.
-        png::framebuffer_row(fb, fb.height - 1 - y, &image.rgba[size_t(y) * size_t(fb.width) * 4]);
+        png::framebuffer_row(fb, buffer, fb.height - 1 - y, &image.rgba[size_t(y) * size_t(fb.width) * 4]);
     }
     return image;
 }

@@ -1,6 +1,8 @@
 #include "glslrun/scene/render.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -71,6 +73,19 @@ Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const 
 
 }  // namespace
 
+int color_buffers(const Scene& scene) {
+    int n = scene.gl.draw_buffers;
+    for (const Object& o : scene.objects)
+        if (o.state) n = std::max(n, o.state->draw_buffers);
+    return n;
+}
+
+std::string color_buffer_path(const std::string& output, int buffer) {
+    if (buffer == 0) return output;
+    std::filesystem::path p(output);
+    return (p.parent_path() / fmt::format("{}.{}{}", p.stem().string(), buffer, p.extension().string())).string();
+}
+
 Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings) {
     if (settings.empty()) return Ok{};
     std::vector<UniformInfo> infos = program.uniforms();
@@ -87,7 +102,8 @@ Result<GLState> bind_scene_textures(const Scene& scene) {
 }
 
 GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object) {
-    GLState gl = bound;
+    GLState gl = object.state ? *object.state : bound;
+    gl.texture_units = bound.texture_units;
     gl.modelview = scene.view * object.model;
     if (object.front_material) gl.front_material = *object.front_material;
     if (object.back_material) gl.back_material = *object.back_material;
@@ -127,15 +143,16 @@ Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Frame
     // No object, or an error before the first draw: the clear still happens.
     if (pending.color) fb.clear_color(*pending.color);
     if (pending.depth) fb.clear_depth(*pending.depth);
+    if (pending.stencil) fb.clear_stencil(*pending.stencil);
     return result;
 }
 
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
-    return draw_scene_objects(program, scene, fb, ClearValues{scene.clear_color, scene.clear_depth});
+    return draw_scene_objects(program, scene, fb, ClearValues{scene.clear_color, scene.clear_depth, scene.clear_stencil});
 }
 
 Result<Image> render_image(Program& program, const Scene& scene) {
-    Framebuffer fb(scene.width, scene.height);
+    Framebuffer fb(scene.width, scene.height, false, color_buffers(scene));
     auto stats = render_scene(program, scene, fb);
     if (!stats) return stats.error();
     return read_framebuffer(fb);

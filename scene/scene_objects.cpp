@@ -27,13 +27,14 @@ const std::vector<MeshKind>& mesh_kinds() {
         {"torus", {"inner_radius", "outer_radius", "sides", "rings"}},
         {"plane", {"size", "subdivisions"}},
         {"obj", {"file"}},
+        {"arrays", array_mesh_keys()},
     };
     return kinds;
 }
 
 const std::vector<std::string_view> kCommonKeys = {
     "name", "mesh", "transform", "color", "vertex_colors", "material", "front_material",
-    "back_material", "uniforms", "attributes"};
+    "back_material", "uniforms", "attributes", "state"};
 
 std::vector<std::string_view> all_object_keys() {
     std::vector<std::string_view> keys = kCommonKeys;
@@ -44,7 +45,7 @@ std::vector<std::string_view> all_object_keys() {
 }
 
 const MeshKind& mesh_kind(const Section& s) {
-    const toml::node& n = s.require("mesh", "teapot, quad, cube, sphere, torus, plane or obj");
+    const toml::node& n = s.require("mesh", "teapot, quad, cube, sphere, torus, plane, obj or arrays");
     std::vector<std::string_view> names;
     for (const MeshKind& k : mesh_kinds()) names.push_back(k.name);
     return mesh_kinds()[choice(n, s.name("mesh"), names)];
@@ -103,6 +104,7 @@ Mesh build_mesh(const Section& s, const MeshKind& kind, const std::string& scene
         return make_torus(positive(s, "inner_radius", 0.25), positive(s, "outer_radius", 1.0),
                           count(s, "sides", 16, 3), count(s, "rings", 32, 3));
     if (k == "plane") return make_plane(positive(s, "size", 1.0), count(s, "subdivisions", 1, 1));
+    if (k == "arrays") return read_array_mesh(s);
     return load_obj_mesh(s, scene_dir, object);
 }
 
@@ -166,6 +168,18 @@ void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scen
         fail(n, fmt::format("'objects' must be an array of tables ([[objects]]) (got {})", describe(n)));
     for (size_t i = 0; i < list->size(); ++i)
         scene.objects.push_back(read_object((*list)[i], i, scene_dir, scene));
+}
+
+void read_object_states(const toml::node& n, Scene& scene) {
+    const toml::array& list = *n.as_array();  // read_objects checked it
+    for (size_t i = 0; i < list.size() && i < scene.objects.size(); ++i) {
+        const toml::node* state = list[i].as_table()->get("state");
+        if (!state) continue;
+        std::string what = fmt::format("objects[{}].state", i);
+        GLState gl = scene.gl;
+        read_state_section(Section(table(*state, what), what), scene.view, gl);
+        scene.objects[i].state = std::move(gl);
+    }
 }
 
 }  // namespace glslrun::scene::detail

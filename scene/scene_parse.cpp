@@ -19,7 +19,7 @@ namespace {
 using detail::Section;
 
 void read_output(const Section& s, Scene& scene) {
-    s.allow({"size", "clear_color", "clear_depth"});
+    s.allow({"size", "clear_color", "clear_depth", "clear_stencil"});
     if (const toml::node* n = s.get("size")) {
         const toml::array* a = n->as_array();
         if (!a || a->size() != 2)
@@ -34,6 +34,9 @@ void read_output(const Section& s, Scene& scene) {
     }
     s.read_color("clear_color", scene.clear_color);
     s.read("clear_depth", scene.clear_depth, {.lo = 0, .hi = 1, .why = "glClearDepth"});
+    if (const toml::node* n = s.get("clear_stencil"))
+        scene.clear_stencil = int(detail::integer(*n, "output.clear_stencil (stencil values are 8 bits)", 0,
+                                                  (1 << kStencilBits) - 1));
 }
 
 Section section(const toml::node& n, const char* name) { return Section(detail::table(n, name), name); }
@@ -66,6 +69,7 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     scene.gl.modelview = scene.view;
     scene.gl.projection = scene.projection;
     derive_eye_space_lights(scene);
+    if (const toml::node* n = top.get("objects")) detail::read_object_states(*n, scene);
     return scene;
 }
 
@@ -80,6 +84,31 @@ Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
     } catch (const detail::SceneFailure& f) {
         return f.error;
     }
+}
+
+Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg) {
+    size_t eq = arg.find('=');
+    std::string_view name = arg.substr(0, eq);
+    while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
+    if (eq == std::string_view::npos || name.empty() || name.find_first_of("\"\\\n") != std::string_view::npos)
+        return Error(fmt::format("--uniform '{}': expected name=value, the value written as in a scene's "
+                                 "[uniforms] (3, 0.5, [1, 0, 0], true)", arg));
+    // The value is TOML, read exactly as a scene's [uniforms] entry.
+    std::string text = fmt::format("[uniforms]\n\"{}\" = {}\n", name, arg.substr(eq + 1));
+    auto scene = parse_scene(text, "--uniform");
+    if (!scene) {
+        std::string why = scene.error().diagnostics.empty() ? "invalid" : scene.error().diagnostics[0].message;
+        return Error(fmt::format("--uniform '{}': {}", arg, why));
+    }
+    for (UniformSetting& u : scene->uniforms) u.where = {"--uniform " + std::string(arg), 0};
+    return std::move(scene->uniforms);
+}
+
+void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings) {
+    // After the file's own settings, the scene's and each object's: the command line wins everywhere.
+    scene.uniforms.insert(scene.uniforms.end(), settings.begin(), settings.end());
+    for (Object& o : scene.objects)
+        if (!o.uniforms.empty()) o.uniforms.insert(o.uniforms.end(), settings.begin(), settings.end());
 }
 
 Result<Scene> load_scene(const std::string& path) {

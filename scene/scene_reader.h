@@ -99,7 +99,22 @@ void read_camera(const Section& camera, Scene& scene);
 void read_lights(const toml::node& n, Scene& scene);
 void read_material(const Section& s, MaterialState& m);
 void read_render_state(const Section& top, Scene& scene);
+// The keys of one [state] table into `gl`; world-space clip planes go through `view`.
+void read_state_section(const Section& s, const glm::mat4& view, GLState& gl);
+// CompareFunc's names in its order: GL_NEVER .. GL_ALWAYS without GL_ (scene_fragment_state.cpp).
+const std::vector<std::string_view>& compare_func_names();
+// [state]'s per-fragment operations (scene_fragment_state.cpp).
+const std::vector<std::string_view>& fragment_state_keys();
+void read_fragment_state(const Section& s, GLState& gl);
+// [objects.state]: each object's state is the scene's final state with its own keys on top.
+void read_object_states(const toml::node& objects, Scene& scene);
 void read_uniforms(const toml::node& n, const std::string& what, std::vector<UniformSetting>& out);
+// One attribute array of `vertex_count` values, each a number or 1..4 numbers, all alike.
+VertexAttrib read_attribute(const toml::node& n, const std::string& name, const std::string& what,
+                            uint32_t vertex_count);
+// mesh = "arrays" (scene_arrays.cpp): its keys, and the mesh they give.
+const std::vector<std::string_view>& array_mesh_keys();
+Mesh read_array_mesh(const Section& s);
 std::vector<VertexAttrib> read_attributes(const toml::node& n, const std::string& what,
                                           uint32_t vertex_count);
 void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scene);

@@ -79,19 +79,20 @@ glm::dmat4 inverse_view(const Section& s, const toml::node& planes, const glm::m
 
 // glClipPlane transforms the plane by the inverse of the modelview current at
 // the call (GL 2.1 §2.12): p_eye = p_world * inverse(view), a row vector.
-void read_clip_planes(const Section& s, Scene& scene) {
+void read_clip_planes(const Section& s, const glm::mat4& view, GLState& gl) {
     bool world = planes_in_world(s);
     const toml::node* n = s.get("clip_planes");
     if (!n) return;
     const toml::array& planes = array(*n, s.name("clip_planes"));
-    if (planes.size() > scene.gl.clip_planes.size())
+    if (planes.size() > gl.clip_planes.size())
         fail(*n, fmt::format("'{}' has {} planes; GL has 6 (GL_CLIP_PLANE0..5)", s.name("clip_planes"),
                              planes.size()));
-    glm::dmat4 to_eye = world ? inverse_view(s, *n, scene.view) : glm::dmat4(1.0);
+    glm::dmat4 to_eye = world ? inverse_view(s, *n, view) : glm::dmat4(1.0);
+    gl.clip_plane_enabled = 0;  // the list replaces the planes enabled before (an object's list the scene's)
     for (size_t i = 0; i < planes.size(); ++i) {
         std::vector<double> v = numbers(planes[i], fmt::format("{}[{}]", s.name("clip_planes"), i), 4, 4);
-        scene.gl.clip_planes[i] = glm::vec4(glm::dvec4(v[0], v[1], v[2], v[3]) * to_eye);
-        scene.gl.clip_plane_enabled |= 1u << i;
+        gl.clip_planes[i] = glm::vec4(glm::dvec4(v[0], v[1], v[2], v[3]) * to_eye);
+        gl.clip_plane_enabled |= 1u << i;
     }
 }
 
@@ -120,24 +121,6 @@ void read_cull_face(const Section& s, GLState& gl) {
     gl.cull_back = c != 2;
 }
 
-void read_state(const Section& s, Scene& scene) {
-    s.allow({"depth_test", "depth_func", "cull_face", "front_face", "shade_model",
-             "vertex_program_two_side", "point_size", "clip_planes", "clip_planes_space", "depth_range"});
-    GLState& gl = scene.gl;
-    s.read("depth_test", gl.depth_test);
-    if (auto n = s.get("depth_func"))
-        gl.depth_func = GLState::DepthFunc(choice(*n, s.name("depth_func"), {"never", "less", "equal",
-                                                  "lequal", "greater", "notequal", "gequal", "always"}));
-    read_cull_face(s, gl);
-    if (auto n = s.get("front_face")) gl.front_ccw = choice(*n, s.name("front_face"), {"ccw", "cw"}) == 0;
-    if (auto n = s.get("shade_model"))
-        gl.flat_shading = choice(*n, s.name("shade_model"), {"smooth", "flat"}) == 1;
-    s.read("vertex_program_two_side", gl.vertex_program_two_side);
-    s.read("point_size", gl.point_size, {.lo = 0, .lo_open = true, .why = "glPointSize"});
-    read_clip_planes(s, scene);
-    read_depth_range(s, gl);
-}
-
 void read_texture_matrices(const toml::node& n, GLState& gl) {
     const toml::table& units = table(n, "texture_matrix");
     for (auto&& [k, v] : units) {
@@ -163,6 +146,28 @@ void read_material_section(const Section& top, std::string_view key, Scene& scen
 }
 
 }  // namespace
+
+void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
+    std::vector<std::string_view> keys = {"depth_test", "depth_func", "cull_face", "front_face", "shade_model",
+                                          "vertex_program_two_side", "point_size", "vertex_program_point_size",
+                                          "clip_planes",
+                                          "clip_planes_space", "depth_range"};
+    keys.insert(keys.end(), fragment_state_keys().begin(), fragment_state_keys().end());
+    s.allow(keys);
+    s.read("depth_test", gl.depth_test);
+    if (auto n = s.get("depth_func"))
+        gl.depth_func = GLState::DepthFunc(choice(*n, s.name("depth_func"), compare_func_names()));
+    read_cull_face(s, gl);
+    if (auto n = s.get("front_face")) gl.front_ccw = choice(*n, s.name("front_face"), {"ccw", "cw"}) == 0;
+    if (auto n = s.get("shade_model"))
+        gl.flat_shading = choice(*n, s.name("shade_model"), {"smooth", "flat"}) == 1;
+    s.read("vertex_program_two_side", gl.vertex_program_two_side);
+    s.read("point_size", gl.point_size, {.lo = 0, .lo_open = true, .why = "glPointSize"});
+    s.read("vertex_program_point_size", gl.vertex_program_point_size);
+    read_clip_planes(s, view, gl);
+    read_depth_range(s, gl);
+    read_fragment_state(s, gl);
+}
 
 void read_material(const Section& s, MaterialState& m) {
     s.allow({"ambient", "diffuse", "ambient_and_diffuse", "specular", "emission", "shininess"});
@@ -200,7 +205,7 @@ void read_render_state(const Section& top, Scene& scene) {
     read_material_section(top, "front_material", scene);
     read_material_section(top, "back_material", scene);
     section("current", [&](const Section& s) { read_current(s, scene.gl); });
-    section("state", [&](const Section& s) { read_state(s, scene); });
+    section("state", [&](const Section& s) { read_state_section(s, scene.view, scene.gl); });
     section("fog", [&](const Section& s) { read_fog(s, scene.gl); });
     if (const toml::node* n = top.get("texture_matrix")) read_texture_matrices(*n, scene.gl);
 }

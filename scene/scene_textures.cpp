@@ -22,8 +22,6 @@ const std::vector<std::string_view> kFilters = {"nearest", "linear", "nearest_mi
                                                 "linear_mipmap_linear"};
 const std::vector<std::string_view> kWraps = {"repeat", "clamp_to_edge", "clamp", "clamp_to_border",
                                               "mirrored_repeat"};
-const std::vector<std::string_view> kCompareFuncs = {"never",   "less",     "equal",  "lequal",
-                                                     "greater", "notequal", "gequal", "always"};
 const std::vector<std::string_view> kDepthModes = {"luminance", "intensity", "alpha"};
 
 // Where texels come from: exactly one per texture, or per cube face / level.
@@ -312,7 +310,7 @@ void read_depth_state(const Section& s, const Context& c, SamplerState& st) {
     if (auto n = s.get("compare_mode"))
         st.compare = choice(*n, s.name("compare_mode"), {"none", "compare_r_to_texture"}) == 1;
     if (auto n = s.get("compare_func"))
-        st.compare_func = CompareFunc(choice(*n, s.name("compare_func"), kCompareFuncs));
+        st.compare_func = CompareFunc(choice(*n, s.name("compare_func"), compare_func_names()));
     if (auto n = s.get("depth_texture_mode"))
         st.depth_mode = DepthTextureMode(choice(*n, s.name("depth_texture_mode"), kDepthModes));
 }

@@ -103,8 +103,6 @@ void read_uniforms(const toml::node& n, const std::string& what, std::vector<Uni
     for (auto& [pos, u] : placed) out.push_back(std::move(u));
 }
 
-namespace {
-
 VertexAttrib read_attribute(const toml::node& n, const std::string& name, const std::string& what,
                             uint32_t vertex_count) {
     const toml::array& values = array(n, what);
@@ -124,8 +122,6 @@ VertexAttrib read_attribute(const toml::node& n, const std::string& name, const 
     }
     return attrib;
 }
-
-}  // namespace
 
 std::vector<VertexAttrib> read_attributes(const toml::node& n, const std::string& what,
                                           uint32_t vertex_count) {

@@ -283,6 +283,37 @@ private:
     std::vector<std::vector<TextureImage>> levels_;  // [face][level]
 };
 
+// ------------------------------------------------ per-fragment state ---
+// GL 2.1 §4.1's enums, each in GL's own order (GL_KEEP.., GL_ZERO.., GL_CLEAR..
+// GL_SET), so a renderer maps them to GL by position or a table.
+enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, Decr, Invert, IncrWrap, DecrWrap };
+enum class BlendFactor : uint8_t { Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor, SrcAlpha,
+                                   OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstantColor,
+                                   OneMinusConstantColor, ConstantAlpha, OneMinusConstantAlpha, SrcAlphaSaturate };
+enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+enum class LogicOp : uint8_t { Clear, And, AndReverse, Copy, AndInverted, Noop, Xor, Or, Nor, Equiv, Invert,
+                               OrReverse, CopyInverted, OrInverted, Nand, Set };
+
+inline constexpr int kStencilBits = 8;       // GL_STENCIL_BITS: values 0..255
+inline constexpr int kMaxDrawBuffers = 8;    // GL_MAX_DRAW_BUFFERS (the size of gl_FragData)
+
+// One face's stencil state: glStencilFuncSeparate, glStencilOpSeparate,
+// glStencilMaskSeparate. Masks and the reference use the low kStencilBits.
+struct StencilFace {
+    CompareFunc func = CompareFunc::Always;
+    int ref = 0;
+    uint32_t value_mask = 0xFF, write_mask = 0xFF;
+    StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, depth_pass = StencilOp::Keep;
+};
+
+// glBlendFuncSeparate, glBlendEquationSeparate, glBlendColor.
+struct BlendState {
+    BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
+    BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;
+    BlendEquation equation_rgb = BlendEquation::Add, equation_alpha = BlendEquation::Add;
+    glm::vec4 color{0, 0, 0, 0};  // GL clamps it to [0, 1]
+};
+
 // ------------------------------------------------------ legacy GL state ---
 // The fixed-function state that GLSL 1.10's built-in uniforms (§7.5) read.
 // Defaults are OpenGL 2.1's. apply_builtin_uniforms() derives everything a
@@ -311,6 +342,9 @@ struct GLState {
     uint32_t clip_plane_enabled = 0;         // bit i: GL_CLIP_PLANEi
     float depth_near = 0, depth_far = 1;
     float point_size = 1;
+    // glEnable(GL_VERTEX_PROGRAM_POINT_SIZE): points take the vertex shader's
+    // gl_PointSize; off (GL's default), point_size (glPointSize).
+    bool vertex_program_point_size = false;
     struct Fog { glm::vec4 color{0, 0, 0, 0}; float density = 1, start = 0, end = 1; } fog;
     bool light_model_local_viewer = false, light_model_two_side = false;  // fixed function only
     glm::vec4 current_color{1, 1, 1, 1};     // glColor, for gl_Color without an array
@@ -326,6 +360,25 @@ struct GLState {
     bool cull_back = true;   // GL_BACK
     bool front_ccw = true;   // GL_CCW
     std::array<int, 4> viewport{0, 0, 0, 0};  // x y w h; w == 0: the whole framebuffer
+    // Per-fragment operations (GL 2.1 §4.1), applied in this order after the
+    // fragment shader: scissor, alpha test, stencil, depth, blending, logic op,
+    // colour mask; gl_FragData[i] goes to colour buffer i of the framebuffer.
+    bool scissor_test = false;
+    std::array<int, 4> scissor_box{0, 0, 1 << 30, 1 << 30};  // glScissor x y w h; GL's default: the window
+    bool alpha_test = false;
+    CompareFunc alpha_func = CompareFunc::Always;
+    float alpha_ref = 0;                     // glAlphaFunc; clamped to [0, 1]
+    bool stencil_test = false;
+    std::array<StencilFace, 2> stencil;      // [0] front faces (and points, lines), [1] back faces
+    bool depth_mask = true;                  // glDepthMask
+    bool blend = false;
+    BlendState blend_state;
+    bool color_logic_op = false;             // ignored by float colour buffers, as GL does
+    LogicOp logic_op = LogicOp::Copy;
+    std::array<bool, 4> color_mask{true, true, true, true};
+    // glDrawBuffers(n, {GL_COLOR_ATTACHMENT0 .. n-1}): gl_FragData[i] is
+    // written to colour buffer i, gl_FragColor to all n of them.
+    int draw_buffers = 1;
     // glBindTexture per unit and target. A sampler reads the binding of its
     // own target on the unit its uniform names; none there samples as (0, 0, 0, 1).
     struct TextureUnit { std::array<std::shared_ptr<const Texture>, 4> bound; };  // by TextureTarget
@@ -368,14 +421,21 @@ Result<std::vector<ShaderOutput>> run_fragments(const Program& program,
 
 // ---------------------------------------------------------- rendering ---
 struct Framebuffer {
-    Framebuffer(int width, int height, bool float_color = false);
+    // color_buffers: 1..kMaxDrawBuffers colour buffers, all of one format.
+    Framebuffer(int width, int height, bool float_color = false, int color_buffers = 1);
     int width = 0, height = 0;
     bool float_color = false;  // false: RGBA8 (values clamped and quantised on write)
-    std::vector<float> color;  // RGBA, row 0 at the bottom (GL convention)
+    std::vector<float> color;  // colour buffer 0: RGBA, row 0 at the bottom (GL convention)
+    std::vector<std::vector<float>> more_colors;  // colour buffers 1.. (glDrawBuffers), as `color`
     std::vector<float> depth;  // [0,1]
-    void clear_color(glm::vec4 c);
+    std::vector<uint8_t> stencil;  // kStencilBits per pixel
+    int color_buffers() const { return 1 + int(more_colors.size()); }
+    std::vector<float>& color_buffer(int i) { return i == 0 ? color : more_colors[size_t(i - 1)]; }
+    const std::vector<float>& color_buffer(int i) const { return i == 0 ? color : more_colors[size_t(i - 1)]; }
+    void clear_color(glm::vec4 c);  // every colour buffer, as glClear does
     void clear_depth(float d);
-    glm::vec4 pixel(int x, int y) const;
+    void clear_stencil(int s);      // the low kStencilBits of s
+    glm::vec4 pixel(int x, int y, int buffer = 0) const;
 };
 
 enum class Primitive { Points, Lines, LineStrip, LineLoop, Triangles, TriangleStrip,
@@ -408,12 +468,13 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
 struct ClearValues {
     std::optional<glm::vec4> color;
     std::optional<float> depth;
+    std::optional<int> stencil;
 };
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
                        Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                        std::span<const uint32_t> indices = {});
 
-// PNG output (RGBA8, top row first as images expect).
-Status write_png(const Framebuffer& fb, const std::string& path);
+// PNG output (RGBA8, top row first as images expect) of one colour buffer.
+Status write_png(const Framebuffer& fb, const std::string& path, int buffer = 0);
 
 }  // namespace glslrun

@@ -217,6 +217,7 @@ TEST_CASE("points and lines", "[api][draw]") {
     Program sized = compile("void main() { gl_Position = gl_Vertex; gl_PointSize = 3.0; }",
                             "#version 120\nvoid main() { gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }");
     GLState gl;
+    gl.vertex_program_point_size = true;
     Framebuffer fb(16, 16, true);
     // Window centres (4.5, 4.5) and (10, 10) (a pixel corner).
     VertexAttrib pos = positions({4.5f / 8 - 1, 4.5f / 8 - 1, 0, 1, 10.0f / 8 - 1, 10.0f / 8 - 1, 0, 1});
@@ -321,4 +322,31 @@ TEST_CASE("a huge triangle is clipped to the guard band and covers the screen on
                  {positions({NAN, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, INFINITY, 0, 0, 1, 1, 1, 0, 1, 0, 1, 0, 0})}, 6);
     REQUIRE(stats.ok());
     CHECK(stats->fragments_written == 0u);
+}
+
+TEST_CASE("per-fragment state through the API: draw buffers, stencil, scissor", "[api][draw][fragment]") {
+    const char* vs = "void main() { gl_Position = gl_Vertex; }\n";
+    const char* fs = "void main() { gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0); gl_FragData[1] = vec4(0.0, 1.0, 0.0, 1.0); }\n";
+    Program p = compile(vs, fs);
+    VertexAttrib quad = positions({-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1});
+    GLState gl;
+    gl.draw_buffers = 2;
+    Framebuffer one(8, 8);
+    // More draw buffers than the framebuffer has: an error, not a write past it.
+    auto refused = draw(p, gl, one, Primitive::Quads, {quad}, 4);
+    REQUIRE_FALSE(refused);
+    CHECK_THAT(refused.error().str(), Catch::Contains("glDrawBuffers names 2 colour buffers; the framebuffer has 1"));
+    Framebuffer fb(8, 8, false, 2);
+    gl.scissor_test = true;
+    gl.scissor_box = {2, 2, 4, 3};
+    gl.stencil_test = true;
+    gl.stencil[0].depth_pass = StencilOp::Incr;
+    REQUIRE(draw(p, gl, fb, ClearValues{glm::vec4(0.0f), 1.0f, 5}, Primitive::Quads, {quad}, 4));
+    CHECK(fb.pixel(3, 3, 0) == glm::vec4(1, 0, 0, 1));
+    CHECK(fb.pixel(3, 3, 1) == glm::vec4(0, 1, 0, 1));
+    CHECK(fb.pixel(1, 3, 1) == glm::vec4(0.0f));  // outside the scissor box
+    CHECK(fb.pixel(3, 5, 0) == glm::vec4(0.0f));  // y = 5 is past 2 + 3
+    CHECK(fb.stencil[3 * 8 + 3] == 6);
+    CHECK(fb.stencil[0] == 5);
+    CHECK(count_written(fb, glm::vec4(0.0f)) == 12);
 }

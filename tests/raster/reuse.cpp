@@ -60,6 +60,7 @@ Framebuffer run(Program& p, const Step& s) {
     fb.clear_depth(1.0f);
     GLState gl;
     gl.depth_test = true;
+    gl.vertex_program_point_size = true;  // the shader's gl_PointSize = 5
     if (s.viewport_width) gl.viewport = {10, 5, s.viewport_width, 150};
     p.exec.threads = s.threads;
     auto st = draw(p, gl, fb, s.prim, s.mesh->attribs, s.mesh->count, s.indices);

@@ -273,6 +273,7 @@ TEST_CASE("lines and points across tile borders are identical with any thread co
     GLState gl;
     gl.depth_test = true;
     gl.depth_func = GLState::DepthFunc::Lequal;
+    gl.vertex_program_point_size = true;  // gl_PointSize = 9: points across tile borders
     for (Primitive prim : {Primitive::Lines, Primitive::LineStrip, Primitive::Points}) {
         Frame one = draw_geometry(p, g, prim, 1, gl);
         CHECK(distinct_colors(one.fb) > 20u);

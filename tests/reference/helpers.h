@@ -31,13 +31,16 @@ struct Inputs {
     scene::Scene scene;
 };
 
-inline Result<scene::Image> render_glslrun(const Inputs& in) {
+// One image per colour buffer (draw_buffers).
+inline Result<std::vector<scene::Image>> render_glslrun(const Inputs& in) {
     auto program = Program::compile(in.vertex, in.fragment);
     if (!program) return program.error();
-    Framebuffer fb(in.scene.width, in.scene.height);
+    Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
     auto stats = scene::render_scene(*program, in.scene, fb);
     if (!stats) return stats.error();
-    return scene::read_framebuffer(fb);
+    std::vector<scene::Image> images;
+    for (int i = 0; i < fb.color_buffers(); ++i) images.push_back(scene::read_framebuffer(fb, i));
+    return images;
 }
 
 // Both images and their diff, for a person to look at; returns the paths.
@@ -56,7 +59,27 @@ inline std::string save_failure(const std::string& name, const scene::Image& mes
     return written;
 }
 
-// Renders `in` both ways and checks issue #3's rule; prints the statistics.
+// Issue #3's rule on one pair of images; prints the statistics.
+inline void compare_images(const std::string& name, const Inputs& in, const scene::Image& mesa,
+                           const scene::Image& ours) {
+    scene::CompareOptions options;
+    options.tolerance = kTolerance;
+    options.min_fraction_within = kMinFractionWithin;
+    options.clear_color = scene::to_rgba8(in.scene.clear_color);
+    auto stats = scene::compare_images(mesa, ours, options);
+    REQUIRE(stats);
+    std::printf("reference %-34s %s\n", name.c_str(), stats->summary().c_str());
+    INFO(stats->summary());
+    // A blank pair of images would pass vacuously.
+    CHECK(stats->covered >= stats->pixels / 100);
+    // GLSLRUN_SAVE_REFERENCE_IMAGES=1 keeps the images of passing cases too, to look at.
+    bool keep = stats->passed && std::getenv("GLSLRUN_SAVE_REFERENCE_IMAGES");
+    std::string saved = stats->passed && !keep ? std::string() : save_failure(name, mesa, ours);
+    INFO("images:" << saved);
+    CHECK(stats->passed);
+}
+
+// Renders `in` both ways and checks issue #3's rule on every colour buffer.
 inline void compare(const std::string& name, const Inputs& in) {
     auto mesa = glref::render_with_mesa(kDriver, in.vertex, in.fragment, in.scene);
     if (!mesa) {
@@ -68,21 +91,10 @@ inline void compare(const std::string& name, const Inputs& in) {
         FAIL_CHECK("glslrun could not render: " << ours.error().str());
         return;
     }
-    scene::CompareOptions options;
-    options.tolerance = kTolerance;
-    options.min_fraction_within = kMinFractionWithin;
-    options.clear_color = scene::to_rgba8(in.scene.clear_color);
-    auto stats = scene::compare_images(mesa->image, *ours, options);
-    REQUIRE(stats);
-    std::printf("reference %-34s %s\n", name.c_str(), stats->summary().c_str());
-    INFO(stats->summary());
-    // A blank pair of images would pass vacuously.
-    CHECK(stats->covered >= stats->pixels / 100);
-    // GLSLRUN_SAVE_REFERENCE_IMAGES=1 keeps the images of passing cases too, to look at.
-    bool keep = stats->passed && std::getenv("GLSLRUN_SAVE_REFERENCE_IMAGES");
-    std::string saved = stats->passed && !keep ? std::string() : save_failure(name, mesa->image, *ours);
-    INFO("images:" << saved);
-    CHECK(stats->passed);
+    REQUIRE(ours->size() == 1 + mesa->more_images.size());
+    compare_images(name, in, mesa->image, (*ours)[0]);
+    for (size_t i = 1; i < ours->size(); ++i)
+        compare_images(name + "." + std::to_string(i), in, mesa->more_images[i - 1], (*ours)[i]);
 }
 
 }  // namespace reference

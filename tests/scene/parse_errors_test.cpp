@@ -4,23 +4,6 @@
 
 using namespace scene_test;
 
-namespace {
-
-struct Case {
-    const char* text;
-    int line;
-    const char* message;
-};
-
-void check_cases(const std::vector<Case>& cases) {
-    for (const Case& c : cases) {
-        INFO("scene:\n" << c.text);
-        check_error(c.text, c.line, c.message);
-    }
-}
-
-}  // namespace
-
 TEST_CASE("errors print as file:line: error: message", "[scene][errors]") {
     auto r = glslrun::scene::parse_scene("[lights.0]\n\ndifuse = [1, 1, 1]\n", "scene.toml");
     REQUIRE_FALSE(r);

@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
@@ -35,6 +36,20 @@ inline void check_error(std::string_view text, int line, const std::string& mess
     CHECK(d.file == "scene.toml");
     CHECK(d.line == line);
     CHECK_THAT(d.message, Catch::Contains(message));
+}
+
+// A scene text that must not parse, the line its error cites and part of the message.
+struct ErrorCase {
+    const char* text;
+    int line;
+    const char* message;
+};
+
+inline void check_cases(const std::vector<ErrorCase>& cases) {
+    for (const ErrorCase& c : cases) {
+        INFO("scene:\n" << c.text);
+        check_error(c.text, c.line, c.message);
+    }
 }
 
 inline void check_vec(const glm::vec4& v, const std::array<double, 4>& want, double eps = 1e-6) {

@@ -112,21 +112,26 @@ MesaContext::~MesaContext() {
     eglDestroyContext(display_, context_);  // frees the context's buffers, FBO and programs
 }
 
-Status MesaContext::make_framebuffer(int width, int height) {
-    GLint max_size = 0;
+Status MesaContext::make_framebuffer(int width, int height, int color_buffers) {
+    GLint max_size = 0, max_buffers = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+    glGetIntegerv(GL_MAX_DRAW_BUFFERS, &max_buffers);
     if (width > max_size || height > max_size)
         return Error(fmt::format("{}x{} exceeds Mesa's largest renderbuffer ({})", width, height, max_size));
-    GLuint fbo = 0, rb[2] = {0, 0};
+    if (color_buffers < 1 || color_buffers > max_buffers)
+        return Error(fmt::format("{} colour buffers: Mesa draws to 1..{}", color_buffers, max_buffers));
+    GLuint fbo = 0;
     gl_.GenFramebuffers(1, &fbo);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl_.GenRenderbuffers(2, rb);
-    gl_.BindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-    gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-    gl_.BindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-    gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    auto attach = [&](GLenum format, GLenum attachment) {
+        GLuint rb = 0;
+        gl_.GenRenderbuffers(1, &rb);
+        gl_.BindRenderbuffer(GL_RENDERBUFFER, rb);
+        gl_.RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, rb);
+    };
+    for (int i = 0; i < color_buffers; ++i) attach(GL_RGBA8, GLenum(GL_COLOR_ATTACHMENT0 + i));
+    attach(GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL_ATTACHMENT);
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     GLenum status = gl_.CheckFramebufferStatus(GL_FRAMEBUFFER);

@@ -1,6 +1,6 @@
 // Mesa through EGL on the surfaceless platform: a fresh OpenGL compatibility
 // context per render (so every render starts from GL's default state), an
-// RGBA8 + DEPTH24 framebuffer object, and the entry points beyond GL 1.1.
+// RGBA8 (one per draw buffer) + DEPTH24_STENCIL8 framebuffer object, and the entry points beyond GL 1.1.
 #pragma once
 #include <EGL/egl.h>
 #include <GL/gl.h>
@@ -67,7 +67,14 @@ namespace glslrun::glref {
     X(PFNGLSECONDARYCOLOR3FVPROC, SecondaryColor3fv)                                        \
     X(PFNGLFOGCOORDPOINTERPROC, FogCoordPointer)                                            \
     X(PFNGLTEXIMAGE3DPROC, TexImage3D)                                                      \
-    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)
+    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                                              \
+    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                                                    \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                        \
+    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)                                \
+    X(PFNGLBLENDCOLORPROC, BlendColor)                                                      \
+    X(PFNGLSTENCILFUNCSEPARATEPROC, StencilFuncSeparate)                                    \
+    X(PFNGLSTENCILOPSEPARATEPROC, StencilOpSeparate)                                        \
+    X(PFNGLSTENCILMASKSEPARATEPROC, StencilMaskSeparate)
 
 struct GLFunctions {
 #define GLREF_DECLARE(type, name) type name = nullptr;
@@ -88,8 +95,9 @@ public:
 
     const GLFunctions& gl() const { return gl_; }
     const std::string& renderer() const { return renderer_; }  // GL_RENDERER
-    // Creates and binds an FBO of RGBA8 colour and 24-bit depth, single-sampled.
-    Status make_framebuffer(int width, int height);
+    // Creates and binds an FBO of `color_buffers` RGBA8 colour attachments
+    // and 24-bit depth with 8-bit stencil, single-sampled.
+    Status make_framebuffer(int width, int height, int color_buffers = 1);
 
 private:
     MesaContext() = default;

@@ -12,6 +12,7 @@
 #include "tools/glref/gl_textures.h"
 #include "tools/glref/gl_uniforms.h"
 #include "scene/bench_report.h"
+#include "glslrun/scene/render.h"
 
 namespace glslrun::glref {
 
@@ -128,7 +129,55 @@ void set_lighting(const Scene& s) {
 
 void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
 
-void set_render_state(const GLState& g) {
+// GL's enums in the order of glslrun's (glslrun.h lists them in GL's order).
+constexpr GLenum kStencilOps[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP};
+constexpr GLenum kBlendFactors[] = {
+    GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR, GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA,
+    GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_COLOR,
+    GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_ALPHA_SATURATE};
+constexpr GLenum kBlendEquations[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+
+GLenum compare_enum(CompareFunc f) { return GLenum(GL_NEVER + int(f)); }
+
+void set_stencil(const GLFunctions& gl, const GLState& g) {
+    enable(GL_STENCIL_TEST, g.stencil_test);
+    const GLenum faces[2] = {GL_FRONT, GL_BACK};
+    for (size_t i = 0; i < 2; ++i) {
+        const StencilFace& f = g.stencil[i];
+        gl.StencilFuncSeparate(faces[i], compare_enum(f.func), f.ref, f.value_mask);
+        gl.StencilOpSeparate(faces[i], kStencilOps[int(f.fail)], kStencilOps[int(f.depth_fail)],
+                             kStencilOps[int(f.depth_pass)]);
+        gl.StencilMaskSeparate(faces[i], f.write_mask);
+    }
+}
+
+void set_draw_buffers(const GLFunctions& gl, int count) {
+    std::array<GLenum, kMaxDrawBuffers> buffers{};
+    for (int i = 0; i < count; ++i) buffers[size_t(i)] = GLenum(GL_COLOR_ATTACHMENT0 + i);
+    gl.DrawBuffers(count, buffers.data());
+}
+
+// GL 2.1 §4.1's state, in the order the operations run.
+void set_fragment_state(const GLFunctions& gl, const GLState& g) {
+    enable(GL_SCISSOR_TEST, g.scissor_test);
+    glScissor(g.scissor_box[0], g.scissor_box[1], g.scissor_box[2], g.scissor_box[3]);
+    enable(GL_ALPHA_TEST, g.alpha_test);
+    glAlphaFunc(compare_enum(g.alpha_func), g.alpha_ref);
+    set_stencil(gl, g);
+    glDepthMask(g.depth_mask);
+    enable(GL_BLEND, g.blend);
+    const BlendState& b = g.blend_state;
+    gl.BlendFuncSeparate(kBlendFactors[int(b.src_rgb)], kBlendFactors[int(b.dst_rgb)], kBlendFactors[int(b.src_alpha)],
+                         kBlendFactors[int(b.dst_alpha)]);
+    gl.BlendEquationSeparate(kBlendEquations[int(b.equation_rgb)], kBlendEquations[int(b.equation_alpha)]);
+    gl.BlendColor(b.color.r, b.color.g, b.color.b, b.color.a);
+    enable(GL_COLOR_LOGIC_OP, g.color_logic_op);
+    glLogicOp(GLenum(GL_CLEAR + int(g.logic_op)));
+    glColorMask(g.color_mask[0], g.color_mask[1], g.color_mask[2], g.color_mask[3]);
+    set_draw_buffers(gl, g.draw_buffers);
+}
+
+void set_render_state(const GLFunctions& gl, const GLState& g) {
     enable(GL_DEPTH_TEST, g.depth_test);
     // GLState::DepthFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
     glDepthFunc(GLenum(GL_NEVER + int(g.depth_func)));
@@ -138,8 +187,10 @@ void set_render_state(const GLState& g) {
     glShadeModel(g.flat_shading ? GL_FLAT : GL_SMOOTH);
     enable(GL_VERTEX_PROGRAM_TWO_SIDE, g.vertex_program_two_side);
     glPointSize(g.point_size);
+    enable(GL_VERTEX_PROGRAM_POINT_SIZE, g.vertex_program_point_size);
     glDepthRange(g.depth_near, g.depth_far);
     glDisable(GL_DITHER);  // on by default in GL; glslrun never dithers
+    set_fragment_state(gl, g);
 }
 
 // scene.gl.clip_planes are eye-space planes (the parser already applied the
@@ -166,21 +217,26 @@ void set_fog_and_textures(const GLFunctions& gl, const GLState& g) {
     gl.ActiveTexture(GL_TEXTURE0);
 }
 
-void clear(const Scene& s) {
+// glClear obeys the scissor and the write masks, and clears the current draw
+// buffers: with GL's defaults and every colour buffer, as render_scene clears.
+void clear(const GLFunctions& gl, const Scene& s) {
     std::array<int, 4> vp = s.gl.viewport;
     if (vp[2] == 0) vp = {0, 0, s.width, s.height};
     glViewport(vp[0], vp[1], vp[2], vp[3]);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    set_draw_buffers(gl, scene::color_buffers(s));
     glClearColor(s.clear_color.r, s.clear_color.g, s.clear_color.b, s.clear_color.a);
     glClearDepth(s.clear_depth);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClearStencil(s.clear_stencil);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
 Status set_scene_state(const GLFunctions& gl, const Scene& s) {
-    clear(s);
     load_matrix(GL_PROJECTION, s.projection);
     set_lighting(s);
-    set_render_state(s.gl);
-    set_clip_planes(s.gl);
     set_fog_and_textures(gl, s.gl);
     glMatrixMode(GL_MODELVIEW);
     return check_gl("while setting the scene's state");
@@ -331,6 +387,9 @@ Status bind_arrays(const GLFunctions& gl, GLuint program, const scene::Mesh& m, 
 // current attributes, the object's uniforms, then the arrays and the draw.
 Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o) {
     if (Status st = check_mesh(o); !st) return st;
+    const GLState& state = o.state ? *o.state : s.gl;
+    set_render_state(gl, state);
+    set_clip_planes(state);
     // The product glslrun uses, rather than glMultMatrixf's own rounding.
     load_matrix(GL_MODELVIEW, s.view * o.model);
     set_material(GL_FRONT, o.front_material.value_or(s.gl.front_material));
@@ -351,7 +410,7 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
 // One frame: the clear, the scene's uniforms (so every frame starts from the
 // same program state), every object, and glFinish, so the frame is done.
 Status draw_frame(const GLFunctions& gl, GLuint program, const Scene& scene) {
-    clear(scene);
+    clear(gl, scene);
     if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
     for (const scene::Object& o : scene.objects)
         if (Status st = draw_object(gl, program, scene, o); !st) return st;
@@ -359,10 +418,11 @@ Status draw_frame(const GLFunctions& gl, GLuint program, const Scene& scene) {
     return Ok{};
 }
 
-Result<scene::Image> read_back(int width, int height) {
+Result<scene::Image> read_back(int width, int height, int buffer) {
     glFinish();
     std::vector<uint8_t> pixels(size_t(width) * size_t(height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + buffer));
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     if (Status st = check_gl("while reading the pixels back"); !st) return st.error();
     return scene::image_from_bottom_up(width, height, pixels);
@@ -379,7 +439,8 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     auto context = MesaContext::create(driver);  // fresh: GL's default state
     if (!context) return context.error();
     const GLFunctions& gl = (*context)->gl();
-    if (Status st = (*context)->make_framebuffer(scene.width, scene.height); !st) return st.error();
+    const int buffers = scene::color_buffers(scene);
+    if (Status st = (*context)->make_framebuffer(scene.width, scene.height, buffers); !st) return st.error();
     auto compile_start = std::chrono::steady_clock::now();
     auto program = build_program(gl, vertex, fragment);
     if (!program) return program.error();
@@ -394,10 +455,16 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         cpu_seconds.push_back(scene::process_cpu_seconds() - cpu_start);
     }
-    auto image = read_back(scene.width, scene.height);
+    auto image = read_back(scene.width, scene.height, 0);
     if (!image) return image.error();
-    return MesaRender{std::move(*image), (*context)->renderer(), std::move(seconds), std::move(cpu_seconds),
+    MesaRender render{std::move(*image), {}, (*context)->renderer(), std::move(seconds), std::move(cpu_seconds),
                       compile_seconds};
+    for (int i = 1; i < buffers; ++i) {
+        auto more = read_back(scene.width, scene.height, i);
+        if (!more) return more.error();
+        render.more_images.push_back(std::move(*more));
+    }
+    return render;
 }
 
 }  // namespace glslrun::glref

@@ -13,7 +13,8 @@
 namespace glslrun::glref {
 
 struct MesaRender {
-    scene::Image image;    // glReadPixels' RGBA8, flipped to top row first
+    scene::Image image;    // glReadPixels' RGBA8 of colour buffer 0, flipped to top row first
+    std::vector<scene::Image> more_images;  // colour buffers 1.. (draw_buffers > 1)
     std::string renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     // Wall time of each frame. llvmpipe compiles its shaders during the first.
     std::vector<double> frame_seconds;

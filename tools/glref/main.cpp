@@ -17,6 +17,7 @@
 #include "tools/glref/gl_render.h"
 #include "scene/bench_report.h"
 #include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
 
 namespace {
@@ -130,6 +131,9 @@ int run(const Options& o) {
     auto render = glref::render_with_mesa(o.driver, {*vs}, {*fs}, *scene, o.mesa);
     if (!render) return fail(render.error());
     if (Status st = scene::write_png(render->image, o.output); !st) return fail(st.error());
+    for (size_t i = 0; i < render->more_images.size(); ++i)
+        if (Status st = scene::write_png(render->more_images[i], scene::color_buffer_path(o.output, int(i) + 1)); !st)
+            return fail(st.error());
     std::printf("%s: %dx%d, %s\n", o.output.c_str(), scene->width, scene->height, render->renderer.c_str());
     if (o.mesa.frames > 1) print_frames(*render, *scene, o.driver);
     return 0;

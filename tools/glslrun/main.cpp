@@ -155,8 +155,17 @@ int program_cli(int argc, char** argv) {
     app.add_option("files", files,
                    "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
                    "pass-through one is used)");
-    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png)");
+    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png; - for standard output); with several draw buffers, buffer i > 0 goes to NAME.i.png");
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
+    app.add_option("--uniform", o.uniforms,
+                   "NAME=VALUE: set a uniform after the scene's own settings (the value as in a scene's "
+                   "[uniforms]: 0.5, 3, [1, 0, 0], true); repeatable")
+        ->type_name("NAME=VALUE");
+    app.add_option("--frames", o.frames,
+                   "render N frames with `uniform float time` = frame / 30 seconds, into OUT.0000.png, "
+                   "OUT.0001.png, ...")
+        ->type_name("N")
+        ->check(CLI::Range(1, 100000));
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");

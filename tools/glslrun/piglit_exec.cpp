@@ -358,7 +358,7 @@ std::optional<TestResult> ShaderTestRun::enable(int line, const Enable& e) {
     if (cap == "GL_VERTEX_PROGRAM_TWO_SIDE") gl_.vertex_program_two_side = e.on;
     else if (cap == "GL_DEPTH_TEST") gl_.depth_test = e.on;
     else if (cap == "GL_CULL_FACE") gl_.cull_face = e.on;
-    else if (cap == "GL_PROGRAM_POINT_SIZE" || cap == "GL_VERTEX_PROGRAM_POINT_SIZE") { /* always on here */ }
+    else if (cap == "GL_PROGRAM_POINT_SIZE" || cap == "GL_VERTEX_PROGRAM_POINT_SIZE") gl_.vertex_program_point_size = e.on;
     else if (cap.rfind("GL_CLIP_PLANE", 0) == 0 && cap.size() == 14 && std::isdigit((unsigned char)cap[13])) {
         int i = cap[13] - '0';
         if (i >= int(gl_.clip_planes.size()))

@@ -2,6 +2,7 @@
 // --stats, and `--compare REF.png` on the result or on a given PNG.
 #include "render_command.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
@@ -82,6 +83,39 @@ std::string default_output(const Inputs& in) {
     std::string program = in.fragment.empty() ? fs::path(in.vertex[0].name).stem().string()
                                               : fs::path(in.fragment[0].name).stem().string();
     return fmt::format("{}-{}.png", program, fs::path(in.scene).stem().string());
+}
+
+// -o takes PNG names and "-" (standard output); any other extension is an error
+// rather than PNG data under a misleading name.
+Status check_output(const std::string& output, const RenderOptions& o, int buffers) {
+    if (output == "-") {
+        if (buffers > 1)
+            return Error(fmt::format("-o - writes one image, and the scene draws {} colour buffers (draw_buffers); "
+                                     "give a file name", buffers));
+        if (o.frames > 1) return Error("-o - writes one image; --frames writes one per frame: give a file name");
+        if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty())
+            return Error("-o - writes the PNG to standard output: it does not combine with --stats, --bench, "
+                         "--dump-ir or --compare, which print there too");
+        return Ok{};
+    }
+    std::string ext = fs::path(output).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png")
+        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
+                                 "for standard output)", output));
+    return Ok{};
+}
+
+// Frame i's image name: out.png -> out.0000.png, out.0001.png, ...
+std::string frame_path(const std::string& output, int frame) {
+    fs::path p(output);
+    return (p.parent_path() / fmt::format("{}.{:04}{}", p.stem().string(), frame, p.extension().string())).string();
+}
+
+Status write_buffers(const Framebuffer& fb, const std::string& output) {
+    for (int i = 0; i < fb.color_buffers(); ++i)
+        if (Status st = write_png(fb, scene::color_buffer_path(output, i), i); !st) return st;
+    return Ok{};
 }
 
 // The built-in uniforms read with their values, one per line (matrices one
@@ -242,9 +276,15 @@ std::jthread warm_up_compiler(const Inputs& in) {
 
 }  // namespace
 
+// The scene file, with --size and --uniform applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
     if (!scene) return scene.error();
+    for (const std::string& arg : o.uniforms) {
+        auto settings = scene::parse_uniform_override(arg);
+        if (!settings) return settings.error();
+        scene::override_uniforms(*scene, *settings);
+    }
     // Legal but likely unintended (an incomplete texture samples as black).
     for (const Diagnostic& w : scene->warnings) fmt::print(stderr, "{}\n", w.str());
     if (!o.size.empty()) {
@@ -261,10 +301,12 @@ int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);
     auto scene = load_sized_scene(in, o);
     if (!scene) return fail(scene.error());
+    std::string output = o.output.empty() ? default_output(in) : o.output;
+    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error());
     if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
     // Allocated before the compile, so that its page faults (2.7 ms at
     // 512x512, perf) overlap the warm-up too.
-    Framebuffer fb(scene->width, scene->height);
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     // The clock starts before the wait: what is left of building glslang's
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
@@ -283,8 +325,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (o.bench_frames > 0)
         if (Status st = bench_frames(*prog, *scene, fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
-    std::string output = o.output.empty() ? default_output(in) : o.output;
-    if (Status st = write_png(fb, output); !st) return fail(st.error());
+    if (Status st = write_buffers(fb, output); !st) return fail(st.error());
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
     if (o.bench_frames > 0) {
@@ -292,6 +333,31 @@ int render(const Inputs& in, const RenderOptions& o) {
         std::fputs(scene::format_bench(bench).c_str(), stdout);
     }
     if (!o.compare.empty()) return compare_with(scene::read_framebuffer(fb), o);
+    return 0;
+}
+
+// --frames N: frame i with `uniform float time` = i / kFramesPerSecond, into out.0000.png, ...
+int render_frames(const Inputs& in, const RenderOptions& o) {
+    auto scene = load_sized_scene(in, o);
+    if (!scene) return fail(scene.error());
+    std::string output = o.output.empty() ? default_output(in) : o.output;
+    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error());
+    auto prog = Program::compile(in.vertex, in.fragment);
+    if (!prog) return fail(prog.error());
+    prog->exec.threads = o.threads;
+    prog->exec.precision = o.precision;
+    if (!prog->has_uniform(kTimeUniform))
+        fmt::print(stderr, "warning: --frames: the program has no active 'uniform float {}', so every frame is the "
+                           "same\n", kTimeUniform);
+    else
+        scene->uniforms.push_back({kTimeUniform, {0.0}, false, {"--frames", 0}});
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    for (int frame = 0; frame < o.frames; ++frame) {
+        if (prog->has_uniform(kTimeUniform)) scene->uniforms.back().values = {frame / kFramesPerSecond};
+        auto stats = scene::render_scene(*prog, *scene, fb);
+        if (!stats) return fail(stats.error());
+        if (Status st = write_buffers(fb, frame_path(output, frame)); !st) return fail(st.error());
+    }
     return 0;
 }
 
@@ -315,6 +381,10 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
         (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
         return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "
                           "--bench, --compare, --stats or --dump-ir"));
+    if (o.frames > 0 && (o.bench_frames > 0 || !o.compare.empty() || o.stats || !o.error_report.empty()))
+        return fail(Error("--frames writes a sequence of images: it does not combine with --bench, --compare, "
+                          "--stats or --error-report"));
+    if (o.frames > 0 && !in->scene.empty()) return render_frames(*in, o);
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
         return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));

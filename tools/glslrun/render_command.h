@@ -8,6 +8,10 @@
 
 namespace glslrun::cli {
 
+// --frames: frame i of N sets `uniform float time` to i / kFramesPerSecond seconds.
+inline constexpr double kFramesPerSecond = 30.0;
+inline constexpr const char* kTimeUniform = "time";
+
 struct RenderOptions {
     std::string output, size, compare, diff;
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
@@ -15,6 +19,8 @@ struct RenderOptions {
     unsigned threads = 0;  // draw() worker threads; 0: one per core
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;
+    std::vector<std::string> uniforms;  // --uniform name=value, in order
+    int frames = 0;  // --frames N: N images, uniform `time` = frame / kFramesPerSecond
     Precision precision = Precision::Precise;  // --precision
     Backend backend = Backend::Auto;           // --backend
 };

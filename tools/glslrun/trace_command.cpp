@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "debug/debugger.h"
+#include "glslrun/scene/render.h"
 #include "render_command.h"
 
 namespace glslrun::cli {
@@ -53,7 +54,7 @@ int run_trace(const TraceOptions& o) {
     program->exec.precision = o.precision;
     auto debug = debug::compile_for_debugging(in->vertex, in->fragment, o.precision);
     if (!debug) return fail(debug.error());
-    Framebuffer fb(scene->width, scene->height);
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     if (o.find_nan) {
         auto report = debug::find_nan(*program, *debug, *scene, fb, o.colour_range);
         if (!report) return fail(report.error());

@@ -32,8 +32,9 @@ Result<Image> read_png(const std::string& path);
 Status write_png(const Image& image, const std::string& path);
 
 // The framebuffer's colours quantised exactly as glslrun::write_png does, so
-// an in-memory comparison sees the bytes the PNG file would hold.
-Image read_framebuffer(const Framebuffer& fb);
+// an in-memory comparison sees the bytes the PNG file would hold; `buffer`
+// picks the colour buffer (0..fb.color_buffers() - 1).
+Image read_framebuffer(const Framebuffer& fb, int buffer = 0);
 // Rows as glReadPixels returns them (bottom row first, tightly packed RGBA8).
 Result<Image> image_from_bottom_up(int width, int height, std::span<const uint8_t> rgba);
 // A colour as an RGBA8 buffer stores it (glClearColor's value after the clear).

@@ -9,6 +9,12 @@
 
 namespace glslrun::scene {
 
+// The colour buffers a framebuffer for the scene needs: the most that any
+// draw's glDrawBuffers names ([state] draw_buffers, objects' too).
+int color_buffers(const Scene& scene);
+// Colour buffer i's image file: out.png for buffer 0, then out.1.png, out.2.png, ...
+std::string color_buffer_path(const std::string& output, int buffer);
+
 // Sets the scene's and the object's user uniforms on the program, converting
 // the file's numbers to the declared types. Errors cite the scene's file:line.
 Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings);
@@ -29,7 +35,8 @@ Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Frame
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb);
 
 // render_scene into a framebuffer of the scene's size, read back as the PNG
-// of `glslrun a.vert a.frag scene.toml` holds it (top row first).
+// of `glslrun a.vert a.frag scene.toml` holds it (top row first): colour
+// buffer 0 when the scene draws to several.
 Result<Image> render_image(Program& program, const Scene& scene);
 
 // Reads shader files; each source is named by its path, so diagnostics say

@@ -66,6 +66,9 @@ struct Object {
     std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
     std::optional<MaterialState> front_material, back_material;  // overrides
     std::vector<UniformSetting> uniforms;
+    // [objects.state]: the scene's GL state with this object's render state
+    // keys on top (lights, materials and textures stay the scene's).
+    std::optional<GLState> state;
     SourceLoc where;
 };
 
@@ -95,6 +98,7 @@ struct Scene {
     int width = 512, height = 512;
     glm::vec4 clear_color{0, 0, 0, 0};  // GL's default
     float clear_depth = 1.0f;
+    int clear_stencil = 0;
     glm::mat4 view{1.0f};        // the camera: modelview before any object transform
     glm::mat4 projection{1.0f};
     // Everything else of the GL state. Lights are already in eye space
@@ -115,6 +119,12 @@ constexpr int kMaxImageSide = 16384;
 
 Result<Scene> parse_scene(std::string_view toml_text, const std::string& path);
 Result<Scene> load_scene(const std::string& path);  // relative mesh paths are relative to the file
+
+// `--uniform name=value`: the value as a scene's [uniforms] entry writes it
+// ("0.5", "[1, 0, 0]", "3", "true"); errors name the argument.
+Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg);
+// Appends `settings` after the scene's and every object's own uniforms, so they win.
+void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings);
 
 // Recomputes scene.gl's eye-space lights from scene.lights and scene.view;
 // call it after changing either (load_scene already did).

@@ -1,0 +1,241 @@
+#include "raster/fragment_ops.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+
+#include "raster/framebuffer.h"
+
+namespace glslrun::raster {
+
+namespace {
+
+constexpr uint32_t kStencilMax = (1u << kStencilBits) - 1;
+
+// GL 2.1 Table 4.1: the factor of one operand (RGB, then alpha in .a).
+glm::vec4 factor(BlendFactor f, glm::vec4 src, glm::vec4 dst, glm::vec4 constant) {
+    switch (f) {
+    case BlendFactor::Zero: return glm::vec4(0.0f);
+    case BlendFactor::One: return glm::vec4(1.0f);
+    case BlendFactor::SrcColor: return src;
+    case BlendFactor::OneMinusSrcColor: return 1.0f - src;
+    case BlendFactor::DstColor: return dst;
+    case BlendFactor::OneMinusDstColor: return 1.0f - dst;
+    case BlendFactor::SrcAlpha: return glm::vec4(src.a);
+    case BlendFactor::OneMinusSrcAlpha: return glm::vec4(1.0f - src.a);
+    case BlendFactor::DstAlpha: return glm::vec4(dst.a);
+    case BlendFactor::OneMinusDstAlpha: return glm::vec4(1.0f - dst.a);
+    case BlendFactor::ConstantColor: return constant;
+    case BlendFactor::OneMinusConstantColor: return 1.0f - constant;
+    case BlendFactor::ConstantAlpha: return glm::vec4(constant.a);
+    case BlendFactor::OneMinusConstantAlpha: return glm::vec4(1.0f - constant.a);
+    case BlendFactor::SrcAlphaSaturate: {
+        float f = std::min(src.a, 1.0f - dst.a);
+        return {f, f, f, 1.0f};
+    }
+    }
+    return glm::vec4(0.0f);
+}
+
+float combine(BlendEquation eq, float s, float sf, float d, float df) {
+    switch (eq) {
+    case BlendEquation::Add: return s * sf + d * df;
+    case BlendEquation::Subtract: return s * sf - d * df;
+    case BlendEquation::ReverseSubtract: return d * df - s * sf;
+    case BlendEquation::Min: return std::min(s, d);  // factors unused (§4.1.8)
+    case BlendEquation::Max: return std::max(s, d);
+    }
+    return s;
+}
+
+uint32_t to_unorm8(float v) { return uint32_t(quantize_unorm8(v) * 255.0f + 0.5f); }
+
+// a * b / 255 rounded to the nearest integer, for a and b in 0..255.
+uint32_t mul_unorm8(uint32_t a, uint32_t b) { return (a * b * 2 + 255) / 510; }
+
+// Table 4.1's factor of one operand in 8-bit fixed point (RGB, then alpha in [3]).
+std::array<uint32_t, 4> factor8(BlendFactor f, const std::array<uint32_t, 4>& s, const std::array<uint32_t, 4>& d,
+                                const std::array<uint32_t, 4>& c) {
+    auto all = [](uint32_t v) { return std::array<uint32_t, 4>{v, v, v, v}; };
+    auto inv = [](std::array<uint32_t, 4> v) {
+        for (uint32_t& x : v) x = 255 - x;
+        return v;
+    };
+    switch (f) {
+    case BlendFactor::Zero: return all(0);
+    case BlendFactor::One: return all(255);
+    case BlendFactor::SrcColor: return s;
+    case BlendFactor::OneMinusSrcColor: return inv(s);
+    case BlendFactor::DstColor: return d;
+    case BlendFactor::OneMinusDstColor: return inv(d);
+    case BlendFactor::SrcAlpha: return all(s[3]);
+    case BlendFactor::OneMinusSrcAlpha: return all(255 - s[3]);
+    case BlendFactor::DstAlpha: return all(d[3]);
+    case BlendFactor::OneMinusDstAlpha: return all(255 - d[3]);
+    case BlendFactor::ConstantColor: return c;
+    case BlendFactor::OneMinusConstantColor: return inv(c);
+    case BlendFactor::ConstantAlpha: return all(c[3]);
+    case BlendFactor::OneMinusConstantAlpha: return all(255 - c[3]);
+    case BlendFactor::SrcAlphaSaturate: {
+        uint32_t v = std::min(s[3], 255 - d[3]);
+        return {v, v, v, 255};
+    }
+    }
+    return all(0);
+}
+
+uint32_t combine8(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_t df) {
+    int a = int(mul_unorm8(s, sf)), b = int(mul_unorm8(d, df));
+    switch (eq) {
+    case BlendEquation::Add: return uint32_t(std::min(a + b, 255));
+    case BlendEquation::Subtract: return uint32_t(std::max(a - b, 0));
+    case BlendEquation::ReverseSubtract: return uint32_t(std::max(b - a, 0));
+    case BlendEquation::Min: return std::min(s, d);
+    case BlendEquation::Max: return std::max(s, d);
+    }
+    return s;
+}
+
+std::array<uint32_t, 4> to_unorm8(glm::vec4 v) { return {to_unorm8(v.r), to_unorm8(v.g), to_unorm8(v.b), to_unorm8(v.a)}; }
+
+size_t pixel_index(const LanePixels& px, int lane, int width) {
+    return size_t(px.y[lane]) * size_t(width) + size_t(px.x[lane]);
+}
+
+// The stencil test and update of one fragment (§4.1.5, §4.1.6); true when
+// it passes both tests.
+bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t& stencil, float z, float& depth) {
+    auto update = [&](StencilOp op) {
+        if (!ops.stencil_test) return;
+        uint32_t v = stencil_op(op, stencil, face.ref);
+        stencil = uint8_t((stencil & ~face.write_mask) | (v & face.write_mask));
+    };
+    if (ops.stencil_test) {
+        uint32_t ref = uint32_t(std::clamp(face.ref, 0, int(kStencilMax)));
+        // 8-bit values are exact as floats: the depth test's comparison serves.
+        if (!depth_passes(face.func, float(ref & face.value_mask), float(stencil & face.value_mask))) {
+            update(face.fail);
+            return false;
+        }
+    }
+    if (ops.depth_test && !depth_passes(ops.depth_func, z, depth)) {
+        update(face.depth_fail);
+        return false;
+    }
+    update(face.depth_pass);
+    if (ops.depth_test && ops.depth_write) depth = z;
+    return true;
+}
+
+}  // namespace
+
+FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
+    : alpha_test(gl.alpha_test), alpha_func(gl.alpha_func), alpha_ref(std::clamp(gl.alpha_ref, 0.0f, 1.0f)),
+      stencil_test(gl.stencil_test), stencil(gl.stencil), depth_test(gl.depth_test), depth_write(gl.depth_mask),
+      depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color),
+      float_color(fb.float_color), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
+    blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
+    for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
+    bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
+    plain = !alpha_test && !stencil_test && !blend && !logic_op && all_channels && gl.draw_buffers == 1 &&
+            (depth_write || !depth_test);
+}
+
+uint32_t stencil_op(StencilOp op, uint32_t value, int ref) {
+    switch (op) {
+    case StencilOp::Keep: return value;
+    case StencilOp::Zero: return 0;
+    case StencilOp::Replace: return uint32_t(std::clamp(ref, 0, int(kStencilMax)));
+    case StencilOp::Incr: return std::min(value + 1, kStencilMax);
+    case StencilOp::Decr: return value > 0 ? value - 1 : 0;
+    case StencilOp::Invert: return ~value & kStencilMax;
+    case StencilOp::IncrWrap: return (value + 1) & kStencilMax;
+    case StencilOp::DecrWrap: return (value - 1) & kStencilMax;
+    }
+    return value;
+}
+
+uint32_t logic_op(LogicOp op, uint32_t s, uint32_t d) {
+    uint32_t r = 0;
+    switch (op) {
+    case LogicOp::Clear: r = 0; break;
+    case LogicOp::And: r = s & d; break;
+    case LogicOp::AndReverse: r = s & ~d; break;
+    case LogicOp::Copy: r = s; break;
+    case LogicOp::AndInverted: r = ~s & d; break;
+    case LogicOp::Noop: r = d; break;
+    case LogicOp::Xor: r = s ^ d; break;
+    case LogicOp::Or: r = s | d; break;
+    case LogicOp::Nor: r = ~(s | d); break;
+    case LogicOp::Equiv: r = ~(s ^ d); break;
+    case LogicOp::Invert: r = ~d; break;
+    case LogicOp::OrReverse: r = s | ~d; break;
+    case LogicOp::CopyInverted: r = ~s; break;
+    case LogicOp::OrInverted: r = ~s | d; break;
+    case LogicOp::Nand: r = ~(s & d); break;
+    case LogicOp::Set: r = ~0u; break;
+    }
+    return r & 0xFFu;
+}
+
+glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
+    glm::vec4 sf = factor(s.src_rgb, src, dst, s.color), df = factor(s.dst_rgb, src, dst, s.color);
+    float sfa = factor(s.src_alpha, src, dst, s.color).a, dfa = factor(s.dst_alpha, src, dst, s.color).a;
+    glm::vec4 out;
+    for (int k = 0; k < 3; ++k) out[k] = combine(s.equation_rgb, src[k], sf[k], dst[k], df[k]);
+    out.a = combine(s.equation_alpha, src.a, sfa, dst.a, dfa);
+    return out;
+}
+
+glm::vec4 blend_unorm8(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
+    std::array<uint32_t, 4> s8 = to_unorm8(src), d8 = to_unorm8(dst), c8 = to_unorm8(s.color);
+    std::array<uint32_t, 4> sf = factor8(s.src_rgb, s8, d8, c8), df = factor8(s.dst_rgb, s8, d8, c8);
+    uint32_t sfa = factor8(s.src_alpha, s8, d8, c8)[3], dfa = factor8(s.dst_alpha, s8, d8, c8)[3];
+    glm::vec4 out;
+    for (size_t k = 0; k < 3; ++k) out[int(k)] = float(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k])) / 255.0f;
+    out.a = float(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa)) / 255.0f;
+    return out;
+}
+
+rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask) {
+    for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        // Fixed-point buffers see the shader's colour clamped to [0, 1] (§3.11.6).
+        float a = ops.float_color ? alpha[size_t(lane)] : clamp01(alpha[size_t(lane)]);
+        if (!depth_passes(ops.alpha_func, a, ops.alpha_ref)) mask &= ~(rt::LaneMask(1) << lane);
+    }
+    return mask;
+}
+
+rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask) {
+    for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        size_t pixel = pixel_index(px, lane, fb.width);
+        const StencilFace& face = ops.stencil[(px.back >> lane) & 1u];
+        if (!stencil_depth_one(ops, face, fb.stencil[pixel], px.z[lane], fb.depth[pixel]))
+            mask &= ~(rt::LaneMask(1) << lane);
+    }
+    return mask;
+}
+
+void write_color(const FragmentOps& ops, std::vector<float>& buffer, int width, const LanePixels& px,
+                 const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
+    for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        float* dst = &buffer[pixel_index(px, lane, width) * 4];
+        glm::vec4 d{dst[0], dst[1], dst[2], dst[3]};
+        glm::vec4 s{rgba[0][size_t(lane)], rgba[1][size_t(lane)], rgba[2][size_t(lane)], rgba[3][size_t(lane)]};
+        if (!ops.float_color)
+            for (int k = 0; k < 4; ++k) s[k] = clamp01(s[k]);
+        glm::vec4 out = s;
+        if (ops.logic_op) {
+            for (int k = 0; k < 4; ++k) out[k] = float(logic_op(ops.logic, to_unorm8(s[k]), to_unorm8(d[k]))) / 255.0f;
+        } else if (ops.blend) {
+            out = ops.float_color ? blend(ops.blend_state, s, d) : blend_unorm8(ops.blend_state, s, d);
+        }
+        for (int k = 0; k < 4; ++k)
+            if (ops.color_mask[size_t(k)]) dst[k] = ops.float_color ? out[k] : quantize_unorm8(out[k]);
+    }
+}
+
+}  // namespace glslrun::raster
