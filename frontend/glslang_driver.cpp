@@ -18,6 +18,7 @@
 #include "frontend/fold_workaround.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
+#include "frontend/size_limits.h"
 #include "frontend/source_rewrite.h"
 #include "frontend/unit_checks.h"
 
@@ -112,7 +113,10 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
         size_t first = diags.size();
         parse_info_log(sh->getInfoLog(), st.sources, st.sources[i].name, diags);
         add_hints(diags, first, st.sources[i]);
-        if (parsed && sh->getIntermediate()) check_unit_rules(*sh->getIntermediate(), st.texts[i], st.sources[i].name, diags);
+        if (parsed && sh->getIntermediate()) {
+            check_unit_rules(*sh->getIntermediate(), st.texts[i], st.sources[i].name, diags);
+            check_size_limits(*sh->getIntermediate(), st.sources[i].name, diags);
+        }
         ok = ok && parsed;
         st.shaders.push_back(std::move(sh));
     }

@@ -101,7 +101,7 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     : program_(program), gl_(gl), fb_(fb) {
     const Program::State& st = program.state();
     const ir::Shader& fs = st.ir.fragment;
-    interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), program.exec.max_loop_iterations,
+    interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), rt::RunLimits(program.exec),
                                                 gl.texture_units.data(), program.exec.precision, st.fast_ops);
     for (size_t i = 0; i < fs.inputs.size(); ++i) {
         const ir::Binding& b = fs.inputs[i];

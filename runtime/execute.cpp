@@ -172,7 +172,7 @@ Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& a
     std::vector<std::optional<Error>> errors(jobs);
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
-        rt::Interpreter interp(vs, st.uniforms.data(), program.exec.max_loop_iterations,
+        rt::Interpreter interp(vs, st.uniforms.data(), rt::RunLimits(program.exec),
                                current.texture_units.data(), program.exec.precision, st.fast_ops);
         for (size_t job; queue.next(&job);) {
             uint32_t begin = uint32_t(job) * kVertexJob, end = std::min(count, begin + kVertexJob);
@@ -190,6 +190,7 @@ namespace glslrun {
 
 Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
                                                uint32_t count, const GLState* gl) {
+    if (Status st = check_valid(program); !st) return st.error();
     exec::VertexOutputs shaded;
     if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded); !st)
         return st.error();
@@ -209,6 +210,7 @@ Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std
 
 Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
                                                 uint32_t count, const GLState* gl) {
+    if (Status valid = check_valid(program); !valid) return valid.error();
     const Program::State& st = program.state();
     const ir::Shader& fs = st.ir.fragment;
     const GLState defaults;
@@ -218,7 +220,7 @@ Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const st
     std::vector<ShaderOutput> outputs;
     for (const ir::Binding& b : fs.outputs) outputs.push_back({b.name, b.count, std::vector<float>(size_t(count) * b.count)});
     ShaderOutput discarded{"discarded", 1, std::vector<float>(count)};
-    rt::Interpreter interp(fs, st.uniforms.data(), program.exec.max_loop_iterations, state.texture_units.data(),
+    rt::Interpreter interp(fs, st.uniforms.data(), rt::RunLimits(program.exec), state.texture_units.data(),
                            program.exec.precision, st.fast_ops);
     for (uint32_t base = 0; base < count; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, count - base));

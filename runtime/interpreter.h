@@ -35,6 +35,16 @@ enum FastOps : uint32_t {
     kAllFastOps = (1u << 4) - 1,
 };
 
+// The work one run() may do before it fails with a RunError (ExecOptions).
+struct RunLimits {
+    uint64_t max_loop_iterations = ExecOptions{}.max_loop_iterations;
+    uint64_t max_instructions = ExecOptions{}.max_instructions;
+    const std::atomic<bool>* cancel = nullptr;
+    RunLimits(uint64_t loop_iterations) : max_loop_iterations(loop_iterations) {}  // the tests' loop cap alone
+    explicit RunLimits(const ExecOptions& o)
+        : max_loop_iterations(o.max_loop_iterations), max_instructions(o.max_instructions), cancel(o.cancel) {}
+};
+
 struct RunError {
     std::string message;
     int line = 0;
@@ -53,7 +63,7 @@ public:
     // approximate kernels for a few ops; Reference runs double registers.
     // `fast_ops` (FastOps bits): the classes Fast approximates; the others
     // keep their Precise kernels.
-    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, const RunLimits& limits,
                 const GLState::TextureUnit* textures = nullptr, Precision precision = Precision::Precise,
                 uint32_t fast_ops = kAllFastOps);
     ~Interpreter();
@@ -67,7 +77,7 @@ public:
     float* lanes_f(ir::Reg r) { return reinterpret_cast<float*>(lanes(r)); }
 
     // Runs the shader for the lanes in `live` (the others are left alone).
-    // Returns false, with *error set, if a loop ran past the iteration cap.
+    // Returns false, with *error set, if it ran past one of its RunLimits.
     bool run(LaneMask live, RunError* error);
 
     // After run(): the lanes that were live and did not discard.

@@ -1,6 +1,7 @@
 // Program::State: what a compiled Program owns. Shared by runtime/program.cpp,
 // runtime/gl_state.cpp, runtime/execute.cpp and raster/draw.cpp.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -23,6 +24,24 @@ struct Program::State {
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
     // them, except in the error report's ablation (scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
+    // Set while a draw or set_uniform runs (ProgramUse).
+    std::atomic<bool> busy{false};
 };
+
+// Claims a Program for one draw or uniform update. A moved-from Program, or
+// one that another thread is using, gives an Error instead of a data race.
+class ProgramUse {
+public:
+    explicit ProgramUse(Program& program);
+    ~ProgramUse();
+    ProgramUse(const ProgramUse&) = delete;
+    ProgramUse& operator=(const ProgramUse&) = delete;
+    const Status& status() const { return status_; }
+private:
+    Program::State* claimed_ = nullptr;
+    Status status_ = Ok{};
+};
+// The Error for a moved-from Program (the calls that only read it).
+Status check_valid(const Program& program);
 
 }  // namespace glslrun

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include <fmt/format.h>
@@ -147,6 +148,14 @@ Result<Image> read_png(const std::string& path) {
     png_uint_32 w = png_get_image_width(r.png, r.info), h = png_get_image_height(r.png, r.info);
     if (w == 0 || h == 0 || w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide))
         return Error(fmt::format("'{}' is {}x{}: images must be 1..{} pixels per side", path, w, h, kMaxImageSide));
+    // zlib inflates at most ~1032:1, so a file far smaller than its rows'
+    // least compressed size is truncated: refused before the rows are allocated.
+    std::error_code ec;
+    uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+    uint64_t least_raw = uint64_t(h) * ((uint64_t(w) + 7) / 8 + 1);
+    if (!ec && least_raw / 1032 > file_bytes + 1024)
+        return Error(fmt::format("'{}' claims {}x{} pixels, more than its {} bytes can hold: it is truncated or corrupt",
+                                 path, w, h, file_bytes));
     if (!png_request_rgba8(r.png, r.info)) return png_failure(path, r);
     if (png_get_rowbytes(r.png, r.info) != size_t(w) * 4)
         return Error(fmt::format("'{}': libpng could not convert the image to RGBA8", path));

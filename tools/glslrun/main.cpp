@@ -19,6 +19,7 @@
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
 #include "render_command.h"
+#include "scene/text_file.h"
 
 namespace {
 
@@ -26,14 +27,6 @@ using namespace glslrun;
 namespace pg = glslrun::piglit;
 
 constexpr const char* kVersion = "glslrun 0.1 (GLSL 1.10/1.20 on the CPU)";
-
-std::optional<std::string> read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream buf;
-    buf << in.rdbuf();
-    return buf.str();
-}
 
 // --precision NAME, for rendering and for `glslrun test`; a bad name is a usage error.
 void add_precision_option(CLI::App& app, Precision& precision) {
@@ -60,8 +53,8 @@ struct TestOptions {
 int run_test_command(const TestOptions& o) {
     pg::Expectations expectations;
     if (!o.expect.empty()) {
-        auto text = read_text(o.expect);
-        if (!text) { fmt::print(stderr, "{}: cannot read the expectations file\n", o.expect); return 2; }
+        auto text = scene::read_text_file(o.expect, "the expectations file");
+        if (!text) { fmt::print(stderr, "{}", text.error().str()); return 2; }
         auto parsed = pg::parse_expectations(*text);
         if (!pg::parsed_ok(parsed)) {
             fmt::print(stderr, "{}: {}\n", o.expect, std::get<pg::ParseError>(parsed).str());
@@ -134,7 +127,8 @@ int program_cli(int argc, char** argv) {
     app.add_option("files", files,
                    "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
                    "pass-through one is used)");
-    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png)");
+    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png)")
+        ->check([](const std::string& path) { return path.empty() ? std::string("the path is empty") : std::string(); });
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");

@@ -17,6 +17,7 @@
 #include "scene/bench_report.h"
 #include "scene/image_compare.h"
 #include "scene/render.h"
+#include "scene/text_file.h"
 
 namespace glslrun::cli {
 namespace {
@@ -30,14 +31,6 @@ int fail(const Error& e) {
     std::string text = e.str();
     std::fputs(text.c_str(), stderr);
     return 1;
-}
-
-std::optional<std::string> read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream buf;
-    buf << in.rdbuf();
-    return buf.str();
 }
 
 // The files on the command line, sorted by their extensions.
@@ -60,8 +53,8 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
         } else if (!shader) {
             return Error("unknown kind of file: shaders end in .vert or .frag, scenes in .toml", path);
         } else {
-            auto text = read_text(path);
-            if (!text) return Error("cannot read the file", path);
+            auto text = scene::read_text_file(path, "shader");
+            if (!text) return text.error();
             bool vertex = ext == ".vert" || ext == ".vs";
             (vertex ? in.vertex : in.fragment).push_back({path, *text});
         }
@@ -230,7 +223,8 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
     // Allocated before the compile, so that its page faults (2.7 ms at
     // 512x512, perf) overlap the warm-up too.
-    Framebuffer fb(scene->width, scene->height);
+    auto fb = Framebuffer::create(scene->width, scene->height);
+    if (!fb) return fail(fb.error());
     // The clock starts before the wait: what is left of building glslang's
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
@@ -242,21 +236,22 @@ int render(const Inputs& in, const RenderOptions& o) {
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();
-    auto stats = scene::render_scene(*prog, *scene, fb);
+    auto stats = scene::render_scene(*prog, *scene, *fb);
     if (!stats) return fail(stats.error());
     scene::BenchReport bench = bench_header(*scene, o, *stats, compile_ms, ms_since(start));
     if (o.bench_frames > 0)
-        if (Status st = bench_frames(*prog, *scene, fb, o.bench_frames, bench); !st) return fail(st.error());
+        if (Status st = bench_frames(*prog, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
-    std::string output = o.output.empty() ? default_output(in) : o.output;
-    if (Status st = write_png(fb, output); !st) return fail(st.error());
+    // --dump-ir alone prints the IR: it writes no image unless -o asks for one.
+    if (!o.output.empty() || !o.dump_ir)
+        if (Status st = write_png(*fb, o.output.empty() ? default_output(in) : o.output); !st) return fail(st.error());
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
     if (o.bench_frames > 0) {
         bench.once_s = {{"output", output_ms / 1e3}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);
     }
-    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(fb), o);
+    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(*fb), o);
     return 0;
 }
 
