@@ -124,6 +124,7 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
         program_.emplace(std::move(prog.value()));
         if (options_.max_loop_iterations) program_->exec.max_loop_iterations = options_.max_loop_iterations;
         program_->exec.precision = options_.precision;
+        program_->exec.cancel = options_.cancel;
         return std::nullopt;
     }
     // Program::compile compiles and links; piglit fails on a compile error but

@@ -14,6 +14,9 @@ struct RunOptions {
     uint64_t max_loop_iterations = 0;  // 0: the library's default
     Precision precision = Precision::Precise;
     Capabilities caps;
+    // When it becomes true, a running draw stops (ExecOptions::cancel): the
+    // wall-clock limit of `glslrun test --no-isolate`.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // Dispatches on the extension; never throws for bad input (it becomes a fail).

@@ -27,10 +27,12 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-int fail(const Error& e) {
+constexpr int kToolError = 2;
+
+int fail(const Error& e, int status = 1) {
     std::string text = e.str();
     std::fputs(text.c_str(), stderr);
-    return 1;
+    return status;
 }
 
 // The files on the command line, sorted by their extensions.
@@ -123,19 +125,21 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     fmt::print("textures     {}\n", describe_textures(scene));
 }
 
+// Exit status 0: the images agree within the thresholds; 1: they differ
+// (in size too); 2: a file could not be read or written.
 int compare_with(const scene::Image& actual, const RenderOptions& o) {
     auto reference = scene::read_png(o.compare);
-    if (!reference) return fail(reference.error());
+    if (!reference) return fail(reference.error(), kToolError);
     scene::CompareOptions options;
     options.tolerance = o.tolerance;
-    options.min_fraction_within = 1.0;  // the exit status says whether any pixel is off by more
+    options.min_fraction_within = o.min_fraction;
     auto stats = scene::compare_images(*reference, actual, options);
     if (!stats) return fail(stats.error());
     fmt::print("{}\n", stats->summary());
     if (!o.diff.empty()) {
         auto diff = scene::diff_image(*reference, actual, o.tolerance);
-        if (!diff) return fail(diff.error());
-        if (Status st = scene::write_png(*diff, o.diff); !st) return fail(st.error());
+        if (!diff) return fail(diff.error(), kToolError);
+        if (Status st = scene::write_png(*diff, o.diff); !st) return fail(st.error(), kToolError);
     }
     return stats->passed ? 0 : 1;
 }
@@ -265,7 +269,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
         if (o.compare.empty() || has_shaders || !in->scene.empty() || o.bench_frames > 0)
             return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image));
         auto image = scene::read_png(in->image);
-        if (!image) return fail(image.error());
+        if (!image) return fail(image.error(), kToolError);
         return compare_with(*image, o);
     }
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));
