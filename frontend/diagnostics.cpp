@@ -111,6 +111,9 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
             last_kept = false;
             if (token.empty() && text == "compilation terminated") continue;
             std::string message = token.empty() ? text : fmt::format("'{}' : {}", token, text);
+            // Bison's message when glslang's parser stack overflows.
+            if (text == "memory exhausted")
+                message = "expressions or blocks nest too deeply for the parser (glslang: memory exhausted)";
             std::string file = resolve_name(l->file, sources);
             // Later errors on a line that already has one are cascades of
             // the first (glslang recovers by inventing a declaration).

@@ -14,6 +14,7 @@
 
 #include "frontend/compile.h"
 #include "frontend/diagnostic_hints.h"
+#include "frontend/deep_stack.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
 #include "frontend/link.h"
@@ -206,10 +207,17 @@ const char* kFixedFunctionVertex =
     "}\n";
 const char* kFixedFunctionFragment = "void main() { gl_FragColor = gl_Color; }\n";
 
-}  // namespace
+Status check_source_sizes(const std::vector<ShaderSource>& sources) {
+    size_t bytes = 0;
+    for (const ShaderSource& s : sources) bytes += s.text.size();
+    if (bytes <= kMaxSourceBytes) return Ok{};
+    return Error(fmt::format("the shader's sources are {} bytes; glslrun's limit is {} KiB per stage", bytes,
+                             kMaxSourceBytes >> 10),
+                 sources.empty() ? std::string() : sources[0].name);
+}
 
-Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
-                                    const CompileOptions& options) {
+Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+                                 const CompileOptions& options) {
     init_glslang();
     if (vs.empty() && fs.empty()) return Error("no shaders to link");
     PoolScope pool;
@@ -245,7 +253,7 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
     return program;
 }
 
-Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
+Status check_here(Stage stage, const ShaderSource& source, int default_version) {
     init_glslang();
     PoolScope pool;
     std::vector<Diagnostic> diags;
@@ -253,6 +261,24 @@ Status check_shader(Stage stage, const ShaderSource& source, int default_version
     bool ok = parse_units(st, default_version, diags);
     if (!ok || has_errors(diags)) return to_error(std::move(diags));
     return Ok{};
+}
+
+}  // namespace
+
+Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+                                    const CompileOptions& options) {
+    for (const auto* stage : {&vs, &fs})
+        if (Status st = check_source_sizes(*stage); !st) return st.error();
+    Result<ir::Program> out = Error("not compiled");
+    run_on_deep_stack([&] { out = compile_here(vs, fs, options); });
+    return out;
+}
+
+Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
+    if (Status st = check_source_sizes({source}); !st) return st;
+    Status out = Ok{};
+    run_on_deep_stack([&] { out = check_here(stage, source, default_version); });
+    return out;
 }
 
 }  // namespace glslrun::frontend

@@ -38,3 +38,19 @@ TEST_CASE("hardening: #line with a negative number gives the file without a line
     CHECK(e.find("t.frag: error:") != std::string::npos);
     CHECK(e.find(":-") == std::string::npos);
 }
+
+TEST_CASE("hardening: x+x+...+x nested 100000 deep compiles on the compile thread's deep stack") {
+    // glslang's traversals recurse once per `+`: 8 MB of stack overflowed at ~50000.
+    std::string sum = "x";
+    for (int i = 0; i < 100000; ++i) sum += "+x";
+    compile_ok(kPassVs, "uniform float x; void main() { gl_FragColor = vec4(" + sum + "); }\n");
+}
+
+TEST_CASE("hardening: the parser's depth limit and the source size limit are clear errors") {
+    std::string deep = "void main() { float x = 1.0; x = " + std::string(20000, '(') + "x" + std::string(20000, ')') +
+                       "; gl_FragColor = vec4(x); }\n";
+    CHECK_THAT(compile_error(kPassVs, deep), Catch::Contains("nest too deeply for the parser"));
+    std::string huge = "void main() { gl_FragColor = vec4(1.0); }\n" + std::string(2 << 20, ' ');
+    CHECK_THAT(compile_error(kPassVs, huge), Catch::Contains("glslrun's limit is 1024 KiB per stage"));
+    CHECK_FALSE(check_shader(Stage::Fragment, {"t.frag", huge}).ok());
+}
