@@ -253,6 +253,13 @@ int program_cli(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
-    return program_cli(argc, argv);
+    // Sizes are checked before allocating (docs/limits.md); what is left is a
+    // machine with less memory than the limits assume: a message, not an abort.
+    try {
+        if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+        return program_cli(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fputs("glslrun: error: out of memory\n", stderr);
+        return 2;
+    }
 }
