@@ -13,8 +13,8 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/compile.h"
-#include "frontend/diagnostic_hints.h"
 #include "frontend/deep_stack.h"
+#include "frontend/diagnostic_hints.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
 #include "frontend/link.h"
@@ -162,7 +162,8 @@ void check_global_initializers(const StageUnits& st, std::vector<Diagnostic>& di
     }
     for (const auto& [name, keys] : inits) {
         if (keys.size() < 2) continue;
-        bool same = std::all_of(keys.begin(), keys.end(), [&](const std::string& k) { return !k.empty() && k == keys[0]; });
+        const std::string& first = keys[0];  // clang 14 cannot capture a structured binding
+        bool same = std::all_of(keys.begin(), keys.end(), [&first](const std::string& k) { return !k.empty() && k == first; });
         if (!same)
             diags.push_back(Diagnostic{st.first_file(), 0,
                                        fmt::format("global variable '{}' has different or non-constant initializers "
@@ -180,8 +181,9 @@ bool has_errors(const std::vector<Diagnostic>& diags) {
 
 Error to_error(std::vector<Diagnostic> diags) {
     Error e;
+    std::set<std::string> printed;  // one line once: the same file given twice reports the same errors
     for (Diagnostic& d : diags)
-        if (!d.warning) e.diagnostics.push_back(std::move(d));
+        if (!d.warning && printed.insert(d.str()).second) e.diagnostics.push_back(std::move(d));
     if (e.diagnostics.empty()) e.diagnostics.push_back(Diagnostic{{}, 0, "compilation failed", false});
     return e;
 }

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
           libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev)
-[ "$mode" = test ] && packages+=(piglit python3)  # python3: ctest extremes_generated
+[ "$mode" = test ] && packages+=(piglit python3 clang)  # python3: ctest extremes_generated; clang: fuzzers
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -30,6 +30,9 @@ demo)
 test)
     (cd build && ctest --output-on-failure -j "$(nproc)")
     GLSLRUN=build/glslrun bash tools/piglit_suite.sh
+    # ASan + UBSan on the tests of the library's inputs and the piglit suite;
+    # each fuzzer's short run (docs/ci.md).
+    bash tools/sanitize_and_fuzz.sh 20
     # Images must not depend on the interpreter's batch width: build glslrun
     # with 8 and 64 lanes and compare every scene image in every mode.
     bash tools/image_hashes.sh build/glslrun > build/hashes-16.txt
