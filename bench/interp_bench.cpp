@@ -26,7 +26,7 @@ std::string read_file(const std::string& path) {
     return ss.str();
 }
 
-// The spot scene of shared/notes/scenes.md, in eye space.
+// The spot scene (scenes/spot.toml), in eye space.
 glslrun::GLState spot_scene() {
     glslrun::GLState gl;
     auto& light = gl.lights[0];
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s", st.error().str().c_str());
         return 1;
     }
-    const auto& fs = prog->ir().fragment;
+    const auto& fs = state_of(*prog).ir.fragment;
     namespace rt = glslrun::rt;
     glslrun::Precision precision = glslrun::Precision::Precise;
     if (argc > 2) {
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
         }
         precision = *parsed;
     }
-    rt::Interpreter interp(fs, prog->state().uniforms.data(), 1u << 20, nullptr, precision);
+    rt::Interpreter interp(fs, state_of(*prog).uniforms.data(), 1u << 20, nullptr, precision);
     const auto* normal = find_input(fs, "normal");
     const auto* ec_pos = find_input(fs, "ecPos");
     if (!normal || !ec_pos) {

@@ -1,6 +1,6 @@
 // glslrun against Mesa, in the same run: the lecture's per-pixel spot light
 // (shaders/pos_pix.vert + spot_pix_fixed.frag) on a quad that covers the
-// whole W x H framebuffer, with the spot scene of shared/notes/scenes.md.
+// whole W x H framebuffer, with the spot scene of scenes/spot.toml.
 //
 // glslrun renders in this process. Each Mesa driver renders in a child (this
 // executable re-run with --child), because Mesa reads GALLIUM_DRIVER and

@@ -1,5 +1,6 @@
-// Rules glslang 12 accepts but GLSL 1.10/1.20 (as Mesa enforces them) do not;
-// see the "too lenient" list in shared/notes/piglit.md.
+// Rules glslang 12 accepts but GLSL 1.10/1.20 (as Mesa enforces them) do not,
+// each found by a piglit compiler test that must fail to compile
+// (tests/frontend/unit_checks_test.cpp tests them).
 #include "frontend/unit_checks.h"
 
 #include <map>

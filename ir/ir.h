@@ -163,8 +163,8 @@ struct Uniform {
 };
 
 // How one fragment-shader input is fed from the vertex shader's outputs.
-// `vs_output`/`vs_component` name the source (index into vertex.outputs, and
-// the first component within it). For gl_Color / gl_SecondaryColor the back
+// `vs_output` names the source, an index into vertex.outputs (a varying is
+// always a whole output). For gl_Color / gl_SecondaryColor the back
 // colour source is given too; the rasterizer picks one by facing when
 // two-sided colour is enabled.
 struct VaryingLink {

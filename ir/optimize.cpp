@@ -1,6 +1,6 @@
 // The pass pipeline: inline, then (fold, copyprop, dead_stores, dce) until nothing changes
 // (at most a few rounds), then fuse_mad, hoist, dce, sqrt_divisor and regalloc. With
-// GLSLRUN_VERIFY the verifier runs after every pass and its first complaint is
+// PassOptions::verify the verifier runs after every pass and its first complaint is
 // returned, naming the pass.
 #include <cstdint>
 #include <string>
@@ -13,14 +13,10 @@ namespace {
 constexpr int kMaxRounds = 3;
 
 // Returns "" or "after <pass>: <verifier message>".
-std::string check(const Shader& shader, const char* pass) {
-#ifdef GLSLRUN_VERIFY
+std::string check(const Shader& shader, const char* pass, bool enabled) {
+    if (!enabled) return {};
     std::string error = verify(shader);
     if (!error.empty()) return std::string("after ") + pass + ": " + error;
-#else
-    (void)shader;
-    (void)pass;
-#endif
     return {};
 }
 
@@ -57,33 +53,33 @@ uint64_t fingerprint(const Shader& shader) {
 }  // namespace
 
 std::string optimize(Shader& shader, const PassOptions& options) {
-    if (!options.optimize) return check(shader, "frontend");
-    std::string error = check(shader, "frontend");
+    if (!options.optimize) return check(shader, "frontend", options.verify);
+    std::string error = check(shader, "frontend", options.verify);
     if (!error.empty()) return error;
     inline_calls(shader, options.inline_budget);
-    if (!(error = check(shader, "inline")).empty()) return error;
+    if (!(error = check(shader, "inline", options.verify)).empty()) return error;
     for (int round = 0; round < kMaxRounds; ++round) {
         uint64_t before = fingerprint(shader);
         fold_constants(shader);
-        if (!(error = check(shader, "fold")).empty()) return error;
+        if (!(error = check(shader, "fold", options.verify)).empty()) return error;
         propagate_copies(shader);
-        if (!(error = check(shader, "copyprop")).empty()) return error;
+        if (!(error = check(shader, "copyprop", options.verify)).empty()) return error;
         eliminate_dead_stores(shader);
-        if (!(error = check(shader, "dead_stores")).empty()) return error;
+        if (!(error = check(shader, "dead_stores", options.verify)).empty()) return error;
         eliminate_dead_code(shader);
-        if (!(error = check(shader, "dce")).empty()) return error;
+        if (!(error = check(shader, "dce", options.verify)).empty()) return error;
         if (fingerprint(shader) == before) break;
     }
     fuse_multiply_add(shader);
-    if (!(error = check(shader, "fuse_mad")).empty()) return error;
+    if (!(error = check(shader, "fuse_mad", options.verify)).empty()) return error;
     hoist_uniform_code(shader);
-    if (!(error = check(shader, "hoist")).empty()) return error;
+    if (!(error = check(shader, "hoist", options.verify)).empty()) return error;
     eliminate_dead_code(shader);
-    if (!(error = check(shader, "dce")).empty()) return error;
+    if (!(error = check(shader, "dce", options.verify)).empty()) return error;
     mark_sqrt_divisors(shader);
-    if (!(error = check(shader, "sqrt_divisor")).empty()) return error;
+    if (!(error = check(shader, "sqrt_divisor", options.verify)).empty()) return error;
     allocate_registers(shader);
-    return check(shader, "regalloc");
+    return check(shader, "regalloc", options.verify);
 }
 
 }  // namespace glslrun::ir

@@ -1,5 +1,5 @@
 // The flat list of IR passes, one file each, named after the pass (QBE style).
-// optimize() runs them in order and, when GLSLRUN_VERIFY is on, the verifier
+// optimize() runs them in order and, with PassOptions::verify, the verifier
 // after every pass.
 #pragma once
 #include <string>
@@ -57,6 +57,7 @@ void mark_read_uniforms(Program& program);
 struct PassOptions {
     bool optimize = true;
     uint32_t inline_budget = 4000;
+    bool verify = false;  // the verifier after every pass (CompileOptions::verify_ir)
 };
 // Runs the pipeline; returns "" or the verifier's message naming the pass.
 std::string optimize(Shader& shader, const PassOptions& options);

@@ -1,4 +1,5 @@
-// The IR verifier. It runs after every pass in debug builds (GLSLRUN_VERIFY),
+// The IR verifier. It runs after every pass when CompileOptions::verify_ir or
+// the environment's GLSLRUN_VERIFY=1 asks for it (every ctest test sets it),
 // so a pass that breaks an invariant is named at once instead of showing up
 // later as a wrong pixel.
 #include <string>

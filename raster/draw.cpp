@@ -353,9 +353,9 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
         if (index >= vertex_count)
             return Error(fmt::format("index {} is out of range ({} vertices)", index, vertex_count));
     if (Status st = apply_builtin_uniforms(program, gl); !st) return st.error();
-    auto& scratch_ptr = program.state().draw_scratch;
+    auto& scratch_ptr = state_of(program).draw_scratch;
     if (!scratch_ptr) scratch_ptr = std::make_shared<DrawScratch>();
-    DrawScratch& scratch = *scratch_ptr;
+    DrawScratch& scratch = *static_cast<DrawScratch*>(scratch_ptr.get());
     DrawStats stats;
     using Clock = std::chrono::steady_clock;
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -365,7 +365,7 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     stats.vertex_seconds = seconds_since(start);
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
-    const ir::Shader& vs = program.state().ir.vertex;
+    const ir::Shader& vs = state_of(program).ir.vertex;
     glm::vec4 viewport;
     Rect scissor = scissor_rect(gl, fb, &viewport);
     if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;

@@ -99,7 +99,7 @@ void set_point_planes(FsPrimitive& prim) {
 
 FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb)
     : program_(program), gl_(gl), fb_(fb) {
-    const Program::State& st = program.state();
+    const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
     interp_ = std::make_unique<rt::Interpreter>(fs, st.uniforms.data(), rt::RunLimits(program.exec),
                                                 gl.texture_units.data(), program.exec.precision, st.fast_ops);
@@ -255,7 +255,7 @@ void FragmentStage::flush() {
     covered_ = 0;
     if (!ok) {
         quads_ = 0;
-        error_ = exec::run_error(program_.state(), ir::Stage::Fragment, run_error);
+        error_ = exec::run_error(state_of(program_), ir::Stage::Fragment, run_error);
         return;
     }
     write_outputs(covered);

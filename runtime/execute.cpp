@@ -160,7 +160,7 @@ std::optional<Error> shade_range(rt::Interpreter& interp, const Program::State& 
 // ExecOptions::threads workers.
 Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs, uint32_t count,
                       const GLState& current, VertexOutputs& out) {
-    const Program::State& st = program.state();
+    const Program::State& st = state_of(program);
     const ir::Shader& vs = st.ir.vertex;
     auto plan = plan_inputs(vs, attribs, count, current);
     if (!plan) return plan.error();
@@ -194,7 +194,7 @@ Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std
     exec::VertexOutputs shaded;
     if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded); !st)
         return st.error();
-    const ir::Shader& vs = program.state().ir.vertex;
+    const ir::Shader& vs = state_of(program).ir.vertex;
     std::vector<ShaderOutput> outputs;
     for (size_t o = 0; o < vs.outputs.size(); ++o) {
         ShaderOutput out{vs.outputs[o].name, vs.outputs[o].count, {}};
@@ -211,7 +211,7 @@ Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std
 Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
                                                 uint32_t count, const GLState* gl) {
     if (Status valid = check_valid(program); !valid) return valid.error();
-    const Program::State& st = program.state();
+    const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
     const GLState defaults;
     const GLState& state = gl ? *gl : defaults;

@@ -1,17 +1,14 @@
 // Program: compile (frontend + IR passes), the uniform store with glUniform
 // semantics, and introspection.
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 #include <fmt/format.h>
 
 #include "ir/passes.h"
-#include "runtime/program_state.h"
-
-#if __has_include("frontend/compile.h")
 #include "frontend/compile.h"
-#define GLSLRUN_HAVE_FRONTEND 1
-#endif
+#include "runtime/program_state.h"
 
 namespace glslrun {
 
@@ -27,12 +24,12 @@ Status check_valid(const Program& program) {
 
 ProgramUse::ProgramUse(Program& program) {
     if (status_ = check_valid(program); !status_) return;
-    if (program.state().busy.exchange(true, std::memory_order_acquire)) {
+    if (state_of(program).busy.exchange(true, std::memory_order_acquire)) {
         status_ = Error("the Program is in use on another thread: a Program draws and takes uniforms on one thread "
                         "at a time");
         return;
     }
-    claimed_ = &program.state();
+    claimed_ = &state_of(program);
 }
 
 ProgramUse::~ProgramUse() {
@@ -40,6 +37,13 @@ ProgramUse::~ProgramUse() {
 }
 
 namespace {
+
+// CompileOptions::verify_ir, or GLSLRUN_VERIFY=1 (anything but empty or "0").
+bool verify_requested(const CompileOptions& options) {
+    if (options.verify_ir) return true;
+    const char* env = std::getenv("GLSLRUN_VERIFY");
+    return env && *env && std::string_view(env) != "0";
+}
 
 // GL's default is 0, except for GLSL 1.20 uniform initializers.
 void initialise_uniforms(const ir::Program& ir, std::vector<uint32_t>& store) {
@@ -53,13 +57,12 @@ void initialise_uniforms(const ir::Program& ir, std::vector<uint32_t>& store) {
 Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
                                  const std::vector<ShaderSource>& fragment,
                                  const CompileOptions& options) {
-#ifdef GLSLRUN_HAVE_FRONTEND
     Result<ir::Program> lowered = frontend::compile_program(vertex, fragment, options);
     if (!lowered) return lowered.error();
     Program program;
     State& st = *program.state_;
     st.ir = std::move(lowered.value());
-    ir::PassOptions passes{options.optimize, options.inline_budget};
+    ir::PassOptions passes{options.optimize, options.inline_budget, verify_requested(options)};
     for (ir::Shader* shader : {&st.ir.vertex, &st.ir.fragment}) {
         std::string problem = ir::optimize(*shader, passes);
         if (!problem.empty()) return Error("internal error: " + problem);
@@ -69,9 +72,6 @@ Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
     if (!vertex.empty()) st.vertex_name = vertex.front().name;
     if (!fragment.empty()) st.fragment_name = fragment.front().name;
     return program;
-#else
-    return Error("internal error: glslrun was built without a frontend");
-#endif
 }
 
 namespace {
@@ -165,10 +165,5 @@ std::vector<UniformInfo> Program::uniforms() const {
 }
 
 std::string Program::dump_ir() const { return valid() ? ir::print(state_->ir) : std::string(); }
-
-const ir::Program& Program::ir() const {
-    static const ir::Program kNone;  // a moved-from Program's: no shaders, no uniforms
-    return valid() ? state_->ir : kNone;
-}
 
 }  // namespace glslrun

@@ -1,5 +1,6 @@
-// Program::State: what a compiled Program owns. Shared by runtime/program.cpp,
-// runtime/gl_state.cpp, runtime/execute.cpp and raster/draw.cpp.
+// Program::State: what a compiled Program owns, and state_of(), the way in for
+// glslrun's own code (the runtime, the rasterizer, the scene library's error
+// report, the tools, tests and benchmarks). Not a public header.
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -11,22 +12,24 @@
 #include "ir/ir.h"
 
 namespace glslrun {
-namespace raster { struct DrawScratch; }
 
 struct Program::State {
     ir::Program ir;
     std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
     std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
-    // draw()'s working memory, reused by the next draw (raster/scratch.h);
-    // made at the first draw. shared_ptr: its deleter works with the type
-    // incomplete here.
-    std::shared_ptr<raster::DrawScratch> draw_scratch;
+    // draw()'s working memory, reused by the next draw: a raster::DrawScratch
+    // (raster/scratch.h) made at the first draw. The runtime does not know the
+    // rasterizer's types; shared_ptr<void> still deletes it as what it is.
+    std::shared_ptr<void> draw_scratch;
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
     // them, except in the error report's ablation (scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
     // Set while a draw or set_uniform runs (ProgramUse).
     std::atomic<bool> busy{false};
 };
+
+inline Program::State& state_of(Program& program) { return *program.state_; }
+inline const Program::State& state_of(const Program& program) { return *program.state_; }
 
 // Claims a Program for one draw or uniform update. A moved-from Program, or
 // one that another thread is using, gives an Error instead of a data race.

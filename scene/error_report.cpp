@@ -1,7 +1,7 @@
 // The measuring half of the error report: two renders of one scene into float
 // framebuffers, the vertex outputs of both modes, and their comparison.
 // Formatting and files: error_report_format.cpp.
-#include "scene/error_report.h"
+#include "glslrun/scene/error_report.h"
 
 #include <bit>
 #include <chrono>
@@ -13,7 +13,7 @@
 #include "raster/framebuffer.h"
 #include "runtime/interpreter.h"
 #include "runtime/program_state.h"
-#include "scene/render.h"
+#include "glslrun/scene/render.h"
 
 namespace glslrun::scene {
 
@@ -135,7 +135,7 @@ std::string fragment_outputs(const Program& prog, const Scene& scene, bool& writ
                              std::vector<std::string>& notes) {
     std::string color, unstored;
     writes_depth = false;
-    for (const ir::Binding& b : prog.ir().fragment.outputs) {
+    for (const ir::Binding& b : state_of(prog).ir.fragment.outputs) {
         if (is_color_output(b.name) && color.empty()) color = b.name;
         else if (b.name == "gl_FragDepth") writes_depth = true;
         else unstored += (unstored.empty() ? "" : ", ") + b.name;
@@ -160,19 +160,19 @@ Result<std::vector<AblationRow>> ablate(Program& fast, const Scene& scene, const
         {"none", 0}, {"inversesqrt", rt::kFastRsqrt}, {"exp_log", rt::kFastExpLog}, {"pow", rt::kFastPow},
         {"sin_cos", rt::kFastSinCos}};
     std::vector<AblationRow> rows;
-    uint32_t saved = fast.state().fast_ops;
+    uint32_t saved = state_of(fast).fast_ops;
     for (const auto& [name, ops] : kClasses) {
-        fast.state().fast_ops = ops;
+        state_of(fast).fast_ops = ops;
         auto frame = render_frame(fast, scene);
         if (!frame) {
-            fast.state().fast_ops = saved;
+            state_of(fast).fast_ops = saved;
             return frame.error();
         }
         auto e = compare_float_images(all_fast.name, reference, frame->color, /*quantized=*/true);
         if (!e) return e.error();
         rows.push_back(ablation_row(name, *e));
     }
-    fast.state().fast_ops = saved;
+    state_of(fast).fast_ops = saved;
     rows.push_back(ablation_row("all", all_fast));
     return rows;
 }

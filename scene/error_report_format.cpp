@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "scene/error_report.h"
+#include "glslrun/scene/error_report.h"
 
 namespace glslrun::scene {
 

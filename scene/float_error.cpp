@@ -1,4 +1,4 @@
-#include "scene/float_error.h"
+#include "glslrun/scene/float_error.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,94 +1,18 @@
-#include "scene/image_compare.h"
+#include "glslrun/scene/image_compare.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <memory>
+#include <utility>
 
 #include <fmt/format.h>
-#include <png.h>
 
 #include "raster/framebuffer.h"
-#include "scene/scene.h"
+#include "raster/png.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::scene {
 
 namespace {
-
-// ------------------------------------------------------------ reading ---
-struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
-// libpng reports errors by calling this and expecting it not to return; the
-// message is kept for our Error.
-struct PngErrorSink {
-    char message[256] = {};
-};
-
-void on_png_error(png_structp png, png_const_charp msg) {
-    auto* sink = static_cast<PngErrorSink*>(png_get_error_ptr(png));
-    std::snprintf(sink->message, sizeof sink->message, "%s", msg);
-    png_longjmp(png, 1);
-}
-
-// Warnings concern ancillary chunks (bad gamma, text); the pixels are fine.
-void on_png_warning(png_structp, png_const_charp) {}
-
-// Owns libpng's read structures so that every exit path frees them.
-struct PngReader {
-    PngErrorSink sink;
-    png_structp png = nullptr;
-    png_infop info = nullptr;
-    PngReader() {
-        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &sink, on_png_error, on_png_warning);
-        if (png) info = png_create_info_struct(png);
-    }
-    ~PngReader() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
-    PngReader(const PngReader&) = delete;
-    PngReader& operator=(const PngReader&) = delete;
-};
-
-// The three steps below each set their own longjmp target and create nothing
-// with a destructor after it: a libpng error unwinds no C++ object.
-bool png_read_header(png_structp png, png_infop info, std::FILE* file) {
-    if (setjmp(png_jmpbuf(png))) return false;
-    png_init_io(png, file);
-    png_read_info(png, info);
-    return true;
-}
-
-// Whatever the file's format, libpng hands out RGBA8 rows; no gamma
-// transform is requested, so 8-bit values come back exactly as stored.
-bool png_request_rgba8(png_structp png, png_infop info) {
-    if (setjmp(png_jmpbuf(png))) return false;
-    png_byte color = png_get_color_type(png, info);
-    png_byte depth = png_get_bit_depth(png, info);
-    bool has_trns = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
-    if (color == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-    if (color == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
-    if (has_trns) png_set_tRNS_to_alpha(png);
-    if (depth == 16) png_set_scale_16(png);  // rounds, where strip_16 would truncate
-    if (color == PNG_COLOR_TYPE_GRAY || color == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
-    if (!(color & PNG_COLOR_MASK_ALPHA) && !has_trns) png_set_filler(png, 0xff, PNG_FILLER_AFTER);
-    png_set_interlace_handling(png);
-    png_read_update_info(png, info);
-    return true;
-}
-
-bool png_read_rows(png_structp png, png_bytep* rows) {
-    if (setjmp(png_jmpbuf(png))) return false;
-    png_read_image(png, rows);
-    png_read_end(png, nullptr);
-    return true;
-}
-
-Error png_failure(const std::string& path, const PngReader& r) {
-    return Error(fmt::format("cannot read '{}' as PNG: {}", path, r.sink.message[0] ? r.sink.message : "libpng failed"));
-}
 
 // ------------------------------------------------------------- diffing ---
 int channel_diff(const uint8_t* a, const uint8_t* b, int c) { return std::abs(int(a[c]) - int(b[c])); }
@@ -140,52 +64,23 @@ int accumulate(CompareStats& s, std::array<uint64_t, 4>& sums, const uint8_t* re
 
 // ----------------------------------------------------------- public API ---
 Result<Image> read_png(const std::string& path) {
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) return Error(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
-    PngReader r;
-    if (!r.info) return Error("libpng: out of memory");
-    if (!png_read_header(r.png, r.info, file.get())) return png_failure(path, r);
-    png_uint_32 w = png_get_image_width(r.png, r.info), h = png_get_image_height(r.png, r.info);
-    if (w == 0 || h == 0 || w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide))
-        return Error(fmt::format("'{}' is {}x{}: images must be 1..{} pixels per side", path, w, h, kMaxImageSide));
-    // zlib inflates at most ~1032:1, so a file far smaller than its rows'
-    // least compressed size is truncated: refused before the rows are allocated.
-    std::error_code ec;
-    uintmax_t file_bytes = std::filesystem::file_size(path, ec);
-    uint64_t least_raw = uint64_t(h) * ((uint64_t(w) + 7) / 8 + 1);
-    if (!ec && least_raw / 1032 > file_bytes + 1024)
-        return Error(fmt::format("'{}' claims {}x{} pixels, more than its {} bytes can hold: it is truncated or corrupt",
-                                 path, w, h, file_bytes));
-    if (!png_request_rgba8(r.png, r.info)) return png_failure(path, r);
-    if (png_get_rowbytes(r.png, r.info) != size_t(w) * 4)
-        return Error(fmt::format("'{}': libpng could not convert the image to RGBA8", path));
-    Image image{int(w), int(h), std::vector<uint8_t>(size_t(w) * h * 4)};
-    std::vector<png_bytep> rows(h);
-    for (png_uint_32 y = 0; y < h; ++y) rows[y] = &image.rgba[size_t(y) * w * 4];
-    if (!png_read_rows(r.png, rows.data())) return png_failure(path, r);
-    return image;
+    auto read = png::read_rgba8(path, kMaxImageSide);
+    if (!read) return read.error();
+    return Image{read->width, read->height, std::move(read->rgba)};
 }
 
 Status write_png(const Image& image, const std::string& path) {
     if (Status st = check_image(image, "output"); !st) return st;
-    // glslrun::write_png stores n/255 back as exactly n, so reusing it is lossless.
-    Framebuffer fb(image.width, image.height);
-    for (int y = 0; y < image.height; ++y) {
-        const uint8_t* src = image.pixel(0, image.height - 1 - y);
-        float* dst = &fb.color[size_t(y) * size_t(image.width) * 4];
-        for (size_t i = 0; i < size_t(image.width) * 4; ++i) dst[i] = float(src[i]) / 255.0f;
-    }
-    return glslrun::write_png(fb, path);
+    return png::write_rgba8(path, image.width, image.height, [&](int y, uint8_t* dst) {
+        std::copy_n(image.pixel(0, y), size_t(image.width) * 4, dst);
+    });
 }
 
 Image read_framebuffer(const Framebuffer& fb) {
     Image image{fb.width, fb.height, std::vector<uint8_t>(size_t(fb.width) * size_t(fb.height) * 4)};
     for (int y = 0; y < fb.height; ++y) {
-        const float* src = &fb.color[size_t(fb.height - 1 - y) * size_t(fb.width) * 4];
-        uint8_t* dst = &image.rgba[size_t(y) * size_t(fb.width) * 4];
-        // The same expression as raster/png.cpp's, so both agree byte for byte.
-        for (size_t i = 0; i < size_t(fb.width) * 4; ++i)
-            dst[i] = uint8_t(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
+        // The bytes glslrun::write_png stores.
+        png::framebuffer_row(fb, fb.height - 1 - y, &image.rgba[size_t(y) * size_t(fb.width) * 4]);
     }
     return image;
 }

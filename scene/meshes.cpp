@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 #include "scene/trig.h"
 
 namespace glslrun::scene {

@@ -25,7 +25,7 @@
 #include <glm/glm.hpp>
 #include <tiny_obj_loader.h>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 #include "scene/text_file.h"
 
 namespace glslrun::scene {

@@ -1,9 +1,11 @@
-#include "scene/render.h"
+#include "glslrun/scene/render.h"
 
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
+
+#include "scene/text_file.h"
 
 namespace glslrun::scene {
 
@@ -130,6 +132,43 @@ Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Frame
 
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {
     return draw_scene_objects(program, scene, fb, ClearValues{scene.clear_color, scene.clear_depth});
+}
+
+Result<Image> render_image(Program& program, const Scene& scene) {
+    auto fb = Framebuffer::create(scene.width, scene.height);
+    if (!fb) return fb.error();
+    auto stats = render_scene(program, scene, *fb);
+    if (!stats) return stats.error();
+    return read_framebuffer(*fb);
+}
+
+Result<std::vector<ShaderSource>> read_shader_files(const std::vector<std::string>& paths) {
+    std::vector<ShaderSource> sources;
+    for (const std::string& path : paths) {
+        auto text = read_text_file(path, "shader");
+        if (!text) return text.error();
+        sources.push_back({path, std::move(*text)});
+    }
+    return sources;
+}
+
+Result<Program> compile_files(const std::vector<std::string>& vertex_paths,
+                              const std::vector<std::string>& fragment_paths, const CompileOptions& options) {
+    auto vertex = read_shader_files(vertex_paths);
+    if (!vertex) return vertex.error();
+    auto fragment = read_shader_files(fragment_paths);
+    if (!fragment) return fragment.error();
+    return Program::compile(*vertex, *fragment, options);
+}
+
+Result<Image> render_files(const std::string& vertex_path, const std::string& fragment_path,
+                           const std::string& scene_path, const ExecOptions& exec) {
+    auto scene = load_scene(scene_path);
+    if (!scene) return scene.error();
+    auto program = compile_files({vertex_path}, {fragment_path});
+    if (!program) return program.error();
+    program->exec = exec;
+    return render_image(*program, *scene);
 }
 
 }  // namespace glslrun::scene

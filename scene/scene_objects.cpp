@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 #include "scene/scene_reader.h"
 
 namespace glslrun::scene::detail {

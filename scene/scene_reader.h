@@ -15,7 +15,7 @@
 #include <glm/glm.hpp>
 #include <toml++/toml.h>
 
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::scene::detail {
 

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "scene/scene_reader.h"
-#include "scene/texture_images.h"
+#include "glslrun/scene/texture_images.h"
 
 namespace glslrun::scene::detail {
 

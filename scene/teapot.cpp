@@ -1,7 +1,8 @@
-// The teapot of notes/scenes.md: freeglut 3.x's glutSolidTeapot geometry at
-// any density. Every detail below (patch order, the (u, v) roles, the vertex
-// numbering, the normal's cross product, the triangle split) is fixed by the
-// note, because the reference images were made from these exact arrays.
+// The lecture's teapot (mesh = "teapot", docs/scene-format.md): freeglut 3.x's
+// glutSolidTeapot geometry at any density. Every detail below (patch order,
+// the (u, v) roles, the vertex numbering, the normal's cross product, the
+// triangle split) is fixed, because the reference images were made from
+// these exact arrays (tests/scene/meshes_test.cpp checks them).
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -9,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 
 namespace glslrun::scene {
 

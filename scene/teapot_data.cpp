@@ -7,8 +7,8 @@
 // and 222 (the knob tip nudged by 0.002) are unused, as in the original: the
 // lid's first row collapses onto point 203 instead.
 //
-// Each patch row (4 indices) is one u = const control row; notes/scenes.md
-// and teapot.cpp rely on that ordering for the normals' orientation.
+// Each patch row (4 indices) is one u = const control row; teapot.cpp relies
+// on that ordering for the normals' orientation.
 
 namespace glslrun::scene::teapot_data {
 

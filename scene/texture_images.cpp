@@ -1,6 +1,6 @@
 // Texture images: files through stb_image (header-only from Debian's
 // libstb-dev, compiled here with PNG and JPEG only), and procedural patterns.
-#include "scene/texture_images.h"
+#include "glslrun/scene/texture_images.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Sets up a fresh Debian 12 machine (as root), builds glslrun, then either
+# Sets up a fresh Debian 12 machine (as root), builds glslrun, installs it
+# under /usr/local (the glslrun command, the C++ libraries with their CMake
+# and pkg-config files, the Python module), then either
 #   demo: renders the lecture's per-pixel spot-light teapot to spot.png, or
-#   test: runs every test (unit tests, example, piglit conformance suite).
+#   test: runs every test (unit tests, example, package, Python, piglit conformance suite).
 set -euo pipefail
 mode=${1:-demo}
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
-          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev)
-[ "$mode" = test ] && packages+=(piglit python3 clang)  # python3: ctest extremes_generated; clang: fuzzers
+          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev
+          python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest)  # the Python module
+[ "$mode" = test ] && packages+=(piglit clang)  # clang: the fuzzers (tools/sanitize_and_fuzz.sh)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -19,13 +22,16 @@ if [ ${#missing[@]} -gt 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+# Debian's Python packages (numpy, pybind11) belong to /usr/bin/python3.
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython3_EXECUTABLE=/usr/bin/python3 > /dev/null
 cmake --build build -j "$(nproc)"
+cmake --install build > /dev/null  # prefix /usr/local: glslrun is on PATH, `import glslrun` works
+ldconfig
 
 case "$mode" in
 demo)
-    ./build/glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png --stats
-    echo "wrote spot.png"
+    glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png --stats
+    echo "wrote spot.png with $(command -v glslrun)"
     ;;
 test)
     (cd build && ctest --output-on-failure -j "$(nproc)")

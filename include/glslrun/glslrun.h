@@ -2,7 +2,7 @@
 //
 //   auto prog = glslrun::Program::compile({{"a.vert", vs}}, {{"a.frag", fs}});
 //   if (!prog) { fmt::print("{}", prog.error().str()); return 1; }
-//   prog->set_uniform("tint", std::array{1.f, 0.f, 0.f, 1.f});
+//   prog->set_uniform("tint", glm::vec4(1, 0, 0, 1));
 //   glslrun::Framebuffer fb(256, 256);
 //   glslrun::GLState gl;                       // OpenGL's defaults
 //   auto st = glslrun::draw(*prog, gl, fb, glslrun::Primitive::Triangles, mesh);
@@ -15,16 +15,19 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "glslrun/version.h"
+
 namespace glslrun {
-namespace ir { struct Program; }
 
 // ---------------------------------------------------------------- errors ---
 struct Diagnostic {
@@ -43,20 +46,39 @@ struct Error {
     std::string str() const;  // one diagnostic per line
 };
 
+// What value() throws on a Result that holds an error: what() is
+// "glslrun: value() of a failed result:" and the error's diagnostics.
+class BadResultAccess : public std::logic_error {
+public:
+    explicit BadResultAccess(const Error& e)
+        : std::logic_error("glslrun: value() of a failed result:\n" + e.str()), error(e) {}
+    Error error;
+};
+
+// A value or an Error. Check it (ok(), or `if (result)`) before value(), *
+// or ->; those throw BadResultAccess on an error, error() throws
+// std::logic_error on a value.
 template <class T>
-class Result {
+class [[nodiscard]] Result {
 public:
     Result(T value) : v_(std::move(value)) {}
     Result(Error e) : v_(std::move(e)) {}
     bool ok() const { return v_.index() == 0; }
     explicit operator bool() const { return ok(); }
-    T& value() { return std::get<0>(v_); }
-    const T& value() const { return std::get<0>(v_); }
+    T& value() { check(); return std::get<0>(v_); }
+    const T& value() const { check(); return std::get<0>(v_); }
     T* operator->() { return &value(); }
     const T* operator->() const { return &value(); }
     T& operator*() { return value(); }
-    const Error& error() const { return std::get<1>(v_); }
+    const T& operator*() const { return value(); }
+    const Error& error() const {
+        if (ok()) throw std::logic_error("glslrun: error() of a successful result");
+        return std::get<1>(v_);
+    }
 private:
+    void check() const {
+        if (!ok()) throw BadResultAccess(std::get<1>(v_));
+    }
     std::variant<T, Error> v_;
 };
 
@@ -73,6 +95,10 @@ struct CompileOptions {
     int default_version = 110;   // for sources without #version
     bool optimize = true;        // fold, copy propagation, DCE
     uint32_t inline_budget = 4000;  // IR nodes a call site may add when inlined
+    // Checks the IR after every pass: a failure is an internal error naming
+    // the pass. For glslrun's own tests; GLSLRUN_VERIFY=1 in the environment
+    // switches it on too.
+    bool verify_ir = false;
 };
 
 // How shaders evaluate floating point (docs/precision.md).
@@ -113,7 +139,7 @@ Status check_shader(Stage stage, const ShaderSource& source, int default_version
 
 struct UniformInfo {
     std::string name;   // GL leaf name: "m", "lights[0].pos", "arr" (array_size > 1)
-    std::string type;   // GLSL type name: "vec3", "mat4", "sampler2D", ...
+    std::string type;   // GLSL type name: "float", "ivec2", "bvec3", "mat4", "mat2x3"; every sampler type is "sampler"
     uint32_t array_size = 1;
     bool builtin = false;
     bool read = true;  // the optimized program reads it (built-ins that are not read are not derived)
@@ -136,18 +162,41 @@ public:
     // Unknown names and type or size mismatches are errors.
     Status set_uniform(std::string_view name, std::span<const float> values);
     Status set_uniform(std::string_view name, std::span<const int32_t> values);
+    // One value: floating-point types set float (or bool) uniforms, integral
+    // types and bool set int, bool and sampler uniforms.
+    template <class T>
+        requires std::is_arithmetic_v<T>
+    Status set_uniform(std::string_view name, T value) {
+        if constexpr (std::is_floating_point_v<T>) {
+            float f = float(value);
+            return set_uniform(name, std::span<const float>(&f, 1));
+        } else {
+            int32_t i = int32_t(value);
+            return set_uniform(name, std::span<const int32_t>(&i, 1));
+        }
+    }
+    // glm vectors and matrices (column-major, as glUniformMatrix without transpose).
+    template <glm::length_t L, class T, glm::qualifier Q>
+        requires std::is_same_v<T, float> || std::is_same_v<T, int32_t>
+    Status set_uniform(std::string_view name, const glm::vec<L, T, Q>& v) {
+        return set_uniform(name, std::span<const T>(&v[0], size_t(L)));
+    }
+    template <glm::length_t C, glm::length_t R, glm::qualifier Q>
+    Status set_uniform(std::string_view name, const glm::mat<C, R, float, Q>& m) {
+        return set_uniform(name, std::span<const float>(&m[0][0], size_t(C) * size_t(R)));
+    }
     bool has_uniform(std::string_view name) const;
     std::vector<UniformInfo> uniforms() const;
 
     ExecOptions exec;
     std::string dump_ir() const;  // the IR printer's text for both stages
-    const ir::Program& ir() const;
 
-    struct State;  // uniform store and the IR, defined by the implementation
-    State& state() { return *state_; }
-    const State& state() const { return *state_; }
+    struct State;  // the IR and the uniform store: runtime/program_state.h
 private:
     Program();
+    // glslrun's own code reaches the State through runtime/program_state.h.
+    friend State& state_of(Program& program);
+    friend const State& state_of(const Program& program);
     std::unique_ptr<State> state_;
 };
 

@@ -262,7 +262,7 @@ TEST_CASE("discarded fragments are not written", "[api][draw]") {
 }
 
 TEST_CASE("the lecture's quad covers as many pixels as llvmpipe", "[api][draw][lecture]") {
-    // notes/scenes.md: gluPerspective(45, 1, 1, 100), gluLookAt(0,0,5, 0,0,0, 0,1,0),
+    // scenes/quad.toml: gluPerspective(45, 1, 1, 100), gluLookAt(0,0,5, 0,0,0, 0,1,0),
     // the quad (-1,-1)..(1,1) at z = 0 covers 61504 pixels at 512x512.
     Program p = compile("void main() { gl_FrontColor = gl_Color; gl_Position = ftransform(); }",
                         "void main() { gl_FragColor = gl_Color; }");

@@ -58,7 +58,7 @@ void check_vec(glm::vec4 got, glm::vec4 want, float eps = 1e-5f) {
     for (int i = 0; i < 4; ++i) CHECK(got[i] == Approx(want[i]).margin(eps));
 }
 
-// The lecture's material and light set-up (notes/scenes.md), directional scene.
+// The lecture's material and light set-up (scenes/directional.toml).
 GLState lecture_state() {
     GLState gl;
     gl.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -5));
@@ -147,7 +147,7 @@ TEST_CASE("lights, materials and products of the lecture scenes", "[api][glstate
     check_vec(vec(*outs, "prod"), {0.75f, 0.61f, 0.23f, 1.0f});
     check_vec(vec(*outs, "ranges"), {0.25f, 0.75f, 0.5f, -3.0f});
     check_vec(vec(*outs, "tex"), {2, 3, 4, 2});
-    // The projection of the lecture (notes/scenes.md) through ftransform.
+    // The projection of the lecture (scenes/*.toml) through ftransform.
     check_vec(vec(*outs, "ft"), gl.projection * glm::vec4(0, 0, -5, 1), 1e-5f);
     CHECK(gl.projection[2][2] == Approx(-1.020202f));
 }
@@ -187,7 +187,7 @@ void main() {
     gl_Position = ftransform();
 }
 )", "varying vec4 sink; void main() { gl_FragColor = sink; }");
-    Program::State& st = p.state();
+    Program::State& st = state_of(p);
     const uint32_t sentinel = 0xdeadbeefu;
     std::fill(st.uniforms.begin(), st.uniforms.end(), sentinel);
     REQUIRE(apply_builtin_uniforms(p, GLState{}).ok());

@@ -71,6 +71,43 @@ TEST_CASE("set_uniform follows glUniform semantics", "[api][uniform]") {
     CHECK(first_vertex(*outs, "r1")[3] == 0.0f);
 }
 
+TEST_CASE("set_uniform takes scalars and glm types", "[api][uniform]") {
+    Program p = compile(kUniformVs, kUniformFs);
+    REQUIRE(p.set_uniform("f", 2.5).ok());  // double, converted to float
+    REQUIRE(p.set_uniform("v", glm::vec3(1, 2, 3)).ok());
+    REQUIRE(p.set_uniform("i", -7).ok());
+    REQUIRE(p.set_uniform("iv", glm::ivec2(4, 5)).ok());
+    REQUIRE(p.set_uniform("b", true).ok());
+    // glm is column-major as GL: columns (1,0,0) (0,2,0) (1,1,1)
+    REQUIRE(p.set_uniform("m", glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 2, 0), glm::vec3(1, 1, 1))).ok());
+    REQUIRE(p.set_uniform("arr", glm::vec4(1, 2, 3, 4)).ok());  // four elements from element 0
+    REQUIRE(p.set_uniform("s[1].a", 0.25f).ok());
+    REQUIRE(p.set_uniform("s[0].b", glm::vec2(0.0f, 0.5f)).ok());
+    auto outs = run_vertices(p, {{"gl_Vertex", 4, {0, 0, 0, 1}}}, 1);
+    REQUIRE(outs.ok());
+    CHECK(first_vertex(*outs, "r0") == std::vector<float>{2.5f, 1, 2, 3});
+    CHECK(first_vertex(*outs, "r1") == std::vector<float>{-7, 4, 5, 1});
+    CHECK(first_vertex(*outs, "r2") == std::vector<float>{4.75f, 7.75f, 3.75f, 4321.75f});
+    CHECK_FALSE(p.set_uniform("i", 1.0f).ok());  // a float does not set an int
+    CHECK_FALSE(p.set_uniform("v", glm::vec4(1)).ok());
+}
+
+TEST_CASE("value() of a failed result throws the diagnostics", "[api][result]") {
+    Result<Program> failed = Program::compile({{"a.vert", "void main() { gl_Position = nope; }"}}, {});
+    REQUIRE_FALSE(failed.ok());
+    try {
+        (void)failed.value();
+        FAIL("value() returned");
+    } catch (const BadResultAccess& e) {
+        CHECK_THAT(e.what(), Catch::StartsWith("glslrun: value() of a failed result:"));
+        CHECK_THAT(e.what(), Catch::Contains("a.vert:1: error:"));
+        CHECK(e.error.str() == failed.error().str());
+    }
+    CHECK_THROWS_AS(failed->exec, BadResultAccess);
+    Status fine = Ok{};
+    CHECK_THROWS_AS(fine.error(), std::logic_error);
+}
+
 TEST_CASE("set_uniform reports mistakes clearly", "[api][uniform]") {
     Program p = compile(kUniformVs, kUniformFs);
     auto message = [](const Status& s) { return s.ok() ? std::string() : s.error().str(); };

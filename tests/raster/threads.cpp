@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/render.h"
-#include "scene/scene.h"
+#include "glslrun/scene/render.h"
+#include "glslrun/scene/scene.h"
 
 using namespace glslrun;
 

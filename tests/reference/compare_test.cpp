@@ -27,7 +27,7 @@ struct Case {
     const char* scene;    // scenes/<scene>
 };
 
-// The lecture's programs with their scenes (shared/notes/scenes.md), then the
+// The lecture's programs with their scenes (scenes/*.toml), then the
 // scenes that stress the built-in state, then the textured scenes (an image
 // with generated mipmaps and trilinear filtering; a cube map).
 constexpr Case kCases[] = {

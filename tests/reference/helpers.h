@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "tools/glref/gl_render.h"
-#include "scene/image_compare.h"
-#include "scene/render.h"
-#include "scene/scene.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/render.h"
+#include "glslrun/scene/scene.h"
 
 namespace reference {
 

@@ -6,7 +6,7 @@
 #include <map>
 
 #include "tests/scene/key_lines.h"
-#include "scene/error_report.h"
+#include "glslrun/scene/error_report.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/float_error.h"
+#include "glslrun/scene/float_error.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

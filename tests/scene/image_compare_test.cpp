@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "scene/image_compare.h"
+#include "glslrun/scene/image_compare.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;

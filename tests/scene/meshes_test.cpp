@@ -1,5 +1,5 @@
 // The built-in meshes and OBJ loading (scene/meshes.h). The teapot must
-// be exactly the geometry of notes/scenes.md, since images are compared with
+// be exactly freeglut's geometry (scene/teapot.cpp), since images are compared with
 // Mesa's pixel by pixel: counts, numbering, normals and winding are checked.
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 #include <unistd.h>
 
-#include "scene/meshes.h"
+#include "glslrun/scene/meshes.h"
 
 using namespace glslrun;
 using namespace glslrun::scene;
@@ -115,7 +115,7 @@ uint32_t teapot_vertex(int n, int patch, int i, int j) {
 
 // ------------------------------------------------------------------ teapot ---
 
-TEST_CASE("teapot: counts of notes/scenes.md", "[mesh]") {
+TEST_CASE("teapot: counts of freeglut's teapot", "[mesh]") {
     const Mesh ten = make_teapot(1.0, 10);
     CHECK(ten.vertex_count == 3872);
     CHECK(ten.indices.size() == 6400 * 3);

@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
 
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace scene_test {
 

@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "parse_helpers.h"
-#include "scene/render.h"
+#include "glslrun/scene/render.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC

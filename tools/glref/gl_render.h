@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "glslrun/glslrun.h"
-#include "scene/image_compare.h"
-#include "scene/scene.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::glref {
 

@@ -4,7 +4,7 @@
 // sample identical data.
 #pragma once
 #include "tools/glref/gl_context.h"
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::glref {
 

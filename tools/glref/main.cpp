@@ -16,8 +16,8 @@
 
 #include "tools/glref/gl_render.h"
 #include "scene/bench_report.h"
-#include "scene/image_compare.h"
-#include "scene/scene.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/scene.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "render_command.h"
-#include "scene/error_report.h"
+#include "glslrun/scene/error_report.h"
 
 namespace glslrun::cli {
 

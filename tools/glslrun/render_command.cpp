@@ -14,9 +14,10 @@
 
 #include "error_report_command.h"
 #include "ir/ir.h"
+#include "runtime/program_state.h"
 #include "scene/bench_report.h"
-#include "scene/image_compare.h"
-#include "scene/render.h"
+#include "glslrun/scene/image_compare.h"
+#include "glslrun/scene/render.h"
 #include "scene/text_file.h"
 
 namespace glslrun::cli {
@@ -88,7 +89,7 @@ std::string join_builtins(const Program& prog) {
 
 std::string join_builtin_attributes(const Program& prog) {
     std::string list;
-    for (const ir::Binding& b : prog.ir().vertex.inputs)
+    for (const ir::Binding& b : state_of(prog).ir.vertex.inputs)
         if (b.name.starts_with("gl_")) list += (list.empty() ? "" : ", ") + b.name;
     return list.empty() ? "none" : list;
 }

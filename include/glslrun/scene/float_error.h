@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/image_compare.h"
+#include "glslrun/scene/image_compare.h"
 
 namespace glslrun::scene {
 

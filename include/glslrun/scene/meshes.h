@@ -6,12 +6,12 @@
 #pragma once
 #include <string>
 
-#include "scene/scene.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::scene {
 
 // freeglut's glutSolidTeapot(size) geometry with `subdivisions` segments per
-// patch edge (notes/scenes.md): 32 patches, (n+1)^2 vertices each.
+// patch edge (scene/teapot.cpp): 32 patches, (n+1)^2 vertices each.
 Mesh make_teapot(double size, int subdivisions);
 // The lecture's glBegin(GL_QUADS) quad: (-1,-1)..(1,1) at z = 0, normal +z,
 // colours red, green, blue, yellow; drawn as GL_QUADS (split 0-1-2 / 0-2-3).

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/float_error.h"
-#include "scene/scene.h"
+#include "glslrun/scene/float_error.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::scene {
 

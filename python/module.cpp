@@ -1,0 +1,204 @@
+// `import glslrun`: compile programs, set uniforms, run vertex and fragment
+// batches on numpy arrays (docs/library.md). Errors are glslrun.Error.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "module.h"
+
+namespace glslrun::python {
+namespace {
+
+using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
+using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
+
+// The declaration `name` sets: "arr[2]" is an element of "arr", "s[1].f" a leaf of its own.
+const UniformInfo* find_declaration(const std::vector<UniformInfo>& infos, std::string name) {
+    for (;;) {
+        for (const UniformInfo& u : infos)
+            if (u.name == name) return &u;
+        if (name.empty() || name.back() != ']') return nullptr;
+        name.erase(name.rfind('['));
+    }
+}
+
+bool takes_floats(const std::string& type) {
+    return type == "float" || type.starts_with("vec") || type.starts_with("mat");
+}
+
+// Numbers, sequences or arrays of any shape, flattened in C order (a
+// matrix's columns: pass m.T of a row-major numpy matrix, or a flat list
+// column by column, as glUniformMatrix without transpose).
+void set_uniform(Program& program, const std::string& name, const py::object& value) {
+    const UniformInfo* u = find_declaration(program.uniforms(), name);
+    if (!u) throw ErrorException{Error("no active uniform named '" + name + "'")};
+    if (takes_floats(u->type)) {
+        FloatArray values = FloatArray::ensure(value);
+        if (!values) throw py::type_error("uniform '" + name + "' takes numbers");
+        check(program.set_uniform(name, std::span<const float>(values.data(), size_t(values.size()))));
+    } else {
+        // bool and sampler uniforms take ints; Python bools and whole floats convert.
+        FloatArray exact = FloatArray::ensure(value);
+        if (!exact) throw py::type_error("uniform '" + name + "' takes numbers");
+        std::vector<int32_t> ints(size_t(exact.size()));
+        for (size_t i = 0; i < ints.size(); ++i) {
+            float f = exact.data()[i];
+            if (f != float(int32_t(f)))
+                throw ErrorException{Error("uniform '" + name + "' is " + u->type + "; " + std::to_string(f) +
+                                           " is not an integer")};
+            ints[i] = int32_t(f);
+        }
+        check(program.set_uniform(name, std::span<const int32_t>(ints)));
+    }
+}
+
+// {name: array of shape (count,) or (count, components)} as attribute arrays;
+// `count` from the arrays when not given (they must agree).
+std::vector<VertexAttrib> to_attribs(const py::dict& arrays, uint32_t& count) {
+    std::vector<VertexAttrib> attribs;
+    bool have_count = count != 0;
+    for (auto [key, value] : arrays) {
+        std::string name = py::cast<std::string>(key);
+        FloatArray a = FloatArray::ensure(value);
+        if (!a || a.ndim() < 1 || a.ndim() > 2)
+            throw py::value_error("input '" + name + "' must be an array of shape (count,) or (count, components)");
+        uint32_t rows = uint32_t(a.shape(0)), components = a.ndim() == 2 ? uint32_t(a.shape(1)) : 1;
+        if (!have_count) count = rows, have_count = true;
+        if (rows != count)
+            throw py::value_error("input '" + name + "' has " + std::to_string(rows) + " rows; expected " +
+                                  std::to_string(count));
+        attribs.push_back({name, components, std::vector<float>(a.data(), a.data() + a.size())});
+    }
+    return attribs;
+}
+
+// Outputs as {name: array (count, components)}.
+py::dict to_dict(const std::vector<ShaderOutput>& outputs, uint32_t count) {
+    py::dict out;
+    for (const ShaderOutput& o : outputs) {
+        py::array_t<float> a({size_t(count), size_t(o.components)});
+        std::copy(o.data.begin(), o.data.end(), a.mutable_data());
+        out[py::str(o.name)] = std::move(a);
+    }
+    return out;
+}
+
+py::dict run_batch(const Program& program, const py::dict& inputs, uint32_t count, bool vertices) {
+    std::vector<VertexAttrib> attribs = to_attribs(inputs, count);
+    if (count == 0) throw py::value_error("nothing to run: no inputs and no count");
+    std::vector<ShaderOutput> outputs;
+    {
+        py::gil_scoped_release release;
+        outputs = take(vertices ? run_vertices(program, attribs, count) : run_fragments(program, attribs, count));
+    }
+    return to_dict(outputs, count);
+}
+
+std::vector<ShaderSource> sources(const py::object& texts, const char* default_name) {
+    if (py::isinstance<py::str>(texts)) return {{default_name, py::cast<std::string>(texts)}};
+    std::vector<ShaderSource> out;
+    for (auto item : texts) {
+        auto pair = py::cast<std::pair<std::string, std::string>>(item);
+        out.push_back({pair.first, pair.second});
+    }
+    return out;
+}
+
+CompileOptions compile_options(int default_version, bool optimize) {
+    CompileOptions o;
+    o.default_version = default_version;
+    o.optimize = optimize;
+    return o;
+}
+
+std::vector<std::string> paths(const py::object& p) {
+    if (py::isinstance<py::str>(p)) return {py::cast<std::string>(p)};
+    return py::cast<std::vector<std::string>>(p);
+}
+
+void bind_program(py::module_& m) {
+    py::class_<Program>(m, "Program", "A compiled vertex and fragment program.")
+        .def_static(
+            "compile",
+            [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize) {
+                return take(Program::compile(sources(vertex, "shader.vert"), sources(fragment, "shader.frag"),
+                                             compile_options(default_version, optimize)));
+            },
+            py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
+            "Compiles GLSL text: a string per stage, or a list of (name, text) pairs.")
+        .def_static(
+            "from_files",
+            [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize) {
+                return take(scene::compile_files(paths(vertex), paths(fragment),
+                                                 compile_options(default_version, optimize)));
+            },
+            py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
+            "Compiles shader files: a path per stage, or a list of paths.")
+        .def("set_uniform", &set_uniform, py::arg("name"), py::arg("value"),
+             "Sets a uniform from a number, a sequence or a numpy array (glUniform semantics).")
+        .def("has_uniform", &Program::has_uniform)
+        .def_property_readonly("uniforms",
+                               [](const Program& p) {
+                                   py::list out;
+                                   for (const UniformInfo& u : p.uniforms())
+                                       out.append(py::dict(py::arg("name") = u.name, py::arg("type") = u.type,
+                                                           py::arg("array_size") = u.array_size,
+                                                           py::arg("builtin") = u.builtin, py::arg("read") = u.read));
+                                   return out;
+                               })
+        .def_property(
+            "threads", [](const Program& p) { return p.exec.threads; },
+            [](Program& p, unsigned n) { p.exec.threads = n; })
+        .def_property(
+            "precision", [](const Program& p) { return std::string(precision_name(p.exec.precision)); },
+            [](Program& p, const std::string& name) { p.exec.precision = take(parse_precision(name)); })
+        .def_property(
+            "max_loop_iterations", [](const Program& p) { return p.exec.max_loop_iterations; },
+            [](Program& p, uint64_t n) { p.exec.max_loop_iterations = n; })
+        .def("dump_ir", &Program::dump_ir)
+        .def(
+            "run_vertices",
+            [](const Program& p, const py::dict& inputs, uint32_t count) { return run_batch(p, inputs, count, true); },
+            py::arg("inputs"), py::arg("count") = 0,
+            "Runs the vertex shader on arrays {attribute: (count, components)}; returns {output: array}.")
+        .def(
+            "run_fragments",
+            [](const Program& p, const py::dict& inputs, uint32_t count) { return run_batch(p, inputs, count, false); },
+            py::arg("inputs"), py::arg("count") = 0,
+            "Runs the fragment shader on arrays {input: (count, components)} in 2x2 quads; returns {output: "
+            "array}, with 'discarded'.");
+}
+
+}  // namespace
+
+void register_error(py::module_& m) {
+    static py::exception<ErrorException> error_type(m, "Error", PyExc_RuntimeError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const ErrorException& e) {
+            py::list diagnostics;
+            for (const Diagnostic& d : e.error.diagnostics)
+                diagnostics.append(py::make_tuple(d.file, d.line, d.message, d.warning));
+            std::string text = e.error.str();
+            while (!text.empty() && text.back() == '\n') text.pop_back();
+            py::object instance = py::handle(error_type.ptr())(text);
+            instance.attr("diagnostics") = diagnostics;
+            PyErr_SetObject(error_type.ptr(), instance.ptr());
+        }
+    });
+}
+
+}  // namespace glslrun::python
+
+PYBIND11_MODULE(glslrun, m) {
+    using namespace glslrun::python;
+    m.doc() = "glslrun: legacy GLSL (1.10/1.20) on the CPU";
+    m.attr("__version__") = GLSLRUN_VERSION_STRING;
+    register_error(m);
+    bind_program(m);
+    bind_scene(m);
+}

@@ -1,0 +1,38 @@
+// The Python module's shared pieces: errors as Python exceptions, numpy
+// conversions. module.cpp binds programs and batches, module_scene.cpp
+// scenes, images and the error report.
+#pragma once
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "glslrun/scene.h"
+
+namespace glslrun::python {
+
+namespace py = pybind11;
+
+// A glslrun Error on its way to Python: raised there as glslrun.Error, whose
+// message is Error::str() ("file:line: error: ...", one per line) and whose
+// `diagnostics` attribute lists (file, line, message, warning) tuples.
+struct ErrorException {
+    Error error;
+};
+void register_error(py::module_& m);
+
+// The value of a Result, or ErrorException.
+template <class T>
+T take(Result<T> result) {
+    if (!result) throw ErrorException{result.error()};
+    return std::move(result.value());
+}
+inline void check(const Status& status) {
+    if (!status) throw ErrorException{status.error()};
+}
+
+// An RGBA8 image as an H x W x 4 uint8 array, top row first, and back.
+py::array_t<uint8_t> to_array(const scene::Image& image);
+scene::Image to_image(const py::array_t<uint8_t, py::array::c_style | py::array::forcecast>& array);
+
+void bind_scene(py::module_& m);
+
+}  // namespace glslrun::python

@@ -1,0 +1,57 @@
+#!/bin/sh
+# The installed package as a user's own project sees it: `cmake --install`
+# into a staging prefix under the build directory, then examples/ built
+# outside this project, once with find_package(glslrun) and once with
+# pkg-config, and run. The spot scene rendered through the package must be
+# byte-identical to the command line's PNG; the Python module must import
+# from the staged prefix. Last, a project that adds this tree with
+# add_subdirectory() must configure.
+#   consumer.sh SOURCE_DIR BUILD_DIR GLSLRUN_BINARY [PYTHON]
+set -eu
+src=$1 build=$2 cli=$3 python=${4:-python3}
+stage=$build/package/stage out=$build/package
+rm -rf "$out"
+mkdir -p "$out"
+cmake --install "$build" --prefix "$stage" > "$out/install.log"
+
+spot="$src/shaders/spot_pix_fixed.vert $src/shaders/spot_pix_fixed.frag $src/scenes/spot.toml"
+"$cli" $spot -o "$out/spot-cli.png" > /dev/null
+
+echo "find_package(glslrun):"
+cmake -S "$src/examples" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$stage" \
+    > "$out/cmake.log"
+cmake --build "$out/cmake" > "$out/cmake-build.log"
+"$out/cmake/render_quad" "$out/quad-cmake.png"
+"$out/cmake/render_scene" $spot "$out/spot-cmake.png"
+cmp "$out/spot-cli.png" "$out/spot-cmake.png"
+
+echo "pkg-config glslrun: $(PKG_CONFIG_PATH=$stage/lib/pkgconfig pkg-config --cflags --libs glslrun)"
+export PKG_CONFIG_PATH="$stage/lib/pkgconfig"
+libdir=$(pkg-config --variable=libdir glslrun)
+c++ -std=c++20 "$src/examples/render_quad.cpp" -o "$out/render_quad_pc" \
+    $(pkg-config --cflags --libs glslrun) -Wl,-rpath,"$libdir"
+"$out/render_quad_pc" "$out/quad-pc.png"
+# The shared library, with its SONAME.
+ldd "$out/render_quad_pc" | grep -q 'libglslrun\.so\.0 '
+c++ -std=c++20 "$src/examples/render_scene.cpp" -o "$out/render_scene_pc" \
+    $(pkg-config --cflags --libs glslrun-scene) -Wl,-rpath,"$libdir"
+"$out/render_scene_pc" $spot "$out/spot-pc.png"
+cmp "$out/spot-cli.png" "$out/spot-pc.png"
+
+if ls "$stage"/lib/python3*/dist-packages/glslrun*.so > /dev/null 2>&1; then
+    echo "python3 -c 'import glslrun' from the staged prefix:"
+    PYTHONPATH=$(echo "$stage"/lib/python3*/dist-packages) "$python" -c \
+        "import glslrun; a = glslrun.render('$src/shaders/minimal.vert', '$src/shaders/minimal.frag', '$src/scenes/quad.toml'); print(' ', glslrun.__version__, a.shape, a.dtype)"
+fi
+
+echo "add_subdirectory(glslrun):"
+mkdir -p "$out/sub"
+cat > "$out/sub/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.20)
+project(user CXX)
+add_subdirectory("$src" glslrun)
+add_executable(user "$src/examples/render_scene.cpp")
+target_link_libraries(user PRIVATE glslrun::scene)
+CMAKE
+cmake -S "$out/sub" -B "$out/sub/build" -G Ninja > "$out/sub.log"
+echo "  configures"
