@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sanitizer and fuzzing step of `tools/setup.sh test`: one clang build
+# Sanitizers and fuzzers (docs/ci.md; meant as a step of `tools/setup.sh test`): one clang build
 # with AddressSanitizer + UBSan and libFuzzer's coverage (build-asan), of only
 # the targets it runs: the unit tests that cover the library's inputs, the
 # command line for the piglit suite and tests/cli/hardening.sh, and the three

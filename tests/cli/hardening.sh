@@ -82,4 +82,11 @@ done
 [ "$(sort shards.txt | uniq | wc -l)" = "$total" ] && [ "$(wc -l < shards.txt)" = "$total" ] ||
     fail "the three shards do not hold each test once"
 
+# glslrun batch: many renders in one process; a failed job names its line.
+printf '# two jobs\n%s %s %s b1.png\n%s %s missing.toml b2.png\n' "$vs" "$fs" "$scene" "$vs" "$fs" > jobs.txt
+expect 1 "jobs.txt:3: error: job failed" "$glslrun" batch jobs.txt
+[ -s b1.png ] && [ ! -e b2.png ] || fail "batch: b1.png should be written, b2.png not: $(ls)"
+echo "$vs $fs" > bad_jobs.txt
+expect 2 "bad_jobs.txt:1: error: a job is" "$glslrun" batch bad_jobs.txt
+
 finish "hardening: every reproducer ends with a message and status 1 or 2"

@@ -5,6 +5,7 @@
 //      --error-report DIR measures the mode's error against reference)
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
+//   glslrun batch JOBS                        many renders in one process
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "batch_command.h"
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
@@ -193,6 +195,20 @@ int test_main(int argc, char** argv) {
     return run_test_command(o);
 }
 
+// ------------------------------------------------------------ glslrun batch ---
+int batch_main(int argc, char** argv) {
+    CLI::App app{"Renders many (vertex, fragment, scene, output) jobs in one process", "glslrun batch"};
+    std::string jobs;
+    ExecOptions exec;
+    app.add_option("jobs", jobs, "a file of jobs, one `VERT FRAG SCENE OUTPUT.png` per line ('#' comments)")
+        ->required();
+    app.add_option("--threads", exec.threads, "worker threads for drawing (default: one per core)")
+        ->check(CLI::Range(1, 256));
+    add_precision_option(app, exec.precision);
+    if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
+    return cli::run_batch_command(jobs, exec);
+}
+
 // ------------------------------------------------ programs and scenes ---
 int program_cli(int argc, char** argv) {
     CLI::App app{"glslrun: legacy GLSL (1.10/1.20) on the CPU.\n"
@@ -257,6 +273,7 @@ int main(int argc, char** argv) {
     // machine with less memory than the limits assume: a message, not an abort.
     try {
         if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+        if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
         return program_cli(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fputs("glslrun: error: out of memory\n", stderr);
