@@ -149,11 +149,43 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
     return ok;
 }
 
+// Each unit is parsed as one unnamed string, so every node's location says
+// string 0 (and __FILE__ is 0, as GLSL asks). Before the link merges the units,
+// their nodes get the unit's index as string number: the lowering reads it as
+// ir::SourceLoc::source, the index into Shader::sources.
+class MarkUnitSource : public glslang::TIntermTraverser {
+public:
+    explicit MarkUnitSource(int unit) : unit_(unit) {}
+    void visitSymbol(glslang::TIntermSymbol* n) override { mark(n); }
+    void visitConstantUnion(glslang::TIntermConstantUnion* n) override { mark(n); }
+    bool visitBinary(glslang::TVisit, glslang::TIntermBinary* n) override { return mark(n); }
+    bool visitUnary(glslang::TVisit, glslang::TIntermUnary* n) override { return mark(n); }
+    bool visitSelection(glslang::TVisit, glslang::TIntermSelection* n) override { return mark(n); }
+    bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* n) override { return mark(n); }
+    bool visitLoop(glslang::TVisit, glslang::TIntermLoop* n) override { return mark(n); }
+    bool visitBranch(glslang::TVisit, glslang::TIntermBranch* n) override { return mark(n); }
+    bool visitSwitch(glslang::TVisit, glslang::TIntermSwitch* n) override { return mark(n); }
+
+private:
+    bool mark(TIntermNode* n) {
+        glslang::TSourceLoc loc = n->getLoc();
+        loc.string = unit_;
+        n->setLoc(loc);
+        return true;
+    }
+    int unit_;
+};
+
 bool link_units(StageUnits& st, std::vector<Diagnostic>& diags) {
     st.program = std::make_unique<glslang::TProgram>();
-    for (auto& sh : st.shaders) {
+    for (size_t i = 0; i < st.shaders.size(); ++i) {
+        glslang::TShader* sh = st.shaders[i].get();
         prepare_call_graph(*sh->getIntermediate());
-        st.program->addShader(sh.get());
+        if (TIntermNode* root = sh->getIntermediate()->getTreeRoot()) {
+            MarkUnitSource mark{int(i)};
+            root->traverse(&mark);
+        }
+        st.program->addShader(sh);
     }
     bool ok = st.program->link(kMessages);
     parse_info_log(st.program->getInfoLog(), st.first_file(), diags);

@@ -124,10 +124,8 @@ void StageLowering::set_line(TIntermNode* n) {
     if (!n || n->getLoc().line <= 0) return;
     const gl::TSourceLoc& at = n->getLoc();
     line_ = at.line;
-    // The driver names the stage's sources "#0", "#1"... (internal_source_name).
-    const char* name = at.getFilename();
-    unsigned source = name && name[0] == '#' ? unsigned(std::strtoul(name + 1, nullptr, 10)) : 0;
-    if (source >= shader.sources.size()) source = 0;
+    // The driver numbers each unit's nodes with the unit's index (MarkUnitSource).
+    unsigned source = at.string >= 0 && size_t(at.string) < shader.sources.size() ? unsigned(at.string) : 0;
     loc_ = ir::SourceLoc{line_, uint16_t(std::clamp(at.column, 0, 0xffff)), uint16_t(source)};
 }
 
