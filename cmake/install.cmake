@@ -24,6 +24,7 @@ install(FILES ${PROJECT_BINARY_DIR}/glslrunConfig.cmake ${PROJECT_BINARY_DIR}/gl
   DESTINATION ${GLSLRUN_CMAKE_DIR})
 
 file(RELATIVE_PATH GLSLRUN_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" GLSLRUN_PC_TO_PREFIX ${GLSLRUN_PC_TO_PREFIX})
 foreach(pc glslrun glslrun-scene)
   configure_file(cmake/${pc}.pc.in ${PROJECT_BINARY_DIR}/${pc}.pc @ONLY)
   install(FILES ${PROJECT_BINARY_DIR}/${pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

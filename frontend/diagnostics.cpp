@@ -39,21 +39,11 @@ Status check_shader(Stage stage, const ShaderSource& source, int default_version
 
 namespace frontend {
 
-std::string internal_source_name(size_t index) { return fmt::format("#{}", index); }
-
 static std::string trim(const std::string& s) {
     size_t b = s.find_first_not_of(" \t\r\n");
     if (b == std::string::npos) return {};
     size_t e = s.find_last_not_of(" \t\r\n");
     return s.substr(b, e - b + 1);
-}
-
-static std::string resolve_name(const std::string& name, const std::vector<ShaderSource>& sources) {
-    if (name.size() > 1 && name[0] == '#') {
-        size_t i = std::strtoul(name.c_str() + 1, nullptr, 10);
-        if (i < sources.size()) return sources[i].name;
-    }
-    return name;
 }
 
 namespace {
@@ -99,8 +89,7 @@ std::optional<LogLine> split_log_line(std::string_view s) {
 
 }  // namespace
 
-void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sources,
-                    const std::string& fallback_file, std::vector<Diagnostic>& out) {
+void parse_info_log(const std::string& log, const std::string& unit_file, std::vector<Diagnostic>& out) {
     std::istringstream in(log);
     std::string line;
     bool last_kept = false;
@@ -114,7 +103,8 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
             // Bison's message when glslang's parser stack overflows.
             if (text == "memory exhausted")
                 message = "expressions or blocks nest too deeply for the parser (glslang: memory exhausted)";
-            std::string file = resolve_name(l->file, sources);
+            // String 0 is the unit itself; another number comes from `#line L S`.
+            std::string file = l->file == "0" ? unit_file : l->file;
             // Later errors on a line that already has one are cascades of
             // the first (glslang recovers by inventing a declaration).
             if (!l->warning && !reported.insert(fmt::format("{}:{}", l->file, l->line)).second) continue;
@@ -126,7 +116,7 @@ void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sou
             if (text.find("compilation errors.") != std::string::npos && text.find("No code generated") != std::string::npos)
                 continue;
             if (text.empty()) continue;
-            out.push_back(Diagnostic{fallback_file, 0, text, l->warning});
+            out.push_back(Diagnostic{unit_file, 0, text, l->warning});
             last_kept = true;
         } else if (last_kept && !trim(line).empty() && (line[0] == ' ' || line[0] == '\t')) {
             // Continuation of a multi-line link message.

@@ -7,12 +7,10 @@
 
 namespace glslrun::frontend {
 
-// Source names given to glslang are "#<index>" so that any user name (empty,
-// with colons) maps back exactly; `sources` resolves them. Messages without a
-// location get `fallback_file`.
-void parse_info_log(const std::string& log, const std::vector<ShaderSource>& sources,
-                    const std::string& fallback_file, std::vector<Diagnostic>& out);
-
-std::string internal_source_name(size_t index);
+// glslang gets each unit as one unnamed string (so that __FILE__ is the
+// source string number, GLSL 1.10 §3.3): its locations "0:line" are lines of
+// `unit_file`, and so are messages without a location; another number is
+// the string number set by `#line L S`.
+void parse_info_log(const std::string& log, const std::string& unit_file, std::vector<Diagnostic>& out);
 
 }  // namespace glslrun::frontend

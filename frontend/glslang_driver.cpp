@@ -13,10 +13,14 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/compile.h"
+#include "frontend/call_graph.h"
 #include "frontend/deep_stack.h"
 #include "frontend/diagnostic_hints.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
+#include "frontend/glslang_fold.h"
+#include "frontend/int_builtins.h"
+#include "frontend/language_version.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
 #include "frontend/size_limits.h"
@@ -28,7 +32,7 @@ namespace {
 
 void init_glslang() {
     // Thread-safe once per process (C++ static initialization).
-    static const bool initialized = [] { return glslang::InitializeProcess(); }();
+    static const bool initialized = [] { return glslang::InitializeProcess() && glslang_fold_hooks_linked(); }();
     (void)initialized;
 }
 
@@ -78,8 +82,7 @@ private:
 struct StageUnits {
     EShLanguage lang;
     std::vector<ShaderSource> sources;
-    std::vector<std::string> names;  // "#i", kept alive until parse() returns
-    std::vector<std::string> texts;  // sources after the fold workaround
+    std::vector<std::string> texts;  // sources after the rewrites (glslang reads them during parse())
     std::vector<std::unique_ptr<glslang::TShader>> shaders;
     std::unique_ptr<glslang::TProgram> program;
     std::string first_file() const { return sources.empty() ? std::string() : sources[0].name; }
@@ -87,48 +90,109 @@ struct StageUnits {
 
 // The source rewrites that work around glslang before it parses (line
 // numbers are kept by each).
-std::string prepare_source(const std::string& text) {
-    std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(text)));
+std::string prepare_source(const ShaderSource& src, int default_version) {
+    std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(src.text)));
+    if (unit_version(src, default_version) == 110) s = hoist_nested_structs(s);
     return rewrite_bool_literal_compares(brace_do_while_bodies(s));
 }
 
-bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
-    const TBuiltInResource res = resources();
-    bool ok = true;
-    st.names.clear();
-    st.texts.clear();
-    for (size_t i = 0; i < st.sources.size(); ++i) {
-        st.names.push_back(internal_source_name(i));
-        st.texts.push_back(prepare_source(st.sources[i].text));
+struct ParsedUnit {
+    std::unique_ptr<glslang::TShader> shader;
+    bool ok = false;
+    std::vector<Diagnostic> diags;
+};
+
+// One unit as one unnamed string (its __FILE__ is 0); `text` must outlive
+// the shader. `helpers` go in the preamble, before the unit's first line.
+ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::string& file, const std::string& helpers,
+                      int default_version) {
+    static const TBuiltInResource res = resources();
+    ParsedUnit out;
+    out.shader = std::make_unique<glslang::TShader>(lang);
+    const char* str = text.c_str();
+    int len = int(text.size());
+    out.shader->setStringsWithLengths(&str, &len, 1);
+    // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
+    // shader; glslang 12 wants the extension.
+    std::string preamble = lang == EShLangVertex ? "#extension GL_ARB_shader_texture_lod : enable\n" : "";
+    preamble += helpers;
+    out.shader->setPreamble(preamble.c_str());
+    {
+        FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
+        out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
     }
+    parse_info_log(out.shader->getInfoLog(), file, out.diags);
+    return out;
+}
+
+bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
+    bool ok = true;
+    st.texts.clear();
+    for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
     for (size_t i = 0; i < st.sources.size(); ++i) {
-        auto sh = std::make_unique<glslang::TShader>(st.lang);
-        const char* text = st.texts[i].c_str();
-        int len = int(st.texts[i].size());
-        const char* name = st.names[i].c_str();
-        sh->setStringsWithLengthsAndNames(&text, &len, &name, 1);
-        // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
-        // shader; glslang 12 wants the extension.
-        if (st.lang == EShLangVertex) sh->setPreamble("#extension GL_ARB_shader_texture_lod : enable\n");
-        bool parsed = sh->parse(&res, default_version, ENoProfile, false, false, kMessages);
-        size_t first = diags.size();
-        parse_info_log(sh->getInfoLog(), st.sources, st.sources[i].name, diags);
-        add_hints(diags, first, st.sources[i]);
-        if (parsed && sh->getIntermediate()) {
-            check_unit_rules(*sh->getIntermediate(), st.texts[i], st.sources[i].name, diags);
-            check_size_limits(*sh->getIntermediate(), st.sources[i].name, diags);
+        const ShaderSource& src = st.sources[i];
+        ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, {}, default_version);
+        if (std::set<int> lines = int_builtin_retry_lines(unit.diags, st.texts[i]); !unit.ok && !lines.empty()) {
+            std::string renamed = rename_int_builtin_calls(st.texts[i], lines);
+            ParsedUnit retry = parse_unit(st.lang, renamed, src.name, int_builtin_helpers(), default_version);
+            if (retry.ok) {
+                unit = std::move(retry);
+                st.texts[i] = std::move(renamed);
+            }
         }
-        ok = ok && parsed;
-        st.shaders.push_back(std::move(sh));
+        size_t first = diags.size();
+        diags.insert(diags.end(), unit.diags.begin(), unit.diags.end());
+        add_hints(diags, first, src);
+        if (unit.ok && unit.shader->getIntermediate()) {
+            check_unit_rules(*unit.shader->getIntermediate(), st.texts[i], src.name, diags);
+            check_size_limits(*unit.shader->getIntermediate(), src.name, diags);
+        }
+        ok = ok && unit.ok;
+        st.shaders.push_back(std::move(unit.shader));
     }
     return ok;
 }
 
+// Each unit is parsed as one unnamed string, so every node's location says
+// string 0 (and __FILE__ is 0, as GLSL asks). Before the link merges the units,
+// their nodes get the unit's index as string number: the lowering reads it as
+// ir::SourceLoc::source, the index into Shader::sources.
+class MarkUnitSource : public glslang::TIntermTraverser {
+public:
+    explicit MarkUnitSource(int unit) : unit_(unit) {}
+    void visitSymbol(glslang::TIntermSymbol* n) override { mark(n); }
+    void visitConstantUnion(glslang::TIntermConstantUnion* n) override { mark(n); }
+    bool visitBinary(glslang::TVisit, glslang::TIntermBinary* n) override { return mark(n); }
+    bool visitUnary(glslang::TVisit, glslang::TIntermUnary* n) override { return mark(n); }
+    bool visitSelection(glslang::TVisit, glslang::TIntermSelection* n) override { return mark(n); }
+    bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* n) override { return mark(n); }
+    bool visitLoop(glslang::TVisit, glslang::TIntermLoop* n) override { return mark(n); }
+    bool visitBranch(glslang::TVisit, glslang::TIntermBranch* n) override { return mark(n); }
+    bool visitSwitch(glslang::TVisit, glslang::TIntermSwitch* n) override { return mark(n); }
+
+private:
+    bool mark(TIntermNode* n) {
+        glslang::TSourceLoc loc = n->getLoc();
+        loc.string = unit_;
+        n->setLoc(loc);
+        return true;
+    }
+    int unit_;
+};
+
 bool link_units(StageUnits& st, std::vector<Diagnostic>& diags) {
     st.program = std::make_unique<glslang::TProgram>();
-    for (auto& sh : st.shaders) st.program->addShader(sh.get());
+    for (size_t i = 0; i < st.shaders.size(); ++i) {
+        glslang::TShader* sh = st.shaders[i].get();
+        prepare_call_graph(*sh->getIntermediate());
+        if (TIntermNode* root = sh->getIntermediate()->getTreeRoot()) {
+            MarkUnitSource mark{int(i)};
+            root->traverse(&mark);
+        }
+        st.program->addShader(sh);
+    }
     bool ok = st.program->link(kMessages);
-    parse_info_log(st.program->getInfoLog(), st.sources, st.first_file(), diags);
+    parse_info_log(st.program->getInfoLog(), st.first_file(), diags);
     return ok;
 }
 
@@ -222,9 +286,10 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
                                  const CompileOptions& options) {
     init_glslang();
     if (vs.empty() && fs.empty()) return Error("no shaders to link");
+    if (auto refused = refuse_unsupported_versions({&vs, &fs}, options.default_version)) return std::move(*refused);
     PoolScope pool;
     std::vector<Diagnostic> diags;
-    StageUnits units[2] = {{EShLangVertex, vs, {}, {}, {}, {}}, {EShLangFragment, fs, {}, {}, {}, {}}};
+    StageUnits units[2] = {{EShLangVertex, vs, {}, {}, {}}, {EShLangFragment, fs, {}, {}, {}}};
     if (vs.empty()) units[0].sources = {ShaderSource{"", kFixedFunctionVertex}};
     if (fs.empty()) units[1].sources = {ShaderSource{"", kFixedFunctionFragment}};
     bool parsed = true;
@@ -239,6 +304,9 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
     UniformTable uniforms;
     StageLowering vlow(ir::Stage::Vertex, uniforms, diags, units[0].first_file());
     StageLowering flow(ir::Stage::Fragment, uniforms, diags, units[1].first_file());
+    for (int stage = 0; stage < 2; ++stage)
+        for (const ShaderSource& source : units[stage].sources)
+            (stage == 0 ? vlow : flow).shader.sources.push_back(source.name.empty() ? "(fixed function)" : source.name);
     vlow.run(units[0].program->getIntermediate(EShLangVertex));
     flow.run(units[1].program->getIntermediate(EShLangFragment));
     LinkInput li{&vlow, &flow, !vs.empty(), units[0].first_file(), units[1].first_file()};
@@ -257,9 +325,11 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
 
 Status check_here(Stage stage, const ShaderSource& source, int default_version) {
     init_glslang();
+    std::vector<ShaderSource> one{source};
+    if (auto refused = refuse_unsupported_versions({&one}, default_version)) return std::move(*refused);
     PoolScope pool;
     std::vector<Diagnostic> diags;
-    StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}, {}};
+    StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}};
     bool ok = parse_units(st, default_version, diags);
     if (!ok || has_errors(diags)) return to_error(std::move(diags));
     return Ok{};

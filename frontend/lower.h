@@ -181,6 +181,7 @@ private:
     }
     Value fail(TIntermNode* n, const std::string& message, const gl::TType* type = nullptr);
     void set_line(TIntermNode* n);
+    void name_variable(const std::string& name, const std::string& function, const gl::TType& type, ir::Reg first);
 
     ir::Stage stage_;
     UniformTable& uniforms_;
@@ -188,6 +189,7 @@ private:
     std::string file_;
     ir::Block* cur_ = nullptr;
     int line_ = 0;
+    ir::SourceLoc loc_;  // of the node being lowered: line_ with its column and source
     int cur_func_ = -1;  // key of the function being lowered (locals are per function)
     FuncInfo* cur_info_ = nullptr;
     std::map<std::string, FuncInfo> funcs_;                    // by mangled name

@@ -94,6 +94,7 @@ Access StageLowering::variable(gl::TIntermSymbol* sym) {
             std::vector<Kind> kinds;
             flatten_kinds(type, kinds);
             it = locals_.emplace(key, new_range(kinds)).first;
+            name_variable(name, cur_info_ ? cur_info_->name : std::string(), type, it->second);
         }
         Access a;
         a.base = it->second;
@@ -110,6 +111,7 @@ Access StageLowering::variable(gl::TIntermSymbol* sym) {
             std::vector<Kind> kinds;
             flatten_kinds(type, kinds);
             it = globals_.emplace(name, new_range(kinds)).first;
+            name_variable(name, "", type, it->second);
         }
         Access a;
         a.base = it->second;
@@ -178,6 +180,7 @@ void StageLowering::prepare_function(gl::TIntermAggregate* def) {
             param.storage = sym->getType().getQualifier().storage;
             param.size = uint32_t(kinds.size());
             locals_[std::make_pair(key, sym->getId())] = param.base;
+            name_variable(sym->getName().c_str(), f.name, sym->getType(), param.base);
             f.params.push_back(param);
         }
     }
@@ -339,6 +342,7 @@ void StageLowering::run(gl::TIntermediate* im) {
     ir::Block prefix;
     cur_ = &prefix;
     line_ = 0;
+    loc_ = {};
     for (const ir::Binding& b : shader.outputs)
         for (uint32_t i = 0; i < b.count; ++i) {
             ir::Instr in;

@@ -1,6 +1,10 @@
 // Statements and control flow, plus the emission helpers.
+#include <algorithm>
+#include <cstdlib>
+
 #include <fmt/format.h>
 
+#include "frontend/call_graph.h"
 #include "frontend/lower.h"
 
 namespace glslrun::frontend {
@@ -29,6 +33,7 @@ void StageLowering::emit(const ir::Instr& in) {
 }
 
 void StageLowering::emit_node(ir::Node n) {
+    n.loc = loc_;
     n.loc.line = line_;
     cur_->push_back(std::move(n));
 }
@@ -116,7 +121,20 @@ Value StageLowering::fail(TIntermNode* n, const std::string& message, const gl::
 }
 
 void StageLowering::set_line(TIntermNode* n) {
-    if (n && n->getLoc().line > 0) line_ = n->getLoc().line;
+    if (!n || n->getLoc().line <= 0) return;
+    const gl::TSourceLoc& at = n->getLoc();
+    line_ = at.line;
+    // The driver numbers each unit's nodes with the unit's index (MarkUnitSource).
+    unsigned source = at.string >= 0 && size_t(at.string) < shader.sources.size() ? unsigned(at.string) : 0;
+    loc_ = ir::SourceLoc{line_, uint16_t(std::clamp(at.column, 0, 0xffff)), uint16_t(source)};
+}
+
+// For the trace (ir::Variable): locals, parameters and register globals.
+void StageLowering::name_variable(const std::string& name, const std::string& function, const gl::TType& type,
+                                  Reg first) {
+    if (name.empty() || name.starts_with("anon@") || name.starts_with("tempArg")) return;
+    uint32_t count = flat_size(type);
+    shader.variables.push_back(ir::Variable{name, function, type_signature(type), first, count});
 }
 
 // ---------------------------------------------------------- statements ---
@@ -159,6 +177,12 @@ Reg StageLowering::condition(gl::TIntermTyped* n) {
 }
 
 void StageLowering::selection(gl::TIntermSelection* n) {
+    // Code that constant folding removes is not lowered: its calls may have
+    // no body (call_graph.h).
+    if (int branch = constant_branch(*n); branch >= 0) {
+        stmt(branch ? n->getTrueBlock() : n->getFalseBlock());
+        return;
+    }
     Reg c = condition(n->getCondition());
     ir::Block then_block = build([&] { stmt(n->getTrueBlock()); });
     ir::Block else_block = build([&] { stmt(n->getFalseBlock()); });
@@ -175,6 +199,7 @@ void StageLowering::loop(gl::TIntermLoop* n) {
         ir::Node brk;
         brk.kind = ir::NodeKind::Break;
         ir::Block then_block;
+        brk.loc = loc_;
         brk.loc.line = line_;
         then_block.push_back(brk);
         emit_if(nc, std::move(then_block), {});

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -407,6 +408,106 @@ std::vector<int> stringification_lines(const std::string& src) {
             out.push_back(position_of(src, t.pos).line);
             break;
         }
+    }
+    return out;
+}
+
+}  // namespace glslrun::frontend
+
+namespace glslrun::frontend {
+
+std::vector<TokenPos> word_positions(const std::string& src, const std::vector<std::string>& words) {
+    std::vector<TokenPos> out;
+    bool any = false;
+    for (const std::string& w : words) any = any || src.find(w) != std::string::npos;
+    if (!any) return out;
+    for (const Token& t : lex(src))
+        if (t.kind == Token::Word && std::find(words.begin(), words.end(), t.text) != words.end())
+            out.push_back(position_of(src, t.pos));
+    return out;
+}
+
+}  // namespace glslrun::frontend
+
+namespace glslrun::frontend {
+namespace {
+
+// The first named structure definition nested in another one's braces:
+// {outer `struct` position, nested `struct` position, one past its `}`}.
+struct NestedStruct {
+    size_t outer, begin, end, name_end;
+};
+
+std::optional<NestedStruct> find_nested_struct(const std::vector<Token>& t) {
+    std::vector<std::pair<size_t, int>> open;  // enclosing definitions: `struct` position, brace depth inside
+    int depth = 0;
+    for (size_t i = 0; i < t.size(); ++i) {
+        if (t[i].text == "{") ++depth;
+        if (t[i].text == "}") {
+            --depth;
+            if (!open.empty() && depth < open.back().second) open.pop_back();
+        }
+        bool named_definition = t[i].text == "struct" && i + 2 < t.size() && t[i + 1].kind == Token::Word && t[i + 2].text == "{";
+        if (!named_definition) continue;
+        if (!open.empty()) {
+            int level = 0;
+            for (size_t k = i + 2; k < t.size(); ++k) {
+                if (t[k].text == "{") ++level;
+                else if (t[k].text == "}" && --level == 0)
+                    return NestedStruct{open.back().first, t[i].pos, t[k].pos + 1, t[i + 1].pos + t[i + 1].text.size()};
+            }
+            return std::nullopt;
+        }
+        open.emplace_back(t[i].pos, depth + 1);
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string hoist_nested_structs(const std::string& src) {
+    if (src.find("struct") == std::string::npos) return src;
+    std::string s = src;
+    for (int round = 0; round < 64; ++round) {
+        std::optional<NestedStruct> n = find_nested_struct(lex(s));
+        if (!n) break;
+        std::string definition = s.substr(n->begin, n->end - n->begin);
+        std::replace(definition.begin(), definition.end(), '\n', ' ');
+        std::string in_place = s.substr(n->begin, n->end - n->begin);
+        size_t name_at = n->name_end - n->begin;
+        std::string name = s.substr(n->begin, name_at);  // "struct NAME"
+        for (size_t k = 0; k < in_place.size(); ++k)
+            if (in_place[k] != '\n') in_place[k] = ' ';
+        std::string type = name.substr(name.find_last_of(" \t\n") + 1);
+        in_place.replace(0, type.size(), type);
+        s = s.substr(0, n->outer) + definition + "; " + s.substr(n->outer, n->begin - n->outer) + in_place + s.substr(n->end);
+    }
+    return s;
+}
+
+}  // namespace glslrun::frontend
+
+namespace glslrun::frontend {
+
+std::vector<DirectiveProblem> directive_problems(const std::string& src) {
+    std::vector<DirectiveProblem> out;
+    if (src.find('#') == std::string::npos) return out;
+    bool seen_code = false;
+    for (const Token& t : lex(src)) {
+        if (t.kind != Token::Directive) {
+            seen_code = true;
+            continue;
+        }
+        std::istringstream words(t.text.substr(1));
+        std::string directive, name;
+        words >> directive >> name;
+        name = name.substr(0, name.find('('));
+        int line = position_of(src, t.pos).line;
+        if ((directive == "define" || directive == "undef") &&
+            (name == "__LINE__" || name == "__FILE__" || name == "__VERSION__"))
+            out.push_back({line, "'#" + directive + "' : the predefined macro " + name + " cannot be redefined or undefined"});
+        if (directive == "extension" && seen_code)
+            out.push_back({line, "'#extension' : must come before any code that is not a preprocessor directive"});
     }
     return out;
 }

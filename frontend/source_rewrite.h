@@ -13,6 +13,13 @@ namespace glslrun::frontend {
 // non-compound body shadow the test's names. Braces give the spec's scoping.
 std::string brace_do_while_bodies(const std::string& src);
 
+// GLSL 1.10 §4.1.8 allows a named structure definition inside another one
+// (its name is scoped like the enclosing structure; GLSL 1.20 forbids it, as
+// Mesa reads both); glslang rejects it. For 1.10 units only.
+// Each nested definition moves, on one line, in front of the outermost
+// enclosing `struct`, leaving its name in place.
+std::string hoist_nested_structs(const std::string& src);
+
 // Mesa compatibility: backslash-newline line continuation is spliced in every
 // GLSL version, as Mesa's preprocessor does (glslang accepts it only from
 // GLSL 4.20, even inside a skipped #ifdef, and piglit relies on Mesa here).
@@ -36,6 +43,16 @@ std::string drop_float_suffixes(const std::string& src);
 // outside every #if/#ifdef are checked: one in a skipped region is legal.
 std::vector<int> stringification_lines(const std::string& src);
 
+// Directives GLSL 1.10 §3.3 forbids that glslang accepts: #define or #undef
+// of __LINE__, __FILE__, __VERSION__ (predefined; Mesa refuses too, and
+// define_predefined_macros relies on it), and #extension after code (the
+// default granularity is the whole shader, so it comes first).
+struct DirectiveProblem {
+    int line = 0;
+    std::string message;
+};
+std::vector<DirectiveProblem> directive_problems(const std::string& src);
+
 // Token-level views of the source for checks the AST cannot make (the AST
 // drops unary `+` and the type of an array-size expression). Positions are
 // 1-based lines and 0-based columns of the token's first character.
@@ -50,6 +67,8 @@ struct UnaryPlusOperand {
     bool call = false;
 };
 std::vector<UnaryPlusOperand> unary_plus_operands(const std::string& src);
+// Identifiers (outside comments and directives) that are one of `words`.
+std::vector<TokenPos> word_positions(const std::string& src, const std::vector<std::string>& words);
 // `[` directly holding nothing but a vector constructor: `[ivec2(2, 2)]`.
 std::vector<TokenPos> vector_constructor_subscripts(const std::string& src);
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "frontend/declaration_checks.h"
 #include "frontend/source_rewrite.h"
 
 namespace glslrun::frontend {
@@ -64,6 +65,14 @@ public:
     bool visitBinary(gl::TVisit, gl::TIntermBinary* n) override {
         if (is_assignment(n->getOp())) note_write(written_symbol(n->getLeft()), n->getLoc().line);
         if (n->getOp() == gl::EOpIndexDirect) check_constant_index(n);
+        return true;
+    }
+
+    // GLSL 1.10 §5.2: [] is the only operator on arrays, so ?: cannot
+    // choose between arrays (1.20 allows it; glslang allows it in 1.10).
+    bool visitSelection(gl::TVisit, gl::TIntermSelection* n) override {
+        if (n->getType().isArray() && unit_.getVersion() < 120)
+            error(n->getLoc().line, "'?:' : the operands cannot be arrays in GLSL 1.10");
         return true;
     }
 
@@ -171,9 +180,11 @@ void check_unit_rules(glslang::TIntermediate& unit, const std::string& text, con
     root->traverse(&checker);
     checker.finish();
     check_unary_plus(checker, text, file, out);
+    check_declarations(unit, text, file, out);
     // glslang takes the first component of a vector array size (or index).
     for (int line : stringification_lines(text))
         out.push_back(Diagnostic{file, line, "'#' : the stringification operator is not supported in GLSL", false});
+    for (const DirectiveProblem& d : directive_problems(text)) out.push_back(Diagnostic{file, d.line, d.message, false});
     for (const TokenPos& p : vector_constructor_subscripts(text))
         out.push_back(Diagnostic{file, p.line, "array size or index must be a scalar integer expression", false});
 }

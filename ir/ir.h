@@ -82,8 +82,12 @@ struct TexInfo {
 };
 inline constexpr uint32_t kTexResults = 4;
 
+// Where a node comes from: the line (and column, 0 when glslang gives none)
+// in source `source` of its stage (an index into Shader::sources).
 struct SourceLoc {
     int line = 0;
+    uint16_t column = 0;
+    uint16_t source = 0;
 };
 
 enum class NodeKind : uint8_t {
@@ -125,6 +129,17 @@ struct Binding {
 
 enum class Stage : uint8_t { Vertex, Fragment };
 
+// A GLSL variable held in registers (debugging: trace, --find-nan): `count`
+// registers from `first`, declared in `function` ("" for globals). Valid
+// until ir/regalloc.cpp renumbers the registers, which clears the list.
+struct Variable {
+    std::string name;
+    std::string function;
+    std::string type;  // GLSL type: "vec3", "mat4", "float[4]"
+    Reg first = kNoReg;
+    uint32_t count = 0;
+};
+
 struct Shader {
     Stage stage = Stage::Vertex;
     std::vector<Kind> regs;  // kind of every register; size = register count
@@ -137,6 +152,8 @@ struct Shader {
     std::vector<Binding> outputs;     // read by the caller after running
     bool uses_derivatives = false;
     bool uses_discard = false;
+    std::vector<std::string> sources;   // names of the stage's sources (SourceLoc::source)
+    std::vector<Variable> variables;    // until regalloc
 };
 
 // Base type of a uniform leaf (GL's glGetActiveUniform view).

@@ -54,19 +54,29 @@ std::string instr_text(const Instr& in) {
     return s;
 }
 
+// " ; 12:5" (source 0) or " ; s1:12" (another source of the stage): where
+// the node comes from; nothing for nodes without a line.
+std::string loc_text(const SourceLoc& loc) {
+    if (loc.line <= 0) return {};
+    std::string source = loc.source ? fmt::format("s{}:", loc.source) : std::string();
+    std::string column = loc.column ? fmt::format(":{}", loc.column) : std::string();
+    return fmt::format(" ; {}{}{}", source, loc.line, column);
+}
+
 void print_block(std::string& out, const Block& block, int depth);
 
 void print_node(std::string& out, const Node& n, int depth) {
     std::string pad(size_t(depth) * 2, ' ');
+    std::string at = loc_text(n.loc) + "\n";
     switch (n.kind) {
-    case NodeKind::Instr: out += pad + instr_text(n.instr) + "\n"; return;
-    case NodeKind::Break: out += pad + "break\n"; return;
-    case NodeKind::Continue: out += pad + "continue\n"; return;
-    case NodeKind::Return: out += pad + "return\n"; return;
-    case NodeKind::Discard: out += pad + "discard\n"; return;
-    case NodeKind::Call: out += pad + fmt::format("call @{}\n", n.callee); return;
+    case NodeKind::Instr: out += pad + instr_text(n.instr) + at; return;
+    case NodeKind::Break: out += pad + "break" + at; return;
+    case NodeKind::Continue: out += pad + "continue" + at; return;
+    case NodeKind::Return: out += pad + "return" + at; return;
+    case NodeKind::Discard: out += pad + "discard" + at; return;
+    case NodeKind::Call: out += pad + fmt::format("call @{}", n.callee) + at; return;
     case NodeKind::If:
-        out += pad + fmt::format("if {} {{\n", reg_name(n.cond));
+        out += pad + fmt::format("if {} {{", reg_name(n.cond)) + at;
         print_block(out, n.body, depth + 1);
         if (!n.alt.empty()) {
             out += pad + "} else {\n";
@@ -75,7 +85,7 @@ void print_node(std::string& out, const Node& n, int depth) {
         out += pad + "}\n";
         return;
     case NodeKind::Loop:
-        out += pad + "loop {\n";
+        out += pad + "loop {" + at;
         print_block(out, n.body, depth + 1);
         if (!n.alt.empty()) {
             out += pad + "} continue {\n";
@@ -84,7 +94,7 @@ void print_node(std::string& out, const Node& n, int depth) {
         out += pad + "}\n";
         return;
     case NodeKind::Scope:
-        out += pad + "scope {\n";
+        out += pad + "scope {" + at;
         print_block(out, n.body, depth + 1);
         out += pad + "}\n";
         return;
@@ -106,6 +116,7 @@ void print_bindings(std::string& out, const char* what, const std::vector<Bindin
 std::string print(const Shader& shader) {
     std::string out = shader.stage == Stage::Vertex ? "vertex shader\n" : "fragment shader\n";
     out += fmt::format("registers {}\n", shader.regs.size());
+    for (size_t i = 0; i < shader.sources.size(); ++i) out += fmt::format("source s{} {}\n", i, shader.sources[i]);
     print_bindings(out, "in", shader.inputs);
     print_bindings(out, "out", shader.outputs);
     for (size_t i = 0; i < shader.functions.size(); ++i) {

@@ -199,6 +199,7 @@ void allocate_registers(Shader& shader) {
     for (auto* list : {&shader.inputs, &shader.outputs})
         for (Binding& b : *list) b.first = map[b.first];
     shader.regs = std::move(kinds);
+    shader.variables.clear();  // their registers are shared now
 }
 
 }  // namespace glslrun::ir

@@ -3,7 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <map>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,7 +13,7 @@ namespace glslrun::python {
 namespace {
 
 using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
-using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // The declaration `name` sets: "arr[2]" is an element of "arr", "s[1].f" a leaf of its own.
 const UniformInfo* find_declaration(const std::vector<UniformInfo>& infos, std::string name) {
@@ -40,16 +40,18 @@ void set_uniform(Program& program, const std::string& name, const py::object& va
         if (!values) throw py::type_error("uniform '" + name + "' takes numbers");
         check(program.set_uniform(name, std::span<const float>(values.data(), size_t(values.size()))));
     } else {
-        // bool and sampler uniforms take ints; Python bools and whole floats convert.
-        FloatArray exact = FloatArray::ensure(value);
-        if (!exact) throw py::type_error("uniform '" + name + "' takes numbers");
-        std::vector<int32_t> ints(size_t(exact.size()));
+        // int, bool and sampler uniforms take whole numbers (Python bools too).
+        DoubleArray numbers = DoubleArray::ensure(value);
+        if (!numbers) throw py::type_error("uniform '" + name + "' takes numbers");
+        std::vector<int32_t> ints(size_t(numbers.size()));
         for (size_t i = 0; i < ints.size(); ++i) {
-            float f = exact.data()[i];
-            if (f != float(int32_t(f)))
-                throw ErrorException{Error("uniform '" + name + "' is " + u->type + "; " + std::to_string(f) +
-                                           " is not an integer")};
-            ints[i] = int32_t(f);
+            double d = numbers.data()[i];
+            if (!(d >= INT32_MIN && d <= INT32_MAX) || d != double(int32_t(d))) {
+                std::string number = py::str(py::float_(d));
+                throw ErrorException{Error("uniform '" + name + "' is " + u->type + "; " + number +
+                                           " is not a 32-bit integer")};
+            }
+            ints[i] = int32_t(d);
         }
         check(program.set_uniform(name, std::span<const int32_t>(ints)));
     }
@@ -86,13 +88,34 @@ py::dict to_dict(const std::vector<ShaderOutput>& outputs, uint32_t count) {
     return out;
 }
 
-py::dict run_batch(const Program& program, const py::dict& inputs, uint32_t count, bool vertices) {
+// The state one object of `scene` is drawn with (matrices, lights, material,
+// textures, the scene's and the object's uniforms), applied to the program
+// as a draw would apply it.
+GLState object_state(Program& program, const scene::Scene& scene, size_t object) {
+    if (object >= scene.objects.size())
+        throw py::index_error("the scene has " + std::to_string(scene.objects.size()) + " objects");
+    const scene::Object& o = scene.objects[object];
+    GLState gl = scene::object_gl_state(scene, take(scene::bind_scene_textures(scene)), o);
+    check(scene::apply_uniforms(program, scene.uniforms));
+    check(scene::apply_uniforms(program, o.uniforms));
+    check(apply_builtin_uniforms(program, gl));
+    return gl;
+}
+
+py::dict run_batch(Program& program, const py::dict& inputs, uint32_t count, const scene::Scene* scene,
+                   size_t object, bool vertices) {
     std::vector<VertexAttrib> attribs = to_attribs(inputs, count);
     if (count == 0) throw py::value_error("nothing to run: no inputs and no count");
+    GLState gl;  // GL's defaults: identity matrices, ...
+    if (scene)
+        gl = object_state(program, *scene, object);
+    else
+        check(apply_builtin_uniforms(program, gl));
     std::vector<ShaderOutput> outputs;
     {
         py::gil_scoped_release release;
-        outputs = take(vertices ? run_vertices(program, attribs, count) : run_fragments(program, attribs, count));
+        outputs = take(vertices ? run_vertices(program, attribs, count, &gl)
+                                : run_fragments(program, attribs, count, &gl));
     }
     return to_dict(outputs, count);
 }
@@ -161,15 +184,20 @@ void bind_program(py::module_& m) {
         .def("dump_ir", &Program::dump_ir)
         .def(
             "run_vertices",
-            [](const Program& p, const py::dict& inputs, uint32_t count) { return run_batch(p, inputs, count, true); },
-            py::arg("inputs"), py::arg("count") = 0,
-            "Runs the vertex shader on arrays {attribute: (count, components)}; returns {output: array}.")
+            [](Program& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
+                return run_batch(p, inputs, count, scene, object, true);
+            },
+            py::arg("inputs"), py::arg("count") = 0, py::arg("scene") = nullptr, py::arg("object") = 0,
+            "Runs the vertex shader on arrays {attribute: (count, components)}; returns {output: array}. "
+            "With a scene, in the state its object number `object` is drawn with; else in GL's defaults.")
         .def(
             "run_fragments",
-            [](const Program& p, const py::dict& inputs, uint32_t count) { return run_batch(p, inputs, count, false); },
-            py::arg("inputs"), py::arg("count") = 0,
+            [](Program& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
+                return run_batch(p, inputs, count, scene, object, false);
+            },
+            py::arg("inputs"), py::arg("count") = 0, py::arg("scene") = nullptr, py::arg("object") = 0,
             "Runs the fragment shader on arrays {input: (count, components)} in 2x2 quads; returns {output: "
-            "array}, with 'discarded'.");
+            "array}, with 'discarded'. `scene` and `object` as for run_vertices.");
 }
 
 }  // namespace

@@ -138,7 +138,8 @@ void bind_scene(py::module_& m) {
     m.def(
         "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"));
     m.def(
-        "write_png", [](const py::object& image, const std::string& path) { check(scene::write_png(to_image(image), path)); },
+        "write_png",
+        [](const py::object& image, const std::string& path) { check(scene::write_png(to_image(image), path)); },
         py::arg("image"), py::arg("path"));
     m.def("compare_images", &compare, py::arg("reference"), py::arg("actual"), py::arg("tolerance") = 1,
           "Per-channel differences of two H x W x 4 uint8 images (as glslrun --compare).");

@@ -94,6 +94,8 @@ double signed_area(const FsVertex* poly, size_t n) {
 
 void bin(SetupOut& out, const FsPrimitive& p, const Rect& bounds) {
     out.prims.push_back(p);
+    out.prims.back().primitive = out.current_primitive;
+    out.prims.back().vertex_ids = out.current_ids;
     out.bounds.push_back(bounds);
 }
 
@@ -107,6 +109,8 @@ void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const
     if (small) p.cover = *small;
     p.v = {v0, v1, v2};
     p.front = front;
+    p.primitive = out.current_primitive;
+    p.vertex_ids = out.current_ids;
     set_triangle_planes(p, setup);
     out.bounds.push_back(setup.bbox);
 }
@@ -295,6 +299,8 @@ void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<Assembl
     for (size_t i = begin; i < end; ++i) {
         const AssembledPrim& p = assembled[i];
         std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
+        out.current_primitive = uint32_t(i);
+        out.current_ids = ids;
         if (p.count == 3) {
             ++out.triangles;
             draw_triangle(c, out, ids, id(p.provoking));
@@ -363,6 +369,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     if (Status st = exec::shade_vertices(program, attribs, vertex_count, gl, scratch.shaded); !st)
         return st.error();
     stats.vertex_seconds = seconds_since(start);
+    if (raster::DrawProbe* probe = state_of(program).probe)
+        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded});
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = state_of(program).ir.vertex;

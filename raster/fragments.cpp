@@ -123,7 +123,14 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     depth_out_ = find_binding(fs.outputs, {"gl_FragDepth"});
     // Without discard or gl_FragDepth the depth test cannot depend on the
     // shader, so it runs before shading and culls hidden quads.
-    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_;
+    // The shader debugger sees every fragment shaded: the late test gives the
+    // same image (the same tests in the same order), only with more shading.
+    probe_ = st.probe;
+    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !probe_;
+}
+
+ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
+    return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
 }
 
 FragmentStage::~FragmentStage() = default;
@@ -250,6 +257,8 @@ void FragmentStage::flush() {
     fill_inputs(w);
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
     rt::RunError run_error;
+    if (probe_) [[unlikely]]
+        probe_->before_run(probe_batch(covered_));
     bool ok = interp_->run(live, &run_error);
     rt::LaneMask covered = covered_;
     covered_ = 0;
@@ -258,13 +267,19 @@ void FragmentStage::flush() {
         error_ = exec::run_error(state_of(program_), ir::Stage::Fragment, run_error);
         return;
     }
-    write_outputs(covered);
+    if (probe_) [[unlikely]]
+        probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered));
+    else
+        write_outputs<false>(covered);
     quads_ = 0;
 }
 
 // Depth test (unless done early) and colour writes over the batch, in lane
 // order: two quads of the batch may cover the same pixel.
-void FragmentStage::write_outputs(rt::LaneMask covered) {
+// kProbed: returns the lanes written (alive, and passing the depth test), for
+// the probe; without it, 0 (no work for it per lane).
+template <bool kProbed>
+rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
     rt::Interpreter& in = *interp_;
     int lanes = quads_ * 4;
     shaded_ += uint64_t(std::popcount(covered));
@@ -278,6 +293,7 @@ void FragmentStage::write_outputs(rt::LaneMask covered) {
     uint32_t channels = color_out_ ? std::min<uint32_t>(4, color_out_->count) : 0;
     for (uint32_t k = 0; k < channels; ++k) load_lanes(in, color_out_->kind, color_out_->first + k, rgba[k], lanes);
     bool late_depth = gl_.depth_test && !early_depth_;
+    rt::LaneMask written = 0;
     for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         size_t pixel = size_t(lane_y_[lane]) * fb_.width + lane_x_[lane];
@@ -286,11 +302,13 @@ void FragmentStage::write_outputs(rt::LaneMask covered) {
             fb_.depth[pixel] = z[size_t(lane)];
         }
         ++written_;
+        if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
         if (!color_out_) continue;
         // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
         float* dst = &fb_.color[pixel * 4];
         for (size_t k = 0; k < 4; ++k) dst[k] = fb_.float_color ? rgba[k][size_t(lane)] : quantize_unorm8(rgba[k][size_t(lane)]);
     }
+    return written;
 }
 
 }  // namespace glslrun::raster

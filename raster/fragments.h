@@ -11,6 +11,7 @@
 
 #include "glslrun/glslrun.h"
 #include "ir/ir.h"
+#include "raster/probe.h"
 #include "raster/triangle.h"
 #include "runtime/interpreter.h"
 
@@ -44,6 +45,10 @@ struct FsPrimitive {
     // Triangles: the coverage of a small one; mask 0 for the others, which
     // tiles set up again (small triangles that cover nothing are not kept).
     SmallCoverage cover;
+    // Which primitive of the draw (raster/assemble.h's order) and the
+    // indices of its vertices, for the shader debugger (raster/probe.h).
+    uint32_t primitive = 0;
+    std::array<uint32_t, 3> vertex_ids{};
 };
 
 void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& setup);
@@ -90,7 +95,9 @@ private:
     void interpolate(uint32_t attr, const Weights& w, Lanes& v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
     void fill_inputs(const Weights& w);
-    void write_outputs(rt::LaneMask covered);
+    template <bool kProbed>
+    rt::LaneMask write_outputs(rt::LaneMask covered);
+    ProbeBatch probe_batch(rt::LaneMask covered);
 
     const Program& program_;
     const GLState& gl_;
@@ -109,6 +116,7 @@ private:
     rt::LaneMask covered_ = 0;
     uint64_t shaded_ = 0, written_ = 0;
     std::optional<Error> error_;
+    DrawProbe* probe_ = nullptr;
 };
 
 }  // namespace glslrun::raster

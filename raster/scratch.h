@@ -22,6 +22,9 @@ struct SetupOut {
     std::vector<FsPrimitive, HugePageAllocator<FsPrimitive>> prims;
     std::vector<Rect> bounds;  // per primitive: the pixels it may cover
     uint64_t triangles = 0;
+    // The primitive being set up and its vertices (FsPrimitive::primitive).
+    uint32_t current_primitive = 0;
+    std::array<uint32_t, 3> current_ids{};
 
     void clear() {
         arena.clear();

@@ -154,6 +154,25 @@ std::optional<Error> shade_range(rt::Interpreter& interp, const Program::State& 
 
 }  // namespace
 
+Result<std::vector<std::vector<uint32_t>>> vertex_input_words(const ir::Shader& shader,
+                                                               const std::vector<VertexAttrib>& attribs,
+                                                               uint32_t count, const GLState& current,
+                                                               uint32_t element) {
+    if (element >= count) return Error(fmt::format("vertex {} is out of range ({} vertices)", element, count));
+    auto plan = plan_inputs(shader, attribs, count, current);
+    if (!plan) return plan.error();
+    std::vector<std::vector<uint32_t>> words;
+    for (const InputSource& src : *plan) {
+        std::vector<uint32_t>& w = words.emplace_back();
+        for (uint32_t c = 0; c < src.binding->count; ++c) {
+            float v = default_component(c, src.fallback);
+            if (src.attrib && c < src.attrib->components) v = src.attrib->data[size_t(element) * src.attrib->components + c];
+            w.push_back(to_bits(src.binding->kind, v));
+        }
+    }
+    return words;
+}
+
 // Every vertex of the arrays is shaded exactly once, and primitives refer to
 // the shaded copies by index: for indexed meshes this is the post-transform
 // cache, one that never misses. Large draws shade jobs of vertices on

@@ -24,6 +24,14 @@ struct VertexOutputs {
 Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs, uint32_t count,
                       const GLState& current, VertexOutputs& out);
 
+// The words (one per component, in the register's kind) that vertex
+// `element` gives each of `shader`'s inputs, in shader.inputs' order, as
+// shade_vertices fills them (the shader debugger replays one vertex).
+Result<std::vector<std::vector<uint32_t>>> vertex_input_words(const ir::Shader& shader,
+                                                               const std::vector<VertexAttrib>& attribs,
+                                                               uint32_t count, const GLState& current,
+                                                               uint32_t element);
+
 // An interpreter failure (loop cap) as a user-facing error.
 Error run_error(const Program::State& state, ir::Stage stage, const rt::RunError& error);
 

@@ -3,6 +3,9 @@
 // flow recursively and masks lanes off (runtime/exec_mask.h).
 #include "runtime/interpreter.h"
 
+#include "runtime/traced_interpreter.h"
+
+#include <bit>
 #include <cstring>
 #include <new>
 #include <optional>
@@ -42,7 +45,9 @@ struct Range {
 
 // The interpreter over register words W (interp_kernels.h): one copy of the
 // control-flow code serves the fp32 modes (uint32_t) and Reference (uint64_t).
-template <class W>
+// kTraced instantiates it a second time with calls to a TraceHook
+// (runtime/traced_interpreter.h); the untraced core has no trace code at all.
+template <class W, bool kTraced = false>
 struct Core {
     size_t reg_count;  // the shader itself is not kept: Steps hold everything
     RunLimits limits;
@@ -60,16 +65,37 @@ struct Core {
     std::vector<Range> functions;
     Range main;
     RunError error;
+    uint32_t current = 0;  // traced only: the Step of the If or Loop being entered
     bool failed = false;
     int call_depth = 0;
     bool avx2 = cpu_has_avx2();
     Precision precision;
     uint32_t fast_ops;
+    // Traced only: the hook, and the IR node of every Step.
+    TraceHook* hook = nullptr;
+    std::vector<const ir::Node*> nodes;
+
+    struct Reader final : LaneReader {
+        Core* core;
+        explicit Reader(Core* c) : core(c) {}
+        LaneValue read(ir::Reg r, int lane) const override {
+            ir::Kind kind = r < core->kinds.size() ? core->kinds[r] : ir::Kind::I32;
+            W word = core->reg(r)[lane];
+            LaneValue v{kind, 0, 0, sizeof(W) != sizeof(uint32_t)};
+            if (kind != ir::Kind::F32) v.i = int32_t(uint32_t(word));
+            else if constexpr (sizeof(W) == sizeof(uint32_t)) v.f = std::bit_cast<float>(word);
+            else v.f = std::bit_cast<double>(word);
+            return v;
+        }
+    };
+    std::vector<ir::Kind> kinds;  // traced only: of every register
+    Reader reader{this};
 
     Core(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
-         Precision precision, uint32_t fast_ops = kAllFastOps)
+         Precision precision, uint32_t fast_ops = kAllFastOps, TraceHook* trace_hook = nullptr)
         : reg_count(s.regs.size()), limits(limits), file((s.regs.size() + 1) * kLanes),
-          precision(precision), fast_ops(fast_ops) {
+          precision(precision), fast_ops(fast_ops), hook(trace_hook) {
+        if constexpr (kTraced) kinds = s.regs;
         machine.regs = file.data;
         machine.uniforms = uniforms;
         machine.textures = textures;
@@ -106,7 +132,9 @@ struct Core {
     Range compile_block(const ir::Block& block) {
         Range range{uint32_t(steps.size()), uint32_t(steps.size() + block.size())};
         steps.resize(range.end);
+        if constexpr (kTraced) nodes.resize(range.end);
         for (size_t i = 0; i < block.size(); ++i) {
+            if constexpr (kTraced) nodes[range.begin + i] = &block[i];
             Step<W> step = compile_node(block[i]);
             steps[range.begin + i] = step;
         }
@@ -187,7 +215,12 @@ struct Core {
             // Instructions dominate: a predictable branch, not the switch's jump table.
             if (s.kind == ir::NodeKind::Instr) [[likely]] {
                 s.fn(s, machine);
+                if constexpr (kTraced) hook->instr(*nodes[i], mask.active(), reader);
                 continue;
+            }
+            if constexpr (kTraced) {
+                if (s.kind != ir::NodeKind::If && s.kind != ir::NodeKind::Loop) hook->jump(*nodes[i], mask.active());
+                current = i;
             }
             switch (s.kind) {
             case ir::NodeKind::Instr: break;
@@ -209,6 +242,8 @@ struct Core {
                 if (!run_call(s.body_begin, s.body_end, s.line)) return false;
                 break;
             }
+            if constexpr (kTraced)
+                if (s.kind == ir::NodeKind::Call || s.kind == ir::NodeKind::Scope) hook->leave(*nodes[i]);
             if (!mask.any()) return true;
         }
         return true;
@@ -231,6 +266,7 @@ struct Core {
     // A branch whose mask is empty is skipped entirely.
     bool run_if(const Step<W>& s) {
         ExecMask& mask = machine.mask;
+        if constexpr (kTraced) hook->branch(*nodes[current], mask.active(), lanes_true(s.cond) & mask.active());
         ExecMask::IfFrame frame = mask.if_push(lanes_true(s.cond));
         if (mask.any() && !run_block(s.body_begin, s.body_end)) return false;
         mask.if_else(frame);
@@ -242,7 +278,10 @@ struct Core {
     bool run_loop(const Step<W>& s) {
         ExecMask& mask = machine.mask;
         ExecMask::LoopFrame frame = mask.loop_begin();
-        for (;;) {
+        [[maybe_unused]] const ir::Node* node = nullptr;
+        if constexpr (kTraced) node = nodes[current];
+        for ([[maybe_unused]] uint64_t iteration = 0;; ++iteration) {
+            if constexpr (kTraced) hook->loop_iteration(*node, iteration, mask.active());
             if (loop_iterations_left-- == 0)
                 return fail(fmt::format("loop exceeded {} iterations", limits.max_loop_iterations), s.line);
             if (!run_block(s.body_begin, s.body_end)) return false;
@@ -292,11 +331,12 @@ public:
 
 namespace {
 
+template <bool kTraced>
 class Narrow final : public Engine {
 public:
     Narrow(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
-           Precision precision, uint32_t fast_ops)
-        : core_(s, uniforms, limits, textures, precision, fast_ops) {}
+           Precision precision, uint32_t fast_ops, TraceHook* hook = nullptr)
+        : core_(s, uniforms, limits, textures, precision, fast_ops, hook) {}
     uint32_t* lanes(ir::Reg r) override { return core_.reg(r); }
     bool run(LaneMask live, RunError* error) override {
         ir::FlushDenormals ftz;
@@ -307,15 +347,17 @@ public:
     LaneMask alive() const override { return core_.machine.mask.alive(); }
 
 private:
-    Core<uint32_t> core_;
+    Core<uint32_t, kTraced> core_;
 };
 
 // Reference mode: the shader runs on doubles; callers exchange 32-bit words
 // through `boundary_`, converted only for the shader's inputs and outputs.
+template <bool kTraced>
 class Wide final : public Engine {
 public:
-    Wide(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures)
-        : core_(s, uniforms, limits, textures, Precision::Reference), boundary_((s.regs.size() + 1) * kLanes),
+    Wide(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
+         TraceHook* hook = nullptr)
+        : core_(s, uniforms, limits, textures, Precision::Reference, kAllFastOps, hook), boundary_((s.regs.size() + 1) * kLanes),
           inputs_(s.inputs), outputs_(s.outputs) {}
     uint32_t* lanes(ir::Reg r) override {
         if (r == ir::kNoReg || r >= core_.reg_count) return boundary_.data + core_.reg_count * kLanes;
@@ -343,7 +385,7 @@ public:
     LaneMask alive() const override { return core_.machine.mask.alive(); }
 
 private:
-    Core<uint64_t> core_;
+    Core<uint64_t, kTraced> core_;
     AlignedWords<uint32_t> boundary_;
     std::vector<ir::Binding> inputs_, outputs_;
 };
@@ -353,9 +395,9 @@ private:
 Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, const RunLimits& limits,
                          const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops) {
     if (precision == Precision::Reference)
-        engine_ = std::make_unique<Wide>(shader, uniforms, limits, textures);
+        engine_ = std::make_unique<Wide<false>>(shader, uniforms, limits, textures);
     else
-        engine_ = std::make_unique<Narrow>(shader, uniforms, limits, textures, precision, fast_ops);
+        engine_ = std::make_unique<Narrow<false>>(shader, uniforms, limits, textures, precision, fast_ops);
 }
 
 Interpreter::~Interpreter() = default;
@@ -365,5 +407,33 @@ uint32_t* Interpreter::lanes(ir::Reg r) { return engine_->lanes(r); }
 bool Interpreter::run(LaneMask live, RunError* error) { return engine_->run(live, error); }
 
 LaneMask Interpreter::alive() const { return engine_->alive(); }
+
+}  // namespace glslrun::rt
+
+namespace glslrun::rt {
+
+class TracedEngine {
+public:
+    std::unique_ptr<Engine> engine;
+};
+
+TracedInterpreter::TracedInterpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+                                     const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops,
+                                     TraceHook& hook)
+    : engine_(std::make_unique<TracedEngine>()) {
+    if (precision == Precision::Reference)
+        engine_->engine = std::make_unique<Wide<true>>(shader, uniforms, max_loop_iterations, textures, &hook);
+    else
+        engine_->engine = std::make_unique<Narrow<true>>(shader, uniforms, max_loop_iterations, textures, precision,
+                                                         fast_ops, &hook);
+}
+
+TracedInterpreter::~TracedInterpreter() = default;
+
+uint32_t* TracedInterpreter::lanes(ir::Reg r) { return engine_->engine->lanes(r); }
+
+bool TracedInterpreter::run(LaneMask live, RunError* error) { return engine_->engine->run(live, error); }
+
+LaneMask TracedInterpreter::alive() const { return engine_->engine->alive(); }
 
 }  // namespace glslrun::rt

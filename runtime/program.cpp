@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "ir/passes.h"
 #include "frontend/compile.h"
+#include "ir/passes.h"
 #include "runtime/program_state.h"
 
 namespace glslrun {

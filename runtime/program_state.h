@@ -12,6 +12,7 @@
 #include "ir/ir.h"
 
 namespace glslrun {
+namespace raster { class DrawProbe; }
 
 struct Program::State {
     ir::Program ir;
@@ -26,6 +27,8 @@ struct Program::State {
     uint32_t fast_ops = ~0u;
     // Set while a draw or set_uniform runs (ProgramUse).
     std::atomic<bool> busy{false};
+    // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
+    raster::DrawProbe* probe = nullptr;
 };
 
 inline Program::State& state_of(Program& program) { return *program.state_; }

@@ -41,6 +41,9 @@ struct Diagnostic {
 
 struct Error {
     std::vector<Diagnostic> diagnostics;
+    // The input is GLSL of a version or profile glslrun does not run (it
+    // runs GLSL 1.10 and 1.20): refused before anything else, never compiled.
+    bool unsupported_version = false;
     Error() = default;
     explicit Error(std::string message, std::string file = {}, int line = 0);
     std::string str() const;  // one diagnostic per line

@@ -138,6 +138,23 @@ def test_uniforms_and_vertex_batches():
     np.testing.assert_allclose(out["v_weight"][:, 0], [2.0, -2.0, 0.5])
 
 
+def test_vertex_batches_in_a_scenes_state():
+    program = glslrun.Program.from_files(path("shaders", "colors.vert"), path("shaders", "colors.frag"))
+    points = np.array([[0, 0, 0, 1], [1, 1, 0, 1], [0, 0, -1, 1]], dtype=np.float32)
+    plain = program.run_vertices({"gl_Vertex": points})
+    np.testing.assert_array_equal(plain["gl_Position"], points)  # GL's identity matrices
+    # scenes/quad.toml: gluLookAt from (0, 0, 5), gluPerspective(45, 1, 1, 100).
+    scene = glslrun.Scene.load(path("scenes", "quad.toml"))
+    clip = program.run_vertices({"gl_Vertex": points}, scene=scene)["gl_Position"]
+    f = 1 / np.tan(np.radians(22.5))
+    eye_z = np.array([-5.0, -5.0, -6.0])
+    np.testing.assert_allclose(clip[:, 3], -eye_z, rtol=1e-6)  # w = -z in eye space
+    np.testing.assert_allclose(clip[:, 0], f * points[:, 0], rtol=1e-6, atol=1e-6)
+    np.testing.assert_allclose(clip[:, 2], (101 * eye_z + 200) / -99, rtol=1e-5)
+    with pytest.raises(IndexError):
+        program.run_vertices({"gl_Vertex": points}, scene=scene, object=1)
+
+
 def test_fragment_batches_with_int_bool_and_array_uniforms():
     program = glslrun.Program.compile(VS, FS)
     program.set_uniform("table", np.array([0.25, 0.5, 0.75]))
@@ -161,8 +178,10 @@ def test_uniform_mistakes_are_errors():
         program.set_uniform("nope", 1.0)
     with pytest.raises(glslrun.Error, match="components"):
         program.set_uniform("offset", [1.0, 2.0])
-    with pytest.raises(glslrun.Error, match="not an integer"):
+    with pytest.raises(glslrun.Error, match="1.5 is not a 32-bit integer"):
         program.set_uniform("mode", 1.5)
+    with pytest.raises(glslrun.Error, match="not a 32-bit integer"):
+        program.set_uniform("mode", 2**31)
     with pytest.raises(glslrun.Error, match="precision"):
         program.precision = "exact"
     program.precision = "fast"

@@ -6,6 +6,7 @@
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
 //   glslrun batch JOBS                        many renders in one process
+//   glslrun trace --pixel X,Y a.vert a.frag scene.toml   the shader debugger (docs/debugging.md)
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
@@ -25,13 +26,14 @@
 #include "piglit_suite.h"
 #include "render_command.h"
 #include "scene/text_file.h"
+#include "trace_command.h"
 
 namespace {
 
 using namespace glslrun;
 namespace pg = glslrun::piglit;
 
-constexpr const char* kVersion = "glslrun 0.1 (GLSL 1.10/1.20 on the CPU)";
+constexpr const char* kVersion = "glslrun " GLSLRUN_VERSION_STRING " (GLSL 1.10/1.20 on the CPU)";
 
 // --precision NAME, for rendering and for `glslrun test`; a bad name is a usage error.
 void add_precision_option(CLI::App& app, Precision& precision) {
@@ -274,6 +276,8 @@ int main(int argc, char** argv) {
     try {
         if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
         if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
+        if (argc >= 2 && std::string_view(argv[1]) == "trace")
+            return glslrun::cli::trace_main(argc - 1, argv + 1, add_precision_option);
         return program_cli(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fputs("glslrun: error: out of memory\n", stderr);

@@ -120,6 +120,7 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
     CompileOptions copts;
     copts.default_version = test_.require.glsl_version;
     auto prog = Program::compile(vs, fs, copts);
+    if (!prog && prog.error().unsupported_version) return skip(prog.error().diagnostics.front().str());
     if (prog) {
         program_.emplace(std::move(prog.value()));
         if (options_.max_loop_iterations) program_->exec.max_loop_iterations = options_.max_loop_iterations;
@@ -418,10 +419,12 @@ TestResult run_parser_test(const std::string& text, const std::string& ext, cons
     if (t.check_link) {  // glslparsertest links the shader alone into a program
         std::vector<ShaderSource> one{src}, none;
         auto prog = stage == Stage::Vertex ? Program::compile(one, none) : Program::compile(none, one);
+        if (!prog && prog.error().unsupported_version) return skip(prog.error().diagnostics.front().str());
         ok = prog.ok();
         if (!ok) log = prog.error().str();
     } else {
         auto st = check_shader(stage, src, 110);  // the file is compiled as written
+        if (!st && st.error().unsupported_version) return skip(st.error().diagnostics.front().str());
         ok = st.ok();
         if (!ok) log = st.error().str();
     }

@@ -3,6 +3,7 @@
 #include "render_command.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "error_report_command.h"
+#include "debug/recorder.h"
 #include "ir/ir.h"
 #include "runtime/program_state.h"
 #include "scene/bench_report.h"
@@ -36,11 +38,7 @@ int fail(const Error& e, int status = 1) {
     return status;
 }
 
-// The files on the command line, sorted by their extensions.
-struct Inputs {
-    std::vector<ShaderSource> vertex, fragment;
-    std::string scene, image;
-};
+}  // namespace
 
 Result<Inputs> classify(const std::vector<std::string>& files) {
     Inputs in;
@@ -65,6 +63,8 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
     return in;
 }
 
+namespace {
+
 Result<std::pair<int, int>> parse_size(const std::string& text) {
     int width = 0, height = 0;
     char x = 0, extra = 0;
@@ -79,12 +79,36 @@ std::string default_output(const Inputs& in) {
     return fmt::format("{}-{}.png", program, fs::path(in.scene).stem().string());
 }
 
-std::string join_builtins(const Program& prog) {
-    std::string list;
-    auto add = [&](const std::string& name) { list += (list.empty() ? "" : ", ") + name; };
-    for (const UniformInfo& u : prog.uniforms())
-        if (u.builtin && u.read) add(u.array_size > 1 ? fmt::format("{}[{}]", u.name, u.array_size) : u.name);
-    return list.empty() ? "none" : list;
+// The built-in uniforms read with their values, one per line (matrices one
+// row per line), wrapped to `width` columns.
+std::string builtin_values(const Program& prog, size_t width) {
+    std::string out;
+    const std::string indent(25, ' ');
+    for (const ir::Uniform& u : state_of(prog).ir.uniforms) {
+        if (!u.builtin || !u.read) continue;
+        debug::NamedValue v = debug::uniform_value(u, state_of(prog).uniforms.data());
+        std::vector<std::string> lines = debug::format_matrix_rows(v.value, v.type);
+        std::string head = (out.empty() ? "" : indent) + u.name + " =";
+        if (lines.size() > 1) out += head + "\n";  // a matrix: its rows below the name
+        for (size_t i = 0; i < lines.size(); ++i) {
+            std::string line = lines.size() > 1 ? indent + "  " + lines[i] : head + " " + lines[i];
+            while (line.size() > width && width > indent.size() + 8) {  // wrap at a space where possible
+                size_t cut = line.rfind(' ', width);
+                if (cut == std::string::npos || cut <= indent.size()) cut = width;
+                out += line.substr(0, cut) + "\n";
+                line = indent + "  " + line.substr(cut + (line[cut] == ' ' ? 1 : 0));
+            }
+            out += line + "\n";
+        }
+    }
+    return out.empty() ? "none\n" : out;
+}
+
+// $COLUMNS, else 100.
+size_t terminal_width() {
+    const char* columns = std::getenv("COLUMNS");
+    int n = columns ? std::atoi(columns) : 0;
+    return n >= 40 ? size_t(n) : 100;
 }
 
 std::string join_builtin_attributes(const Program& prog) {
@@ -121,7 +145,7 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
-    fmt::print("built-in uniforms read   {}\n", join_builtins(prog));
+    fmt::print("built-in uniforms read   {}", builtin_values(prog, terminal_width()));
     fmt::print("built-in attributes read {}\n", join_builtin_attributes(prog));
     fmt::print("textures     {}\n", describe_textures(scene));
 }
@@ -207,7 +231,8 @@ std::jthread warm_up_compiler(const Inputs& in) {
     }
 }
 
-// The scene file, with --size applied; its warnings are printed.
+}  // namespace
+
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
     if (!scene) return scene.error();
@@ -220,6 +245,8 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) 
     }
     return scene;
 }
+
+namespace {
 
 int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);

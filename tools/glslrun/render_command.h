@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "glslrun/glslrun.h"
+#include "glslrun/scene/scene.h"
 
 namespace glslrun::cli {
 
@@ -17,6 +18,15 @@ struct RenderOptions {
     bool stats = false, dump_ir = false;
     Precision precision = Precision::Precise;  // --precision
 };
+
+// The files on the command line, sorted by their extensions.
+struct Inputs {
+    std::vector<ShaderSource> vertex, fragment;
+    std::string scene, image;
+};
+Result<Inputs> classify(const std::vector<std::string>& files);
+// The scene file, with --size applied; its warnings are printed.
+Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
 
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for
 // --compare at most one PNG. Returns the process exit status.

@@ -1,0 +1,277 @@
+#include "debug/debugger.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "debug/recorder.h"
+#include "ir/passes.h"
+#include "raster/fragments.h"
+#include "raster/probe.h"
+#include "raster/triangle.h"
+#include "runtime/program_state.h"
+#include "glslrun/scene/render.h"
+
+namespace glslrun::debug {
+
+namespace {
+
+// The optimizer's value-changing decisions, with every variable kept: fold
+// and copyprop (whose common subexpressions decide which square roots only
+// divide, Fast's rsqrt) run as in ir/optimize.cpp, the variables' registers
+// count as outputs so dce keeps their writes, and sqrt_divisor runs last.
+// No inlining (calls stay calls, callees keep their variables' registers),
+// no dead_stores (every assignment stays visible), no hoist (no statement
+// moves out of its place), no regalloc (registers keep their variables).
+void optimize_keeping_variables(ir::Shader& shader) {
+    std::vector<ir::Binding> outputs = shader.outputs;
+    for (const ir::Variable& v : shader.variables)
+        if (v.count > 0) shader.outputs.push_back(ir::Binding{v.name, shader.regs[v.first], v.first, v.count});
+    for (int round = 0; round < 3; ++round) {
+        ir::fold_constants(shader);
+        ir::propagate_copies(shader);
+        ir::eliminate_dead_code(shader);
+    }
+    shader.outputs = std::move(outputs);
+    ir::mark_sqrt_divisors(shader);
+}
+
+}  // namespace
+
+Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
+                                      const std::vector<ShaderSource>& fragment, Precision precision) {
+    CompileOptions options;
+    options.optimize = false;
+    auto program = Program::compile(vertex, fragment, options);
+    if (!program) return program.error();
+    for (ir::Shader* s : {&state_of(*program).ir.vertex, &state_of(*program).ir.fragment}) {
+        optimize_keeping_variables(*s);
+        if (std::string problem = ir::verify(*s); !problem.empty())
+            return Error("internal error: the debugging program: " + problem);
+    }
+    program->exec.precision = precision;
+    return program;
+}
+
+namespace {
+
+using Words = std::vector<uint32_t>;
+
+// What a draw used: the replays need the same uniforms, textures and vertices.
+struct DrawSnapshot {
+    Words uniforms;
+    GLState gl;
+    std::vector<VertexAttrib> attribs;
+    uint32_t vertex_count = 0;
+    exec::VertexOutputs shaded;
+};
+
+// A fragment at the traced pixel, as the render saw it.
+struct Capture {
+    FragmentTrace info;
+    int lane = 0;
+    rt::LaneMask live = 0;
+    std::vector<std::pair<std::string, Words>> inputs;  // optimized input bindings: kLanes words per component
+};
+
+// One lane of a binding's registers, as the interpreter's callers see them (32-bit words).
+template <class Interp>
+NamedValue binding_value(const ir::Binding& b, Interp& in, int lane) {
+    NamedValue v{b.name, binding_type(b), {b.kind, false, {}}};
+    for (uint32_t c = 0; c < b.count; ++c) {
+        uint32_t w = in.lanes(b.first + c)[lane];
+        v.value.c.push_back(b.kind == ir::Kind::F32 ? double(std::bit_cast<float>(w)) : double(int32_t(w)));
+    }
+    return v;
+}
+
+template <class Interp>
+std::vector<NamedValue> outputs_of(const std::vector<ir::Binding>& outputs, Interp& in, int lane) {
+    std::vector<NamedValue> out;
+    for (const ir::Binding& b : outputs) out.push_back(binding_value(b, in, lane));
+    return out;
+}
+
+bool same_bits(const std::vector<NamedValue>& a, const std::vector<NamedValue>& b) {
+    for (const NamedValue& x : a)
+        for (const NamedValue& y : b)
+            if (x.name == y.name) {
+                if (x.value.c.size() != y.value.c.size()) return false;
+                for (size_t i = 0; i < x.value.c.size(); ++i)
+                    if (std::bit_cast<uint64_t>(x.value.c[i]) != std::bit_cast<uint64_t>(y.value.c[i])) return false;
+            }
+    return true;
+}
+
+// Runs one invocation of `shader` traced: `fill` writes the inputs, lane
+// `lane` is recorded.
+template <class Fill>
+InvocationTrace replay(const Program& debug, const ir::Shader& shader, const DrawSnapshot& draw, rt::LaneMask live,
+                       int lane, Fill&& fill) {
+    ShaderNames names(shader, state_of(debug).ir);
+    LaneRecorder recorder(names, draw.uniforms.data(), lane);
+    rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations, draw.gl.texture_units.data(),
+                             debug.exec.precision, ~0u, recorder);
+    fill(in);
+    for (const ir::Binding& b : shader.inputs) recorder.trace.inputs.push_back(binding_value(b, in, lane));
+    rt::RunError error;
+    bool ok = in.run(live, &error);
+    recorder.finish(nullptr);
+    recorder.trace.outputs = outputs_of(shader.outputs, in, lane);
+    if (!ok) recorder.trace.truncated = true;
+    return std::move(recorder.trace);
+}
+
+class Probe : public raster::DrawProbe {
+public:
+    explicit Probe(const Program& program) : program_(program) {}
+    void begin_draw(const raster::ProbeDraw& d) override {
+        draws_.push_back({state_of(program_).uniforms, d.gl, d.attribs, d.vertex_count, d.shaded});
+    }
+    uint32_t draw_index() const { return uint32_t(draws_.size() - 1); }
+    const std::vector<DrawSnapshot>& draws() const { return draws_; }
+
+protected:
+    const Program& program_;
+    std::vector<DrawSnapshot> draws_;
+};
+
+FragmentTrace describe(const raster::FsPrimitive& p, uint32_t draw, float z) {
+    FragmentTrace f;
+    f.draw = draw;
+    f.primitive = p.primitive;
+    f.vertices = p.vertex_ids;
+    f.front = p.front;
+    f.depth = z;
+    return f;
+}
+
+class PixelProbe final : public Probe {
+public:
+    PixelProbe(const Program& program, int x, int y) : Probe(program), x_(x), y_(y) {}
+    void before_run(const raster::ProbeBatch& b) override {
+        const ir::Shader& fs = state_of(program_).ir.fragment;
+        for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1) {
+            int lane = std::countr_zero(bits);
+            if (b.x[size_t(lane)] != x_ || b.y[size_t(lane)] != y_) continue;
+            Capture c{describe(*b.quad_prim[lane / 4], draw_index(), b.z[size_t(lane)]),
+                      lane,
+                      b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1,
+                      {}};
+            for (const ir::Binding& in : fs.inputs) {
+                Words w;
+                for (uint32_t k = 0; k < in.count; ++k)
+                    w.insert(w.end(), b.interp.lanes(in.first + k), b.interp.lanes(in.first + k) + rt::kLanes);
+                c.inputs.emplace_back(in.name, std::move(w));
+            }
+            pending_.push_back(std::move(c));
+        }
+    }
+    void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask written) override {
+        for (Capture& c : pending_) {
+            using O = FragmentTrace::Outcome;
+            bool is_alive = (alive >> c.lane) & 1, is_written = (written >> c.lane) & 1;
+            c.info.outcome = !is_alive ? O::Discarded : is_written ? O::Written : O::DepthFailed;
+            c.info.rendered = outputs_of(state_of(program_).ir.fragment.outputs, b.interp, c.lane);
+            captures_.push_back(std::move(c));
+        }
+        pending_.clear();
+    }
+    std::vector<Capture> captures_;
+
+private:
+    int x_, y_;
+    std::vector<Capture> pending_;
+};
+
+FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Capture& c) {
+    FragmentTrace f = std::move(c.info);
+    const ir::Shader& fs = state_of(debug).ir.fragment;
+    f.trace = replay(debug, fs, draw, c.live, c.lane, [&](rt::TracedInterpreter& in) {
+        for (const ir::Binding& b : fs.inputs)
+            for (const auto& [name, words] : c.inputs)
+                if (name == b.name)
+                    for (uint32_t k = 0; k < b.count && (k + 1) * rt::kLanes <= words.size(); ++k)
+                        std::memcpy(in.lanes(b.first + k), words.data() + size_t(k) * rt::kLanes, rt::kLanes * 4);
+    });
+    f.matches_render = same_bits(f.trace.outputs, f.rendered);
+    return f;
+}
+
+Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, const DrawSnapshot& draw,
+                                  uint32_t draw_index, uint32_t vertex) {
+    const ir::Shader& vs = state_of(debug).ir.vertex;
+    auto words = exec::vertex_input_words(vs, draw.attribs, draw.vertex_count, draw.gl, vertex);
+    if (!words) return words.error();
+    VertexTrace t{draw_index, vertex, true, {}};
+    t.trace = replay(debug, vs, draw, 1, 0, [&](rt::TracedInterpreter& in) {
+        for (size_t i = 0; i < vs.inputs.size(); ++i)
+            for (uint32_t k = 0; k < vs.inputs[i].count; ++k) in.lanes(vs.inputs[i].first + k)[0] = (*words)[i][k];
+    });
+    // The render's outputs of this vertex (VertexOutputs holds floats).
+    const std::vector<ir::Binding>& outs = state_of(program).ir.vertex.outputs;
+    for (const NamedValue& v : t.trace.outputs)
+        for (size_t o = 0; o < outs.size(); ++o)
+            if (outs[o].name == v.name)
+                for (size_t k = 0; k < v.value.c.size(); ++k) {
+                    float rendered = draw.shaded.vertex(vertex)[draw.shaded.offset[o] + k];
+                    float traced = float(v.value.c[k]);  // VertexOutputs converts ints and bools to float too
+                    if (std::bit_cast<uint32_t>(rendered) != std::bit_cast<uint32_t>(traced)) t.matches_render = false;
+                }
+    return t;
+}
+
+}  // namespace
+
+Status render_with_probe(Program& program, const scene::Scene& scene, Framebuffer& fb, raster::DrawProbe& probe) {
+    unsigned threads = program.exec.threads;
+    program.exec.threads = 1;  // one fragment stage, in tile order
+    state_of(program).probe = &probe;
+    auto stats = scene::render_scene(program, scene, fb);
+    state_of(program).probe = nullptr;
+    program.exec.threads = threads;
+    if (!stats) return stats.error();
+    return Ok{};
+}
+
+Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
+                         const TraceRequest& request) {
+    if (state_of(debug).ir.uniform_words != state_of(program).ir.uniform_words)
+        return Error("internal error: the debugging program's uniforms differ from the program's");
+    PixelTrace out;
+    int wy = -1;
+    if (request.pixel) {
+        out.x = request.pixel->first;
+        out.y = request.pixel->second;
+        if (out.x < 0 || out.y < 0 || out.x >= fb.width || out.y >= fb.height)
+            return Error(fmt::format("pixel {},{} is outside the {}x{} image", out.x, out.y, fb.width, fb.height));
+        wy = fb.height - 1 - out.y;  // the framebuffer's row 0 is the bottom
+    }
+    PixelProbe probe(program, out.x, wy);
+    if (Status st = render_with_probe(program, scene, fb, probe); !st) return st.error();
+    const auto& draws = probe.draws();
+    std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
+    for (Capture& c : probe.captures_) {
+        out.fragments.push_back(replay_fragment(debug, draws[c.info.draw], c));
+        if (out.fragments.back().outcome == FragmentTrace::Outcome::Written) visible = out.fragments.back();
+    }
+    if (visible)
+        for (uint32_t v : visible->vertices) {
+            auto vt = replay_vertex(program, debug, draws[visible->draw], visible->draw, v);
+            if (!vt) return vt.error();
+            out.vertices.push_back(std::move(*vt));
+        }
+    if (request.vertex) {
+        if (request.draw >= draws.size())
+            return Error(fmt::format("draw {} does not exist ({} draws)", request.draw, draws.size()));
+        auto vt = replay_vertex(program, debug, draws[request.draw], request.draw, *request.vertex);
+        if (!vt) return vt.error();
+        out.vertices.push_back(std::move(*vt));
+    }
+    return out;
+}
+
+}  // namespace glslrun::debug

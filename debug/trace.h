@@ -1,0 +1,76 @@
+// The shader debugger's results: what one invocation did, line by line
+// (glslrun trace), and where a NaN or infinity first appeared (--find-nan).
+// docs/debugging.md shows them at work.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ir/ir.h"
+
+namespace glslrun::debug {
+
+// The components of a value, exact: floats as fp32 (double in Reference,
+// `wide`), ints and bools (0/1) as integers.
+struct Values {
+    ir::Kind kind = ir::Kind::F32;
+    bool wide = false;
+    std::vector<double> c;
+};
+
+struct NamedValue {
+    std::string name;
+    std::string type;  // GLSL type ("vec3", "mat4"); decides how matrices print
+    Values value;
+};
+
+struct TraceStep {
+    enum class Kind : uint8_t {
+        Statement,  // a statement runs: `where`
+        Assign,     // `name` (a variable) now holds `value` (every component)
+        Branch,     // an if at `where`: `taken`
+        Loop,       // a loop at `where` starts iteration `iteration` (0, 1, ...)
+        Jump,       // `name`: break, continue, return or discard
+        Call,       // `name`: a call of that function starts; depth + 1 until it returns
+    };
+    Kind kind = Kind::Statement;
+    int depth = 0;      // call depth
+    std::string where;  // "file:line"
+    std::string name;
+    std::string type;
+    Values value;
+    bool taken = false;
+    uint64_t iteration = 0;
+};
+
+// The first NaN or infinity of an invocation: the instruction that made it.
+struct NanEvent {
+    std::string where;
+    std::string op;  // the IR operation, e.g. "fdiv"
+    std::vector<Values> operands;
+    Values result;
+    std::string variable;  // the variable it was written to, if any
+};
+
+struct InvocationTrace {
+    std::vector<NamedValue> inputs;    // shader inputs (varyings, gl_FragCoord, attributes)
+    std::vector<NamedValue> uniforms;  // every uniform read, in first-read order
+    std::vector<TraceStep> steps;
+    std::vector<NamedValue> outputs;
+    std::optional<NanEvent> first_nan;
+    bool discarded = false;
+    bool truncated = false;  // more than kMaxSteps steps
+    static constexpr size_t kMaxSteps = 200000;
+};
+
+// "float", "vec3", "mat4", "bvec2", "sampler" for a uniform's type.
+std::string type_name(const ir::ValueType& t);
+// "float", "vec3", "ivec2", "bool" for a binding's registers.
+std::string binding_type(const ir::Binding& b);
+// "0.5", "vec3(1, 0, 0.25)", "mat2(vec2(1, 0), vec2(0, 1))"; matrices as columns.
+std::string format_value(const Values& v, const std::string& type);
+// The same on several lines, one row of the matrix per line, for --stats.
+std::vector<std::string> format_matrix_rows(const Values& v, const std::string& type);
+
+}  // namespace glslrun::debug

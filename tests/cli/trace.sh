@@ -1,0 +1,70 @@
+#!/bin/sh
+# Checks `glslrun trace`: --json is valid JSON with the text's content, every
+# replay matches the render in all three precision modes and with an odd
+# size, --vertex and --find-nan work from the command line, and bad
+# arguments are clear errors with a nonzero status.
+#
+#   tests/cli/trace.sh SOURCE_DIR GLSLRUN
+set -u
+src=$1
+glslrun=$2
+. "$src/tests/cli/common.sh"
+
+vs=$src/shaders/spot_pix_oops.vert
+fs=$src/shaders/spot_pix_oops.frag
+scene=$src/scenes/spot.toml
+
+"$glslrun" trace --pixel 240,172 --json "$vs" "$fs" "$scene" >"$tmp/trace.json" || fail "trace --json exited with $?"
+python3 - "$tmp/trace.json" <<'PY' || fail "trace --json: wrong content"
+import json, sys
+t = json.load(open(sys.argv[1]))
+assert t["pixel"] == [240, 172], t["pixel"]
+f = t["fragments"]
+assert [x["outcome"] for x in f] == ["written", "depth_failed"], [x["outcome"] for x in f]
+assert all(x["matches_render"] for x in f)
+assert f[0]["matches_render"] and f[0]["trace"]["outputs"][0]["name"] == "gl_FragColor"
+steps = f[0]["trace"]["steps"]
+assert any(s["kind"] == "assign" and s["name"] == "intensity" and s["value"] == [0] for s in steps)
+assert any(s["kind"] == "branch" for s in steps)
+assert len(t["vertices"]) == 3 and all(v["matches_render"] for v in t["vertices"])
+PY
+
+# The replay equals the render whatever the mode, size and program (a loop and calls in multi_light).
+for mode in precise fast reference; do
+    for prog in spot_pix_fixed multi_light; do
+        out=$tmp/$prog-$mode.txt
+        "$glslrun" trace --pixel 45,25 --size 97x61 --precision $mode "$src/shaders/$prog.vert" "$src/shaders/$prog.frag" \
+            "$src/scenes/$([ $prog = multi_light ] && echo multi_light || echo spot).toml" >"$out" ||
+            fail "$prog $mode: trace exited with $?"
+        grep -q "^fragment 0 at pixel 45,25" "$out" || fail "$prog $mode: no fragment at 45,25"
+        grep -q WARNING "$out" && fail "$prog $mode: the replay differs from the render"
+    done
+done
+grep -q "loop iteration 2" "$tmp/multi_light-precise.txt" || fail "multi_light: no third loop iteration"
+grep -q "call light" "$tmp/multi_light-precise.txt" || fail "multi_light: no call of light()"
+
+"$glslrun" trace --vertex 5 "$vs" "$fs" "$scene" >"$tmp/vertex.txt" || fail "trace --vertex exited with $?"
+grep -q "^vertex 5 of draw 0:" "$tmp/vertex.txt" || fail "trace --vertex: no vertex 5"
+grep -q "gl_Position = vec4(" "$tmp/vertex.txt" || fail "trace --vertex: gl_Position not assigned"
+
+"$glslrun" trace --find-nan --size 64x64 "$vs" "$fs" "$scene" >"$tmp/nan.txt" || fail "--find-nan exited with $?"
+grep -q "^no NaN or infinity" "$tmp/nan.txt" || fail "--find-nan found a NaN in the spot light"
+
+# --stats: the built-in uniforms read, with values; a matrix as rows under its name.
+COLUMNS=100 "$glslrun" "$vs" "$fs" "$scene" --size 64x64 -o "$tmp/s.png" --stats >"$tmp/stats.txt" || fail "--stats exited with $?"
+grep -A4 "gl_ModelViewMatrix =$" "$tmp/stats.txt" | grep -c "^ *|.* -5 |$" | grep -qx 1 || fail "--stats: no modelview matrix rows"
+grep -q "gl_LightSource\[0\].spotCosCutoff = 0.9396926$" "$tmp/stats.txt" || fail "--stats: no spotCosCutoff value"
+awk 'length > 100 { exit 1 }' "$tmp/stats.txt" || fail "--stats: a line longer than 100 columns"
+
+# Bad arguments: a message and status 1 (CLI11's usage errors: nonzero too).
+expect_error() {
+    if "$glslrun" trace "$@" >"$tmp/err.out" 2>"$tmp/err.txt"; then fail "trace $*: exit status 0"; fi
+    [ -s "$tmp/err.txt" ] || fail "trace $*: no message"
+}
+expect_error --pixel 600,10 "$vs" "$fs" "$scene"
+expect_error --pixel 10 "$vs" "$fs" "$scene"
+expect_error "$vs" "$fs" "$scene"
+expect_error --pixel 1,1 "$vs" "$fs"
+expect_error --vertex 999999 "$vs" "$fs" "$scene"
+expect_error --vertex 0 --draw 3 "$vs" "$fs" "$scene"
+finish "trace: JSON, replays equal to the render, --vertex, --find-nan and errors"

@@ -1,0 +1,98 @@
+// `glslrun trace`: the shader debugger (debug/debugger.h, docs/debugging.md).
+//   glslrun trace --pixel X,Y a.vert a.frag scene.toml [--json]
+//   glslrun trace --vertex N [--draw D] a.vert a.frag scene.toml
+//   glslrun trace --find-nan [--colour-range] a.vert a.frag scene.toml
+#include "trace_command.h"
+
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "debug/debugger.h"
+#include "render_command.h"
+
+namespace glslrun::cli {
+namespace {
+
+int fail(const Error& e) {
+    std::fputs(e.str().c_str(), stderr);
+    return 1;
+}
+
+Result<std::pair<int, int>> parse_pixel(const std::string& text) {
+    int x = 0, y = 0;
+    char comma = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',')
+        return Error(fmt::format("--pixel '{}' must be X,Y (image coordinates, top-left origin), e.g. 256,200", text));
+    return std::pair{x, y};
+}
+
+struct TraceOptions {
+    std::vector<std::string> files;
+    std::string pixel, size;
+    std::optional<uint32_t> vertex;
+    uint32_t draw = 0;
+    bool json = false, find_nan = false, colour_range = false;
+    Precision precision = Precision::Precise;
+};
+
+int run_trace(const TraceOptions& o) {
+    auto in = classify(o.files);
+    if (!in) return fail(in.error());
+    if (in->scene.empty() || (in->vertex.empty() && in->fragment.empty()))
+        return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"));
+    if (o.pixel.empty() && !o.vertex && !o.find_nan)
+        return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"));
+    RenderOptions render;
+    render.size = o.size;
+    auto scene = load_sized_scene(*in, render);
+    if (!scene) return fail(scene.error());
+    auto program = Program::compile(in->vertex, in->fragment);
+    if (!program) return fail(program.error());
+    program->exec.precision = o.precision;
+    auto debug = debug::compile_for_debugging(in->vertex, in->fragment, o.precision);
+    if (!debug) return fail(debug.error());
+    Framebuffer fb(scene->width, scene->height);
+    if (o.find_nan) {
+        auto report = debug::find_nan(*program, *debug, *scene, fb, o.colour_range);
+        if (!report) return fail(report.error());
+        std::fputs(debug::format_text(*report).c_str(), stdout);
+        return 0;
+    }
+    debug::TraceRequest request;
+    request.vertex = o.vertex;
+    request.draw = o.draw;
+    if (!o.pixel.empty()) {
+        auto pixel = parse_pixel(o.pixel);
+        if (!pixel) return fail(pixel.error());
+        request.pixel = *pixel;
+    }
+    auto trace = debug::trace(*program, *debug, *scene, fb, request);
+    if (!trace) return fail(trace.error());
+    std::string text = o.json ? debug::format_json(*trace) : debug::format_text(*trace);
+    std::fputs(text.c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+int trace_main(int argc, char** argv, void (*add_precision)(CLI::App&, Precision&)) {
+    CLI::App app{"Traces shader invocations of a scene at source level, or finds the first NaN", "glslrun trace"};
+    TraceOptions o;
+    app.add_option("files", o.files, "shader.vert shader.frag scene.toml")->required();
+    app.add_option("--pixel", o.pixel, "trace every fragment at X,Y (image coordinates, top-left origin)")
+        ->type_name("X,Y");
+    app.add_option("--vertex", o.vertex, "trace vertex N (of draw --draw)")->type_name("N");
+    app.add_option("--draw", o.draw, "the draw (scene object, from 0) of --vertex");
+    app.add_flag("--json", o.json, "print the trace as JSON");
+    app.add_flag("--find-nan", o.find_nan,
+                 "report the first invocation (draw and tile order) computing a NaN or infinity");
+    app.add_flag("--colour-range", o.colour_range, "--find-nan: also the first colour output outside [0,1]");
+    app.add_option("--size", o.size, "image size WxH, instead of the scene's");
+    add_precision(app, o.precision);
+    CLI11_PARSE(app, argc, argv);
+    return run_trace(o);
+}
+
+}  // namespace glslrun::cli
