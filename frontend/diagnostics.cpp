@@ -1,9 +1,12 @@
 // Diagnostics: the public Diagnostic/Error formatting and glslang's info log.
 #include "frontend/diagnostics.h"
 
-#include <regex>
+#include <algorithm>
+#include <cctype>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -43,36 +46,77 @@ static std::string trim(const std::string& s) {
     return s.substr(b, e - b + 1);
 }
 
+namespace {
+
+// One line of glslang's info log, split by hand: the log quotes user text
+// (#error, tokens), so a backtracking regex could recurse as deep as the line
+// is long.
+struct LogLine {
+    bool warning = false;
+    bool located = false;
+    std::string file, token, text;
+    int line = 0;  // 0 where `#line` made it negative: the file, without a line
+};
+
+std::optional<LogLine> split_log_line(std::string_view s) {
+    LogLine out;
+    for (std::string_view kind : {"ERROR: ", "WARNING: "})
+        if (s.substr(0, kind.size()) == kind) {
+            out.warning = kind[0] == 'W';
+            s.remove_prefix(kind.size());
+            out.text = trim(std::string(s));
+            // Located: `file:line: 'token' : text`, at the first `:digits: '`.
+            for (size_t colon = s.find(':'); colon != std::string_view::npos; colon = s.find(':', colon + 1)) {
+                size_t digits = colon + 1 + (s.substr(colon + 1, 1) == "-");
+                size_t d = digits;
+                while (d < s.size() && std::isdigit(static_cast<unsigned char>(s[d]))) ++d;
+                if (d == digits || d - digits > 9 || s.substr(d, 3) != ": '" || colon == 0) continue;
+                size_t token_end = s.find("' :", d + 3);
+                if (token_end == std::string_view::npos) break;
+                size_t text_begin = token_end + 3;
+                if (text_begin >= s.size() || s[text_begin] != ' ') break;
+                out.file = std::string(s.substr(0, colon));
+                out.located = true;
+                out.line = std::max(0, std::stoi(std::string(s.substr(colon + 1, d - colon - 1))));
+                out.token = std::string(s.substr(d + 3, token_end - d - 3));
+                out.text = trim(std::string(s.substr(text_begin)));
+                break;
+            }
+            return out;
+        }
+    return std::nullopt;
+}
+
+}  // namespace
+
 void parse_info_log(const std::string& log, const std::string& unit_file, std::vector<Diagnostic>& out) {
-    static const std::regex located(R"(^(ERROR|WARNING): (.+):(\d+): '(.*?)' : +(.*?)\s*$)");
-    static const std::regex global(R"(^(ERROR|WARNING): (.*?)\s*$)");
     std::istringstream in(log);
     std::string line;
     bool last_kept = false;
     std::set<std::string> reported;
     while (std::getline(in, line)) {
-        std::smatch m;
-        if (std::regex_match(line, m, located)) {
-            std::string token = m[4].str(), text = trim(m[5].str());
+        if (std::optional<LogLine> l = split_log_line(line); l && l->located) {
+            const std::string &token = l->token, &text = l->text;
             last_kept = false;
             if (token.empty() && text == "compilation terminated") continue;
             std::string message = token.empty() ? text : fmt::format("'{}' : {}", token, text);
+            // Bison's message when glslang's parser stack overflows.
+            if (text == "memory exhausted")
+                message = "expressions or blocks nest too deeply for the parser (glslang: memory exhausted)";
             // String 0 is the unit itself; another number comes from `#line L S`.
-            std::string file = m[2].str() == "0" ? unit_file : m[2].str();
-            int line_no = std::stoi(m[3].str());
+            std::string file = l->file == "0" ? unit_file : l->file;
             // Later errors on a line that already has one are cascades of
             // the first (glslang recovers by inventing a declaration).
-            bool warning = m[1].str() == "WARNING";
-            if (!warning && !reported.insert(fmt::format("{}:{}", m[2].str(), line_no)).second) continue;
-            out.push_back(Diagnostic{file, line_no, message, warning});
+            if (!l->warning && !reported.insert(fmt::format("{}:{}", l->file, l->line)).second) continue;
+            out.push_back(Diagnostic{file, l->line, message, l->warning});
             last_kept = true;
-        } else if (std::regex_match(line, m, global)) {
-            std::string text = trim(m[2].str());
+        } else if (l) {
+            const std::string& text = l->text;
             last_kept = false;
             if (text.find("compilation errors.") != std::string::npos && text.find("No code generated") != std::string::npos)
                 continue;
             if (text.empty()) continue;
-            out.push_back(Diagnostic{unit_file, 0, text, m[1].str() == "WARNING"});
+            out.push_back(Diagnostic{unit_file, 0, text, l->warning});
             last_kept = true;
         } else if (last_kept && !trim(line).empty() && (line[0] == ' ' || line[0] == '\t')) {
             // Continuation of a multi-line link message.

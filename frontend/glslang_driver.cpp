@@ -14,6 +14,7 @@
 
 #include "frontend/compile.h"
 #include "frontend/call_graph.h"
+#include "frontend/deep_stack.h"
 #include "frontend/diagnostic_hints.h"
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
@@ -22,6 +23,7 @@
 #include "frontend/language_version.h"
 #include "frontend/link.h"
 #include "frontend/lower.h"
+#include "frontend/size_limits.h"
 #include "frontend/source_rewrite.h"
 #include "frontend/unit_checks.h"
 
@@ -141,8 +143,10 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
         size_t first = diags.size();
         diags.insert(diags.end(), unit.diags.begin(), unit.diags.end());
         add_hints(diags, first, src);
-        if (unit.ok && unit.shader->getIntermediate())
+        if (unit.ok && unit.shader->getIntermediate()) {
             check_unit_rules(*unit.shader->getIntermediate(), st.texts[i], src.name, diags);
+            check_size_limits(*unit.shader->getIntermediate(), src.name, diags);
+        }
         ok = ok && unit.ok;
         st.shaders.push_back(std::move(unit.shader));
     }
@@ -222,7 +226,8 @@ void check_global_initializers(const StageUnits& st, std::vector<Diagnostic>& di
     }
     for (const auto& [name, keys] : inits) {
         if (keys.size() < 2) continue;
-        bool same = std::all_of(keys.begin(), keys.end(), [&](const std::string& k) { return !k.empty() && k == keys[0]; });
+        const std::string& first = keys[0];  // clang 14 cannot capture a structured binding
+        bool same = std::all_of(keys.begin(), keys.end(), [&first](const std::string& k) { return !k.empty() && k == first; });
         if (!same)
             diags.push_back(Diagnostic{st.first_file(), 0,
                                        fmt::format("global variable '{}' has different or non-constant initializers "
@@ -240,8 +245,9 @@ bool has_errors(const std::vector<Diagnostic>& diags) {
 
 Error to_error(std::vector<Diagnostic> diags) {
     Error e;
+    std::set<std::string> printed;  // one line once: the same file given twice reports the same errors
     for (Diagnostic& d : diags)
-        if (!d.warning) e.diagnostics.push_back(std::move(d));
+        if (!d.warning && printed.insert(d.str()).second) e.diagnostics.push_back(std::move(d));
     if (e.diagnostics.empty()) e.diagnostics.push_back(Diagnostic{{}, 0, "compilation failed", false});
     return e;
 }
@@ -267,10 +273,17 @@ const char* kFixedFunctionVertex =
     "}\n";
 const char* kFixedFunctionFragment = "void main() { gl_FragColor = gl_Color; }\n";
 
-}  // namespace
+Status check_source_sizes(const std::vector<ShaderSource>& sources) {
+    size_t bytes = 0;
+    for (const ShaderSource& s : sources) bytes += s.text.size();
+    if (bytes <= kMaxSourceBytes) return Ok{};
+    return Error(fmt::format("the shader's sources are {} bytes; glslrun's limit is {} KiB per stage", bytes,
+                             kMaxSourceBytes >> 10),
+                 sources.empty() ? std::string() : sources[0].name);
+}
 
-Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
-                                    const CompileOptions& options) {
+Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+                                 const CompileOptions& options) {
     init_glslang();
     if (vs.empty() && fs.empty()) return Error("no shaders to link");
     if (auto refused = refuse_unsupported_versions({&vs, &fs}, options.default_version)) return std::move(*refused);
@@ -310,7 +323,7 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
     return program;
 }
 
-Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
+Status check_here(Stage stage, const ShaderSource& source, int default_version) {
     init_glslang();
     std::vector<ShaderSource> one{source};
     if (auto refused = refuse_unsupported_versions({&one}, default_version)) return std::move(*refused);
@@ -320,6 +333,24 @@ Status check_shader(Stage stage, const ShaderSource& source, int default_version
     bool ok = parse_units(st, default_version, diags);
     if (!ok || has_errors(diags)) return to_error(std::move(diags));
     return Ok{};
+}
+
+}  // namespace
+
+Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+                                    const CompileOptions& options) {
+    for (const auto* stage : {&vs, &fs})
+        if (Status st = check_source_sizes(*stage); !st) return st.error();
+    Result<ir::Program> out = Error("not compiled");
+    run_on_deep_stack([&] { out = compile_here(vs, fs, options); });
+    return out;
+}
+
+Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
+    if (Status st = check_source_sizes({source}); !st) return st;
+    Status out = Ok{};
+    run_on_deep_stack([&] { out = check_here(stage, source, default_version); });
+    return out;
 }
 
 }  // namespace glslrun::frontend

@@ -23,6 +23,8 @@ ir::Kind kind_of(const gl::TType& t);
 uint32_t array_length(const gl::TType& t);  // implicit size for unsized arrays
 gl::TType element_type(const gl::TType& t);  // array element (outer dimension)
 uint32_t flat_size(const gl::TType& t);
+// The same, in 64 bits (saturating at 2^40): for checking sizes before flat_size's uint32.
+uint64_t components_of(const gl::TType& t);
 void flatten_kinds(const gl::TType& t, std::vector<ir::Kind>& out);
 uint32_t member_offset(const gl::TType& struct_type, int member);
 std::string type_signature(const gl::TType& t);  // "vec3", "float[4]", "struct S{float a;}"

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
-#include <regex>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace glslrun::frontend {
@@ -189,23 +189,79 @@ std::string padded(const std::string& text, size_t width) {
     return text + std::string(width > text.size() ? width - text.size() : 0, ' ');
 }
 
+bool is_predefined(std::string_view word) { return word == "__VERSION__" || word == "__LINE__" || word == "__FILE__"; }
+
+// A cursor over one preprocessor line. The rewrites scan by hand, not with
+// std::regex: its backtracking recurses once per character and overflows the
+// stack on a long line of user text.
+struct LineCursor {
+    std::string_view s;
+    size_t i = 0;
+
+    bool at_end() const { return i >= s.size(); }
+    size_t skip_space() {
+        size_t from = i;
+        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+        return i - from;
+    }
+    bool eat(char c) {
+        if (i >= s.size() || s[i] != c) return false;
+        ++i;
+        return true;
+    }
+    std::string_view word() {
+        size_t from = i;
+        while (i < s.size() && word_char(s[i])) ++i;
+        return s.substr(from, i - from);
+    }
+    // `#` and the directive's name, after optional blanks; empty if none.
+    std::string_view directive() {
+        skip_space();
+        if (!eat('#')) return {};
+        skip_space();
+        return word();
+    }
+};
+
+// At `defined` (i at its first character): the length of `defined X` or
+// `defined ( X )` with X predefined, or 0.
+size_t defined_predefined_length(std::string_view line, size_t at) {
+    LineCursor c{line, at};
+    if (c.word() != "defined") return 0;
+    size_t blanks = c.skip_space();
+    bool paren = c.eat('(');
+    if (paren) c.skip_space();
+    else if (blanks == 0) return 0;
+    if (!is_predefined(c.word())) return 0;
+    if (paren && (c.skip_space(), !c.eat(')'))) return 0;
+    return c.i - at;
+}
+
 std::string rewrite_directive(const std::string& line) {
-    static const std::regex ifdef(R"(^(\s*#\s*)(ifn?def)(\s+)(__VERSION__|__LINE__|__FILE__)\b)");
-    static const std::regex if_line(R"(^\s*#\s*(if|elif)\b)");
-    static const std::regex defined(
-        R"(\bdefined\s*\(\s*(__VERSION__|__LINE__|__FILE__)\s*\)|\bdefined\s+(__VERSION__|__LINE__|__FILE__)\b)");
-    std::smatch m;
-    if (std::regex_search(line, m, ifdef)) {
-        std::string repl = m[1].str() + (m[2].str() == "ifdef" ? "if 1" : "if 0");
-        return padded(repl, size_t(m.length(0))) + m.suffix().str();
+    LineCursor c{line};
+    std::string_view name = c.directive();
+    if (name == "ifdef" || name == "ifndef") {
+        size_t name_end = c.i;
+        LineCursor operand = c;
+        if (operand.skip_space() > 0 && is_predefined(operand.word())) {
+            std::string repl = line.substr(0, name_end - name.size()) + (name == "ifdef" ? "if 1" : "if 0");
+            return padded(repl, operand.i) + line.substr(operand.i);
+        }
+        return line;
     }
-    if (!std::regex_search(line, if_line)) return line;
-    std::string out, rest = line;
-    while (std::regex_search(rest, m, defined)) {
-        out += m.prefix().str() + padded("1", size_t(m.length(0)));
-        rest = m.suffix().str();
+    if (name != "if" && name != "elif") return line;
+    std::string out;
+    for (size_t i = 0; i < line.size();) {
+        bool word_start = i == 0 || !word_char(line[i - 1]);
+        size_t n = word_start ? defined_predefined_length(line, i) : 0;
+        if (n > 0) {
+            out += padded("1", n);
+            i += n;
+        } else {
+            out += line[i++];
+        }
     }
-    return out + rest;
+    return out;
 }
 
 }  // namespace
@@ -278,13 +334,17 @@ std::vector<UnaryPlusOperand> unary_plus_operands(const std::string& src) {
     return out;
 }
 
+static bool is_vector_type(std::string_view w) {
+    if (!w.empty() && (w[0] == 'b' || w[0] == 'i' || w[0] == 'u')) w.remove_prefix(1);
+    return w.size() == 4 && w.substr(0, 3) == "vec" && w[3] >= '2' && w[3] <= '4';
+}
+
 std::vector<TokenPos> vector_constructor_subscripts(const std::string& src) {
-    static const std::regex vector_type(R"(^[biu]?vec[234]$)");
     std::vector<TokenPos> out;
     if (src.find("vec") == std::string::npos) return out;
     std::vector<Token> t = lex(src);
     for (size_t i = 0; i + 2 < t.size(); ++i) {
-        if (t[i].text != "[" || !std::regex_match(t[i + 1].text, vector_type) || t[i + 2].text != "(") continue;
+        if (t[i].text != "[" || !is_vector_type(t[i + 1].text) || t[i + 2].text != "(") continue;
         int level = 0;
         size_t k = i + 2;
         for (; k < t.size(); ++k) {
@@ -325,19 +385,20 @@ std::string drop_float_suffixes(const std::string& src) {
 }
 
 std::vector<int> stringification_lines(const std::string& src) {
-    static const std::regex function_macro(R"(^\s*#\s*define\s+\w+\([^)]*\))");
-    static const std::regex open_if(R"(^\s*#\s*if)");
-    static const std::regex close_if(R"(^\s*#\s*endif)");
     std::vector<int> out;
     if (src.find("define") == std::string::npos) return out;
     int conditional_depth = 0;  // only definitions outside any #if are surely not skipped
     for (const Token& t : lex(src)) {
         if (t.kind != Token::Directive) continue;
-        if (std::regex_search(t.text, open_if)) ++conditional_depth;
-        if (std::regex_search(t.text, close_if) && conditional_depth > 0) --conditional_depth;
-        std::smatch m;
-        if (conditional_depth > 0 || !std::regex_search(t.text, m, function_macro)) continue;
-        std::string body = m.suffix().str();
+        LineCursor c{t.text};
+        std::string_view name = c.directive();
+        if (name.substr(0, 2) == "if") ++conditional_depth;
+        if (name.substr(0, 5) == "endif" && conditional_depth > 0) --conditional_depth;
+        if (conditional_depth > 0 || name != "define" || c.skip_space() == 0 || c.word().empty() || !c.eat('('))
+            continue;
+        size_t close = t.text.find(')', c.i);
+        if (close == std::string::npos) continue;
+        std::string_view body = std::string_view(t.text).substr(close + 1);
         for (size_t k = 0; k < body.size(); ++k) {
             if (body[k] != '#') continue;
             if (k + 1 < body.size() && body[k + 1] == '#') {

@@ -1,4 +1,5 @@
 // Flattening of glslang types into register layouts, and the uniform table.
+#include <algorithm>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -30,15 +31,18 @@ static uint32_t basic_size(const gl::TType& t) {
     return uint32_t(t.getVectorSize() > 0 ? t.getVectorSize() : 1);
 }
 
-uint32_t flat_size(const gl::TType& t) {
-    if (t.isArray()) return array_length(t) * flat_size(element_type(t));
+uint64_t components_of(const gl::TType& t) {
+    constexpr uint64_t kSaturated = uint64_t(1) << 40;  // no overflow in the products below
+    if (t.isArray()) return std::min(kSaturated, array_length(t) * components_of(element_type(t)));
     if (t.isStruct()) {
-        uint32_t n = 0;
-        for (const gl::TTypeLoc& m : *t.getStruct()) n += flat_size(*m.type);
+        uint64_t n = 0;
+        for (const gl::TTypeLoc& m : *t.getStruct()) n = std::min(kSaturated, n + components_of(*m.type));
         return n;
     }
     return basic_size(t);
 }
+
+uint32_t flat_size(const gl::TType& t) { return uint32_t(components_of(t)); }
 
 void flatten_kinds(const gl::TType& t, std::vector<ir::Kind>& out) {
     if (t.isArray()) {

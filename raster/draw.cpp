@@ -206,16 +206,54 @@ void make_clip_vertex(const exec::VertexOutputs& out, const ClipSources& src, co
 }
 
 Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport) {
-    int vx = gl.viewport[0], vy = gl.viewport[1], vw = gl.viewport[2], vh = gl.viewport[3];
+    int64_t vx = gl.viewport[0], vy = gl.viewport[1], vw = gl.viewport[2], vh = gl.viewport[3];
     if (vw <= 0 || vh <= 0) vx = 0, vy = 0, vw = fb.width, vh = fb.height;
-    *viewport = glm::vec4(vx, vy, vw, vh);
-    Rect r{std::max(vx, 0), std::max(vy, 0), std::min(vx + vw, fb.width), std::min(vy + vh, fb.height)};
+    *viewport = glm::vec4(float(vx), float(vy), float(vw), float(vh));
+    // 64-bit: x + width may pass INT_MAX.
+    auto clamp_to = [](int64_t v, int hi) { return int(std::clamp<int64_t>(v, 0, hi)); };
+    Rect r{clamp_to(vx, fb.width), clamp_to(vy, fb.height), clamp_to(vx + vw, fb.width), clamp_to(vy + vh, fb.height)};
     if (!gl.scissor_test) return r;
-    // glScissor (GL 2.1 §4.1.2); in 64 bits, as x + width may exceed an int.
+    // glScissor (GL 2.1 §4.1.2); in 64 bits too.
     const auto& box = gl.scissor_box;
     auto lo = [](int v, int bound) { return std::max(v, bound); };
     auto hi = [](int v, int64_t size, int bound) { return int(std::min<int64_t>(int64_t(v) + std::max<int64_t>(size, 0), bound)); };
     return Rect{lo(box[0], r.x0), lo(box[1], r.y0), hi(box[0], box[2], r.x1), hi(box[1], box[3], r.y1)};
+}
+
+template <class E>
+bool enum_in_range(E value, E last) {
+    return uint32_t(value) <= uint32_t(last);
+}
+
+bool sampler_in_range(const SamplerState& s) {
+    auto wrap_ok = [](TextureWrap w) { return enum_in_range(w, TextureWrap::MirroredRepeat); };
+    return enum_in_range(s.min_filter, TextureFilter::LinearMipmapLinear) &&
+           enum_in_range(s.mag_filter, TextureFilter::LinearMipmapLinear) && wrap_ok(s.wrap_s) && wrap_ok(s.wrap_t) &&
+           wrap_ok(s.wrap_r) && enum_in_range(s.compare_func, CompareFunc::Always) &&
+           enum_in_range(s.depth_mode, DepthTextureMode::Alpha);
+}
+
+// What GL would refuse with GL_INVALID_ENUM / GL_INVALID_VALUE, and a
+// framebuffer whose size was refused.
+Status check_draw_input(const GLState& gl, const Framebuffer& fb, Primitive prim) {
+    if (fb.width <= 0 || fb.height <= 0)
+        return Error("the framebuffer is empty: its size was refused (Framebuffer::create says why)");
+    if (!storage_matches(fb)) return Error("framebuffer storage does not match its size");
+    if (gl.draw_buffers < 1 || gl.draw_buffers > fb.color_buffers())
+        return Error(fmt::format("glDrawBuffers names {} colour buffers; the framebuffer has {}", gl.draw_buffers,
+                                 fb.color_buffers()));
+    if (!enum_in_range(prim, Primitive::Polygon))
+        return Error(fmt::format("primitive {} is not a GL primitive (GL_INVALID_ENUM)", int(prim)));
+    if (!enum_in_range(gl.depth_func, CompareFunc::Always))
+        return Error(fmt::format("depth function {} is not a GL compare function (GL_INVALID_ENUM)", int(gl.depth_func)));
+    if (gl.viewport[2] < 0 || gl.viewport[3] < 0)
+        return Error(fmt::format("viewport {}x{}: width and height must not be negative (GL_INVALID_VALUE)",
+                                 gl.viewport[2], gl.viewport[3]));
+    for (const GLState::TextureUnit& unit : gl.texture_units)
+        for (const auto& texture : unit.bound)
+            if (texture && !sampler_in_range(texture->sampler))
+                return Error("a bound texture's sampler state holds a value outside its enum (GL_INVALID_ENUM)");
+    return Ok{};
 }
 
 // Vertices per job of prepare(), and the count below which it stays on the calling thread.
@@ -321,10 +359,9 @@ void bin_primitives(std::span<const SetupOut> outs, TileBins& bins, uint64_t* tr
 Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                              const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                              std::span<const uint32_t> indices, const StoredClear* clear, bool* cleared) {
-    if (!storage_matches(fb)) return Error("framebuffer storage does not match its size");
-    if (gl.draw_buffers < 1 || gl.draw_buffers > fb.color_buffers())
-        return Error(fmt::format("glDrawBuffers names {} colour buffers; the framebuffer has {}", gl.draw_buffers,
-                                 fb.color_buffers()));
+    ProgramUse use(program);
+    if (!use.status()) return use.status().error();
+    if (Status st = check_draw_input(gl, fb, prim); !st) return st.error();
     for (uint32_t index : indices)
         if (index >= vertex_count)
             return Error(fmt::format("index {} is out of range ({} vertices)", index, vertex_count));

@@ -2,14 +2,38 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
+
+#include <fmt/format.h>
 
 namespace glslrun {
 
-Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers)
-    : width(std::max(w, 0)), height(std::max(h, 0)), float_color(float_target),
-      color(size_t(width) * height * 4, 0.0f),
-      more_colors(size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers) - 1), color),
-      depth(size_t(width) * height, 1.0f), stencil(size_t(width) * height, 0) {}
+Status check_framebuffer_size(int w, int h) {
+    if (w >= 1 && h >= 1 && w <= kMaxFramebufferSide && h <= kMaxFramebufferSide &&
+        int64_t(w) * h <= kMaxFramebufferPixels)
+        return Ok{};
+    return Error(fmt::format("a {}x{} framebuffer is not allowed: each side must be 1..{} and the pixels at most {}M",
+                             w, h, kMaxFramebufferSide, kMaxFramebufferPixels >> 20));
+}
+
+Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : float_color(float_target) {
+    if (!check_framebuffer_size(w, h)) return;
+    width = w;
+    height = h;
+    color.assign(size_t(w) * size_t(h) * 4, 0.0f);
+    more_colors.assign(size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers) - 1), color);
+    depth.assign(size_t(w) * size_t(h), 1.0f);
+    stencil.assign(size_t(w) * size_t(h), 0);
+}
+
+Result<Framebuffer> Framebuffer::create(int w, int h, bool float_target, int color_buffers) {
+    if (Status st = check_framebuffer_size(w, h); !st) return st.error();
+    try {
+        return Framebuffer(w, h, float_target, color_buffers);
+    } catch (const std::bad_alloc&) {
+        return Error(fmt::format("out of memory for a {}x{} framebuffer", w, h));
+    }
+}
 
 namespace {
 

@@ -3,9 +3,13 @@
 // reverse.
 #include "raster/png.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <thread>
 #include <memory>
 #include <vector>
 
@@ -98,14 +102,21 @@ void framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* dst) {
         dst[i] = uint8_t(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
 }
 
-Status write_rgba8(const std::string& path, int width, int height,
-                   const std::function<void(int y, uint8_t* dst)>& row_of) {
-    if (width <= 0 || height <= 0) return Error("cannot write an empty image as PNG");
-    // "-" is standard output, which stays open.
-    const bool to_stdout = path == "-";
-    std::unique_ptr<std::FILE, FileCloser> file(to_stdout ? nullptr : std::fopen(path.c_str(), "wb"));
-    std::FILE* out = to_stdout ? stdout : file.get();
-    if (!out) return Error("cannot open '" + path + "' for writing");
+namespace {
+
+// Where an image is written before it is renamed to `path`, so that a
+// process killed meanwhile never leaves a truncated PNG there. Unique per
+// process and thread; `path` itself where it is not a regular file
+// (/dev/stdout, a FIFO) and cannot be replaced.
+std::string staging_path(const std::string& path) {
+    std::error_code ec;
+    auto type = std::filesystem::status(path, ec).type();
+    if (type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found) return path;
+    return fmt::format("{}.partial-{}-{:x}", path, getpid(), std::hash<std::thread::id>{}(std::this_thread::get_id()));
+}
+
+Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int height,
+                      const std::function<void(int y, uint8_t* dst)>& row_of) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -118,7 +129,7 @@ Status write_rgba8(const std::string& path, int width, int height,
         png_destroy_write_struct(&png, &info);
         return Error("libpng failed writing '" + path + "'");
     }
-    png_init_io(png, out);
+    png_init_io(png, file);
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // Speed over size: the default level costs more than a whole 512x512 frame,
@@ -133,8 +144,28 @@ Status write_rgba8(const std::string& path, int width, int height,
     }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fflush(out) != 0) return Error("cannot write '" + path + "'");
+    if (std::fflush(file) != 0) return Error("cannot write '" + path + "'");
     return Ok{};
+}
+
+}  // namespace
+
+Status write_rgba8(const std::string& path, int width, int height,
+                   const std::function<void(int y, uint8_t* dst)>& row_of) {
+    if (width <= 0 || height <= 0) return Error("cannot write an empty image as PNG");
+    if (path.empty()) return Error("cannot write a PNG to an empty path");
+    if (path == "-") return write_rgba8_to(stdout, "standard output", width, height, row_of);  // stays open
+    const std::string staging = staging_path(path);
+    std::FILE* file = std::fopen(staging.c_str(), "wb");
+    if (!file) return Error("cannot open '" + path + "' for writing");
+    Status written = write_rgba8_to(file, path, width, height, row_of);
+    bool closed = std::fclose(file) == 0;
+    if (written && !closed) written = Error("cannot write '" + path + "'");
+    if (staging == path) return written;
+    if (written && std::rename(staging.c_str(), path.c_str()) != 0)
+        written = Error("cannot write '" + path + "': renaming its temporary file failed");
+    if (!written) std::remove(staging.c_str());
+    return written;
 }
 
 Result<Rgba8Image> read_rgba8(const std::string& path, int max_side) {
@@ -146,6 +177,14 @@ Result<Rgba8Image> read_rgba8(const std::string& path, int max_side) {
     png_uint_32 w = png_get_image_width(r.png, r.info), h = png_get_image_height(r.png, r.info);
     if (w == 0 || h == 0 || w > png_uint_32(max_side) || h > png_uint_32(max_side))
         return Error(fmt::format("'{}' is {}x{}: images must be 1..{} pixels per side", path, w, h, max_side));
+    // zlib inflates at most ~1032:1, so a file far smaller than its rows'
+    // least compressed size is truncated: refused before the rows are allocated.
+    std::error_code ec;
+    uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+    uint64_t least_raw = uint64_t(h) * ((uint64_t(w) + 7) / 8 + 1);
+    if (!ec && least_raw / 1032 > file_bytes + 1024)
+        return Error(fmt::format("'{}' claims {}x{} pixels, more than its {} bytes can hold: it is truncated or corrupt",
+                                 path, w, h, file_bytes));
     if (!png_request_rgba8(r.png, r.info)) return png_failure(path, r);
     if (png_get_rowbytes(r.png, r.info) != size_t(w) * 4)
         return Error(fmt::format("'{}': libpng could not convert the image to RGBA8", path));

@@ -118,7 +118,7 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
                                         const GLState::TextureUnit* textures) {
     const Program::State& st = state_of(program);
     const ir::Shader& shader = stage == ir::Stage::Vertex ? st.ir.vertex : st.ir.fragment;
-    ExecParams params{st.uniforms.data(), program.exec.max_loop_iterations, textures, program.exec.precision,
+    ExecParams params{st.uniforms.data(), RunLimits(program.exec), textures, program.exec.precision,
                       st.fast_ops};
     BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
                           params.fast_ops, cpu_has_avx2()};

@@ -6,6 +6,7 @@
 // backend; the LLVM JIT (runtime/jit/) is the other. Both compute the same
 // bits: the interpreter is the JIT's oracle (tests/runtime/backend_*).
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -43,6 +44,17 @@ struct RunError {
     int line = 0;
 };
 
+// The work one run() may do before it fails with a RunError (ExecOptions).
+// The JIT honours the loop cap only (docs/limits.md).
+struct RunLimits {
+    uint64_t max_loop_iterations = ExecOptions{}.max_loop_iterations;
+    uint64_t max_instructions = ExecOptions{}.max_instructions;
+    const std::atomic<bool>* cancel = nullptr;
+    RunLimits(uint64_t loop_iterations) : max_loop_iterations(loop_iterations) {}  // the tests' loop cap alone
+    explicit RunLimits(const ExecOptions& o)
+        : max_loop_iterations(o.max_loop_iterations), max_instructions(o.max_instructions), cancel(o.cancel) {}
+};
+
 // What an executor needs of the draw. `uniforms` (the program's store, one
 // 32-bit word per component) must stay alive and unchanged while the
 // executor lives: uniform-only code (the shader's prologue) runs once, when
@@ -50,7 +62,7 @@ struct RunError {
 // bound) must stay alive too.
 struct ExecParams {
     const uint32_t* uniforms = nullptr;
-    uint64_t max_loop_iterations = 1u << 22;
+    RunLimits limits{ExecOptions{}.max_loop_iterations};
     const GLState::TextureUnit* textures = nullptr;
     Precision precision = Precision::Precise;
     uint32_t fast_ops = kAllFastOps;  // FastOps bits: the classes Fast approximates

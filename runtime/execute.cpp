@@ -209,6 +209,7 @@ namespace glslrun {
 
 Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
                                                uint32_t count, const GLState* gl) {
+    if (Status st = check_valid(program); !st) return st.error();
     exec::VertexOutputs shaded;
     if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded); !st)
         return st.error();
@@ -228,6 +229,7 @@ Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std
 
 Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
                                                 uint32_t count, const GLState* gl) {
+    if (Status valid = check_valid(program); !valid) return valid.error();
     const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
     const GLState defaults;

@@ -170,6 +170,7 @@ void for_each_builtin(const GLState& gl, const Wants& wants, const Emit& emit) {
 }  // namespace
 
 Status apply_builtin_uniforms(Program& program, const GLState& gl) {
+    if (Status valid = check_valid(program); !valid) return valid;
     Program::State& st = state_of(program);
     Wants wants;
     for (const ir::Uniform& u : st.ir.uniforms)

@@ -39,10 +39,14 @@ struct Range {
 template <class W, bool kTraced = false>
 struct Core {
     size_t reg_count;  // the shader itself is not kept: Steps hold everything
-    uint64_t max_loop_iterations;
+    RunLimits limits;
     // Counts the iterations of all loops of one run together, so nested
     // loops cannot multiply the cap into an effective hang.
     uint64_t loop_iterations_left = 0;
+    // Instructions of the blocks entered in this run; the cancel flag is
+    // polled when the count passes a multiple of kCancelPoll.
+    uint64_t instructions_left = 0, next_cancel_poll = 0;
+    static constexpr uint64_t kCancelPoll = 1u << 16;
     // One extra register of zeros backs operands that an op does not read.
     AlignedWords<W> file;
     Machine<W> machine;
@@ -76,9 +80,9 @@ struct Core {
     std::vector<ir::Kind> kinds;  // traced only: of every register
     Reader reader{this};
 
-    Core(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
+    Core(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
          Precision precision, uint32_t fast_ops = kAllFastOps, TraceHook* trace_hook = nullptr)
-        : reg_count(s.regs.size()), max_loop_iterations(max_iters), file((s.regs.size() + 1) * kLanes),
+        : reg_count(s.regs.size()), limits(limits), file((s.regs.size() + 1) * kLanes),
           precision(precision), fast_ops(fast_ops), hook(trace_hook) {
         if constexpr (kTraced) kinds = s.regs;
         machine.regs = file.data;
@@ -95,6 +99,7 @@ struct Core {
         std::optional<ir::FlushDenormals> ftz;
         if (flushes_denormals()) ftz.emplace();
         machine.mask.reset(kAllLanes);
+        instructions_left = UINT64_MAX;  // straight-line code: its size bounds it
         run_block(prologue.begin, prologue.end);
     }
 
@@ -184,6 +189,7 @@ struct Core {
     bool run_block(uint32_t begin, uint32_t end) {
         ExecMask& mask = machine.mask;
         if (!mask.any()) return true;
+        if (!charge(end - begin)) return false;
         for (uint32_t i = begin; i < end; ++i) {
             const Step<W>& s = steps[i];
             // Instructions dominate: a predictable branch, not the switch's jump table.
@@ -223,6 +229,20 @@ struct Core {
         return true;
     }
 
+    bool charge(uint64_t instructions) {
+        if (instructions > instructions_left)
+            return fail(fmt::format("the shader executed more than {} instructions in one batch (calls that multiply, "
+                                    "or a loop too long)",
+                                    limits.max_instructions),
+                        0);
+        instructions_left -= instructions;
+        if (limits.cancel && instructions_left < next_cancel_poll) {
+            next_cancel_poll = instructions_left > kCancelPoll ? instructions_left - kCancelPoll : 0;
+            if (limits.cancel->load(std::memory_order_relaxed)) return fail("cancelled: the time limit ran out", 0);
+        }
+        return true;
+    }
+
     // A branch whose mask is empty is skipped entirely.
     bool run_if(const Step<W>& s) {
         ExecMask& mask = machine.mask;
@@ -243,7 +263,7 @@ struct Core {
         for ([[maybe_unused]] uint64_t iteration = 0;; ++iteration) {
             if constexpr (kTraced) hook->loop_iteration(*node, iteration, mask.active());
             if (loop_iterations_left-- == 0)
-                return fail(fmt::format("loop exceeded {} iterations", max_loop_iterations), s.line);
+                return fail(fmt::format("loop exceeded {} iterations", limits.max_loop_iterations), s.line);
             if (!run_block(s.body_begin, s.body_end)) return false;
             mask.loop_continue_block(frame);
             if (mask.any() && !run_block(s.alt_begin, s.alt_end)) return false;
@@ -266,7 +286,9 @@ struct Core {
     bool run(LaneMask live) {
         failed = false;
         call_depth = 0;
-        loop_iterations_left = max_loop_iterations;
+        loop_iterations_left = limits.max_loop_iterations;
+        instructions_left = limits.max_instructions;
+        next_cancel_poll = instructions_left > kCancelPoll ? instructions_left - kCancelPoll : 0;
         error = {};
         machine.mask.reset(live & kAllLanes);
         ExecMask::CallFrame frame = machine.mask.call_begin();
@@ -292,9 +314,9 @@ namespace {
 template <bool kTraced>
 class Narrow final : public Engine {
 public:
-    Narrow(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
+    Narrow(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
            Precision precision, uint32_t fast_ops, TraceHook* hook = nullptr)
-        : core_(s, uniforms, max_iters, textures, precision, fast_ops, hook) {}
+        : core_(s, uniforms, limits, textures, precision, fast_ops, hook) {}
     uint32_t* lanes(ir::Reg r) override { return core_.reg(r); }
     bool run(LaneMask live, RunError* error) override {
         ir::FlushDenormals ftz;
@@ -313,9 +335,9 @@ private:
 template <bool kTraced>
 class Wide final : public Engine {
 public:
-    Wide(const ir::Shader& s, const uint32_t* uniforms, uint64_t max_iters, const GLState::TextureUnit* textures,
+    Wide(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
          TraceHook* hook = nullptr)
-        : core_(s, uniforms, max_iters, textures, Precision::Reference, kAllFastOps, hook), boundary_((s.regs.size() + 1) * kLanes),
+        : core_(s, uniforms, limits, textures, Precision::Reference, kAllFastOps, hook), boundary_((s.regs.size() + 1) * kLanes),
           inputs_(s.inputs), outputs_(s.outputs) {}
     uint32_t* lanes(ir::Reg r) override {
         if (r == ir::kNoReg || r >= core_.reg_count) return boundary_.data + core_.reg_count * kLanes;
@@ -350,12 +372,12 @@ private:
 
 }  // namespace
 
-Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+Interpreter::Interpreter(const ir::Shader& shader, const uint32_t* uniforms, const RunLimits& limits,
                          const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops) {
     if (precision == Precision::Reference)
-        engine_ = std::make_unique<Wide<false>>(shader, uniforms, max_loop_iterations, textures);
+        engine_ = std::make_unique<Wide<false>>(shader, uniforms, limits, textures);
     else
-        engine_ = std::make_unique<Narrow<false>>(shader, uniforms, max_loop_iterations, textures, precision, fast_ops);
+        engine_ = std::make_unique<Narrow<false>>(shader, uniforms, limits, textures, precision, fast_ops);
 }
 
 Interpreter::~Interpreter() = default;

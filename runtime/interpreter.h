@@ -26,11 +26,11 @@ public:
     // approximate kernels for a few ops; Reference runs double registers.
     // `fast_ops` (FastOps bits): the classes Fast approximates; the others
     // keep their Precise kernels.
-    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+    Interpreter(const ir::Shader& shader, const uint32_t* uniforms, const RunLimits& limits,
                 const GLState::TextureUnit* textures = nullptr, Precision precision = Precision::Precise,
                 uint32_t fast_ops = kAllFastOps);
     Interpreter(const ir::Shader& shader, const ExecParams& p)
-        : Interpreter(shader, p.uniforms, p.max_loop_iterations, p.textures, p.precision, p.fast_ops) {}
+        : Interpreter(shader, p.uniforms, p.limits, p.textures, p.precision, p.fast_ops) {}
     ~Interpreter() override;
 
     // In Reference mode the shader works on doubles behind these words: the

@@ -18,6 +18,25 @@ Program::Program(Program&&) noexcept = default;
 Program& Program::operator=(Program&&) noexcept = default;
 Program::~Program() = default;
 
+Status check_valid(const Program& program) {
+    if (program.valid()) return Ok{};
+    return Error("the Program was moved from: it holds no compiled program");
+}
+
+ProgramUse::ProgramUse(Program& program) {
+    if (status_ = check_valid(program); !status_) return;
+    if (state_of(program).busy.exchange(true, std::memory_order_acquire)) {
+        status_ = Error("the Program is in use on another thread: a Program draws and takes uniforms on one thread "
+                        "at a time");
+        return;
+    }
+    claimed_ = &state_of(program);
+}
+
+ProgramUse::~ProgramUse() {
+    if (claimed_) claimed_->busy.store(false, std::memory_order_release);
+}
+
 namespace {
 
 // CompileOptions::verify_ir, or GLSLRUN_VERIFY=1 (anything but empty or "0").
@@ -77,6 +96,8 @@ Result<const ir::Uniform*> locate(const ir::Program& p, std::string_view name, s
 }  // namespace
 
 Status Program::set_uniform(std::string_view name, std::span<const float> values) {
+    ProgramUse use(*this);
+    if (!use.status()) return use.status();
     uint32_t element = 0;
     auto found = locate(state_->ir, name, values.size(), &element);
     if (!found) return found.error();
@@ -94,6 +115,8 @@ Status Program::set_uniform(std::string_view name, std::span<const float> values
 }
 
 Status Program::set_uniform(std::string_view name, std::span<const int32_t> values) {
+    ProgramUse use(*this);
+    if (!use.status()) return use.status();
     uint32_t element = 0;
     auto found = locate(state_->ir, name, values.size(), &element);
     if (!found) return found.error();
@@ -116,6 +139,7 @@ Status Program::set_uniform(std::string_view name, std::span<const int32_t> valu
 }
 
 bool Program::has_uniform(std::string_view name) const {
+    if (!valid()) return false;
     uint32_t element = 0;
     return ir::find_uniform(state_->ir, std::string(name), &element) != nullptr;
 }
@@ -135,11 +159,12 @@ std::string glsl_type_name(const ir::ValueType& t) {
 
 std::vector<UniformInfo> Program::uniforms() const {
     std::vector<UniformInfo> out;
+    if (!valid()) return out;
     for (const ir::Uniform& u : state_->ir.uniforms)
         out.push_back({u.name, glsl_type_name(u.type), u.array_size, u.builtin, u.read});
     return out;
 }
 
-std::string Program::dump_ir() const { return ir::print(state_->ir); }
+std::string Program::dump_ir() const { return valid() ? ir::print(state_->ir) : std::string(); }
 
 }  // namespace glslrun

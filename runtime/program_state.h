@@ -2,6 +2,7 @@
 // glslrun's own code (the runtime, the rasterizer, the scene library's error
 // report, the tools, tests and benchmarks). Not a public header.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -25,6 +26,8 @@ struct Program::State {
     // rt::FastOps bits: the op classes Precision::Fast approximates. All of
     // them, except in the error report's ablation (scene/error_report.cpp).
     uint32_t fast_ops = ~0u;
+    // Set while a draw or set_uniform runs (ProgramUse).
+    std::atomic<bool> busy{false};
     // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
     raster::DrawProbe* probe = nullptr;
     // The shaders compiled by the backends (runtime/backend_cache.h), made
@@ -34,5 +37,21 @@ struct Program::State {
 
 inline Program::State& state_of(Program& program) { return *program.state_; }
 inline const Program::State& state_of(const Program& program) { return *program.state_; }
+
+// Claims a Program for one draw or uniform update. A moved-from Program, or
+// one that another thread is using, gives an Error instead of a data race.
+class ProgramUse {
+public:
+    explicit ProgramUse(Program& program);
+    ~ProgramUse();
+    ProgramUse(const ProgramUse&) = delete;
+    ProgramUse& operator=(const ProgramUse&) = delete;
+    const Status& status() const { return status_; }
+private:
+    Program::State* claimed_ = nullptr;
+    Status status_ = Ok{};
+};
+// The Error for a moved-from Program (the calls that only read it).
+Status check_valid(const Program& program);
 
 }  // namespace glslrun

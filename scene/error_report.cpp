@@ -47,7 +47,9 @@ Result<Program> compile_for(const std::vector<ShaderSource>& vertex, const std::
 // depth planes with their coverage. Unwritten pixels get the clear values an
 // RGBA8 framebuffer would hold.
 Result<Frame> render_frame(Program& prog, const Scene& scene) {
-    Framebuffer fb(scene.width, scene.height, /*float_color=*/true, color_buffers(scene));
+    auto created = Framebuffer::create(scene.width, scene.height, /*float_color=*/true, color_buffers(scene));
+    if (!created) return created.error();
+    Framebuffer& fb = *created;
     auto start = Clock::now();
     fb.clear_color(glm::vec4(std::bit_cast<float>(kUnwrittenBits)));
     fb.clear_depth(scene.clear_depth);

@@ -26,6 +26,7 @@
 #include <tiny_obj_loader.h>
 
 #include "glslrun/scene/meshes.h"
+#include "scene/text_file.h"
 
 namespace glslrun::scene {
 
@@ -176,21 +177,6 @@ std::optional<Error> check_obj_text(std::string_view text, const std::string& pa
     return std::nullopt;
 }
 
-Result<std::string> read_text(const std::string& path) {
-    std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (status.type() == std::filesystem::file_type::not_found)
-        return Error("cannot open OBJ file: no such file", path);
-    if (ec) return Error(fmt::format("cannot open OBJ file: {}", ec.message()), path);
-    if (std::filesystem::is_directory(status)) return Error("cannot read OBJ file: it is a directory", path);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error(fmt::format("cannot open OBJ file: {}", std::strerror(errno)), path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return Error("cannot read OBJ file", path);
-    return text.str();
-}
-
 // tinyobjloader's messages sometimes say "line N"; keep N for the Error.
 Error parser_error(const std::string& message, const std::string& path) {
     int line = 0;
@@ -299,7 +285,7 @@ private:
 }  // namespace
 
 Result<Mesh> load_obj(const std::string& path) {
-    Result<std::string> text = read_text(path);
+    Result<std::string> text = read_text_file(path, "OBJ file");
     if (!text) return text.error();
     if (std::optional<Error> e = check_obj_text(*text, path)) return *e;
 

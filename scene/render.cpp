@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/text_file.h"
+
 namespace glslrun::scene {
 
 const VertexAttrib* Mesh::find(std::string_view name) const {
@@ -152,20 +154,19 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
 }
 
 Result<Image> render_image(Program& program, const Scene& scene) {
-    Framebuffer fb(scene.width, scene.height, false, color_buffers(scene));
-    auto stats = render_scene(program, scene, fb);
+    auto fb = Framebuffer::create(scene.width, scene.height, false, color_buffers(scene));
+    if (!fb) return fb.error();
+    auto stats = render_scene(program, scene, *fb);
     if (!stats) return stats.error();
-    return read_framebuffer(fb);
+    return read_framebuffer(*fb);
 }
 
 Result<std::vector<ShaderSource>> read_shader_files(const std::vector<std::string>& paths) {
     std::vector<ShaderSource> sources;
     for (const std::string& path : paths) {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) return Error("cannot read the file", path);
-        std::stringstream text;
-        text << in.rdbuf();
-        sources.push_back({path, text.str()});
+        auto text = read_text_file(path, "shader");
+        if (!text) return text.error();
+        sources.push_back({path, std::move(*text)});
     }
     return sources;
 }

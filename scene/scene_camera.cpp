@@ -251,9 +251,11 @@ void read_camera(const Section& s, Scene& scene) {
 }
 
 std::string size_problem(int64_t width, int64_t height) {
-    if (width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide) return {};
-    return fmt::format("size {}x{} is not allowed: width and height must each be 1..{}", width, height,
-                       kMaxImageSide);
+    if (width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide &&
+        width * height <= kMaxFramebufferPixels)
+        return {};
+    return fmt::format("size {}x{} is not allowed: width and height must each be 1..{}, and {}M pixels at most",
+                       width, height, kMaxImageSide, kMaxFramebufferPixels >> 20);
 }
 
 }  // namespace detail

@@ -72,9 +72,9 @@ double positive(const Section& s, std::string_view key, double fallback) {
     return v;
 }
 
-int count(const Section& s, std::string_view key, int fallback, int min) {
+int count(const Section& s, std::string_view key, int fallback, int min, int max = kMaxSubdivisions) {
     const toml::node* n = s.get(key);
-    return n ? int(integer(*n, s.name(key), min, kMaxSubdivisions)) : fallback;
+    return n ? int(integer(*n, s.name(key), min, max)) : fallback;
 }
 
 Mesh load_obj_mesh(const Section& s, const std::string& scene_dir, const std::string& object) {
@@ -95,7 +95,7 @@ Mesh load_obj_mesh(const Section& s, const std::string& scene_dir, const std::st
 Mesh build_mesh(const Section& s, const MeshKind& kind, const std::string& scene_dir,
                 const std::string& object) {
     std::string_view k = kind.name;
-    if (k == "teapot") return make_teapot(positive(s, "size", 1.0), count(s, "subdivisions", 10, 1));
+    if (k == "teapot") return make_teapot(positive(s, "size", 1.0), count(s, "subdivisions", 10, 1, kMaxTeapotSubdivisions));
     if (k == "quad") return make_lecture_quad();
     if (k == "cube") return make_cube(positive(s, "size", 1.0));
     if (k == "sphere")

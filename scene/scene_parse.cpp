@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "scene/scene_reader.h"
+#include "scene/text_file.h"
 
 namespace glslrun::scene {
 
@@ -112,12 +113,9 @@ void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings
 }
 
 Result<Scene> load_scene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error(fmt::format("cannot open scene file '{}': {}", path, std::strerror(errno)), path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return Error(fmt::format("cannot read scene file '{}'", path), path);
-    return parse_scene(text.str(), path);
+    Result<std::string> text = read_text_file(path, "scene file");
+    if (!text) return text.error();
+    return parse_scene(*text, path);
 }
 
 }  // namespace glslrun::scene

@@ -114,7 +114,7 @@ void push_patch_triangles(std::vector<uint32_t>& out, uint32_t base, int n) {
 }  // namespace
 
 Mesh make_teapot(double size, int subdivisions) {
-    assert(subdivisions >= 1 && subdivisions <= kMaxSubdivisions);
+    assert(subdivisions >= 1 && subdivisions <= kMaxTeapotSubdivisions);
     const int n = subdivisions;
     const size_t per_patch = size_t(n + 1) * size_t(n + 1);
     const size_t vertices = per_patch * kPatchCount;

@@ -94,7 +94,13 @@ Result<TextureImage> read_texture_image(const std::string& path, bool bottom_up)
     int w = 0, h = 0, channels = 0;
     // Four channels requested: stb expands grey to (L, L, L) and adds alpha 255.
     stbi_uc* pixels = stbi_load_from_memory(data->data(), int(data->size()), &w, &h, &channels, 4);
-    if (!pixels) return Error(fmt::format("cannot decode the image '{}': {}", path, stbi_failure_reason()));
+    if (!pixels) {
+        // stb's reasons may quote the file's bytes ("PNG chunk not known" names the chunk).
+        std::string reason = stbi_failure_reason();
+        for (char& c : reason)
+            if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+        return Error(fmt::format("cannot decode the image '{}': {}", path, reason));
+    }
     // A header that lied about the size would index past the decoded pixels.
     if (std::pair{w, h} != *size) {
         stbi_image_free(pixels);

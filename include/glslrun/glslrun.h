@@ -10,6 +10,7 @@
 // Every user mistake comes back as an Error value; nothing here exits.
 #pragma once
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -136,6 +137,15 @@ struct ExecOptions {
     // Iterations of all loops of one batch together; past it the draw stops
     // with a clear error instead of hanging.
     uint64_t max_loop_iterations = 1u << 22;
+    // Instructions one batch may execute, counted per block as it is entered
+    // (an upper bound); past it the draw stops with a clear error. It bounds
+    // the work of shaders without loops too: 30 functions that each call the
+    // one before twice make 2^29 calls.
+    uint64_t max_instructions = uint64_t(1) << 28;
+    // When *cancel becomes true, a running draw or run_* call stops with an
+    // error: a wall-clock limit set by a watchdog thread (glslrun test
+    // --no-isolate). Polled every 2^16 instructions.
+    const std::atomic<bool>* cancel = nullptr;
     // Worker threads of draw(); 0 means one per core. Images are
     // bit-identical whatever the count.
     unsigned threads = 0;
@@ -164,6 +174,8 @@ public:
     Program(Program&&) noexcept;
     Program& operator=(Program&&) noexcept;
     ~Program();
+    // False once moved from; every call on such a Program then returns an Error.
+    bool valid() const noexcept { return state_ != nullptr; }
 
     // GL semantics (glUniform*): name may be "a", "a[2]", "s.f", "s[1].f";
     // values fill consecutive elements from there. A float uniform takes
@@ -420,9 +432,20 @@ Result<std::vector<ShaderOutput>> run_fragments(const Program& program,
                                                 uint32_t count, const GLState* gl = nullptr);
 
 // ---------------------------------------------------------- rendering ---
+// Framebuffer limits, checked before anything is allocated (docs/limits.md):
+// each side 1..16384 (GL_MAX_VIEWPORT_DIMS) and 64M pixels in all (1.25 GiB
+// of colour and depth).
+inline constexpr int kMaxFramebufferSide = 16384;
+inline constexpr int64_t kMaxFramebufferPixels = int64_t(1) << 26;
+Status check_framebuffer_size(int width, int height);
+
 struct Framebuffer {
     // color_buffers: 1..kMaxDrawBuffers colour buffers, all of one format.
+    // A size that check_framebuffer_size refuses gives an empty (0x0)
+    // framebuffer, which draw() refuses; create() returns the reason, and
+    // out of memory, as an Error instead.
     Framebuffer(int width, int height, bool float_color = false, int color_buffers = 1);
+    static Result<Framebuffer> create(int width, int height, bool float_color = false, int color_buffers = 1);
     int width = 0, height = 0;
     bool float_color = false;  // false: RGBA8 (values clamped and quantised on write)
     std::vector<float> color;  // colour buffer 0: RGBA, row 0 at the bottom (GL convention)
@@ -454,8 +477,9 @@ struct DrawStats {
 // from `gl` (apply_builtin_uniforms is called for you). Attributes the mesh
 // lacks take GL's current values (gl.current_color, ...). `indices` may be empty.
 // The program keeps the draw's working memory for its next draw (no page
-// faults on fresh buffers per draw), so one Program must not draw on two
-// threads at once; separate Programs may.
+// faults on fresh buffers per draw), so one Program draws on one thread at a
+// time: a draw or set_uniform on another thread meanwhile returns an Error.
+// Separate Programs may draw at once.
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                        const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
                        std::span<const uint32_t> indices = {});

@@ -133,7 +133,7 @@ class JitExecutor final : public Executor {
 public:
     JitExecutor(const JitShader& code, const ExecParams& p)
         : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms) {
-        ctx_.max_loop_iterations = p.max_loop_iterations;
+        ctx_.max_loop_iterations = p.limits.max_loop_iterations;
         ctx_.machine.uniforms = p.uniforms;
         ctx_.machine.textures = p.textures;
         ctx_.machine.regs = regs_.data;

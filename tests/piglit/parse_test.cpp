@@ -243,3 +243,10 @@ TEST_CASE("glslparsertest config blocks", "[piglit][parse]") {
     CHECK_FALSE(parsed_ok(parse_parser_test("// [config]\n// expect_result: maybe\n")));
     CHECK_FALSE(parsed_ok(parse_parser_test("// [config]\n// expect_result: pass\n// glsl_version: 1.10\n")));
 }
+
+TEST_CASE("a version number too large for an int is malformed, not an overflow (fuzz_piglit)", "[piglit][parse]") {
+    // UBSan: signed integer overflow in parse_version_number before the fix.
+    auto p = parse_parser_test("// [config]\n// expect_result: fail\n// glsl_version: 1214748364.0\n// [end config]\n");
+    REQUIRE_FALSE(parsed_ok(p));
+    CHECK_FALSE(parsed_ok(parse_shader_test("[require]\nGLSL >= 2147483647.99\n")));
+}

@@ -109,6 +109,8 @@ TEST_CASE("output sizes are checked before anything is allocated", "[scene][erro
         {"[output]\nsize = [100000, 100000]\n", 2,
          "size 100000x100000 is not allowed: width and height must each be 1..16384"},
         {"[output]\nsize = [0, 512]\n", 2, "size 0x512 is not allowed"},
+        // Issue #17: each side is allowed, but 16384^2 pixels would need 5 GiB.
+        {"[output]\nsize = [16384, 16384]\n", 2, "size 16384x16384 is not allowed: width and height must each be 1..16384, and 64M pixels at most"},
         {"[output]\nsize = [-512, 512]\n", 2, "size -512x512 is not allowed"},
         {"[output]\nsize = [512, 9223372036854775807]\n", 2, "is not allowed"},
         {"[output]\nsize = [512]\n", 2, "must be [width, height]"},
@@ -154,8 +156,8 @@ TEST_CASE("object mistakes", "[scene][errors]") {
     check_cases({
         {"[[objects]]\nmesh = \"teapt\"\n", 2, "'objects[0].mesh' = \"teapt\" is not allowed; did you mean 'teapot'?"},
         {"[[objects]]\nname = \"x\"\n", 1, "[objects[0]] needs 'mesh'"},
-        {"[[objects]]\nmesh = \"teapot\"\nsubdivisions = 0\n", 3, "'objects[0].subdivisions' must be in [1, 1024]; got 0"},
-        {"[[objects]]\nmesh = \"teapot\"\nsubdivisions = 1025\n", 3, "must be in [1, 1024]; got 1025"},
+        {"[[objects]]\nmesh = \"teapot\"\nsubdivisions = 0\n", 3, "'objects[0].subdivisions' must be in [1, 256]; got 0"},
+        {"[[objects]]\nmesh = \"teapot\"\nsubdivisions = 257\n", 3, "must be in [1, 256]; got 257"},
         {"[[objects]]\nmesh = \"plane\"\nsubdivisions = 2.5\n", 3, "must be an integer"},
         {"[[objects]]\nmesh = \"sphere\"\nslices = 2\n", 3, "'objects[0].slices' must be in [3, 1024]"},
         {"[[objects]]\nmesh = \"teapot\"\nsize = -1\n", 3, "'objects[0].size' must be > 0"},

@@ -5,7 +5,10 @@
 //      --error-report DIR measures the mode's error against reference)
 //   glslrun --dump-ir a.vert a.frag           the IR of a program
 //   glslrun --compare ref.png image.png       image differences
+//   glslrun batch JOBS                        many renders in one process
 //   glslrun trace --pixel X,Y a.vert a.frag scene.toml   the shader debugger (docs/debugging.md)
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -14,12 +17,15 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "batch_command.h"
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
 #include "render_command.h"
+#include "scene/text_file.h"
 #include "trace_command.h"
 
 namespace {
@@ -28,14 +34,6 @@ using namespace glslrun;
 namespace pg = glslrun::piglit;
 
 constexpr const char* kVersion = "glslrun " GLSLRUN_VERSION_STRING " (GLSL 1.10/1.20 on the CPU)";
-
-std::optional<std::string> read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream buf;
-    buf << in.rdbuf();
-    return buf.str();
-}
 
 // --precision NAME, for rendering and for `glslrun test`; a bad name is a usage error.
 void add_precision_option(CLI::App& app, Precision& precision) {
@@ -65,22 +63,73 @@ void add_backend_option(CLI::App& app, Backend& backend) {
         });
 }
 
+// CLI11's parse: -1 to go on; 0 after --help or --version; 2 for a usage
+// error (CLI11's own codes are 100 and up, and glslrun's are 0, 1 and 2).
+int parse_command_line(CLI::App& app, int argc, char** argv) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    return -1;
+}
+
+// A number in [lo, hi]; unlike CLI::Range, NaN is refused.
+CLI::Validator finite_in(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](const std::string& text) {
+            char* end = nullptr;
+            double v = std::strtod(text.c_str(), &end);
+            bool ok = end != text.c_str() && *end == 0 && std::isfinite(v) && v >= lo && v <= hi;
+            return ok ? std::string() : fmt::format("'{}' is not a number in [{}, {}]", text, lo, hi);
+        },
+        fmt::format("NUMBER in [{}, {}]", lo, hi));
+}
+
 // ------------------------------------------------------------ glslrun test ---
 struct TestOptions {
     std::vector<std::string> paths;
     int jobs = 1;
     std::string tsv, expect, root;
+    std::string junit, json, shard;
     double time_limit = 120;
     bool no_isolate = false;
     Precision precision = Precision::Precise;
     Backend backend = Backend::Auto;
 };
 
+// Sets its flag once `seconds` have passed, unless it is destroyed first:
+// the wall-clock limit of a test run in this process (--no-isolate).
+class Watchdog {
+public:
+    explicit Watchdog(double seconds)
+        : thread_([this, seconds](std::stop_token stop) {
+              std::mutex m;
+              std::unique_lock lock(m);
+              std::condition_variable_any cv;
+              cv.wait_for(lock, stop, std::chrono::duration<double>(seconds), [] { return false; });
+              if (!stop.stop_requested()) fired_ = true;
+          }) {}
+    const std::atomic<bool>* flag() const { return &fired_; }
+private:
+    std::atomic<bool> fired_{false};
+    std::jthread thread_;  // last: it stops and joins before fired_ goes
+};
+
+bool write_report(const std::string& path, const std::string& text, const char* what) {
+    if (path.empty()) return true;
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (out.flush()) return true;
+    fmt::print(stderr, "{}: cannot write the {} file\n", path, what);
+    return false;
+}
+
 int run_test_command(const TestOptions& o) {
     pg::Expectations expectations;
     if (!o.expect.empty()) {
-        auto text = read_text(o.expect);
-        if (!text) { fmt::print(stderr, "{}: cannot read the expectations file\n", o.expect); return 2; }
+        auto text = scene::read_text_file(o.expect, "the expectations file");
+        if (!text) { fmt::print(stderr, "{}", text.error().str()); return 2; }
         auto parsed = pg::parse_expectations(*text);
         if (!pg::parsed_ok(parsed)) {
             fmt::print(stderr, "{}: {}\n", o.expect, std::get<pg::ParseError>(parsed).str());
@@ -92,6 +141,16 @@ int run_test_command(const TestOptions& o) {
     auto cases = pg::discover_tests(o.paths, o.root, errors);
     for (const auto& e : errors) fmt::print(stderr, "error: {}\n", e);
     if (!errors.empty()) return 2;
+    // A wrong path must not pass CI as an empty, successful run.
+    if (cases.empty()) {
+        fmt::print(stderr, "error: no tests found in {}\n", fmt::join(o.paths, ", "));
+        return 2;
+    }
+    if (!o.shard.empty()) {
+        auto shard = pg::parse_shard(o.shard);
+        if (!shard) { fmt::print(stderr, "error: --shard '{}' must be I/N with 0 <= I < N\n", o.shard); return 2; }
+        cases = pg::select_shard(std::move(cases), shard->first, shard->second);
+    }
 
     std::ofstream tsv;
     if (!o.tsv.empty()) {
@@ -105,7 +164,12 @@ int run_test_command(const TestOptions& o) {
     run_options.backend = o.backend;
     if (!o.no_isolate) pg::warm_up_compiler();
     auto run_one = [&](const pg::TestCase& tc) {
-        if (o.no_isolate) return pg::run_test_file(tc.path, run_options);
+        if (o.no_isolate) {
+            Watchdog watchdog(o.time_limit);
+            pg::RunOptions limited = run_options;
+            limited.cancel = watchdog.flag();
+            return pg::run_test_file(tc.path, limited);
+        }
         // A hard limit a bit above the soft one, which is only checked between commands.
         return pg::run_isolated([&] { return pg::run_test_file(tc.path, run_options); },
                                 o.time_limit * 1.25 + 5);
@@ -120,6 +184,9 @@ int run_test_command(const TestOptions& o) {
     bool have_expect = !o.expect.empty();
     auto summary = pg::summarize(cases, results, have_expect ? &expectations : nullptr);
     std::fputs(pg::format_summary(summary, have_expect).c_str(), stdout);
+    if (!write_report(o.junit, pg::format_junit(cases, results), "JUnit") ||
+        !write_report(o.json, pg::format_json(cases, results), "JSON"))
+        return 2;
     return summary.ok(have_expect) ? 0 : 1;
 }
 
@@ -134,14 +201,33 @@ int test_main(int argc, char** argv) {
     app.add_option("--expect", o.expect,
                    "expectations list (\"path fail|skip # reason\"); unlisted tests must pass");
     app.add_option("--root", o.root, "print paths relative to this directory (and look them up there)");
-    app.add_option("--time-limit", o.time_limit, "seconds per test (default 120)");
+    app.add_option("--time-limit", o.time_limit, "seconds per test (default 120)")
+        ->check(finite_in(1e-3, 1e6));
+    app.add_option("--junit", o.junit, "also write the results as JUnit XML to this file");
+    app.add_option("--json", o.json, "also write the results as JSON (name, result, time, message per test)");
+    app.add_option("--shard", o.shard,
+                   "run only shard I of N (0-based, I/N): every N-th test from the I-th, for CI matrices");
     app.add_flag("--no-isolate", o.no_isolate,
                  "run tests in this process (default: one forked process per test, so a crash "
                  "or hang fails only that test)");
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
-    CLI11_PARSE(app, argc, argv);
+    if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
     return run_test_command(o);
+}
+
+// ------------------------------------------------------------ glslrun batch ---
+int batch_main(int argc, char** argv) {
+    CLI::App app{"Renders many (vertex, fragment, scene, output) jobs in one process", "glslrun batch"};
+    std::string jobs;
+    ExecOptions exec;
+    app.add_option("jobs", jobs, "a file of jobs, one `VERT FRAG SCENE OUTPUT.png` per line ('#' comments)")
+        ->required();
+    app.add_option("--threads", exec.threads, "worker threads for drawing (default: one per core)")
+        ->check(CLI::Range(1, 256));
+    add_precision_option(app, exec.precision);
+    if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
+    return cli::run_batch_command(jobs, exec);
 }
 
 // ------------------------------------------------ programs and scenes ---
@@ -155,7 +241,8 @@ int program_cli(int argc, char** argv) {
     app.add_option("files", files,
                    "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
                    "pass-through one is used)");
-    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png; - for standard output); with several draw buffers, buffer i > 0 goes to NAME.i.png");
+    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png; - for standard output); with several draw buffers, buffer i > 0 goes to NAME.i.png")
+        ->check([](const std::string& path) { return path.empty() ? std::string("the path is empty") : std::string(); });
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     app.add_option("--uniform", o.uniforms,
                    "NAME=VALUE: set a uniform after the scene's own settings (the value as in a scene's "
@@ -189,6 +276,10 @@ int program_cli(int argc, char** argv) {
                    "compare the rendered image, or the PNG given, with this reference PNG");
     app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")
         ->check(CLI::Range(0, 255));
+    app.add_option("--min-fraction", o.min_fraction,
+                   "--compare: the fraction of covered pixels that must be within --tolerance (default 1; the "
+                   "project's rule against Mesa is --tolerance 1 --min-fraction 0.999)")
+        ->check(finite_in(0, 1));
     app.add_option("--diff", o.diff, "--compare: write a difference image to this PNG");
     app.footer("Examples:\n"
                "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png\n"
@@ -198,7 +289,7 @@ int program_cli(int argc, char** argv) {
                "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml --precision fast "
                "--error-report err/\n"
                "Scene files: docs/scene-format.md. Piglit tests: glslrun test --help");
-    CLI11_PARSE(app, argc, argv);
+    if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
     if (files.empty()) {
         std::fputs(app.help().c_str(), stdout);
         return 2;
@@ -209,8 +300,16 @@ int program_cli(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
-    if (argc >= 2 && std::string_view(argv[1]) == "trace")
-        return glslrun::cli::trace_main(argc - 1, argv + 1, add_precision_option);
-    return program_cli(argc, argv);
+    // Sizes are checked before allocating (docs/limits.md); what is left is a
+    // machine with less memory than the limits assume: a message, not an abort.
+    try {
+        if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+        if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
+        if (argc >= 2 && std::string_view(argv[1]) == "trace")
+            return glslrun::cli::trace_main(argc - 1, argv + 1, add_precision_option);
+        return program_cli(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fputs("glslrun: error: out of memory\n", stderr);
+        return 2;
+    }
 }

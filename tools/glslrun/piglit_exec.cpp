@@ -15,17 +15,10 @@
 
 #include "glslrun/glslrun.h"
 #include "piglit_textures.h"
+#include "scene/text_file.h"
 
 namespace glslrun::piglit {
 namespace {
-
-std::optional<std::string> read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream buf;
-    buf << in.rdbuf();
-    return buf.str();
-}
 
 TestResult fail(std::string message) { return {Outcome::Fail, std::move(message)}; }
 TestResult skip(std::string message) { return {Outcome::Skip, std::move(message)}; }
@@ -116,8 +109,8 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
     for (const auto& section : test_.shaders) {
         std::string text = section.text;
         if (!section.file.empty()) {
-            auto loaded = read_file((std::filesystem::path(dir) / section.file).string());
-            if (!loaded) return fail("could not load shader file \"" + section.file + "\"");
+            auto loaded = scene::read_text_file((std::filesystem::path(dir) / section.file).string(), "shader file");
+            if (!loaded) return fail(loaded.error().diagnostics[0].message);
             text = *loaded;
         }
         ShaderSource src{section.label, effective_source(text, test_.require)};
@@ -133,6 +126,7 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
         if (options_.max_loop_iterations) program_->exec.max_loop_iterations = options_.max_loop_iterations;
         program_->exec.precision = options_.precision;
         program_->exec.backend = options_.backend;
+        program_->exec.cancel = options_.cancel;
         return std::nullopt;
     }
     // Program::compile compiles and links; piglit fails on a compile error but
@@ -442,8 +436,8 @@ TestResult run_parser_test(const std::string& text, const std::string& ext, cons
 }
 
 TestResult run_test_file(const std::string& path, const RunOptions& options) {
-    auto text = read_file(path);
-    if (!text) return fail("could not read file");
+    auto text = scene::read_text_file(path, "test file");
+    if (!text) return fail(text.error().diagnostics[0].message);
     std::string ext = extension_of(path);
     if (ext == ".shader_test")
         return run_shader_test(*text, std::filesystem::path(path).parent_path().string(), options);

@@ -15,6 +15,9 @@ struct RunOptions {
     Precision precision = Precision::Precise;
     Backend backend = Backend::Auto;
     Capabilities caps;
+    // When it becomes true, a running draw stops (ExecOptions::cancel): the
+    // wall-clock limit of `glslrun test --no-isolate`.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // Dispatches on the extension; never throws for bad input (it becomes a fail).

@@ -79,6 +79,8 @@ int parse_version_number(std::string_view s, bool glsl) {
     if (std::sscanf(str.c_str(), "%d%c%d%n", &major, &dot, &minor, &consumed) != 3 || dot != '.')
         return -1;
     if (consumed != static_cast<int>(str.size())) return -1;
+    // Bounded before multiplying: fuzz_piglit found "glsl_version: 1214748364.0" overflowing.
+    if (major < 0 || major > 99 || minor < 0 || minor > (glsl ? 99 : 9)) return -1;
     return glsl ? major * 100 + minor : major * 10 + minor;
 }
 

@@ -36,6 +36,12 @@ bool is_test_file(const std::string& path);
 std::vector<TestCase> discover_tests(const std::vector<std::string>& args, const std::string& root,
                                      std::vector<std::string>& errors);
 
+// Shard `index` of `count` (0-based): every count-th case from the index-th,
+// so that CI jobs or machines split a sorted suite deterministically.
+std::vector<TestCase> select_shard(std::vector<TestCase> cases, int index, int count);
+// "I/N" (0 <= I < N); nullopt for anything else.
+std::optional<std::pair<int, int>> parse_shard(std::string_view text);
+
 // Runs every case with `jobs` worker threads. `report` is called once per
 // test, in the order of `cases`, as soon as that test and all before it are done.
 // Exceptions thrown by `run_one` become failures.
@@ -48,6 +54,11 @@ std::vector<TestResult> run_tests(const std::vector<TestCase>& cases, int jobs, 
 std::string format_result_line(const std::string& display, const TestResult& r);
 // "path\tresult\tseconds\tmessage" (message on one line).
 std::string format_tsv_line(const std::string& display, const TestResult& r);
+
+// Machine-readable results: a JUnit XML file (one testcase per test, failures
+// and skips with their message) and a JSON array of {name, result, time, message}.
+std::string format_junit(const std::vector<TestCase>& cases, const std::vector<TestResult>& results);
+std::string format_json(const std::vector<TestCase>& cases, const std::vector<TestResult>& results);
 
 // ------------------------------------------------------- expectations ---
 // Lines: "path  fail|skip  # reason"; '#' starts a comment; blank lines are ignored.

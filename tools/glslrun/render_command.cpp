@@ -21,6 +21,7 @@
 #include "scene/bench_report.h"
 #include "glslrun/scene/image_compare.h"
 #include "glslrun/scene/render.h"
+#include "scene/text_file.h"
 
 namespace glslrun::cli {
 namespace {
@@ -30,18 +31,12 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-int fail(const Error& e) {
+constexpr int kToolError = 2;
+
+int fail(const Error& e, int status = 1) {
     std::string text = e.str();
     std::fputs(text.c_str(), stderr);
-    return 1;
-}
-
-std::optional<std::string> read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream buf;
-    buf << in.rdbuf();
-    return buf.str();
+    return status;
 }
 
 }  // namespace
@@ -60,8 +55,8 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
         } else if (!shader) {
             return Error("unknown kind of file: shaders end in .vert or .frag, scenes in .toml", path);
         } else {
-            auto text = read_text(path);
-            if (!text) return Error("cannot read the file", path);
+            auto text = scene::read_text_file(path, "shader");
+            if (!text) return text.error();
             bool vertex = ext == ".vert" || ext == ".vs";
             (vertex ? in.vertex : in.fragment).push_back({path, *text});
         }
@@ -194,19 +189,21 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     fmt::print("textures     {}\n", describe_textures(scene));
 }
 
+// Exit status 0: the images agree within the thresholds; 1: they differ
+// (in size too); 2: a file could not be read or written.
 int compare_with(const scene::Image& actual, const RenderOptions& o) {
     auto reference = scene::read_png(o.compare);
-    if (!reference) return fail(reference.error());
+    if (!reference) return fail(reference.error(), kToolError);
     scene::CompareOptions options;
     options.tolerance = o.tolerance;
-    options.min_fraction_within = 1.0;  // the exit status says whether any pixel is off by more
+    options.min_fraction_within = o.min_fraction;
     auto stats = scene::compare_images(*reference, actual, options);
     if (!stats) return fail(stats.error());
     fmt::print("{}\n", stats->summary());
     if (!o.diff.empty()) {
         auto diff = scene::diff_image(*reference, actual, o.tolerance);
-        if (!diff) return fail(diff.error());
-        if (Status st = scene::write_png(*diff, o.diff); !st) return fail(st.error());
+        if (!diff) return fail(diff.error(), kToolError);
+        if (Status st = scene::write_png(*diff, o.diff); !st) return fail(st.error(), kToolError);
     }
     return stats->passed ? 0 : 1;
 }
@@ -306,7 +303,8 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
     // Allocated before the compile, so that its page faults (2.7 ms at
     // 512x512, perf) overlap the warm-up too.
-    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    auto fb = Framebuffer::create(scene->width, scene->height, false, scene::color_buffers(*scene));
+    if (!fb) return fail(fb.error());
     // The clock starts before the wait: what is left of building glslang's
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
@@ -319,20 +317,22 @@ int render(const Inputs& in, const RenderOptions& o) {
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();
-    auto stats = scene::render_scene(*prog, *scene, fb);
+    auto stats = scene::render_scene(*prog, *scene, *fb);
     if (!stats) return fail(stats.error());
     scene::BenchReport bench = bench_header(*scene, o, *stats, compile_ms, ms_since(start));
     if (o.bench_frames > 0)
-        if (Status st = bench_frames(*prog, *scene, fb, o.bench_frames, bench); !st) return fail(st.error());
+        if (Status st = bench_frames(*prog, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
-    if (Status st = write_buffers(fb, output); !st) return fail(st.error());
+    // --dump-ir alone prints the IR: it writes no image unless -o asks for one.
+    if (!o.output.empty() || !o.dump_ir)
+        if (Status st = write_buffers(*fb, output); !st) return fail(st.error());
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
     if (o.bench_frames > 0) {
         bench.once_s = {{"output", output_ms / 1e3}, {"llvm_compile", prog->jit_compile_seconds()}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);
     }
-    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(fb), o);
+    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(*fb), o);
     return 0;
 }
 
@@ -371,7 +371,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
         if (o.compare.empty() || has_shaders || !in->scene.empty() || o.bench_frames > 0)
             return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image));
         auto image = scene::read_png(in->image);
-        if (!image) return fail(image.error());
+        if (!image) return fail(image.error(), kToolError);
         return compare_with(*image, o);
     }
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));

@@ -16,6 +16,7 @@ struct RenderOptions {
     std::string output, size, compare, diff;
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
     int tolerance = 0;
+    double min_fraction = 1.0;  // --compare passes when this fraction of the covered pixels is within tolerance
     unsigned threads = 0;  // draw() worker threads; 0: one per core
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;

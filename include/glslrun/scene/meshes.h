@@ -33,5 +33,7 @@ void add_normal_colors(Mesh& mesh);
 
 // Upper limits that keep a mesh's memory sane; the parser refuses larger.
 constexpr int kMaxSubdivisions = 1024;
+// The teapot's 32 patches have (n+1)^2 vertices each: 256 gives 2.1M vertices.
+constexpr int kMaxTeapotSubdivisions = 256;
 
 }  // namespace glslrun::scene

@@ -1,0 +1,35 @@
+#include "scene/text_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+namespace glslrun::scene {
+
+Result<std::string> read_text_file(const std::string& path, const char* what) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (status.type() == fs::file_type::not_found) return Error(fmt::format("cannot open {}: no such file", what), path);
+    if (ec) return Error(fmt::format("cannot open {}: {}", what, ec.message()), path);
+    if (fs::is_directory(status)) return Error(fmt::format("cannot read {}: it is a directory", what), path);
+    if (!fs::is_regular_file(status)) return Error(fmt::format("cannot read {}: not a regular file", what), path);
+    const uintmax_t bytes = fs::file_size(path, ec);
+    if (ec) return Error(fmt::format("cannot read {}: {}", what, ec.message()), path);
+    if (bytes > uintmax_t(kMaxTextFileBytes))
+        return Error(fmt::format("cannot read {}: it is {} bytes, the limit is {} MiB", what, bytes,
+                                 kMaxTextFileBytes >> 20),
+                     path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error(fmt::format("cannot open {}: {}", what, std::strerror(errno)), path);
+    std::string text(size_t(bytes), '\0');
+    in.read(text.data(), std::streamsize(bytes));
+    text.resize(size_t(in.gcount()));  // a file that shrank meanwhile
+    if (in.bad()) return Error(fmt::format("cannot read {}", what), path);
+    return text;
+}
+
+}  // namespace glslrun::scene

@@ -1,0 +1,92 @@
+#!/bin/sh
+# Issue #17's reproducers through the command line: each ends quickly with a
+# message and exit status 1 (a result) or 2 (usage or tool error), never a
+# signal, an abort or a hang; and `glslrun test`'s CI outputs.
+#
+#   tests/cli/hardening.sh SOURCE_DIR GLSLRUN
+set -u
+src=$1
+glslrun=$2
+. "$src/tests/cli/common.sh"
+
+vs=$src/shaders/minimal.vert
+fs=$src/shaders/minimal.frag
+scene=$src/scenes/spot.toml
+cd "$tmp" || exit 1
+
+# expect STATUS MESSAGE CMD...: the command exits with STATUS and prints MESSAGE on stderr.
+expect() {
+    want=$1 message=$2
+    shift 2
+    timeout 60 "$@" >out.txt 2>err.txt
+    got=$?
+    [ $got = "$want" ] || fail "$*: exit status $got, not $want ($(head -c 300 err.txt))"
+    grep -qF -- "$message" err.txt || fail "$*: no '$message' in: $(head -c 300 err.txt)"
+}
+
+sed 's/^size = .*/size = [16384, 16384]/' "$scene" > big.toml
+expect 1 "64M pixels at most" "$glslrun" "$vs" "$fs" big.toml -o big.png
+sed 's/subdivisions = 10/subdivisions = 1024/' "$scene" > teapot.toml
+expect 1 "must be in [1, 256]" "$glslrun" "$vs" "$fs" teapot.toml -o teapot.png
+ln -s /dev/zero zero.frag
+expect 1 "not a regular file" "$glslrun" "$vs" zero.frag
+printf 'void main() { float a[1000000000]; a[1] = 1.0; gl_FragColor = vec4(a[1]); }\n' > array.frag
+expect 1 "array.frag:1: error: 'a' : 1000000000 components" "$glslrun" "$vs" array.frag
+# A PNG of a few bytes whose header claims 16384x16384 pixels.
+python3 -c "
+import struct, zlib
+def chunk(t, d): return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d))
+ihdr = struct.pack('>IIBBBBB', 16384, 16384, 8, 6, 0, 0, 0)
+open('huge.png', 'wb').write(b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', ihdr) + chunk(b'IDAT', zlib.compress(b'\\0' * 10)))
+"
+expect 2 "more than its" "$glslrun" --compare huge.png huge.png
+expect 2 "the path is empty" "$glslrun" "$vs" "$fs" "$scene" -o ''
+[ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "a PNG was written: $(ls)"
+"$glslrun" --dump-ir "$vs" "$fs" "$scene" > ir.txt || fail "--dump-ir with a scene failed"
+[ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "--dump-ir with a scene wrote a PNG: $(ls)"
+
+# -o goes through a temporary file: a failed write leaves nothing at the path.
+mkdir ro && chmod 555 ro
+if [ ! -w ro ]; then
+    expect 1 "cannot open" "$glslrun" "$vs" "$fs" "$scene" -o ro/out.png
+    [ -z "$(ls ro)" ] || fail "a failed write left $(ls ro)"
+fi
+"$glslrun" "$vs" "$fs" "$scene" --size 16x16 -o out.png || fail "rendering to out.png failed"
+[ "$(ls | grep -c partial)" = 0 ] || fail "a temporary file was left: $(ls)"
+
+# --compare's thresholds and exit status.
+"$glslrun" "$vs" "$fs" "$scene" --size 16x16 -o other.png --precision fast || fail "second render failed"
+"$glslrun" --compare out.png out.png > /dev/null || fail "an image differs from itself"
+"$glslrun" --compare out.png other.png --tolerance 1 --min-fraction 0.999 --diff diff.png > /dev/null ||
+    fail "fast vs precise minimal.frag differs by more than 1/255"
+[ -s diff.png ] || fail "--diff wrote no image"
+expect 2 "is not a number" "$glslrun" --compare out.png other.png --min-fraction nan
+
+# glslrun test: exit statuses, --time-limit, shards and the CI reports.
+mkdir empty
+expect 2 "no tests found" "$glslrun" test empty
+expect 2 "is not a number" "$glslrun" test --time-limit nan "$src/tests/extremes"
+expect 2 "must be I/N" "$glslrun" test --shard 3/3 "$src/tests/extremes"
+timeout 60 "$glslrun" test --no-isolate --time-limit 2 "$src/tests/hardening/slow_without_loops.shader_test" > slow.txt
+[ $? = 1 ] || fail "the slow test did not fail with status 1 within its time limit"
+grep -q "time limit ran out" slow.txt || fail "no time-limit message: $(cat slow.txt)"
+"$glslrun" test --root "$src" tests/extremes --junit all.xml --json all.json > all.txt || fail "tests/extremes failed"
+total=$(grep -c '"name"' all.json)
+[ "$total" -gt 5 ] || fail "the JSON report lists $total tests"
+[ "$(grep -c '<testcase' all.xml)" = "$total" ] || fail "the JUnit report does not list $total tests"
+: > shards.txt
+for i in 0 1 2; do
+    "$glslrun" test --root "$src" tests/extremes --shard $i/3 --json shard$i.json > /dev/null || fail "shard $i failed"
+    grep '"name"' shard$i.json | sed 's/", "result.*//' >> shards.txt
+done
+[ "$(sort shards.txt | uniq | wc -l)" = "$total" ] && [ "$(wc -l < shards.txt)" = "$total" ] ||
+    fail "the three shards do not hold each test once"
+
+# glslrun batch: many renders in one process; a failed job names its line.
+printf '# two jobs\n%s %s %s b1.png\n%s %s missing.toml b2.png\n' "$vs" "$fs" "$scene" "$vs" "$fs" > jobs.txt
+expect 1 "jobs.txt:3: error: job failed" "$glslrun" batch jobs.txt
+[ -s b1.png ] && [ ! -e b2.png ] || fail "batch: b1.png should be written, b2.png not: $(ls)"
+echo "$vs $fs" > bad_jobs.txt
+expect 2 "bad_jobs.txt:1: error: a job is" "$glslrun" batch bad_jobs.txt
+
+finish "hardening: every reproducer ends with a message and status 1 or 2"

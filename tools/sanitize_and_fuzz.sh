@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Sanitizers and fuzzers (docs/ci.md; meant as a step of `tools/setup.sh test`): one clang build
+# with AddressSanitizer + UBSan and libFuzzer's coverage (build-asan), of only
+# the targets it runs: the unit tests that cover the library's inputs, the
+# command line for the piglit suite and tests/cli/hardening.sh, and the three
+# fuzzers, each given a short bounded run from its seed corpus.
+#
+#   tools/sanitize_and_fuzz.sh [FUZZ_SECONDS]   (default 20 per fuzzer)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-20}
+# No leak check: glslang keeps process-wide tables that are never freed.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+      -DGLSLRUN_SANITIZE=ON -DGLSLRUN_FUZZ=ON > /dev/null
+tests=(test_frontend test_runtime test_api test_raster test_piglit)
+cmake --build build-asan -j "$(nproc)" --target glslrun "${tests[@]}" fuzz_compile fuzz_scene fuzz_piglit
+(cd build-asan && ctest --output-on-failure -j "$(nproc)" -R '^(frontend|runtime|api|raster|piglit|cli_hardening)$')
+GLSLRUN=build-asan/glslrun bash tools/piglit_suite.sh
+for fuzzer in compile scene piglit; do
+    case $fuzzer in
+    compile) seeds=(fuzz/corpus/compile shaders) ;;
+    scene) seeds=(fuzz/corpus/scene scenes) ;;
+    piglit) seeds=(fuzz/corpus/piglit tests/extremes) ;;
+    esac
+    # A fresh directory first: new inputs go there, the repo's seeds stay as they are.
+    work=build-asan/corpus-$fuzzer
+    mkdir -p "$work"
+    "build-asan/fuzz_$fuzzer" -dict="fuzz/$fuzzer.dict" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+        -print_final_stats=1 "$work" "${seeds[@]}" 2>&1 | grep -E '^(stat::number_of_executed_units|==.*ERROR|SUMMARY)' || true
+    [ "${PIPESTATUS[0]}" = 0 ] || { echo "fuzz_$fuzzer found a crash (see above)" >&2; exit 1; }
+done
