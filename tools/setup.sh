@@ -13,7 +13,7 @@ packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools
           libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
           ccache)  # the builds below (and CI's variants) reuse each other's object files
-[ "$mode" = test ] && packages+=(piglit)
+[ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -59,6 +59,9 @@ test)
         # The JIT's vectors are kLanes wide too: its images against the interpreter's.
         sh tests/cli/backend_identical.sh . "build-lanes$lanes/glslrun"
     done
+    # ASan + UBSan over the unit tests of the library's inputs, the piglit suite and
+    # the hostile-input reproducers, then each fuzzer for 20 s (docs/ci.md).
+    bash tools/sanitize_and_fuzz.sh 20
     ;;
 *)
     echo "usage: tools/setup.sh [demo|test]" >&2
