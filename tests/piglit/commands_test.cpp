@@ -55,6 +55,8 @@ TEST_CASE("probe syntax", "[piglit][commands]") {
     CHECK(d.y == 0);
     CHECK(d.depth == 0.5f);
 
+    CHECK(is_error("probe depth inf 0 0.5"));  // found by fuzz_piglit: inf converted to int
+    CHECK(is_error("probe depth 0 -1e30 0.5"));
     CHECK(is_error("probe rgba 1 2 3"));
     CHECK(is_error("probe rect rgba (1, 2, 3) (1, 1, 1, 1)"));
     CHECK(is_error("probe rect rgba (1, 2, 3, 4) (1, 1, 1)"));

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -509,7 +510,9 @@ Parsed<CommandData> parse_command(std::string_view raw) {
     }
     if (eat(rest, "probe depth")) {
         auto v = floats(rest, 3);
-        if (!v) return bad("probe depth");
+        // Pixel coordinates become ints: an infinite or huge value is refused, not converted (UB).
+        auto pixel = [](float c) { return std::isfinite(c) && std::fabs(c) < 1e9f; };
+        if (!v || !pixel((*v)[0]) || !pixel((*v)[1])) return bad("probe depth");
         return CommandData{ProbeDepth{int((*v)[0]), int((*v)[1]), (*v)[2]}};
     }
     if (eat(rest, "relative probe")) {
