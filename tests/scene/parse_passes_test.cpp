@@ -113,3 +113,63 @@ mesh = "quad"
     CHECK(r.error().diagnostics[0].line == 3);
     CHECK_THAT(r.error().str(), Catch::Contains("no pass's program has an active uniform 'nothing'"));
 }
+
+TEST_CASE("primitive state keys: polygon mode and offset, line width, point sprites, culling", "[scene][parse]") {
+    Scene s = parse_ok(R"([state]
+polygon_mode = ["line", "point"]
+polygon_offset = [1.5, -2]
+polygon_offset_fill = true
+polygon_offset_point = true
+line_width = 3.5
+point_sprite = true
+coord_replace = [0, 3]
+cull_face = "front_and_back"
+)");
+    const glslrun::GLState& g = s.gl;
+    CHECK(g.polygon_mode[0] == glslrun::PolygonMode::Line);
+    CHECK(g.polygon_mode[1] == glslrun::PolygonMode::Point);
+    CHECK(g.polygon_offset_factor == 1.5f);
+    CHECK(g.polygon_offset_units == -2.0f);
+    CHECK(g.polygon_offset_fill);
+    CHECK_FALSE(g.polygon_offset_line);
+    CHECK(g.polygon_offset_point);
+    CHECK(g.line_width == 3.5f);
+    CHECK(g.point_sprite);
+    CHECK(g.coord_replace == 0b1001u);
+    CHECK(g.cull_face);
+    CHECK(g.cull_front_and_back);
+    Scene one = parse_ok("[state]\npolygon_mode = \"point\"\ncull_face = \"front\"\n");
+    CHECK(one.gl.polygon_mode[0] == glslrun::PolygonMode::Point);
+    CHECK(one.gl.polygon_mode[1] == glslrun::PolygonMode::Point);
+    CHECK_FALSE(one.gl.cull_back);
+    CHECK_FALSE(one.gl.cull_front_and_back);
+    check_cases({
+        {"[state]\npolygon_mode = \"wireframe\"\n", 2, "wireframe"},
+        {"[state]\npolygon_mode = [\"line\"]\n", 2, "[front, back]"},
+        {"[state]\npolygon_mode = [\"line\", \"dots\"]\n", 2, "dots"},
+        {"[state]\nline_width = -1\n", 2, "line_width"},
+        {"[state]\nline_width = 0\n", 2, "glLineWidth"},
+        {"[state]\npolygon_offset = [1]\n", 2, "polygon_offset"},
+        {"[state]\ncoord_replace = [8]\n", 2, "texture units 0..7"},
+        {"[state]\npoint_sprite = 1\n", 2, "point_sprite"},
+        {"[state]\ncull_face = \"sideways\"\n", 2, "sideways"},
+    });
+}
+
+TEST_CASE("draw refuses a line width <= 0 and a polygon mode outside GL's", "[scene][render]") {
+    auto program = glslrun::Program::compile({{"v.vert", "void main() { gl_Position = ftransform(); }"}},
+                                             {{"f.frag", "void main() { gl_FragColor = vec4(1.0); }"}});
+    REQUIRE(program);
+    glslrun::Framebuffer fb(8, 8);
+    std::vector<glslrun::VertexAttrib> attribs = {{"gl_Vertex", 2, {0, 0, 1, 0}}};
+    glslrun::GLState gl;
+    gl.line_width = 0;
+    auto r = glslrun::draw(*program, gl, fb, glslrun::Primitive::Lines, attribs, 2);
+    REQUIRE_FALSE(r);
+    CHECK_THAT(r.error().str(), Catch::Contains("line width"));
+    gl.line_width = 1;
+    gl.polygon_mode[1] = glslrun::PolygonMode(7);
+    auto m = glslrun::draw(*program, gl, fb, glslrun::Primitive::Lines, attribs, 2);
+    REQUIRE_FALSE(m);
+    CHECK_THAT(m.error().str(), Catch::Contains("GL_INVALID_ENUM"));
+}

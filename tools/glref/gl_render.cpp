@@ -177,12 +177,31 @@ void set_fragment_state(const GLFunctions& gl, const GLState& g) {
     set_draw_buffers(gl, g.draw_buffers);
 }
 
+// glPolygonMode, glPolygonOffset, glLineWidth and point sprites.
+void set_primitive_state(const GLFunctions& gl, const GLState& g) {
+    constexpr GLenum kModes[] = {GL_POINT, GL_LINE, GL_FILL};
+    glPolygonMode(GL_FRONT, kModes[int(g.polygon_mode[0])]);
+    glPolygonMode(GL_BACK, kModes[int(g.polygon_mode[1])]);
+    glPolygonOffset(g.polygon_offset_factor, g.polygon_offset_units);
+    enable(GL_POLYGON_OFFSET_FILL, g.polygon_offset_fill);
+    enable(GL_POLYGON_OFFSET_LINE, g.polygon_offset_line);
+    enable(GL_POLYGON_OFFSET_POINT, g.polygon_offset_point);
+    glLineWidth(g.line_width);
+    enable(GL_POINT_SPRITE, g.point_sprite);
+    for (int unit = 0; unit < 8; ++unit) {
+        gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, (g.coord_replace >> unit) & 1u ? GL_TRUE : GL_FALSE);
+    }
+    gl.ActiveTexture(GL_TEXTURE0);
+}
+
 void set_render_state(const GLFunctions& gl, const GLState& g) {
     enable(GL_DEPTH_TEST, g.depth_test);
     // GLState::DepthFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
     glDepthFunc(GLenum(GL_NEVER + int(g.depth_func)));
     enable(GL_CULL_FACE, g.cull_face);
-    glCullFace(g.cull_back ? GL_BACK : GL_FRONT);
+    glCullFace(g.cull_front_and_back ? GL_FRONT_AND_BACK : g.cull_back ? GL_BACK : GL_FRONT);
+    set_primitive_state(gl, g);
     glFrontFace(g.front_ccw ? GL_CCW : GL_CW);
     glShadeModel(g.flat_shading ? GL_FLAT : GL_SMOOTH);
     enable(GL_VERTEX_PROGRAM_TWO_SIDE, g.vertex_program_two_side);
