@@ -17,6 +17,25 @@ namespace glslrun::raster {
 
 using Lanes = std::array<float, rt::kLanes>;
 
+using U8x4 = std::array<uint32_t, 4>;
+
+// Blending with the draw's factors and equations picked once (resolve_blend),
+// so that no pixel switches over them: `pixel` blends one pixel, as blend()
+// or blend_unorm8() would, bit for bit. The common glBlendFunc pairs get a
+// function of their own; the others call the picked factor and equation
+// functions.
+struct ResolvedBlend {
+    using Pixel = glm::vec4 (*)(const ResolvedBlend&, glm::vec4 src, glm::vec4 dst);
+    using Factor8 = U8x4 (*)(const U8x4& s, const U8x4& d, const U8x4& c);
+    using Combine8 = uint32_t (*)(uint32_t s, uint32_t sf, uint32_t d, uint32_t df);
+    Pixel pixel = nullptr;
+    Factor8 src_rgb = nullptr, dst_rgb = nullptr, src_alpha = nullptr, dst_alpha = nullptr;
+    Combine8 rgb = nullptr, alpha = nullptr;
+    U8x4 constant8{};  // the blend colour as n/255 values
+    BlendState state;
+};
+ResolvedBlend resolve_blend(const BlendState& s, bool float_color);
+
 // The state of the operations, resolved once per draw from GLState.
 struct FragmentOps {
     FragmentOps(const GLState& gl, const Framebuffer& fb);
@@ -32,6 +51,7 @@ struct FragmentOps {
     CompareFunc depth_func = CompareFunc::Less;
     bool blend = false, logic_op = false, float_color = false;
     BlendState blend_state;
+    ResolvedBlend resolved_blend;
     LogicOp logic = LogicOp::Copy;
     std::array<bool, 4> color_mask{true, true, true, true};
 };

@@ -4,6 +4,7 @@
 // bit-identical whatever the thread count.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
 
 #include "raster/fragment_ops.h"
@@ -114,6 +115,41 @@ state = { color_logic_op = true, logic_op_mode = "xor", color_writemask = [true,
 )";
 
 }  // namespace
+
+TEST_CASE("blending picked once per draw is bit-identical to blend() and blend_unorm8()", "[raster][fragment]") {
+    // Every factor pair and equation for RGB, alpha taking another of each, over
+    // colours that include 0, 1, values out of [0, 1] and NaN.
+    const glm::vec4 srcs[] = {{0.2f, 0.7f, 1.0f, 0.4f}, {1.3f, -0.2f, 0.5f, 0.999f}, {0, 0, 0, 0},
+                              {0.5f, 0.25f, std::nanf(""), 1}};
+    const glm::vec4 dsts[] = {{0.6f, 0.1f, 0.0f, 1.0f}, {1, 1, 1, 0}, {0.3f, 0.85f, 0.45f, 0.2f}};
+    size_t checked = 0;
+    for (int sf = 0; sf <= int(BlendFactor::SrcAlphaSaturate); ++sf)
+        for (int df = 0; df <= int(BlendFactor::SrcAlphaSaturate); ++df)
+            for (int eq = 0; eq <= int(BlendEquation::Max); ++eq)
+                for (int alpha = 0; alpha < 2; ++alpha) {
+                    BlendState st;
+                    st.src_rgb = BlendFactor(sf);
+                    st.dst_rgb = BlendFactor(df);
+                    // alpha 0: glBlendFunc (the same factors); 1: others (the fast paths stay out).
+                    st.src_alpha = alpha ? BlendFactor((sf + 3) % 15) : st.src_rgb;
+                    st.dst_alpha = alpha ? BlendFactor((df + 5) % 15) : st.dst_rgb;
+                    st.equation_rgb = BlendEquation(eq);
+                    st.equation_alpha = alpha ? BlendEquation((eq + 1) % 5) : st.equation_rgb;
+                    st.color = {0.3f, 0.6f, 0.9f, 0.5f};
+                    ResolvedBlend b8 = resolve_blend(st, false), bf = resolve_blend(st, true);
+                    for (const glm::vec4& src : srcs)
+                        for (const glm::vec4& dst : dsts) {
+                            glm::vec4 clamped = glm::clamp(src, 0.0f, 1.0f);
+                            glm::vec4 want8 = blend_unorm8(st, clamped, dst), got8 = b8.pixel(b8, clamped, dst);
+                            glm::vec4 wantf = blend(st, src, dst), gotf = bf.pixel(bf, src, dst);
+                            INFO("factors " << sf << " " << df << ", equation " << eq << ", alpha " << alpha);
+                            CHECK(std::memcmp(&want8, &got8, sizeof want8) == 0);
+                            CHECK(std::memcmp(&wantf, &gotf, sizeof wantf) == 0);
+                            ++checked;
+                        }
+                }
+    CHECK(checked == 15u * 15u * 5u * 2u * 12u);
+}
 
 TEST_CASE("per-fragment operations give the same image whatever the thread count", "[raster][fragment][threads]") {
     auto scene = scene::parse_scene(kScene, "ops.toml");
