@@ -4,9 +4,6 @@
 // share the scene's program with state and uniforms of their own.
 #include "tests/reference/helpers.h"
 
-#include <fstream>
-#include <sstream>
-
 using namespace glslrun;
 
 namespace {
@@ -59,13 +56,6 @@ uniforms = { tint = [0.2, 0.2, 1, 1] }
 state = { depth_func = "lequal", blend = true, blend_func = ["one", "one"] }
 )";
 
-Result<ShaderSource> read_shader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error("cannot read '" + path + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return ShaderSource{path, text.str()};
-}
 
 }  // namespace
 
@@ -73,8 +63,8 @@ TEST_CASE("glslrun matches Mesa on passes with their own programs (multi-pass li
     auto scene = scene::load_scene(kSourceDir + "/scenes/multi_pass.toml");
     if (!scene) FAIL(scene.error().str());
     REQUIRE(scene->passes.size() == 4);
-    auto vs = read_shader(kSourceDir + "/shaders/minimal.vert");
-    auto fs = read_shader(kSourceDir + "/shaders/minimal.frag");
+    auto vs = reference::read_shader(kSourceDir + "/shaders/minimal.vert");
+    auto fs = reference::read_shader(kSourceDir + "/shaders/minimal.frag");
     REQUIRE(vs);
     REQUIRE(fs);
     reference::compare("passes-multi-pass", {{*vs}, {*fs}, std::move(*scene)});
