@@ -317,6 +317,8 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
     std::array<Lanes, 4> rgba{};
     if (color_out_[0]) load_color(0, rgba);
     bool late_depth = ops_.depth_test && !early_depth_;
+    const bool float_color = fb_.float_color();
+    uint8_t* rgba8 = fb_.color_data<uint8_t>(0).data();
     rt::LaneMask written = 0;
     for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
@@ -328,9 +330,16 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
         ++written_;
         if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
         if (!color_out_[0]) continue;
-        // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
-        float* dst = &fb_.color[pixel * 4];
-        for (size_t k = 0; k < 4; ++k) dst[k] = fb_.float_color ? rgba[k][size_t(lane)] : quantize_unorm8(rgba[k][size_t(lane)]);
+        // Converted per written pixel: small triangles leave most lanes of a batch uncovered.
+        if (float_color) {
+            float* dst = &fb_.color_data<float>(0)[pixel * 4];
+            for (size_t k = 0; k < 4; ++k) dst[k] = rgba[k][size_t(lane)];
+        } else {
+            const uint8_t bytes[4] = {to_unorm8(rgba[0][size_t(lane)]), to_unorm8(rgba[1][size_t(lane)]),
+                                      to_unorm8(rgba[2][size_t(lane)]), to_unorm8(rgba[3][size_t(lane)])};
+            uint32_t word = pack_unorm8(bytes);
+            std::memcpy(&rgba8[pixel * 4], &word, 4);
+        }
     }
     return written;
 }
@@ -352,7 +361,7 @@ rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
     for (int b = 0; b < gl_.draw_buffers && alive; ++b) {
         if (!color_out_[size_t(b)]) continue;
         load_color(b, rgba);
-        write_color(ops_, fb_.color_buffer(b), fb_.width, px, rgba, alive);
+        write_color(ops_, fb_, b, px, rgba, alive);
     }
     return alive;
 }
