@@ -10,7 +10,6 @@
 #include <deque>
 #include <mutex>
 
-#include <fmt/format.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
@@ -132,14 +131,17 @@ public:
 class JitExecutor final : public Executor {
 public:
     JitExecutor(const JitShader& code, const ExecParams& p)
-        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms) {
+        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms), limits_(p.limits) {
         ctx_.max_loop_iterations = p.limits.max_loop_iterations;
+        ctx_.max_instructions = UINT64_MAX;  // the prologue: straight-line code, as the interpreter's
         ctx_.machine.uniforms = p.uniforms;
         ctx_.machine.textures = p.textures;
         ctx_.machine.regs = regs_.data;
         ctx_.reg_count = code.reg_count;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
+        ctx_.max_instructions = limits_.max_instructions;
+        ctx_.cancel = limits_.cancel;
     }
     uint32_t* lanes(ir::Reg r) override {
         return regs_.data + size_t(r == ir::kNoReg || r >= code_.reg_count ? code_.reg_count : r) * kLanes;
@@ -150,9 +152,10 @@ public:
         if (failure == Failure::None) return true;
         if (error) {
             error->line = ctx_.error_line;
-            error->message = failure == Failure::LoopCap
-                                 ? fmt::format("loop exceeded {} iterations", ctx_.max_loop_iterations)
-                                 : "call to a missing function";
+            error->message = failure == Failure::LoopCap        ? limits_.loop_cap_message()
+                             : failure == Failure::Instructions ? limits_.instructions_message()
+                             : failure == Failure::Cancelled    ? RunLimits::kCancelledMessage
+                                                                : "call to a missing function";
         }
         return false;
     }
@@ -163,6 +166,7 @@ private:
     const JitShader& code_;
     AlignedWords<uint32_t> regs_;
     const uint32_t* uniforms_;
+    RunLimits limits_;
     Context ctx_;
 };
 
