@@ -49,14 +49,6 @@ float combine(BlendEquation eq, float s, float sf, float d, float df) {
     return s;
 }
 
-// quantize_unorm8's integer before its division: the n of n/255.
-[[gnu::always_inline]] inline uint32_t to_unorm8(float v) {
-    constexpr float kRound = 8388608.0f;  // as quantize_unorm8: ties to even
-    float c = v > 0.0f ? v : 0.0f;
-    c = c < 1.0f ? c : 1.0f;
-    return uint32_t((c * 255.0f + kRound) - kRound);
-}
-
 // a * b / 255 rounded to the nearest integer, for a and b in 0..255.
 uint32_t mul_unorm8(uint32_t a, uint32_t b) { return (a * b * 2 + 255) / 510; }
 
@@ -103,8 +95,6 @@ uint32_t combine8(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_
     return s;
 }
 
-[[gnu::always_inline]] inline std::array<uint32_t, 4> to_unorm8(glm::vec4 v) { return {to_unorm8(v.r), to_unorm8(v.g), to_unorm8(v.b), to_unorm8(v.a)}; }
-
 // One function per factor and equation: the switch folds away at compile time.
 template <BlendFactor F>
 U8x4 factor8_of(const U8x4& s, const U8x4& d, const U8x4& c) { return factor8(F, s, d, c); }
@@ -122,29 +112,28 @@ constexpr std::array<ResolvedBlend::Combine8, sizeof...(I)> combine8_table(std::
 constexpr auto kFactor8 = factor8_table(std::make_index_sequence<size_t(BlendFactor::SrcAlphaSaturate) + 1>());
 constexpr auto kCombine8 = combine8_table(std::make_index_sequence<size_t(BlendEquation::Max) + 1>());
 
+U8x4 widen(const Unorm8& v) { return {v[0], v[1], v[2], v[3]}; }
+
 // blend_unorm8 through the picked functions.
-glm::vec4 blend8_picked(const ResolvedBlend& b, glm::vec4 src, glm::vec4 dst) {
-    U8x4 s8 = to_unorm8(src), d8 = to_unorm8(dst);
-    const U8x4& c8 = b.constant8;
+Unorm8 blend8_picked(const ResolvedBlend& b, const Unorm8& src, const Unorm8& dst) {
+    const U8x4 s8 = widen(src), d8 = widen(dst), &c8 = b.constant8;
     U8x4 sf = b.src_rgb(s8, d8, c8), df = b.dst_rgb(s8, d8, c8);
     uint32_t sfa = b.src_alpha(s8, d8, c8)[3], dfa = b.dst_alpha(s8, d8, c8)[3];
-    glm::vec4 out;
-    for (size_t k = 0; k < 3; ++k) out[int(k)] = float(b.rgb(s8[k], sf[k], d8[k], df[k])) / 255.0f;
-    out.a = float(b.alpha(s8[3], sfa, d8[3], dfa)) / 255.0f;
+    Unorm8 out;
+    for (size_t k = 0; k < 3; ++k) out[k] = uint8_t(b.rgb(s8[k], sf[k], d8[k], df[k]));
+    out[3] = uint8_t(b.alpha(s8[3], sfa, d8[3], dfa));
     return out;
 }
 
 // glBlendFunc(S, D) with one equation E for all channels, inlined whole.
 template <BlendFactor S, BlendFactor D, BlendEquation E>
-glm::vec4 blend8_same(const ResolvedBlend& b, glm::vec4 src, glm::vec4 dst) {
-    U8x4 s8 = to_unorm8(src), d8 = to_unorm8(dst);
+Unorm8 blend8_same(const ResolvedBlend& b, const Unorm8& src, const Unorm8& dst) {
+    const U8x4 s8 = widen(src), d8 = widen(dst);
     U8x4 sf = factor8(S, s8, d8, b.constant8), df = factor8(D, s8, d8, b.constant8);
-    glm::vec4 out;
-    for (size_t k = 0; k < 4; ++k) out[int(k)] = float(combine8(E, s8[k], sf[k], d8[k], df[k])) / 255.0f;
+    Unorm8 out;
+    for (size_t k = 0; k < 4; ++k) out[k] = uint8_t(combine8(E, s8[k], sf[k], d8[k], df[k]));
     return out;
 }
-
-glm::vec4 blend_float(const ResolvedBlend& b, glm::vec4 src, glm::vec4 dst) { return blend(b.state, src, dst); }
 
 size_t pixel_index(const LanePixels& px, int lane, int width) {
     return size_t(px.y[lane]) * size_t(width) + size_t(px.x[lane]);
@@ -180,37 +169,38 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
 FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
     : alpha_test(gl.alpha_test), alpha_func(gl.alpha_func), alpha_ref(std::clamp(gl.alpha_ref, 0.0f, 1.0f)),
       stencil_test(gl.stencil_test), stencil(gl.stencil), depth_test(gl.depth_test), depth_write(gl.depth_mask),
-      depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color),
-      float_color(fb.float_color), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
+      depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color()),
+      float_color(fb.float_color()), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
     blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
-    resolved_blend = resolve_blend(blend_state, float_color);
+    resolved_blend = resolve_blend(blend_state);
     for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
     bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
     plain = !alpha_test && !stencil_test && !blend && !logic_op && all_channels && gl.draw_buffers == 1 &&
             (depth_write || !depth_test);
 }
 
-ResolvedBlend resolve_blend(const BlendState& s, bool float_color) {
+ResolvedBlend resolve_blend(const BlendState& s) {
     ResolvedBlend b;
     b.state = s;
-    b.constant8 = to_unorm8(s.color);
+    b.constant8 = {to_unorm8(s.color.r), to_unorm8(s.color.g), to_unorm8(s.color.b), to_unorm8(s.color.a)};
     b.src_rgb = kFactor8[size_t(s.src_rgb)];
     b.dst_rgb = kFactor8[size_t(s.dst_rgb)];
     b.src_alpha = kFactor8[size_t(s.src_alpha)];
     b.dst_alpha = kFactor8[size_t(s.dst_alpha)];
     b.rgb = kCombine8[size_t(s.equation_rgb)];
     b.alpha = kCombine8[size_t(s.equation_alpha)];
-    b.pixel = float_color ? &blend_float : &blend8_picked;
+    b.pixel8 = &blend8_picked;
+    // SrcAlphaSaturate's alpha factor is 1, not its RGB's: not a "same" pair.
     bool same = s.src_rgb == s.src_alpha && s.dst_rgb == s.dst_alpha && s.equation_rgb == s.equation_alpha &&
-                s.src_rgb != BlendFactor::SrcAlphaSaturate;  // whose alpha factor is 1, not its RGB's
-    if (float_color || !same || s.equation_rgb != BlendEquation::Add) return b;
+                s.src_rgb != BlendFactor::SrcAlphaSaturate && s.equation_rgb == BlendEquation::Add;
+    if (!same) return b;
     using F = BlendFactor;
-    constexpr auto E = BlendEquation::Add;
-    if (s.src_rgb == F::SrcAlpha && s.dst_rgb == F::OneMinusSrcAlpha) b.pixel = &blend8_same<F::SrcAlpha, F::OneMinusSrcAlpha, E>;
-    if (s.src_rgb == F::One && s.dst_rgb == F::One) b.pixel = &blend8_same<F::One, F::One, E>;
-    if (s.src_rgb == F::One && s.dst_rgb == F::OneMinusSrcAlpha) b.pixel = &blend8_same<F::One, F::OneMinusSrcAlpha, E>;
-    if (s.src_rgb == F::SrcAlpha && s.dst_rgb == F::One) b.pixel = &blend8_same<F::SrcAlpha, F::One, E>;
-    if (s.src_rgb == F::DstColor && s.dst_rgb == F::Zero) b.pixel = &blend8_same<F::DstColor, F::Zero, E>;
+    constexpr auto kAdd = BlendEquation::Add;
+    if (s.src_rgb == F::SrcAlpha && s.dst_rgb == F::OneMinusSrcAlpha) b.pixel8 = &blend8_same<F::SrcAlpha, F::OneMinusSrcAlpha, kAdd>;
+    if (s.src_rgb == F::One && s.dst_rgb == F::One) b.pixel8 = &blend8_same<F::One, F::One, kAdd>;
+    if (s.src_rgb == F::One && s.dst_rgb == F::OneMinusSrcAlpha) b.pixel8 = &blend8_same<F::One, F::OneMinusSrcAlpha, kAdd>;
+    if (s.src_rgb == F::SrcAlpha && s.dst_rgb == F::One) b.pixel8 = &blend8_same<F::SrcAlpha, F::One, kAdd>;
+    if (s.src_rgb == F::DstColor && s.dst_rgb == F::Zero) b.pixel8 = &blend8_same<F::DstColor, F::Zero, kAdd>;
     return b;
 }
 
@@ -260,13 +250,15 @@ glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
     return out;
 }
 
-glm::vec4 blend_unorm8(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
-    std::array<uint32_t, 4> s8 = to_unorm8(src), d8 = to_unorm8(dst), c8 = to_unorm8(s.color);
+Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst) {
+    const std::array<uint32_t, 4> s8{src[0], src[1], src[2], src[3]}, d8{dst[0], dst[1], dst[2], dst[3]};
+    const std::array<uint32_t, 4> c8{to_unorm8(s.color.r), to_unorm8(s.color.g), to_unorm8(s.color.b),
+                                     to_unorm8(s.color.a)};
     std::array<uint32_t, 4> sf = factor8(s.src_rgb, s8, d8, c8), df = factor8(s.dst_rgb, s8, d8, c8);
     uint32_t sfa = factor8(s.src_alpha, s8, d8, c8)[3], dfa = factor8(s.dst_alpha, s8, d8, c8)[3];
-    glm::vec4 out;
-    for (size_t k = 0; k < 3; ++k) out[int(k)] = float(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k])) / 255.0f;
-    out.a = float(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa)) / 255.0f;
+    Unorm8 out;
+    for (size_t k = 0; k < 3; ++k) out[k] = uint8_t(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k]));
+    out[3] = uint8_t(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa));
     return out;
 }
 
@@ -291,28 +283,46 @@ rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const L
     return mask;
 }
 
-void write_color(const FragmentOps& ops, std::vector<float>& buffer, int width, const LanePixels& px,
+namespace {
+
+void write_float(const FragmentOps& ops, float* buffer, int width, const LanePixels& px,
                  const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         float* dst = &buffer[pixel_index(px, lane, width) * 4];
-        glm::vec4 d{dst[0], dst[1], dst[2], dst[3]};
         glm::vec4 s{rgba[0][size_t(lane)], rgba[1][size_t(lane)], rgba[2][size_t(lane)], rgba[3][size_t(lane)]};
-        if (!ops.float_color)
-            for (int k = 0; k < 4; ++k) s[k] = clamp01(s[k]);
-        glm::vec4 out = s;
-        // Logic ops and 8-bit blending give n/255 values already, which quantize_unorm8 keeps.
-        bool stored_exact = ops.float_color;
-        if (ops.logic_op) {
-            for (int k = 0; k < 4; ++k) out[k] = float(logic_op(ops.logic, to_unorm8(s[k]), to_unorm8(d[k]))) / 255.0f;
-            stored_exact = true;
-        } else if (ops.blend) {
-            out = ops.resolved_blend.pixel(ops.resolved_blend, s, d);
-            stored_exact = true;
-        }
+        glm::vec4 out = ops.blend ? blend(ops.blend_state, s, glm::vec4{dst[0], dst[1], dst[2], dst[3]}) : s;
         for (int k = 0; k < 4; ++k)
-            if (ops.color_mask[size_t(k)]) dst[k] = stored_exact ? out[k] : quantize_unorm8(out[k]);
+            if (ops.color_mask[size_t(k)]) dst[k] = out[k];
     }
+}
+
+// The shader's colour is clamped to [0, 1] and rounded to bytes first
+// (§3.11.6, §4.1.8): blending and the logic op work on the bytes.
+void write_unorm8(const FragmentOps& ops, uint8_t* buffer, int width, const LanePixels& px,
+                  const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
+    for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        uint8_t* dst = &buffer[pixel_index(px, lane, width) * 4];
+        const Unorm8 d{dst[0], dst[1], dst[2], dst[3]};
+        Unorm8 out;
+        for (size_t k = 0; k < 4; ++k) out[k] = to_unorm8(rgba[k][size_t(lane)]);
+        if (ops.logic_op) {
+            for (size_t k = 0; k < 4; ++k) out[k] = uint8_t(logic_op(ops.logic, out[k], d[k]));
+        } else if (ops.blend) {
+            out = ops.resolved_blend.pixel8(ops.resolved_blend, out, d);
+        }
+        for (size_t k = 0; k < 4; ++k)
+            if (ops.color_mask[k]) dst[k] = out[k];
+    }
+}
+
+}  // namespace
+
+void write_color(const FragmentOps& ops, Framebuffer& fb, int buffer, const LanePixels& px,
+                 const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
+    if (ops.float_color) write_float(ops, fb.color_data<float>(buffer).data(), fb.width, px, rgba, mask);
+    else write_unorm8(ops, fb.color_data<uint8_t>(buffer).data(), fb.width, px, rgba, mask);
 }
 
 }  // namespace glslrun::raster

@@ -18,23 +18,24 @@ namespace glslrun::raster {
 using Lanes = std::array<float, rt::kLanes>;
 
 using U8x4 = std::array<uint32_t, 4>;
+using Unorm8 = std::array<uint8_t, 4>;
 
 // Blending with the draw's factors and equations picked once (resolve_blend),
-// so that no pixel switches over them: `pixel` blends one pixel, as blend()
-// or blend_unorm8() would, bit for bit. The common glBlendFunc pairs get a
-// function of their own; the others call the picked factor and equation
-// functions.
+// so that no pixel switches over them: `pixel8` blends one pixel of an RGBA8
+// buffer as blend_unorm8() does, `pixel_float` one of a float buffer as
+// blend() does, bit for bit. The common glBlendFunc pairs get a function of
+// their own; the others call the picked factor and equation functions.
 struct ResolvedBlend {
-    using Pixel = glm::vec4 (*)(const ResolvedBlend&, glm::vec4 src, glm::vec4 dst);
+    using Pixel8 = Unorm8 (*)(const ResolvedBlend&, const Unorm8& src, const Unorm8& dst);
     using Factor8 = U8x4 (*)(const U8x4& s, const U8x4& d, const U8x4& c);
     using Combine8 = uint32_t (*)(uint32_t s, uint32_t sf, uint32_t d, uint32_t df);
-    Pixel pixel = nullptr;
+    Pixel8 pixel8 = nullptr;
     Factor8 src_rgb = nullptr, dst_rgb = nullptr, src_alpha = nullptr, dst_alpha = nullptr;
     Combine8 rgb = nullptr, alpha = nullptr;
-    U8x4 constant8{};  // the blend colour as n/255 values
+    U8x4 constant8{};  // the blend colour as bytes
     BlendState state;
 };
-ResolvedBlend resolve_blend(const BlendState& s, bool float_color);
+ResolvedBlend resolve_blend(const BlendState& s);
 
 // The state of the operations, resolved once per draw from GLState.
 struct FragmentOps {
@@ -73,19 +74,20 @@ rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask
 rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask);
 
 // §4.1.8 to §4.2.2: blending, logic op, colour mask and the store of the
-// lanes of `mask` into one colour buffer (RGBA8 storage rounds to n/255).
-void write_color(const FragmentOps& ops, std::vector<float>& buffer, int width, const LanePixels& px,
+// lanes of `mask` into colour buffer `buffer` (RGBA8 storage rounds to n/255).
+void write_color(const FragmentOps& ops, Framebuffer& fb, int buffer, const LanePixels& px,
                  const std::array<Lanes, 4>& rgba, rt::LaneMask mask);
 
 // One pixel's blend (§4.1.8) into a float buffer: `src` the fragment's
 // colour, `dst` the buffer's.
 glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst);
+// One RGBA8 pixel's channels.
 // The same into an RGBA8 buffer, in 8-bit fixed point as GPUs' blend units
 // and llvmpipe compute it: the source, factors and constant are n/255 values
 // and each product is rounded to n/255 before the equation (saturating)
 // combines them. Float arithmetic rounded once at the end differed from
 // Mesa by 2/255 on 1.6% of a blended scene (subtractions of rounded terms).
-glm::vec4 blend_unorm8(const BlendState& s, glm::vec4 src, glm::vec4 dst);
+Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst);
 // One 8-bit channel's logic op (§4.1.10).
 uint32_t logic_op(LogicOp op, uint32_t src, uint32_t dst);
 // A stencil value after `op` (§4.1.5), before the write mask.

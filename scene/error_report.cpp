@@ -46,7 +46,8 @@ Result<std::vector<float>> draw_cleared_to(Program& prog, const Scene& scene, gl
         !stats)
         return stats.error();
     if (depth) *depth = std::move(fb.depth);
-    return std::move(fb.color);
+    std::span<const float> color = fb.color_data<float>(0);
+    return std::vector<float>(color.begin(), color.end());
 }
 
 // A colour unlike `c` in every channel, within [0, 1] as blending expects.
