@@ -280,7 +280,7 @@ void FragmentStage::fill_inputs(const Weights& w) {
         const ir::Binding& b = *p.binding;
         for (uint32_t c = 0; c < b.count; ++c) {
             // Float varyings straight into the executor's register.
-            if (p.source == InputPlan::Source::Varying && b.kind == ir::Kind::F32) {
+            if (p.source == InputPlan::Source::Varying && b.kind == ir::Kind::F32 && !p.sprite_coord) {
                 interpolate(p.attr_offset + c, w, interp_->lanes_f(b.first + c));
                 continue;
             }
