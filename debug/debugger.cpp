@@ -113,7 +113,7 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
                        int lane, Fill&& fill) {
     ShaderNames names(shader, state_of(debug).ir);
     LaneRecorder recorder(names, draw.uniforms.data(), lane);
-    rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations, draw.gl.texture_units.data(),
+    rt::TracedInterpreter in(shader, draw.uniforms.data(), rt::RunLimits(debug.exec), draw.gl.texture_units.data(),
                              debug.exec.precision, ~0u, recorder);
     fill(in);
     for (const ir::Binding& b : shader.inputs) recorder.trace.inputs.push_back(binding_value(b, in, lane));
@@ -121,7 +121,10 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
     bool ok = in.run(live, &error);
     recorder.finish(nullptr);
     recorder.trace.outputs = outputs_of(shader.outputs, in, lane);
-    if (!ok) recorder.trace.truncated = true;
+    if (!ok) {
+        recorder.trace.truncated = true;
+        recorder.trace.stopped = error.message;
+    }
     return std::move(recorder.trace);
 }
 
@@ -224,6 +227,14 @@ Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, 
     return t;
 }
 
+// A replay stops early at debug.exec.cancel, as the render stops at
+// program.exec.cancel; the trace then ends with an error, not with the rest.
+Status check_cancel(const Program& debug) {
+    if (debug.exec.cancel && debug.exec.cancel->load(std::memory_order_relaxed))
+        return Error("cancelled: the time limit ran out");
+    return Ok{};
+}
+
 }  // namespace
 
 Status render_with_probe(Program& program, const scene::Scene& scene, Framebuffer& fb, raster::DrawProbe& probe) {
@@ -256,12 +267,14 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
     std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
     for (Capture& c : probe.captures_) {
         out.fragments.push_back(replay_fragment(debug, draws[c.info.draw], c));
+        if (Status st = check_cancel(debug); !st) return st.error();
         if (out.fragments.back().outcome == FragmentTrace::Outcome::Written) visible = out.fragments.back();
     }
     if (visible)
         for (uint32_t v : visible->vertices) {
             auto vt = replay_vertex(program, debug, draws[visible->draw], visible->draw, v);
             if (!vt) return vt.error();
+            if (Status st = check_cancel(debug); !st) return st.error();
             out.vertices.push_back(std::move(*vt));
         }
     if (request.vertex) {
@@ -269,6 +282,7 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
             return Error(fmt::format("draw {} does not exist ({} draws)", request.draw, draws.size()));
         auto vt = replay_vertex(program, debug, draws[request.draw], request.draw, *request.vertex);
         if (!vt) return vt.error();
+        if (Status st = check_cancel(debug); !st) return st.error();
         out.vertices.push_back(std::move(*vt));
     }
     return out;

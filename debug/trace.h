@@ -60,7 +60,8 @@ struct InvocationTrace {
     std::vector<NamedValue> outputs;
     std::optional<NanEvent> first_nan;
     bool discarded = false;
-    bool truncated = false;  // more than kMaxSteps steps
+    bool truncated = false;  // more than kMaxSteps steps, or the run stopped early
+    std::string stopped;     // why the run stopped early (a limit of debug.exec, its cancel flag), if it did
     static constexpr size_t kMaxSteps = 200000;
 };
 

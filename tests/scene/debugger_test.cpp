@@ -2,6 +2,7 @@
 // programs, replays equal to the render bit for bit, the depth outcome of
 // every fragment at a pixel, and --find-nan naming the line and the pixel.
 // GLSLRUN_UPDATE_GOLDEN=1 rewrites tests/scene/traces/ instead of comparing.
+#include <atomic>
 #include <bit>
 #include <cstdlib>
 #include <fstream>
@@ -206,4 +207,66 @@ TEST_CASE("--find-nan looks at the vertices first, in draw order", "[debug]") {
     REQUIRE(trace->vertices.size() == 1);
     CHECK(trace->vertices[0].trace.first_nan);
     CHECK(trace->vertices[0].matches_render);
+}
+
+// The replays run under the debugging program's limits (debug.exec), as the
+// render runs under the program's: its instruction budget stops a long replay,
+// which says why, and its cancel flag ends the trace and --find-nan with an
+// error. The render keeps its own limits (here the defaults: it completes).
+TEST_CASE("the traced replays stop at debug.exec's instruction budget and cancel flag", "[debug]") {
+    std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
+    std::vector<ShaderSource> fs{{"long.frag",
+                                  "void main() {\n"
+                                  "    float s = 0.5;\n"
+                                  "    for (int i = 0; i < 30000; ++i) s = fract(s * 3.7 + 0.1);\n"
+                                  "    gl_FragColor = vec4(s);\n"
+                                  "}\n"}};
+    auto scene = scene::load_scene(kRoot + "/scenes/spot.toml");
+    REQUIRE(scene);
+    scene->width = scene->height = 8;
+    auto prog = Program::compile(vs, fs);
+    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
+    REQUIRE(prog);
+    REQUIRE(dbg);
+    Framebuffer fb(8, 8, true);
+    debug::TraceRequest request;
+    request.pixel = {4, 4};
+
+    SECTION("within the limits the replay completes") {
+        auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE(r);
+        REQUIRE_FALSE(r->fragments.empty());
+        for (const debug::FragmentTrace& f : r->fragments) {
+            CHECK(f.matches_render);
+            CHECK_FALSE(f.trace.truncated);
+            CHECK(f.trace.stopped.empty());
+        }
+    }
+    SECTION("the instruction budget stops the replay, which says why") {
+        dbg->exec.max_instructions = 5000;
+        auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE(r);
+        REQUIRE_FALSE(r->fragments.empty());
+        for (const debug::FragmentTrace& f : r->fragments) {
+            CHECK(f.trace.truncated);
+            CHECK(f.trace.stopped == "the shader executed more than 5000 instructions in one batch (calls that "
+                                     "multiply, or a loop too long)");
+            CHECK_FALSE(f.matches_render);
+        }
+        CHECK_THAT(debug::format_text(*r), Catch::Contains("... (stopped: the shader executed more than 5000"));
+        CHECK_THAT(debug::format_json(*r), Catch::Contains("\"stopped\":\"the shader executed more than 5000"));
+        auto nan = debug::find_nan(*prog, *dbg, *scene, fb, false);
+        REQUIRE_FALSE(nan);
+        CHECK_THAT(nan.error().str(), Catch::Contains("long.frag: error: the shader executed more than 5000"));
+    }
+    SECTION("the cancel flag ends the trace and --find-nan") {
+        std::atomic<bool> cancel{true};
+        dbg->exec.cancel = &cancel;
+        auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE_FALSE(r);
+        CHECK_THAT(r.error().str(), Catch::Contains("cancelled: the time limit ran out"));
+        auto nan = debug::find_nan(*prog, *dbg, *scene, fb, false);
+        REQUIRE_FALSE(nan);
+        CHECK_THAT(nan.error().str(), Catch::Contains("cancelled: the time limit ran out"));
+    }
 }
