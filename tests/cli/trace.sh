@@ -72,6 +72,8 @@ expect_error 1 --vertex 0 --draw 3 "$vs" "$fs" "$scene"
 expect_error 1 --pixel 1,1 "$vs" "$src/shaders/missing.frag" "$scene"
 expect_error 2 --pixel 10 "$vs" "$fs" "$scene"
 expect_error 2 --pixel 1,1x "$vs" "$fs" "$scene"
+expect_error 2 --pixel 99999999999999,1 "$vs" "$fs" "$scene"
+expect_error 2 --pixel " 1,1" "$vs" "$fs" "$scene"
 expect_error 2 "$vs" "$fs" "$scene"
 expect_error 2 --pixel 1,1 "$vs" "$fs"
 expect_error 2 --pixel 1,1
