@@ -41,6 +41,9 @@ open('huge.png', 'wb').write(b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', ihdr) + 
 "
 expect 2 "more than its" "$glslrun" --compare huge.png huge.png
 expect 2 "the path is empty" "$glslrun" "$vs" "$fs" "$scene" -o ''
+# sscanf's %d wrapped 4294967360 to 64 and rendered a 64x64 image.
+expect 1 "--size '4294967360x64' must be WxH" "$glslrun" "$vs" "$fs" "$scene" --size 4294967360x64 -o wrapped.png
+[ ! -e wrapped.png ] || fail "--size 4294967360x64 wrote an image"
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "a PNG was written: $(ls)"
 "$glslrun" --dump-ir "$vs" "$fs" "$scene" > ir.txt || fail "--dump-ir with a scene failed"
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "--dump-ir with a scene wrote a PNG: $(ls)"

@@ -1,5 +1,6 @@
 #include "command_line.h"
 
+#include <charconv>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -29,6 +30,16 @@ void add_backend_option(CLI::App& app, Backend& backend) {
             if (*parsed == Backend::Jit && !jit_available()) return std::string("this glslrun was built without the JIT");
             return std::string();
         });
+}
+
+std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::string_view separators) {
+    int a = 0, b = 0;
+    const char* end = text.data() + text.size();
+    auto [after_a, ea] = std::from_chars(text.data(), end, a);
+    if (ea != std::errc() || after_a == end || separators.find(*after_a) == std::string_view::npos) return std::nullopt;
+    auto [after_b, eb] = std::from_chars(after_a + 1, end, b);
+    if (eb != std::errc() || after_b != end) return std::nullopt;
+    return std::pair{a, b};
 }
 
 int parse_command_line(CLI::App& app, int argc, char** argv) {

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "command_line.h"
 #include "error_report_command.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
@@ -67,11 +68,8 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
 namespace {
 
 Result<std::pair<int, int>> parse_size(const std::string& text) {
-    int width = 0, height = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X'))
-        return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
-    return std::pair{width, height};
+    if (auto size = parse_int_pair(text, "xX")) return *size;
+    return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
 }
 
 std::string default_output(const Inputs& in) {

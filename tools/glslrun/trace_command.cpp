@@ -4,7 +4,6 @@
 //   glslrun trace --find-nan [--colour-range] a.vert a.frag scene.toml
 #include "trace_command.h"
 
-#include <charconv>
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
@@ -23,20 +22,9 @@ int fail(const Error& e, int status = kResultError) {
     return status;
 }
 
-// from_chars, not sscanf: "%d" of a number past INT_MAX is undefined (glibc
-// wrapped 99999999999999 to 276447231).
 Result<std::pair<int, int>> parse_pixel(const std::string& text) {
-    int x = 0, y = 0;
-    const char* end = text.data() + text.size();
-    auto [after_x, ex] = std::from_chars(text.data(), end, x);
-    bool ok = ex == std::errc() && after_x != end && *after_x == ',';
-    if (ok) {
-        auto [after_y, ey] = std::from_chars(after_x + 1, end, y);
-        ok = ey == std::errc() && after_y == end;
-    }
-    if (!ok)
-        return Error(fmt::format("--pixel '{}' must be X,Y (image coordinates, top-left origin), e.g. 256,200", text));
-    return std::pair{x, y};
+    if (auto pixel = parse_int_pair(text, ",")) return *pixel;
+    return Error(fmt::format("--pixel '{}' must be X,Y (image coordinates, top-left origin), e.g. 256,200", text));
 }
 
 struct TraceOptions {
