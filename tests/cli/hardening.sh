@@ -91,5 +91,8 @@ expect 1 "jobs.txt:3: error: job failed" "$glslrun" batch jobs.txt
 [ -s b1.png ] && [ ! -e b2.png ] || fail "batch: b1.png should be written, b2.png not: $(ls)"
 echo "$vs $fs" > bad_jobs.txt
 expect 2 "bad_jobs.txt:1: error: a job is" "$glslrun" batch bad_jobs.txt
+printf '%s %s %s b3.png\n%s %s %s b3.txt\n' "$vs" "$fs" "$scene" "$vs" "$fs" "$scene" > txt_jobs.txt
+expect 2 "txt_jobs.txt:2: error: cannot write 'b3.txt': glslrun writes PNG images only" "$glslrun" batch txt_jobs.txt
+[ ! -e b3.png ] && [ ! -e b3.txt ] || fail "batch: a job file with a bad line rendered: $(ls)"
 
 finish "hardening: every reproducer ends with a message and status 1 or 2"

@@ -65,6 +65,15 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
     return in;
 }
 
+Status check_png_name(const std::string& output) {
+    std::string ext = fs::path(output).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png")
+        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
+                                 "for standard output)", output));
+    return Ok{};
+}
+
 namespace {
 
 Result<std::pair<int, int>> parse_size(const std::string& text) {
@@ -91,12 +100,7 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
                          "--dump-ir or --compare, which print there too");
         return Ok{};
     }
-    std::string ext = fs::path(output).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png")
-        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
-                                 "for standard output)", output));
-    return Ok{};
+    return check_png_name(output);
 }
 
 // Frame i's image name: out.png -> out.0000.png, out.0001.png, ...
