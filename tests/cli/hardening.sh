@@ -70,6 +70,10 @@ mkdir empty
 expect 2 "no tests found" "$glslrun" test empty
 expect 2 "is not a number" "$glslrun" test --time-limit nan "$src/tests/extremes"
 expect 2 "must be I/N" "$glslrun" test --shard 3/3 "$src/tests/extremes"
+if [ -w /dev/full ]; then
+    expect 2 "/dev/full: cannot write the TSV file" "$glslrun" test --tsv /dev/full "$src/tests/extremes"
+    expect 2 "/dev/full: cannot write the JSON file" "$glslrun" test --json /dev/full "$src/tests/extremes"
+fi
 timeout 60 "$glslrun" test --no-isolate --time-limit 2 "$src/tests/hardening/slow_without_loops.shader_test" > slow.txt
 [ $? = 1 ] || fail "the slow test did not fail with status 1 within its time limit"
 grep -q "time limit ran out" slow.txt || fail "no time-limit message: $(cat slow.txt)"

@@ -149,6 +149,11 @@ int run_test_command(const TestOptions& o) {
     bool have_expect = !o.expect.empty();
     auto summary = pg::summarize(cases, results, have_expect ? &expectations : nullptr);
     std::fputs(pg::format_summary(summary, have_expect).c_str(), stdout);
+    // The TSV is written as tests finish; a full disk shows at the flush.
+    if (tsv.is_open() && !tsv.flush()) {
+        fmt::print(stderr, "{}: cannot write the TSV file\n", o.tsv);
+        return 2;
+    }
     if (!write_report(o.junit, pg::format_junit(cases, results), "JUnit") ||
         !write_report(o.json, pg::format_json(cases, results), "JSON"))
         return 2;
