@@ -48,6 +48,12 @@ expect 1 "--size '4294967360x64' must be WxH" "$glslrun" "$vs" "$fs" "$scene" --
 "$glslrun" --dump-ir "$vs" "$fs" "$scene" > ir.txt || fail "--dump-ir with a scene failed"
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "--dump-ir with a scene wrote a PNG: $(ls)"
 
+# Output cut short by a full disk is an error, not a success.
+if [ -w /dev/full ]; then
+    "$glslrun" --dump-ir "$vs" "$fs" > /dev/full 2> err.txt
+    [ $? = 2 ] && grep -q "cannot write standard output" err.txt || fail "--dump-ir > /dev/full: $(cat err.txt)"
+fi
+
 # -o goes through a temporary file: a failed write leaves nothing at the path.
 mkdir ro && chmod 555 ro
 if [ ! -w ro ]; then

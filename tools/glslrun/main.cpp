@@ -267,19 +267,29 @@ int program_cli(int argc, char** argv) {
     return cli::run_render_command(files, o);
 }
 
+int run_command(int argc, char** argv) {
+    if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+    if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
+    if (argc >= 2 && std::string_view(argv[1]) == "trace") return glslrun::cli::trace_main(argc - 1, argv + 1);
+    return program_cli(argc, argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     // Sizes are checked before allocating (docs/limits.md); what is left is a
     // machine with less memory than the limits assume: a message, not an abort.
+    int status = 0;
     try {
-        if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
-        if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
-        if (argc >= 2 && std::string_view(argv[1]) == "trace")
-            return glslrun::cli::trace_main(argc - 1, argv + 1);
-        return program_cli(argc, argv);
+        status = run_command(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fputs("glslrun: error: out of memory\n", stderr);
         return 2;
     }
+    // A trace, the IR or a report cut short by a full disk is an error, not a success.
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fputs("glslrun: error: cannot write standard output\n", stderr);
+        return status == 0 ? 2 : status;
+    }
+    return status;
 }
