@@ -46,7 +46,7 @@ int parse_command_line(CLI::App& app, int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : kUsageError;
+        return app.exit(e) == 0 ? 0 : kToolError;
     }
     return -1;
 }

@@ -14,11 +14,11 @@ class App;
 namespace glslrun::cli {
 
 // 0: done as expected; 1: a result differs or the input is wrong (a shader,
-// scene or draw error); 2: a usage or tool error.
+// scene or draw error); 2: a usage or tool error (docs/ci.md).
 inline constexpr int kResultError = 1;
-inline constexpr int kUsageError = 2;
+inline constexpr int kToolError = 2;
 
-// CLI11's parse: -1 to go on; 0 after --help or --version; kUsageError for a
+// CLI11's parse: -1 to go on; 0 after --help or --version; kToolError for a
 // usage error (CLI11's own codes are 100 and up).
 int parse_command_line(CLI::App& app, int argc, char** argv);
 

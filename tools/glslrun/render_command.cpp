@@ -32,9 +32,7 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-constexpr int kToolError = 2;
-
-int fail(const Error& e, int status = 1) {
+int fail(const Error& e, int status = kResultError) {
     std::string text = e.str();
     std::fputs(text.c_str(), stderr);
     return status;

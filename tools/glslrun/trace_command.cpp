@@ -40,13 +40,13 @@ int run_trace(const TraceOptions& o) {
     auto in = classify(o.files);
     if (!in) return fail(in.error());
     if (in->scene.empty() || (in->vertex.empty() && in->fragment.empty()))
-        return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"), kUsageError);
+        return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"), kToolError);
     if (o.pixel.empty() && !o.vertex && !o.find_nan)
-        return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"), kUsageError);
+        return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"), kToolError);
     std::optional<std::pair<int, int>> pixel;
     if (!o.pixel.empty()) {
         auto parsed = parse_pixel(o.pixel);
-        if (!parsed) return fail(parsed.error(), kUsageError);
+        if (!parsed) return fail(parsed.error(), kToolError);
         pixel = *parsed;
     }
     RenderOptions render;
