@@ -60,7 +60,9 @@ void text_invocation(std::string& out, const InvocationTrace& t) {
         }
     }
     if (!t.stopped.empty()) out += fmt::format("    ... (stopped: {})\n", t.stopped);
-    else if (t.truncated) out += fmt::format("    ... (more than {} steps: the rest is not shown)\n", InvocationTrace::kMaxSteps);
+    else if (t.truncated)
+        out += fmt::format("    ... (the rest is not shown: at most {} steps per invocation and {} per trace)\n",
+                           InvocationTrace::kMaxSteps, InvocationTrace::kMaxTraceSteps);
     if (t.first_nan)
         out += fmt::format("  first NaN/Inf: {} {} -> {}\n", t.first_nan->where, t.first_nan->op,
                            format_value(t.first_nan->result, ""));

@@ -270,3 +270,41 @@ TEST_CASE("the traced replays stop at debug.exec's instruction budget and cancel
         CHECK_THAT(nan.error().str(), Catch::Contains("cancelled: the time limit ran out"));
     }
 }
+
+// Issue #17: the trace keeps every fragment at the pixel, and each could keep
+// kMaxSteps steps; 100 overlapping quads with a long loop took 4.5 GB. The
+// trace as a whole keeps kMaxTraceSteps; the replays still run to the end.
+TEST_CASE("a trace keeps at most kMaxTraceSteps steps over all its invocations", "[debug]") {
+    std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
+    std::vector<ShaderSource> fs{{"long.frag",
+                                  "void main() {\n"
+                                  "    float s = 0.5;\n"
+                                  "    for (int i = 0; i < 100000; ++i) s = fract(s * 3.7 + 0.1);\n"
+                                  "    gl_FragColor = vec4(s);\n"
+                                  "}\n"}};
+    std::string quads = "[output]\nsize = [8, 8]\n";
+    for (int i = 0; i < 8; ++i) quads += "[[objects]]\nmesh = \"quad\"\n";
+    auto scene = scene::parse_scene(quads, "quads.toml");
+    REQUIRE(scene);
+    auto prog = Program::compile(vs, fs);
+    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
+    REQUIRE(prog);
+    REQUIRE(dbg);
+    Framebuffer fb(8, 8, true);
+    debug::TraceRequest request;
+    request.pixel = {4, 4};
+    auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE(r);
+    REQUIRE(r->fragments.size() == 8);
+    size_t steps = 0;
+    for (const debug::FragmentTrace& f : r->fragments) {
+        CHECK(f.matches_render);
+        CHECK(f.trace.truncated);
+        CHECK(f.trace.steps.size() <= debug::InvocationTrace::kMaxSteps);
+        steps += f.trace.steps.size();
+    }
+    for (const debug::VertexTrace& v : r->vertices) steps += v.trace.steps.size();
+    CHECK(steps == debug::InvocationTrace::kMaxTraceSteps);
+    CHECK(r->fragments.back().trace.steps.empty());
+    CHECK_THAT(debug::format_text(*r), Catch::Contains("at most 200000 steps per invocation and 1000000 per trace"));
+}
