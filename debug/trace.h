@@ -64,7 +64,7 @@ struct InvocationTrace {
     std::string stopped;     // why the run stopped early (a limit of debug.exec, its cancel flag), if it did
     static constexpr size_t kMaxSteps = 200000;
     // All invocations of one trace together (a step takes about 225 bytes):
-    // 100 fragments at a pixel, each a long loop, took 4.5 GB before.
+    // 20 fragments at a pixel, each a long loop, took 900 MB without it.
     static constexpr size_t kMaxTraceSteps = 1000000;
 };
 

@@ -272,7 +272,7 @@ TEST_CASE("the traced replays stop at debug.exec's instruction budget and cancel
 }
 
 // Issue #17: the trace keeps every fragment at the pixel, and each could keep
-// kMaxSteps steps; 100 overlapping quads with a long loop took 4.5 GB. The
+// kMaxSteps steps; 20 overlapping quads with a long loop took 900 MB. The
 // trace as a whole keeps kMaxTraceSteps; the replays still run to the end.
 TEST_CASE("a trace keeps at most kMaxTraceSteps steps over all its invocations", "[debug]") {
     std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
