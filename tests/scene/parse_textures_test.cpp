@@ -6,6 +6,8 @@
 
 #include <unistd.h>
 
+#include <fmt/format.h>
+
 #include "parse_helpers.h"
 #include "glslrun/scene/render.h"
 
@@ -373,6 +375,18 @@ TEST_CASE("bad image files are errors at the scene's line", "[scene][textures]")
             CHECK_THAT(ds[1].message, Catch::Contains(c.detail));
         }
     }
+}
+
+// Issue #17: each texture was bounded, not the scene: 16 units of 4096x4096
+// took 4.5 GB. Eight of 2048x2048 are the limit; one texel more is refused.
+TEST_CASE("a scene's textures hold at most kMaxSceneTexels together", "[scene][textures][errors]") {
+    std::string toml;
+    for (int unit = 0; unit < 8; ++unit)
+        toml += fmt::format("[textures.{}]\nsolid = {{ size = [2048, 2048], color = [1, 1, 1] }}\n", unit);
+    CHECK(parse_ok(toml).textures.size() == 8);
+    toml += "[textures.8]\nsolid = { size = [1, 1], color = [1, 1, 1] }\n";
+    check_error(toml, 17, "the textures up to [textures.8] hold 33554433 texels in all, mipmaps included; a scene "
+                          "may hold at most 33554432");
 }
 
 TEST_CASE("texture keys: unknown names, types and ranges", "[scene][textures][errors]") {
