@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -210,25 +211,37 @@ TEST_CASE("--find-nan looks at the vertices first, in draw order", "[debug]") {
     CHECK(trace->vertices[0].matches_render);
 }
 
+// minimal.vert and a fragment shader that loops `iterations` times (line 3),
+// compiled for rendering and for debugging.
+struct LongLoop {
+    explicit LongLoop(int iterations) {
+        std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
+        std::vector<ShaderSource> fs{{"long.frag", fmt::format("void main() {{\n"
+                                                               "    float s = 0.5;\n"
+                                                               "    for (int i = 0; i < {}; ++i) s = fract(s * 3.7 + 0.1);\n"
+                                                               "    gl_FragColor = vec4(s);\n"
+                                                               "}}\n",
+                                                               iterations)}};
+        auto compiled = Program::compile(vs, fs);
+        auto debugging = debug::compile_for_debugging(vs, fs, Precision::Precise);
+        REQUIRE(compiled);
+        REQUIRE(debugging);
+        program = std::move(*compiled);
+        debug = std::move(*debugging);
+    }
+    std::optional<Program> program, debug;
+};
+
 // The replays run under the debugging program's limits (debug.exec), as the
 // render runs under the program's: its instruction budget stops a long replay,
 // which says why, and its cancel flag ends the trace and --find-nan with an
 // error. The render keeps its own limits (here the defaults: it completes).
 TEST_CASE("the traced replays stop at debug.exec's instruction budget and cancel flag", "[debug]") {
-    std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
-    std::vector<ShaderSource> fs{{"long.frag",
-                                  "void main() {\n"
-                                  "    float s = 0.5;\n"
-                                  "    for (int i = 0; i < 30000; ++i) s = fract(s * 3.7 + 0.1);\n"
-                                  "    gl_FragColor = vec4(s);\n"
-                                  "}\n"}};
     auto scene = scene::load_scene(kRoot + "/scenes/spot.toml");
     REQUIRE(scene);
     scene->width = scene->height = 8;
-    auto prog = Program::compile(vs, fs);
-    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
-    REQUIRE(prog);
-    REQUIRE(dbg);
+    LongLoop programs(30000);
+    auto& [prog, dbg] = programs;
     Framebuffer fb(8, 8, true);
     debug::TraceRequest request;
     request.pixel = {4, 4};
@@ -276,21 +289,12 @@ TEST_CASE("the traced replays stop at debug.exec's instruction budget and cancel
 // kMaxSteps steps; 20 overlapping quads with a long loop took 900 MB. The
 // trace as a whole keeps kMaxTraceSteps; the replays still run to the end.
 TEST_CASE("a trace keeps at most kMaxTraceSteps steps over all its invocations", "[debug]") {
-    std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
-    std::vector<ShaderSource> fs{{"long.frag",
-                                  "void main() {\n"
-                                  "    float s = 0.5;\n"
-                                  "    for (int i = 0; i < 100000; ++i) s = fract(s * 3.7 + 0.1);\n"
-                                  "    gl_FragColor = vec4(s);\n"
-                                  "}\n"}};
     std::string quads = "[output]\nsize = [8, 8]\n";
     for (int i = 0; i < 8; ++i) quads += "[[objects]]\nmesh = \"quad\"\n";
     auto scene = scene::parse_scene(quads, "quads.toml");
     REQUIRE(scene);
-    auto prog = Program::compile(vs, fs);
-    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
-    REQUIRE(prog);
-    REQUIRE(dbg);
+    LongLoop programs(100000);
+    auto& [prog, dbg] = programs;
     Framebuffer fb(8, 8, true);
     debug::TraceRequest request;
     request.pixel = {4, 4};
