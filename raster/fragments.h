@@ -93,7 +93,7 @@ private:
     struct InputPlan;
     struct Weights;
     template <bool kWrite>
-    unsigned early_depth_test(int base, QuadF z, unsigned mask);
+    unsigned depth_test_quad(int base, const float* z_lanes, unsigned mask);
     void compute_weights(Weights& w) const;
     void interpolate(uint32_t attr, const Weights& w, float* v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
@@ -102,6 +102,7 @@ private:
     rt::LaneMask write_outputs(rt::LaneMask covered);
     template <bool kProbed>
     rt::LaneMask write_plain(rt::LaneMask alive, const Lanes& z);
+    void store_color_quad(int base, const std::array<Lanes, 4>& rgba, unsigned mask);
     rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z);
     void load_color(int buffer, std::array<Lanes, 4>& rgba) const;
     ProbeBatch probe_batch(rt::LaneMask covered);

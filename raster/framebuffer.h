@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstring>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -14,26 +13,21 @@
 namespace glslrun::raster {
 
 // RGBA8 storage of one channel: clamped to [0,1] and rounded to the nearest
-// n/255, ties to even (NaN -> 0); n is the stored byte.
-inline float unorm8_steps(float v) {
+// n/255, ties to even (NaN -> 0); n is the stored byte. T is float, or a
+// vector of floats (raster/quad_lanes.h).
+template <class T>
+inline T unorm8_steps(T v) {
     // Branch-free, so that loops over a batch vectorize. Adding 2^23 rounds
     // to an integer, ties to even: nearbyint() without a library call.
     constexpr float kRound = 8388608.0f;
-    float c = v > 0.0f ? v : 0.0f;  // also NaN
-    c = c < 1.0f ? c : 1.0f;
+    const T zero{};
+    T c = v > 0.0f ? v : zero;  // also NaN
+    c = c < 1.0f ? c : zero + 1.0f;
     return (c * 255.0f + kRound) - kRound;
 }
 inline uint8_t to_unorm8(float v) { return uint8_t(unorm8_steps(v)); }
 // The value that RGBA8 storage reads back: n / 255.
 inline float quantize_unorm8(float v) { return unorm8_steps(v) / 255.0f; }
-
-// One pixel's RGBA8 bytes (R, G, B, A in memory order) as one word, for
-// stores of whole pixels.
-inline uint32_t pack_unorm8(const uint8_t rgba[4]) {
-    uint32_t word;
-    std::memcpy(&word, rgba, 4);
-    return word;
-}
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 
