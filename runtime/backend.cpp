@@ -3,6 +3,8 @@
 
 #include <system_error>
 
+#include <fmt/format.h>
+
 #include "runtime/backend_cache.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/interpreter.h"
@@ -31,6 +33,16 @@ double Program::jit_compile_seconds() const { return state_->backends->jit_compi
 }  // namespace glslrun
 
 namespace glslrun::rt {
+
+std::string RunLimits::loop_cap_message() const {
+    return fmt::format("loop exceeded {} iterations", max_loop_iterations);
+}
+
+std::string RunLimits::instructions_message() const {
+    return fmt::format("the shader executed more than {} instructions in one batch (calls that multiply, or a loop "
+                       "too long)",
+                       max_instructions);
+}
 
 namespace {
 
