@@ -57,19 +57,23 @@ inline float clamp01(float v) {
 #endif
 }
 
-inline bool depth_passes(GLState::DepthFunc func, float incoming, float stored) {
+// Whether `incoming` passes against `stored`: bool for floats, all-ones
+// lanes for vectors of them (raster/quad_lanes.h).
+template <class T>
+inline auto depth_passes(GLState::DepthFunc func, T incoming, T stored) {
+    using Passes = decltype(incoming < stored);
     using F = GLState::DepthFunc;
     switch (func) {
-    case F::Never: return false;
+    case F::Never: return Passes{};
     case F::Less: return incoming < stored;
     case F::Equal: return incoming == stored;
     case F::Lequal: return incoming <= stored;
     case F::Greater: return incoming > stored;
     case F::Notequal: return incoming != stored;
     case F::Gequal: return incoming >= stored;
-    case F::Always: return true;
+    case F::Always: return Passes{} == Passes{};
     }
-    return false;
+    return Passes{};
 }
 
 }  // namespace glslrun::raster

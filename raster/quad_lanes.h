@@ -41,21 +41,6 @@ inline QuadF clamp01(QuadF v) {
     return low > 1.0f ? QuadF{} + 1.0f : low;
 }
 
-// depth_passes() per lane: all ones where `incoming` passes.
-inline QuadI depth_passes(CompareFunc func, QuadF incoming, QuadF stored) {
-    switch (func) {
-    case CompareFunc::Never: return QuadI{};
-    case CompareFunc::Less: return incoming < stored;
-    case CompareFunc::Equal: return incoming == stored;
-    case CompareFunc::Lequal: return incoming <= stored;
-    case CompareFunc::Greater: return incoming > stored;
-    case CompareFunc::Notequal: return incoming != stored;
-    case CompareFunc::Gequal: return incoming >= stored;
-    case CompareFunc::Always: return QuadI{} == 0;
-    }
-    return QuadI{};
-}
-
 // The quad's values of a buffer of floats (depth) with rows `stride` apart:
 // (x, y), (x+1, y), (x, y+1), (x+1, y+1) from `at` = (x, y). All four must exist.
 inline QuadF gather_quad(const float* at, size_t stride) {
