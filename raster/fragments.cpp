@@ -136,6 +136,22 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
 }
 
+void FragmentStage::prefetch(const Rect& r) const {
+    constexpr size_t kLine = 64;
+    const bool depth = ops_.depth_test, color = color_out_[0] != nullptr;
+    const size_t color_bytes = fb_.float_color() ? 4 * sizeof(float) : 4;
+    for (int y = r.y0; y < r.y1; ++y) {
+        const size_t first = size_t(y) * size_t(fb_.width) + size_t(r.x0), pixels = size_t(r.x1 - r.x0);
+        if (depth)
+            for (size_t i = 0; i < pixels * sizeof(float); i += kLine)
+                __builtin_prefetch(reinterpret_cast<const char*>(&fb_.depth[first]) + i, 1);
+        const char* row = fb_.float_color() ? reinterpret_cast<const char*>(fb_.color_row<float>(0, y))
+                                            : reinterpret_cast<const char*>(fb_.color_row<uint8_t>(0, y));
+        if (color)
+            for (size_t i = 0; i < pixels * color_bytes; i += kLine) __builtin_prefetch(row + size_t(r.x0) * color_bytes + i, 1);
+    }
+}
+
 ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
     return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
 }
@@ -345,11 +361,11 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
         unsigned mask = unsigned(alive >> base) & 0xFu;
         if (late_depth && mask) mask = depth_test_quad<true>(base, z.data(), mask);
         if (!mask) continue;
-        written_ += uint64_t(std::popcount(mask));
-        if constexpr (kProbed) written |= rt::LaneMask(mask) << base;
+        written |= rt::LaneMask(mask) << base;
         if (color_out_[0]) store_color_quad(base, rgba, mask);
     }
-    return written;
+    written_ += uint64_t(std::popcount(written));
+    return kProbed ? written : 0;
 }
 
 // The plain store of colour buffer 0's lanes `mask` of the quad at lane `base`.

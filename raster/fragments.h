@@ -80,6 +80,10 @@ public:
     // Queues a quad of `prim` (which must stay alive until flush()). With the
     // early depth test, the depth test and depth write happen here.
     void add_quad(const FsPrimitive& prim, int x, int y, unsigned mask);
+    // Asks the caches for the depth and colour of the pixels of r, which
+    // the stage is about to render (a tile): their misses overlap instead
+    // of stalling one quad at a time.
+    void prefetch(const Rect& r) const;
     // Shades what is pending; after a shader error, error() holds it and
     // further quads are ignored until clear_error().
     void flush();
