@@ -31,12 +31,12 @@ inline float quantize_unorm8(float v) { return unorm8_steps(v) / 255.0f; }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 
-// A clear's values as the framebuffer stores them: the colour quantised for
-// RGBA8 (`c` holds n/255, `c8` the bytes), the depth clamped to [0, 1] (NaN -> 0).
+// A clear's values as the framebuffer stores them: the colour in the
+// framebuffer's format (RGBA8 bytes or floats) repeated over 16 bytes (four
+// RGBA8 pixels or one float pixel), the depth clamped to [0, 1] (NaN -> 0).
 struct StoredClear {
     bool color = false, depth = false, stencil = false;
-    glm::vec4 c{0.0f};
-    std::array<uint8_t, 4> c8{};
+    std::array<uint8_t, 16> color_pattern{};
     float d = 1.0f;
     uint8_t s = 0;
 };
