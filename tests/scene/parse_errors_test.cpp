@@ -96,7 +96,6 @@ TEST_CASE("values outside GL's ranges", "[scene][errors]") {
         {"[state]\ndepth_range = [0, 1.5]\n", 2, "'state.depth_range[1]' must be in [0, 1]"},
         {"[state]\nclip_planes = [[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0]]\n", 2,
          "has 7 planes; GL has 6"},
-        {"[state]\ncull_face = \"front_and_back\"\n", 2, "\"front_and_back\" is not supported"},
         {"[camera]\nview_matrix = [0,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]\n[state]\nclip_planes = [[0, 0, 1, 0]]\n", 4,
          "the view matrix is singular"},
         {"[state]\nclip_planes_space = \"world \"\n", 2, "did you mean 'world'?"},

@@ -250,9 +250,18 @@ int program_cli(int argc, char** argv) {
         ->type_name("NAME=VALUE");
     app.add_option("--frames", o.frames,
                    "render N frames with `uniform float time` = frame / 30 seconds, into OUT.0000.png, "
-                   "OUT.0001.png, ...")
+                   "OUT.0001.png, ... (the name and rate: the scene's [animation], or the two options below)")
         ->type_name("N")
         ->check(CLI::Range(1, 100000));
+    app.add_option("--time-uniform", o.time_uniform,
+                   "with --frames: the float uniform that gets the time (default: the scene's "
+                   "[animation] time_uniform, else `time`)")
+        ->type_name("NAME");
+    app.add_option("--fps", o.frames_per_second,
+                   "with --frames: frames per second, time = frame / FPS (default: the scene's [animation] "
+                   "frames_per_second, else 30)")
+        ->type_name("FPS")
+        ->check(CLI::Range(1e-6, 1e6));
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");

@@ -210,13 +210,13 @@ int compare_with(const scene::Image& actual, const RenderOptions& o) {
 
 // --bench N: N more frames into the same framebuffer, each timed whole
 // and per stage. The first frame (compile and first draw) is timed by render().
-Status bench_frames(Program& prog, const scene::Scene& scene, Framebuffer& fb, int frames,
+Status bench_frames(const scene::ScenePrograms& programs, const scene::Scene& scene, Framebuffer& fb, int frames,
                     scene::BenchReport& report) {
     report.stage_s = {{"vertex", {}}, {"raster", {}}, {"fragment", {}}};
     for (int i = 0; i < frames; ++i) {
         auto start = Clock::now();
         double cpu_start = scene::process_cpu_seconds();
-        auto stats = scene::render_scene(prog, scene, fb);
+        auto stats = scene::render_scene(programs, scene, fb);
         if (!stats) return stats.error();
         report.frame_s.push_back(ms_since(start) / 1e3);
         report.frame_cpu_s.push_back(scene::process_cpu_seconds() - cpu_start);
@@ -314,14 +314,16 @@ int render(const Inputs& in, const RenderOptions& o) {
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
     prog->exec.backend = o.backend;
+    auto programs = scene::ScenePrograms::compile(*prog, *scene);
+    if (!programs) return fail(programs.error());
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();
-    auto stats = scene::render_scene(*prog, *scene, *fb);
+    auto stats = scene::render_scene(*programs, *scene, *fb);
     if (!stats) return fail(stats.error());
     scene::BenchReport bench = bench_header(*scene, o, *stats, compile_ms, ms_since(start));
     if (o.bench_frames > 0)
-        if (Status st = bench_frames(*prog, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
+        if (Status st = bench_frames(*programs, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
     // --dump-ir alone prints the IR: it writes no image unless -o asks for one.
     if (!o.output.empty() || !o.dump_ir)
@@ -336,7 +338,15 @@ int render(const Inputs& in, const RenderOptions& o) {
     return 0;
 }
 
-// --frames N: frame i with `uniform float time` = i / kFramesPerSecond, into out.0000.png, ...
+// Whether any pass's program has the uniform.
+bool any_program_has(const scene::ScenePrograms& programs, const std::string& name) {
+    for (size_t i = 0; i < programs.size(); ++i)
+        if (programs.of_pass(i).has_uniform(name)) return true;
+    return false;
+}
+
+// --frames N: frame i with `uniform float time` = i / frames per second (the
+// scene's [animation], or --time-uniform and --fps), into out.0000.png, ...
 int render_frames(const Inputs& in, const RenderOptions& o) {
     auto scene = load_sized_scene(in, o);
     if (!scene) return fail(scene.error());
@@ -346,15 +356,20 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
-    if (!prog->has_uniform(kTimeUniform))
+    auto programs = scene::ScenePrograms::compile(*prog, *scene);
+    if (!programs) return fail(programs.error());
+    const std::string time = o.time_uniform.empty() ? scene->animation.time_uniform : o.time_uniform;
+    const double fps = o.frames_per_second > 0 ? o.frames_per_second : scene->animation.frames_per_second;
+    const bool timed = any_program_has(*programs, time);
+    if (!timed)
         fmt::print(stderr, "warning: --frames: the program has no active 'uniform float {}', so every frame is the "
-                           "same\n", kTimeUniform);
+                           "same\n", time);
     else
-        scene->uniforms.push_back({kTimeUniform, {0.0}, false, {"--frames", 0}});
+        scene->uniforms.push_back({time, {0.0}, false, {"--frames", 0}});
     Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     for (int frame = 0; frame < o.frames; ++frame) {
-        if (prog->has_uniform(kTimeUniform)) scene->uniforms.back().values = {frame / kFramesPerSecond};
-        auto stats = scene::render_scene(*prog, *scene, fb);
+        if (timed) scene->uniforms.back().values = {frame / fps};
+        auto stats = scene::render_scene(*programs, *scene, fb);
         if (!stats) return fail(stats.error());
         if (Status st = write_buffers(fb, frame_path(output, frame)); !st) return fail(st.error());
     }
@@ -384,6 +399,11 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (o.frames > 0 && (o.bench_frames > 0 || !o.compare.empty() || o.stats || !o.error_report.empty()))
         return fail(Error("--frames writes a sequence of images: it does not combine with --bench, --compare, "
                           "--stats or --error-report"));
+    if (o.frames == 0 && (!o.time_uniform.empty() || o.frames_per_second > 0))
+        return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"));
+    if (o.time_uniform.starts_with("gl_"))
+        return fail(Error(fmt::format("--time-uniform '{}': the time goes to a user uniform, not a built-in one",
+                                      o.time_uniform)));
     if (o.frames > 0 && !in->scene.empty()) return render_frames(*in, o);
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
