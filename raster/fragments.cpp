@@ -140,6 +140,22 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
 }
 
+void FragmentStage::prefetch(const Rect& r) const {
+    constexpr size_t kLine = 64;
+    const bool depth = ops_.depth_test, color = color_out_[0] != nullptr;
+    const size_t color_bytes = fb_.float_color() ? 4 * sizeof(float) : 4;
+    for (int y = r.y0; y < r.y1; ++y) {
+        const size_t first = size_t(y) * size_t(fb_.width) + size_t(r.x0), pixels = size_t(r.x1 - r.x0);
+        if (depth)
+            for (size_t i = 0; i < pixels * sizeof(float); i += kLine)
+                __builtin_prefetch(reinterpret_cast<const char*>(&fb_.depth[first]) + i, 1);
+        const char* row = fb_.float_color() ? reinterpret_cast<const char*>(fb_.color_row<float>(0, y))
+                                            : reinterpret_cast<const char*>(fb_.color_row<uint8_t>(0, y));
+        if (color)
+            for (size_t i = 0; i < pixels * color_bytes; i += kLine) __builtin_prefetch(row + size_t(r.x0) * color_bytes + i, 1);
+    }
+}
+
 ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
     return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
 }
@@ -165,10 +181,12 @@ void FragmentStage::copy_colors(const float* from, float* to) const {
         if (s.is_color) std::copy(from + s.offset, from + s.offset + s.count, to + s.offset);
 }
 
-// The depth test of a queued quad's covered lanes (window depth z); returns those that pass.
+// The depth test of the lanes `mask` of the quad at lane `base`, with the
+// depths z (of the batch's lanes); returns those that pass.
 template <bool kWrite>
-unsigned FragmentStage::early_depth_test(int base, QuadF z, unsigned mask) {
+unsigned FragmentStage::depth_test_quad(int base, const float* z_lanes, unsigned mask) {
     const int x = lane_x_[base], y = lane_y_[base];
+    const QuadF z = load_quad(z_lanes + base);
     if (x + 1 < fb_.width && y + 1 < fb_.height) {
         // The whole quad is in the framebuffer: one vector test. Its four
         // pixels are distinct, so the lanes' order does not matter.
@@ -185,8 +203,8 @@ unsigned FragmentStage::early_depth_test(int base, QuadF z, unsigned mask) {
         int i = std::countr_zero(bits), lane = base + i;
         float& stored = fb_.depth[size_t(lane_y_[lane]) * fb_.width + lane_x_[lane]];
         // Stored either way, so that the outcome needs no branch.
-        bool passes = depth_passes(func, lane_z_[lane], stored);
-        if (kWrite) stored = passes ? lane_z_[lane] : stored;
+        bool passes = depth_passes(func, z_lanes[lane], stored);
+        if (kWrite) stored = passes ? z_lanes[lane] : stored;
         mask &= ~(unsigned(!passes) << i);
     }
     return mask;
@@ -200,7 +218,9 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
     const QuadF px = float(x - prim.ox) + kQuadDxF, py = float(y - prim.oy) + kQuadDyF;
     const QuadF z = clamp01(plane_at(prim.z, px, py));
     store_quad(&lane_z_[base], z);
-    if (early_depth_) mask = ops_.depth_write ? early_depth_test<true>(base, z, mask) : early_depth_test<false>(base, z, mask);
+    if (early_depth_)
+        mask = ops_.depth_write ? depth_test_quad<true>(base, lane_z_.data(), mask)
+                                : depth_test_quad<false>(base, lane_z_.data(), mask);
     if (!mask) return;
     quad_prim_[size_t(quads_)] = &prim;
     covered_ |= rt::LaneMask(mask) << base;
@@ -350,32 +370,45 @@ template <bool kProbed>
 rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
     std::array<Lanes, 4> rgba{};
     if (color_out_[0]) load_color(0, rgba);
-    bool late_depth = ops_.depth_test && !early_depth_;
-    const bool float_color = fb_.float_color();
-    uint8_t* rgba8 = fb_.color_data<uint8_t>(0).data();
+    const bool late_depth = ops_.depth_test && !early_depth_;  // with depth writes (ops_.plain)
     rt::LaneMask written = 0;
-    for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
-        int lane = std::countr_zero(bits);
-        size_t pixel = size_t(lane_y_[lane]) * fb_.width + lane_x_[lane];
-        if (late_depth) {
-            if (!depth_passes(ops_.depth_func, z[size_t(lane)], fb_.depth[pixel])) continue;
-            fb_.depth[pixel] = z[size_t(lane)];
-        }
-        ++written_;
-        if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
-        if (!color_out_[0]) continue;
-        // Converted per written pixel: small triangles leave most lanes of a batch uncovered.
-        if (float_color) {
-            float* dst = &fb_.color_data<float>(0)[pixel * 4];
-            for (size_t k = 0; k < 4; ++k) dst[k] = rgba[k][size_t(lane)];
-        } else {
-            const uint8_t bytes[4] = {to_unorm8(rgba[0][size_t(lane)]), to_unorm8(rgba[1][size_t(lane)]),
-                                      to_unorm8(rgba[2][size_t(lane)]), to_unorm8(rgba[3][size_t(lane)])};
-            uint32_t word = pack_unorm8(bytes);
-            std::memcpy(&rgba8[pixel * 4], &word, 4);
-        }
+    // Quad by quad in lane order: two quads of the batch may cover one pixel.
+    for (int base = 0; base < quads_ * 4; base += 4) {
+        unsigned mask = unsigned(alive >> base) & 0xFu;
+        if (late_depth && mask) mask = depth_test_quad<true>(base, z.data(), mask);
+        if (!mask) continue;
+        written |= rt::LaneMask(mask) << base;
+        if (color_out_[0]) store_color_quad(base, rgba, mask);
     }
-    return written;
+    written_ += uint64_t(std::popcount(written));
+    return kProbed ? written : 0;
+}
+
+// The plain store of colour buffer 0's lanes `mask` of the quad at lane `base`.
+void FragmentStage::store_color_quad(int base, const std::array<Lanes, 4>& rgba, unsigned mask) {
+    const size_t width = size_t(fb_.width), pixel = size_t(lane_y_[base]) * width + size_t(lane_x_[base]);
+    auto offset = [&](int lane) { return (pixel + size_t(kQuadDx[lane]) + size_t(kQuadDy[lane]) * width) * 4; };
+    if (fb_.float_color()) {
+        float* buffer = fb_.color_data<float>(0).data();
+        for (unsigned bits = mask; bits; bits &= bits - 1) {
+            int lane = std::countr_zero(bits);
+            for (size_t k = 0; k < 4; ++k) buffer[offset(lane) + k] = rgba[k][size_t(base + lane)];
+        }
+        return;
+    }
+    uint8_t* buffer = fb_.color_data<uint8_t>(0).data();
+    const QuadI words = pack_unorm8(load_quad(&rgba[0][size_t(base)]), load_quad(&rgba[1][size_t(base)]),
+                                    load_quad(&rgba[2][size_t(base)]), load_quad(&rgba[3][size_t(base)]));
+    const auto* word_bytes = reinterpret_cast<const uint8_t*>(&words);
+    if (mask == 0xFu) {  // all four pixels exist: two 8-byte stores
+        std::memcpy(buffer + offset(0), word_bytes, 8);
+        std::memcpy(buffer + offset(2), word_bytes + 8, 8);
+        return;
+    }
+    for (unsigned bits = mask; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        std::memcpy(buffer + offset(lane), word_bytes + 4 * lane, 4);
+    }
 }
 
 // The general path; returns the lanes written.

@@ -81,6 +81,10 @@ public:
     // Queues a quad of `prim` (which must stay alive until flush()). With the
     // early depth test, the depth test and depth write happen here.
     void add_quad(const FsPrimitive& prim, int x, int y, unsigned mask);
+    // Asks the caches for the depth and colour of the pixels of r, which
+    // the stage is about to render (a tile): their misses overlap instead
+    // of stalling one quad at a time.
+    void prefetch(const Rect& r) const;
     // Shades what is pending; after a shader error, error() holds it and
     // further quads are ignored until clear_error().
     void flush();
@@ -94,7 +98,7 @@ private:
     struct InputPlan;
     struct Weights;
     template <bool kWrite>
-    unsigned early_depth_test(int base, QuadF z, unsigned mask);
+    unsigned depth_test_quad(int base, const float* z_lanes, unsigned mask);
     void compute_weights(Weights& w) const;
     void interpolate(uint32_t attr, const Weights& w, float* v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
@@ -104,6 +108,7 @@ private:
     rt::LaneMask write_outputs(rt::LaneMask covered);
     template <bool kProbed>
     rt::LaneMask write_plain(rt::LaneMask alive, const Lanes& z);
+    void store_color_quad(int base, const std::array<Lanes, 4>& rgba, unsigned mask);
     rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z);
     void load_color(int buffer, std::array<Lanes, 4>& rgba) const;
     ProbeBatch probe_batch(rt::LaneMask covered);

@@ -62,12 +62,6 @@ std::array<uint8_t, 16> repeated(const T* element, size_t count) {
     return out;
 }
 
-// The 16-byte pattern of a colour clear in the framebuffer's format.
-std::array<uint8_t, 16> color_pattern(const Framebuffer& fb, const raster::StoredClear& clear) {
-    if (fb.float_color()) return repeated(&clear.c[0], 4);
-    return repeated(clear.c8.data(), 4);
-}
-
 size_t color_pixel_bytes(const Framebuffer& fb) { return fb.float_color() ? 4 * sizeof(float) : 4; }
 
 void* color_at(Framebuffer& fb, int buffer, int x, int y) {
@@ -80,7 +74,7 @@ void* color_at(Framebuffer& fb, int buffer, int x, int y) {
 
 // The whole storage, whatever its size (draw() rejects a mismatch with width x height).
 void Framebuffer::clear_color(glm::vec4 c) {
-    const std::array<uint8_t, 16> pattern = color_pattern(*this, raster::stored_clear(*this, ClearValues{c, {}, {}}));
+    const std::array<uint8_t, 16> pattern = raster::stored_clear(*this, ClearValues{c, {}, {}}).color_pattern;
     for (auto& buffer : float_colors_) fill_repeated(buffer.data(), buffer.size() * sizeof(float), pattern);
     for (auto& buffer : rgba8_colors_) fill_repeated(buffer.data(), buffer.size(), pattern);
 }
@@ -114,10 +108,9 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
     out.stencil = clear.stencil.has_value();
     if (clear.stencil) out.s = uint8_t(*clear.stencil & ((1 << kStencilBits) - 1));
     if (clear.color) {
-        out.c = *clear.color;
-        for (int i = 0; i < 4; ++i) out.c8[size_t(i)] = to_unorm8(out.c[i]);
-        if (!fb.float_color())
-            for (int i = 0; i < 4; ++i) out.c[i] = quantize_unorm8(out.c[i]);
+        const glm::vec4 c = *clear.color;
+        const uint8_t bytes[4] = {to_unorm8(c.r), to_unorm8(c.g), to_unorm8(c.b), to_unorm8(c.a)};
+        out.color_pattern = fb.float_color() ? repeated(&c[0], 4) : repeated(bytes, 4);
     }
     if (clear.depth) out.d = std::isnan(*clear.depth) ? 0.0f : std::clamp(*clear.depth, 0.0f, 1.0f);
     return out;
@@ -134,12 +127,12 @@ bool storage_matches(const Framebuffer& fb) {
 }
 
 void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1) {
-    const std::array<uint8_t, 16> color = color_pattern(fb, clear), depth = repeated(&clear.d, 1);
+    const std::array<uint8_t, 16> depth = repeated(&clear.d, 1);
     const size_t pixels = size_t(x1 - x0);
     for (int y = y0; y < y1; ++y) {
         size_t row = size_t(y) * size_t(fb.width);
         for (int b = 0; clear.color && b < fb.color_buffers(); ++b)
-            fill_repeated(color_at(fb, b, x0, y), pixels * color_pixel_bytes(fb), color);
+            fill_repeated(color_at(fb, b, x0, y), pixels * color_pixel_bytes(fb), clear.color_pattern);
         if (clear.depth) fill_repeated(&fb.depth[row + size_t(x0)], pixels * sizeof(float), depth);
         if (clear.stencil) std::fill(&fb.stencil[row + size_t(x0)], &fb.stencil[row + size_t(x1)], clear.s);
     }

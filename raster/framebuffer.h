@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstring>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -14,35 +13,30 @@
 namespace glslrun::raster {
 
 // RGBA8 storage of one channel: clamped to [0,1] and rounded to the nearest
-// n/255, ties to even (NaN -> 0); n is the stored byte.
-inline float unorm8_steps(float v) {
+// n/255, ties to even (NaN -> 0); n is the stored byte. T is float, or a
+// vector of floats (raster/quad_lanes.h).
+template <class T>
+inline T unorm8_steps(T v) {
     // Branch-free, so that loops over a batch vectorize. Adding 2^23 rounds
     // to an integer, ties to even: nearbyint() without a library call.
     constexpr float kRound = 8388608.0f;
-    float c = v > 0.0f ? v : 0.0f;  // also NaN
-    c = c < 1.0f ? c : 1.0f;
+    const T zero{};
+    T c = v > 0.0f ? v : zero;  // also NaN
+    c = c < 1.0f ? c : zero + 1.0f;
     return (c * 255.0f + kRound) - kRound;
 }
 inline uint8_t to_unorm8(float v) { return uint8_t(unorm8_steps(v)); }
 // The value that RGBA8 storage reads back: n / 255.
 inline float quantize_unorm8(float v) { return unorm8_steps(v) / 255.0f; }
 
-// One pixel's RGBA8 bytes (R, G, B, A in memory order) as one word, for
-// stores of whole pixels.
-inline uint32_t pack_unorm8(const uint8_t rgba[4]) {
-    uint32_t word;
-    std::memcpy(&word, rgba, 4);
-    return word;
-}
-
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 
-// A clear's values as the framebuffer stores them: the colour quantised for
-// RGBA8 (`c` holds n/255, `c8` the bytes), the depth clamped to [0, 1] (NaN -> 0).
+// A clear's values as the framebuffer stores them: the colour in the
+// framebuffer's format (RGBA8 bytes or floats) repeated over 16 bytes (four
+// RGBA8 pixels or one float pixel), the depth clamped to [0, 1] (NaN -> 0).
 struct StoredClear {
     bool color = false, depth = false, stencil = false;
-    glm::vec4 c{0.0f};
-    std::array<uint8_t, 4> c8{};
+    std::array<uint8_t, 16> color_pattern{};
     float d = 1.0f;
     uint8_t s = 0;
 };
@@ -63,19 +57,23 @@ inline float clamp01(float v) {
 #endif
 }
 
-inline bool depth_passes(GLState::DepthFunc func, float incoming, float stored) {
+// Whether `incoming` passes against `stored`: bool for floats, all-ones
+// lanes for vectors of them (raster/quad_lanes.h).
+template <class T>
+inline auto depth_passes(GLState::DepthFunc func, T incoming, T stored) {
+    using Passes = decltype(incoming < stored);
     using F = GLState::DepthFunc;
     switch (func) {
-    case F::Never: return false;
+    case F::Never: return Passes{};
     case F::Less: return incoming < stored;
     case F::Equal: return incoming == stored;
     case F::Lequal: return incoming <= stored;
     case F::Greater: return incoming > stored;
     case F::Notequal: return incoming != stored;
     case F::Gequal: return incoming >= stored;
-    case F::Always: return true;
+    case F::Always: return Passes{} == Passes{};
     }
-    return false;
+    return Passes{};
 }
 
 }  // namespace glslrun::raster

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "glslrun/glslrun.h"
+#include "raster/framebuffer.h"
 
 namespace glslrun::raster {
 
@@ -40,21 +41,6 @@ inline QuadF clamp01(QuadF v) {
     return low > 1.0f ? QuadF{} + 1.0f : low;
 }
 
-// depth_passes() per lane: all ones where `incoming` passes.
-inline QuadI depth_passes(CompareFunc func, QuadF incoming, QuadF stored) {
-    switch (func) {
-    case CompareFunc::Never: return QuadI{};
-    case CompareFunc::Less: return incoming < stored;
-    case CompareFunc::Equal: return incoming == stored;
-    case CompareFunc::Lequal: return incoming <= stored;
-    case CompareFunc::Greater: return incoming > stored;
-    case CompareFunc::Notequal: return incoming != stored;
-    case CompareFunc::Gequal: return incoming >= stored;
-    case CompareFunc::Always: return QuadI{} == 0;
-    }
-    return QuadI{};
-}
-
 // The quad's values of a buffer of floats (depth) with rows `stride` apart:
 // (x, y), (x+1, y), (x, y+1), (x+1, y+1) from `at` = (x, y). All four must exist.
 inline QuadF gather_quad(const float* at, size_t stride) {
@@ -68,19 +54,12 @@ inline void scatter_quad(float* at, size_t stride, QuadF v) {
     std::memcpy(at + stride, reinterpret_cast<const float*>(&v) + 2, 2 * sizeof(float));
 }
 
-// raster/framebuffer.h's unorm8_steps per lane, as integers 0..255.
-inline QuadI unorm8_steps(QuadF v) {
-    constexpr float kRound = 8388608.0f;
-    QuadF c = v > 0.0f ? v : QuadF{};  // also NaN
-    c = c < 1.0f ? c : QuadF{} + 1.0f;
-    return __builtin_convertvector((c * 255.0f + kRound) - kRound, QuadI);
-}
-
 // Four lanes' RGBA8 pixels as words (R in the lowest byte: memory order on
-// little-endian machines, as pack_unorm8).
+// little-endian machines).
 inline QuadI pack_unorm8(QuadF r, QuadF g, QuadF b, QuadF a) {
     static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__);
-    return unorm8_steps(r) | unorm8_steps(g) << 8 | unorm8_steps(b) << 16 | unorm8_steps(a) << 24;
+    auto steps = [](QuadF v) { return __builtin_convertvector(unorm8_steps(v), QuadI); };
+    return steps(r) | steps(g) << 8 | steps(b) << 16 | steps(a) << 24;
 }
 
 }  // namespace glslrun::raster

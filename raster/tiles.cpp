@@ -56,6 +56,7 @@ void TileBins::add(const FsPrimitive* prim, const Rect& bounds) {
 void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage& stage) const {
     Rect clip = tile_rect(tile);
     const std::vector<const FsPrimitive*>& bin = bins_[tile];
+    stage.prefetch(clip);
     for (size_t i = 0; i < bin.size(); ++i) {
         const FsPrimitive& p = *bin[i];
         // Consecutive primitives of a bin are rarely adjacent in memory: the
