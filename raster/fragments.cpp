@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
 
 #include "raster/framebuffer.h"
 #include "runtime/execute.h"
+#include "runtime/interp_kernels.h"
+#include "runtime/program_state.h"
 
 namespace glslrun::raster {
 
@@ -49,6 +53,25 @@ void load_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes)
         return;
     }
     for (int lane = 0; lane < lanes; ++lane) v[size_t(lane)] = exec::lane_as_float(in, kind, r, lane);
+}
+
+// Where the fused pipeline finds FsPrimitive's fields.
+rt::PrimitiveLayout primitive_layout() {
+    static_assert(std::is_standard_layout_v<FsPrimitive> && sizeof(Plane) == 3 * sizeof(float));
+    rt::PrimitiveLayout l;
+    l.vertices = offsetof(FsPrimitive, v);
+    l.vertex_size = sizeof(FsVertex);
+    l.vertex_inv_w = offsetof(FsVertex, inv_w);
+    l.vertex_attrs = offsetof(FsVertex, attrs);
+    l.weights = offsetof(FsPrimitive, weight);
+    l.depth = offsetof(FsPrimitive, z);
+    l.ox = offsetof(FsPrimitive, ox);
+    l.oy = offsetof(FsPrimitive, oy);
+    l.front = offsetof(FsPrimitive, front);
+    l.count = offsetof(FsPrimitive, count);
+    l.point_center = offsetof(FsPrimitive, point_center);
+    l.point_size = offsetof(FsPrimitive, point_size);
+    return l;
 }
 
 }  // namespace
@@ -131,6 +154,48 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
     early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
+    pipeline_ = fused_pipeline();
+}
+
+// The fused pipeline where the shader runs JIT-compiled and the draw's
+// state is one it takes: the depth test (any function, either mask) and
+// plain stores into one colour buffer, no shader debugger. Null otherwise,
+// and under Backend::Auto until its background compile is done.
+const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
+    const FragmentOps& o = ops_;
+    bool all_channels = o.color_mask == std::array<bool, 4>{true, true, true, true};
+    if (interp_->backend() != Backend::Jit || probe_ || o.alpha_test || o.stencil_test || o.blend || o.logic_op ||
+        !all_channels || gl_.draw_buffers != 1)
+        return nullptr;
+    rt::PipelineKey key;
+    for (const InputPlan& p : inputs_) {
+        const ir::Binding& b = *p.binding;
+        const bool is_bool = b.kind == ir::Kind::Bool && p.source == InputPlan::Source::FrontFacing;
+        if (b.kind != ir::Kind::F32 && !is_bool && p.source != InputPlan::Source::Zero) return nullptr;
+        for (uint32_t c = 0; c < b.count; ++c) {
+            uint32_t index = p.source == InputPlan::Source::Varying ? p.attr_offset + c : c;
+            key.inputs.push_back({rt::InputSource(p.source), index, is_bool});
+            input_regs_.push_back(interp_->lanes(b.first + c));
+        }
+    }
+    if (const ir::Binding* color = color_out_[0]) {
+        if (color->kind != ir::Kind::F32) return nullptr;
+        key.color_channels = std::min<uint32_t>(4, color->count);
+        for (uint32_t k = 0; k < key.color_channels; ++k) output_regs_.push_back(interp_->lanes(color->first + k));
+    }
+    if (depth_out_) {
+        if (depth_out_->kind != ir::Kind::F32) return nullptr;
+        key.depth_output = true;
+        output_regs_.push_back(interp_->lanes(depth_out_->first));
+    }
+    key.float_color = fb_.float_color;
+    key.depth_test = o.depth_test;
+    key.depth_write = o.depth_write;
+    key.depth_func = o.depth_func;
+    key.early_depth = early_depth_;
+    key.avx2 = rt::cpu_has_avx2();
+    target_ = {fb_.depth.data(), fb_.color.data(), fb_.width};
+    return state_of(program_).pipelines->get(key, primitive_layout(), program_.exec.backend == Backend::Jit);
 }
 
 ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
@@ -178,6 +243,16 @@ unsigned FragmentStage::early_depth_test(int base, unsigned mask) {
 void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask) {
     if (error_) return;
     int base = quads_ * 4;
+    if (pipeline_) {
+        if (early_depth_) mask = pipeline_->quad_depth(&prim, x, y, mask, &target_);
+        if (!mask) return;
+        batch_.prim[quads_] = &prim;
+        batch_.x[quads_] = x;
+        batch_.y[quads_] = y;
+        covered_ |= rt::LaneMask(mask) << base;
+        if (++quads_ == rt::kLanes / 4) flush();
+        return;
+    }
     for (int i = 0; i < 4; ++i) {
         int lane = base + i, px = x + kQuadDx[i], py = y + kQuadDy[i];
         float z = prim.z.c + prim.z.a * float(px - prim.ox) + prim.z.b * float(py - prim.oy);
@@ -261,9 +336,14 @@ void FragmentStage::fill_inputs(const Weights& w) {
 void FragmentStage::flush() {
     if (quads_ == 0) return;
     int lanes = quads_ * 4;
-    Weights w;
-    compute_weights(w);
-    fill_inputs(w);
+    if (pipeline_) {
+        batch_.quads = quads_;
+        pipeline_->inputs(&batch_, input_regs_.data());
+    } else {
+        Weights w;
+        compute_weights(w);
+        fill_inputs(w);
+    }
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
     rt::RunError run_error;
     if (probe_) [[unlikely]]
@@ -276,7 +356,12 @@ void FragmentStage::flush() {
         error_ = exec::run_error(state_of(program_), ir::Stage::Fragment, run_error);
         return;
     }
-    if (probe_) [[unlikely]]
+    if (pipeline_) {
+        rt::LaneMask written = pipeline_->outputs(&batch_, output_regs_.data(), interp_->alive() & covered, &target_);
+        shaded_ += uint64_t(std::popcount(covered));
+        fused_ += uint64_t(std::popcount(covered));
+        written_ += uint64_t(std::popcount(written));
+    } else if (probe_) [[unlikely]]
         probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered));
     else
         write_outputs<false>(covered);

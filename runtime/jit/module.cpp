@@ -28,10 +28,9 @@
 
 #include "runtime/aligned_words.h"
 #include "runtime/jit/codegen.h"
+#include "runtime/jit/engine.h"
 
 namespace glslrun::rt::jit {
-
-namespace {
 
 void initialise_llvm() {
     static std::once_flag once;  // LLVM's target registry is process-wide
@@ -40,6 +39,8 @@ void initialise_llvm() {
         llvm::InitializeNativeTargetAsmPrinter();
     });
 }
+
+namespace {
 
 // The emitter writes callees out in place (GLSL has no recursion), so the
 // JIT takes a shader only if its calls expand to at most this many nodes:
@@ -81,6 +82,8 @@ bool jit_takes(const ir::Shader& shader) {
     return body <= kMaxExpandedNodes && prologue <= kMaxExpandedNodes && body + prologue <= kMaxExpandedNodes;
 }
 
+}  // namespace
+
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
     llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
     builder.setCPU(avx2 ? "x86-64-v3" : "x86-64");
@@ -118,6 +121,8 @@ void optimise(llvm::Module& module, llvm::TargetMachine& machine) {
     module_pipeline.addPass(llvm::createModuleToFunctionPassAdaptor(std::move(pipeline)));
     module_pipeline.run(module, modules);
 }
+
+namespace {
 
 class JitShader final : public CompiledShader {
 public:

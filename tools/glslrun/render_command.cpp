@@ -181,7 +181,8 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                    ? " (auto: the interpreter until compiled)" : "",
                prog.jit_compile_seconds() * 1e3);
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
-    fmt::print("fragments    {} shaded, {} written\n", s.fragments_shaded, s.fragments_written);
+    fmt::print("fragments    {} shaded, {} written; {} by the fused JIT pipeline, {} by the per-fragment path\n",
+               s.fragments_shaded, s.fragments_written, s.fragments_fused, s.fragments_shaded - s.fragments_fused);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
     fmt::print("built-in uniforms read   {}", builtin_values(prog, terminal_width()));

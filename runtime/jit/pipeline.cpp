@@ -1,0 +1,402 @@
+// The fused fragment pipeline's code (runtime/fragment_pipeline.h): LLVM IR
+// for the early depth test of a quad, the shader inputs of a batch and the
+// per-fragment writes, computing what raster/fragments.cpp's C++ path
+// computes, operation for operation. A quad's four lanes are one 4-wide
+// vector; the writes go lane by lane, in lane order, as two quads of a batch
+// may cover the same pixel.
+#include <chrono>
+
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/Verifier.h>
+
+#include "runtime/jit/engine.h"
+
+namespace glslrun::rt::jit {
+
+namespace {
+
+// Quad lane i is pixel (x + kDx[i], y + kDy[i]) (runtime/backend.h).
+constexpr int kDx[4] = {0, 1, 0, 1};
+constexpr int kDy[4] = {0, 0, 1, 1};
+constexpr int kQuads = kLanes / 4;
+
+class PipelineEmitter {
+public:
+    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const PipelineKey& key,
+                    const PrimitiveLayout& layout)
+        : module_(module), b_(context), key_(key), layout_(layout) {
+        i8_ = b_.getInt8Ty();
+        i32_ = b_.getInt32Ty();
+        i64_ = b_.getInt64Ty();
+        f32_ = b_.getFloatTy();
+        v4f_ = llvm::FixedVectorType::get(f32_, 4);
+        v4i_ = llvm::FixedVectorType::get(i32_, 4);
+        ptr_ = llvm::PointerType::getUnqual(context);
+    }
+
+    void define_quad_depth();
+    void define_inputs();
+    void define_outputs();
+
+private:
+    // Where a quad's lanes are: pixel coordinates, and their offsets from
+    // the primitive's origin as floats.
+    struct Quad {
+        llvm::Value *prim, *px, *py, *fx, *fy;
+    };
+    // Perspective-correct weights of vertices 1 and 2, and 1/w.
+    struct Weights {
+        llvm::Value *p1, *p2, *inv_w;
+    };
+
+    llvm::Function* begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params);
+    llvm::Value* at(llvm::Value* base, uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(i8_, base, offset); }
+    llvm::Value* load_f(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(f32_, at(base, offset)); }
+    llvm::Value* load_i(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(i32_, at(base, offset)); }
+    llvm::Value* splat(llvm::Value* v) { return b_.CreateVectorSplat(4, v); }
+    llvm::Value* lanes_i(const int (&v)[4]) {
+        return llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{uint32_t(v[0]), uint32_t(v[1]),
+                                                                                     uint32_t(v[2]), uint32_t(v[3])});
+    }
+    llvm::Value* splat_f(float v) { return llvm::ConstantFP::get(v4f_, v); }
+    Quad quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y);
+    llvm::Value* plane(const Quad& q, uint64_t offset);
+    llvm::Value* clamp01(llvm::Value* v);
+    llvm::Value* quad_depth(const Quad& q) { return clamp01(plane(q, layout_.depth)); }
+    Weights weights(const Quad& q);
+    llvm::Value* vertex(const Quad& q, int i, uint32_t field) {
+        return at(q.prim, layout_.vertices + uint64_t(i) * layout_.vertex_size + field);
+    }
+    llvm::Value* input(const PipelineInput& in, const Quad& q, const Weights& w);
+    llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
+    llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
+    void write_lane(const Quad& q, int i, llvm::Value* z, const std::array<llvm::Value*, 4>& rgba,
+                    llvm::Value* target, llvm::Value* width, llvm::AllocaInst* written, int lane);
+
+    llvm::Module& module_;
+    llvm::IRBuilder<> b_;
+    const PipelineKey& key_;
+    const PrimitiveLayout& layout_;
+    llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
+    llvm::FixedVectorType *v4f_, *v4i_;
+    llvm::Function* fn_ = nullptr;
+};
+
+llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
+    auto* type = llvm::FunctionType::get(result, params, false);
+    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    fn_->addFnAttr(llvm::Attribute::NoUnwind);
+    b_.SetInsertPoint(llvm::BasicBlock::Create(b_.getContext(), "entry", fn_));
+    return fn_;
+}
+
+PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y) {
+    Quad q{prim, nullptr, nullptr, nullptr, nullptr};
+    q.px = b_.CreateAdd(splat(x), lanes_i(kDx));
+    q.py = b_.CreateAdd(splat(y), lanes_i(kDy));
+    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, layout_.ox))), v4f_);
+    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, layout_.oy))), v4f_);
+    return q;
+}
+
+// c + a * x + b * y, as FragmentStage evaluates a Plane.
+llvm::Value* PipelineEmitter::plane(const Quad& q, uint64_t offset) {
+    llvm::Value* a = splat(load_f(q.prim, offset));
+    llvm::Value* b = splat(load_f(q.prim, offset + 4));
+    llvm::Value* c = splat(load_f(q.prim, offset + 8));
+    return b_.CreateFAdd(b_.CreateFAdd(c, b_.CreateFMul(a, q.fx)), b_.CreateFMul(b, q.fy));
+}
+
+// raster::clamp01: maxss then minss, NaN and -0 kept.
+llvm::Value* PipelineEmitter::clamp01(llvm::Value* v) {
+    llvm::Value* zero = splat_f(0.0f);
+    llvm::Value* one = splat_f(1.0f);
+    llvm::Value* low = b_.CreateSelect(b_.CreateFCmpOGT(zero, v), zero, v);
+    return b_.CreateSelect(b_.CreateFCmpOLT(one, low), one, low);
+}
+
+// FragmentStage::compute_weights.
+PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
+    llvm::Value* l[3];
+    for (int k = 0; k < 3; ++k) l[k] = plane(q, layout_.weights + 12u * uint32_t(k));
+    auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w))); };
+    llvm::Value* w1 = b_.CreateFMul(l[1], inv_w_of(1));
+    llvm::Value* w2 = b_.CreateFMul(l[2], inv_w_of(2));
+    llvm::Value* inv_w = b_.CreateFAdd(b_.CreateFAdd(b_.CreateFMul(l[0], inv_w_of(0)), w1), w2);
+    llvm::Value* nonzero = b_.CreateFCmpUNE(inv_w, splat_f(0.0f));
+    llvm::Value* r = b_.CreateSelect(nonzero, b_.CreateFDiv(splat_f(1.0f), inv_w), splat_f(0.0f));
+    return {b_.CreateSelect(nonzero, b_.CreateFMul(w1, r), l[1]), b_.CreateSelect(nonzero, b_.CreateFMul(w2, r), l[2]),
+            inv_w};
+}
+
+// One input register's four lanes (FragmentStage::interpolate and builtin_input).
+llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, const Weights& w) {
+    switch (in.source) {
+    case InputSource::Varying: {
+        llvm::Value* a[3];
+        for (int i = 0; i < 3; ++i) {
+            llvm::Value* attrs = b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs));
+            a[i] = load_f(attrs, uint64_t(in.index) * 4);
+        }
+        llvm::Value* d1 = splat(b_.CreateFSub(a[1], a[0]));
+        llvm::Value* d2 = splat(b_.CreateFSub(a[2], a[0]));
+        return b_.CreateFAdd(b_.CreateFAdd(splat(a[0]), b_.CreateFMul(w.p1, d1)), b_.CreateFMul(w.p2, d2));
+    }
+    case InputSource::FragCoord:
+        switch (in.index) {
+        case 0: return b_.CreateFAdd(b_.CreateSIToFP(q.px, v4f_), splat_f(0.5f));
+        case 1: return b_.CreateFAdd(b_.CreateSIToFP(q.py, v4f_), splat_f(0.5f));
+        case 2: return quad_depth(q);
+        default: return w.inv_w;
+        }
+    case InputSource::FrontFacing: {
+        llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, layout_.front)), b_.getInt8(0));
+        llvm::Value* word = in.is_bool ? b_.CreateZExt(front, i32_)
+                                       : b_.CreateSelect(front, llvm::ConstantFP::get(f32_, 1.0), llvm::ConstantFP::get(f32_, 0.0));
+        return splat(word);
+    }
+    case InputSource::PointCoord: {
+        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
+        llvm::Value* size = splat(load_f(q.prim, layout_.point_size));
+        llvm::Value* centre = splat(load_f(q.prim, layout_.point_center + (in.index == 0 ? 0 : 4)));
+        llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, v4f_), splat_f(0.5f));
+        llvm::Value* offset = b_.CreateFDiv(b_.CreateFSub(pixel, centre), size);
+        llvm::Value* value = in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
+        return b_.CreateSelect(is_point, value, splat_f(0.0f));
+    }
+    case InputSource::Zero: break;
+    }
+    return splat_f(0.0f);
+}
+
+// raster::depth_passes on one lane.
+llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* stored) {
+    switch (key_.depth_func) {
+    case CompareFunc::Never: return b_.getFalse();
+    case CompareFunc::Less: return b_.CreateFCmpOLT(incoming, stored);
+    case CompareFunc::Equal: return b_.CreateFCmpOEQ(incoming, stored);
+    case CompareFunc::Lequal: return b_.CreateFCmpOLE(incoming, stored);
+    case CompareFunc::Greater: return b_.CreateFCmpOGT(incoming, stored);
+    case CompareFunc::Notequal: return b_.CreateFCmpUNE(incoming, stored);
+    case CompareFunc::Gequal: return b_.CreateFCmpOGE(incoming, stored);
+    case CompareFunc::Always: break;
+    }
+    return b_.getTrue();
+}
+
+llvm::Value* PipelineEmitter::pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width) {
+    return b_.CreateAdd(b_.CreateMul(b_.CreateSExt(y, i64_), b_.CreateSExt(width, i64_)), b_.CreateSExt(x, i64_));
+}
+
+// quad_depth(prim, x, y, mask, target): FragmentStage::early_depth_test.
+void PipelineEmitter::define_quad_depth() {
+    begin("glslrun_quad_depth", i32_, {ptr_, i32_, i32_, i32_, ptr_});
+    llvm::Value* target = fn_->getArg(4);
+    Quad q = quad(fn_->getArg(0), fn_->getArg(1), fn_->getArg(2));
+    llvm::Value* z = quad_depth(q);
+    llvm::Value* depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
+    llvm::Value* width = load_i(target, offsetof(PipelineTarget, width));
+    llvm::Value* mask = fn_->getArg(3);
+    for (int i = 0; i < 4; ++i) {
+        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "test", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+        llvm::BasicBlock* from = b_.GetInsertBlock();
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0)), test, next);
+        b_.SetInsertPoint(test);
+        llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
+        llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
+        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, depth, pixel_index(px, py, width));
+        llvm::Value* stored = b_.CreateLoad(f32_, slot);
+        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+        llvm::Value* passes = depth_passes(zi, stored);
+        if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
+        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+        llvm::Value* tested = b_.CreateAnd(mask, b_.CreateNot(failed));
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+        llvm::PHINode* merged = b_.CreatePHI(i32_, 2);
+        merged->addIncoming(mask, from);
+        merged->addIncoming(tested, test);
+        mask = merged;
+    }
+    b_.CreateRet(mask);
+}
+
+// inputs(batch, regs): FragmentStage::fill_inputs, one quad per iteration.
+void PipelineEmitter::define_inputs() {
+    begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
+    llvm::Value* batch = fn_->getArg(0);
+    llvm::Value* regs_table = fn_->getArg(1);
+    std::vector<llvm::Value*> regs;
+    for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(regs_table, i * 8)));
+    llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
+    llvm::BasicBlock* entry = b_.GetInsertBlock();
+    llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
+    llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "done", fn_);
+    b_.CreateCondBr(b_.CreateICmpSGT(quads, b_.getInt32(0)), body, done);
+    b_.SetInsertPoint(body);
+    llvm::PHINode* index = b_.CreatePHI(i32_, 2);
+    index->addIncoming(b_.getInt32(0), entry);
+    llvm::Value* index64 = b_.CreateZExt(index, i64_);
+    auto field = [&](size_t offset, llvm::Type* type) {
+        return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), index64));
+    };
+    Quad q = quad(field(offsetof(QuadBatch, prim), ptr_), field(offsetof(QuadBatch, x), i32_),
+                  field(offsetof(QuadBatch, y), i32_));
+    Weights w = weights(q);
+    for (size_t i = 0; i < key_.inputs.size(); ++i) {
+        llvm::Value* lanes = b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index64, 2));
+        b_.CreateAlignedStore(input(key_.inputs[i], q, w), lanes, llvm::Align(16));
+    }
+    llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
+    index->addIncoming(next, b_.GetInsertBlock());
+    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), body, done);
+    b_.SetInsertPoint(done);
+    b_.CreateRetVoid();
+}
+
+// One lane's late depth test and writes (FragmentStage::write_plain), if it is alive.
+void PipelineEmitter::write_lane(const Quad& q, int i, llvm::Value* z, const std::array<llvm::Value*, 4>& rgba,
+                                 llvm::Value* target, llvm::Value* width, llvm::AllocaInst* written, int lane) {
+    llvm::Value* alive = fn_->getArg(2);
+    llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
+    llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+    llvm::Value* bit = b_.getInt64(uint64_t(1) << lane);
+    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(alive, bit), b_.getInt64(0)), write, next);
+    b_.SetInsertPoint(write);
+    llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
+                                     b_.CreateExtractElement(q.py, uint64_t(i)), width);
+    if (key_.depth_test && !key_.early_depth) {
+        llvm::Value* depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
+        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, depth, pixel);
+        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+        llvm::BasicBlock* pass = llvm::BasicBlock::Create(b_.getContext(), "pass", fn_);
+        b_.CreateCondBr(depth_passes(zi, b_.CreateLoad(f32_, slot)), pass, next);
+        b_.SetInsertPoint(pass);
+        if (key_.depth_write) b_.CreateStore(zi, slot);
+    }
+    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written), bit), written);
+    if (key_.color_channels > 0) {
+        llvm::Value* color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
+        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, color, b_.CreateShl(pixel, 2));
+        llvm::Value* texel = llvm::PoisonValue::get(v4f_);
+        for (unsigned k = 0; k < 4; ++k)
+            texel = b_.CreateInsertElement(texel, b_.CreateExtractElement(rgba[k], uint64_t(i)), uint64_t(k));
+        b_.CreateAlignedStore(texel, dst, llvm::Align(4));
+    }
+    b_.CreateBr(next);
+    b_.SetInsertPoint(next);
+}
+
+// outputs(batch, regs, alive, target): FragmentStage::write_outputs on the
+// fast path, quad by quad in lane order.
+void PipelineEmitter::define_outputs() {
+    begin("glslrun_outputs", i64_, {ptr_, ptr_, i64_, ptr_});
+    llvm::Value* batch = fn_->getArg(0);
+    llvm::Value* regs = fn_->getArg(1);
+    llvm::Value* alive = fn_->getArg(2);
+    llvm::Value* target = fn_->getArg(3);
+    llvm::AllocaInst* written = b_.CreateAlloca(i64_);
+    b_.CreateStore(b_.getInt64(0), written);
+    llvm::Value* width = load_i(target, offsetof(PipelineTarget, width));
+    auto reg = [&](uint32_t i, int q) {
+        return at(b_.CreateLoad(ptr_, at(regs, uint64_t(i) * 8)), uint64_t(q) * 16);
+    };
+    for (int q = 0; q < kQuads; ++q) {
+        llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
+        llvm::Value* bits = b_.getInt64(uint64_t(0xF) << (4 * q));
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(alive, bits), b_.getInt64(0)), body, next);
+        b_.SetInsertPoint(body);
+        auto field = [&](size_t offset, llvm::Type* type, uint64_t size) {
+            return b_.CreateLoad(type, at(batch, offset + uint64_t(q) * size));
+        };
+        Quad quad_at = quad(field(offsetof(QuadBatch, prim), ptr_, 8), field(offsetof(QuadBatch, x), i32_, 4),
+                            field(offsetof(QuadBatch, y), i32_, 4));
+        llvm::Value* z;
+        if (key_.depth_output) {
+            // gl_FragDepth clamped to [0, 1], NaN -> 0.
+            llvm::Value* d = b_.CreateAlignedLoad(v4f_, reg(key_.color_channels, q), llvm::Align(16));
+            llvm::Value* upper = b_.CreateSelect(b_.CreateFCmpOLT(splat_f(1.0f), d), splat_f(1.0f), d);
+            z = b_.CreateSelect(b_.CreateFCmpOGT(d, splat_f(0.0f)), upper, splat_f(0.0f));
+        } else {
+            z = quad_depth(quad_at);
+        }
+        std::array<llvm::Value*, 4> rgba;
+        for (uint32_t k = 0; k < 4; ++k) {
+            llvm::Value* v = k < key_.color_channels ? b_.CreateAlignedLoad(v4f_, reg(k, q), llvm::Align(16))
+                                                     : splat_f(0.0f);
+            if (!key_.float_color) {
+                // raster::quantize_unorm8.
+                constexpr float kRound = 8388608.0f;
+                llvm::Value* c = b_.CreateSelect(b_.CreateFCmpOGT(v, splat_f(0.0f)), v, splat_f(0.0f));
+                c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
+                llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
+                v = b_.CreateFDiv(b_.CreateFSub(rounded, splat_f(kRound)), splat_f(255.0f));
+            }
+            rgba[k] = v;
+        }
+        for (int i = 0; i < 4; ++i) write_lane(quad_at, i, z, rgba, target, width, written, 4 * q + i);
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+    }
+    b_.CreateRet(b_.CreateLoad(i64_, written));
+}
+
+class CompiledPipeline final : public FragmentPipeline {
+public:
+    std::unique_ptr<llvm::orc::LLJIT> jit;
+};
+
+}  // namespace
+
+std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
+                                                   double* seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    initialise_llvm();
+    auto context = std::make_unique<llvm::LLVMContext>();
+    auto module = std::make_unique<llvm::Module>("pipeline", *context);
+    auto machine = target_for(key.avx2).createTargetMachine();
+    if (!machine) {
+        llvm::consumeError(machine.takeError());
+        return nullptr;
+    }
+    module->setDataLayout((*machine)->createDataLayout());
+    module->setTargetTriple((*machine)->getTargetTriple().str());
+    {
+        PipelineEmitter emitter(*context, *module, key, layout);
+        if (key.early_depth) emitter.define_quad_depth();
+        emitter.define_inputs();
+        emitter.define_outputs();
+    }
+    if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
+    optimise(*module, **machine);
+    auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(key.avx2)).create();
+    if (!jit) {
+        llvm::consumeError(jit.takeError());
+        return nullptr;
+    }
+    auto code = std::make_unique<CompiledPipeline>();
+    code->jit = std::move(*jit);
+    if (auto err = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
+        llvm::consumeError(std::move(err));
+        return nullptr;
+    }
+    auto lookup = [&](const char* name) -> void* {
+        auto symbol = code->jit->lookup(name);
+        if (symbol) return symbol->toPtr<void*>();
+        llvm::consumeError(symbol.takeError());
+        return nullptr;
+    };
+    code->quad_depth = key.early_depth ? reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"))
+                                       : nullptr;
+    code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(lookup("glslrun_inputs"));
+    code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(lookup("glslrun_outputs"));
+    if (!code->inputs || !code->outputs || (key.early_depth && !code->quad_depth)) return nullptr;
+    if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return code;
+}
+
+}  // namespace glslrun::rt::jit
