@@ -4,7 +4,10 @@
 // computes, operation for operation. A quad's four lanes are one 4-wide
 // vector; the writes go lane by lane, in lane order, as two quads of a batch
 // may cover the same pixel.
+#include <array>
 #include <chrono>
+#include <functional>
+#include <vector>
 
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
@@ -20,7 +23,6 @@ namespace {
 // Quad lane i is pixel (x + kDx[i], y + kDy[i]) (runtime/backend.h).
 constexpr int kDx[4] = {0, 1, 0, 1};
 constexpr int kDy[4] = {0, 0, 1, 1};
-constexpr int kQuads = kLanes / 4;
 
 class PipelineEmitter {
 public:
@@ -72,8 +74,19 @@ private:
     llvm::Value* input(const PipelineInput& in, const Quad& q, const Weights& w);
     llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
-    void write_lane(const Quad& q, int i, llvm::Value* z, const std::array<llvm::Value*, 4>& rgba,
-                    llvm::Value* target, llvm::Value* width, llvm::AllocaInst* written, int lane);
+    void for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value* index, const Quad& q)>& body);
+    // A quad's depth and colour values to store.
+    struct QuadValues {
+        llvm::Value* z;
+        std::array<llvm::Value*, 4> rgba;
+    };
+    QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
+    void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
+    void load_target(llvm::Value* target) {
+        target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
+        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
+        target_.width = load_i(target, offsetof(PipelineTarget, width));
+    }
 
     llvm::Module& module_;
     llvm::IRBuilder<> b_;
@@ -81,7 +94,12 @@ private:
     const PrimitiveLayout& layout_;
     llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
     llvm::FixedVectorType *v4f_, *v4i_;
+    // Per function being defined.
     llvm::Function* fn_ = nullptr;
+    struct {
+        llvm::Value *depth, *color, *width;
+    } target_{};
+    llvm::AllocaInst* written_ = nullptr;
 };
 
 llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
@@ -196,8 +214,7 @@ void PipelineEmitter::define_quad_depth() {
     llvm::Value* target = fn_->getArg(4);
     Quad q = quad(fn_->getArg(0), fn_->getArg(1), fn_->getArg(2));
     llvm::Value* z = quad_depth(q);
-    llvm::Value* depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
-    llvm::Value* width = load_i(target, offsetof(PipelineTarget, width));
+    load_target(target);
     llvm::Value* mask = fn_->getArg(3);
     for (int i = 0; i < 4; ++i) {
         llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "test", fn_);
@@ -207,7 +224,7 @@ void PipelineEmitter::define_quad_depth() {
         b_.SetInsertPoint(test);
         llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
         llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
-        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, depth, pixel_index(px, py, width));
+        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel_index(px, py, target_.width));
         llvm::Value* stored = b_.CreateLoad(f32_, slot);
         llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
         llvm::Value* passes = depth_passes(zi, stored);
@@ -224,125 +241,126 @@ void PipelineEmitter::define_quad_depth() {
     b_.CreateRet(mask);
 }
 
-// inputs(batch, regs): FragmentStage::fill_inputs, one quad per iteration.
-void PipelineEmitter::define_inputs() {
-    begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
-    llvm::Value* batch = fn_->getArg(0);
-    llvm::Value* regs_table = fn_->getArg(1);
-    std::vector<llvm::Value*> regs;
-    for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(regs_table, i * 8)));
+// Emits body(index, quad) for quads 0 .. batch->quads - 1, a loop.
+void PipelineEmitter::for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value*, const Quad&)>& body) {
     llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
     llvm::BasicBlock* entry = b_.GetInsertBlock();
-    llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
+    llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
     llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "done", fn_);
-    b_.CreateCondBr(b_.CreateICmpSGT(quads, b_.getInt32(0)), body, done);
-    b_.SetInsertPoint(body);
+    b_.CreateCondBr(b_.CreateICmpSGT(quads, b_.getInt32(0)), loop, done);
+    b_.SetInsertPoint(loop);
     llvm::PHINode* index = b_.CreatePHI(i32_, 2);
     index->addIncoming(b_.getInt32(0), entry);
     llvm::Value* index64 = b_.CreateZExt(index, i64_);
     auto field = [&](size_t offset, llvm::Type* type) {
         return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), index64));
     };
-    Quad q = quad(field(offsetof(QuadBatch, prim), ptr_), field(offsetof(QuadBatch, x), i32_),
-                  field(offsetof(QuadBatch, y), i32_));
-    Weights w = weights(q);
-    for (size_t i = 0; i < key_.inputs.size(); ++i) {
-        llvm::Value* lanes = b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index64, 2));
-        b_.CreateAlignedStore(input(key_.inputs[i], q, w), lanes, llvm::Align(16));
-    }
+    body(index64, quad(field(offsetof(QuadBatch, prim), ptr_), field(offsetof(QuadBatch, x), i32_),
+                       field(offsetof(QuadBatch, y), i32_)));
     llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
     index->addIncoming(next, b_.GetInsertBlock());
-    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), body, done);
+    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), loop, done);
     b_.SetInsertPoint(done);
+}
+
+// inputs(batch, regs): FragmentStage::fill_inputs.
+void PipelineEmitter::define_inputs() {
+    begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
+    std::vector<llvm::Value*> regs;
+    for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), i * 8)));
+    for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        // All values before the first store: the stores could alias the
+        // primitive for all LLVM knows, which would reload its fields.
+        Weights w = weights(q);
+        std::vector<llvm::Value*> values;
+        for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
+        for (size_t i = 0; i < values.size(); ++i)
+            b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index, 2)), llvm::Align(16));
+    });
     b_.CreateRetVoid();
 }
 
-// One lane's late depth test and writes (FragmentStage::write_plain), if it is alive.
-void PipelineEmitter::write_lane(const Quad& q, int i, llvm::Value* z, const std::array<llvm::Value*, 4>& rgba,
-                                 llvm::Value* target, llvm::Value* width, llvm::AllocaInst* written, int lane) {
-    llvm::Value* alive = fn_->getArg(2);
+// One lane's late depth test and writes (FragmentStage::write_plain), if it
+// is alive; `bit` its bit in the batch.
+void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit) {
     llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
     llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
-    llvm::Value* bit = b_.getInt64(uint64_t(1) << lane);
-    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(alive, bit), b_.getInt64(0)), write, next);
+    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bit), b_.getInt64(0)), write, next);
     b_.SetInsertPoint(write);
     llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
-                                     b_.CreateExtractElement(q.py, uint64_t(i)), width);
+                                     b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
     if (key_.depth_test && !key_.early_depth) {
-        llvm::Value* depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
-        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, depth, pixel);
-        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
+        llvm::Value* z = b_.CreateExtractElement(v.z, uint64_t(i));
         llvm::BasicBlock* pass = llvm::BasicBlock::Create(b_.getContext(), "pass", fn_);
-        b_.CreateCondBr(depth_passes(zi, b_.CreateLoad(f32_, slot)), pass, next);
+        b_.CreateCondBr(depth_passes(z, b_.CreateLoad(f32_, slot)), pass, next);
         b_.SetInsertPoint(pass);
-        if (key_.depth_write) b_.CreateStore(zi, slot);
+        if (key_.depth_write) b_.CreateStore(z, slot);
     }
-    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written), bit), written);
+    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bit), written_);
     if (key_.color_channels > 0) {
-        llvm::Value* color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
-        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, color, b_.CreateShl(pixel, 2));
+        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, target_.color, b_.CreateShl(pixel, 2));
         llvm::Value* texel = llvm::PoisonValue::get(v4f_);
         for (unsigned k = 0; k < 4; ++k)
-            texel = b_.CreateInsertElement(texel, b_.CreateExtractElement(rgba[k], uint64_t(i)), uint64_t(k));
+            texel = b_.CreateInsertElement(texel, b_.CreateExtractElement(v.rgba[k], uint64_t(i)), uint64_t(k));
         b_.CreateAlignedStore(texel, dst, llvm::Align(4));
     }
     b_.CreateBr(next);
     b_.SetInsertPoint(next);
 }
 
+// A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)
+// and colour as stored (RGBA8: raster::quantize_unorm8).
+PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const std::vector<llvm::Value*>& regs,
+                                                         llvm::Value* index) {
+    auto lanes = [&](uint32_t r) {
+        return b_.CreateAlignedLoad(v4f_, b_.CreateInBoundsGEP(i32_, regs[r], b_.CreateShl(index, 2)), llvm::Align(16));
+    };
+    QuadValues v;
+    if (key_.depth_output) {
+        llvm::Value* d = lanes(key_.color_channels);
+        llvm::Value* upper = b_.CreateSelect(b_.CreateFCmpOLT(splat_f(1.0f), d), splat_f(1.0f), d);
+        v.z = b_.CreateSelect(b_.CreateFCmpOGT(d, splat_f(0.0f)), upper, splat_f(0.0f));
+    } else {
+        v.z = quad_depth(q);
+    }
+    for (uint32_t k = 0; k < 4; ++k) {
+        llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
+        if (!key_.float_color) {
+            constexpr float kRound = 8388608.0f;
+            c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
+            c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
+            llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
+            c = b_.CreateFDiv(b_.CreateFSub(rounded, splat_f(kRound)), splat_f(255.0f));
+        }
+        v.rgba[k] = c;
+    }
+    return v;
+}
+
 // outputs(batch, regs, alive, target): FragmentStage::write_outputs on the
-// fast path, quad by quad in lane order.
+// fast path, in lane order.
 void PipelineEmitter::define_outputs() {
     begin("glslrun_outputs", i64_, {ptr_, ptr_, i64_, ptr_});
-    llvm::Value* batch = fn_->getArg(0);
-    llvm::Value* regs = fn_->getArg(1);
-    llvm::Value* alive = fn_->getArg(2);
-    llvm::Value* target = fn_->getArg(3);
-    llvm::AllocaInst* written = b_.CreateAlloca(i64_);
-    b_.CreateStore(b_.getInt64(0), written);
-    llvm::Value* width = load_i(target, offsetof(PipelineTarget, width));
-    auto reg = [&](uint32_t i, int q) {
-        return at(b_.CreateLoad(ptr_, at(regs, uint64_t(i) * 8)), uint64_t(q) * 16);
-    };
-    for (int q = 0; q < kQuads; ++q) {
-        llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
+    std::vector<llvm::Value*> regs;
+    for (uint32_t i = 0; i < key_.color_channels + (key_.depth_output ? 1 : 0); ++i)
+        regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), uint64_t(i) * 8)));
+    load_target(fn_->getArg(3));
+    written_ = b_.CreateAlloca(i64_);
+    b_.CreateStore(b_.getInt64(0), written_);
+    for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
         llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
-        llvm::Value* bits = b_.getInt64(uint64_t(0xF) << (4 * q));
-        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(alive, bits), b_.getInt64(0)), body, next);
+        llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
+        llvm::Value* bits = b_.CreateMul(first, b_.getInt64(0xF));
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bits), b_.getInt64(0)), body, next);
         b_.SetInsertPoint(body);
-        auto field = [&](size_t offset, llvm::Type* type, uint64_t size) {
-            return b_.CreateLoad(type, at(batch, offset + uint64_t(q) * size));
-        };
-        Quad quad_at = quad(field(offsetof(QuadBatch, prim), ptr_, 8), field(offsetof(QuadBatch, x), i32_, 4),
-                            field(offsetof(QuadBatch, y), i32_, 4));
-        llvm::Value* z;
-        if (key_.depth_output) {
-            // gl_FragDepth clamped to [0, 1], NaN -> 0.
-            llvm::Value* d = b_.CreateAlignedLoad(v4f_, reg(key_.color_channels, q), llvm::Align(16));
-            llvm::Value* upper = b_.CreateSelect(b_.CreateFCmpOLT(splat_f(1.0f), d), splat_f(1.0f), d);
-            z = b_.CreateSelect(b_.CreateFCmpOGT(d, splat_f(0.0f)), upper, splat_f(0.0f));
-        } else {
-            z = quad_depth(quad_at);
-        }
-        std::array<llvm::Value*, 4> rgba;
-        for (uint32_t k = 0; k < 4; ++k) {
-            llvm::Value* v = k < key_.color_channels ? b_.CreateAlignedLoad(v4f_, reg(k, q), llvm::Align(16))
-                                                     : splat_f(0.0f);
-            if (!key_.float_color) {
-                // raster::quantize_unorm8.
-                constexpr float kRound = 8388608.0f;
-                llvm::Value* c = b_.CreateSelect(b_.CreateFCmpOGT(v, splat_f(0.0f)), v, splat_f(0.0f));
-                c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
-                llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
-                v = b_.CreateFDiv(b_.CreateFSub(rounded, splat_f(kRound)), splat_f(255.0f));
-            }
-            rgba[k] = v;
-        }
-        for (int i = 0; i < 4; ++i) write_lane(quad_at, i, z, rgba, target, width, written, 4 * q + i);
+        QuadValues v = quad_values(q, regs, index);
+        for (int i = 0; i < 4; ++i) write_lane(q, i, v, b_.CreateShl(first, uint64_t(i)));
         b_.CreateBr(next);
         b_.SetInsertPoint(next);
-    }
-    b_.CreateRet(b_.CreateLoad(i64_, written));
+    });
+    b_.CreateRet(b_.CreateLoad(i64_, written_));
 }
 
 class CompiledPipeline final : public FragmentPipeline {
