@@ -37,6 +37,16 @@ const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initi
 
 Plane to_plane(double a, double b, double c) { return {float(a), float(b), float(c)}; }
 
+// a + b and a * b that return a's NaN (quieted) when a is one, whatever
+// order the compiler gives the operands: x86 returns the first operand's
+// NaN of two, and the fused pipeline (runtime/jit/pipeline.cpp) computes
+// the same expressions with the same rule, so its bits are these.
+float add(float a, float b) { return a != a ? a + a : a + b; }
+float mul(float a, float b) { return a != a ? a + a : a * b; }
+
+// The plane at (x, y) from its origin: c + a * x + b * y.
+float plane_at(const Plane& p, float x, float y) { return add(add(p.c, mul(p.a, x)), mul(p.b, y)); }
+
 // Whole registers are copied, a constant size: lanes past the batch are not
 // live, so their values do not matter.
 void store_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, const Lanes& v, int lanes) {
@@ -255,7 +265,7 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
     }
     for (int i = 0; i < 4; ++i) {
         int lane = base + i, px = x + kQuadDx[i], py = y + kQuadDy[i];
-        float z = prim.z.c + prim.z.a * float(px - prim.ox) + prim.z.b * float(py - prim.oy);
+        float z = plane_at(prim.z, float(px - prim.ox), float(py - prim.oy));
         lane_x_[lane] = px;
         lane_y_[lane] = py;
         lane_z_[lane] = clamp01(z);
@@ -273,13 +283,13 @@ void FragmentStage::compute_weights(Weights& w) const {
         for (int lane = q * 4; lane < q * 4 + 4; ++lane) {
             float x = float(lane_x_[lane] - p.ox), y = float(lane_y_[lane] - p.oy);
             float l[3];
-            for (int k = 0; k < 3; ++k) l[k] = p.weight[k].c + p.weight[k].a * x + p.weight[k].b * y;
-            float w1 = l[1] * p.v[1].inv_w, w2 = l[2] * p.v[2].inv_w;
-            float inv_w = l[0] * p.v[0].inv_w + w1 + w2;
+            for (int k = 0; k < 3; ++k) l[k] = plane_at(p.weight[k], x, y);
+            float w1 = mul(l[1], p.v[1].inv_w), w2 = mul(l[2], p.v[2].inv_w);
+            float inv_w = add(add(mul(l[0], p.v[0].inv_w), w1), w2);
             w.inv_w[lane] = inv_w;
             float r = inv_w != 0.0f ? 1.0f / inv_w : 0.0f;
-            w.p1[lane] = inv_w != 0.0f ? w1 * r : l[1];
-            w.p2[lane] = inv_w != 0.0f ? w2 * r : l[2];
+            w.p1[lane] = inv_w != 0.0f ? mul(w1, r) : l[1];
+            w.p2[lane] = inv_w != 0.0f ? mul(w2, r) : l[2];
         }
     }
 }
@@ -290,7 +300,7 @@ void FragmentStage::interpolate(uint32_t attr, const Weights& w, Lanes& v) const
         const FsPrimitive& prim = *quad_prim_[size_t(q)];
         float a0 = prim.v[0].attrs[attr];
         float d1 = prim.v[1].attrs[attr] - a0, d2 = prim.v[2].attrs[attr] - a0;
-        for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = a0 + w.p1[lane] * d1 + w.p2[lane] * d2;
+        for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = add(add(a0, mul(w.p1[lane], d1)), mul(w.p2[lane], d2));
     }
 }
 

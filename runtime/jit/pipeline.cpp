@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
@@ -63,15 +64,36 @@ private:
                                                                                      uint32_t(v[2]), uint32_t(v[3])});
     }
     llvm::Value* splat_f(float v) { return llvm::ConstantFP::get(v4f_, v); }
+    // a + b and a * b returning a's NaN when a is one, as raster/fragments.cpp's
+    // add() and mul(). Without strict_, plain: exact where every NaN is
+    // the CPU's default NaN (made by the arithmetic, none in the inputs).
+    llvm::Value* a_nan_first(llvm::Value* a, llvm::Value* r) {
+        return b_.CreateSelect(b_.CreateFCmpUNO(a, a), b_.CreateFAdd(a, a), r);
+    }
+    llvm::Value* add(llvm::Value* a, llvm::Value* b) {
+        return strict_ ? a_nan_first(a, b_.CreateFAdd(a, b)) : b_.CreateFAdd(a, b);
+    }
+    llvm::Value* mul(llvm::Value* a, llvm::Value* b) {
+        return strict_ ? a_nan_first(a, b_.CreateFMul(a, b)) : b_.CreateFMul(a, b);
+    }
+    llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
     Quad quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y);
     llvm::Value* plane(const Quad& q, uint64_t offset);
     llvm::Value* clamp01(llvm::Value* v);
-    llvm::Value* quad_depth(const Quad& q) { return clamp01(plane(q, layout_.depth)); }
+    // The window depth: its plane is not among nan_inputs(), so always strict.
+    llvm::Value* quad_depth(const Quad& q) {
+        const bool strict = std::exchange(strict_, true);
+        llvm::Value* z = clamp01(plane(q, layout_.depth));
+        strict_ = strict;
+        return z;
+    }
     Weights weights(const Quad& q);
     llvm::Value* vertex(const Quad& q, int i, uint32_t field) {
         return at(q.prim, layout_.vertices + uint64_t(i) * layout_.vertex_size + field);
     }
     llvm::Value* input(const PipelineInput& in, const Quad& q, const Weights& w);
+    llvm::Value* nan_inputs(const Quad& q);
+    std::array<llvm::Value*, 3> attributes(const Quad& q, uint32_t index);  // of vertices 0, 1, 2
     llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     void for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value* index, const Quad& q)>& body);
@@ -100,6 +122,7 @@ private:
         llvm::Value *depth, *color, *width;
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
+    bool strict_ = false;  // add() and mul() order NaNs
 };
 
 llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
@@ -119,12 +142,42 @@ PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::Value* x, l
     return q;
 }
 
-// c + a * x + b * y, as FragmentStage evaluates a Plane.
+// c + a * x + b * y, as FragmentStage evaluates a Plane (plane_at). Strict:
+// x and y are never NaN, so a * x and b * y have one NaN operand at most,
+// and c's NaN is a scalar test.
 llvm::Value* PipelineEmitter::plane(const Quad& q, uint64_t offset) {
-    llvm::Value* a = splat(load_f(q.prim, offset));
-    llvm::Value* b = splat(load_f(q.prim, offset + 4));
-    llvm::Value* c = splat(load_f(q.prim, offset + 8));
-    return b_.CreateFAdd(b_.CreateFAdd(c, b_.CreateFMul(a, q.fx)), b_.CreateFMul(b, q.fy));
+    llvm::Value* a = load_f(q.prim, offset);
+    llvm::Value* b = load_f(q.prim, offset + 4);
+    llvm::Value* c = load_f(q.prim, offset + 8);
+    llvm::Value* ax = b_.CreateFMul(splat(a), q.fx);
+    if (!strict_) return b_.CreateFAdd(b_.CreateFAdd(splat(c), ax), b_.CreateFMul(splat(b), q.fy));
+    llvm::Value* cax = b_.CreateSelect(is_nan(c), splat(b_.CreateFAdd(c, c)), b_.CreateFAdd(splat(c), ax));
+    return a_nan_first(cax, b_.CreateFAdd(cax, b_.CreateFMul(splat(b), q.fy)));
+}
+
+// Whether the quad's primitive has a NaN among the values the inputs are
+// interpolated from (or infinities that sum to one: then the strict code
+// runs where the plain code would do).
+llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
+    std::vector<llvm::Value*> terms;
+    for (uint32_t k = 0; k < 9; ++k) terms.push_back(load_f(q.prim, layout_.weights + 4 * k));
+    for (int i = 0; i < 3; ++i) terms.push_back(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w)));
+    for (const PipelineInput& in : key_.inputs)
+        if (in.source == InputSource::Varying)
+            for (llvm::Value* a : attributes(q, in.index)) terms.push_back(a);
+    while (terms.size() > 1) {  // a tree of sums: NaN when any term is
+        std::vector<llvm::Value*> sums;
+        for (size_t i = 0; i + 1 < terms.size(); i += 2) sums.push_back(b_.CreateFAdd(terms[i], terms[i + 1]));
+        if (terms.size() % 2) sums.push_back(terms.back());
+        terms = std::move(sums);
+    }
+    return is_nan(terms[0]);
+}
+
+std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t index) {
+    std::array<llvm::Value*, 3> a;
+    for (int i = 0; i < 3; ++i) a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs)), uint64_t(index) * 4);
+    return a;
 }
 
 // raster::clamp01: maxss then minss, NaN and -0 kept.
@@ -140,27 +193,22 @@ PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
     llvm::Value* l[3];
     for (int k = 0; k < 3; ++k) l[k] = plane(q, layout_.weights + 12u * uint32_t(k));
     auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w))); };
-    llvm::Value* w1 = b_.CreateFMul(l[1], inv_w_of(1));
-    llvm::Value* w2 = b_.CreateFMul(l[2], inv_w_of(2));
-    llvm::Value* inv_w = b_.CreateFAdd(b_.CreateFAdd(b_.CreateFMul(l[0], inv_w_of(0)), w1), w2);
+    llvm::Value* w1 = mul(l[1], inv_w_of(1));
+    llvm::Value* w2 = mul(l[2], inv_w_of(2));
+    llvm::Value* inv_w = add(add(mul(l[0], inv_w_of(0)), w1), w2);
     llvm::Value* nonzero = b_.CreateFCmpUNE(inv_w, splat_f(0.0f));
     llvm::Value* r = b_.CreateSelect(nonzero, b_.CreateFDiv(splat_f(1.0f), inv_w), splat_f(0.0f));
-    return {b_.CreateSelect(nonzero, b_.CreateFMul(w1, r), l[1]), b_.CreateSelect(nonzero, b_.CreateFMul(w2, r), l[2]),
-            inv_w};
+    return {b_.CreateSelect(nonzero, mul(w1, r), l[1]), b_.CreateSelect(nonzero, mul(w2, r), l[2]), inv_w};
 }
 
 // One input register's four lanes (FragmentStage::interpolate and builtin_input).
 llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, const Weights& w) {
     switch (in.source) {
     case InputSource::Varying: {
-        llvm::Value* a[3];
-        for (int i = 0; i < 3; ++i) {
-            llvm::Value* attrs = b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs));
-            a[i] = load_f(attrs, uint64_t(in.index) * 4);
-        }
+        std::array<llvm::Value*, 3> a = attributes(q, in.index);
         llvm::Value* d1 = splat(b_.CreateFSub(a[1], a[0]));
         llvm::Value* d2 = splat(b_.CreateFSub(a[2], a[0]));
-        return b_.CreateFAdd(b_.CreateFAdd(splat(a[0]), b_.CreateFMul(w.p1, d1)), b_.CreateFMul(w.p2, d2));
+        return add(add(splat(a[0]), mul(w.p1, d1)), mul(w.p2, d2));
     }
     case InputSource::FragCoord:
         switch (in.index) {
@@ -269,13 +317,27 @@ void PipelineEmitter::define_inputs() {
     std::vector<llvm::Value*> regs;
     for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), i * 8)));
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
-        // All values before the first store: the stores could alias the
-        // primitive for all LLVM knows, which would reload its fields.
-        Weights w = weights(q);
-        std::vector<llvm::Value*> values;
-        for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
-        for (size_t i = 0; i < values.size(); ++i)
-            b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index, 2)), llvm::Align(16));
+        // Two versions: the one that orders NaNs (add, mul) runs only for
+        // primitives with NaNs in their inputs.
+        llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
+        llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
+        llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
+        b_.CreateCondBr(nan_inputs(q), strict, plain);
+        for (llvm::BasicBlock* block : {plain, strict}) {
+            b_.SetInsertPoint(block);
+            strict_ = block == strict;
+            // All values before the first store: the stores could alias the
+            // primitive for all LLVM knows, which would reload its fields.
+            Weights w = weights(q);
+            std::vector<llvm::Value*> values;
+            for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
+            for (size_t i = 0; i < values.size(); ++i)
+                b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index, 2)),
+                                      llvm::Align(16));
+            b_.CreateBr(stored);
+        }
+        strict_ = false;
+        b_.SetInsertPoint(stored);
     });
     b_.CreateRetVoid();
 }

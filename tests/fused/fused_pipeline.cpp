@@ -23,7 +23,10 @@ namespace {
 
 const char* kVs = R"(
 varying vec3 position;
+varying float signed_nan;
 void main() {
+    float nan = sqrt(-1.0 - gl_Color.g);
+    signed_nan = gl_Color.r > 0.5 ? nan : -nan;
     gl_Position = gl_Vertex;
     gl_FrontColor = gl_Color;
     gl_BackColor = gl_Color.bgra;
@@ -59,6 +62,9 @@ void main() {
     gl_FragDepth = gl_Color.r < 0.1 ? nan : gl_Color.r * 1.4 - 0.2;
     gl_FragColor = vec4(gl_Color.gb, nan, 1.0);
 })"},
+    {"NaNs of both signs", R"(
+varying float signed_nan;
+void main() { gl_FragColor = vec4(signed_nan, -signed_nan, 0.5, 1.0); })"},
     {"depth only", "void main() { if (gl_Color.r < 0.4) discard; gl_FragDepth = gl_Color.g; }"},
     {"gl_PointCoord", "#version 120\nvoid main() { gl_FragColor = vec4(gl_PointCoord, gl_Color.b, 1.0); }"},
 };
@@ -201,7 +207,8 @@ TEST_CASE("the fused comparisons are not vacuous", "[fused]") {
     GLState gl;
     gl.depth_test = true;
     for (const Shader& shader : kShaders) {
-        if (std::string(shader.name) == "depth only") continue;
+        // Nothing to see in RGBA8: the depth only shader's colour, NaN's (0).
+        if (std::string(shader.name) == "depth only" || std::string(shader.name) == "NaNs of both signs") continue;
         INFO(shader.name);
         Program p = compile(Backend::Jit, shader.fs);
         CHECK(distinct_colors(render(p, Primitive::Triangles, g, gl, false).fb) > 8u);
