@@ -300,7 +300,8 @@ void FragmentStage::interpolate(uint32_t attr, const Weights& w, Lanes& v) const
         const FsPrimitive& prim = *quad_prim_[size_t(q)];
         float a0 = prim.v[0].attrs[attr];
         float d1 = prim.v[1].attrs[attr] - a0, d2 = prim.v[2].attrs[attr] - a0;
-        for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = add(add(a0, mul(w.p1[lane], d1)), mul(w.p2[lane], d2));
+        for (int lane = q * 4; lane < q * 4 + 4; ++lane)
+            v[size_t(lane)] = add(add(a0, mul(w.p1[lane], d1)), mul(w.p2[lane], d2));
     }
 }
 

@@ -35,7 +35,6 @@ public:
         i64_ = b_.getInt64Ty();
         f32_ = b_.getFloatTy();
         v4f_ = llvm::FixedVectorType::get(f32_, 4);
-        v4i_ = llvm::FixedVectorType::get(i32_, 4);
         ptr_ = llvm::PointerType::getUnqual(context);
     }
 
@@ -115,7 +114,7 @@ private:
     const PipelineKey& key_;
     const PrimitiveLayout& layout_;
     llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
-    llvm::FixedVectorType *v4f_, *v4i_;
+    llvm::FixedVectorType* v4f_;
     // Per function being defined.
     llvm::Function* fn_ = nullptr;
     struct {
@@ -176,7 +175,8 @@ llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
 
 std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t index) {
     std::array<llvm::Value*, 3> a;
-    for (int i = 0; i < 3; ++i) a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs)), uint64_t(index) * 4);
+    for (int i = 0; i < 3; ++i)
+        a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs)), uint64_t(index) * 4);
     return a;
 }
 
@@ -220,7 +220,8 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
     case InputSource::FrontFacing: {
         llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, layout_.front)), b_.getInt8(0));
         llvm::Value* word = in.is_bool ? b_.CreateZExt(front, i32_)
-                                       : b_.CreateSelect(front, llvm::ConstantFP::get(f32_, 1.0), llvm::ConstantFP::get(f32_, 0.0));
+                                       : b_.CreateSelect(front, llvm::ConstantFP::get(f32_, 1.0),
+                                                         llvm::ConstantFP::get(f32_, 0.0));
         return splat(word);
     }
     case InputSource::PointCoord: {
@@ -229,7 +230,8 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
         llvm::Value* centre = splat(load_f(q.prim, layout_.point_center + (in.index == 0 ? 0 : 4)));
         llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, v4f_), splat_f(0.5f));
         llvm::Value* offset = b_.CreateFDiv(b_.CreateFSub(pixel, centre), size);
-        llvm::Value* value = in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
+        llvm::Value* value =
+            in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
         return b_.CreateSelect(is_point, value, splat_f(0.0f));
     }
     case InputSource::Zero: break;
