@@ -41,13 +41,29 @@ inline float ftz(float a) { return std::fabs(a) < 1.17549435e-38f ? std::copysig
 inline double ftz(double a) { return a; }
 
 // T is float, or double in Precision::Reference (ir/alu_eval.h).
+//
+// `r`, an a + b or a * b, with a's NaN when a is one. x86 returns the first
+// source operand's NaN when both operands are NaNs, but compilers commute +
+// and * freely (GCC in the interpreter's kernels, differently per ISA; LLVM
+// in the JIT), so those ops say which NaN they return: a + a is a's NaN,
+// quieted, in either order. A single NaN operand passes through as before.
+// (The passes still treat + and * as commutative: ir/copyprop.cpp,
+// ir/fuse_mad.cpp; that may pick the other of two NaNs, the same for both
+// backends, which run the same IR.)
+template <class T>
+T a_nan_first(T a, T r) { return a != a ? a + a : r; }
+template <class T>
+T glsl_mad(T a, T b, T c) {
+    const T p = a_nan_first(a, a * b);
+    return a_nan_first(p, p + c);
+}
 template <class T>
 T glsl_sign(T a) { return a > T(0) ? T(1) : (a < T(0) ? T(-1) : T(0)); }
 template <class T>
 T glsl_fract(T a) { return a - std::floor(a); }
 // GLSL 1.10 §8.3: mod(x, y) = x - y * floor(x / y).
 template <class T>
-T glsl_mod(T a, T b) { return a - b * std::floor(a / b); }
+T glsl_mod(T a, T b) { return a - a_nan_first(b, b * std::floor(a / b)); }
 
 inline int32_t wrap_add(int32_t a, int32_t b) {
     return static_cast<int32_t>(static_cast<uint32_t>(a) + static_cast<uint32_t>(b));

@@ -3,6 +3,8 @@
 
 #include <system_error>
 
+#include <fmt/format.h>
+
 #include "runtime/backend_cache.h"
 #include "runtime/fragment_pipeline.h"
 #include "runtime/interp_kernels.h"
@@ -34,6 +36,16 @@ double Program::jit_compile_seconds() const {
 }  // namespace glslrun
 
 namespace glslrun::rt {
+
+std::string RunLimits::loop_cap_message() const {
+    return fmt::format("loop exceeded {} iterations", max_loop_iterations);
+}
+
+std::string RunLimits::instructions_message() const {
+    return fmt::format("the shader executed more than {} instructions in one batch (calls that multiply, or a loop "
+                       "too long)",
+                       max_instructions);
+}
 
 namespace {
 

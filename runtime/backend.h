@@ -44,15 +44,22 @@ struct RunError {
     int line = 0;
 };
 
-// The work one run() may do before it fails with a RunError (ExecOptions).
-// The JIT honours the loop cap only (docs/limits.md).
+// The work one run() may do before it fails with a RunError (ExecOptions),
+// honoured alike by both backends (docs/limits.md): loop iterations, and
+// instructions charged per block as it is entered, with `cancel` polled
+// whenever the count passes a multiple of kCancelPoll.
 struct RunLimits {
+    static constexpr uint64_t kCancelPoll = 1u << 16;
     uint64_t max_loop_iterations = ExecOptions{}.max_loop_iterations;
     uint64_t max_instructions = ExecOptions{}.max_instructions;
     const std::atomic<bool>* cancel = nullptr;
     RunLimits(uint64_t loop_iterations) : max_loop_iterations(loop_iterations) {}  // the tests' loop cap alone
     explicit RunLimits(const ExecOptions& o)
         : max_loop_iterations(o.max_loop_iterations), max_instructions(o.max_instructions), cancel(o.cancel) {}
+    // The RunError messages of the three ways to stop.
+    std::string loop_cap_message() const;
+    std::string instructions_message() const;
+    static constexpr const char* kCancelledMessage = "cancelled: the time limit ran out";
 };
 
 // What an executor needs of the draw. `uniforms` (the program's store, one

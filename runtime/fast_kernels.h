@@ -43,7 +43,7 @@ GLSLRUN_FAST_LANE(frsqrt, 1, math::fast::rsqrt(a))
 // A square root read only as a divisor (ir/sqrt_divisor.cpp): its register
 // holds 1/sqrt(a) in Fast, and the divisions by it are multiplies.
 GLSLRUN_FAST_LANE(fsqrt_divisor, 1, math::fast::rsqrt(a))
-GLSLRUN_FAST_LANE(fdiv_by_sqrt, 2, a * b)
+GLSLRUN_FAST_LANE(fdiv_by_sqrt, 2, ir::a_nan_first(a, a * b))
 GLSLRUN_FAST_LANE(fexp, 1, math::fast::exp(ir::ftz(a)))
 GLSLRUN_FAST_LANE(fexp2, 1, math::fast::exp2(ir::ftz(a)))
 GLSLRUN_FAST_LANE(flog, 1, math::fast::log(ir::ftz(a)))

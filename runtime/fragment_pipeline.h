@@ -61,7 +61,7 @@ struct PipelineInput {
 struct PipelineKey {
     std::vector<PipelineInput> inputs;  // per input register, in the order the fragment stage passes them
     uint32_t color_channels = 0;        // components of the colour output (0: none written)
-    bool float_color = false;           // float storage, else RGBA8 (rounded to n/255)
+    bool float_color = false;           // float storage, else RGBA8 (clamped, rounded to n/255)
     bool depth_output = false;          // gl_FragDepth written
     bool depth_test = false, depth_write = false, early_depth = false;
     CompareFunc depth_func = CompareFunc::Less;
@@ -81,10 +81,11 @@ struct QuadBatch {
     int32_t quads = 0;
 };
 
-// The buffers written: depth and colour (RGBA, 4 floats per pixel), row-major.
+// The buffers written, rows bottom up: depth, and colour 0 (RGBA: 4 bytes a
+// pixel, or 4 floats with PipelineKey::float_color).
 struct PipelineTarget {
     float* depth = nullptr;
-    float* color = nullptr;
+    void* color = nullptr;
     int32_t width = 0;
 };
 

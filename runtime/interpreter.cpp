@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -46,7 +45,7 @@ struct Core {
     // Instructions of the blocks entered in this run; the cancel flag is
     // polled when the count passes a multiple of kCancelPoll.
     uint64_t instructions_left = 0, next_cancel_poll = 0;
-    static constexpr uint64_t kCancelPoll = 1u << 16;
+    static constexpr uint64_t kCancelPoll = RunLimits::kCancelPoll;
     // One extra register of zeros backs operands that an op does not read.
     AlignedWords<W> file;
     Machine<W> machine;
@@ -231,14 +230,11 @@ struct Core {
 
     bool charge(uint64_t instructions) {
         if (instructions > instructions_left)
-            return fail(fmt::format("the shader executed more than {} instructions in one batch (calls that multiply, "
-                                    "or a loop too long)",
-                                    limits.max_instructions),
-                        0);
+            return fail(limits.instructions_message(), 0);
         instructions_left -= instructions;
         if (limits.cancel && instructions_left < next_cancel_poll) {
             next_cancel_poll = instructions_left > kCancelPoll ? instructions_left - kCancelPoll : 0;
-            if (limits.cancel->load(std::memory_order_relaxed)) return fail("cancelled: the time limit ran out", 0);
+            if (limits.cancel->load(std::memory_order_relaxed)) return fail(RunLimits::kCancelledMessage, 0);
         }
         return true;
     }
@@ -263,7 +259,7 @@ struct Core {
         for ([[maybe_unused]] uint64_t iteration = 0;; ++iteration) {
             if constexpr (kTraced) hook->loop_iteration(*node, iteration, mask.active());
             if (loop_iterations_left-- == 0)
-                return fail(fmt::format("loop exceeded {} iterations", limits.max_loop_iterations), s.line);
+                return fail(limits.loop_cap_message(), s.line);
             if (!run_block(s.body_begin, s.body_end)) return false;
             mask.loop_continue_block(frame);
             if (mask.any() && !run_block(s.alt_begin, s.alt_end)) return false;

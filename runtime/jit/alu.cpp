@@ -124,10 +124,15 @@ bool Emitter::emit_native(const ir::Instr& in, llvm::Value** result) {
 
 llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c) {
     auto floor = [&](llvm::Value* x) { return call_intrinsic(llvm::Intrinsic::floor, {x}); };
+    // ir::a_nan_first: + and * return a's NaN when a is one.
+    auto nan_first = [&](llvm::Value* x, llvm::Value* r) {
+        return b_.CreateSelect(b_.CreateFCmpUNO(x, x), b_.CreateFAdd(x, x), r);
+    };
+    auto product = [&] { return nan_first(a, b_.CreateFMul(a, b)); };
     switch (op) {
-    case Op::fadd: return b_.CreateFAdd(a, b);
+    case Op::fadd: return nan_first(a, b_.CreateFAdd(a, b));
     case Op::fsub: return b_.CreateFSub(a, b);
-    case Op::fmul: return b_.CreateFMul(a, b);
+    case Op::fmul: return product();
     case Op::fdiv: case Op::fdiv_by_sqrt: return b_.CreateFDiv(a, b);
     case Op::fneg: return ftz(b_.CreateFNeg(a));
     case Op::fabs: return ftz(call_intrinsic(llvm::Intrinsic::fabs, {a}));
@@ -137,14 +142,17 @@ llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm:
     case Op::ffloor: return floor(ftz(a));
     case Op::fceil: return call_intrinsic(llvm::Intrinsic::ceil, {ftz(a)});
     case Op::ffract: return b_.CreateFSub(a, floor(a));
-    case Op::fmod: return b_.CreateFSub(a, b_.CreateFMul(b, floor(b_.CreateFDiv(a, b))));
+    case Op::fmod: return b_.CreateFSub(a, nan_first(b, b_.CreateFMul(b, floor(b_.CreateFDiv(a, b)))));
     case Op::fmin: return b_.CreateSelect(b_.CreateOr(b_.CreateFCmpOLT(a, b), b_.CreateFCmpUNE(b, b)), a, b);
     case Op::fmax: return b_.CreateSelect(b_.CreateOr(b_.CreateFCmpOLT(b, a), b_.CreateFCmpUNE(b, b)), a, b);
     case Op::fsqrt: case Op::fsqrt_divisor: return call_intrinsic(llvm::Intrinsic::sqrt, {a});
     case Op::frsqrt: return b_.CreateFDiv(splat_f(1.0f), call_intrinsic(llvm::Intrinsic::sqrt, {a}));
-    case Op::fmad: return b_.CreateFAdd(b_.CreateFMul(a, b), c);
-    case Op::fmsub: return b_.CreateFSub(b_.CreateFMul(a, b), c);
-    case Op::fnmadd: return b_.CreateFSub(c, b_.CreateFMul(a, b));
+    case Op::fmad: {
+        llvm::Value* p = product();
+        return nan_first(p, b_.CreateFAdd(p, c));
+    }
+    case Op::fmsub: return b_.CreateFSub(product(), c);
+    case Op::fnmadd: return b_.CreateFSub(c, product());
     default: return nullptr;
     }
 }

@@ -43,6 +43,10 @@ private:
     void emit_loop(const ir::Node& node);
     void emit_call(const ir::Block& body);
     void emit_failure(Failure failure, int line);
+    void begin_budget();
+    void end_budget();
+    void charge(uint64_t instructions);
+    llvm::Value* poll_below(llvm::Value* left);
     llvm::BasicBlock* new_block(const char* name);
 
     // --- alu.cpp: one instruction
@@ -95,6 +99,10 @@ private:
     llvm::AllocaInst* cont_ = nullptr;
     llvm::AllocaInst* ret_ = nullptr;
     llvm::AllocaInst* loop_left_ = nullptr;
+    llvm::AllocaInst* instructions_left_ = nullptr;
+    llvm::AllocaInst* next_cancel_poll_ = nullptr;
+    llvm::BasicBlock* over_budget_ = nullptr;  // the failures that charge() branches to
+    llvm::BasicBlock* cancelled_ = nullptr;
 };
 
 }  // namespace glslrun::rt::jit

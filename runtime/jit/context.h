@@ -2,6 +2,7 @@
 // generated function reads and writes these fields by their offsets.
 #pragma once
 #include <cstddef>
+#include <atomic>
 #include <cstdint>
 
 #include "runtime/interp_kernels.h"
@@ -9,10 +10,15 @@
 namespace glslrun::rt::jit {
 
 // Why a run stopped early (the generated function's return value).
-enum class Failure : int32_t { None = 0, LoopCap = 1, MissingFunction = 2 };
+enum class Failure : int32_t { None = 0, LoopCap = 1, MissingFunction = 2, Instructions = 3, Cancelled = 4 };
 
 struct Context {
     uint64_t max_loop_iterations = 0;  // read at entry
+    // The work budget, read at entry: instructions charged per block entered
+    // and the cancel flag polled every kCancelPoll of them, as the
+    // interpreter does (runtime/interpreter.cpp). `cancel` may be null.
+    uint64_t max_instructions = 0;
+    const std::atomic<bool>* cancel = nullptr;
     uint64_t alive = 0;                // written at exit: the lanes that did not discard
     int32_t error_line = 0;            // with a Failure
     // The call-outs run the interpreter's kernels over this machine (its
@@ -22,6 +28,8 @@ struct Context {
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
+inline constexpr size_t kMaxInstructionsOffset = offsetof(Context, max_instructions);
+inline constexpr size_t kCancelOffset = offsetof(Context, cancel);
 inline constexpr size_t kAliveOffset = offsetof(Context, alive);
 inline constexpr size_t kErrorLineOffset = offsetof(Context, error_line);
 

@@ -73,17 +73,69 @@ void Emitter::define(const std::string& name, const ir::Block& block) {
     for (llvm::AllocaInst* m : {brk_, cont_, ret_}) store_mask(m, b_.getInt64(0));
     b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kMaxLoopOffset)),
                    loop_left_);
+    begin_budget();
     llvm::BasicBlock* done = new_block("done");
     emit_block(block, done);
     b_.CreateBr(done);
     b_.SetInsertPoint(done);
     b_.CreateStore(load_mask(alive_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kAliveOffset));
     b_.CreateRet(b_.getInt32(int32_t(Failure::None)));
+    end_budget();
+}
+
+// Interpreter::run's budget: max_instructions left, and the first cancel
+// poll kCancelPoll below it (never, without a flag).
+void Emitter::begin_budget() {
+    instructions_left_ = b_.CreateAlloca(i64_, nullptr, "instructions_left");
+    next_cancel_poll_ = b_.CreateAlloca(i64_, nullptr, "next_cancel_poll");
+    llvm::Value* left = b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kMaxInstructionsOffset));
+    b_.CreateStore(left, instructions_left_);
+    llvm::Value* flag = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCancelOffset));
+    store_mask(next_cancel_poll_, b_.CreateSelect(b_.CreateIsNull(flag), b_.getInt64(0), poll_below(left)));
+    over_budget_ = new_block("over_budget");
+    cancelled_ = new_block("cancelled");
+}
+
+llvm::Value* Emitter::poll_below(llvm::Value* left) {
+    constexpr uint64_t poll = RunLimits::kCancelPoll;
+    return b_.CreateSelect(b_.CreateICmpUGT(left, b_.getInt64(poll)), b_.CreateSub(left, b_.getInt64(poll)),
+                           b_.getInt64(0));
+}
+
+// The failure blocks that charge() branches to, shared by the function.
+void Emitter::end_budget() {
+    for (auto [block, failure] : {std::pair{over_budget_, Failure::Instructions}, std::pair{cancelled_, Failure::Cancelled}}) {
+        b_.SetInsertPoint(block);
+        emit_failure(failure, 0);
+        b_.CreateUnreachable();
+    }
+}
+
+// Interpreter's charge(): a block of `instructions` nodes is entered.
+void Emitter::charge(uint64_t instructions) {
+    llvm::Value* left = load_mask(instructions_left_);
+    llvm::BasicBlock* charged = new_block("charged");
+    b_.CreateCondBr(b_.CreateICmpUGT(b_.getInt64(instructions), left), over_budget_, charged);
+    b_.SetInsertPoint(charged);
+    left = b_.CreateSub(left, b_.getInt64(instructions));
+    store_mask(instructions_left_, left);
+    // The count passed the next poll, which only a run with a flag has.
+    llvm::BasicBlock* poll = new_block("poll");
+    llvm::BasicBlock* polled = new_block("polled");
+    b_.CreateCondBr(b_.CreateICmpULT(left, load_mask(next_cancel_poll_)), poll, polled);
+    b_.SetInsertPoint(poll);
+    store_mask(next_cancel_poll_, poll_below(left));
+    llvm::Value* flag = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCancelOffset));
+    auto* set = b_.CreateLoad(b_.getInt8Ty(), flag);
+    set->setAtomic(llvm::AtomicOrdering::Monotonic);
+    b_.CreateCondBr(b_.CreateICmpNE(set, b_.getInt8(0)), cancelled_, polled);
+    b_.SetInsertPoint(polled);
 }
 
 // Leaves the block on `exit` when no lane is active, as run_block does.
 void Emitter::emit_block(const ir::Block& block, llvm::BasicBlock* exit) {
     branch_unless_active(exit);
+    if (!block.empty()) charge(block.size());
     for (const ir::Node& node : block) {
         if (!emit_node(node, exit)) {
             b_.CreateBr(exit);

@@ -17,7 +17,7 @@
 namespace glslrun::rt::jit {
 
 struct CompileStats {
-    double seconds = 0;  // LLVM: IR generation, optimization and machine code
+    double seconds = 0;  // LLVM's CPU time: IR generation, optimization and machine code
 };
 
 // Native code for `shader` in `precision` (Precise or Fast, with Fast's

@@ -1,16 +1,15 @@
-// The JIT's LLVM set-up: one ORC LLJIT per compiled shader (its code lives
-// as long as the program's cache keeps it), a target machine for the
-// baseline x86-64 ISA or AVX2 (x86-64-v3) chosen as the interpreter chooses
-// its kernels, never contracting a * b + c into an FMA; and the executor
-// that runs the generated functions over its own register file.
+// The JIT's LLVM set-up: one ORC LLJIT per process and vector ISA (the
+// baseline x86-64 or AVX2, x86-64-v3, chosen as the interpreter chooses its
+// kernels, never contracting a * b + c into an FMA), holding each compiled
+// shader's code as long as the program's cache keeps the shader; and the
+// executor that runs the generated functions over its own register file.
 #include "runtime/jit/jit.h"
 
-#include <chrono>
+#include <ctime>
 #include <cstdlib>
 #include <deque>
 #include <mutex>
 
-#include <fmt/format.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
@@ -76,6 +75,14 @@ private:
     std::vector<uint64_t> size_;
 };
 
+// The compiling thread's CPU time: LLVM's cost without the machine's load
+// or the wait for another compile.
+double thread_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+}
+
 bool jit_takes(const ir::Shader& shader) {
     ExpandedSize size(shader);
     const uint64_t body = size.of(shader.body), prologue = size.of(shader.prologue);
@@ -91,6 +98,50 @@ llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
     builder.getOptions().AllowFPOpFusion = llvm::FPOpFusion::Strict;
     return builder;
 }
+
+// LLVM's machinery for one vector ISA, made once per process at its first
+// compile (a target machine and an LLJIT with the process's symbols: about
+// 20 ms each time it was made per shader): every shader's module joins the
+// one LLJIT under names of its own, and its code goes when the shader does
+// (a ResourceTracker). Compiles take turns (`lock`): the target machine and
+// the LLJIT's single compiler are not for concurrent use; tiering compiles
+// in the background anyway.
+struct Engine {
+    std::mutex lock;
+    std::unique_ptr<llvm::TargetMachine> machine;  // for the optimization passes
+    std::unique_ptr<llvm::orc::LLJIT> jit;
+    uint64_t modules = 0;  // names them apart
+
+    static Engine* of(bool avx2) {
+        static Engine engines[2];
+        static std::once_flag made[2];
+        Engine& e = engines[avx2];
+        std::call_once(made[avx2], [&] { e.make(avx2); });
+        return e.jit ? &e : nullptr;
+    }
+
+private:
+    void make(bool avx2) {
+        initialise_llvm();
+        auto tm = target_for(avx2).createTargetMachine();
+        auto built = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
+        if (!tm || !built) {
+            if (!tm) llvm::consumeError(tm.takeError());
+            if (!built) llvm::consumeError(built.takeError());
+            return;
+        }
+        // The baseline ISA has no rounding instruction: floor and ceil call libm.
+        auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+            (*built)->getDataLayout().getGlobalPrefix());
+        if (!process) {
+            llvm::consumeError(process.takeError());
+            return;
+        }
+        (*built)->getMainJITDylib().addGenerator(std::move(*process));
+        machine = std::move(*tm);
+        jit = std::move(*built);
+    }
+};
 
 // A short function pipeline, without InstCombine: LLVM 15's InstCombine
 // rewrites select(c, x + y, x) as x + select(c, y, -0.0), which flushes a
@@ -126,7 +177,13 @@ namespace {
 
 class JitShader final : public CompiledShader {
 public:
-    std::unique_ptr<llvm::orc::LLJIT> jit;
+    ~JitShader() override {
+        if (!tracker) return;
+        std::lock_guard hold(engine->lock);
+        llvm::consumeError(tracker->remove());
+    }
+    Engine* engine = nullptr;
+    llvm::orc::ResourceTrackerSP tracker;  // this shader's code in the engine's LLJIT
     std::deque<CallOut> call_outs;  // the generated code points at these
     ShaderFn main = nullptr, prologue = nullptr;
     uint32_t reg_count = 0;
@@ -137,14 +194,17 @@ public:
 class JitExecutor final : public Executor {
 public:
     JitExecutor(const JitShader& code, const ExecParams& p)
-        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms) {
+        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms), limits_(p.limits) {
         ctx_.max_loop_iterations = p.limits.max_loop_iterations;
+        ctx_.max_instructions = UINT64_MAX;  // the prologue: straight-line code, as the interpreter's
         ctx_.machine.uniforms = p.uniforms;
         ctx_.machine.textures = p.textures;
         ctx_.machine.regs = regs_.data;
         ctx_.reg_count = code.reg_count;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
+        ctx_.max_instructions = limits_.max_instructions;
+        ctx_.cancel = limits_.cancel;
     }
     uint32_t* lanes(ir::Reg r) override {
         return regs_.data + size_t(r == ir::kNoReg || r >= code_.reg_count ? code_.reg_count : r) * kLanes;
@@ -155,9 +215,10 @@ public:
         if (failure == Failure::None) return true;
         if (error) {
             error->line = ctx_.error_line;
-            error->message = failure == Failure::LoopCap
-                                 ? fmt::format("loop exceeded {} iterations", ctx_.max_loop_iterations)
-                                 : "call to a missing function";
+            error->message = failure == Failure::LoopCap        ? limits_.loop_cap_message()
+                             : failure == Failure::Instructions ? limits_.instructions_message()
+                             : failure == Failure::Cancelled    ? RunLimits::kCancelledMessage
+                                                                : "call to a missing function";
         }
         return false;
     }
@@ -168,6 +229,7 @@ private:
     const JitShader& code_;
     AlignedWords<uint32_t> regs_;
     const uint32_t* uniforms_;
+    RunLimits limits_;
     Context ctx_;
 };
 
@@ -180,59 +242,47 @@ std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                         bool avx2, CompileStats* stats) {
     if (precision == Precision::Reference || !jit_takes(shader)) return nullptr;
-    const auto start = std::chrono::steady_clock::now();
-    initialise_llvm();
-    auto code = std::make_unique<JitShader>();
+    const double start = thread_cpu_seconds();
+    Engine* engine = Engine::of(avx2);
+    if (!engine) return nullptr;
+    auto code = std::make_unique<JitShader>();  // before the lock: its destructor takes it
+    std::lock_guard hold(engine->lock);
     code->reg_count = uint32_t(shader.regs.size());
 
     auto context = std::make_unique<llvm::LLVMContext>();
     auto module = std::make_unique<llvm::Module>("shader", *context);
-    auto machine = target_for(avx2).createTargetMachine();
-    if (!machine) {
-        llvm::consumeError(machine.takeError());
-        return nullptr;
-    }
-    module->setDataLayout((*machine)->createDataLayout());
-    module->setTargetTriple((*machine)->getTargetTriple().str());
+    module->setDataLayout(engine->machine->createDataLayout());
+    module->setTargetTriple(engine->machine->getTargetTriple().str());
+    const std::string suffix = "_" + std::to_string(engine->modules++);
     {
         Emitter emitter(*context, *module, shader, precision, fast_ops, avx2, code->call_outs);
-        emitter.define("glslrun_main", shader.body);
-        emitter.define("glslrun_prologue", shader.prologue);
+        emitter.define("glslrun_main" + suffix, shader.body);
+        emitter.define("glslrun_prologue" + suffix, shader.prologue);
     }
     if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
     // GLSLRUN_JIT_DUMP=1 prints the module before and after optimization (a debugging aid).
     const bool dump = std::getenv("GLSLRUN_JIT_DUMP") != nullptr;
     if (dump) module->print(llvm::errs(), nullptr);
-    optimise(*module, **machine);
+    optimise(*module, *engine->machine);
     if (dump) module->print(llvm::errs(), nullptr);
 
-    auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
-    if (!jit) {
-        llvm::consumeError(jit.takeError());
-        return nullptr;
-    }
-    code->jit = std::move(*jit);
-    // The baseline ISA has no rounding instruction: floor and ceil call libm.
-    auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
-        code->jit->getDataLayout().getGlobalPrefix());
-    if (!process) {
-        llvm::consumeError(process.takeError());
-        return nullptr;
-    }
-    code->jit->getMainJITDylib().addGenerator(std::move(*process));
-    if (auto err = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
+    llvm::orc::JITDylib& dylib = engine->jit->getMainJITDylib();
+    code->engine = engine;
+    code->tracker = dylib.createResourceTracker();
+    if (auto err = engine->jit->addIRModule(code->tracker,
+                                            llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
         llvm::consumeError(std::move(err));
         return nullptr;
     }
     for (auto [name, fn] : {std::pair{"glslrun_main", &code->main}, std::pair{"glslrun_prologue", &code->prologue}}) {
-        auto symbol = code->jit->lookup(name);
+        auto symbol = engine->jit->lookup(name + suffix);
         if (!symbol) {
             llvm::consumeError(symbol.takeError());
             return nullptr;
         }
         *fn = symbol->toPtr<ShaderFn>();
     }
-    if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (stats) stats->seconds = thread_cpu_seconds() - start;
     return code;
 }
 

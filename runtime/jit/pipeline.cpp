@@ -363,18 +363,22 @@ void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm
     }
     b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bit), written_);
     if (key_.color_channels > 0) {
-        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, target_.color, b_.CreateShl(pixel, 2));
-        llvm::Value* texel = llvm::PoisonValue::get(v4f_);
-        for (unsigned k = 0; k < 4; ++k)
-            texel = b_.CreateInsertElement(texel, b_.CreateExtractElement(v.rgba[k], uint64_t(i)), uint64_t(k));
-        b_.CreateAlignedStore(texel, dst, llvm::Align(4));
+        // One pixel's channels: 4 floats, or 4 bytes.
+        llvm::Type* channel = key_.float_color ? f32_ : i8_;
+        llvm::Value* dst = b_.CreateInBoundsGEP(channel, target_.color, b_.CreateShl(pixel, 2));
+        llvm::Value* texel = llvm::PoisonValue::get(llvm::FixedVectorType::get(channel, 4));
+        for (unsigned k = 0; k < 4; ++k) {
+            llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
+            texel = b_.CreateInsertElement(texel, key_.float_color ? c : b_.CreateTrunc(c, i8_), uint64_t(k));
+        }
+        b_.CreateAlignedStore(texel, dst, llvm::Align(key_.float_color ? 4 : 1));
     }
     b_.CreateBr(next);
     b_.SetInsertPoint(next);
 }
 
 // A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)
-// and colour as stored (RGBA8: raster::quantize_unorm8).
+// and colour as stored (RGBA8: raster::to_unorm8's steps, as 32-bit integers).
 PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const std::vector<llvm::Value*>& regs,
                                                          llvm::Value* index) {
     auto lanes = [&](uint32_t r) {
@@ -395,7 +399,7 @@ PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const st
             c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
             c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
             llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
-            c = b_.CreateFDiv(b_.CreateFSub(rounded, splat_f(kRound)), splat_f(255.0f));
+            c = b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), llvm::FixedVectorType::get(i32_, 4));
         }
         v.rgba[k] = c;
     }

@@ -25,7 +25,7 @@ TEST_CASE("hardening: a framebuffer beyond the limits is an Error, not bad_alloc
     CHECK(Framebuffer::create(16384, 4).ok());
     Framebuffer refused(100000, 100000);  // the constructor allocates nothing; draw() refuses it
     CHECK(refused.width == 0);
-    CHECK(refused.color.empty());
+    CHECK(refused.color_data<uint8_t>().empty());
     Program p = compile(kVs, kPassFs);
     auto st = draw(p, GLState{}, refused, Primitive::Triangles, {big_triangle()}, 3);
     REQUIRE_FALSE(st.ok());
@@ -125,4 +125,30 @@ TEST_CASE("hardening: calls that multiply stop at the instruction budget, and th
     st = draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3);
     REQUIRE_FALSE(st.ok());
     CHECK_THAT(st.error().str(), Catch::Contains("cancelled"));
+}
+
+TEST_CASE("hardening: both backends stop a long loop at the instruction budget and at the cancel flag",
+          "[api][hardening]") {
+    Program p = compile(kVs, "uniform int n; void main() { float s = 0.0;"
+                             " for (int i = 0; i < n; ++i) s += float(i) * 0.5; gl_FragColor = vec4(s); }\n");
+    REQUIRE(p.set_uniform("n", std::array{1 << 30}).ok());
+    p.exec.max_loop_iterations = UINT64_MAX;
+    p.exec.threads = 1;
+    Framebuffer fb(4, 4);
+    for (Backend backend : {Backend::Interp, Backend::Jit}) {
+        INFO(backend_name(backend));
+        p.exec.backend = backend;
+        p.exec.max_instructions = 1u << 20;
+        p.exec.cancel = nullptr;
+        auto st = draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3);
+        REQUIRE_FALSE(st.ok());
+        CHECK_THAT(st.error().str(), Catch::Contains("more than 1048576 instructions"));
+        std::atomic<bool> cancel{true};
+        p.exec.max_instructions = UINT64_MAX;
+        p.exec.cancel = &cancel;
+        st = draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3);
+        REQUIRE_FALSE(st.ok());
+        CHECK_THAT(st.error().str(), Catch::Contains("cancelled"));
+    }
+    CHECK((p.jit_compile_seconds() > 0) == jit_available());  // the JIT's code ran, not the interpreter's
 }

@@ -12,6 +12,8 @@
 #include <cstring>
 #include <random>
 #include <set>
+#include <span>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -129,14 +131,23 @@ Frame render(Program& p, Primitive prim, const Geometry& g, const GLState& secon
     return f;
 }
 
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+template <class T>
+bool same_bits(std::span<const T> a, std::span<const T> b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
+}
+
+bool same_colors(const Framebuffer& a, const Framebuffer& b) {
+    return a.float_color() == b.float_color() && same_bits(a.color_data<float>(), b.color_data<float>()) &&
+           same_bits(a.color_data<uint8_t>(), b.color_data<uint8_t>());
 }
 
 size_t distinct_colors(const Framebuffer& fb) {
-    std::set<std::vector<float>> seen;
-    for (size_t i = 0; i < fb.color.size() && seen.size() < 16; i += 4)
-        seen.insert({fb.color.begin() + long(i), fb.color.begin() + long(i + 4)});
+    std::set<std::array<float, 4>> seen;
+    for (int y = 0; y < fb.height && seen.size() < 16; ++y)
+        for (int x = 0; x < fb.width; ++x) {
+            glm::vec4 c = fb.pixel(x, y);
+            seen.insert({c.r, c.g, c.b, c.a});
+        }
     return seen.size();
 }
 
@@ -151,8 +162,8 @@ void check_fused_matches(Programs& p, Primitive prim, const Geometry& g, const G
     CHECK(oracle.stats.fragments_shaded > 200u);
     CHECK(fused.stats.fragments_shaded == oracle.stats.fragments_shaded);
     CHECK(fused.stats.fragments_written == oracle.stats.fragments_written);
-    CHECK(same_bits(fused.fb.color, oracle.fb.color));
-    CHECK(same_bits(fused.fb.depth, oracle.fb.depth));
+    CHECK(same_colors(fused.fb, oracle.fb));
+    CHECK(same_bits(std::span<const float>(fused.fb.depth), std::span<const float>(oracle.fb.depth)));
 }
 
 const GLState::DepthFunc kFuncs[] = {GLState::DepthFunc::Never,   GLState::DepthFunc::Less,
