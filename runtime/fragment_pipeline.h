@@ -41,6 +41,11 @@ struct PrimitiveLayout {
     uint32_t front = 0;       // bool
     uint32_t count = 0;       // int32: 1 point, 2 line, 3 triangle
     uint32_t point_center = 0, point_size = 0;  // two floats, a float
+    auto tie() const {
+        return std::tie(vertices, vertex_size, vertex_inv_w, vertex_attrs, weights, depth, ox, oy, front, count,
+                        point_center, point_size);
+    }
+    bool operator<(const PrimitiveLayout& o) const { return tie() < o.tie(); }
 };
 
 // Where a shader input component comes from.
@@ -105,9 +110,10 @@ struct FragmentPipeline {
     OutputsFn outputs = nullptr;
 };
 
-// The pipelines of one Program, by key, compiled once and shared by the
-// workers and later draws. Tiering as for shaders (runtime/backend_cache.h):
-// without `wait`, null until a background compile is done.
+// The pipelines of one Program, by key: its workers and later draws share
+// them, and programs with the same key share their code (compiled once per
+// process). Tiering as for shaders (runtime/backend_cache.h): without
+// `wait`, null until a background compile is done.
 class PipelineCache {
 public:
     PipelineCache() = default;
@@ -117,13 +123,14 @@ public:
 
     // Null where the JIT is not built in or declined the key.
     const FragmentPipeline* get(const PipelineKey& key, const PrimitiveLayout& layout, bool wait);
-    // Seconds LLVM spent on this program's pipelines so far.
+    // Seconds LLVM spent on the pipelines this program compiled (not those
+    // another program had compiled) so far.
     double compile_seconds() const;
 
 private:
     mutable std::mutex mutex_;
     std::condition_variable compiled_;
-    std::map<PipelineKey, std::unique_ptr<FragmentPipeline>> pipelines_;
+    std::map<PipelineKey, const FragmentPipeline*> pipelines_;
     std::map<PipelineKey, bool> done_;  // compiled (the pipeline may still be null: declined)
     std::vector<std::thread> threads_;
     double compile_seconds_ = 0;

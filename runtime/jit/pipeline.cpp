@@ -5,8 +5,9 @@
 // vector; the writes go lane by lane, in lane order, as two quads of a batch
 // may cover the same pixel.
 #include <array>
-#include <chrono>
 #include <functional>
+#include <mutex>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -27,9 +28,11 @@ constexpr int kDy[4] = {0, 0, 1, 1};
 
 class PipelineEmitter {
 public:
+    // The functions are named glslrun_quad_depth, glslrun_inputs and
+    // glslrun_outputs, followed by `suffix`.
     PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const PipelineKey& key,
-                    const PrimitiveLayout& layout)
-        : module_(module), b_(context), key_(key), layout_(layout) {
+                    const PrimitiveLayout& layout, std::string suffix)
+        : module_(module), b_(context), key_(key), layout_(layout), suffix_(std::move(suffix)) {
         i8_ = b_.getInt8Ty();
         i32_ = b_.getInt32Ty();
         i64_ = b_.getInt64Ty();
@@ -113,6 +116,7 @@ private:
     llvm::IRBuilder<> b_;
     const PipelineKey& key_;
     const PrimitiveLayout& layout_;
+    std::string suffix_;
     llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
     llvm::FixedVectorType* v4f_;
     // Per function being defined.
@@ -126,7 +130,7 @@ private:
 
 llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
     auto* type = llvm::FunctionType::get(result, params, false);
-    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name + suffix_, module_);
     fn_->addFnAttr(llvm::Attribute::NoUnwind);
     b_.SetInsertPoint(llvm::BasicBlock::Create(b_.getContext(), "entry", fn_));
     return fn_;
@@ -431,57 +435,59 @@ void PipelineEmitter::define_outputs() {
     b_.CreateRet(b_.CreateLoad(i64_, written_));
 }
 
+// The pipeline's code in the process's LLJIT (engine.h), removed with it.
 class CompiledPipeline final : public FragmentPipeline {
 public:
-    std::unique_ptr<llvm::orc::LLJIT> jit;
+    ~CompiledPipeline() override {
+        if (!tracker) return;
+        std::lock_guard hold(engine->lock);
+        llvm::consumeError(tracker->remove());
+    }
+    Engine* engine = nullptr;
+    llvm::orc::ResourceTrackerSP tracker;
 };
 
 }  // namespace
 
 std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
                                                    double* seconds) {
-    const auto start = std::chrono::steady_clock::now();
-    initialise_llvm();
+    const double start = thread_cpu_seconds();
+    Engine* engine = Engine::of(key.avx2);
+    if (!engine) return nullptr;
+    auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
+    std::lock_guard hold(engine->lock);
     auto context = std::make_unique<llvm::LLVMContext>();
     auto module = std::make_unique<llvm::Module>("pipeline", *context);
-    auto machine = target_for(key.avx2).createTargetMachine();
-    if (!machine) {
-        llvm::consumeError(machine.takeError());
-        return nullptr;
-    }
-    module->setDataLayout((*machine)->createDataLayout());
-    module->setTargetTriple((*machine)->getTargetTriple().str());
+    module->setDataLayout(engine->machine->createDataLayout());
+    module->setTargetTriple(engine->machine->getTargetTriple().str());
+    const std::string suffix = "_" + std::to_string(engine->modules++);
     {
-        PipelineEmitter emitter(*context, *module, key, layout);
+        PipelineEmitter emitter(*context, *module, key, layout, suffix);
         if (key.early_depth) emitter.define_quad_depth();
         emitter.define_inputs();
         emitter.define_outputs();
     }
     if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
-    optimise(*module, **machine);
-    auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(key.avx2)).create();
-    if (!jit) {
-        llvm::consumeError(jit.takeError());
-        return nullptr;
-    }
-    auto code = std::make_unique<CompiledPipeline>();
-    code->jit = std::move(*jit);
-    if (auto err = code->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
+    optimise(*module, *engine->machine);
+    code->engine = engine;
+    code->tracker = engine->jit->getMainJITDylib().createResourceTracker();
+    if (auto err = engine->jit->addIRModule(code->tracker,
+                                            llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
         llvm::consumeError(std::move(err));
         return nullptr;
     }
     auto lookup = [&](const char* name) -> void* {
-        auto symbol = code->jit->lookup(name);
+        auto symbol = engine->jit->lookup(name + suffix);
         if (symbol) return symbol->toPtr<void*>();
         llvm::consumeError(symbol.takeError());
         return nullptr;
     };
-    code->quad_depth = key.early_depth ? reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"))
-                                       : nullptr;
+    if (key.early_depth)
+        code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"));
     code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(lookup("glslrun_inputs"));
     code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(lookup("glslrun_outputs"));
     if (!code->inputs || !code->outputs || (key.early_depth && !code->quad_depth)) return nullptr;
-    if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds) *seconds = thread_cpu_seconds() - start;
     return code;
 }
 

@@ -17,6 +17,7 @@
 #include "error_report_command.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
+#include "runtime/fragment_pipeline.h"
 #include "runtime/program_state.h"
 #include "scene/bench_report.h"
 #include "glslrun/scene/image_compare.h"
@@ -176,10 +177,11 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
     fmt::print("precision    {}\n", precision_name(prog.exec.precision));
     const Backend backend = effective_backend(prog.exec.backend, prog.exec.precision);
-    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms\n", backend_name(backend),
+    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms ({:.2f} of it fragment pipelines)\n",
+               backend_name(backend),
                backend == Backend::Jit && prog.exec.backend == Backend::Auto
                    ? " (auto: the interpreter until compiled)" : "",
-               prog.jit_compile_seconds() * 1e3);
+               prog.jit_compile_seconds() * 1e3, state_of(prog).pipelines->compile_seconds() * 1e3);
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     fmt::print("fragments    {} shaded, {} written; {} by the fused JIT pipeline, {} by the per-fragment path\n",
                s.fragments_shaded, s.fragments_written, s.fragments_fused, s.fragments_shaded - s.fragments_fused);
