@@ -173,7 +173,9 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
 // The fused pipeline where the shader runs JIT-compiled and the draw's
 // state is one it takes: the depth test (any function, either mask) and
 // plain stores into one colour buffer, no shader debugger. Null otherwise,
-// and under Backend::Auto until its background compile is done.
+// until the program has shaded enough fragments to pay for it
+// (rt::kPipelineAfterFragments), and under Backend::Auto until its
+// background compile is done.
 const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
     const FragmentOps& o = ops_;
     bool all_channels = o.color_mask == std::array<bool, 4>{true, true, true, true};
@@ -218,7 +220,7 @@ ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
     return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
 }
 
-FragmentStage::~FragmentStage() = default;
+FragmentStage::~FragmentStage() { state_of(program_).pipelines->count_unfused(shaded_ - fused_); }
 
 void FragmentStage::gather(const float* vs_vertex, const std::vector<uint32_t>& vs_offset, bool back,
                            float* dst) const {

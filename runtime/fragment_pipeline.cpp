@@ -37,6 +37,7 @@ PipelineCache::~PipelineCache() {
 
 const FragmentPipeline* PipelineCache::get(const PipelineKey& key, const PrimitiveLayout& layout, bool wait) {
 #ifdef GLSLRUN_HAVE_JIT
+    if (unfused_.load(std::memory_order_relaxed) < kPipelineAfterFragments) return nullptr;
     std::unique_lock lock(mutex_);
     auto compile = [this, key, layout] {
         double seconds = 0;

@@ -17,6 +17,7 @@
 // rasterizer's primitive is read through PrimitiveLayout's offsets (the
 // runtime does not know raster/'s types).
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <map>
@@ -110,6 +111,13 @@ struct FragmentPipeline {
     OutputsFn outputs = nullptr;
 };
 
+// A program's draws take the fused pipeline once it has shaded this many
+// fragments without it: a pipeline costs 8 to 15 ms of LLVM's time (thread
+// CPU, docs/performance.md), which it saves back over about a million
+// fragments (the 1080p spot frame: 400,000 fragments, 2 ms saved). Piglit's
+// programs, which draw a few small rectangles each, never compile one.
+inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
+
 // The pipelines of one Program, by key: its workers and later draws share
 // them, and programs with the same key share their code (compiled once per
 // process). Tiering as for shaders (runtime/backend_cache.h): without
@@ -121,8 +129,11 @@ public:
     PipelineCache& operator=(const PipelineCache&) = delete;
     ~PipelineCache();  // waits for the background compiles
 
-    // Null where the JIT is not built in or declined the key.
+    // Null where the JIT is not built in or declined the key, and until the
+    // program has shaded kPipelineAfterFragments fragments without one.
     const FragmentPipeline* get(const PipelineKey& key, const PrimitiveLayout& layout, bool wait);
+    // Counts fragments the program shaded without a pipeline.
+    void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
     // Seconds LLVM spent on the pipelines this program compiled (not those
     // another program had compiled) so far.
     double compile_seconds() const;
@@ -134,6 +145,7 @@ private:
     std::map<PipelineKey, bool> done_;  // compiled (the pipeline may still be null: declined)
     std::vector<std::thread> threads_;
     double compile_seconds_ = 0;
+    std::atomic<uint64_t> unfused_{0};
 };
 
 }  // namespace glslrun::rt
