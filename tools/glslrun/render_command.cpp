@@ -213,9 +213,11 @@ int compare_with(const scene::Image& actual, const RenderOptions& o) {
 
 // --bench N: N more frames into the same framebuffer, each timed whole
 // and per stage. The first frame (compile and first draw) is timed by render().
+// fused_fragments: the last frame's fragments that the fused JIT pipeline drew.
 Status bench_frames(Program& prog, const scene::Scene& scene, Framebuffer& fb, int frames,
                     scene::BenchReport& report) {
     report.stage_s = {{"vertex", {}}, {"raster", {}}, {"fragment", {}}};
+    uint64_t fused = 0;
     for (int i = 0; i < frames; ++i) {
         auto start = Clock::now();
         double cpu_start = scene::process_cpu_seconds();
@@ -226,7 +228,9 @@ Status bench_frames(Program& prog, const scene::Scene& scene, Framebuffer& fb, i
         report.stage_s[0].second.push_back(stats->vertex_seconds);
         report.stage_s[1].second.push_back(stats->raster_seconds);
         report.stage_s[2].second.push_back(stats->fragment_seconds);
+        fused = stats->fragments_fused;
     }
+    report.counts.push_back({"fused_fragments", fused});
     return Ok{};
 }
 
