@@ -177,14 +177,14 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
     fmt::print("precision    {}\n", precision_name(prog.exec.precision));
     const Backend backend = effective_backend(prog.exec.backend, prog.exec.precision);
-    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms ({:.2f} of it fragment pipelines)\n",
-               backend_name(backend),
+    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms\n", backend_name(backend),
                backend == Backend::Jit && prog.exec.backend == Backend::Auto
                    ? " (auto: the interpreter until compiled)" : "",
-               prog.jit_compile_seconds() * 1e3, state_of(prog).pipelines->compile_seconds() * 1e3);
+               prog.jit_compile_seconds() * 1e3);
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
-    fmt::print("fragments    {} shaded, {} written; {} by the fused JIT pipeline, {} by the per-fragment path\n",
-               s.fragments_shaded, s.fragments_written, s.fragments_fused, s.fragments_shaded - s.fragments_fused);
+    // The fused pipeline's fragments, and its share of LLVM's time above.
+    fmt::print("fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
+               s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
     fmt::print("built-in uniforms read   {}", builtin_values(prog, terminal_width()));
