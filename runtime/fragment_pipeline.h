@@ -42,11 +42,6 @@ struct PrimitiveLayout {
     uint32_t front = 0;       // bool
     uint32_t count = 0;       // int32: 1 point, 2 line, 3 triangle
     uint32_t point_center = 0, point_size = 0;  // two floats, a float
-    auto tie() const {
-        return std::tie(vertices, vertex_size, vertex_inv_w, vertex_attrs, weights, depth, ox, oy, front, count,
-                        point_center, point_size);
-    }
-    bool operator<(const PrimitiveLayout& o) const { return tie() < o.tie(); }
 };
 
 // Where a shader input component comes from.
@@ -118,10 +113,9 @@ struct FragmentPipeline {
 // programs, which draw a few small rectangles each, never compile one.
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
-// The pipelines of one Program, by key: its workers and later draws share
-// them, and programs with the same key share their code (compiled once per
-// process). Tiering as for shaders (runtime/backend_cache.h): without
-// `wait`, null until a background compile is done.
+// The pipelines of one Program, by key, compiled once and shared by its
+// workers and later draws. Tiering as for shaders (runtime/backend_cache.h):
+// without `wait`, null until a background compile is done.
 class PipelineCache {
 public:
     PipelineCache() = default;
@@ -134,14 +128,13 @@ public:
     const FragmentPipeline* get(const PipelineKey& key, const PrimitiveLayout& layout, bool wait);
     // Counts fragments the program shaded without a pipeline.
     void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
-    // Seconds LLVM spent on the pipelines this program compiled (not those
-    // another program had compiled) so far.
+    // Seconds LLVM spent on this program's pipelines so far.
     double compile_seconds() const;
 
 private:
     mutable std::mutex mutex_;
     std::condition_variable compiled_;
-    std::map<PipelineKey, const FragmentPipeline*> pipelines_;
+    std::map<PipelineKey, std::unique_ptr<FragmentPipeline>> pipelines_;
     std::map<PipelineKey, bool> done_;  // compiled (the pipeline may still be null: declined)
     std::vector<std::thread> threads_;
     double compile_seconds_ = 0;
