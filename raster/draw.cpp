@@ -479,6 +479,7 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     stats.fragment_seconds = seconds_since(fragment_start);
     stats.fragments_shaded = tiles.fragments_shaded;
     stats.fragments_written = tiles.fragments_written;
+    stats.fragments_fused = tiles.fragments_fused;
     if (!tiles.status) return tiles.status.error();
     return stats;
 }
@@ -515,6 +516,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
     triangles += o.triangles;
     fragments_shaded += o.fragments_shaded;
     fragments_written += o.fragments_written;
+    fragments_fused += o.fragments_fused;
     vertex_seconds += o.vertex_seconds;
     raster_seconds += o.raster_seconds;
     fragment_seconds += o.fragment_seconds;

@@ -3,10 +3,15 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
 
+#include "ir/scalar_ops.h"
 #include "raster/framebuffer.h"
 #include "runtime/execute.h"
+#include "runtime/interp_kernels.h"
+#include "runtime/program_state.h"
 
 namespace glslrun::raster {
 
@@ -34,8 +39,17 @@ const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initi
 
 Plane to_plane(double a, double b, double c) { return {float(a), float(b), float(c)}; }
 
-// A plane at a quad's pixels, x and y relative to its origin: the scalar (c + a x) + b y.
-QuadF plane_at(const Plane& p, QuadF x, QuadF y) { return p.c + p.a * x + p.b * y; }
+// a + b and a * b naming a's NaN (quieted) when a is one (ir::a_nan_first),
+// whatever order the compiler gives the operands: the fused pipeline
+// (runtime/jit/pipeline.cpp) computes the same expressions with the same rule.
+QuadF add(QuadF a, QuadF b) { return ir::a_nan_first(a, a + b); }
+QuadF mul(QuadF a, QuadF b) { return ir::a_nan_first(a, a * b); }
+QuadF splat(float v) { return QuadF{} + v; }
+
+// A plane at a quad's pixels, x and y relative to its origin: (c + a x) + b y.
+QuadF plane_at(const Plane& p, QuadF x, QuadF y) {
+    return add(add(splat(p.c), mul(splat(p.a), x)), mul(splat(p.b), y));
+}
 
 // Whole registers are copied, a constant size: lanes past the batch are not
 // live, so their values do not matter.
@@ -53,6 +67,25 @@ void load_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes)
         return;
     }
     for (int lane = 0; lane < lanes; ++lane) v[size_t(lane)] = exec::lane_as_float(in, kind, r, lane);
+}
+
+// Where the fused pipeline finds FsPrimitive's fields.
+rt::PrimitiveLayout primitive_layout() {
+    static_assert(std::is_standard_layout_v<FsPrimitive> && sizeof(Plane) == 3 * sizeof(float));
+    rt::PrimitiveLayout l;
+    l.vertices = offsetof(FsPrimitive, v);
+    l.vertex_size = sizeof(FsVertex);
+    l.vertex_inv_w = offsetof(FsVertex, inv_w);
+    l.vertex_attrs = offsetof(FsVertex, attrs);
+    l.weights = offsetof(FsPrimitive, weight);
+    l.depth = offsetof(FsPrimitive, z);
+    l.ox = offsetof(FsPrimitive, ox);
+    l.oy = offsetof(FsPrimitive, oy);
+    l.front = offsetof(FsPrimitive, front);
+    l.count = offsetof(FsPrimitive, count);
+    l.point_center = offsetof(FsPrimitive, point_center);
+    l.point_size = offsetof(FsPrimitive, point_size);
+    return l;
 }
 
 }  // namespace
@@ -138,6 +171,53 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
     early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
+    pipeline_ = fused_pipeline();
+}
+
+// The fused pipeline where the shader runs JIT-compiled and the draw's
+// state is one it takes: the depth test (any function, either mask) and
+// plain stores into one colour buffer, no shader debugger. Null otherwise,
+// until the program has shaded enough fragments to pay for it
+// (rt::kPipelineAfterFragments), and under Backend::Auto until its
+// background compile is done.
+const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
+    const FragmentOps& o = ops_;
+    bool all_channels = o.color_mask == std::array<bool, 4>{true, true, true, true};
+    if (interp_->backend() != Backend::Jit || probe_ || o.alpha_test || o.stencil_test || o.blend || o.logic_op ||
+        !all_channels || gl_.draw_buffers != 1)
+        return nullptr;
+    rt::PipelineKey key;
+    for (const InputPlan& p : inputs_) {
+        const ir::Binding& b = *p.binding;
+        const bool is_bool = b.kind == ir::Kind::Bool && p.source == InputPlan::Source::FrontFacing;
+        if (b.kind != ir::Kind::F32 && !is_bool && p.source != InputPlan::Source::Zero) return nullptr;
+        for (uint32_t c = 0; c < b.count; ++c) {
+            uint32_t index = p.source == InputPlan::Source::Varying ? p.attr_offset + c : c;
+            key.inputs.push_back({rt::InputSource(p.source), index, is_bool});
+            input_regs_.push_back(interp_->lanes(b.first + c));
+        }
+    }
+    if (const ir::Binding* color = color_out_[0]) {
+        if (color->kind != ir::Kind::F32) return nullptr;
+        key.color_channels = std::min<uint32_t>(4, color->count);
+        for (uint32_t k = 0; k < key.color_channels; ++k) output_regs_.push_back(interp_->lanes(color->first + k));
+    }
+    if (depth_out_) {
+        if (depth_out_->kind != ir::Kind::F32) return nullptr;
+        key.depth_output = true;
+        output_regs_.push_back(interp_->lanes(depth_out_->first));
+    }
+    key.float_color = fb_.float_color();
+    key.depth_test = o.depth_test;
+    key.depth_write = o.depth_write;
+    key.depth_func = o.depth_func;
+    key.early_depth = early_depth_;
+    key.avx2 = rt::cpu_has_avx2();
+    target_.depth = fb_.depth.data();
+    target_.color = key.float_color ? static_cast<void*>(fb_.color_data<float>(0).data())
+                                    : static_cast<void*>(fb_.color_data<uint8_t>(0).data());
+    target_.width = fb_.width;
+    return state_of(program_).pipelines->get(key, primitive_layout(), program_.exec.backend == Backend::Jit);
 }
 
 void FragmentStage::prefetch(const Rect& r) const {
@@ -160,7 +240,7 @@ ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
     return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
 }
 
-FragmentStage::~FragmentStage() = default;
+FragmentStage::~FragmentStage() { state_of(program_).pipelines->count_unfused(shaded_ - fused_); }
 
 void FragmentStage::gather(const float* vs_vertex, const std::vector<uint32_t>& vs_offset, bool back,
                            float* dst) const {
@@ -213,6 +293,16 @@ unsigned FragmentStage::depth_test_quad(int base, const float* z_lanes, unsigned
 void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask) {
     if (error_) return;
     int base = quads_ * 4;
+    if (pipeline_) {
+        if (early_depth_) mask = pipeline_->quad_depth(&prim, x, y, mask, &target_);
+        if (!mask) return;
+        batch_.prim[quads_] = &prim;
+        batch_.x[quads_] = x;
+        batch_.y[quads_] = y;
+        covered_ |= rt::LaneMask(mask) << base;
+        if (++quads_ == rt::kLanes / 4) flush();
+        return;
+    }
     store_quad(&lane_x_[base], x + kQuadDxI);
     store_quad(&lane_y_[base], y + kQuadDyI);
     const QuadF px = float(x - prim.ox) + kQuadDxF, py = float(y - prim.oy) + kQuadDyF;
@@ -233,14 +323,14 @@ void FragmentStage::compute_weights(Weights& w) const {
         const int base = q * 4;
         const QuadF x = float(lane_x_[base] - p.ox) + kQuadDxF, y = float(lane_y_[base] - p.oy) + kQuadDyF;
         const QuadF l0 = plane_at(p.weight[0], x, y), l1 = plane_at(p.weight[1], x, y), l2 = plane_at(p.weight[2], x, y);
-        const QuadF w1 = l1 * p.v[1].inv_w, w2 = l2 * p.v[2].inv_w;
-        const QuadF inv_w = l0 * p.v[0].inv_w + w1 + w2;
+        const QuadF w1 = mul(l1, splat(p.v[1].inv_w)), w2 = mul(l2, splat(p.v[2].inv_w));
+        const QuadF inv_w = add(add(mul(l0, splat(p.v[0].inv_w)), w1), w2);
         // 1 / 0 in the lanes that do not use it: no trap, nothing reads the flags.
         const QuadI finite = inv_w != 0.0f;
         const QuadF r = 1.0f / inv_w;
         store_quad(&w.inv_w[size_t(base)], inv_w);
-        store_quad(&w.p1[size_t(base)], finite ? w1 * r : l1);
-        store_quad(&w.p2[size_t(base)], finite ? w2 * r : l2);
+        store_quad(&w.p1[size_t(base)], finite ? mul(w1, r) : l1);
+        store_quad(&w.p2[size_t(base)], finite ? mul(w2, r) : l2);
     }
 }
 
@@ -252,7 +342,8 @@ void FragmentStage::interpolate(uint32_t attr, const Weights& w, float* v) const
         float a0 = prim.v[0].attrs[attr];
         float d1 = prim.v[1].attrs[attr] - a0, d2 = prim.v[2].attrs[attr] - a0;
         const size_t base = size_t(q) * 4;
-        store_quad(v + base, a0 + load_quad(&w.p1[base]) * d1 + load_quad(&w.p2[base]) * d2);
+        store_quad(v + base, add(add(splat(a0), mul(load_quad(&w.p1[base]), splat(d1))),
+                                 mul(load_quad(&w.p2[base]), splat(d2))));
     }
 }
 
@@ -315,9 +406,14 @@ void FragmentStage::fill_inputs(const Weights& w) {
 void FragmentStage::flush() {
     if (quads_ == 0) return;
     int lanes = quads_ * 4;
-    Weights w;
-    compute_weights(w);
-    fill_inputs(w);
+    if (pipeline_) {
+        batch_.quads = quads_;
+        pipeline_->inputs(&batch_, input_regs_.data());
+    } else {
+        Weights w;
+        compute_weights(w);
+        fill_inputs(w);
+    }
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
     rt::RunError run_error;
     if (probe_) [[unlikely]]
@@ -330,7 +426,12 @@ void FragmentStage::flush() {
         error_ = exec::run_error(state_of(program_), ir::Stage::Fragment, run_error);
         return;
     }
-    if (probe_) [[unlikely]]
+    if (pipeline_) {
+        rt::LaneMask written = pipeline_->outputs(&batch_, output_regs_.data(), interp_->alive() & covered, &target_);
+        shaded_ += uint64_t(std::popcount(covered));
+        fused_ += uint64_t(std::popcount(covered));
+        written_ += uint64_t(std::popcount(written));
+    } else if (probe_) [[unlikely]]
         probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered));
     else
         write_outputs<false>(covered);

@@ -16,6 +16,7 @@
 #include "raster/quad_lanes.h"
 #include "raster/triangle.h"
 #include "runtime/backend.h"
+#include "runtime/fragment_pipeline.h"
 
 namespace glslrun::raster {
 
@@ -93,6 +94,8 @@ public:
     // Fragment counts of this stage so far.
     uint64_t fragments_shaded() const { return shaded_; }
     uint64_t fragments_written() const { return written_; }
+    // Of the fragments shaded, those the fused pipeline (runtime/fragment_pipeline.h) handled.
+    uint64_t fragments_fused() const { return fused_; }
 
 private:
     struct InputPlan;
@@ -112,6 +115,7 @@ private:
     rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z);
     void load_color(int buffer, std::array<Lanes, 4>& rgba) const;
     ProbeBatch probe_batch(rt::LaneMask covered);
+    const rt::FragmentPipeline* fused_pipeline();
 
     const Program& program_;
     const GLState& gl_;
@@ -131,7 +135,14 @@ private:
     std::array<int, rt::kLanes> lane_x_{}, lane_y_{};
     std::array<float, rt::kLanes> lane_z_{};
     rt::LaneMask covered_ = 0;
-    uint64_t shaded_ = 0, written_ = 0;
+    uint64_t shaded_ = 0, written_ = 0, fused_ = 0;
+    // The fused path: the JIT's pipeline for this draw's state, or null (the
+    // C++ path above); its batch, buffers and the registers it fills and reads.
+    const rt::FragmentPipeline* pipeline_ = nullptr;
+    rt::QuadBatch batch_;
+    rt::PipelineTarget target_;
+    std::vector<uint32_t*> input_regs_;
+    std::vector<const uint32_t*> output_regs_;
     std::optional<Error> error_;
     DrawProbe* probe_ = nullptr;
 };

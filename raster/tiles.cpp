@@ -140,11 +140,12 @@ TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsi
             queue.fail(i);
         }
     });
-    TileResult result{stage.fragments_shaded(), stage.fragments_written()};
+    TileResult result{stage.fragments_shaded(), stage.fragments_written(), stage.fragments_fused()};
     for (const auto& s : stages) {
         if (!s) continue;
         result.fragments_shaded += s->fragments_shaded();
         result.fragments_written += s->fragments_written();
+        result.fragments_fused += s->fragments_fused();
     }
     if (auto failed = queue.first_failure()) {
         result.status = *errors[*failed];

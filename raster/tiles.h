@@ -26,7 +26,7 @@ struct TileTarget {
 
 // Fragment counts and the first error, by tile order.
 struct TileResult {
-    uint64_t fragments_shaded = 0, fragments_written = 0;
+    uint64_t fragments_shaded = 0, fragments_written = 0, fragments_fused = 0;
     Status status = Ok{};
 };
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "runtime/backend_cache.h"
+#include "runtime/fragment_pipeline.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/interpreter.h"
 #include "runtime/program_state.h"
@@ -28,7 +29,9 @@ Backend effective_backend(Backend requested, Precision precision) {
     return requested == Backend::Interp ? Backend::Interp : Backend::Jit;
 }
 
-double Program::jit_compile_seconds() const { return state_->backends->jit_compile_seconds(); }
+double Program::jit_compile_seconds() const {
+    return state_->backends->jit_compile_seconds() + state_->pipelines->compile_seconds();
+}
 
 }  // namespace glslrun
 

@@ -9,11 +9,15 @@
 #include "frontend/compile.h"
 #include "ir/passes.h"
 #include "runtime/backend_cache.h"
+#include "runtime/fragment_pipeline.h"
 #include "runtime/program_state.h"
 
 namespace glslrun {
 
-Program::Program() : state_(std::make_unique<State>()) { state_->backends = std::make_shared<rt::BackendCache>(); }
+Program::Program() : state_(std::make_unique<State>()) {
+    state_->backends = std::make_shared<rt::BackendCache>();
+    state_->pipelines = std::make_shared<rt::PipelineCache>();
+}
 Program::Program(Program&&) noexcept = default;
 Program& Program::operator=(Program&&) noexcept = default;
 Program::~Program() = default;

@@ -13,7 +13,7 @@
 
 namespace glslrun {
 namespace raster { class DrawProbe; }
-namespace rt { class BackendCache; }
+namespace rt { class BackendCache; class PipelineCache; }
 
 struct Program::State {
     ir::Program ir;
@@ -33,6 +33,8 @@ struct Program::State {
     // The shaders compiled by the backends (runtime/backend_cache.h), made
     // with the State; shared_ptr for the same reason as draw_scratch.
     std::shared_ptr<rt::BackendCache> backends;
+    // The fused fragment pipelines (runtime/fragment_pipeline.h), by draw state.
+    std::shared_ptr<rt::PipelineCache> pipelines;
 };
 
 inline Program::State& state_of(Program& program) { return *program.state_; }

@@ -525,6 +525,10 @@ enum class Primitive { Points, Lines, LineStrip, LineLoop, Triangles, TriangleSt
 
 struct DrawStats {
     uint64_t vertices = 0, triangles = 0, fragments_shaded = 0, fragments_written = 0;
+    // Of the fragments shaded, those drawn by the JIT's fused fragment
+    // pipeline (one native function set per draw state); the others took
+    // the interpreter's or the C++ per-fragment path.
+    uint64_t fragments_fused = 0;
     // Wall time per stage: vertex shading; "raster" is assembly, clipping,
     // triangle setup and binning into tiles; "fragment" is the tiles'
     // work (rasterization, shading, depth test and colour writes).

@@ -27,10 +27,9 @@
 
 #include "runtime/aligned_words.h"
 #include "runtime/jit/codegen.h"
+#include "runtime/jit/engine.h"
 
 namespace glslrun::rt::jit {
-
-namespace {
 
 void initialise_llvm() {
     static std::once_flag once;  // LLVM's target registry is process-wide
@@ -39,6 +38,8 @@ void initialise_llvm() {
         llvm::InitializeNativeTargetAsmPrinter();
     });
 }
+
+namespace {
 
 // The emitter writes callees out in place (GLSL has no recursion), so the
 // JIT takes a shader only if its calls expand to at most this many nodes:
@@ -82,19 +83,13 @@ private:
     std::vector<uint64_t> size_;
 };
 
-// The compiling thread's CPU time: LLVM's cost without the machine's load
-// or the wait for another compile.
-double thread_cpu_seconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
-}
-
 bool jit_takes(const ir::Shader& shader) {
     ExpandedSize size(shader);
     const uint64_t body = size.of(shader.body), prologue = size.of(shader.prologue);
     return body <= kMaxExpandedNodes && prologue <= kMaxExpandedNodes && body + prologue <= kMaxExpandedNodes;
 }
+
+}  // namespace
 
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
     llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
@@ -104,49 +99,40 @@ llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
     return builder;
 }
 
-// LLVM's machinery for one vector ISA, made once per process at its first
-// compile (a target machine and an LLJIT with the process's symbols: about
-// 20 ms each time it was made per shader): every shader's module joins the
-// one LLJIT under names of its own, and its code goes when the shader does
-// (a ResourceTracker). Compiles take turns (`lock`): the target machine and
-// the LLJIT's single compiler are not for concurrent use; tiering compiles
-// in the background anyway.
-struct Engine {
-    std::mutex lock;
-    std::unique_ptr<llvm::TargetMachine> machine;  // for the optimization passes
-    std::unique_ptr<llvm::orc::LLJIT> jit;
-    uint64_t modules = 0;  // names them apart
+double thread_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+}
 
-    static Engine* of(bool avx2) {
-        static Engine engines[2];
-        static std::once_flag made[2];
-        Engine& e = engines[avx2];
-        std::call_once(made[avx2], [&] { e.make(avx2); });
-        return e.jit ? &e : nullptr;
-    }
+Engine* Engine::of(bool avx2) {
+    static Engine engines[2];
+    static std::once_flag made[2];
+    Engine& e = engines[avx2];
+    std::call_once(made[avx2], [&] { e.make(avx2); });
+    return e.jit ? &e : nullptr;
+}
 
-private:
-    void make(bool avx2) {
-        initialise_llvm();
-        auto tm = target_for(avx2).createTargetMachine();
-        auto built = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
-        if (!tm || !built) {
-            if (!tm) llvm::consumeError(tm.takeError());
-            if (!built) llvm::consumeError(built.takeError());
-            return;
-        }
-        // The baseline ISA has no rounding instruction: floor and ceil call libm.
-        auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
-            (*built)->getDataLayout().getGlobalPrefix());
-        if (!process) {
-            llvm::consumeError(process.takeError());
-            return;
-        }
-        (*built)->getMainJITDylib().addGenerator(std::move(*process));
-        machine = std::move(*tm);
-        jit = std::move(*built);
+void Engine::make(bool avx2) {
+    initialise_llvm();
+    auto tm = target_for(avx2).createTargetMachine();
+    auto built = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
+    if (!tm || !built) {
+        if (!tm) llvm::consumeError(tm.takeError());
+        if (!built) llvm::consumeError(built.takeError());
+        return;
     }
-};
+    // The baseline ISA has no rounding instruction: floor and ceil call libm.
+    auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+        (*built)->getDataLayout().getGlobalPrefix());
+    if (!process) {
+        llvm::consumeError(process.takeError());
+        return;
+    }
+    (*built)->getMainJITDylib().addGenerator(std::move(*process));
+    machine = std::move(*tm);
+    jit = std::move(*built);
+}
 
 // A short function pipeline, without InstCombine: LLVM 15's InstCombine
 // rewrites select(c, x + y, x) as x + select(c, y, -0.0), which flushes a
@@ -177,6 +163,8 @@ void optimise(llvm::Module& module, llvm::TargetMachine& machine) {
     module_pipeline.addPass(llvm::createModuleToFunctionPassAdaptor(std::move(pipeline)));
     module_pipeline.run(module, modules);
 }
+
+namespace {
 
 class JitShader final : public CompiledShader {
 public:

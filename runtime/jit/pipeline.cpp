@@ -1,0 +1,494 @@
+// The fused fragment pipeline's code (runtime/fragment_pipeline.h): LLVM IR
+// for the early depth test of a quad, the shader inputs of a batch and the
+// per-fragment writes, computing what raster/fragments.cpp's C++ path
+// computes, operation for operation. A quad's four lanes are one 4-wide
+// vector; the writes go lane by lane, in lane order, as two quads of a batch
+// may cover the same pixel.
+#include <array>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/Verifier.h>
+
+#include "runtime/jit/engine.h"
+
+namespace glslrun::rt::jit {
+
+namespace {
+
+// Quad lane i is pixel (x + kDx[i], y + kDy[i]) (runtime/backend.h).
+constexpr int kDx[4] = {0, 1, 0, 1};
+constexpr int kDy[4] = {0, 0, 1, 1};
+
+class PipelineEmitter {
+public:
+    // The functions are named glslrun_quad_depth, glslrun_inputs and
+    // glslrun_outputs, followed by `suffix`.
+    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const PipelineKey& key,
+                    const PrimitiveLayout& layout, std::string suffix)
+        : module_(module), b_(context), key_(key), layout_(layout), suffix_(std::move(suffix)) {
+        i8_ = b_.getInt8Ty();
+        i32_ = b_.getInt32Ty();
+        i64_ = b_.getInt64Ty();
+        f32_ = b_.getFloatTy();
+        v4f_ = llvm::FixedVectorType::get(f32_, 4);
+        ptr_ = llvm::PointerType::getUnqual(context);
+    }
+
+    void define_quad_depth();
+    void define_inputs();
+    void define_outputs();
+
+private:
+    // Where a quad's lanes are: pixel coordinates, and their offsets from
+    // the primitive's origin as floats.
+    struct Quad {
+        llvm::Value *prim, *px, *py, *fx, *fy;
+    };
+    // Perspective-correct weights of vertices 1 and 2, and 1/w.
+    struct Weights {
+        llvm::Value *p1, *p2, *inv_w;
+    };
+
+    llvm::Function* begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params);
+    llvm::Value* at(llvm::Value* base, uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(i8_, base, offset); }
+    llvm::Value* load_f(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(f32_, at(base, offset)); }
+    llvm::Value* load_i(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(i32_, at(base, offset)); }
+    llvm::Value* splat(llvm::Value* v) { return b_.CreateVectorSplat(4, v); }
+    llvm::Value* lanes_i(const int (&v)[4]) {
+        return llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{uint32_t(v[0]), uint32_t(v[1]),
+                                                                                     uint32_t(v[2]), uint32_t(v[3])});
+    }
+    llvm::Value* splat_f(float v) { return llvm::ConstantFP::get(v4f_, v); }
+    // a + b and a * b returning a's NaN when a is one, as raster/fragments.cpp's
+    // add() and mul(). Without strict_, plain: exact where every NaN is
+    // the CPU's default NaN (made by the arithmetic, none in the inputs).
+    llvm::Value* a_nan_first(llvm::Value* a, llvm::Value* r) {
+        return b_.CreateSelect(b_.CreateFCmpUNO(a, a), b_.CreateFAdd(a, a), r);
+    }
+    llvm::Value* add(llvm::Value* a, llvm::Value* b) {
+        return strict_ ? a_nan_first(a, b_.CreateFAdd(a, b)) : b_.CreateFAdd(a, b);
+    }
+    llvm::Value* mul(llvm::Value* a, llvm::Value* b) {
+        return strict_ ? a_nan_first(a, b_.CreateFMul(a, b)) : b_.CreateFMul(a, b);
+    }
+    llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
+    Quad quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y);
+    llvm::Value* plane(const Quad& q, uint64_t offset);
+    llvm::Value* clamp01(llvm::Value* v);
+    // The window depth: its plane is not among nan_inputs(), so always strict.
+    llvm::Value* quad_depth(const Quad& q) {
+        const bool strict = std::exchange(strict_, true);
+        llvm::Value* z = clamp01(plane(q, layout_.depth));
+        strict_ = strict;
+        return z;
+    }
+    Weights weights(const Quad& q);
+    llvm::Value* vertex(const Quad& q, int i, uint32_t field) {
+        return at(q.prim, layout_.vertices + uint64_t(i) * layout_.vertex_size + field);
+    }
+    llvm::Value* input(const PipelineInput& in, const Quad& q, const Weights& w);
+    llvm::Value* nan_inputs(const Quad& q);
+    std::array<llvm::Value*, 3> attributes(const Quad& q, uint32_t index);  // of vertices 0, 1, 2
+    llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
+    llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
+    void for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value* index, const Quad& q)>& body);
+    // A quad's depth and colour values to store.
+    struct QuadValues {
+        llvm::Value* z;
+        std::array<llvm::Value*, 4> rgba;
+    };
+    QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
+    void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
+    void load_target(llvm::Value* target) {
+        target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
+        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
+        target_.width = load_i(target, offsetof(PipelineTarget, width));
+    }
+
+    llvm::Module& module_;
+    llvm::IRBuilder<> b_;
+    const PipelineKey& key_;
+    const PrimitiveLayout& layout_;
+    std::string suffix_;
+    llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
+    llvm::FixedVectorType* v4f_;
+    // Per function being defined.
+    llvm::Function* fn_ = nullptr;
+    struct {
+        llvm::Value *depth, *color, *width;
+    } target_{};
+    llvm::AllocaInst* written_ = nullptr;
+    bool strict_ = false;  // add() and mul() order NaNs
+};
+
+llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
+    auto* type = llvm::FunctionType::get(result, params, false);
+    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name + suffix_, module_);
+    fn_->addFnAttr(llvm::Attribute::NoUnwind);
+    b_.SetInsertPoint(llvm::BasicBlock::Create(b_.getContext(), "entry", fn_));
+    return fn_;
+}
+
+PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y) {
+    Quad q{prim, nullptr, nullptr, nullptr, nullptr};
+    q.px = b_.CreateAdd(splat(x), lanes_i(kDx));
+    q.py = b_.CreateAdd(splat(y), lanes_i(kDy));
+    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, layout_.ox))), v4f_);
+    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, layout_.oy))), v4f_);
+    return q;
+}
+
+// c + a * x + b * y, as FragmentStage evaluates a Plane (plane_at). Strict:
+// x and y are never NaN, so a * x and b * y have one NaN operand at most,
+// and c's NaN is a scalar test.
+llvm::Value* PipelineEmitter::plane(const Quad& q, uint64_t offset) {
+    llvm::Value* a = load_f(q.prim, offset);
+    llvm::Value* b = load_f(q.prim, offset + 4);
+    llvm::Value* c = load_f(q.prim, offset + 8);
+    llvm::Value* ax = b_.CreateFMul(splat(a), q.fx);
+    if (!strict_) return b_.CreateFAdd(b_.CreateFAdd(splat(c), ax), b_.CreateFMul(splat(b), q.fy));
+    llvm::Value* cax = b_.CreateSelect(is_nan(c), splat(b_.CreateFAdd(c, c)), b_.CreateFAdd(splat(c), ax));
+    return a_nan_first(cax, b_.CreateFAdd(cax, b_.CreateFMul(splat(b), q.fy)));
+}
+
+// Whether the quad's primitive has a NaN among the values the inputs are
+// interpolated from (or infinities that sum to one: then the strict code
+// runs where the plain code would do).
+llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
+    std::vector<llvm::Value*> terms;
+    for (uint32_t k = 0; k < 9; ++k) terms.push_back(load_f(q.prim, layout_.weights + 4 * k));
+    for (int i = 0; i < 3; ++i) terms.push_back(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w)));
+    for (const PipelineInput& in : key_.inputs)
+        if (in.source == InputSource::Varying)
+            for (llvm::Value* a : attributes(q, in.index)) terms.push_back(a);
+    while (terms.size() > 1) {  // a tree of sums: NaN when any term is
+        std::vector<llvm::Value*> sums;
+        for (size_t i = 0; i + 1 < terms.size(); i += 2) sums.push_back(b_.CreateFAdd(terms[i], terms[i + 1]));
+        if (terms.size() % 2) sums.push_back(terms.back());
+        terms = std::move(sums);
+    }
+    return is_nan(terms[0]);
+}
+
+std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t index) {
+    std::array<llvm::Value*, 3> a;
+    for (int i = 0; i < 3; ++i)
+        a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs)), uint64_t(index) * 4);
+    return a;
+}
+
+// raster::clamp01: maxss then minss, NaN and -0 kept.
+llvm::Value* PipelineEmitter::clamp01(llvm::Value* v) {
+    llvm::Value* zero = splat_f(0.0f);
+    llvm::Value* one = splat_f(1.0f);
+    llvm::Value* low = b_.CreateSelect(b_.CreateFCmpOGT(zero, v), zero, v);
+    return b_.CreateSelect(b_.CreateFCmpOLT(one, low), one, low);
+}
+
+// FragmentStage::compute_weights.
+PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
+    llvm::Value* l[3];
+    for (int k = 0; k < 3; ++k) l[k] = plane(q, layout_.weights + 12u * uint32_t(k));
+    auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w))); };
+    llvm::Value* w1 = mul(l[1], inv_w_of(1));
+    llvm::Value* w2 = mul(l[2], inv_w_of(2));
+    llvm::Value* inv_w = add(add(mul(l[0], inv_w_of(0)), w1), w2);
+    llvm::Value* nonzero = b_.CreateFCmpUNE(inv_w, splat_f(0.0f));
+    llvm::Value* r = b_.CreateSelect(nonzero, b_.CreateFDiv(splat_f(1.0f), inv_w), splat_f(0.0f));
+    return {b_.CreateSelect(nonzero, mul(w1, r), l[1]), b_.CreateSelect(nonzero, mul(w2, r), l[2]), inv_w};
+}
+
+// One input register's four lanes (FragmentStage::interpolate and builtin_input).
+llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, const Weights& w) {
+    switch (in.source) {
+    case InputSource::Varying: {
+        std::array<llvm::Value*, 3> a = attributes(q, in.index);
+        llvm::Value* d1 = splat(b_.CreateFSub(a[1], a[0]));
+        llvm::Value* d2 = splat(b_.CreateFSub(a[2], a[0]));
+        return add(add(splat(a[0]), mul(w.p1, d1)), mul(w.p2, d2));
+    }
+    case InputSource::FragCoord:
+        switch (in.index) {
+        case 0: return b_.CreateFAdd(b_.CreateSIToFP(q.px, v4f_), splat_f(0.5f));
+        case 1: return b_.CreateFAdd(b_.CreateSIToFP(q.py, v4f_), splat_f(0.5f));
+        case 2: return quad_depth(q);
+        default: return w.inv_w;
+        }
+    case InputSource::FrontFacing: {
+        llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, layout_.front)), b_.getInt8(0));
+        llvm::Value* word = in.is_bool ? b_.CreateZExt(front, i32_)
+                                       : b_.CreateSelect(front, llvm::ConstantFP::get(f32_, 1.0),
+                                                         llvm::ConstantFP::get(f32_, 0.0));
+        return splat(word);
+    }
+    case InputSource::PointCoord: {
+        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
+        llvm::Value* size = splat(load_f(q.prim, layout_.point_size));
+        llvm::Value* centre = splat(load_f(q.prim, layout_.point_center + (in.index == 0 ? 0 : 4)));
+        llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, v4f_), splat_f(0.5f));
+        llvm::Value* offset = b_.CreateFDiv(b_.CreateFSub(pixel, centre), size);
+        llvm::Value* value =
+            in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
+        return b_.CreateSelect(is_point, value, splat_f(0.0f));
+    }
+    case InputSource::Zero: break;
+    }
+    return splat_f(0.0f);
+}
+
+// raster::depth_passes on one lane.
+llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* stored) {
+    switch (key_.depth_func) {
+    case CompareFunc::Never: return b_.getFalse();
+    case CompareFunc::Less: return b_.CreateFCmpOLT(incoming, stored);
+    case CompareFunc::Equal: return b_.CreateFCmpOEQ(incoming, stored);
+    case CompareFunc::Lequal: return b_.CreateFCmpOLE(incoming, stored);
+    case CompareFunc::Greater: return b_.CreateFCmpOGT(incoming, stored);
+    case CompareFunc::Notequal: return b_.CreateFCmpUNE(incoming, stored);
+    case CompareFunc::Gequal: return b_.CreateFCmpOGE(incoming, stored);
+    case CompareFunc::Always: break;
+    }
+    return b_.getTrue();
+}
+
+llvm::Value* PipelineEmitter::pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width) {
+    return b_.CreateAdd(b_.CreateMul(b_.CreateSExt(y, i64_), b_.CreateSExt(width, i64_)), b_.CreateSExt(x, i64_));
+}
+
+// quad_depth(prim, x, y, mask, target): FragmentStage::early_depth_test.
+void PipelineEmitter::define_quad_depth() {
+    begin("glslrun_quad_depth", i32_, {ptr_, i32_, i32_, i32_, ptr_});
+    llvm::Value* target = fn_->getArg(4);
+    Quad q = quad(fn_->getArg(0), fn_->getArg(1), fn_->getArg(2));
+    llvm::Value* z = quad_depth(q);
+    load_target(target);
+    llvm::Value* mask = fn_->getArg(3);
+    for (int i = 0; i < 4; ++i) {
+        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "test", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+        llvm::BasicBlock* from = b_.GetInsertBlock();
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0)), test, next);
+        b_.SetInsertPoint(test);
+        llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
+        llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
+        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel_index(px, py, target_.width));
+        llvm::Value* stored = b_.CreateLoad(f32_, slot);
+        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+        llvm::Value* passes = depth_passes(zi, stored);
+        if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
+        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+        llvm::Value* tested = b_.CreateAnd(mask, b_.CreateNot(failed));
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+        llvm::PHINode* merged = b_.CreatePHI(i32_, 2);
+        merged->addIncoming(mask, from);
+        merged->addIncoming(tested, test);
+        mask = merged;
+    }
+    b_.CreateRet(mask);
+}
+
+// Emits body(index, quad) for quads 0 .. batch->quads - 1, a loop.
+void PipelineEmitter::for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value*, const Quad&)>& body) {
+    llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
+    llvm::BasicBlock* entry = b_.GetInsertBlock();
+    llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
+    llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "done", fn_);
+    b_.CreateCondBr(b_.CreateICmpSGT(quads, b_.getInt32(0)), loop, done);
+    b_.SetInsertPoint(loop);
+    llvm::PHINode* index = b_.CreatePHI(i32_, 2);
+    index->addIncoming(b_.getInt32(0), entry);
+    llvm::Value* index64 = b_.CreateZExt(index, i64_);
+    auto field = [&](size_t offset, llvm::Type* type) {
+        return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), index64));
+    };
+    body(index64, quad(field(offsetof(QuadBatch, prim), ptr_), field(offsetof(QuadBatch, x), i32_),
+                       field(offsetof(QuadBatch, y), i32_)));
+    llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
+    index->addIncoming(next, b_.GetInsertBlock());
+    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), loop, done);
+    b_.SetInsertPoint(done);
+}
+
+// inputs(batch, regs): FragmentStage::fill_inputs.
+void PipelineEmitter::define_inputs() {
+    begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
+    std::vector<llvm::Value*> regs;
+    for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), i * 8)));
+    for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        // Two versions: the one that orders NaNs (add, mul) runs only for
+        // primitives with NaNs in their inputs.
+        llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
+        llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
+        llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
+        b_.CreateCondBr(nan_inputs(q), strict, plain);
+        for (llvm::BasicBlock* block : {plain, strict}) {
+            b_.SetInsertPoint(block);
+            strict_ = block == strict;
+            // All values before the first store: the stores could alias the
+            // primitive for all LLVM knows, which would reload its fields.
+            Weights w = weights(q);
+            std::vector<llvm::Value*> values;
+            for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
+            for (size_t i = 0; i < values.size(); ++i)
+                b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index, 2)),
+                                      llvm::Align(16));
+            b_.CreateBr(stored);
+        }
+        strict_ = false;
+        b_.SetInsertPoint(stored);
+    });
+    b_.CreateRetVoid();
+}
+
+// One lane's late depth test and writes (FragmentStage::write_plain), if it
+// is alive; `bit` its bit in the batch.
+void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit) {
+    llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
+    llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bit), b_.getInt64(0)), write, next);
+    b_.SetInsertPoint(write);
+    llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
+                                     b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
+    if (key_.depth_test && !key_.early_depth) {
+        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
+        llvm::Value* z = b_.CreateExtractElement(v.z, uint64_t(i));
+        llvm::BasicBlock* pass = llvm::BasicBlock::Create(b_.getContext(), "pass", fn_);
+        b_.CreateCondBr(depth_passes(z, b_.CreateLoad(f32_, slot)), pass, next);
+        b_.SetInsertPoint(pass);
+        if (key_.depth_write) b_.CreateStore(z, slot);
+    }
+    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bit), written_);
+    if (key_.color_channels > 0) {
+        // One pixel's channels: 4 floats, or 4 bytes.
+        llvm::Type* channel = key_.float_color ? f32_ : i8_;
+        llvm::Value* dst = b_.CreateInBoundsGEP(channel, target_.color, b_.CreateShl(pixel, 2));
+        llvm::Value* texel = llvm::PoisonValue::get(llvm::FixedVectorType::get(channel, 4));
+        for (unsigned k = 0; k < 4; ++k) {
+            llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
+            texel = b_.CreateInsertElement(texel, key_.float_color ? c : b_.CreateTrunc(c, i8_), uint64_t(k));
+        }
+        b_.CreateAlignedStore(texel, dst, llvm::Align(key_.float_color ? 4 : 1));
+    }
+    b_.CreateBr(next);
+    b_.SetInsertPoint(next);
+}
+
+// A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)
+// and colour as stored (RGBA8: raster::to_unorm8's steps, as 32-bit integers).
+PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const std::vector<llvm::Value*>& regs,
+                                                         llvm::Value* index) {
+    auto lanes = [&](uint32_t r) {
+        return b_.CreateAlignedLoad(v4f_, b_.CreateInBoundsGEP(i32_, regs[r], b_.CreateShl(index, 2)), llvm::Align(16));
+    };
+    QuadValues v;
+    if (key_.depth_output) {
+        llvm::Value* d = lanes(key_.color_channels);
+        llvm::Value* upper = b_.CreateSelect(b_.CreateFCmpOLT(splat_f(1.0f), d), splat_f(1.0f), d);
+        v.z = b_.CreateSelect(b_.CreateFCmpOGT(d, splat_f(0.0f)), upper, splat_f(0.0f));
+    } else {
+        v.z = quad_depth(q);
+    }
+    for (uint32_t k = 0; k < 4; ++k) {
+        llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
+        if (!key_.float_color) {
+            constexpr float kRound = 8388608.0f;
+            c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
+            c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
+            llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
+            c = b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), llvm::FixedVectorType::get(i32_, 4));
+        }
+        v.rgba[k] = c;
+    }
+    return v;
+}
+
+// outputs(batch, regs, alive, target): FragmentStage::write_outputs on the
+// fast path, in lane order.
+void PipelineEmitter::define_outputs() {
+    begin("glslrun_outputs", i64_, {ptr_, ptr_, i64_, ptr_});
+    std::vector<llvm::Value*> regs;
+    for (uint32_t i = 0; i < key_.color_channels + (key_.depth_output ? 1 : 0); ++i)
+        regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), uint64_t(i) * 8)));
+    load_target(fn_->getArg(3));
+    written_ = b_.CreateAlloca(i64_);
+    b_.CreateStore(b_.getInt64(0), written_);
+    for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
+        llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
+        llvm::Value* bits = b_.CreateMul(first, b_.getInt64(0xF));
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bits), b_.getInt64(0)), body, next);
+        b_.SetInsertPoint(body);
+        QuadValues v = quad_values(q, regs, index);
+        for (int i = 0; i < 4; ++i) write_lane(q, i, v, b_.CreateShl(first, uint64_t(i)));
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+    });
+    b_.CreateRet(b_.CreateLoad(i64_, written_));
+}
+
+// The pipeline's code in the process's LLJIT (engine.h), removed with it.
+class CompiledPipeline final : public FragmentPipeline {
+public:
+    ~CompiledPipeline() override {
+        if (!tracker) return;
+        std::lock_guard hold(engine->lock);
+        llvm::consumeError(tracker->remove());
+    }
+    Engine* engine = nullptr;
+    llvm::orc::ResourceTrackerSP tracker;
+};
+
+}  // namespace
+
+std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
+                                                   double* seconds) {
+    const double start = thread_cpu_seconds();
+    Engine* engine = Engine::of(key.avx2);
+    if (!engine) return nullptr;
+    auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
+    std::lock_guard hold(engine->lock);
+    auto context = std::make_unique<llvm::LLVMContext>();
+    auto module = std::make_unique<llvm::Module>("pipeline", *context);
+    module->setDataLayout(engine->machine->createDataLayout());
+    module->setTargetTriple(engine->machine->getTargetTriple().str());
+    const std::string suffix = "_" + std::to_string(engine->modules++);
+    {
+        PipelineEmitter emitter(*context, *module, key, layout, suffix);
+        if (key.early_depth) emitter.define_quad_depth();
+        emitter.define_inputs();
+        emitter.define_outputs();
+    }
+    if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
+    optimise(*module, *engine->machine);
+    code->engine = engine;
+    code->tracker = engine->jit->getMainJITDylib().createResourceTracker();
+    if (auto err = engine->jit->addIRModule(code->tracker,
+                                            llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
+        llvm::consumeError(std::move(err));
+        return nullptr;
+    }
+    auto lookup = [&](const char* name) -> void* {
+        auto symbol = engine->jit->lookup(name + suffix);
+        if (symbol) return symbol->toPtr<void*>();
+        llvm::consumeError(symbol.takeError());
+        return nullptr;
+    };
+    if (key.early_depth)
+        code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"));
+    code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(lookup("glslrun_inputs"));
+    code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(lookup("glslrun_outputs"));
+    if (!code->inputs || !code->outputs || (key.early_depth && !code->quad_depth)) return nullptr;
+    if (seconds) *seconds = thread_cpu_seconds() - start;
+    return code;
+}
+
+}  // namespace glslrun::rt::jit
