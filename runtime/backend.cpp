@@ -62,12 +62,13 @@ private:
 }  // namespace
 
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
-                                               uint32_t fast_ops, bool avx2, double* llvm_seconds) {
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds,
+                                               bool quick_codegen) {
     if (llvm_seconds) *llvm_seconds = 0;
 #ifdef GLSLRUN_HAVE_JIT
     if (backend == Backend::Jit) {
         jit::CompileStats stats;
-        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, &stats);
+        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
         if (llvm_seconds) *llvm_seconds = stats.seconds;
         if (code) return code;
     }
@@ -84,7 +85,7 @@ const CompiledShader& BackendCache::compile_now(const ir::Shader& shader, const 
     std::unique_ptr<CompiledShader>& slot = shaders_[key];
     if (!slot) {
         double seconds = 0;
-        slot = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+        slot = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds, key.quick_codegen);
         jit_compile_seconds_ += seconds;
     }
     return *slot;
@@ -103,7 +104,7 @@ const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key
         try {
             threads_.emplace_back([this, &shader, key] {
                 double seconds = 0;
-                auto code = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+                auto code = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds, key.quick_codegen);
                 std::lock_guard done(mutex_);
                 shaders_[key] = std::move(code);
                 jit_compile_seconds_ += seconds;
@@ -133,7 +134,7 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
     ExecParams params{st.uniforms.data(), RunLimits(program.exec), textures, program.exec.precision,
                       st.fast_ops};
     BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
-                          params.fast_ops, cpu_has_avx2()};
+                          params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
     return st.backends->get(shader, key, program.exec.backend == Backend::Jit).instantiate(params);
 }
 

@@ -26,7 +26,8 @@ public:
         Precision precision;
         uint32_t fast_ops;
         bool avx2;  // the vector ISA the code was made for
-        auto tie() const { return std::tie(stage, backend, precision, fast_ops, avx2); }
+        bool quick_codegen;  // ExecOptions::jit_quick_codegen
+        auto tie() const { return std::tie(stage, backend, precision, fast_ops, avx2, quick_codegen); }
         bool operator<(const Key& o) const { return tie() < o.tie(); }
     };
     BackendCache() = default;

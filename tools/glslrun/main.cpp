@@ -162,7 +162,7 @@ int run_test_command(const TestOptions& o) {
     run_options.time_limit_s = o.time_limit;
     run_options.precision = o.precision;
     run_options.backend = o.backend;
-    if (!o.no_isolate) pg::warm_up_compiler();
+    if (!o.no_isolate) pg::warm_up_compiler(o.backend);
     auto run_one = [&](const pg::TestCase& tc) {
         if (o.no_isolate) {
             Watchdog watchdog(o.time_limit);
