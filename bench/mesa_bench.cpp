@@ -150,10 +150,8 @@ glslrun::GLState glslrun_state(const Scene& s) {
 }
 
 Image to_image(const glslrun::Framebuffer& fb) {
-    Image img{fb.width, fb.height, std::vector<uint8_t>(fb.color.size())};
-    for (size_t i = 0; i < fb.color.size(); ++i)
-        img.rgba[i] = uint8_t(std::lround(std::clamp(fb.color[i], 0.0f, 1.0f) * 255.0f));
-    return img;
+    std::span<const uint8_t> bytes = fb.color_data<uint8_t>();  // an RGBA8 framebuffer
+    return Image{fb.width, fb.height, std::vector<uint8_t>(bytes.begin(), bytes.end())};
 }
 
 Measurement measure_glslrun(const Options& opt, const std::string& shader_dir, Image* image) {
@@ -512,7 +510,7 @@ double median(std::vector<double> v) {
 
 void save_png(const Image& img, const std::string& path) {
     glslrun::Framebuffer fb(img.width, img.height);
-    for (size_t i = 0; i < img.rgba.size(); ++i) fb.color[i] = float(img.rgba[i]) / 255.0f;
+    std::copy(img.rgba.begin(), img.rgba.end(), fb.color_data<uint8_t>().begin());
     if (auto st = glslrun::write_png(fb, path); !st) std::fprintf(stderr, "%s\n", st.error().str().c_str());
 }
 

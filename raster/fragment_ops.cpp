@@ -48,8 +48,6 @@ float combine(BlendEquation eq, float s, float sf, float d, float df) {
     return s;
 }
 
-uint32_t to_unorm8(float v) { return uint32_t(quantize_unorm8(v) * 255.0f + 0.5f); }
-
 // a * b / 255 rounded to the nearest integer, for a and b in 0..255.
 uint32_t mul_unorm8(uint32_t a, uint32_t b) { return (a * b * 2 + 255) / 510; }
 
@@ -96,8 +94,6 @@ uint32_t combine8(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_
     return s;
 }
 
-std::array<uint32_t, 4> to_unorm8(glm::vec4 v) { return {to_unorm8(v.r), to_unorm8(v.g), to_unorm8(v.b), to_unorm8(v.a)}; }
-
 size_t pixel_index(const LanePixels& px, int lane, int width) {
     return size_t(px.y[lane]) * size_t(width) + size_t(px.x[lane]);
 }
@@ -132,8 +128,8 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
 FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
     : alpha_test(gl.alpha_test), alpha_func(gl.alpha_func), alpha_ref(std::clamp(gl.alpha_ref, 0.0f, 1.0f)),
       stencil_test(gl.stencil_test), stencil(gl.stencil), depth_test(gl.depth_test), depth_write(gl.depth_mask),
-      depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color),
-      float_color(fb.float_color), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
+      depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color()),
+      float_color(fb.float_color()), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
     blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
     for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
     bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
@@ -187,13 +183,15 @@ glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
     return out;
 }
 
-glm::vec4 blend_unorm8(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
-    std::array<uint32_t, 4> s8 = to_unorm8(src), d8 = to_unorm8(dst), c8 = to_unorm8(s.color);
+Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst) {
+    const std::array<uint32_t, 4> s8{src[0], src[1], src[2], src[3]}, d8{dst[0], dst[1], dst[2], dst[3]};
+    const std::array<uint32_t, 4> c8{to_unorm8(s.color.r), to_unorm8(s.color.g), to_unorm8(s.color.b),
+                                     to_unorm8(s.color.a)};
     std::array<uint32_t, 4> sf = factor8(s.src_rgb, s8, d8, c8), df = factor8(s.dst_rgb, s8, d8, c8);
     uint32_t sfa = factor8(s.src_alpha, s8, d8, c8)[3], dfa = factor8(s.dst_alpha, s8, d8, c8)[3];
-    glm::vec4 out;
-    for (size_t k = 0; k < 3; ++k) out[int(k)] = float(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k])) / 255.0f;
-    out.a = float(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa)) / 255.0f;
+    Unorm8 out;
+    for (size_t k = 0; k < 3; ++k) out[k] = uint8_t(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k]));
+    out[3] = uint8_t(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa));
     return out;
 }
 
@@ -218,24 +216,46 @@ rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const L
     return mask;
 }
 
-void write_color(const FragmentOps& ops, std::vector<float>& buffer, int width, const LanePixels& px,
+namespace {
+
+void write_float(const FragmentOps& ops, float* buffer, int width, const LanePixels& px,
                  const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         float* dst = &buffer[pixel_index(px, lane, width) * 4];
-        glm::vec4 d{dst[0], dst[1], dst[2], dst[3]};
         glm::vec4 s{rgba[0][size_t(lane)], rgba[1][size_t(lane)], rgba[2][size_t(lane)], rgba[3][size_t(lane)]};
-        if (!ops.float_color)
-            for (int k = 0; k < 4; ++k) s[k] = clamp01(s[k]);
-        glm::vec4 out = s;
-        if (ops.logic_op) {
-            for (int k = 0; k < 4; ++k) out[k] = float(logic_op(ops.logic, to_unorm8(s[k]), to_unorm8(d[k]))) / 255.0f;
-        } else if (ops.blend) {
-            out = ops.float_color ? blend(ops.blend_state, s, d) : blend_unorm8(ops.blend_state, s, d);
-        }
+        glm::vec4 out = ops.blend ? blend(ops.blend_state, s, glm::vec4{dst[0], dst[1], dst[2], dst[3]}) : s;
         for (int k = 0; k < 4; ++k)
-            if (ops.color_mask[size_t(k)]) dst[k] = ops.float_color ? out[k] : quantize_unorm8(out[k]);
+            if (ops.color_mask[size_t(k)]) dst[k] = out[k];
     }
+}
+
+// The shader's colour is clamped to [0, 1] and rounded to bytes first
+// (§3.11.6, §4.1.8): blending and the logic op work on the bytes.
+void write_unorm8(const FragmentOps& ops, uint8_t* buffer, int width, const LanePixels& px,
+                  const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
+    for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        uint8_t* dst = &buffer[pixel_index(px, lane, width) * 4];
+        const Unorm8 d{dst[0], dst[1], dst[2], dst[3]};
+        Unorm8 out;
+        for (size_t k = 0; k < 4; ++k) out[k] = to_unorm8(rgba[k][size_t(lane)]);
+        if (ops.logic_op) {
+            for (size_t k = 0; k < 4; ++k) out[k] = uint8_t(logic_op(ops.logic, out[k], d[k]));
+        } else if (ops.blend) {
+            out = blend_unorm8(ops.blend_state, out, d);
+        }
+        for (size_t k = 0; k < 4; ++k)
+            if (ops.color_mask[k]) dst[k] = out[k];
+    }
+}
+
+}  // namespace
+
+void write_color(const FragmentOps& ops, Framebuffer& fb, int buffer, const LanePixels& px,
+                 const std::array<Lanes, 4>& rgba, rt::LaneMask mask) {
+    if (ops.float_color) write_float(ops, fb.color_data<float>(buffer).data(), fb.width, px, rgba, mask);
+    else write_unorm8(ops, fb.color_data<uint8_t>(buffer).data(), fb.width, px, rgba, mask);
 }
 
 }  // namespace glslrun::raster

@@ -53,19 +53,21 @@ rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask
 rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask);
 
 // §4.1.8 to §4.2.2: blending, logic op, colour mask and the store of the
-// lanes of `mask` into one colour buffer (RGBA8 storage rounds to n/255).
-void write_color(const FragmentOps& ops, std::vector<float>& buffer, int width, const LanePixels& px,
+// lanes of `mask` into colour buffer `buffer` (RGBA8 storage rounds to n/255).
+void write_color(const FragmentOps& ops, Framebuffer& fb, int buffer, const LanePixels& px,
                  const std::array<Lanes, 4>& rgba, rt::LaneMask mask);
 
 // One pixel's blend (§4.1.8) into a float buffer: `src` the fragment's
 // colour, `dst` the buffer's.
 glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst);
+// One RGBA8 pixel's channels.
+using Unorm8 = std::array<uint8_t, 4>;
 // The same into an RGBA8 buffer, in 8-bit fixed point as GPUs' blend units
 // and llvmpipe compute it: the source, factors and constant are n/255 values
 // and each product is rounded to n/255 before the equation (saturating)
 // combines them. Float arithmetic rounded once at the end differed from
 // Mesa by 2/255 on 1.6% of a blended scene (subtractions of rounded terms).
-glm::vec4 blend_unorm8(const BlendState& s, glm::vec4 src, glm::vec4 dst);
+Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst);
 // One 8-bit channel's logic op (§4.1.10).
 uint32_t logic_op(LogicOp op, uint32_t src, uint32_t dst);
 // A stencil value after `op` (§4.1.5), before the write mask.

@@ -33,6 +33,9 @@ const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initi
 
 Plane to_plane(double a, double b, double c) { return {float(a), float(b), float(c)}; }
 
+// A plane at a quad's pixels, x and y relative to its origin: the scalar (c + a x) + b y.
+QuadF plane_at(const Plane& p, QuadF x, QuadF y) { return p.c + p.a * x + p.b * y; }
+
 // Whole registers are copied, a constant size: lanes past the batch are not
 // live, so their values do not matter.
 void store_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, const Lanes& v, int lanes) {
@@ -158,9 +161,19 @@ void FragmentStage::copy_colors(const float* from, float* to) const {
         if (s.is_color) std::copy(from + s.offset, from + s.offset + s.count, to + s.offset);
 }
 
-// The depth test of a queued quad's covered lanes; returns those that pass.
+// The depth test of a queued quad's covered lanes (window depth z); returns those that pass.
 template <bool kWrite>
-unsigned FragmentStage::early_depth_test(int base, unsigned mask) {
+unsigned FragmentStage::early_depth_test(int base, QuadF z, unsigned mask) {
+    const int x = lane_x_[base], y = lane_y_[base];
+    if (x + 1 < fb_.width && y + 1 < fb_.height) {
+        // The whole quad is in the framebuffer: one vector test. Its four
+        // pixels are distinct, so the lanes' order does not matter.
+        float* at = &fb_.depth[size_t(y) * size_t(fb_.width) + size_t(x)];
+        QuadF stored = gather_quad(at, size_t(fb_.width));
+        QuadI passes = depth_passes(ops_.depth_func, z, stored) & lanes_of(mask);
+        if (kWrite) scatter_quad(at, size_t(fb_.width), passes ? z : stored);
+        return mask_of(passes);
+    }
     // The function read once (stores to the depth buffer would otherwise
     // make the compiler reload it per lane).
     const GLState::DepthFunc func = ops_.depth_func;
@@ -178,14 +191,12 @@ unsigned FragmentStage::early_depth_test(int base, unsigned mask) {
 void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask) {
     if (error_) return;
     int base = quads_ * 4;
-    for (int i = 0; i < 4; ++i) {
-        int lane = base + i, px = x + kQuadDx[i], py = y + kQuadDy[i];
-        float z = prim.z.c + prim.z.a * float(px - prim.ox) + prim.z.b * float(py - prim.oy);
-        lane_x_[lane] = px;
-        lane_y_[lane] = py;
-        lane_z_[lane] = clamp01(z);
-    }
-    if (early_depth_) mask = ops_.depth_write ? early_depth_test<true>(base, mask) : early_depth_test<false>(base, mask);
+    store_quad(&lane_x_[base], x + kQuadDxI);
+    store_quad(&lane_y_[base], y + kQuadDyI);
+    const QuadF px = float(x - prim.ox) + kQuadDxF, py = float(y - prim.oy) + kQuadDyF;
+    const QuadF z = clamp01(plane_at(prim.z, px, py));
+    store_quad(&lane_z_[base], z);
+    if (early_depth_) mask = ops_.depth_write ? early_depth_test<true>(base, z, mask) : early_depth_test<false>(base, z, mask);
     if (!mask) return;
     quad_prim_[size_t(quads_)] = &prim;
     covered_ |= rt::LaneMask(mask) << base;
@@ -195,27 +206,29 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
 void FragmentStage::compute_weights(Weights& w) const {
     for (int q = 0; q < quads_; ++q) {
         const FsPrimitive& p = *quad_prim_[size_t(q)];
-        for (int lane = q * 4; lane < q * 4 + 4; ++lane) {
-            float x = float(lane_x_[lane] - p.ox), y = float(lane_y_[lane] - p.oy);
-            float l[3];
-            for (int k = 0; k < 3; ++k) l[k] = p.weight[k].c + p.weight[k].a * x + p.weight[k].b * y;
-            float w1 = l[1] * p.v[1].inv_w, w2 = l[2] * p.v[2].inv_w;
-            float inv_w = l[0] * p.v[0].inv_w + w1 + w2;
-            w.inv_w[lane] = inv_w;
-            float r = inv_w != 0.0f ? 1.0f / inv_w : 0.0f;
-            w.p1[lane] = inv_w != 0.0f ? w1 * r : l[1];
-            w.p2[lane] = inv_w != 0.0f ? w2 * r : l[2];
-        }
+        const int base = q * 4;
+        const QuadF x = float(lane_x_[base] - p.ox) + kQuadDxF, y = float(lane_y_[base] - p.oy) + kQuadDyF;
+        const QuadF l0 = plane_at(p.weight[0], x, y), l1 = plane_at(p.weight[1], x, y), l2 = plane_at(p.weight[2], x, y);
+        const QuadF w1 = l1 * p.v[1].inv_w, w2 = l2 * p.v[2].inv_w;
+        const QuadF inv_w = l0 * p.v[0].inv_w + w1 + w2;
+        // 1 / 0 in the lanes that do not use it: no trap, nothing reads the flags.
+        const QuadI finite = inv_w != 0.0f;
+        const QuadF r = 1.0f / inv_w;
+        store_quad(&w.inv_w[size_t(base)], inv_w);
+        store_quad(&w.p1[size_t(base)], finite ? w1 * r : l1);
+        store_quad(&w.p2[size_t(base)], finite ? w2 * r : l2);
     }
 }
 
-// Component `attr` of the attribute vectors, perspective correct.
-void FragmentStage::interpolate(uint32_t attr, const Weights& w, Lanes& v) const {
+// Component `attr` of the attribute vectors, perspective correct, into the
+// batch's lanes.
+void FragmentStage::interpolate(uint32_t attr, const Weights& w, float* v) const {
     for (int q = 0; q < quads_; ++q) {
         const FsPrimitive& prim = *quad_prim_[size_t(q)];
         float a0 = prim.v[0].attrs[attr];
         float d1 = prim.v[1].attrs[attr] - a0, d2 = prim.v[2].attrs[attr] - a0;
-        for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = a0 + w.p1[lane] * d1 + w.p2[lane] * d2;
+        const size_t base = size_t(q) * 4;
+        store_quad(v + base, a0 + load_quad(&w.p1[base]) * d1 + load_quad(&w.p2[base]) * d2);
     }
 }
 
@@ -251,7 +264,12 @@ void FragmentStage::fill_inputs(const Weights& w) {
     for (const InputPlan& p : inputs_) {
         const ir::Binding& b = *p.binding;
         for (uint32_t c = 0; c < b.count; ++c) {
-            if (p.source == InputPlan::Source::Varying) interpolate(p.attr_offset + c, w, v);
+            // Float varyings straight into the executor's register.
+            if (p.source == InputPlan::Source::Varying && b.kind == ir::Kind::F32) {
+                interpolate(p.attr_offset + c, w, interp_->lanes_f(b.first + c));
+                continue;
+            }
+            if (p.source == InputPlan::Source::Varying) interpolate(p.attr_offset + c, w, v.data());
             else builtin_input(int(p.source), c, w, v);
             store_lanes(*interp_, b.kind, b.first + c, v, quads_ * 4);
         }
@@ -317,6 +335,8 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
     std::array<Lanes, 4> rgba{};
     if (color_out_[0]) load_color(0, rgba);
     bool late_depth = ops_.depth_test && !early_depth_;
+    const bool float_color = fb_.float_color();
+    uint8_t* rgba8 = fb_.color_data<uint8_t>(0).data();
     rt::LaneMask written = 0;
     for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
@@ -328,9 +348,16 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
         ++written_;
         if constexpr (kProbed) written |= rt::LaneMask(1) << lane;
         if (!color_out_[0]) continue;
-        // Quantized per written pixel: small triangles leave most lanes of a batch uncovered.
-        float* dst = &fb_.color[pixel * 4];
-        for (size_t k = 0; k < 4; ++k) dst[k] = fb_.float_color ? rgba[k][size_t(lane)] : quantize_unorm8(rgba[k][size_t(lane)]);
+        // Converted per written pixel: small triangles leave most lanes of a batch uncovered.
+        if (float_color) {
+            float* dst = &fb_.color_data<float>(0)[pixel * 4];
+            for (size_t k = 0; k < 4; ++k) dst[k] = rgba[k][size_t(lane)];
+        } else {
+            const uint8_t bytes[4] = {to_unorm8(rgba[0][size_t(lane)]), to_unorm8(rgba[1][size_t(lane)]),
+                                      to_unorm8(rgba[2][size_t(lane)]), to_unorm8(rgba[3][size_t(lane)])};
+            uint32_t word = pack_unorm8(bytes);
+            std::memcpy(&rgba8[pixel * 4], &word, 4);
+        }
     }
     return written;
 }
@@ -352,7 +379,7 @@ rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
     for (int b = 0; b < gl_.draw_buffers && alive; ++b) {
         if (!color_out_[size_t(b)]) continue;
         load_color(b, rgba);
-        write_color(ops_, fb_.color_buffer(b), fb_.width, px, rgba, alive);
+        write_color(ops_, fb_, b, px, rgba, alive);
     }
     return alive;
 }

@@ -13,6 +13,7 @@
 #include "ir/ir.h"
 #include "raster/fragment_ops.h"
 #include "raster/probe.h"
+#include "raster/quad_lanes.h"
 #include "raster/triangle.h"
 #include "runtime/backend.h"
 
@@ -92,9 +93,9 @@ private:
     struct InputPlan;
     struct Weights;
     template <bool kWrite>
-    unsigned early_depth_test(int base, unsigned mask);
+    unsigned early_depth_test(int base, QuadF z, unsigned mask);
     void compute_weights(Weights& w) const;
-    void interpolate(uint32_t attr, const Weights& w, Lanes& v) const;
+    void interpolate(uint32_t attr, const Weights& w, float* v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
     void fill_inputs(const Weights& w);
     template <bool kProbed>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <new>
 
 #include <fmt/format.h>
@@ -16,14 +17,15 @@ Status check_framebuffer_size(int w, int h) {
                              w, h, kMaxFramebufferSide, kMaxFramebufferPixels >> 20));
 }
 
-Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : float_color(float_target) {
+Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : float_color_(float_target) {
     if (!check_framebuffer_size(w, h)) return;
     width = w;
     height = h;
-    color.assign(size_t(w) * size_t(h) * 4, 0.0f);
-    more_colors.assign(size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers) - 1), color);
-    depth.assign(size_t(w) * size_t(h), 1.0f);
-    stencil.assign(size_t(w) * size_t(h), 0);
+    const size_t pixels = size_t(w) * size_t(h), buffers = size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers));
+    if (float_color_) float_colors_.assign(buffers, std::vector<float>(pixels * 4, 0.0f));
+    else rgba8_colors_.assign(buffers, std::vector<uint8_t>(pixels * 4, 0));
+    depth.assign(pixels, 1.0f);
+    stencil.assign(pixels, 0);
 }
 
 Result<Framebuffer> Framebuffer::create(int w, int h, bool float_target, int color_buffers) {
@@ -37,21 +39,55 @@ Result<Framebuffer> Framebuffer::create(int w, int h, bool float_target, int col
 
 namespace {
 
-void fill_pixels(float* p, size_t pixels, glm::vec4 c) {
-    for (size_t i = 0; i < pixels; ++i, p += 4)
-        for (int k = 0; k < 4; ++k) p[k] = c[k];
+// Fills `bytes` bytes at dst with `pattern` repeated: 16 bytes of whole
+// elements (pixels, depths) whose size divides 16, so that a tail is a
+// prefix of it. Clears are memory bound; whole 16-byte stores keep them so.
+void fill_repeated(void* dst, size_t bytes, const std::array<uint8_t, 16>& pattern) {
+    auto* p = static_cast<uint8_t*>(dst);
+    size_t i = 0;
+#if defined(__SSE2__)
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pattern.data()));
+    for (; i + 16 <= bytes; i += 16) _mm_storeu_si128(reinterpret_cast<__m128i*>(p + i), v);
+#else
+    for (; i + 16 <= bytes; i += 16) std::memcpy(p + i, pattern.data(), 16);
+#endif
+    std::memcpy(p + i, pattern.data(), bytes - i);
+}
+
+template <class T>
+std::array<uint8_t, 16> repeated(const T* element, size_t count) {
+    static_assert(16 % sizeof(T) == 0);
+    std::array<uint8_t, 16> out;
+    for (size_t i = 0; i < 16; i += count * sizeof(T)) std::memcpy(&out[i], element, count * sizeof(T));
+    return out;
+}
+
+// The 16-byte pattern of a colour clear in the framebuffer's format.
+std::array<uint8_t, 16> color_pattern(const Framebuffer& fb, const raster::StoredClear& clear) {
+    if (fb.float_color()) return repeated(&clear.c[0], 4);
+    return repeated(clear.c8.data(), 4);
+}
+
+size_t color_pixel_bytes(const Framebuffer& fb) { return fb.float_color() ? 4 * sizeof(float) : 4; }
+
+void* color_at(Framebuffer& fb, int buffer, int x, int y) {
+    size_t offset = (size_t(y) * size_t(fb.width) + size_t(x)) * 4;
+    if (fb.float_color()) return fb.color_data<float>(buffer).data() + offset;
+    return fb.color_data<uint8_t>(buffer).data() + offset;
 }
 
 }  // namespace
 
 // The whole storage, whatever its size (draw() rejects a mismatch with width x height).
 void Framebuffer::clear_color(glm::vec4 c) {
-    glm::vec4 stored = raster::stored_clear(*this, ClearValues{c, std::nullopt, std::nullopt}).c;
-    for (int i = 0; i < color_buffers(); ++i) fill_pixels(color_buffer(i).data(), color_buffer(i).size() / 4, stored);
+    const std::array<uint8_t, 16> pattern = color_pattern(*this, raster::stored_clear(*this, ClearValues{c, {}, {}}));
+    for (auto& buffer : float_colors_) fill_repeated(buffer.data(), buffer.size() * sizeof(float), pattern);
+    for (auto& buffer : rgba8_colors_) fill_repeated(buffer.data(), buffer.size(), pattern);
 }
 
 void Framebuffer::clear_depth(float d) {
-    std::fill(depth.begin(), depth.end(), raster::stored_clear(*this, ClearValues{std::nullopt, d, std::nullopt}).d);
+    float stored = raster::stored_clear(*this, ClearValues{std::nullopt, d, std::nullopt}).d;
+    fill_repeated(depth.data(), depth.size() * sizeof(float), repeated(&stored, 1));
 }
 
 void Framebuffer::clear_stencil(int s) {
@@ -60,8 +96,13 @@ void Framebuffer::clear_stencil(int s) {
 
 glm::vec4 Framebuffer::pixel(int x, int y, int buffer) const {
     if (x < 0 || y < 0 || x >= width || y >= height || buffer < 0 || buffer >= color_buffers()) return glm::vec4(0.0f);
-    const float* p = &color_buffer(buffer)[(size_t(y) * width + x) * 4];
-    return {p[0], p[1], p[2], p[3]};
+    size_t offset = (size_t(y) * size_t(width) + size_t(x)) * 4;
+    if (float_color_) {
+        const float* p = &float_colors_[size_t(buffer)][offset];
+        return {p[0], p[1], p[2], p[3]};
+    }
+    const uint8_t* p = &rgba8_colors_[size_t(buffer)][offset];
+    return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
 }
 
 namespace raster {
@@ -74,7 +115,8 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
     if (clear.stencil) out.s = uint8_t(*clear.stencil & ((1 << kStencilBits) - 1));
     if (clear.color) {
         out.c = *clear.color;
-        if (!fb.float_color)
+        for (int i = 0; i < 4; ++i) out.c8[size_t(i)] = to_unorm8(out.c[i]);
+        if (!fb.float_color())
             for (int i = 0; i < 4; ++i) out.c[i] = quantize_unorm8(out.c[i]);
     }
     if (clear.depth) out.d = std::isnan(*clear.depth) ? 0.0f : std::clamp(*clear.depth, 0.0f, 1.0f);
@@ -84,24 +126,32 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
 bool storage_matches(const Framebuffer& fb) {
     const size_t pixels = size_t(fb.width) * size_t(fb.height);
     if (fb.depth.size() != pixels || fb.stencil.size() != pixels || fb.color_buffers() > kMaxDrawBuffers) return false;
-    for (int i = 0; i < fb.color_buffers(); ++i)
-        if (fb.color_buffer(i).size() != pixels * 4) return false;
+    for (int i = 0; i < fb.color_buffers(); ++i) {
+        size_t channels = fb.float_color() ? fb.color_data<float>(i).size() : fb.color_data<uint8_t>(i).size();
+        if (channels != pixels * 4) return false;
+    }
     return true;
 }
 
 void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1) {
+    const std::array<uint8_t, 16> color = color_pattern(fb, clear), depth = repeated(&clear.d, 1);
+    const size_t pixels = size_t(x1 - x0);
     for (int y = y0; y < y1; ++y) {
         size_t row = size_t(y) * size_t(fb.width);
         for (int b = 0; clear.color && b < fb.color_buffers(); ++b)
-            fill_pixels(&fb.color_buffer(b)[(row + size_t(x0)) * 4], size_t(x1 - x0), clear.c);
-        if (clear.depth) std::fill(&fb.depth[row + size_t(x0)], &fb.depth[row + size_t(x1)], clear.d);
+            fill_repeated(color_at(fb, b, x0, y), pixels * color_pixel_bytes(fb), color);
+        if (clear.depth) fill_repeated(&fb.depth[row + size_t(x0)], pixels * sizeof(float), depth);
         if (clear.stencil) std::fill(&fb.stencil[row + size_t(x0)], &fb.stencil[row + size_t(x1)], clear.s);
     }
 }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c) {
-    float* p = &fb.color[(size_t(y) * fb.width + x) * 4];
-    for (int k = 0; k < 4; ++k) p[k] = fb.float_color ? c[k] : quantize_unorm8(c[k]);
+    if (fb.float_color()) {
+        std::memcpy(color_at(fb, 0, x, y), &c[0], sizeof c);
+        return;
+    }
+    auto* p = static_cast<uint8_t*>(color_at(fb, 0, x, y));
+    for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k]);
 }
 
 }  // namespace raster

@@ -2,6 +2,9 @@
 // Inline: the fragment stage calls them per lane.
 #pragma once
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -10,23 +13,36 @@
 
 namespace glslrun::raster {
 
-// RGBA8 storage: clamp to [0,1] and round to the nearest n/255 (NaN -> 0).
-inline float quantize_unorm8(float v) {
+// RGBA8 storage of one channel: clamped to [0,1] and rounded to the nearest
+// n/255, ties to even (NaN -> 0); n is the stored byte.
+inline float unorm8_steps(float v) {
     // Branch-free, so that loops over a batch vectorize. Adding 2^23 rounds
     // to an integer, ties to even: nearbyint() without a library call.
     constexpr float kRound = 8388608.0f;
     float c = v > 0.0f ? v : 0.0f;  // also NaN
     c = c < 1.0f ? c : 1.0f;
-    return ((c * 255.0f + kRound) - kRound) / 255.0f;
+    return (c * 255.0f + kRound) - kRound;
+}
+inline uint8_t to_unorm8(float v) { return uint8_t(unorm8_steps(v)); }
+// The value that RGBA8 storage reads back: n / 255.
+inline float quantize_unorm8(float v) { return unorm8_steps(v) / 255.0f; }
+
+// One pixel's RGBA8 bytes (R, G, B, A in memory order) as one word, for
+// stores of whole pixels.
+inline uint32_t pack_unorm8(const uint8_t rgba[4]) {
+    uint32_t word;
+    std::memcpy(&word, rgba, 4);
+    return word;
 }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 
 // A clear's values as the framebuffer stores them: the colour quantised for
-// RGBA8, the depth clamped to [0, 1] (NaN -> 0).
+// RGBA8 (`c` holds n/255, `c8` the bytes), the depth clamped to [0, 1] (NaN -> 0).
 struct StoredClear {
     bool color = false, depth = false, stencil = false;
     glm::vec4 c{0.0f};
+    std::array<uint8_t, 4> c8{};
     float d = 1.0f;
     uint8_t s = 0;
 };

@@ -96,10 +96,11 @@ Error png_failure(const std::string& path, const PngReader& r) {
 
 }  // namespace
 
-void framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* dst) {
-    const float* src = &fb.color_buffer(buffer)[size_t(y) * size_t(fb.width) * 4];
-    for (size_t i = 0; i < size_t(fb.width) * 4; ++i)
-        dst[i] = uint8_t(raster::quantize_unorm8(src[i]) * 255.0f + 0.5f);
+const uint8_t* framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* scratch) {
+    if (!fb.float_color()) return fb.color_row<uint8_t>(buffer, y);
+    const float* src = fb.color_row<float>(buffer, y);
+    for (size_t i = 0; i < size_t(fb.width) * 4; ++i) scratch[i] = raster::to_unorm8(src[i]);
+    return scratch;
 }
 
 namespace {
@@ -115,8 +116,7 @@ std::string staging_path(const std::string& path) {
     return fmt::format("{}.partial-{}-{:x}", path, getpid(), std::hash<std::thread::id>{}(std::this_thread::get_id()));
 }
 
-Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int height,
-                      const std::function<void(int y, uint8_t* dst)>& row_of) {
+Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int height, const RowSource& row_of) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -138,10 +138,7 @@ Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int h
     png_set_compression_level(png, 1);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
-    for (int y = 0; y < height; ++y) {
-        row_of(y, row.data());
-        png_write_row(png, row.data());
-    }
+    for (int y = 0; y < height; ++y) png_write_row(png, row_of(y, row.data()));
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     if (std::fflush(file) != 0) return Error("cannot write '" + path + "'");
@@ -150,8 +147,7 @@ Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int h
 
 }  // namespace
 
-Status write_rgba8(const std::string& path, int width, int height,
-                   const std::function<void(int y, uint8_t* dst)>& row_of) {
+Status write_rgba8(const std::string& path, int width, int height, const RowSource& row_of) {
     if (width <= 0 || height <= 0) return Error("cannot write an empty image as PNG");
     if (path.empty()) return Error("cannot write a PNG to an empty path");
     if (path == "-") return write_rgba8_to(stdout, "standard output", width, height, row_of);  // stays open
@@ -204,7 +200,7 @@ Status write_png(const Framebuffer& fb, const std::string& path, int buffer) {
     if (buffer < 0 || buffer >= fb.color_buffers())
         return Error("the framebuffer has no colour buffer " + std::to_string(buffer));
     return png::write_rgba8(path, fb.width, fb.height,
-                            [&](int y, uint8_t* dst) { png::framebuffer_row(fb, buffer, fb.height - 1 - y, dst); });
+                            [&](int y, uint8_t* scratch) { return png::framebuffer_row(fb, buffer, fb.height - 1 - y, scratch); });
 }
 
 }  // namespace glslrun

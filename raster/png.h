@@ -10,14 +10,17 @@
 
 namespace glslrun::png {
 
-// Framebuffer row y (0 = bottom, GL's order) as the RGBA8 bytes a PNG stores.
-void framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* dst);
+// Framebuffer row y (0 = bottom, GL's order) as the RGBA8 bytes a PNG
+// stores: the row itself for RGBA8 storage, else converted into `scratch`
+// (width * 4 bytes).
+const uint8_t* framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t* scratch);
 
-// Writes a width x height RGBA8 PNG; row(y, dst) fills image row y (0 = top)
-// with width * 4 bytes. One row at a time: a whole image's bytes (1 MB at
-// 512x512) cost more in page faults than their conversion.
-Status write_rgba8(const std::string& path, int width, int height,
-                   const std::function<void(int y, uint8_t* dst)>& row);
+// Writes a width x height RGBA8 PNG; row(y, scratch) returns image row y
+// (0 = top), width * 4 bytes, stored where it is or written into `scratch`.
+// One row at a time: a whole image's bytes (1 MB at 512x512) cost more in
+// page faults than their conversion.
+using RowSource = std::function<const uint8_t*(int y, uint8_t* scratch)>;
+Status write_rgba8(const std::string& path, int width, int height, const RowSource& row);
 
 struct Rgba8Image {
     int width = 0, height = 0;

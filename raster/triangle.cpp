@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace glslrun::raster {
 
@@ -62,23 +65,44 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
 
 uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
     const int64_t s = t.area2 > 0 ? 1 : -1;
-    std::array<int64_t, 3> row = edge_values(t, r.x0, r.y0), dx{}, dy{};
+    // Whole rows of the square, from column ox; the columns outside r are cut at the end.
+    std::array<int64_t, 3> row = edge_values(t, ox, r.y0), dx{}, dy{};
     for (size_t i = 0; i < 3; ++i) {
         row[i] = s * row[i] + t.bias[i];
         dx[i] = s * t.ea[i] * kSubpixelOne;
         dy[i] = s * t.eb[i] * kSubpixelOne;
     }
     uint64_t mask = 0;
+#if defined(__SSE2__)
+    // Two pixels per register: the sign bits of (e0 | e1 | e2) are the
+    // pixels outside an edge, and movmskpd gathers them.
+    __m128i step[3][kSquareSize / 2];
+    for (size_t i = 0; i < 3; ++i)
+        for (int j = 0; j < kSquareSize / 2; ++j)
+            step[i][j] = _mm_set_epi64x(dx[i] * (2 * j + 1), dx[i] * (2 * j));
+    for (int y = r.y0; y < r.y1; ++y) {
+        const __m128i e0 = _mm_set1_epi64x(row[0]), e1 = _mm_set1_epi64x(row[1]), e2 = _mm_set1_epi64x(row[2]);
+        unsigned outside = 0;
+        for (int j = 0; j < kSquareSize / 2; ++j) {
+            __m128i any = _mm_or_si128(_mm_or_si128(_mm_add_epi64(e0, step[0][j]), _mm_add_epi64(e1, step[1][j])),
+                                       _mm_add_epi64(e2, step[2][j]));
+            outside |= unsigned(_mm_movemask_pd(_mm_castsi128_pd(any))) << (2 * j);
+        }
+        mask |= uint64_t(~outside & 0xFFu) << ((y - oy) * kSquareSize);
+        for (size_t i = 0; i < 3; ++i) row[i] += dy[i];
+    }
+#else
     for (int y = r.y0; y < r.y1; ++y) {
         int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-        for (int x = r.x0; x < r.x1; ++x) {
+        for (int x = 0; x < kSquareSize; ++x) {
             uint64_t inside = ~uint64_t(e0 | e1 | e2) >> 63;  // 1 when no edge value is negative
-            mask |= inside << ((y - oy) * kSquareSize + (x - ox));
+            mask |= inside << ((y - oy) * kSquareSize + x);
             e0 += dx[0], e1 += dx[1], e2 += dx[2];
         }
         for (size_t i = 0; i < 3; ++i) row[i] += dy[i];
     }
-    return mask;
+#endif
+    return mask & square_columns(r.x0 - ox, r.x1 - ox);
 }
 
 std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {

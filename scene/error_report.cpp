@@ -58,7 +58,7 @@ Result<Frame> render_frame(Program& prog, const Scene& scene) {
     Frame f;
     f.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     size_t pixels = size_t(fb.width) * size_t(fb.height);
-    f.color = {fb.width, fb.height, 4, std::move(fb.color), std::vector<uint8_t>(pixels)};
+    f.color = {fb.width, fb.height, 4, {fb.color_data<float>(0).begin(), fb.color_data<float>(0).end()}, std::vector<uint8_t>(pixels)};
     for (size_t p = 0; p < pixels; ++p) {
         f.color.covered[p] = !unwritten(f.color.values[p * 4]);
         if (f.color.covered[p]) continue;

@@ -30,7 +30,7 @@ uint64_t ulp_distance(float a, float b) {
 }
 
 // The expression of raster/png.cpp and read_framebuffer(), byte for byte.
-int to_unorm8(float v) { return int(raster::quantize_unorm8(v) * 255.0f + 0.5f); }
+int to_unorm8(float v) { return raster::to_unorm8(v); }
 
 uint64_t ChannelError::add(float reference, float actual) {
     ++compared;

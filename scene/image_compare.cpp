@@ -71,16 +71,17 @@ Result<Image> read_png(const std::string& path) {
 
 Status write_png(const Image& image, const std::string& path) {
     if (Status st = check_image(image, "output"); !st) return st;
-    return png::write_rgba8(path, image.width, image.height, [&](int y, uint8_t* dst) {
-        std::copy_n(image.pixel(0, y), size_t(image.width) * 4, dst);
-    });
+    return png::write_rgba8(path, image.width, image.height, [&](int y, uint8_t*) { return image.pixel(0, y); });
 }
 
 Image read_framebuffer(const Framebuffer& fb, int buffer) {
     Image image{fb.width, fb.height, std::vector<uint8_t>(size_t(fb.width) * size_t(fb.height) * 4)};
+    const size_t row = size_t(fb.width) * 4;
     for (int y = 0; y < fb.height; ++y) {
         // The bytes glslrun::write_png stores.
-        png::framebuffer_row(fb, buffer, fb.height - 1 - y, &image.rgba[size_t(y) * size_t(fb.width) * 4]);
+        uint8_t* dst = &image.rgba[size_t(y) * row];
+        const uint8_t* src = png::framebuffer_row(fb, buffer, fb.height - 1 - y, dst);
+        if (src != dst) std::copy_n(src, row, dst);
     }
     return image;
 }
@@ -97,7 +98,7 @@ Result<Image> image_from_bottom_up(int width, int height, std::span<const uint8_
 
 Rgba8 to_rgba8(glm::vec4 color) {
     Rgba8 out{};
-    for (int c = 0; c < 4; ++c) out[size_t(c)] = uint8_t(raster::quantize_unorm8(color[c]) * 255.0f + 0.5f);
+    for (int c = 0; c < 4; ++c) out[size_t(c)] = raster::to_unorm8(color[c]);
     return out;
 }
 

@@ -443,7 +443,14 @@ inline constexpr int kMaxFramebufferSide = 16384;
 inline constexpr int64_t kMaxFramebufferPixels = int64_t(1) << 26;
 Status check_framebuffer_size(int width, int height);
 
-struct Framebuffer {
+// The colour buffers store RGBA8 (4 bytes a pixel: R, G, B, A, each n/255,
+// as GL_RGBA8; values are clamped and rounded on write) or, with
+// float_color, 4 floats a pixel (unclamped: the error report's precision).
+// Readers call pixel(); writers take a typed view of a buffer or a row
+// (uint8_t channels for RGBA8, float for float colour) after checking
+// float_color(). Rows go bottom up (GL's convention), width * 4 channels each.
+class Framebuffer {
+public:
     // color_buffers: 1..kMaxDrawBuffers colour buffers, all of one format.
     // A size that check_framebuffer_size refuses gives an empty (0x0)
     // framebuffer, which draw() refuses; create() returns the reason, and
@@ -451,18 +458,52 @@ struct Framebuffer {
     Framebuffer(int width, int height, bool float_color = false, int color_buffers = 1);
     static Result<Framebuffer> create(int width, int height, bool float_color = false, int color_buffers = 1);
     int width = 0, height = 0;
-    bool float_color = false;  // false: RGBA8 (values clamped and quantised on write)
-    std::vector<float> color;  // colour buffer 0: RGBA, row 0 at the bottom (GL convention)
-    std::vector<std::vector<float>> more_colors;  // colour buffers 1.. (glDrawBuffers), as `color`
     std::vector<float> depth;  // [0,1]
     std::vector<uint8_t> stencil;  // kStencilBits per pixel
-    int color_buffers() const { return 1 + int(more_colors.size()); }
-    std::vector<float>& color_buffer(int i) { return i == 0 ? color : more_colors[size_t(i - 1)]; }
-    const std::vector<float>& color_buffer(int i) const { return i == 0 ? color : more_colors[size_t(i - 1)]; }
+
+    bool float_color() const { return float_color_; }
+    int color_buffers() const { return int(float_color_ ? float_colors_.size() : rgba8_colors_.size()); }
+    // Colour buffer `buffer`'s channels (width * height * 4), as T: uint8_t
+    // for RGBA8, float for float colour. Empty for the other type or a
+    // buffer that does not exist.
+    template <class T>
+        requires std::is_same_v<T, uint8_t> || std::is_same_v<T, float>
+    std::span<T> color_data(int buffer = 0) { return data_of<T>(*this, buffer); }
+    template <class T>
+        requires std::is_same_v<T, uint8_t> || std::is_same_v<T, float>
+    std::span<const T> color_data(int buffer = 0) const { return data_of<const T>(*this, buffer); }
+    // Row y of it (0 = bottom): width * 4 channels; null where color_data is empty.
+    template <class T>
+    T* color_row(int buffer, int y) {
+        std::span<T> all = color_data<T>(buffer);
+        return all.empty() ? nullptr : all.data() + size_t(y) * size_t(width) * 4;
+    }
+    template <class T>
+    const T* color_row(int buffer, int y) const {
+        std::span<const T> all = color_data<T>(buffer);
+        return all.empty() ? nullptr : all.data() + size_t(y) * size_t(width) * 4;
+    }
+
     void clear_color(glm::vec4 c);  // every colour buffer, as glClear does
     void clear_depth(float d);
     void clear_stencil(int s);      // the low kStencilBits of s
+    // The stored colour: RGBA8 channels as n / 255.0f; (0, 0, 0, 0) outside.
     glm::vec4 pixel(int x, int y, int buffer = 0) const;
+
+private:
+    template <class T, class Self>
+    static std::span<T> data_of(Self& self, int buffer) {
+        auto& list = [&]() -> auto& {
+            if constexpr (std::is_same_v<std::remove_const_t<T>, float>) return self.float_colors_;
+            else return self.rgba8_colors_;
+        }();
+        if (buffer < 0 || size_t(buffer) >= list.size()) return {};
+        return list[size_t(buffer)];
+    }
+    bool float_color_ = false;
+    // The colour buffers of the framebuffer's format; the other list is empty.
+    std::vector<std::vector<uint8_t>> rgba8_colors_;
+    std::vector<std::vector<float>> float_colors_;
 };
 
 enum class Primitive { Points, Lines, LineStrip, LineLoop, Triangles, TriangleStrip,

@@ -25,7 +25,7 @@ TEST_CASE("hardening: a framebuffer beyond the limits is an Error, not bad_alloc
     CHECK(Framebuffer::create(16384, 4).ok());
     Framebuffer refused(100000, 100000);  // the constructor allocates nothing; draw() refuses it
     CHECK(refused.width == 0);
-    CHECK(refused.color.empty());
+    CHECK(refused.color_data<uint8_t>().empty());
     Program p = compile(kVs, kPassFs);
     auto st = draw(p, GLState{}, refused, Primitive::Triangles, {big_triangle()}, 3);
     REQUIRE_FALSE(st.ok());

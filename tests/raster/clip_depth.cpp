@@ -128,6 +128,11 @@ TEST_CASE("RGBA8 writes clamp and round to n/255; float targets keep values", "[
     write_color(fb, 3, 2, {1.5f, 0.5f, -1.0f, 0.2f});
     write_color(ffb, 3, 2, {1.5f, 0.5f, -1.0f, 0.2f});
     CHECK(fb.pixel(3, 2) == glm::vec4(1.0f, 128.0f / 255.0f, 0.0f, 51.0f / 255.0f));
+    // Four bytes a pixel.
+    REQUIRE(fb.color_data<uint8_t>().size() == 4 * 3 * 4);
+    CHECK(fb.color_data<float>().empty());
+    const uint8_t* stored = fb.color_row<uint8_t>(0, 2) + 3 * 4;
+    CHECK(std::vector<uint8_t>(stored, stored + 4) == std::vector<uint8_t>{255, 128, 0, 51});
     CHECK(ffb.pixel(3, 2) == glm::vec4(1.5f, 0.5f, -1.0f, 0.2f));
     CHECK(fb.pixel(2, 2) == glm::vec4(0.0f));
     CHECK(fb.pixel(9, 9) == glm::vec4(0.0f));

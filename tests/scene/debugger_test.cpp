@@ -2,6 +2,7 @@
 // programs, replays equal to the render bit for bit, the depth outcome of
 // every fragment at a pixel, and --find-nan naming the line and the pixel.
 // GLSLRUN_UPDATE_GOLDEN=1 rewrites tests/scene/traces/ instead of comparing.
+#include <algorithm>
 #include <bit>
 #include <cstdlib>
 #include <fstream>
@@ -105,7 +106,7 @@ TEST_CASE("golden traces of the lecture's spot programs", "[debug]") {
         auto scene = scene::load_scene(kRoot + "/scenes/" + c.scene);
         REQUIRE((prog && scene));
         REQUIRE(scene::render_scene(*prog, *scene, plain));
-        CHECK(plain.color == t.fb.color);
+        CHECK(std::ranges::equal(plain.color_data<float>(), t.fb.color_data<float>()));
         CHECK(plain.depth == t.fb.depth);
     }
 }

@@ -66,11 +66,12 @@ TEST_CASE("8-bit values follow the RGBA8 buffer's rounding", "[scene][error]") {
     CHECK(to_unorm8(std::nextafter(0.5f / 255.0f, 0.0f)) == 0);
     // Every value the framebuffer's PNG writer can meet agrees with read_framebuffer().
     Framebuffer fb(256, 1, /*float_color=*/true);
-    for (int i = 0; i < 256 * 4; ++i) fb.color[size_t(i)] = float(i - 100) / 700.0f;
+    std::span<float> color = fb.color_data<float>();
+    for (size_t i = 0; i < color.size(); ++i) color[i] = float(int(i) - 100) / 700.0f;
     Image image = read_framebuffer(fb);
-    for (size_t i = 0; i < fb.color.size(); ++i) {
-        INFO("value " << fb.color[i]);
-        CHECK(to_unorm8(fb.color[i]) == image.rgba[i]);
+    for (size_t i = 0; i < color.size(); ++i) {
+        INFO("value " << color[i]);
+        CHECK(to_unorm8(color[i]) == image.rgba[i]);
     }
 }
 

@@ -114,7 +114,8 @@ TEST_CASE("write_png and read_png round-trip RGBA8 exactly", "[compare]") {
 TEST_CASE("read_framebuffer gives the bytes glslrun::write_png stores", "[compare]") {
     Framebuffer fb(5, 2, /*float_color=*/true);
     const float values[] = {-1.0f, 0.0f, 0.5f, 1.0f / 255.0f, 0.49f / 255.0f, 0.51f / 255.0f, 0.999f, 1.0f, 2.0f, NAN};
-    for (size_t i = 0; i < fb.color.size(); ++i) fb.color[i] = values[i % 10];
+    std::span<float> color = fb.color_data<float>();
+    for (size_t i = 0; i < color.size(); ++i) color[i] = values[i % 10];
     std::string path = temp_path("fb.png");
     REQUIRE(glslrun::write_png(fb, path));
     auto file = read_png(path);

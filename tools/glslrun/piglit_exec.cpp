@@ -313,13 +313,8 @@ std::optional<TestResult> ShaderTestRun::probe(int line, const Probe& p) {
     const int n = p.rgba ? 4 : 3;
     for (int j = y; j < y + h; ++j) {
         for (int i = x; i < x + w; ++i) {
-            glm::vec4 v = fb_.pixel(i, j);
-            float observed[4];
-            for (int k = 0; k < 4; ++k) {
-                float c = v[k];
-                if (!fb_.float_color) c = std::round(std::clamp(c, 0.0f, 1.0f) * 255.0f) / 255.0f;
-                observed[k] = c;
-            }
+            const glm::vec4 v = fb_.pixel(i, j);  // RGBA8: n / 255
+            const float observed[4] = {v.r, v.g, v.b, v.a};
             bool ok = true;
             for (int k = 0; k < n; ++k)
                 if (!(std::fabs(observed[k] - p.color[k]) <= tolerance_[k])) ok = false;

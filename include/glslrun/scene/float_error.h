@@ -30,7 +30,7 @@ inline constexpr uint64_t kNanUlp = uint64_t(1) << 32;
 
 uint64_t ulp_distance(float a, float b);
 
-// Where a float channel lands in an RGBA8 buffer: raster::quantize_unorm8's
+// Where a float channel lands in an RGBA8 buffer: raster::to_unorm8's
 // rounding, as an integer 0..255.
 int to_unorm8(float v);
 
