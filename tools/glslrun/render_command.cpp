@@ -314,6 +314,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
     prog->exec.backend = o.backend;
+    prog->exec.jit_specialize_after = o.specialize_after;
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();

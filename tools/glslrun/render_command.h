@@ -24,6 +24,7 @@ struct RenderOptions {
     int frames = 0;  // --frames N: N images, uniform `time` = frame / kFramesPerSecond
     Precision precision = Precision::Precise;  // --precision
     Backend backend = Backend::Auto;           // --backend
+    uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
 };
 
 // The files on the command line, sorted by their extensions.
