@@ -4,29 +4,42 @@ namespace glslrun::raster {
 
 namespace {
 
-void add_tri(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking) {
-    out.push_back({{a, b, c}, provoking, 3});
+void add_tri(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t c, uint32_t provoking,
+             uint8_t edges = 7) {
+    out.push_back({{a, b, c}, provoking, 3, edges});
 }
 
 void add_line(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t provoking) {
     out.push_back({{a, b, b}, provoking, 2});
 }
 
+// Quad a-b-c-d: edges a-b, b-c, c-d and d-a.
 void add_quad(std::vector<AssembledPrim>& out, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
-              uint32_t provoking) {
-    add_tri(out, a, b, c, provoking);
-    add_tri(out, a, c, d, provoking);
+              uint32_t provoking, bool unfilled) {
+    if (unfilled) {
+        add_tri(out, a, b, d, provoking, 0b101);  // a-b, d-a
+        add_tri(out, b, c, d, provoking, 0b011);  // b-c, c-d
+        return;
+    }
+    add_tri(out, a, b, c, provoking, 0b011);  // a-b, b-c
+    add_tri(out, a, c, d, provoking, 0b110);  // c-d, d-a
+}
+
+// Polygon 0..n-1 as triangles (i+1, i+2, 0): edge 0-1 in the first, i+1 -> i+2 in each, n-1 -> 0 in the last.
+void add_unfilled_polygon(std::vector<AssembledPrim>& out, uint32_t n) {
+    for (uint32_t i = 0; i + 2 < n; ++i)
+        add_tri(out, i + 1, i + 2, 0, 0, uint8_t(1 | (i == 0 ? 4 : 0) | (i + 3 == n ? 2 : 0)));
 }
 
 }  // namespace
 
-std::vector<AssembledPrim> assemble(Primitive prim, uint32_t n) {
+std::vector<AssembledPrim> assemble(Primitive prim, uint32_t n, bool unfilled) {
     std::vector<AssembledPrim> out;
-    assemble(prim, n, out);
+    assemble(prim, n, out, unfilled);
     return out;
 }
 
-void assemble(Primitive prim, uint32_t n, std::vector<AssembledPrim>& out) {
+void assemble(Primitive prim, uint32_t n, std::vector<AssembledPrim>& out, bool unfilled) {
     out.clear();
     out.reserve(n);  // no mode makes more primitives than vertices
     switch (prim) {
@@ -56,13 +69,19 @@ void assemble(Primitive prim, uint32_t n, std::vector<AssembledPrim>& out) {
         for (uint32_t i = 1; i + 1 < n; ++i) add_tri(out, 0, i, i + 1, i + 1);
         break;
     case Primitive::Quads:
-        for (uint32_t i = 0; i + 3 < n; i += 4) add_quad(out, i, i + 1, i + 2, i + 3, i + 3);
+        for (uint32_t i = 0; i + 3 < n; i += 4) add_quad(out, i, i + 1, i + 2, i + 3, i + 3, unfilled);
         break;
     case Primitive::QuadStrip:
-        for (uint32_t i = 0; i + 3 < n; i += 2) add_quad(out, i, i + 1, i + 3, i + 2, i + 3);
+        for (uint32_t i = 0; i + 3 < n; i += 2) add_quad(out, unfilled ? i + 2 : i, unfilled ? i : i + 1, unfilled ? i + 1 : i + 3, unfilled ? i + 3 : i + 2,
+                     i + 3, unfilled);
         break;
     case Primitive::Polygon:
-        for (uint32_t i = 1; i + 1 < n; ++i) add_tri(out, 0, i, i + 1, 0);
+        if (unfilled) {
+            add_unfilled_polygon(out, n);
+            break;
+        }
+        for (uint32_t i = 1; i + 1 < n; ++i)
+            add_tri(out, 0, i, i + 1, 0, uint8_t((i == 1 ? 1 : 0) | 2 | (i + 2 == n ? 4 : 0)));
         break;
     }
 }

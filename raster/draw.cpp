@@ -115,30 +115,84 @@ void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const
     out.bounds.push_back(setup.bbox);
 }
 
+// How a polygon's edges and vertices are drawn in glPolygonMode's line and
+// point modes: with the polygon's facing, its colours and its depth offset.
+struct EdgeStyle {
+    bool front = true;
+    bool back_colors = false;
+    float z_offset = 0;
+    int64_t provoking = -1;  // a polygon's points: the vertex whose colours flat shading gives them
+};
+
+// GL 2.1 §3.5.5: factor * max(|dz/dx|, |dz/dy|) + units * r, r the smallest
+// resolvable difference of a 24-bit depth buffer; when the mode's enable is on.
+float polygon_offset(const GLState& gl, const FsVertex* v, PolygonMode mode) {
+    bool on = mode == PolygonMode::Fill   ? gl.polygon_offset_fill
+              : mode == PolygonMode::Line ? gl.polygon_offset_line
+                                          : gl.polygon_offset_point;
+    if (!on) return 0;
+    double x1 = v[1].win.x - v[0].win.x, y1 = v[1].win.y - v[0].win.y, z1 = double(v[1].z) - v[0].z;
+    double x2 = v[2].win.x - v[0].win.x, y2 = v[2].win.y - v[0].win.y, z2 = double(v[2].z) - v[0].z;
+    double area = x1 * y2 - x2 * y1, slope = 0;
+    if (area != 0) slope = std::max(std::fabs((z1 * y2 - z2 * y1) / area), std::fabs((x1 * z2 - x2 * z1) / area));
+    constexpr double kDepthResolution = 1.0 / double(1 << 24);
+    return float(slope * gl.polygon_offset_factor + kDepthResolution * gl.polygon_offset_units);
+}
+
+void draw_segment(const DrawContext& c, SetupOut& out, uint32_t a, uint32_t b, uint32_t provoking_id,
+                  const EdgeStyle& style);
+void draw_point(const DrawContext& c, SetupOut& out, uint32_t id, const EdgeStyle& style);
+
+// A triangle of the arrays: its vertices and which of its edges are the drawn primitive's.
+struct TriangleIds {
+    std::array<uint32_t, 3> ids;
+    uint8_t edges = 7;
+};
+
+// glPolygonMode(GL_LINE / GL_POINT): the boundary edges (each clipped as a
+// line) or their first vertices (each clipped as a point). Edges in Mesa's
+// order (v2-v0, v0-v1, v1-v2), which decides the pixels two edges share.
+void draw_unfilled(const DrawContext& c, SetupOut& out, const TriangleIds& tri, PolygonMode mode,
+                   uint32_t provoking_id, const EdgeStyle& style) {
+    for (size_t k : {size_t(2), size_t(0), size_t(1)}) {
+        if (mode == PolygonMode::Line && ((tri.edges >> k) & 1u))
+            draw_segment(c, out, tri.ids[k], tri.ids[(k + 1) % 3], provoking_id, style);
+    }
+    for (size_t k = 0; k < 3 && mode == PolygonMode::Point; ++k)
+        if ((tri.edges >> k) & 1u) draw_point(c, out, tri.ids[k], style);
+}
+
 // A convex polygon of n <= N vertices in the view volume: facing, culling,
-// attributes, then a fan of triangles.
+// polygon mode and offset, attributes, then a fan of triangles.
 // `verts` holds the vertices' window positions.
 template <size_t N>
 void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, std::array<FsVertex, N>& verts,
-                  size_t n, uint32_t provoking_id) {
+                  size_t n, uint32_t provoking_id, const TriangleIds& tri) {
     double area = signed_area(verts.data(), n);
     if (!(area != 0.0)) return;  // degenerate or NaN
     bool front = (area > 0) == c.gl.front_ccw;
-    if (c.gl.cull_face && front != c.gl.cull_back) return;
+    if (c.gl.cull_face && (c.gl.cull_front_and_back || front != c.gl.cull_back)) return;
     bool back_colors = c.gl.vertex_program_two_side && !front;
+    PolygonMode mode = c.gl.polygon_mode[front ? 0 : 1];
+    float offset = polygon_offset(c.gl, verts.data(), mode);
+    if (mode != PolygonMode::Fill)
+        return draw_unfilled(c, out, tri, mode, provoking_id, {front, back_colors, offset, provoking_id});
+    if (offset != 0.0f)
+        for (size_t i = 0; i < n; ++i) verts[i].z += offset;
     set_attrs(c, out, poly, n, provoking_id, back_colors, verts.data());
     for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, out, verts[0], verts[k], verts[k + 1], front);
 }
 
-void draw_triangle(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    const ClipVertex* tri[3] = {&c.vertices[ids[0]], &c.vertices[ids[1]], &c.vertices[ids[2]]};
+void draw_triangle(const DrawContext& c, SetupOut& out, const TriangleIds& tri, uint32_t provoking_id) {
+    const std::array<uint32_t, 3>& ids = tri.ids;
+    const ClipVertex* corners[3] = {&c.vertices[ids[0]], &c.vertices[ids[1]], &c.vertices[ids[2]]};
     uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
     if (codes[0] & codes[1] & codes[2]) return;
     if (!(codes[0] | codes[1] | codes[2])) {
         std::array<FsVertex, 3> verts{c.window[ids[0]], c.window[ids[1]], c.window[ids[2]]};
-        return draw_polygon(c, out, tri, verts, 3, provoking_id);
+        return draw_polygon(c, out, corners, verts, 3, provoking_id, tri);
     }
-    ClipPolygon poly{*tri[0], *tri[1], *tri[2]};
+    ClipPolygon poly{*corners[0], *corners[1], *corners[2]};
     clip_polygon(poly, c.clip, out.arena);
     if (poly.size() < 3) return;
     std::array<const ClipVertex*, kMaxClipVertices> clipped;
@@ -147,34 +201,54 @@ void draw_triangle(const DrawContext& c, SetupOut& out, const std::array<uint32_
         clipped[i] = &poly[i];
         to_window(c, poly[i].pos, verts[i]);
     }
-    draw_polygon(c, out, clipped.data(), verts, poly.size(), provoking_id);
+    draw_polygon(c, out, clipped.data(), verts, poly.size(), provoking_id, tri);
 }
 
-void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    ClipVertex ends[2] = {c.vertices[ids[0]], c.vertices[ids[1]]};
+// A line's pixels lie within one pixel of its end points, and a wide line's
+// within half its width more.
+Rect line_rect(const FsPrimitive& p) {
+    glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
+    int reach = 1 + p.line_width / 2;
+    return {pixel_floor(lo.x) - reach, pixel_floor(lo.y) - reach, pixel_floor(hi.x) + 1 + reach,
+            pixel_floor(hi.y) + 1 + reach};
+}
+
+void draw_segment(const DrawContext& c, SetupOut& out, uint32_t a, uint32_t b, uint32_t provoking_id,
+                  const EdgeStyle& style) {
+    ClipVertex ends[2] = {c.vertices[a], c.vertices[b]};
     const ClipVertex* end_ptrs[2] = {&ends[0], &ends[1]};
-    uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
+    uint32_t ca = c.outcodes[a], cb = c.outcodes[b];
     if (ca & cb) return;
     if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, out.arena)) return;
     FsPrimitive p;
     p.count = 2;
+    p.front = style.front;
+    p.line_width = line_pixels(c.gl.line_width);
     to_window(c, ends[0].pos, p.v[0]);
     to_window(c, ends[1].pos, p.v[1]);
-    set_attrs(c, out, end_ptrs, 2, provoking_id, false, p.v.data());
+    p.v[0].z += style.z_offset;
+    p.v[1].z += style.z_offset;
+    set_attrs(c, out, end_ptrs, 2, provoking_id, style.back_colors, p.v.data());
     set_line_planes(p);
-    // A line's pixels lie within one pixel of its end points.
-    glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
-    bin(out, p, {pixel_floor(lo.x) - 1, pixel_floor(lo.y) - 1, pixel_floor(hi.x) + 2, pixel_floor(hi.y) + 2});
+    bin(out, p, line_rect(p));
 }
 
-void draw_point(const DrawContext& c, SetupOut& out, uint32_t id) {
+void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
+    draw_segment(c, out, ids[0], ids[1], provoking_id, {});
+}
+
+void draw_point(const DrawContext& c, SetupOut& out, uint32_t id, const EdgeStyle& style) {
     const ClipVertex& v = c.vertices[id];
     ClipParams frustum = c.clip;
     frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
     if (outcode(v, frustum)) return;
     FsPrimitive p;
+    p.front = style.front;
     to_window(c, v.pos, p.v[0]);
-    p.v[0].attrs = fs_attrs(c, out, v, false);
+    p.v[0].z += style.z_offset;
+    const ClipVertex* own = &v;
+    if (style.provoking >= 0) set_attrs(c, out, &own, 1, uint32_t(style.provoking), style.back_colors, p.v.data());
+    else p.v[0].attrs = fs_attrs(c, out, v, style.back_colors);
     p.count = 1;
     p.point_center = p.v[0].win;
     float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
@@ -246,6 +320,11 @@ Status check_draw_input(const GLState& gl, const Framebuffer& fb, Primitive prim
         return Error(fmt::format("primitive {} is not a GL primitive (GL_INVALID_ENUM)", int(prim)));
     if (!enum_in_range(gl.depth_func, CompareFunc::Always))
         return Error(fmt::format("depth function {} is not a GL compare function (GL_INVALID_ENUM)", int(gl.depth_func)));
+    for (PolygonMode mode : gl.polygon_mode)
+        if (!enum_in_range(mode, PolygonMode::Fill))
+            return Error(fmt::format("polygon mode {} is not GL_POINT, GL_LINE or GL_FILL (GL_INVALID_ENUM)", int(mode)));
+    if (!(gl.line_width > 0.0f))
+        return Error(fmt::format("line width {} must be > 0 (GL_INVALID_VALUE)", gl.line_width));
     if (gl.viewport[2] < 0 || gl.viewport[3] < 0)
         return Error(fmt::format("viewport {}x{}: width and height must not be negative (GL_INVALID_VALUE)",
                                  gl.viewport[2], gl.viewport[3]));
@@ -310,11 +389,11 @@ void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<Assembl
         out.current_ids = ids;
         if (p.count == 3) {
             ++out.triangles;
-            draw_triangle(c, out, ids, id(p.provoking));
+            draw_triangle(c, out, {ids, p.edges}, id(p.provoking));
         } else if (p.count == 2) {
             draw_line(c, out, ids, id(p.provoking));
         } else {
-            draw_point(c, out, ids[0]);
+            draw_point(c, out, ids[0], {});
         }
     }
 }
@@ -325,7 +404,8 @@ std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint
                                        std::span<const uint32_t> indices, unsigned threads, DrawScratch& scratch) {
     uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
     std::vector<AssembledPrim>& assembled = scratch.assembled;
-    assemble(prim, stream, assembled);
+    bool unfilled = c.gl.polygon_mode[0] != PolygonMode::Fill || c.gl.polygon_mode[1] != PolygonMode::Fill;
+    assemble(prim, stream, assembled, unfilled);
     size_t jobs = (assembled.size() + kSetupJob - 1) / kSetupJob;
     unsigned workers = assembled.size() < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
     // One thread: one job, whose primitives need no copy. A primitive's setup

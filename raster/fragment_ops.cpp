@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <utility>
 
 #include "raster/framebuffer.h"
 
@@ -94,6 +95,46 @@ uint32_t combine8(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_
     return s;
 }
 
+// One function per factor and equation: the switch folds away at compile time.
+template <BlendFactor F>
+U8x4 factor8_of(const U8x4& s, const U8x4& d, const U8x4& c) { return factor8(F, s, d, c); }
+template <BlendEquation E>
+uint32_t combine8_of(uint32_t s, uint32_t sf, uint32_t d, uint32_t df) { return combine8(E, s, sf, d, df); }
+
+template <size_t... I>
+constexpr std::array<ResolvedBlend::Factor8, sizeof...(I)> factor8_table(std::index_sequence<I...>) {
+    return {&factor8_of<BlendFactor(I)>...};
+}
+template <size_t... I>
+constexpr std::array<ResolvedBlend::Combine8, sizeof...(I)> combine8_table(std::index_sequence<I...>) {
+    return {&combine8_of<BlendEquation(I)>...};
+}
+constexpr auto kFactor8 = factor8_table(std::make_index_sequence<size_t(BlendFactor::SrcAlphaSaturate) + 1>());
+constexpr auto kCombine8 = combine8_table(std::make_index_sequence<size_t(BlendEquation::Max) + 1>());
+
+U8x4 widen(const Unorm8& v) { return {v[0], v[1], v[2], v[3]}; }
+
+// blend_unorm8 through the picked functions.
+Unorm8 blend8_picked(const ResolvedBlend& b, const Unorm8& src, const Unorm8& dst) {
+    const U8x4 s8 = widen(src), d8 = widen(dst), &c8 = b.constant8;
+    U8x4 sf = b.src_rgb(s8, d8, c8), df = b.dst_rgb(s8, d8, c8);
+    uint32_t sfa = b.src_alpha(s8, d8, c8)[3], dfa = b.dst_alpha(s8, d8, c8)[3];
+    Unorm8 out;
+    for (size_t k = 0; k < 3; ++k) out[k] = uint8_t(b.rgb(s8[k], sf[k], d8[k], df[k]));
+    out[3] = uint8_t(b.alpha(s8[3], sfa, d8[3], dfa));
+    return out;
+}
+
+// glBlendFunc(S, D) with one equation E for all channels, inlined whole.
+template <BlendFactor S, BlendFactor D, BlendEquation E>
+Unorm8 blend8_same(const ResolvedBlend& b, const Unorm8& src, const Unorm8& dst) {
+    const U8x4 s8 = widen(src), d8 = widen(dst);
+    U8x4 sf = factor8(S, s8, d8, b.constant8), df = factor8(D, s8, d8, b.constant8);
+    Unorm8 out;
+    for (size_t k = 0; k < 4; ++k) out[k] = uint8_t(combine8(E, s8[k], sf[k], d8[k], df[k]));
+    return out;
+}
+
 size_t pixel_index(const LanePixels& px, int lane, int width) {
     return size_t(px.y[lane]) * size_t(width) + size_t(px.x[lane]);
 }
@@ -131,10 +172,36 @@ FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
       depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color()),
       float_color(fb.float_color()), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
     blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
+    resolved_blend = resolve_blend(blend_state);
     for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
     bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
     plain = !alpha_test && !stencil_test && !blend && !logic_op && all_channels && gl.draw_buffers == 1 &&
             (depth_write || !depth_test);
+}
+
+ResolvedBlend resolve_blend(const BlendState& s) {
+    ResolvedBlend b;
+    b.state = s;
+    b.constant8 = {to_unorm8(s.color.r), to_unorm8(s.color.g), to_unorm8(s.color.b), to_unorm8(s.color.a)};
+    b.src_rgb = kFactor8[size_t(s.src_rgb)];
+    b.dst_rgb = kFactor8[size_t(s.dst_rgb)];
+    b.src_alpha = kFactor8[size_t(s.src_alpha)];
+    b.dst_alpha = kFactor8[size_t(s.dst_alpha)];
+    b.rgb = kCombine8[size_t(s.equation_rgb)];
+    b.alpha = kCombine8[size_t(s.equation_alpha)];
+    b.pixel8 = &blend8_picked;
+    // SrcAlphaSaturate's alpha factor is 1, not its RGB's: not a "same" pair.
+    bool same = s.src_rgb == s.src_alpha && s.dst_rgb == s.dst_alpha && s.equation_rgb == s.equation_alpha &&
+                s.src_rgb != BlendFactor::SrcAlphaSaturate && s.equation_rgb == BlendEquation::Add;
+    if (!same) return b;
+    using F = BlendFactor;
+    constexpr auto kAdd = BlendEquation::Add;
+    if (s.src_rgb == F::SrcAlpha && s.dst_rgb == F::OneMinusSrcAlpha) b.pixel8 = &blend8_same<F::SrcAlpha, F::OneMinusSrcAlpha, kAdd>;
+    if (s.src_rgb == F::One && s.dst_rgb == F::One) b.pixel8 = &blend8_same<F::One, F::One, kAdd>;
+    if (s.src_rgb == F::One && s.dst_rgb == F::OneMinusSrcAlpha) b.pixel8 = &blend8_same<F::One, F::OneMinusSrcAlpha, kAdd>;
+    if (s.src_rgb == F::SrcAlpha && s.dst_rgb == F::One) b.pixel8 = &blend8_same<F::SrcAlpha, F::One, kAdd>;
+    if (s.src_rgb == F::DstColor && s.dst_rgb == F::Zero) b.pixel8 = &blend8_same<F::DstColor, F::Zero, kAdd>;
+    return b;
 }
 
 uint32_t stencil_op(StencilOp op, uint32_t value, int ref) {
@@ -243,7 +310,7 @@ void write_unorm8(const FragmentOps& ops, uint8_t* buffer, int width, const Lane
         if (ops.logic_op) {
             for (size_t k = 0; k < 4; ++k) out[k] = uint8_t(logic_op(ops.logic, out[k], d[k]));
         } else if (ops.blend) {
-            out = blend_unorm8(ops.blend_state, out, d);
+            out = ops.resolved_blend.pixel8(ops.resolved_blend, out, d);
         }
         for (size_t k = 0; k < 4; ++k)
             if (ops.color_mask[k]) dst[k] = out[k];

@@ -17,6 +17,26 @@ namespace glslrun::raster {
 
 using Lanes = std::array<float, rt::kLanes>;
 
+using U8x4 = std::array<uint32_t, 4>;
+using Unorm8 = std::array<uint8_t, 4>;
+
+// Blending with the draw's factors and equations picked once (resolve_blend),
+// so that no pixel switches over them: `pixel8` blends one pixel of an RGBA8
+// buffer as blend_unorm8() does, `pixel_float` one of a float buffer as
+// blend() does, bit for bit. The common glBlendFunc pairs get a function of
+// their own; the others call the picked factor and equation functions.
+struct ResolvedBlend {
+    using Pixel8 = Unorm8 (*)(const ResolvedBlend&, const Unorm8& src, const Unorm8& dst);
+    using Factor8 = U8x4 (*)(const U8x4& s, const U8x4& d, const U8x4& c);
+    using Combine8 = uint32_t (*)(uint32_t s, uint32_t sf, uint32_t d, uint32_t df);
+    Pixel8 pixel8 = nullptr;
+    Factor8 src_rgb = nullptr, dst_rgb = nullptr, src_alpha = nullptr, dst_alpha = nullptr;
+    Combine8 rgb = nullptr, alpha = nullptr;
+    U8x4 constant8{};  // the blend colour as bytes
+    BlendState state;
+};
+ResolvedBlend resolve_blend(const BlendState& s);
+
 // The state of the operations, resolved once per draw from GLState.
 struct FragmentOps {
     FragmentOps(const GLState& gl, const Framebuffer& fb);
@@ -32,6 +52,7 @@ struct FragmentOps {
     CompareFunc depth_func = CompareFunc::Less;
     bool blend = false, logic_op = false, float_color = false;
     BlendState blend_state;
+    ResolvedBlend resolved_blend;
     LogicOp logic = LogicOp::Copy;
     std::array<bool, 4> color_mask{true, true, true, true};
 };
@@ -61,7 +82,6 @@ void write_color(const FragmentOps& ops, Framebuffer& fb, int buffer, const Lane
 // colour, `dst` the buffer's.
 glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst);
 // One RGBA8 pixel's channels.
-using Unorm8 = std::array<uint8_t, 4>;
 // The same into an RGBA8 buffer, in 8-bit fixed point as GPUs' blend units
 // and llvmpipe compute it: the source, factors and constant are n/255 values
 // and each product is rounded to n/255 before the equation (saturating)

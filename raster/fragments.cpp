@@ -14,6 +14,7 @@ struct FragmentStage::InputPlan {
     enum class Source { Varying, FragCoord, FrontFacing, PointCoord, Zero } source = Source::Zero;
     const ir::Binding* binding = nullptr;
     uint32_t attr_offset = 0;  // Varying: where in the attribute vector
+    bool sprite_coord = false;  // gl_TexCoord[i] of a unit with GL_COORD_REPLACE (point sprites)
 };
 
 // Per lane of the batch: the perspective-correct weights of vertices 1 and 2
@@ -106,6 +107,9 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     for (size_t i = 0; i < fs.inputs.size(); ++i) {
         const ir::Binding& b = fs.inputs[i];
         InputPlan plan{InputPlan::Source::Zero, &b, 0};
+        for (int unit = 0; unit < 8 && gl.point_sprite; ++unit)
+            if ((gl.coord_replace >> unit) & 1u && b.name == "gl_TexCoord[" + std::to_string(unit) + "]")
+                plan.sprite_coord = true;
         if (b.name == "gl_FragCoord") plan.source = InputPlan::Source::FragCoord;
         else if (b.name == "gl_FrontFacing") plan.source = InputPlan::Source::FrontFacing;
         else if (b.name == "gl_PointCoord") plan.source = InputPlan::Source::PointCoord;
@@ -259,18 +263,30 @@ void FragmentStage::builtin_input(int source, uint32_t c, const Weights& w, Lane
     }
 }
 
+// GL_COORD_REPLACE: on points, component c of gl_TexCoord[i] is that of
+// (gl_PointCoord, 0, 1); other primitives keep their values.
+void FragmentStage::replace_sprite_coord(uint32_t c, const Weights& w, Lanes& v) const {
+    Lanes coord{};
+    if (c < 2) builtin_input(int(InputPlan::Source::PointCoord), c, w, coord);
+    for (int q = 0; q < quads_; ++q) {
+        if (quad_prim_[size_t(q)]->count != 1) continue;
+        for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = c < 2 ? coord[size_t(lane)] : c == 3 ? 1.0f : 0.0f;
+    }
+}
+
 void FragmentStage::fill_inputs(const Weights& w) {
     Lanes v{};
     for (const InputPlan& p : inputs_) {
         const ir::Binding& b = *p.binding;
         for (uint32_t c = 0; c < b.count; ++c) {
             // Float varyings straight into the executor's register.
-            if (p.source == InputPlan::Source::Varying && b.kind == ir::Kind::F32) {
+            if (p.source == InputPlan::Source::Varying && b.kind == ir::Kind::F32 && !p.sprite_coord) {
                 interpolate(p.attr_offset + c, w, interp_->lanes_f(b.first + c));
                 continue;
             }
             if (p.source == InputPlan::Source::Varying) interpolate(p.attr_offset + c, w, v.data());
             else builtin_input(int(p.source), c, w, v);
+            if (p.sprite_coord) replace_sprite_coord(c, w, v);
             store_lanes(*interp_, b.kind, b.first + c, v, quads_ * 4);
         }
     }

@@ -39,6 +39,7 @@ struct FsPrimitive {
     bool front = true;
     glm::vec2 point_center{0.0f};  // points only: window position and size (whole pixels)
     float point_size = 1;
+    int line_width = 1;  // lines only: whole pixels (line_pixels)
     // Interpolation (set_*_planes): the screen-space (linear) weights of the
     // three vertices, and the window depth.
     int ox = 0, oy = 0;
@@ -97,6 +98,7 @@ private:
     void compute_weights(Weights& w) const;
     void interpolate(uint32_t attr, const Weights& w, float* v) const;
     void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
+    void replace_sprite_coord(uint32_t c, const Weights& w, Lanes& v) const;
     void fill_inputs(const Weights& w);
     template <bool kProbed>
     rt::LaneMask write_outputs(rt::LaneMask covered);

@@ -10,6 +10,11 @@ int point_pixels(float size) {
     return std::clamp(int(std::floor(std::min(size, 4096.0f) + 0.5f)), 1, 4096);
 }
 
+int line_pixels(float width) {
+    if (!(width > 0.0f)) return 1;
+    return std::clamp(int(std::floor(std::min(width, 255.0f) + 0.5f)), 1, 255);
+}
+
 Rect point_rect(const FsPrimitive& prim) {
     int s = point_pixels(prim.point_size);
     int x0 = pixel_floor(prim.point_center.x - float(s) * 0.5f + 0.5f);
@@ -41,13 +46,16 @@ void rasterize_line(FragmentStage& stage, const FsPrimitive& prim, const Rect& s
         stage.add_quad(prim, qx, qy, mask);
         mask = 0;
     };
-    for_each_line_pixel(prim.v[0].win, prim.v[1].win, scissor, [&](int x, int y) {
-        int nx = x & ~1, ny = y & ~1;
-        if (mask && (nx != qx || ny != qy)) emit();
-        qx = nx;
-        qy = ny;
-        mask |= 1u << ((x - nx) + 2 * (y - ny));
-    });
+    for_each_line_pixel(
+        prim.v[0].win, prim.v[1].win, scissor,
+        [&](int x, int y) {
+            int nx = x & ~1, ny = y & ~1;
+            if (mask && (nx != qx || ny != qy)) emit();
+            qx = nx;
+            qy = ny;
+            mask |= 1u << ((x - nx) + 2 * (y - ny));
+        },
+        prim.line_width);
     emit();
 }
 

@@ -3,7 +3,6 @@
 // Formatting and files: error_report_format.cpp.
 #include "glslrun/scene/error_report.h"
 
-#include <bit>
 #include <chrono>
 #include <cmath>
 
@@ -21,13 +20,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The colour buffer is cleared to this NaN before drawing, so that pixels
-// still holding it were written by no fragment. Shaders cannot make it:
-// GLSL 1.10 has no bit casts, and arithmetic NaNs carry the default payload
-// or an input's, and no input holds this one.
-constexpr uint32_t kUnwrittenBits = 0x7fc0c1eau;
-
-bool unwritten(float v) { return std::bit_cast<uint32_t>(v) == kUnwrittenBits; }
 
 struct Frame {
     FloatImage color, depth;
@@ -43,28 +35,55 @@ Result<Program> compile_for(const std::vector<ShaderSource>& vertex, const std::
     return prog;
 }
 
-// Draws the scene into a float framebuffer and splits it into the colour and
-// depth planes with their coverage. Unwritten pixels get the clear values an
-// RGBA8 framebuffer would hold.
-Result<Frame> render_frame(Program& prog, const Scene& scene) {
+// The scene drawn into a float framebuffer cleared to `clear` (the scene's
+// depth and stencil clears); its colour buffer 0.
+Result<std::vector<float>> draw_cleared_to(Program& prog, const Scene& scene, glm::vec4 clear,
+                                           std::vector<float>* depth) {
     auto created = Framebuffer::create(scene.width, scene.height, /*float_color=*/true, color_buffers(scene));
     if (!created) return created.error();
     Framebuffer& fb = *created;
+    if (auto stats = draw_scene_objects(prog, scene, fb, ClearValues{clear, scene.clear_depth, scene.clear_stencil});
+        !stats)
+        return stats.error();
+    if (depth) *depth = std::move(fb.depth);
+    std::span<const float> color = fb.color_data<float>(0);
+    return std::vector<float>(color.begin(), color.end());
+}
+
+// A colour unlike `c` in every channel, within [0, 1] as blending expects.
+glm::vec4 other_clear_color(glm::vec4 c) {
+    for (int k = 0; k < 4; ++k) c[k] = c[k] >= 0.5f ? 0.0f : 1.0f;
+    return c;
+}
+
+// Draws the scene into a float framebuffer and splits it into the colour and
+// depth planes with their coverage. The framebuffer holds the scene's clear
+// colour, as GL's does, so blending reads it; a second draw over another
+// clear colour tells the written pixels: one that holds its clear colour
+// both times was written by no fragment (or by blending that kept it).
+// Unwritten pixels get the clear values an RGBA8 framebuffer would hold.
+Result<Frame> render_frame(Program& prog, const Scene& scene) {
     auto start = Clock::now();
-    fb.clear_color(glm::vec4(std::bit_cast<float>(kUnwrittenBits)));
-    fb.clear_depth(scene.clear_depth);
-    fb.clear_stencil(scene.clear_stencil);
-    if (auto stats = draw_scene_objects(prog, scene, fb); !stats) return stats.error();
+    std::vector<float> depth;
+    auto color = draw_cleared_to(prog, scene, scene.clear_color, &depth);
+    if (!color) return color.error();
     Frame f;
     f.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    size_t pixels = size_t(fb.width) * size_t(fb.height);
-    f.color = {fb.width, fb.height, 4, {fb.color_data<float>(0).begin(), fb.color_data<float>(0).end()}, std::vector<uint8_t>(pixels)};
+    const glm::vec4 other = other_clear_color(scene.clear_color);
+    auto probe = draw_cleared_to(prog, scene, other, nullptr);
+    if (!probe) return probe.error();
+    size_t pixels = size_t(scene.width) * size_t(scene.height);
+    f.color = {scene.width, scene.height, 4, std::move(*color), std::vector<uint8_t>(pixels)};
     for (size_t p = 0; p < pixels; ++p) {
-        f.color.covered[p] = !unwritten(f.color.values[p * 4]);
-        if (f.color.covered[p]) continue;
+        bool changed = false;
+        for (size_t k = 0; k < 4; ++k)
+            changed = changed || f.color.values[p * 4 + k] != scene.clear_color[int(k)] ||
+                      (*probe)[p * 4 + k] != other[int(k)];
+        f.color.covered[p] = changed;
+        if (changed) continue;
         for (int k = 0; k < 4; ++k) f.color.values[p * 4 + size_t(k)] = raster::quantize_unorm8(scene.clear_color[k]);
     }
-    f.depth = {fb.width, fb.height, 1, std::move(fb.depth), f.color.covered};
+    f.depth = {scene.width, scene.height, 1, std::move(depth), f.color.covered};
     return f;
 }
 

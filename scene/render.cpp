@@ -79,6 +79,11 @@ int color_buffers(const Scene& scene) {
     int n = scene.gl.draw_buffers;
     for (const Object& o : scene.objects)
         if (o.state) n = std::max(n, o.state->draw_buffers);
+    for (const Pass& p : scene.passes) {
+        n = std::max(n, p.state.draw_buffers);
+        for (const auto& state : p.object_states)
+            if (state) n = std::max(n, state->draw_buffers);
+    }
     return n;
 }
 
@@ -88,11 +93,13 @@ std::string color_buffer_path(const std::string& output, int buffer) {
     return (p.parent_path() / fmt::format("{}.{}{}", p.stem().string(), buffer, p.extension().string())).string();
 }
 
-Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings) {
+Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings, bool skip_undeclared) {
     if (settings.empty()) return Ok{};
     std::vector<UniformInfo> infos = program.uniforms();
-    for (const UniformSetting& s : settings)
+    for (const UniformSetting& s : settings) {
+        if (skip_undeclared && !find_declaration(infos, s.name)) continue;
         if (Status st = apply_one(program, infos, s); !st) return st;
+    }
     return Ok{};
 }
 
@@ -103,8 +110,13 @@ Result<GLState> bind_scene_textures(const Scene& scene) {
     return bound;
 }
 
-GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object) {
-    GLState gl = object.state ? *object.state : bound;
+GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object, const Pass* pass) {
+    const GLState* state = object.state ? &*object.state : &bound;
+    if (pass) {
+        const auto& own = pass->object_states[size_t(&object - scene.objects.data())];
+        state = own ? &*own : &pass->state;
+    }
+    GLState gl = *state;
     gl.texture_units = bound.texture_units;
     gl.modelview = scene.view * object.model;
     if (object.front_material) gl.front_material = *object.front_material;
@@ -113,23 +125,92 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     return gl;
 }
 
+Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
+    ScenePrograms programs;
+    if (scene.passes.empty()) programs.by_pass_.push_back(&main);
+    for (const Pass& pass : scene.passes) {
+        if (pass.vertex.empty()) {
+            programs.by_pass_.push_back(&main);
+            continue;
+        }
+        auto program = Program::compile(pass.vertex, pass.fragment);
+        if (!program) {
+            Error e(fmt::format("pass '{}': its program does not compile", pass.name), pass.where.file,
+                    pass.where.line);
+            for (const Diagnostic& d : program.error().diagnostics) e.diagnostics.push_back(d);
+            return e;
+        }
+        program->exec = main.exec;
+        programs.own_.push_back(std::make_shared<Program>(std::move(*program)));
+        programs.by_pass_.push_back(programs.own_.back().get());
+    }
+    return programs;
+}
+
 namespace {
 
-// Draws the objects; the first draw takes `pending` (and empties it).
-Result<DrawStats> draw_objects(Program& program, const Scene& scene, Framebuffer& fb, ClearValues& pending) {
-    if (Status st = apply_uniforms(program, scene.uniforms); !st) return st.error();
-    // glActiveTexture + glBindTexture per [textures.N], once: texture
-    // bindings are context state that every object's draw sees.
-    auto bound = bind_scene_textures(scene);
-    if (!bound) return bound.error();
+// With passes, a scene or object uniform goes to the programs that declare
+// it; one that none declares is a mistake in the file.
+Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scene) {
+    std::vector<std::vector<UniformInfo>> infos;
+    for (size_t i = 0; i < programs.size(); ++i) infos.push_back(programs.of_pass(i).uniforms());
+    auto check = [&](const std::vector<UniformSetting>& settings) -> Status {
+        for (const UniformSetting& s : settings) {
+            bool found = false;
+            for (const auto& list : infos) found = found || find_declaration(list, s.name);
+            if (!found)
+                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}' (is it "
+                                                     "declared and used by a shader?)", s.name));
+        }
+        return Ok{};
+    };
+    if (Status st = check(scene.uniforms); !st) return st;
+    for (const Object& o : scene.objects)
+        if (Status st = check(o.uniforms); !st) return st;
+    return Ok{};
+}
+
+// One pass's draws (the scene's one pass when `pass` is null); the first
+// draw takes `pending` (and empties it).
+Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState& bound, const Pass* pass,
+                            Framebuffer& fb, ClearValues& pending) {
+    const bool lenient = pass != nullptr;
+    if (Status st = apply_uniforms(program, scene.uniforms, lenient); !st) return st.error();
+    if (pass)
+        if (Status st = apply_uniforms(program, pass->uniforms); !st) return st.error();
     DrawStats total;
-    for (const Object& object : scene.objects) {
-        GLState gl = object_gl_state(scene, *bound, object);
-        if (Status st = apply_uniforms(program, object.uniforms); !st) return st.error();
+    auto draw_object = [&](const Object& object) -> Status {
+        GLState gl = object_gl_state(scene, bound, object, pass);
+        if (Status st = apply_uniforms(program, object.uniforms, lenient); !st) return st;
         const Mesh& m = object.mesh;
         // The first draw clears, in its tiles on the workers (it clears even when it fails).
         auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive, m.attribs, m.vertex_count,
                           m.indices);
+        if (!stats) return stats.error();
+        total += *stats;
+        return Ok{};
+    };
+    if (!pass)
+        for (const Object& object : scene.objects)
+            if (Status st = draw_object(object); !st) return st.error();
+    if (pass)
+        for (size_t i : pass->objects)
+            if (Status st = draw_object(scene.objects[i]); !st) return st.error();
+    return total;
+}
+
+Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
+                              ClearValues& pending) {
+    if (!scene.passes.empty())
+        if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
+    // glActiveTexture + glBindTexture per [textures.N], once: texture
+    // bindings are context state that every object's draw sees.
+    auto bound = bind_scene_textures(scene);
+    if (!bound) return bound.error();
+    if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
+    DrawStats total;
+    for (size_t i = 0; i < scene.passes.size(); ++i) {
+        auto stats = draw_pass(programs.of_pass(i), scene, *bound, &scene.passes[i], fb, pending);
         if (!stats) return stats.error();
         total += *stats;
     }
@@ -138,15 +219,27 @@ Result<DrawStats> draw_objects(Program& program, const Scene& scene, Framebuffer
 
 }  // namespace
 
-Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb,
+Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                                      const ClearValues& clear) {
     ClearValues pending = clear;
-    auto result = draw_objects(program, scene, fb, pending);
+    auto result = draw_passes(programs, scene, fb, pending);
     // No object, or an error before the first draw: the clear still happens.
     if (pending.color) fb.clear_color(*pending.color);
     if (pending.depth) fb.clear_depth(*pending.depth);
     if (pending.stencil) fb.clear_stencil(*pending.stencil);
     return result;
+}
+
+Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb,
+                                     const ClearValues& clear) {
+    auto programs = ScenePrograms::compile(program, scene);
+    if (!programs) return programs.error();
+    return draw_scene_objects(*programs, scene, fb, clear);
+}
+
+Result<DrawStats> render_scene(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb) {
+    return draw_scene_objects(programs, scene, fb,
+                              ClearValues{scene.clear_color, scene.clear_depth, scene.clear_stencil});
 }
 
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb) {

@@ -40,6 +40,22 @@ void read_output(const Section& s, Scene& scene) {
                                                   (1 << kStencilBits) - 1));
 }
 
+void read_animation(const Section& s, Animation& animation) {
+    s.allow({"time_uniform", "frames_per_second"});
+    if (const toml::node* n = s.get("time_uniform")) {
+        auto name = n->as_string();
+        if (!name || name->get().empty() || name->get().starts_with("gl_"))
+            detail::fail(*n, fmt::format("'animation.time_uniform' must name a user uniform (a non-empty string not "
+                                         "starting with gl_; got {})", detail::describe(*n)));
+        animation.time_uniform = name->get();
+    }
+    if (const toml::node* n = s.get("frames_per_second")) {
+        animation.frames_per_second = detail::number(*n, "animation.frames_per_second");
+        detail::check_range(*n, "animation.frames_per_second", animation.frames_per_second,
+                            {.lo = 0, .lo_open = true});
+    }
+}
+
 Section section(const toml::node& n, const char* name) { return Section(detail::table(n, name), name); }
 
 // Lights the file leaves out keep GL's eye-space defaults; no transform.
@@ -55,12 +71,13 @@ void init_lights(Scene& scene) {
 Scene build_scene(const toml::table& root, const std::string& path) {
     Section top(root, "");
     top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
-               "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects"});
+               "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects", "passes", "animation"});
     Scene scene;
     scene.path = path;
     init_lights(scene);
     if (const toml::node* n = top.get("output")) read_output(section(*n, "output"), scene);
     if (const toml::node* n = top.get("camera")) detail::read_camera(section(*n, "camera"), scene);
+    if (const toml::node* n = top.get("animation")) read_animation(section(*n, "animation"), scene.animation);
     if (const toml::node* n = top.get("lights")) detail::read_lights(*n, scene);
     detail::read_render_state(top, scene);
     std::string dir = std::filesystem::path(path).parent_path().string();
@@ -71,6 +88,7 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     scene.gl.projection = scene.projection;
     derive_eye_space_lights(scene);
     if (const toml::node* n = top.get("objects")) detail::read_object_states(*n, scene);
+    if (const toml::node* n = top.get("passes")) detail::read_passes(*n, top.get("objects"), dir, scene);
     return scene;
 }
 

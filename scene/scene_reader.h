@@ -109,6 +109,8 @@ void read_fragment_state(const Section& s, GLState& gl);
 // [objects.state]: each object's state is the scene's final state with its own keys on top.
 void read_object_states(const toml::node& objects, Scene& scene);
 void read_uniforms(const toml::node& n, const std::string& what, std::vector<UniformSetting>& out);
+// [[passes]] (scene_passes.cpp), after the objects and their states: `objects` is the file's [[objects]] array.
+void read_passes(const toml::node& n, const toml::node* objects, const std::string& scene_dir, Scene& scene);
 // One attribute array of `vertex_count` values, each a number or 1..4 numbers, all alike.
 VertexAttrib read_attribute(const toml::node& n, const std::string& name, const std::string& what,
                             uint32_t vertex_count);

@@ -112,13 +112,49 @@ void read_cull_face(const Section& s, GLState& gl) {
     const toml::node* n = s.get("cull_face");
     if (!n) return;
     size_t c = choice(*n, s.name("cull_face"), {"off", "back", "front", "front_and_back"});
-    // glslrun's GLState culls one face at most; GL_FRONT_AND_BACK would draw
-    // no polygon at all, and silently drawing them would be a wrong image.
-    if (c == 3)
-        fail(*n, fmt::format("'{}' = \"front_and_back\" is not supported: glslrun culls one face at "
-                             "most (use \"front\" or \"back\")", s.name("cull_face")));
     gl.cull_face = c != 0;
     gl.cull_back = c != 2;
+    gl.cull_front_and_back = c == 3;
+}
+
+// glPolygonMode: one mode for both faces (GL_FRONT_AND_BACK), or [front, back].
+void read_polygon_mode(const Section& s, GLState& gl) {
+    const toml::node* n = s.get("polygon_mode");
+    if (!n) return;
+    const std::vector<std::string_view> modes = {"point", "line", "fill"};
+    if (!n->as_array()) {
+        gl.polygon_mode[0] = gl.polygon_mode[1] = PolygonMode(choice(*n, s.name("polygon_mode"), modes));
+        return;
+    }
+    const toml::array& a = *n->as_array();
+    if (a.size() != 2)
+        fail(*n, fmt::format("'{}' must be one mode for both faces or [front, back] (got {})",
+                             s.name("polygon_mode"), describe(*n)));
+    for (size_t i = 0; i < 2; ++i)
+        gl.polygon_mode[i] = PolygonMode(choice(a[i], fmt::format("{}[{}]", s.name("polygon_mode"), i), modes));
+}
+
+// glPolygonOffset(factor, units) and the three enables.
+void read_polygon_offset(const Section& s, GLState& gl) {
+    if (const toml::node* n = s.get("polygon_offset")) {
+        std::vector<double> v = numbers(*n, s.name("polygon_offset"), 2, 2);
+        gl.polygon_offset_factor = float(v[0]);
+        gl.polygon_offset_units = float(v[1]);
+    }
+    s.read("polygon_offset_fill", gl.polygon_offset_fill);
+    s.read("polygon_offset_line", gl.polygon_offset_line);
+    s.read("polygon_offset_point", gl.polygon_offset_point);
+}
+
+// Point sprites: GL_POINT_SPRITE, and the texture units whose GL_COORD_REPLACE is on.
+void read_point_sprite(const Section& s, GLState& gl) {
+    s.read("point_sprite", gl.point_sprite);
+    const toml::node* n = s.get("coord_replace");
+    if (!n) return;
+    const toml::array& units = array(*n, s.name("coord_replace"));
+    gl.coord_replace = 0;
+    for (size_t i = 0; i < units.size(); ++i)
+        gl.coord_replace |= 1u << integer(units[i], fmt::format("{}[{}] (texture units 0..7)", s.name("coord_replace"), i), 0, 7);
 }
 
 void read_texture_matrices(const toml::node& n, GLState& gl) {
@@ -150,8 +186,9 @@ void read_material_section(const Section& top, std::string_view key, Scene& scen
 void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
     std::vector<std::string_view> keys = {"depth_test", "depth_func", "cull_face", "front_face", "shade_model",
                                           "vertex_program_two_side", "point_size", "vertex_program_point_size",
-                                          "clip_planes",
-                                          "clip_planes_space", "depth_range"};
+                                          "clip_planes", "clip_planes_space", "depth_range", "polygon_mode",
+                                          "polygon_offset", "polygon_offset_fill", "polygon_offset_line",
+                                          "polygon_offset_point", "line_width", "point_sprite", "coord_replace"};
     keys.insert(keys.end(), fragment_state_keys().begin(), fragment_state_keys().end());
     s.allow(keys);
     s.read("depth_test", gl.depth_test);
@@ -166,6 +203,10 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
     s.read("vertex_program_point_size", gl.vertex_program_point_size);
     read_clip_planes(s, view, gl);
     read_depth_range(s, gl);
+    read_polygon_mode(s, gl);
+    read_polygon_offset(s, gl);
+    s.read("line_width", gl.line_width, {.lo = 0, .lo_open = true, .why = "glLineWidth"});
+    read_point_sprite(s, gl);
     read_fragment_state(s, gl);
 }
 

@@ -317,6 +317,8 @@ enum class BlendFactor : uint8_t { Zero, One, SrcColor, OneMinusSrcColor, DstCol
                                    OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstantColor,
                                    OneMinusConstantColor, ConstantAlpha, OneMinusConstantAlpha, SrcAlphaSaturate };
 enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+// glPolygonMode's modes in GL's enum order (GL_POINT, GL_LINE, GL_FILL).
+enum class PolygonMode : uint8_t { Point, Line, Fill };
 enum class LogicOp : uint8_t { Clear, And, AndReverse, Copy, AndInverted, Noop, Xor, Or, Nor, Equiv, Invert,
                                OrReverse, CopyInverted, OrInverted, Nand, Set };
 
@@ -383,8 +385,24 @@ struct GLState {
     bool vertex_program_two_side = false;
     bool flat_shading = false;
     bool cull_face = false;
-    bool cull_back = true;   // GL_BACK
+    bool cull_back = true;   // GL_BACK; false: GL_FRONT
+    bool cull_front_and_back = false;  // GL_FRONT_AND_BACK: every polygon (cull_back aside); points and lines stay
     bool front_ccw = true;   // GL_CCW
+    // glPolygonMode: [0] front-facing, [1] back-facing polygons. Line and point
+    // modes draw the polygon's boundary edges and vertices (the diagonals that
+    // split quads and polygons are not edges), with the polygon's facing.
+    std::array<PolygonMode, 2> polygon_mode{PolygonMode::Fill, PolygonMode::Fill};
+    // glPolygonOffset and GL_POLYGON_OFFSET_FILL/LINE/POINT (by the polygon's
+    // mode): depth += factor * max(|dz/dx|, |dz/dy|) + units * 2^-24 (the
+    // resolution of a 24-bit depth buffer).
+    float polygon_offset_factor = 0, polygon_offset_units = 0;
+    bool polygon_offset_fill = false, polygon_offset_line = false, polygon_offset_point = false;
+    float line_width = 1;  // glLineWidth, > 0; non-antialiased: rounded, at least 1
+    // glEnable(GL_POINT_SPRITE): bit i of coord_replace (glTexEnv(GL_POINT_SPRITE,
+    // GL_COORD_REPLACE) on unit i) makes gl_TexCoord[i] the point's (s, t, 0, 1),
+    // gl_PointCoord's values (origin upper left, GL's default).
+    bool point_sprite = false;
+    uint32_t coord_replace = 0;
     std::array<int, 4> viewport{0, 0, 0, 0};  // x y w h; w == 0: the whole framebuffer
     // Per-fragment operations (GL 2.1 §4.1), applied in this order after the
     // fragment shader: scissor, alpha test, stencil, depth, blending, logic op,

@@ -74,4 +74,24 @@ cmp -s "$tmp/f.0000.1.png" "$tmp/f.0001.1.png" && fail "frames 0 and 1 are the s
 cmp -s "$tmp/f.0000.png" "$tmp/f.0001.png" || fail "buffer 0 does not read time, yet frames 0 and 1 differ"
 [ -e "$tmp/f.0003.png" ] && fail "--frames 3 wrote a fourth frame"
 
+# The time uniform's name and rate: --time-uniform and --fps, or the scene's [animation].
+cat >"$tmp/t.frag" <<'GLSL'
+uniform float t;
+void main() { gl_FragColor = vec4(fract(t), 0.0, 1.0, 1.0); }
+GLSL
+printf '[output]\nsize = [8, 8]\n[uniforms]\nt = 0.0\n[[objects]]\nmesh = "quad"\n' >"$tmp/t.toml"
+trun() { "$glslrun" "$tmp/a.vert" "$tmp/t.frag" "$@"; }
+trun "$tmp/t.toml" -o "$tmp/half.png" --uniform 't=0.5' >/dev/null || fail "--uniform t=0.5 exited with $?"
+trun "$tmp/t.toml" -o "$tmp/cli.png" --frames 2 --time-uniform t --fps 2 >/dev/null || fail "--time-uniform/--fps exited with $?"
+cmp -s "$tmp/cli.0001.png" "$tmp/half.png" || fail "frame 1 at --fps 2 is not t = 0.5"
+cmp -s "$tmp/cli.0000.png" "$tmp/half.png" && fail "frame 0 at --fps 2 is t = 0.5"
+{ cat "$tmp/t.toml"; printf '[animation]\ntime_uniform = "t"\nframes_per_second = 2\n'; } >"$tmp/anim.toml"
+trun "$tmp/anim.toml" -o "$tmp/anim.png" --frames 2 >/dev/null || fail "[animation] exited with $?"
+cmp -s "$tmp/anim.0001.png" "$tmp/half.png" || fail "[animation] frames_per_second = 2: frame 1 is not t = 0.5"
+if trun "$tmp/t.toml" -o "$tmp/x.png" --fps 2 >/dev/null 2>"$tmp/err"; then fail "--fps without --frames was accepted"; fi
+grep -q "give --frames" "$tmp/err" || fail "--fps without --frames: unclear error: $(cat "$tmp/err")"
+{ cat "$tmp/t.toml"; printf '[animation]\nframes_per_second = 0\n'; } >"$tmp/bad.toml"
+if trun "$tmp/bad.toml" -o "$tmp/x.png" --frames 1 >/dev/null 2>"$tmp/err"; then fail "frames_per_second = 0 was accepted"; fi
+grep -q "bad.toml:8: error: .*frames_per_second" "$tmp/err" || fail "frames_per_second = 0: no file:line error: $(cat "$tmp/err")"
+
 finish "cli outputs: -o -, extensions, draw buffers, --uniform and --frames behave"

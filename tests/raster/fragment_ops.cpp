@@ -115,6 +115,36 @@ state = { color_logic_op = true, logic_op_mode = "xor", color_writemask = [true,
 
 }  // namespace
 
+TEST_CASE("blending picked once per draw is bit-identical to blend_unorm8()", "[raster][fragment]") {
+    // Every factor pair and equation for RGB, alpha with the same ones
+    // (glBlendFunc: the whole-pixel functions) or others, over byte values
+    // that include 0 and 255.
+    const Unorm8 srcs[] = {{51, 178, 255, 102}, {255, 0, 128, 254}, {0, 0, 0, 0}, {1, 64, 200, 255}};
+    const Unorm8 dsts[] = {{153, 25, 0, 255}, {255, 255, 255, 0}, {77, 217, 115, 51}};
+    size_t checked = 0;
+    for (int sf = 0; sf <= int(BlendFactor::SrcAlphaSaturate); ++sf)
+        for (int df = 0; df <= int(BlendFactor::SrcAlphaSaturate); ++df)
+            for (int eq = 0; eq <= int(BlendEquation::Max); ++eq)
+                for (int alpha = 0; alpha < 2; ++alpha) {
+                    BlendState st;
+                    st.src_rgb = BlendFactor(sf);
+                    st.dst_rgb = BlendFactor(df);
+                    st.src_alpha = alpha ? BlendFactor((sf + 3) % 15) : st.src_rgb;
+                    st.dst_alpha = alpha ? BlendFactor((df + 5) % 15) : st.dst_rgb;
+                    st.equation_rgb = BlendEquation(eq);
+                    st.equation_alpha = alpha ? BlendEquation((eq + 1) % 5) : st.equation_rgb;
+                    st.color = {0.3f, 0.6f, 0.9f, 0.5f};
+                    ResolvedBlend b = resolve_blend(st);
+                    for (const Unorm8& src : srcs)
+                        for (const Unorm8& dst : dsts) {
+                            INFO("factors " << sf << " " << df << ", equation " << eq << ", alpha " << alpha);
+                            CHECK(b.pixel8(b, src, dst) == blend_unorm8(st, src, dst));
+                            ++checked;
+                        }
+                }
+    CHECK(checked == 15u * 15u * 5u * 2u * 12u);
+}
+
 TEST_CASE("per-fragment operations give the same image whatever the thread count", "[raster][fragment][threads]") {
     auto scene = scene::parse_scene(kScene, "ops.toml");
     REQUIRE(scene);

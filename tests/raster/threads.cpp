@@ -292,6 +292,30 @@ TEST_CASE("lines and points across tile borders are identical with any thread co
     }
 }
 
+TEST_CASE("polygon modes, polygon offset, wide lines and point sprites are identical with any thread count",
+          "[raster][threads]") {
+    Program p = compile(kColorVs, "#version 120\nvoid main() { gl_FragColor = vec4(gl_Color.rgb, gl_TexCoord[0].x); }");
+    Geometry g = random_geometry(7, 6000);
+    GLState gl;
+    gl.depth_test = true;
+    gl.polygon_mode = {PolygonMode::Line, PolygonMode::Point};
+    gl.polygon_offset_line = gl.polygon_offset_point = true;
+    gl.polygon_offset_factor = 1;
+    gl.polygon_offset_units = 3;
+    gl.line_width = 5;
+    gl.point_sprite = true;
+    gl.coord_replace = 1;
+    gl.vertex_program_point_size = true;
+    for (Primitive prim : {Primitive::Triangles, Primitive::Quads, Primitive::Lines, Primitive::Points}) {
+        Frame one = draw_geometry(p, g, prim, 1, gl);
+        CHECK(distinct_colors(one.fb) > 20u);
+        for (unsigned threads : kThreadCounts) {
+            INFO("primitive " << int(prim) << ", threads " << threads);
+            check_same(one, draw_geometry(p, g, prim, threads, gl));
+        }
+    }
+}
+
 // Never ends where red > 0.5; the loop cap stops it.
 constexpr const char* kRunawayFs = R"(
 void main() {

@@ -52,19 +52,11 @@ constexpr Case kCases[] = {
 
 const std::string kSourceDir = GLSLRUN_SOURCE_DIR;
 
-Result<ShaderSource> read_shader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error("cannot read '" + path + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return ShaderSource{path, text.str()};
-}
-
 Result<reference::Inputs> load_inputs(const Case& c) {
     std::string base = kSourceDir + "/shaders/" + c.program;
-    auto vs = read_shader(base + ".vert");
+    auto vs = reference::read_shader(base + ".vert");
     if (!vs) return vs.error();
-    auto fs = read_shader(base + ".frag");
+    auto fs = reference::read_shader(base + ".frag");
     if (!fs) return fs.error();
     auto scene = scene::load_scene(kSourceDir + "/scenes/" + c.scene);
     if (!scene) return scene.error();

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,15 @@
 namespace reference {
 
 using namespace glslrun;
+
+// A shader file as a source named by its path.
+inline Result<ShaderSource> read_shader(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error("cannot read '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return ShaderSource{path, text.str()};
+}
 
 // Mesa reads GALLIUM_DRIVER once per process; every test here uses llvmpipe.
 inline constexpr const char* kDriver = "llvmpipe";

@@ -87,6 +87,27 @@ TEST_CASE("error report: reference against itself is exact; coverage is the quad
     CHECK(r.notes.empty());
 }
 
+TEST_CASE("error report: blending reads the clear colour, not a marker", "[scene][error]") {
+    std::string text = std::string(kQuadScene) + "state = { blend = true, blend_func = [\"src_alpha\", \"one_minus_src_alpha\"] }\n";
+    Scene scene = quad_scene(text.c_str());
+    ErrorReport r = measure("void main() { gl_FragColor = vec4(1.0, 0.0, 0.0, 0.5); }", Precision::Precise, scene);
+    REQUIRE(r.outputs.size() == 2);
+    CHECK(r.outputs[0].covered_both == 16);
+    CHECK(r.outputs[0].covered_one == 0);
+    CHECK(r.outputs[0].total().max_ulp == 0);
+    // 0.5 * red + 0.5 * the clear colour (0.25, 0.5, 0.75, 1); alpha 0.5 * 0.5 + 0.5 * 1.
+    const uint8_t* middle = r.reference_image.pixel(3, 3);
+    CHECK(int(middle[0]) == 159);
+    CHECK(int(middle[1]) == 64);
+    CHECK(int(middle[2]) == 96);
+    CHECK(int(middle[3]) == 191);
+    CHECK(r.reference_image.rgba == r.mode_image.rgba);
+    // Blending that keeps the clear colour (zero, one) leaves the pixel as unwritten.
+    std::string kept = std::string(kQuadScene) + "state = { blend = true, blend_func = [\"zero\", \"one\"] }\n";
+    ErrorReport none = measure("void main() { gl_FragColor = vec4(1.0); }", Precision::Precise, quad_scene(kept.c_str()));
+    CHECK(none.outputs[0].covered_both == 0);
+}
+
 TEST_CASE("error report: gl_FragDepth, unstored outputs and depth-less scenes", "[scene][error]") {
     Scene scene = quad_scene();
     ErrorReport depth = measure("void main() { gl_FragColor = vec4(1.0); gl_FragDepth = 0.25; }",

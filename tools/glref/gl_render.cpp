@@ -177,12 +177,31 @@ void set_fragment_state(const GLFunctions& gl, const GLState& g) {
     set_draw_buffers(gl, g.draw_buffers);
 }
 
+// glPolygonMode, glPolygonOffset, glLineWidth and point sprites.
+void set_primitive_state(const GLFunctions& gl, const GLState& g) {
+    constexpr GLenum kModes[] = {GL_POINT, GL_LINE, GL_FILL};
+    glPolygonMode(GL_FRONT, kModes[int(g.polygon_mode[0])]);
+    glPolygonMode(GL_BACK, kModes[int(g.polygon_mode[1])]);
+    glPolygonOffset(g.polygon_offset_factor, g.polygon_offset_units);
+    enable(GL_POLYGON_OFFSET_FILL, g.polygon_offset_fill);
+    enable(GL_POLYGON_OFFSET_LINE, g.polygon_offset_line);
+    enable(GL_POLYGON_OFFSET_POINT, g.polygon_offset_point);
+    glLineWidth(g.line_width);
+    enable(GL_POINT_SPRITE, g.point_sprite);
+    for (int unit = 0; unit < 8; ++unit) {
+        gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, (g.coord_replace >> unit) & 1u ? GL_TRUE : GL_FALSE);
+    }
+    gl.ActiveTexture(GL_TEXTURE0);
+}
+
 void set_render_state(const GLFunctions& gl, const GLState& g) {
     enable(GL_DEPTH_TEST, g.depth_test);
     // GLState::DepthFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
     glDepthFunc(GLenum(GL_NEVER + int(g.depth_func)));
     enable(GL_CULL_FACE, g.cull_face);
-    glCullFace(g.cull_back ? GL_BACK : GL_FRONT);
+    glCullFace(g.cull_front_and_back ? GL_FRONT_AND_BACK : g.cull_back ? GL_BACK : GL_FRONT);
+    set_primitive_state(gl, g);
     glFrontFace(g.front_ccw ? GL_CCW : GL_CW);
     glShadeModel(g.flat_shading ? GL_FLAT : GL_SMOOTH);
     enable(GL_VERTEX_PROGRAM_TWO_SIDE, g.vertex_program_two_side);
@@ -385,11 +404,16 @@ Status bind_arrays(const GLFunctions& gl, GLuint program, const scene::Mesh& m, 
 
 // render_scene's per-object state, in the same order: modelview, materials,
 // current attributes, the object's uniforms, then the arrays and the draw.
-Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o) {
+Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o,
+                   const scene::Pass* pass) {
     if (Status st = check_mesh(o); !st) return st;
-    const GLState& state = o.state ? *o.state : s.gl;
-    set_render_state(gl, state);
-    set_clip_planes(state);
+    const GLState* state = o.state ? &*o.state : &s.gl;
+    if (pass) {
+        const auto& own = pass->object_states[size_t(&o - s.objects.data())];
+        state = own ? &*own : &pass->state;
+    }
+    set_render_state(gl, *state);
+    set_clip_planes(*state);
     // The product glslrun uses, rather than glMultMatrixf's own rounding.
     load_matrix(GL_MODELVIEW, s.view * o.model);
     set_material(GL_FRONT, o.front_material.value_or(s.gl.front_material));
@@ -407,15 +431,53 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
     return check_gl(fmt::format("while drawing object '{}'", o.name));
 }
 
-// One frame: the clear, the scene's uniforms (so every frame starts from the
-// same program state), every object, and glFinish, so the frame is done.
-Status draw_frame(const GLFunctions& gl, GLuint program, const Scene& scene) {
-    clear(gl, scene);
+// One pass (the scene's one pass when `pass` is null): glUseProgram, the
+// scene's and the pass's uniforms, then its objects.
+Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, const scene::Pass* pass) {
+    gl.UseProgram(program);
     if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
-    for (const scene::Object& o : scene.objects)
-        if (Status st = draw_object(gl, program, scene, o); !st) return st;
+    if (pass)
+        if (Status st = apply_uniforms(gl, program, pass->uniforms); !st) return st;
+    if (!pass)
+        for (const scene::Object& o : scene.objects)
+            if (Status st = draw_object(gl, program, scene, o, nullptr); !st) return st;
+    if (pass)
+        for (size_t i : pass->objects)
+            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass); !st) return st;
+    return Ok{};
+}
+
+// One frame: the clear, every pass (each starting with the scene's uniforms,
+// so every frame starts from the same program state), and glFinish, so the
+// frame is done. programs[i] is pass i's (or the one program without passes).
+Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, const Scene& scene) {
+    clear(gl, scene);
+    if (scene.passes.empty()) {
+        if (Status st = draw_pass(gl, programs[0], scene, nullptr); !st) return st;
+    }
+    for (size_t i = 0; i < scene.passes.size(); ++i)
+        if (Status st = draw_pass(gl, programs[i], scene, &scene.passes[i]); !st) return st;
     glFinish();
     return Ok{};
+}
+
+// The programs of the passes: a pass's own shaders, or the given ones.
+Result<std::vector<GLuint>> build_programs(const GLFunctions& gl, const std::vector<ShaderSource>& vertex,
+                                           const std::vector<ShaderSource>& fragment, const Scene& scene) {
+    auto main = build_program(gl, vertex, fragment);
+    if (!main) return main.error();
+    std::vector<GLuint> programs;
+    if (scene.passes.empty()) programs.push_back(*main);
+    for (const scene::Pass& pass : scene.passes) {
+        if (pass.vertex.empty()) {
+            programs.push_back(*main);
+            continue;
+        }
+        auto own = build_program(gl, pass.vertex, pass.fragment);
+        if (!own) return Error(fmt::format("pass '{}': {}", pass.name, own.error().str()));
+        programs.push_back(*own);
+    }
+    return programs;
 }
 
 Result<scene::Image> read_back(int width, int height, int buffer) {
@@ -442,8 +504,8 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     const int buffers = scene::color_buffers(scene);
     if (Status st = (*context)->make_framebuffer(scene.width, scene.height, buffers); !st) return st.error();
     auto compile_start = std::chrono::steady_clock::now();
-    auto program = build_program(gl, vertex, fragment);
-    if (!program) return program.error();
+    auto programs = build_programs(gl, vertex, fragment, scene);
+    if (!programs) return programs.error();
     double compile_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - compile_start).count();
     if (Status st = set_scene_state(gl, scene); !st) return st.error();
     if (Status st = upload_textures(gl, scene, options.upload_generated_mipmaps); !st) return st.error();
@@ -451,7 +513,7 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     for (int frame = 0; frame < std::max(1, options.frames); ++frame) {
         auto start = std::chrono::steady_clock::now();
         double cpu_start = scene::process_cpu_seconds();
-        if (Status st = draw_frame(gl, *program, scene); !st) return st.error();
+        if (Status st = draw_frame(gl, *programs, scene); !st) return st.error();
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         cpu_seconds.push_back(scene::process_cpu_seconds() - cpu_start);
     }

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "command_line.h"
 #include "error_report_command.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
@@ -31,9 +32,7 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-constexpr int kToolError = 2;
-
-int fail(const Error& e, int status = 1) {
+int fail(const Error& e, int status = kResultError) {
     std::string text = e.str();
     std::fputs(text.c_str(), stderr);
     return status;
@@ -64,14 +63,20 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
     return in;
 }
 
+Status check_png_name(const std::string& output) {
+    std::string ext = fs::path(output).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png")
+        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
+                                 "for standard output)", output));
+    return Ok{};
+}
+
 namespace {
 
 Result<std::pair<int, int>> parse_size(const std::string& text) {
-    int width = 0, height = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X'))
-        return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
-    return std::pair{width, height};
+    if (auto size = parse_int_pair(text, "xX")) return *size;
+    return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
 }
 
 std::string default_output(const Inputs& in) {
@@ -93,12 +98,7 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
                          "--dump-ir or --compare, which print there too");
         return Ok{};
     }
-    std::string ext = fs::path(output).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png")
-        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
-                                 "for standard output)", output));
-    return Ok{};
+    return check_png_name(output);
 }
 
 // Frame i's image name: out.png -> out.0000.png, out.0001.png, ...
@@ -210,13 +210,13 @@ int compare_with(const scene::Image& actual, const RenderOptions& o) {
 
 // --bench N: N more frames into the same framebuffer, each timed whole
 // and per stage. The first frame (compile and first draw) is timed by render().
-Status bench_frames(Program& prog, const scene::Scene& scene, Framebuffer& fb, int frames,
+Status bench_frames(const scene::ScenePrograms& programs, const scene::Scene& scene, Framebuffer& fb, int frames,
                     scene::BenchReport& report) {
     report.stage_s = {{"vertex", {}}, {"raster", {}}, {"fragment", {}}};
     for (int i = 0; i < frames; ++i) {
         auto start = Clock::now();
         double cpu_start = scene::process_cpu_seconds();
-        auto stats = scene::render_scene(prog, scene, fb);
+        auto stats = scene::render_scene(programs, scene, fb);
         if (!stats) return stats.error();
         report.frame_s.push_back(ms_since(start) / 1e3);
         report.frame_cpu_s.push_back(scene::process_cpu_seconds() - cpu_start);
@@ -315,14 +315,16 @@ int render(const Inputs& in, const RenderOptions& o) {
     prog->exec.precision = o.precision;
     prog->exec.backend = o.backend;
     prog->exec.jit_specialize_after = o.specialize_after;
+    auto programs = scene::ScenePrograms::compile(*prog, *scene);
+    if (!programs) return fail(programs.error());
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();
-    auto stats = scene::render_scene(*prog, *scene, *fb);
+    auto stats = scene::render_scene(*programs, *scene, *fb);
     if (!stats) return fail(stats.error());
     scene::BenchReport bench = bench_header(*scene, o, *stats, compile_ms, ms_since(start));
     if (o.bench_frames > 0)
-        if (Status st = bench_frames(*prog, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
+        if (Status st = bench_frames(*programs, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
     // --dump-ir alone prints the IR: it writes no image unless -o asks for one.
     if (!o.output.empty() || !o.dump_ir)
@@ -337,7 +339,15 @@ int render(const Inputs& in, const RenderOptions& o) {
     return 0;
 }
 
-// --frames N: frame i with `uniform float time` = i / kFramesPerSecond, into out.0000.png, ...
+// Whether any pass's program has the uniform.
+bool any_program_has(const scene::ScenePrograms& programs, const std::string& name) {
+    for (size_t i = 0; i < programs.size(); ++i)
+        if (programs.of_pass(i).has_uniform(name)) return true;
+    return false;
+}
+
+// --frames N: frame i with `uniform float time` = i / frames per second (the
+// scene's [animation], or --time-uniform and --fps), into out.0000.png, ...
 int render_frames(const Inputs& in, const RenderOptions& o) {
     auto scene = load_sized_scene(in, o);
     if (!scene) return fail(scene.error());
@@ -347,15 +357,20 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
-    if (!prog->has_uniform(kTimeUniform))
+    auto programs = scene::ScenePrograms::compile(*prog, *scene);
+    if (!programs) return fail(programs.error());
+    const std::string time = o.time_uniform.empty() ? scene->animation.time_uniform : o.time_uniform;
+    const double fps = o.frames_per_second > 0 ? o.frames_per_second : scene->animation.frames_per_second;
+    const bool timed = any_program_has(*programs, time);
+    if (!timed)
         fmt::print(stderr, "warning: --frames: the program has no active 'uniform float {}', so every frame is the "
-                           "same\n", kTimeUniform);
+                           "same\n", time);
     else
-        scene->uniforms.push_back({kTimeUniform, {0.0}, false, {"--frames", 0}});
+        scene->uniforms.push_back({time, {0.0}, false, {"--frames", 0}});
     Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     for (int frame = 0; frame < o.frames; ++frame) {
-        if (prog->has_uniform(kTimeUniform)) scene->uniforms.back().values = {frame / kFramesPerSecond};
-        auto stats = scene::render_scene(*prog, *scene, fb);
+        if (timed) scene->uniforms.back().values = {frame / fps};
+        auto stats = scene::render_scene(*programs, *scene, fb);
         if (!stats) return fail(stats.error());
         if (Status st = write_buffers(fb, frame_path(output, frame)); !st) return fail(st.error());
     }
@@ -385,6 +400,11 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (o.frames > 0 && (o.bench_frames > 0 || !o.compare.empty() || o.stats || !o.error_report.empty()))
         return fail(Error("--frames writes a sequence of images: it does not combine with --bench, --compare, "
                           "--stats or --error-report"));
+    if (o.frames == 0 && (!o.time_uniform.empty() || o.frames_per_second > 0))
+        return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"));
+    if (o.time_uniform.starts_with("gl_"))
+        return fail(Error(fmt::format("--time-uniform '{}': the time goes to a user uniform, not a built-in one",
+                                      o.time_uniform)));
     if (o.frames > 0 && !in->scene.empty()) return render_frames(*in, o);
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())

@@ -8,10 +8,6 @@
 
 namespace glslrun::cli {
 
-// --frames: frame i of N sets `uniform float time` to i / kFramesPerSecond seconds.
-inline constexpr double kFramesPerSecond = 30.0;
-inline constexpr const char* kTimeUniform = "time";
-
 struct RenderOptions {
     std::string output, size, compare, diff;
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
@@ -21,7 +17,11 @@ struct RenderOptions {
     int bench_frames = 0;  // --bench N: render N frames and print frames/s and time per stage
     bool stats = false, dump_ir = false;
     std::vector<std::string> uniforms;  // --uniform name=value, in order
-    int frames = 0;  // --frames N: N images, uniform `time` = frame / kFramesPerSecond
+    // --frames N: N images, each with a float uniform (--time-uniform, else the
+    // scene's [animation] time_uniform) = frame / fps (--fps, else the scene's).
+    int frames = 0;
+    std::string time_uniform;
+    double frames_per_second = 0;  // 0: the scene's
     Precision precision = Precision::Precise;  // --precision
     Backend backend = Backend::Auto;           // --backend
     uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
@@ -35,6 +35,10 @@ struct Inputs {
 Result<Inputs> classify(const std::vector<std::string>& files);
 // The scene file, with --size applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
+
+// An output name ends in .png (any case): PNG data is never written under
+// a misleading name.
+Status check_png_name(const std::string& output);
 
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for
 // --compare at most one PNG. Returns the process exit status.

@@ -1,6 +1,8 @@
 // Draws a Scene with glslrun: per object, modelview = view * model, the
 // material overrides, the current colour and the uniforms, then draw().
 #pragma once
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,28 +12,50 @@
 namespace glslrun::scene {
 
 // The colour buffers a framebuffer for the scene needs: the most that any
-// draw's glDrawBuffers names ([state] draw_buffers, objects' too).
+// draw's glDrawBuffers names ([state] draw_buffers, objects' and passes' too).
 int color_buffers(const Scene& scene);
 // Colour buffer i's image file: out.png for buffer 0, then out.1.png, out.2.png, ...
 std::string color_buffer_path(const std::string& output, int buffer);
 
 // Sets the scene's and the object's user uniforms on the program, converting
-// the file's numbers to the declared types. Errors cite the scene's file:line.
-Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings);
+// the file's numbers to the declared types. Errors cite the scene's file:line;
+// with `skip_undeclared`, names the program does not declare are left out.
+Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings, bool skip_undeclared = false);
 
 // scene.gl with the scene's textures bound to their units.
 Result<GLState> bind_scene_textures(const Scene& scene);
 // The state one object is drawn with: `bound` (from bind_scene_textures)
-// with modelview = view * model, the material overrides and the current colour.
-GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object);
+// with modelview = view * model, the material overrides and the current colour;
+// within `pass` (one of scene.passes) the pass's state for the object.
+GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object, const Pass* pass = nullptr);
 
-// Draws every object into fb as it is, or cleared first to `clear` (by the
-// first draw's tiles: draw() with ClearValues).
+// The programs a scene draws with, one per pass: a pass that names its own
+// shaders gets them compiled (with `main`'s ExecOptions); the others, and a
+// scene without passes, use `main`. `main` must outlive this.
+class ScenePrograms {
+public:
+    static Result<ScenePrograms> compile(Program& main, const Scene& scene);
+    // Pass i's program; with no passes, 0 is `main`.
+    Program& of_pass(size_t pass) const { return *by_pass_[pass]; }
+    size_t size() const { return by_pass_.size(); }
+private:
+    std::vector<std::shared_ptr<Program>> own_;
+    std::vector<Program*> by_pass_;
+};
+
+// Draws every pass's objects into fb as it is, or cleared first to `clear`
+// (by the first draw's tiles: draw() with ClearValues). With passes, the
+// scene's and objects' uniforms are set on each pass's program that declares
+// them; a name that no pass's program declares is an error.
+Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
+                                     const ClearValues& clear = {});
+// The same, compiling the passes' own programs first.
 Result<DrawStats> draw_scene_objects(Program& program, const Scene& scene, Framebuffer& fb,
                                      const ClearValues& clear = {});
 
-// Clears fb to the scene's clear colour and depth, then draws every object
+// Clears fb to the scene's clear colour and depth, then draws every pass
 // (the clear within the first draw).
+Result<DrawStats> render_scene(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb);
 Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer& fb);
 
 // render_scene into a framebuffer of the scene's size, read back as the PNG

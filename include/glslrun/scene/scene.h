@@ -86,6 +86,31 @@ struct TextureSetting {
     SourceLoc where;
 };
 
+// One [[passes]] entry: the objects drawn again with a program and state of
+// the pass's own, as a multi-pass GL program does (a depth pre-pass, then a
+// blended pass; one pass per light). Passes run in file order into one
+// framebuffer, cleared once before the first.
+struct Pass {
+    std::string name;  // for messages; "passes[1]" when unnamed
+    // The pass's shaders, read from the files it names (relative to the scene
+    // file). Both empty: the program given with the scene (the command line's).
+    std::vector<ShaderSource> vertex, fragment;
+    GLState state;  // the scene's [state] with the pass's `state` keys on top
+    std::vector<UniformSetting> uniforms;  // set on the pass's program before its objects
+    std::vector<size_t> objects;           // indices into Scene::objects, in scene order
+    // Per object (by index into Scene::objects): its `state` keys on top of
+    // the pass's state; empty for objects without a state of their own.
+    std::vector<std::optional<GLState>> object_states;
+    SourceLoc where;
+};
+
+// [animation]: what `glslrun --frames N` sets per frame: the float uniform
+// `time_uniform` = frame / frames_per_second seconds.
+struct Animation {
+    std::string time_uniform = "time";
+    double frames_per_second = 30;
+};
+
 struct Camera {
     enum class Kind { Matrix, Perspective, Ortho, Frustum } kind = Kind::Matrix;
     float fovy = 45, aspect = 0;  // aspect 0: width / height, kept when the size changes
@@ -109,6 +134,9 @@ struct Scene {
     std::vector<TextureSetting> textures;  // by unit, ascending
     std::vector<UniformSetting> uniforms;  // for every object
     std::vector<Object> objects;
+    // [[passes]]; empty: one pass of every object with the scene's program and state.
+    std::vector<Pass> passes;
+    Animation animation;
     // Legal but probably unintended settings, e.g. a texture that GL 2.1's
     // completeness rules make sample as (0, 0, 0, 1). Renderers print them.
     std::vector<Diagnostic> warnings;

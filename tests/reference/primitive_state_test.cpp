@@ -1,0 +1,191 @@
+// glslrun against Mesa on primitive state: glPolygonMode (per face, quads
+// and polygons drawing only their own edges), glPolygonOffset (fill and
+// line: coplanar decals and hidden-line outlines), wide lines, point sprites
+// (gl_PointCoord, GL_COORD_REPLACE), and glCullFace / glFrontFace, with
+// GL_FRONT_AND_BACK. Vertices sit off pixel boundaries (on one, the pixel a
+// point or a line's end takes is the implementation's rounding).
+#include "tests/reference/helpers.h"
+
+using namespace glslrun;
+
+namespace {
+
+const char* kColorVertex = R"(
+void main() { gl_FrontColor = gl_Color; gl_BackColor = vec4(1.0) - gl_Color; gl_Position = ftransform(); }
+)";
+const char* kColorFragment = "void main() { gl_FragColor = gl_Color; }\n";
+
+void compare_colors(const std::string& name, const char* toml) {
+    auto scene = scene::parse_scene(toml, name + ".toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::compare(name, {{{"color.vert", kColorVertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
+}
+
+// Counter-clockwise shapes are front faces, clockwise ones back faces.
+const char* kShapes = R"(
+[output]
+size = [128, 96]
+clear_color = [0, 0, 0, 1]
+[camera]
+ortho = { left = 0, right = 16, bottom = 0, top = 12, near = -1, far = 1 }
+[state]
+point_size = 3
+vertex_program_two_side = true
+%s
+[[objects]]
+name = "quads, front"
+mesh = "arrays"
+primitive = "quads"
+vertices = [[1.135, 1.26], [5.385, 1.385], [5.135, 5.26], [1.26, 4.885], [6.26, 1.135], [9.385, 1.385], [9.135, 4.635], [6.385, 4.885]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1], [1, 1, 1], [1, 0.5, 0]]
+[[objects]]
+name = "polygon, back"
+mesh = "arrays"
+primitive = "polygon"
+vertices = [[12.135, 1.26], [10.385, 2.76], [11.26, 5.135], [13.635, 5.385], [14.76, 2.885]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1]]
+[[objects]]
+name = "strip, both faces"
+mesh = "arrays"
+primitive = "triangle_strip"
+vertices = [[1.26, 6.635], [2.135, 10.76], [4.385, 6.885], [5.26, 10.385], [7.635, 6.76], [8.385, 10.885]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1]]
+[[objects]]
+name = "quad strip"
+mesh = "arrays"
+primitive = "quad_strip"
+vertices = [[9.76, 6.76], [9.885, 10.635], [12.135, 6.635], [12.26, 10.885], [14.635, 6.885], [14.51, 10.385]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1]]
+)";
+
+std::string shapes(const std::string& state) {
+    std::string text = kShapes;
+    text.replace(text.find("%s"), 2, state);
+    return text;
+}
+
+}  // namespace
+
+TEST_CASE("glslrun matches Mesa on glPolygonMode", "[reference]") {
+    compare_colors("primitive-polygon-mode-line", shapes("polygon_mode = \"line\"").c_str());
+    compare_colors("primitive-polygon-mode-point", shapes("polygon_mode = \"point\"").c_str());
+    compare_colors("primitive-polygon-mode-line-fill", shapes("polygon_mode = [\"line\", \"fill\"]").c_str());
+    compare_colors("primitive-polygon-mode-fill-point", shapes("polygon_mode = [\"fill\", \"point\"]\nshade_model = \"flat\"").c_str());
+}
+
+TEST_CASE("glslrun matches Mesa on wide lines and polygon edges", "[reference]") {
+    compare_colors("primitive-line-width-3", shapes("polygon_mode = \"line\"\nline_width = 3").c_str());
+    compare_colors("primitive-line-width-2", shapes("polygon_mode = \"line\"\nline_width = 2").c_str());
+    compare_colors("primitive-line-strip-width-5", R"(
+[output]
+size = [96, 96]
+clear_color = [0, 0, 0, 1]
+[camera]
+ortho = { left = 0, right = 12, bottom = 0, top = 12, near = -1, far = 1 }
+[state]
+line_width = 5
+[[objects]]
+mesh = "arrays"
+primitive = "line_loop"
+vertices = [[1.135, 1.385], [10.76, 2.26], [9.385, 10.635], [2.26, 8.385]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "lines"
+vertices = [[3.135, 4.135], [7.885, 6.26], [5.135, 3.26], [6.385, 8.885]]
+colors = [[1, 0, 1], [0, 1, 1], [1, 1, 1], [0.5, 0.5, 1]]
+state = { line_width = 2.4 }
+)");
+}
+
+TEST_CASE("glslrun matches Mesa on glPolygonOffset", "[reference]") {
+    // A decal coplanar with a slanted quad, pulled forward by units and by
+    // factor (the slope), and a hidden-line outline: the quad filled, then its
+    // edges in line mode, pulled forward with GL_POLYGON_OFFSET_LINE.
+    compare_colors("primitive-polygon-offset", R"(
+[output]
+size = [128, 64]
+clear_color = [0, 0, 0, 1]
+[camera]
+ortho = { left = 0, right = 16, bottom = 0, top = 8, near = -2, far = 2 }
+[state]
+depth_test = true
+[[objects]]
+name = "base"
+mesh = "arrays"
+primitive = "quads"
+vertices = [[0.635, 0.76, -1.3], [7.385, 0.885, 0.7], [7.26, 7.135, 0.7], [0.76, 7.26, -1.3]]
+color = [0.8, 0.1, 0.1]
+[[objects]]
+name = "decal: units only would fight the slope"
+mesh = "arrays"
+primitive = "quads"
+vertices = [[0.635, 0.76, -1.3], [7.385, 0.885, 0.7], [7.26, 7.135, 0.7], [0.76, 7.26, -1.3]]
+color = [0.1, 0.8, 0.1]
+state = { polygon_offset_fill = true, polygon_offset = [-1, -2] }
+[[objects]]
+name = "base 2"
+mesh = "arrays"
+primitive = "triangles"
+vertices = [[8.76, 0.635, 0.4], [15.26, 1.135, -0.9], [11.885, 7.26, 0.2]]
+color = [0.2, 0.2, 0.9]
+[[objects]]
+name = "outline"
+mesh = "arrays"
+primitive = "triangles"
+vertices = [[8.76, 0.635, 0.4], [15.26, 1.135, -0.9], [11.885, 7.26, 0.2]]
+color = [1, 1, 0]
+state = { polygon_mode = "line", polygon_offset_line = true, polygon_offset = [-1, -1], line_width = 2 }
+)");
+}
+
+TEST_CASE("glslrun matches Mesa on point sprites", "[reference]") {
+    // gl_PointCoord (GLSL 1.20) and gl_TexCoord[0] replaced by GL_COORD_REPLACE.
+    auto scene = scene::parse_scene(R"(
+[output]
+size = [96, 64]
+clear_color = [0, 0, 0, 1]
+[camera]
+ortho = { left = 0, right = 12, bottom = 0, top = 8, near = -1, far = 1 }
+[state]
+point_sprite = true
+coord_replace = [0]
+point_size = 12
+[[objects]]
+mesh = "arrays"
+primitive = "points"
+vertices = [[2.135, 2.26], [6.385, 5.135], [9.76, 2.885]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+[[objects]]
+mesh = "arrays"
+primitive = "points"
+vertices = [[3.385, 6.135]]
+colors = [[1, 1, 1]]
+state = { point_size = 7 }
+)", "sprites.toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::compare("primitive-point-sprite",
+                       {{{"sprite.vert", "#version 120\nvoid main() { gl_FrontColor = gl_Color; gl_TexCoord[0] = "
+                                         "vec4(0.5); gl_Position = ftransform(); }\n"}},
+                        {{"sprite.frag", "#version 120\nvoid main() { gl_FragColor = vec4(gl_PointCoord, "
+                                         "gl_TexCoord[0].y, 1.0) * gl_Color.r + gl_Color * 0.25; }\n"}},
+                        std::move(*scene)});
+}
+
+TEST_CASE("glslrun matches Mesa on glCullFace and glFrontFace", "[reference]") {
+    compare_colors("primitive-cull-back", shapes("cull_face = \"back\"").c_str());
+    compare_colors("primitive-cull-front", shapes("cull_face = \"front\"").c_str());
+    compare_colors("primitive-cull-back-cw", shapes("cull_face = \"back\"\nfront_face = \"cw\"").c_str());
+    compare_colors("primitive-cull-front-cw", shapes("cull_face = \"front\"\nfront_face = \"cw\"").c_str());
+    // Every polygon culled; the points and lines of the last object stay.
+    std::string both = shapes("cull_face = \"front_and_back\"") + R"(
+[[objects]]
+name = "lines stay"
+mesh = "arrays"
+primitive = "line_strip"
+vertices = [[0.635, 5.76], [15.385, 6.135]]
+colors = [[1, 1, 1], [1, 0, 1]]
+state = { line_width = 4 }
+)";
+    compare_colors("primitive-cull-front-and-back", both.c_str());
+}
