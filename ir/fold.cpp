@@ -49,6 +49,7 @@ void forget(Facts& facts, const flow::Writes& writes) {
 
 struct Folder {
     const Shader& shader;
+    const FoldOptions& options;
 
     const uint32_t* known(const Facts& facts, Reg r) const {
         auto it = facts.find(r);
@@ -74,12 +75,14 @@ struct Folder {
 
     void instr(Instr& in, Facts& facts) {
         if (in.op == Op::load_ind || in.op == Op::store_ind || in.op == Op::uniform_ind) fold_indexed(in, facts);
+        if (in.op == Op::uniform && options.uniforms && in.imm[0] < options.uniforms->size())
+            make_konst(in, (*options.uniforms)[in.imm[0]]);
         if (in.op == Op::sel) {
             if (const uint32_t* c = known(facts, in.src[0])) make_mov(in, in.dst, *c ? in.src[1] : in.src[2]);
         }
         if (in.op == Op::mov) {
             if (const uint32_t* v = known(facts, in.src[0])) make_konst(in, *v);
-        } else if (alu::is_alu(in.op)) {
+        } else if (alu::is_alu(in.op) && !(options.approximated & fast_class_bit(op_info(in.op).fast))) {
             int arity = op_info(in.op).arity;
             uint32_t values[3] = {0, 0, 0};
             bool all_known = true;
@@ -147,9 +150,9 @@ struct Folder {
 
 }  // namespace
 
-void fold_constants(Shader& shader) {
+void fold_constants(Shader& shader, const FoldOptions& options) {
     FlushDenormals ftz;
-    Folder folder{shader};
+    Folder folder{shader, options};
     for (Function& f : shader.functions) {
         Facts facts;
         folder.run_block(f.body, facts);

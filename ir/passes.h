@@ -2,7 +2,9 @@
 // optimize() runs them in order and, with PassOptions::verify, the verifier
 // after every pass.
 #pragma once
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ir/ir.h"
 
@@ -21,8 +23,15 @@ std::string print(const Program& program);
 // beyond the budget stay real calls.
 void inline_calls(Shader& shader, uint32_t budget);
 // ir/fold.cpp: evaluates Alu instructions whose operands are constants, using
-// the opcode table's expressions; folds If on constant conditions.
-void fold_constants(Shader& shader);
+// the opcode table's expressions; folds If on constant conditions. With
+// `uniforms` (a specialization, ir/specialize.cpp) `uniform` reads fold to
+// those words; ops of the FastClass bits in `approximated` are left alone
+// (Precision::Fast computes them with other kernels at run time).
+struct FoldOptions {
+    const std::vector<uint32_t>* uniforms = nullptr;
+    uint32_t approximated = 0;  // bit c - 1 for FastClass c
+};
+void fold_constants(Shader& shader, const FoldOptions& options = {});
 // ir/copyprop.cpp: replaces reads of a register that holds a copy of another
 // register (or constant) by the source, within straight-line code.
 void propagate_copies(Shader& shader);
@@ -48,6 +57,16 @@ void mark_sqrt_divisors(Shader& shader);
 // ir/regalloc.cpp: renumbers registers so that values with disjoint live
 // ranges share one; the register file shrinks. Runs last.
 void allocate_registers(Shader& shader);
+
+// ir/specialize.cpp: `shader` (optimized) for one uniform store: its
+// prologue joins the body, every uniform read of `uniforms` becomes a
+// constant, and fold (leaving the `approximated` FastClass bits alone), dce
+// and hoist run again, the verifier after each: dead branches go and
+// uniform code folds away, with the same bits. "" or the verifier's message.
+std::string specialize(Shader& shader, const std::vector<uint32_t>& uniforms, uint32_t approximated);
+// The uniform store words that `shader` reads (uniform, uniform_ind): a
+// specialization's key.
+std::vector<uint32_t> uniform_words_read(const Shader& shader);
 
 // ir/uniform_reads.cpp: sets Uniform::read on the leaves whose words some
 // `uniform`/`uniform_ind` instruction of either shader reads (after

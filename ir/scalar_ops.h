@@ -45,13 +45,13 @@ inline double ftz(double a) { return a; }
 // `r`, an a + b or a * b, with a's NaN when a is one. x86 returns the first
 // source operand's NaN when both operands are NaNs, but compilers commute +
 // and * freely (GCC in the interpreter's kernels, differently per ISA; LLVM
-// in the JIT), so those ops say which NaN they return: a + a is a's NaN,
-// quieted, in either order. A single NaN operand passes through as before.
+// in the JIT), so those ops say which NaN they return: a itself (the
+// cheapest rule to generate code for). A NaN b passes through as before.
 // (The passes still treat + and * as commutative: ir/copyprop.cpp,
 // ir/fuse_mad.cpp; that may pick the other of two NaNs, the same for both
 // backends, which run the same IR.)
 template <class T>
-T a_nan_first(T a, T r) { return a != a ? a + a : r; }
+T a_nan_first(T a, T r) { return a != a ? a : r; }
 template <class T>
 T glsl_mad(T a, T b, T c) {
     const T p = a_nan_first(a, a * b);

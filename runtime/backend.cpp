@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "ir/passes.h"
 #include "runtime/backend_cache.h"
 #include "runtime/fragment_pipeline.h"
 #include "runtime/interp_kernels.h"
@@ -65,12 +66,13 @@ private:
 }  // namespace
 
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
-                                               uint32_t fast_ops, bool avx2, double* llvm_seconds) {
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds,
+                                               bool quick_codegen) {
     if (llvm_seconds) *llvm_seconds = 0;
 #ifdef GLSLRUN_HAVE_JIT
     if (backend == Backend::Jit) {
         jit::CompileStats stats;
-        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, &stats);
+        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
         if (llvm_seconds) *llvm_seconds = stats.seconds;
         if (code) return code;
     }
@@ -82,12 +84,42 @@ BackendCache::~BackendCache() {
     for (std::thread& t : threads_) t.join();
 }
 
+namespace {
+
+// A specialized shader's code and the IR it was made from (which the
+// interpreter's code refers to, where the JIT declines it).
+class SpecializedShader final : public CompiledShader {
+public:
+    std::unique_ptr<ir::Shader> shader;
+    std::unique_ptr<CompiledShader> code;
+    std::unique_ptr<Executor> instantiate(const ExecParams& params) const override {
+        return code->instantiate(params);
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, const Key& key, double* seconds) {
+    if (key.specialization.empty())
+        return compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, seconds, key.quick_codegen);
+    const std::vector<uint32_t> read = ir::uniform_words_read(shader);
+    std::vector<uint32_t> store(read.empty() ? 0 : read.back() + 1);
+    for (size_t i = 0; i < read.size(); ++i) store[read[i]] = key.specialization[i];
+    auto specialized = std::make_unique<SpecializedShader>();
+    specialized->shader = std::make_unique<ir::Shader>(shader);
+    const uint32_t approximated = key.precision == Precision::Fast ? key.fast_ops : 0;
+    if (!ir::specialize(*specialized->shader, store, approximated).empty()) *specialized->shader = shader;  // a bug: unspecialized
+    specialized->code = compile_shader(*specialized->shader, key.backend, key.precision, key.fast_ops, key.avx2,
+                                       seconds, key.quick_codegen);
+    return specialized;
+}
+
 // Called with the lock held.
 const CompiledShader& BackendCache::compile_now(const ir::Shader& shader, const Key& key) {
     std::unique_ptr<CompiledShader>& slot = shaders_[key];
     if (!slot) {
         double seconds = 0;
-        slot = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+        slot = compile(shader, key, &seconds);
         jit_compile_seconds_ += seconds;
     }
     return *slot;
@@ -95,6 +127,11 @@ const CompiledShader& BackendCache::compile_now(const ir::Shader& shader, const 
 
 const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key, bool wait) {
     std::unique_lock lock(mutex_);
+    return get_locked(lock, shader, key, wait);
+}
+
+const CompiledShader& BackendCache::get_locked(std::unique_lock<std::mutex>& lock, const ir::Shader& shader,
+                                               const Key& key, bool wait) {
     if (auto found = shaders_.find(key); found != shaders_.end() && found->second) return *found->second;
     if (key.backend != Backend::Jit) return compile_now(shader, key);
     if (compiling_[key]) {
@@ -106,7 +143,7 @@ const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key
         try {
             threads_.emplace_back([this, &shader, key] {
                 double seconds = 0;
-                auto code = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &seconds);
+                auto code = compile(shader, key, &seconds);
                 std::lock_guard done(mutex_);
                 shaders_[key] = std::move(code);
                 jit_compile_seconds_ += seconds;
@@ -119,9 +156,29 @@ const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key
     } else {
         return compile_now(shader, key);
     }
-    Key interp = key;
-    interp.backend = Backend::Interp;
-    return compile_now(shader, interp);
+    // Meanwhile: the unspecialized code for a specialized key, the interpreter for that.
+    Key fallback = key;
+    if (!key.specialization.empty()) fallback.specialization.clear();
+    else fallback.backend = Backend::Interp;
+    return get_locked(lock, shader, fallback, false);
+}
+
+std::vector<uint32_t> BackendCache::specialization(const ir::Shader& shader, const std::vector<uint32_t>& store,
+                                                   uint64_t use, uint32_t after) {
+    std::lock_guard lock(mutex_);
+    Streak& streak = streaks_[size_t(shader.stage)];
+    if (!streak.surveyed) streak.read = ir::uniform_words_read(shader), streak.surveyed = true;
+    if (streak.read.empty() || after == 0) return {};
+    std::vector<uint32_t> words;
+    for (uint32_t w : streak.read) words.push_back(w < store.size() ? store[w] : 0);
+    if (words != streak.words) {
+        streak.words = words;
+        streak.draws = 1;
+    } else if (use != streak.last_use) {
+        ++streak.draws;
+    }
+    streak.last_use = use;
+    return streak.draws >= after ? words : std::vector<uint32_t>{};
 }
 
 double BackendCache::jit_compile_seconds() const {
@@ -136,7 +193,9 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
     ExecParams params{st.uniforms.data(), RunLimits(program.exec), textures, program.exec.precision,
                       st.fast_ops};
     BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
-                          params.fast_ops, cpu_has_avx2()};
+                          params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
+    if (key.backend == Backend::Jit)
+        key.specialization = st.backends->specialization(shader, st.uniforms, st.uses, program.exec.jit_specialize_after);
     return st.backends->get(shader, key, program.exec.backend == Backend::Jit).instantiate(params);
 }
 

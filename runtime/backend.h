@@ -104,9 +104,11 @@ public:
 // `fast_ops` and the vector ISA (`avx2`, else baseline x86-64). The JIT
 // declines what it cannot take (Reference, a recursive call graph, calls
 // that expand to too much code, a build without it): the interpreter then serves, with the same bits.
-// *llvm_seconds (may be null) receives LLVM's compile time.
+// *llvm_seconds (may be null) receives LLVM's compile time; `quick_codegen`:
+// ExecOptions::jit_quick_codegen.
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
-                                               uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr);
+                                               uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr,
+                                               bool quick_codegen = false);
 
 // An executor of `program`'s shader for `stage`, from the code cached on the
 // program (compiled at the first call for its key; thread-safe). The

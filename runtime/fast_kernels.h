@@ -81,10 +81,7 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 }  // namespace fast
 
 // The FastOps bit of an op's class (ir/opcodes.def's `fast` column); 0 for Exact ops.
-inline uint32_t fast_op_class(ir::Op op) {
-    const ir::FastClass c = ir::op_info(op).fast;
-    return c == ir::FastClass::Exact ? 0u : 1u << (uint32_t(c) - 1);
-}
+inline uint32_t fast_op_class(ir::Op op) { return ir::fast_class_bit(ir::op_info(op).fast); }
 static_assert(kFastRsqrt == 1u << (uint32_t(ir::FastClass::Rsqrt) - 1) &&
               kFastSinCos == 1u << (uint32_t(ir::FastClass::SinCos) - 1));
 

@@ -35,6 +35,7 @@ ProgramUse::ProgramUse(Program& program) {
         return;
     }
     claimed_ = &state_of(program);
+    ++claimed_->uses;
 }
 
 ProgramUse::~ProgramUse() {

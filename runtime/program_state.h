@@ -28,6 +28,9 @@ struct Program::State {
     uint32_t fast_ops = ~0u;
     // Set while a draw or set_uniform runs (ProgramUse).
     std::atomic<bool> busy{false};
+    // Draws and uniform updates so far (ProgramUse): tells one draw's
+    // executors from the next draw's (the specialization policy).
+    uint64_t uses = 0;
     // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
     raster::DrawProbe* probe = nullptr;
     // The shaders compiled by the backends (runtime/backend_cache.h), made

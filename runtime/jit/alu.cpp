@@ -126,7 +126,7 @@ llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm:
     auto floor = [&](llvm::Value* x) { return call_intrinsic(llvm::Intrinsic::floor, {x}); };
     // ir::a_nan_first: + and * return a's NaN when a is one.
     auto nan_first = [&](llvm::Value* x, llvm::Value* r) {
-        return b_.CreateSelect(b_.CreateFCmpUNO(x, x), b_.CreateFAdd(x, x), r);
+        return b_.CreateSelect(b_.CreateFCmpUNO(x, x), x, r);
     };
     auto product = [&] { return nan_first(a, b_.CreateFMul(a, b)); };
     switch (op) {

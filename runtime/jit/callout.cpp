@@ -17,4 +17,29 @@ void run_call_out(Context* ctx, uint32_t* regs, const CallOut* call, uint64_t ex
     step.fn(step, m);
 }
 
+namespace {
+uint64_t poll_below(uint64_t left) {
+    return left > RunLimits::kCancelPoll ? left - RunLimits::kCancelPoll : 0;
+}
+}  // namespace
+
+void Context::start_budget(uint64_t max_instructions, const std::atomic<bool>* flag) {
+    cancel = flag;
+    next_cancel_poll = flag ? poll_below(max_instructions) : 0;
+    credit = max_instructions - next_cancel_poll;
+}
+
+// Interpreter's charge(), from credit = left - next_cancel_poll.
+int32_t charge_slowly(Context* ctx, uint64_t credit, uint64_t instructions) {
+    uint64_t left = ctx->next_cancel_poll + credit;
+    if (instructions > left) return int32_t(Failure::Instructions);
+    left -= instructions;
+    if (ctx->cancel && left < ctx->next_cancel_poll) {
+        ctx->next_cancel_poll = poll_below(left);
+        if (ctx->cancel->load(std::memory_order_relaxed)) return int32_t(Failure::Cancelled);
+    }
+    ctx->credit = left - ctx->next_cancel_poll;
+    return int32_t(Failure::None);
+}
+
 }  // namespace glslrun::rt::jit

@@ -46,7 +46,6 @@ private:
     void begin_budget();
     void end_budget();
     void charge(uint64_t instructions);
-    llvm::Value* poll_below(llvm::Value* left);
     llvm::BasicBlock* new_block(const char* name);
 
     // --- alu.cpp: one instruction
@@ -99,10 +98,9 @@ private:
     llvm::AllocaInst* cont_ = nullptr;
     llvm::AllocaInst* ret_ = nullptr;
     llvm::AllocaInst* loop_left_ = nullptr;
-    llvm::AllocaInst* instructions_left_ = nullptr;
-    llvm::AllocaInst* next_cancel_poll_ = nullptr;
-    llvm::BasicBlock* over_budget_ = nullptr;  // the failures that charge() branches to
-    llvm::BasicBlock* cancelled_ = nullptr;
+    llvm::AllocaInst* credit_ = nullptr;
+    llvm::AllocaInst* budget_failure_ = nullptr;
+    llvm::BasicBlock* over_budget_ = nullptr;  // where charge()'s failures return
 };
 
 }  // namespace glslrun::rt::jit

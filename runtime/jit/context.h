@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 
+#include "runtime/backend.h"
 #include "runtime/interp_kernels.h"
 
 namespace glslrun::rt::jit {
@@ -14,11 +15,17 @@ enum class Failure : int32_t { None = 0, LoopCap = 1, MissingFunction = 2, Instr
 
 struct Context {
     uint64_t max_loop_iterations = 0;  // read at entry
-    // The work budget, read at entry: instructions charged per block entered
-    // and the cancel flag polled every kCancelPoll of them, as the
-    // interpreter does (runtime/interpreter.cpp). `cancel` may be null.
-    uint64_t max_instructions = 0;
+    // The work budget, as the interpreter's (runtime/interpreter.cpp):
+    // instructions charged per block entered, and the cancel flag (may be
+    // null) polled whenever the count passes `next_cancel_poll`. The
+    // generated code keeps only `credit`, the instructions it may charge
+    // before either event (left - next_cancel_poll), read at entry; beyond
+    // it, charge_slowly() does the interpreter's bookkeeping.
+    uint64_t credit = 0;
+    uint64_t next_cancel_poll = 0;
     const std::atomic<bool>* cancel = nullptr;
+    // Starts a run of `max_instructions` (RunLimits::kCancelPoll below it: the first poll).
+    void start_budget(uint64_t max_instructions, const std::atomic<bool>* flag);
     uint64_t alive = 0;                // written at exit: the lanes that did not discard
     int32_t error_line = 0;            // with a Failure
     // The call-outs run the interpreter's kernels over this machine (its
@@ -28,8 +35,7 @@ struct Context {
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
-inline constexpr size_t kMaxInstructionsOffset = offsetof(Context, max_instructions);
-inline constexpr size_t kCancelOffset = offsetof(Context, cancel);
+inline constexpr size_t kCreditOffset = offsetof(Context, credit);
 inline constexpr size_t kAliveOffset = offsetof(Context, alive);
 inline constexpr size_t kErrorLineOffset = offsetof(Context, error_line);
 
@@ -46,5 +52,9 @@ using ShaderFn = int32_t (*)(Context* ctx, uint32_t* regs, const uint32_t* unifo
 // Runs `call`'s kernel on the lanes in `exec` (a plain C++ function whose
 // address the generated code holds).
 void run_call_out(Context* ctx, uint32_t* regs, const CallOut* call, uint64_t exec);
+
+// Charges `instructions` with only `credit` left before an event: returns
+// the Failure (Instructions, Cancelled or None) and sets ctx->credit anew.
+int32_t charge_slowly(Context* ctx, uint64_t credit, uint64_t instructions);
 
 }  // namespace glslrun::rt::jit

@@ -83,53 +83,38 @@ void Emitter::define(const std::string& name, const ir::Block& block) {
     end_budget();
 }
 
-// Interpreter::run's budget: max_instructions left, and the first cancel
-// poll kCancelPoll below it (never, without a flag).
+// The run's budget (Context::credit), and the block that its failures
+// (an Instructions or Cancelled code in budget_failure_) return from.
 void Emitter::begin_budget() {
-    instructions_left_ = b_.CreateAlloca(i64_, nullptr, "instructions_left");
-    next_cancel_poll_ = b_.CreateAlloca(i64_, nullptr, "next_cancel_poll");
-    llvm::Value* left = b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kMaxInstructionsOffset));
-    b_.CreateStore(left, instructions_left_);
-    llvm::Value* flag = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCancelOffset));
-    store_mask(next_cancel_poll_, b_.CreateSelect(b_.CreateIsNull(flag), b_.getInt64(0), poll_below(left)));
+    credit_ = b_.CreateAlloca(i64_, nullptr, "credit");
+    budget_failure_ = b_.CreateAlloca(i32_, nullptr, "budget_failure");
+    b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCreditOffset)), credit_);
     over_budget_ = new_block("over_budget");
-    cancelled_ = new_block("cancelled");
 }
 
-llvm::Value* Emitter::poll_below(llvm::Value* left) {
-    constexpr uint64_t poll = RunLimits::kCancelPoll;
-    return b_.CreateSelect(b_.CreateICmpUGT(left, b_.getInt64(poll)), b_.CreateSub(left, b_.getInt64(poll)),
-                           b_.getInt64(0));
-}
-
-// The failure blocks that charge() branches to, shared by the function.
 void Emitter::end_budget() {
-    for (auto [block, failure] : {std::pair{over_budget_, Failure::Instructions}, std::pair{cancelled_, Failure::Cancelled}}) {
-        b_.SetInsertPoint(block);
-        emit_failure(failure, 0);
-        b_.CreateUnreachable();
-    }
+    b_.SetInsertPoint(over_budget_);
+    b_.CreateStore(load_mask(alive_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kAliveOffset));
+    b_.CreateStore(b_.getInt32(0), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kErrorLineOffset));
+    b_.CreateRet(b_.CreateLoad(i32_, budget_failure_));
 }
 
-// Interpreter's charge(): a block of `instructions` nodes is entered.
+// The interpreter's charge() as a block of `instructions` nodes is entered:
+// within the credit a subtraction; beyond it, charge_slowly().
 void Emitter::charge(uint64_t instructions) {
-    llvm::Value* left = load_mask(instructions_left_);
+    llvm::Value* credit = b_.CreateLoad(i64_, credit_);
+    b_.CreateStore(b_.CreateSub(credit, b_.getInt64(instructions)), credit_);
+    llvm::BasicBlock* slow = new_block("charge_slowly");
     llvm::BasicBlock* charged = new_block("charged");
-    b_.CreateCondBr(b_.CreateICmpUGT(b_.getInt64(instructions), left), over_budget_, charged);
+    b_.CreateCondBr(b_.CreateICmpUGT(b_.getInt64(instructions), credit), slow, charged);
+    b_.SetInsertPoint(slow);
+    auto* type = llvm::FunctionType::get(i32_, {ptr_, i64_, i64_}, false);
+    auto* callee = llvm::ConstantExpr::getIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&charge_slowly)), ptr_);
+    llvm::Value* failure = b_.CreateCall(type, callee, {ctx_arg_, credit, b_.getInt64(instructions)});
+    b_.CreateStore(failure, budget_failure_);
+    b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCreditOffset)), credit_);
+    b_.CreateCondBr(b_.CreateICmpNE(failure, b_.getInt32(0)), over_budget_, charged);
     b_.SetInsertPoint(charged);
-    left = b_.CreateSub(left, b_.getInt64(instructions));
-    store_mask(instructions_left_, left);
-    // The count passed the next poll, which only a run with a flag has.
-    llvm::BasicBlock* poll = new_block("poll");
-    llvm::BasicBlock* polled = new_block("polled");
-    b_.CreateCondBr(b_.CreateICmpULT(left, load_mask(next_cancel_poll_)), poll, polled);
-    b_.SetInsertPoint(poll);
-    store_mask(next_cancel_poll_, poll_below(left));
-    llvm::Value* flag = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCancelOffset));
-    auto* set = b_.CreateLoad(b_.getInt8Ty(), flag);
-    set->setAtomic(llvm::AtomicOrdering::Monotonic);
-    b_.CreateCondBr(b_.CreateICmpNE(set, b_.getInt8(0)), cancelled_, polled);
-    b_.SetInsertPoint(polled);
 }
 
 // Leaves the block on `exit` when no lane is active, as run_block does.

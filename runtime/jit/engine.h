@@ -15,7 +15,7 @@
 
 namespace glslrun::rt::jit {
 
-// LLVM's machinery for one vector ISA, made once per process at its first
+// LLVM's machinery for one vector ISA and code-generation level, made once per process at its first
 // compile (a target machine and an LLJIT with the process's symbols: about
 // 20 ms each time it was made per shader): every module (a shader's, a
 // fragment pipeline's) joins the one LLJIT under names of its own, and its
@@ -28,11 +28,11 @@ struct Engine {
     std::unique_ptr<llvm::orc::LLJIT> jit;
     uint64_t modules = 0;  // names them apart
 
-    // Null where LLVM could not make it.
-    static Engine* of(bool avx2);
+    // Null where LLVM could not make it. `quick`: ExecOptions::jit_quick_codegen.
+    static Engine* of(bool avx2, bool quick);
 
 private:
-    void make(bool avx2);
+    void make(const llvm::orc::JITTargetMachineBuilder& target);
 };
 
 // LLVM's native target, registered once per process.
@@ -40,8 +40,9 @@ void initialise_llvm();
 // The compiling thread's CPU time: LLVM's cost without the machine's load
 // or the wait for another compile.
 double thread_cpu_seconds();
-// The baseline x86-64 ISA or AVX2 (x86-64-v3), never fusing a * b + c.
-llvm::orc::JITTargetMachineBuilder target_for(bool avx2);
+// The baseline x86-64 ISA or AVX2 (x86-64-v3), never fusing a * b + c;
+// `quick`: LLVM's code generation without its optimizations (same bits).
+llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick);
 // The JIT's short function pass pipeline (module.cpp says why it is short).
 void optimise(llvm::Module& module, llvm::TargetMachine& machine);
 

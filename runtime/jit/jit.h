@@ -21,11 +21,12 @@ struct CompileStats {
 };
 
 // Native code for `shader` in `precision` (Precise or Fast, with Fast's
-// `fast_ops` classes) for the baseline x86-64 ISA or AVX2. Null where the
+// `fast_ops` classes) for the baseline x86-64 ISA or AVX2, with LLVM's
+// code-generation optimizations unless `quick_codegen`. Null where the
 // JIT does not take the shader (a recursive call graph, calls that expand
 // to too much code, or LLVM failed):
 // the caller runs the interpreter instead, which computes the same bits.
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
-                                        bool avx2, CompileStats* stats);
+                                        bool avx2, bool quick_codegen, CompileStats* stats);
 
 }  // namespace glslrun::rt::jit

@@ -91,10 +91,10 @@ bool jit_takes(const ir::Shader& shader) {
 
 }  // namespace
 
-llvm::orc::JITTargetMachineBuilder target_for(bool avx2) {
+llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick) {
     llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
     builder.setCPU(avx2 ? "x86-64-v3" : "x86-64");
-    builder.setCodeGenOptLevel(llvm::CodeGenOpt::Default);
+    builder.setCodeGenOptLevel(quick ? llvm::CodeGenOpt::None : llvm::CodeGenOpt::Default);
     builder.getOptions().AllowFPOpFusion = llvm::FPOpFusion::Strict;
     return builder;
 }
@@ -105,18 +105,19 @@ double thread_cpu_seconds() {
     return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
 }
 
-Engine* Engine::of(bool avx2) {
-    static Engine engines[2];
-    static std::once_flag made[2];
-    Engine& e = engines[avx2];
-    std::call_once(made[avx2], [&] { e.make(avx2); });
+Engine* Engine::of(bool avx2, bool quick) {
+    static Engine engines[4];
+    static std::once_flag made[4];
+    const int which = int(avx2) * 2 + int(quick);
+    Engine& e = engines[which];
+    std::call_once(made[which], [&] { e.make(target_for(avx2, quick)); });
     return e.jit ? &e : nullptr;
 }
 
-void Engine::make(bool avx2) {
+void Engine::make(const llvm::orc::JITTargetMachineBuilder& target) {
     initialise_llvm();
-    auto tm = target_for(avx2).createTargetMachine();
-    auto built = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target_for(avx2)).create();
+    auto tm = target.createTargetMachine();
+    auto built = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target).create();
     if (!tm || !built) {
         if (!tm) llvm::consumeError(tm.takeError());
         if (!built) llvm::consumeError(built.takeError());
@@ -187,21 +188,20 @@ public:
     JitExecutor(const JitShader& code, const ExecParams& p)
         : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms), limits_(p.limits) {
         ctx_.max_loop_iterations = p.limits.max_loop_iterations;
-        ctx_.max_instructions = UINT64_MAX;  // the prologue: straight-line code, as the interpreter's
+        ctx_.start_budget(UINT64_MAX, nullptr);  // the prologue: straight-line code, as the interpreter's
         ctx_.machine.uniforms = p.uniforms;
         ctx_.machine.textures = p.textures;
         ctx_.machine.regs = regs_.data;
         ctx_.reg_count = code.reg_count;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
-        ctx_.max_instructions = limits_.max_instructions;
-        ctx_.cancel = limits_.cancel;
     }
     uint32_t* lanes(ir::Reg r) override {
         return regs_.data + size_t(r == ir::kNoReg || r >= code_.reg_count ? code_.reg_count : r) * kLanes;
     }
     bool run(LaneMask live, RunError* error) override {
         ir::FlushDenormals ftz;
+        ctx_.start_budget(limits_.max_instructions, limits_.cancel);
         const Failure failure = Failure(code_.main(&ctx_, regs_.data, uniforms_, live));
         if (failure == Failure::None) return true;
         if (error) {
@@ -231,10 +231,10 @@ std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const
 }  // namespace
 
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
-                                        bool avx2, CompileStats* stats) {
+                                        bool avx2, bool quick_codegen, CompileStats* stats) {
     if (precision == Precision::Reference || !jit_takes(shader)) return nullptr;
     const double start = thread_cpu_seconds();
-    Engine* engine = Engine::of(avx2);
+    Engine* engine = Engine::of(avx2, quick_codegen);
     if (!engine) return nullptr;
     auto code = std::make_unique<JitShader>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);

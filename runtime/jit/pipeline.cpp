@@ -452,7 +452,7 @@ public:
 std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
                                                    double* seconds) {
     const double start = thread_cpu_seconds();
-    Engine* engine = Engine::of(key.avx2);
+    Engine* engine = Engine::of(key.avx2, false);
     if (!engine) return nullptr;
     auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);

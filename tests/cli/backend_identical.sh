@@ -16,14 +16,20 @@ echo "$cases" > "$tmp/cases"
 while read -r shader scene; do
     for precision in precise fast; do
         for threads in 1 2; do
-            for backend in interp jit; do
+            # At 1 thread the JIT also draws with the uniforms compiled in (specialized from the first draw).
+            specialized=$([ $threads = 1 ] && echo jit_specialized)
+            for backend in interp jit $specialized; do
                 "$glslrun" "$src/shaders/$shader.vert" "$src/shaders/$shader.frag" "$src/scenes/$scene" \
-                    --precision $precision --threads $threads --backend $backend -o "$tmp/$backend.png" >/dev/null ||
+                    --precision $precision --threads $threads --backend ${backend%_specialized} \
+                    --specialize-after $([ $backend = jit_specialized ] && echo 1 || echo 0) \
+                    -o "$tmp/$backend.png" >/dev/null ||
                     fail "$shader on $scene did not render ($precision, $backend)"
             done
-            cmp -s "$tmp/interp.png" "$tmp/jit.png" ||
-                fail "$shader on $scene ($precision, $threads threads): the JIT's image differs from the interpreter's"
-            compared=$((compared + 1))
+            for backend in jit $specialized; do
+                cmp -s "$tmp/interp.png" "$tmp/$backend.png" ||
+                    fail "$shader on $scene ($precision, $threads threads): the $backend image differs from the interpreter's"
+                compared=$((compared + 1))
+            done
         done
     done
 done < "$tmp/cases"

@@ -2,7 +2,7 @@
 // table but tex, random structured control flow with break, continue,
 // return, discard and loops that may hit the iteration cap) run on the
 // interpreter and on the JIT, in Precise and Fast, for the baseline and the
-// AVX2 code, half of them under an instruction budget that some batches
+// AVX2 code (and LLVM's quick code generation in Precise), half of them under an instruction budget that some batches
 // exhaust; every register of every lane, the alive mask and the run's error
 // must be bit-identical. Inputs mix ordinary values with the special
 // ones (signed zeros, denormals, infinities, NaNs, integer extremes).
@@ -170,11 +170,12 @@ std::string run_all(rt::Executor& e, const ir::Shader& shader, const std::vector
 
 // The first word where the backends differ on `shader` (size when none).
 size_t first_difference(const ir::Shader& shader, const std::vector<uint32_t>& uniforms, const std::vector<Batch>& batches,
-                        uint64_t max_instructions, Precision precision, bool avx2, std::string* logs, uint32_t* words) {
+                        uint64_t max_instructions, Precision precision, bool avx2, bool quick, std::string* logs,
+                        uint32_t* words) {
     rt::ExecParams params{uniforms.data(), kLoopCap, nullptr, precision, rt::kAllFastOps};
     params.limits.max_instructions = max_instructions;
     auto interp = rt::compile_shader(shader, Backend::Interp, precision, params.fast_ops, avx2);
-    auto jit = rt::compile_shader(shader, Backend::Jit, precision, params.fast_ops, avx2);
+    auto jit = rt::compile_shader(shader, Backend::Jit, precision, params.fast_ops, avx2, nullptr, quick);
     auto a = interp->instantiate(params);
     auto b = jit->instantiate(params);
     REQUIRE(b->backend() == Backend::Jit);
@@ -212,12 +213,15 @@ TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fu
             batch.live = fz.pick(4) == 0 ? rt::kAllLanes >> (4 * (1 + fz.pick(rt::kLanes / 4 - 1))) : rt::kAllLanes;
         }
         for (Precision precision : {Precision::Precise, Precision::Fast})
-            for (bool isa : {false, true}) {
-                if (isa && !avx2) continue;
-                INFO("program " << p << ", " << precision_name(precision) << (isa ? ", avx2" : ", baseline"));
+            for (int config = 0; config < 3; ++config) {
+                // Baseline, AVX2, and (Precise only) quick code generation for this CPU.
+                const bool isa = config == 1 || (config == 2 && avx2), quick = config == 2;
+                if ((config == 1 && !avx2) || (quick && precision != Precision::Precise)) continue;
+                INFO("program " << p << ", " << precision_name(precision) << (isa ? ", avx2" : ", baseline")
+                                << (quick ? ", quick codegen" : ""));
                 std::string logs[2];
                 uint32_t words[2];
-                size_t first = first_difference(shader, uniforms, batches, max_instructions, precision, isa, logs, words);
+                size_t first = first_difference(shader, uniforms, batches, max_instructions, precision, isa, quick, logs, words);
                 REQUIRE(logs[0] == logs[1]);
                 over_budget += logs[0].find("instructions in one batch") != std::string::npos;
                 if (first != std::string::npos) {
@@ -227,7 +231,7 @@ TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fu
                         ir::Block body = shader.body;
                         for (size_t n = 1; n <= body.size(); ++n) {
                             shader.body.assign(body.begin(), body.begin() + long(n));
-                            if (first_difference(shader, uniforms, batches, max_instructions, precision, isa, logs, words) != std::string::npos) {
+                            if (first_difference(shader, uniforms, batches, max_instructions, precision, isa, quick, logs, words) != std::string::npos) {
                                 where = "\nthe first " + std::to_string(n) + " nodes differ:\n" + ir::print(shader);
                                 where += "unmasked:";
                                 std::function<void(const ir::Block&)> list = [&](const ir::Block& block) {

@@ -127,7 +127,7 @@ int run_test_command(const TestOptions& o) {
     run_options.time_limit_s = o.time_limit;
     run_options.precision = o.precision;
     run_options.backend = o.backend;
-    if (!o.no_isolate) pg::warm_up_compiler();
+    if (!o.no_isolate) pg::warm_up_compiler(o.backend);
     auto run_one = [&](const pg::TestCase& tc) {
         if (o.no_isolate) {
             Watchdog watchdog(o.time_limit);
@@ -239,6 +239,10 @@ int program_cli(int argc, char** argv) {
         ->check(CLI::Range(1, 256));
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
+    app.add_option("--specialize-after", o.specialize_after,
+                   "the JIT compiles a stage's uniforms in as constants once this many draws in a row had the "
+                   "same values (default 0: never); the images do not change")
+        ->type_name("N");
     app.add_option("--bench", o.bench_frames,
                    "render N more frames into the same framebuffer and print `key value` lines: the "
                    "first frame (compile_ms, first_draw_ms), then median_ms, cpu_median_ms (process CPU "

@@ -126,6 +126,7 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
         if (options_.max_loop_iterations) program_->exec.max_loop_iterations = options_.max_loop_iterations;
         program_->exec.precision = options_.precision;
         program_->exec.backend = options_.backend;
+        program_->exec.jit_quick_codegen = true;  // many programs, few draws: see docs/performance.md
         program_->exec.cancel = options_.cancel;
         return std::nullopt;
     }
@@ -439,13 +440,19 @@ TestResult run_test_file(const std::string& path, const RunOptions& options) {
     return run_parser_test(*text, ext, std::filesystem::path(path).filename().string(), options);
 }
 
-void warm_up_compiler() {
+void warm_up_compiler(Backend backend) {
     const ShaderSource vs{"warm-up.vert", "void main() { gl_Position = ftransform(); }\n"};
     const ShaderSource fs{"warm-up.frag", "void main() { gl_FragColor = gl_Color; }\n"};
     for (int version : {110, 120}) {
         CompileOptions options;
         options.default_version = version;
-        (void)Program::compile({vs}, {fs}, options);
+        auto program = Program::compile({vs}, {fs}, options);
+        if (!program || backend == Backend::Interp || version != 110) continue;
+        program->exec.backend = Backend::Jit;
+        program->exec.jit_quick_codegen = true;  // as run_test_file's
+        program->exec.threads = 1;
+        Framebuffer pixel(1, 1);
+        (void)draw(*program, GLState{}, pixel, Primitive::Triangles, {{"gl_Vertex", 2, {-1, -1, 3, -1, -1, 3}}}, 3);
     }
 }
 

@@ -32,7 +32,9 @@ TestResult run_parser_test(const std::string& text, const std::string& ext, cons
 // Compiles a small program per GLSL version the suite uses, so that glslang's
 // built-in symbol tables (built once per process on first use, per version and
 // stage, and read-only afterwards) exist before run_isolated forks: each
-// test's child inherits them instead of building them again.
-void warm_up_compiler();
+// test's child inherits them instead of building them again. With `backend`
+// Jit or Auto it also draws one pixel through the JIT: LLVM's one-time set-up
+// (its engine, and about 10 ms of first-compile work) is then inherited too.
+void warm_up_compiler(Backend backend);
 
 }  // namespace glslrun::piglit

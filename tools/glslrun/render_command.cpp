@@ -321,6 +321,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
     prog->exec.backend = o.backend;
+    prog->exec.jit_specialize_after = o.specialize_after;
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     double compile_ms = ms_since(start);

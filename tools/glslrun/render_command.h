@@ -24,6 +24,7 @@ struct RenderOptions {
     double frames_per_second = 0;  // 0: the scene's
     Precision precision = Precision::Precise;  // --precision
     Backend backend = Backend::Auto;           // --backend
+    uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
 };
 
 // The files on the command line, sorted by their extensions.
