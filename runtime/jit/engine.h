@@ -32,7 +32,7 @@ struct Engine {
     static Engine* of(bool avx2, bool quick);
 
 private:
-    void make(const llvm::orc::JITTargetMachineBuilder& target);
+    void make(llvm::orc::JITTargetMachineBuilder target);
 };
 
 // LLVM's native target, registered once per process.

@@ -114,7 +114,7 @@ Engine* Engine::of(bool avx2, bool quick) {
     return e.jit ? &e : nullptr;
 }
 
-void Engine::make(const llvm::orc::JITTargetMachineBuilder& target) {
+void Engine::make(llvm::orc::JITTargetMachineBuilder target) {
     initialise_llvm();
     auto tm = target.createTargetMachine();
     auto built = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(target).create();

@@ -63,7 +63,7 @@ TEST_CASE("parallel isolated runs keep their own results", "[piglit][isolate]") 
 
 TEST_CASE("children of a warmed-up runner give the same results as in-process runs", "[piglit][isolate]") {
     // glslrun test compiles before it forks (warm_up_compiler), so children
-    // inherit glslang's built-in tables; results must not depend on it.
+    // inherit glslang's built-in tables and LLVM's engine; results must not depend on it.
     const std::string vs = "[vertex shader]\nvoid main() { gl_Position = gl_Vertex; }\n";
     const std::string fs110 = "[fragment shader]\nuniform vec4 c;\nvoid main() { gl_FragColor = c; }\n";
     const std::string fs120 =
@@ -76,7 +76,7 @@ TEST_CASE("children of a warmed-up runner give the same results as in-process ru
         {"[require]\nGLSL >= 1.10\n\n" + vs + "[fragment shader]\nvoid main() { gl_FragColor = x; }\n" + draw,
          Outcome::Fail},
     };
-    warm_up_compiler();
+    warm_up_compiler(glslrun::Backend::Jit);  // glslang's tables and LLVM's engine
     for (const auto& test : tests) {
         // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
         const std::string& text = test.first;
