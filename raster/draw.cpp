@@ -204,11 +204,12 @@ void draw_triangle(const DrawContext& c, SetupOut& out, const TriangleIds& tri, 
     draw_polygon(c, out, clipped.data(), verts, poly.size(), provoking_id, tri);
 }
 
-// A line's pixels lie within one pixel of its end points, and a wide line's
-// within half its width more.
+// A line's pixels lie within two pixels of its end points (the diamond rule
+// moves an end by up to one pixel along the line), and a wide line's within
+// half its width more.
 Rect line_rect(const FsPrimitive& p) {
     glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
-    int reach = 1 + p.line_width / 2;
+    int reach = 2 + p.line_width / 2;
     return {pixel_floor(lo.x) - reach, pixel_floor(lo.y) - reach, pixel_floor(hi.x) + 1 + reach,
             pixel_floor(hi.y) + 1 + reach};
 }

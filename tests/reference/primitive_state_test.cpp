@@ -4,6 +4,11 @@
 // (gl_PointCoord, GL_COORD_REPLACE), and glCullFace / glFrontFace, with
 // GL_FRONT_AND_BACK. Vertices sit off pixel boundaries (on one, the pixel a
 // point or a line's end takes is the implementation's rounding).
+#include <fmt/format.h>
+
+#include <array>
+#include <glm/glm.hpp>
+
 #include "tests/reference/helpers.h"
 
 using namespace glslrun;
@@ -58,11 +63,14 @@ vertices = [[9.76, 6.76], [9.885, 10.635], [12.135, 6.635], [12.26, 10.885], [14
 colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1]]
 )";
 
-std::string shapes(const std::string& state) {
-    std::string text = kShapes;
+// `scene` with its "%s" replaced by `state`.
+std::string with_state(const std::string& scene, const std::string& state) {
+    std::string text = scene;
     text.replace(text.find("%s"), 2, state);
     return text;
 }
+
+std::string shapes(const std::string& state) { return with_state(kShapes, state); }
 
 }  // namespace
 
@@ -188,4 +196,80 @@ colors = [[1, 1, 1], [1, 0, 1]]
 state = { line_width = 4 }
 )";
     compare_colors("primitive-cull-front-and-back", both.c_str());
+}
+
+namespace {
+
+// Window coordinates that survive the transforms exactly (a 128-pixel
+// viewport and an ortho of the same size, powers of two), so that an end
+// point meant to lie on a diamond's edge or a pixel's centre does.
+const char* kPixelGrid = R"(
+[output]
+size = [128, 128]
+clear_color = [0, 0, 0, 1]
+[camera]
+ortho = { left = 0, right = 128, bottom = 0, top = 128, near = -1, far = 1 }
+)";
+
+// Where in its pixel an end point lies: the centre, inside the diamond off
+// the centre, on the diamond's edge, at the pixel's corner.
+const std::array<glm::vec2, 4> kEndPlaces = {{{0.5f, 0.5f}, {0.75f, 0.625f}, {0.75f, 0.75f}, {0.0f, 0.0f}}};
+
+// One line per 8x8 cell: 16 directions (every octant, both slopes of each,
+// the axes and the diagonals) times every pair of end places.
+std::string octant_lines() {
+    const int directions[16][2] = {{5, 2},  {2, 5},  {-2, 5}, {-5, 2}, {-5, -2}, {-2, -5}, {2, -5}, {5, -2},
+                                   {4, 0},  {0, 4},  {-4, 0}, {0, -4}, {3, 3},   {-3, 3},  {-3, -3}, {3, -3}};
+    std::string vertices, colors;
+    int cell = 0;
+    for (const auto& dir : directions)
+        for (glm::vec2 start : kEndPlaces)
+            for (glm::vec2 end : kEndPlaces) {
+                glm::vec2 base{float(cell % 16 * 8 + (dir[0] < 0 ? 6 : 1)), float(cell / 16 * 8 + (dir[1] < 0 ? 6 : 1))};
+                glm::vec2 a = base + start, b = base + glm::vec2(dir[0], dir[1]) + end;
+                vertices += fmt::format("[{}, {}], [{}, {}], ", a.x, a.y, b.x, b.y);
+                colors += fmt::format("[1, {}, 0.5], [0.25, 1, {}], ", cell % 7 / 6.0, cell % 5 / 4.0);
+                ++cell;
+            }
+    return fmt::format("{}[[objects]]\nmesh = \"arrays\"\nprimitive = \"lines\"\nvertices = [{}]\ncolors = [{}]\n",
+                       kPixelGrid, vertices, colors);
+}
+
+}  // namespace
+
+TEST_CASE("glslrun matches Mesa on line ends in and on pixel diamonds", "[reference]") {
+    // GL 2.1 §3.4.1's diamond-exit rule decides the first and last pixels.
+    compare_colors("primitive-line-diamonds", octant_lines().c_str());
+    // Strips and loops whose shared vertices lie at centres, inside diamonds
+    // and on their edges, blended additively: a shared vertex's pixel drawn
+    // twice (or dropped) shows. Wide, the same ends move whole rows.
+    std::string strips = std::string(kPixelGrid) + R"(
+[state]
+blend = true
+blend_func = ["one", "one"]
+%s
+[[objects]]
+mesh = "arrays"
+primitive = "line_strip"
+vertices = [[4.5, 4.5], [20.75, 9.625], [30.75, 30.75], [9.0, 40.0], [12.5, 60.5], [40.75, 58.625], [44.5, 20.5]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0], [0, 0.25, 0], [0, 0, 0.25]]
+[[objects]]
+mesh = "arrays"
+primitive = "line_loop"
+vertices = [[70.5, 10.5], [110.75, 14.75], [118.5, 50.5], [90.0, 40.0], [100.75, 70.625], [66.5, 60.5]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0], [0, 0.25, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "line_loop"
+vertices = [[20.5, 80.5], [60.5, 80.5], [60.5, 120.5], [20.5, 120.5], [40.75, 100.75]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "line_strip"
+vertices = [[80.0, 80.0], [120.0, 84.0], [84.0, 124.0], [124.0, 120.0], [100.25, 100.5]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0]]
+)";
+    compare_colors("primitive-line-strip-diamonds", with_state(strips, "").c_str());
+    compare_colors("primitive-line-strip-diamonds-width-3", with_state(strips, "line_width = 3").c_str());
+    compare_colors("primitive-line-diamonds-width-2", (octant_lines() + "state = { line_width = 2 }\n").c_str());
 }
