@@ -273,3 +273,48 @@ colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0],
     compare_colors("primitive-line-strip-diamonds-width-3", with_state(strips, "line_width = 3").c_str());
     compare_colors("primitive-line-diamonds-width-2", (octant_lines() + "state = { line_width = 2 }\n").c_str());
 }
+
+TEST_CASE("glslrun matches Mesa on polygon edges made by clipping", "[reference]") {
+    // Mesa draws a clipped polygon's edges along a user plane, and not those
+    // along the view volume; points where an edge comes back into it.
+    const char* clip_vertex = R"(
+void main() {
+    gl_FrontColor = gl_Color;
+    gl_BackColor = vec4(1.0) - gl_Color;
+    gl_ClipVertex = gl_ModelViewMatrix * gl_Vertex;
+    gl_Position = ftransform();
+}
+)";
+    auto compare_clipped = [&](const std::string& name, const std::string& toml) {
+        auto scene = scene::parse_scene(toml, name + ".toml");
+        if (!scene) FAIL(scene.error().str());
+        reference::compare(name, {{{"clip.vert", clip_vertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
+    };
+    const std::string user_plane = "clip_planes = [[1, -0.35, 0, -4.6], [-0.2, -1, 0, 10.3]]\n";
+    compare_clipped("primitive-clip-plane-line", shapes(user_plane + "polygon_mode = \"line\""));
+    compare_clipped("primitive-clip-plane-point", shapes(user_plane + "polygon_mode = \"point\""));
+    compare_clipped("primitive-clip-plane-line-width-3", shapes(user_plane + "polygon_mode = \"line\"\nline_width = 3"));
+    // Through the near plane: a quad and a triangle reaching behind the eye.
+    std::string near = R"(
+[output]
+size = [128, 96]
+clear_color = [0, 0, 0, 1]
+[camera]
+look_at = { eye = [0, 0.5, 4], center = [0, 0, 0], up = [0, 1, 0] }
+perspective = { fovy = 60, near = 1, far = 20 }
+[state]
+%s
+[[objects]]
+mesh = "arrays"
+primitive = "quads"
+vertices = [[-2.1, -1.3, 6.2], [-0.35, -1.1, 6.1], [-0.45, -0.9, -5.3], [-1.9, -1.15, -5.1]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "triangles"
+vertices = [[0.35, -0.8, -4.3], [2.2, 0.9, -3.7], [1.1, -0.2, 7.4]]
+colors = [[0, 1, 1], [1, 0, 1], [1, 1, 1]]
+)";
+    compare_clipped("primitive-near-plane-line", with_state(near, "polygon_mode = \"line\""));
+    compare_clipped("primitive-near-plane-point", with_state(near, "polygon_mode = \"point\"\npoint_size = 6"));
+}
