@@ -1,6 +1,8 @@
 // Point and line rasterization (GL 2.1 §3.4, §3.5, non-antialiased), feeding
 // the fragment stage in 2x2 quads.
 #pragma once
+#include <cstdint>
+
 #include "raster/fragments.h"
 
 namespace glslrun::raster {
@@ -35,7 +37,8 @@ struct LineCorners {
 bool line_corners(glm::vec2 a, glm::vec2 b, int width, LineCorners& out);
 
 // Whether the pixel (x, y) lies in the parallelogram: its centre inside
-// every edge, or on a left or bottom edge (the fill rule of triangles).
+// every edge, or on a left or top edge (llvmpipe's rule for lines in a
+// framebuffer object).
 struct LineEdges {
     int64_t c[4], dcdx[4], dcdy[4];
     explicit LineEdges(const LineCorners& q);

@@ -20,10 +20,10 @@ void main() { gl_FrontColor = gl_Color; gl_BackColor = vec4(1.0) - gl_Color; gl_
 )";
 const char* kColorFragment = "void main() { gl_FragColor = gl_Color; }\n";
 
-void compare_colors(const std::string& name, const char* toml) {
+void compare_colors(const std::string& name, const char* toml, const char* vertex = kColorVertex) {
     auto scene = scene::parse_scene(toml, name + ".toml");
     if (!scene) FAIL(scene.error().str());
-    reference::compare(name, {{{"color.vert", kColorVertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
+    reference::compare(name, {{{"color.vert", vertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
 }
 
 // Counter-clockwise shapes are front faces, clockwise ones back faces.
@@ -286,9 +286,7 @@ void main() {
 }
 )";
     auto compare_clipped = [&](const std::string& name, const std::string& toml) {
-        auto scene = scene::parse_scene(toml, name + ".toml");
-        if (!scene) FAIL(scene.error().str());
-        reference::compare(name, {{{"clip.vert", clip_vertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
+        compare_colors(name, toml.c_str(), clip_vertex);
     };
     const std::string user_plane = "clip_planes = [[1, -0.35, 0, -4.6], [-0.2, -1, 0, 10.3]]\n";
     compare_clipped("primitive-clip-plane-line", shapes(user_plane + "polygon_mode = \"line\""));
