@@ -107,13 +107,14 @@ bool same_bits(const std::vector<NamedValue>& a, const std::vector<NamedValue>& 
 }
 
 // Runs one invocation of `shader` traced: `fill` writes the inputs, lane
-// `lane` is recorded.
+// `lane` is recorded, with at most `steps_left` steps (the trace's budget,
+// InvocationTrace::kMaxTraceSteps), which it uses up.
 template <class Fill>
 InvocationTrace replay(const Program& debug, const ir::Shader& shader, const DrawSnapshot& draw, rt::LaneMask live,
-                       int lane, Fill&& fill) {
+                       int lane, size_t& steps_left, Fill&& fill) {
     ShaderNames names(shader, state_of(debug).ir);
-    LaneRecorder recorder(names, draw.uniforms.data(), lane);
-    rt::TracedInterpreter in(shader, draw.uniforms.data(), debug.exec.max_loop_iterations, draw.gl.texture_units.data(),
+    LaneRecorder recorder(names, draw.uniforms.data(), lane, std::min(InvocationTrace::kMaxSteps, steps_left));
+    rt::TracedInterpreter in(shader, draw.uniforms.data(), rt::RunLimits(debug.exec), draw.gl.texture_units.data(),
                              debug.exec.precision, ~0u, recorder);
     fill(in);
     for (const ir::Binding& b : shader.inputs) recorder.trace.inputs.push_back(binding_value(b, in, lane));
@@ -121,7 +122,11 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
     bool ok = in.run(live, &error);
     recorder.finish(nullptr);
     recorder.trace.outputs = outputs_of(shader.outputs, in, lane);
-    if (!ok) recorder.trace.truncated = true;
+    if (!ok) {
+        recorder.trace.truncated = true;
+        recorder.trace.stopped = error.message;
+    }
+    steps_left -= std::min(steps_left, recorder.trace.steps.size());
     return std::move(recorder.trace);
 }
 
@@ -187,10 +192,10 @@ private:
     std::vector<Capture> pending_;
 };
 
-FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Capture& c) {
+FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Capture& c, size_t& steps_left) {
     FragmentTrace f = std::move(c.info);
     const ir::Shader& fs = state_of(debug).ir.fragment;
-    f.trace = replay(debug, fs, draw, c.live, c.lane, [&](rt::TracedInterpreter& in) {
+    f.trace = replay(debug, fs, draw, c.live, c.lane, steps_left, [&](rt::TracedInterpreter& in) {
         for (const ir::Binding& b : fs.inputs)
             for (const auto& [name, words] : c.inputs)
                 if (name == b.name)
@@ -202,12 +207,12 @@ FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Ca
 }
 
 Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, const DrawSnapshot& draw,
-                                  uint32_t draw_index, uint32_t vertex) {
+                                  uint32_t draw_index, uint32_t vertex, size_t& steps_left) {
     const ir::Shader& vs = state_of(debug).ir.vertex;
     auto words = exec::vertex_input_words(vs, draw.attribs, draw.vertex_count, draw.gl, vertex);
     if (!words) return words.error();
     VertexTrace t{draw_index, vertex, true, {}};
-    t.trace = replay(debug, vs, draw, 1, 0, [&](rt::TracedInterpreter& in) {
+    t.trace = replay(debug, vs, draw, 1, 0, steps_left, [&](rt::TracedInterpreter& in) {
         for (size_t i = 0; i < vs.inputs.size(); ++i)
             for (uint32_t k = 0; k < vs.inputs[i].count; ++k) in.lanes(vs.inputs[i].first + k)[0] = (*words)[i][k];
     });
@@ -222,6 +227,14 @@ Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, 
                     if (std::bit_cast<uint32_t>(rendered) != std::bit_cast<uint32_t>(traced)) t.matches_render = false;
                 }
     return t;
+}
+
+// A replay stops early at debug.exec.cancel, as the render stops at
+// program.exec.cancel; the trace then ends with an error, not with the rest.
+Status check_cancel(const Program& debug) {
+    if (debug.exec.cancel && debug.exec.cancel->load(std::memory_order_relaxed))
+        return Error("cancelled: the time limit ran out");
+    return Ok{};
 }
 
 }  // namespace
@@ -254,21 +267,25 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
     if (Status st = render_with_probe(program, scene, fb, probe); !st) return st.error();
     const auto& draws = probe.draws();
     std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
+    size_t steps_left = InvocationTrace::kMaxTraceSteps;
     for (Capture& c : probe.captures_) {
-        out.fragments.push_back(replay_fragment(debug, draws[c.info.draw], c));
+        out.fragments.push_back(replay_fragment(debug, draws[c.info.draw], c, steps_left));
+        if (Status st = check_cancel(debug); !st) return st.error();
         if (out.fragments.back().outcome == FragmentTrace::Outcome::Written) visible = out.fragments.back();
     }
     if (visible)
         for (uint32_t v : visible->vertices) {
-            auto vt = replay_vertex(program, debug, draws[visible->draw], visible->draw, v);
+            auto vt = replay_vertex(program, debug, draws[visible->draw], visible->draw, v, steps_left);
             if (!vt) return vt.error();
+            if (Status st = check_cancel(debug); !st) return st.error();
             out.vertices.push_back(std::move(*vt));
         }
     if (request.vertex) {
         if (request.draw >= draws.size())
             return Error(fmt::format("draw {} does not exist ({} draws)", request.draw, draws.size()));
-        auto vt = replay_vertex(program, debug, draws[request.draw], request.draw, *request.vertex);
+        auto vt = replay_vertex(program, debug, draws[request.draw], request.draw, *request.vertex, steps_left);
         if (!vt) return vt.error();
+        if (Status st = check_cancel(debug); !st) return st.error();
         out.vertices.push_back(std::move(*vt));
     }
     return out;

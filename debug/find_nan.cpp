@@ -3,11 +3,13 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "debug/debugger.h"
 #include "debug/recorder.h"
 #include "raster/fragments.h"
 #include "raster/probe.h"
+#include "runtime/execute.h"
 #include "runtime/program_state.h"
 #include "glslrun/scene/render.h"
 
@@ -23,15 +25,15 @@ public:
         ++draw_;
         uniforms_ = state_of(program_).uniforms;
         gl_ = d.gl;
-        if (!report.nan) check_vertices(d);
+        if (!report.nan && !stopped) check_vertices(d);
     }
 
     void before_run(const raster::ProbeBatch& b) override {
-        if (report.nan) return;
+        if (report.nan || stopped) return;
         const ir::Shader& fs = state_of(debug_).ir.fragment;
         ShaderNames names(fs, state_of(debug_).ir);
         NanWatch watch(names);
-        rt::TracedInterpreter in(fs, uniforms_.data(), debug_.exec.max_loop_iterations, gl_.texture_units.data(),
+        rt::TracedInterpreter in(fs, uniforms_.data(), rt::RunLimits(debug_.exec), gl_.texture_units.data(),
                                  debug_.exec.precision, ~0u, watch);
         const ir::Shader& rendered = state_of(program_).ir.fragment;
         for (const ir::Binding& to : fs.inputs)
@@ -40,7 +42,8 @@ public:
                     for (uint32_t k = 0; k < to.count && k < from.count; ++k)
                         std::memcpy(in.lanes(to.first + k), b.interp.lanes(from.first + k), rt::kLanes * 4);
         rt::RunError error;
-        in.run(b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1, &error);
+        if (!in.run(b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1, &error))
+            stopped = exec::run_error(state_of(debug_), ir::Stage::Fragment, error);
         if (rt::LaneMask hit = watch.found & b.covered) {
             int lane = std::countr_zero(hit);
             report.nan = fragment_finding(b, lane, std::move(*watch.first[size_t(lane)]));
@@ -70,6 +73,9 @@ public:
     }
 
     NanReport report;
+    // A traced run that ran out of a limit of debug.exec, or was cancelled:
+    // the invocations after it were not looked at.
+    std::optional<Error> stopped;
 
 private:
     NanFinding fragment_finding(const raster::ProbeBatch& b, int lane, NanEvent e) const {
@@ -86,9 +92,9 @@ private:
     void check_vertices(const raster::ProbeDraw& d) {
         const ir::Shader& vs = state_of(debug_).ir.vertex;
         ShaderNames names(vs, state_of(debug_).ir);
-        for (uint32_t base = 0; base < d.vertex_count && !report.nan; base += rt::kLanes) {
+        for (uint32_t base = 0; base < d.vertex_count && !report.nan && !stopped; base += rt::kLanes) {
             NanWatch watch(names);
-            rt::TracedInterpreter in(vs, uniforms_.data(), debug_.exec.max_loop_iterations, gl_.texture_units.data(),
+            rt::TracedInterpreter in(vs, uniforms_.data(), rt::RunLimits(debug_.exec), gl_.texture_units.data(),
                                      debug_.exec.precision, ~0u, watch);
             int n = int(std::min<uint32_t>(rt::kLanes, d.vertex_count - base));
             for (int lane = 0; lane < n; ++lane) {
@@ -99,7 +105,8 @@ private:
                         in.lanes(vs.inputs[i].first + k)[lane] = (*words)[i][k];
             }
             rt::RunError error;
-            in.run(n == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << n) - 1, &error);
+            if (!in.run(n == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << n) - 1, &error))
+                stopped = exec::run_error(state_of(debug_), ir::Stage::Vertex, error);
             if (watch.found) {
                 int lane = std::countr_zero(watch.found);
                 NanFinding f;
@@ -127,6 +134,7 @@ Result<NanReport> find_nan(Program& program, const Program& debug, const scene::
                            bool colour_range) {
     NanProbe probe(program, debug, fb.height, colour_range);
     if (Status st = render_with_probe(program, scene, fb, probe); !st) return st.error();
+    if (probe.stopped && !probe.report.nan) return *probe.stopped;
     return std::move(probe.report);
 }
 

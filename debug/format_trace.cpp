@@ -59,7 +59,10 @@ void text_invocation(std::string& out, const InvocationTrace& t) {
                 break;
         }
     }
-    if (t.truncated) out += "    ... (stopped: too many steps, or the loop cap)\n";
+    if (!t.stopped.empty()) out += fmt::format("    ... (stopped: {})\n", t.stopped);
+    else if (t.truncated)
+        out += fmt::format("    ... (the rest is not shown: at most {} steps per invocation and {} per trace)\n",
+                           InvocationTrace::kMaxSteps, InvocationTrace::kMaxTraceSteps);
     if (t.first_nan)
         out += fmt::format("  first NaN/Inf: {} {} -> {}\n", t.first_nan->where, t.first_nan->op,
                            format_value(t.first_nan->result, ""));
@@ -121,8 +124,9 @@ std::string json_invocation(const InvocationTrace& t) {
                           json_string(t.first_nan->op), json_values(t.first_nan->result));
     return fmt::format(
         "{{\"inputs\":{},\"uniforms\":{},\"steps\":{}],\"outputs\":{},\"discarded\":{},"
-        "\"truncated\":{},\"first_nan\":{}}}",
-        json_named(t.inputs), json_named(t.uniforms), steps, json_named(t.outputs), t.discarded, t.truncated, nan);
+        "\"truncated\":{},\"stopped\":{},\"first_nan\":{}}}",
+        json_named(t.inputs), json_named(t.uniforms), steps, json_named(t.outputs), t.discarded, t.truncated,
+        t.stopped.empty() ? "null" : json_string(t.stopped), nan);
 }
 
 }  // namespace

@@ -84,11 +84,11 @@ void NanWatch::instr(const ir::Node& n, rt::LaneMask active, const rt::LaneReade
     }
 }
 
-LaneRecorder::LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane)
-    : names_(names), uniforms_(uniforms), lane_(lane) {}
+LaneRecorder::LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane, size_t max_steps)
+    : names_(names), uniforms_(uniforms), lane_(lane), max_steps_(max_steps) {}
 
 void LaneRecorder::add(TraceStep step) {
-    if (trace.steps.size() >= InvocationTrace::kMaxSteps) {
+    if (trace.steps.size() >= max_steps_) {
         trace.truncated = true;
         return;
     }

@@ -41,8 +41,10 @@ NamedValue uniform_value(const ir::Uniform& u, const uint32_t* store);
 
 class LaneRecorder final : public rt::TraceHook {
 public:
-    // `uniforms`: the store the run reads (for the values of the uniforms read).
-    LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane);
+    // `uniforms`: the store the run reads (for the values of the uniforms read);
+    // at most `max_steps` steps are kept.
+    LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane,
+                 size_t max_steps = InvocationTrace::kMaxSteps);
     void instr(const ir::Node& n, rt::LaneMask active, const rt::LaneReader& regs) override;
     void branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask taken) override;
     void loop_iteration(const ir::Node& n, uint64_t iteration, rt::LaneMask active) override;
@@ -61,6 +63,7 @@ private:
     const ShaderNames& names_;
     const uint32_t* uniforms_;
     int lane_;
+    size_t max_steps_;
     int depth_ = 0;
     ir::SourceLoc last_{};
     std::vector<const ir::Variable*> dirty_;

@@ -60,8 +60,12 @@ struct InvocationTrace {
     std::vector<NamedValue> outputs;
     std::optional<NanEvent> first_nan;
     bool discarded = false;
-    bool truncated = false;  // more than kMaxSteps steps
+    bool truncated = false;  // more steps than recorded (kMaxSteps, kMaxTraceSteps), or the run stopped early
+    std::string stopped;     // why the run stopped early (a limit of debug.exec, its cancel flag), if it did
     static constexpr size_t kMaxSteps = 200000;
+    // All invocations of one trace together (a step takes about 225 bytes):
+    // 20 fragments at a pixel, each a long loop, took 900 MB without it.
+    static constexpr size_t kMaxTraceSteps = 1000000;
 };
 
 // "float", "vec3", "mat4", "bvec2", "sampler" for a uniform's type.

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <optional>
+#include <string_view>
 #include <set>
 #include <sstream>
 
@@ -66,19 +68,26 @@ const std::vector<BuiltinStruct>& builtin_structs() {
     return structs;
 }
 
-size_t edit_distance(std::string_view a, std::string_view b) {
+// The case-insensitive edit distance of a and b if it is below limit, else
+// limit: a row whose minimum reaches the limit cannot come back under it, so
+// the many far candidates of a long shader cost little.
+size_t edit_distance_below(std::string_view a, std::string_view b, size_t limit) {
+    if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) >= limit) return limit;
     std::vector<size_t> row(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
         size_t diagonal = row[0];
         row[0] = i;
+        size_t row_min = row[0];
         for (size_t j = 1; j <= b.size(); ++j) {
             size_t substitute = diagonal + (std::tolower(a[i - 1]) != std::tolower(b[j - 1]));
             diagonal = row[j];
             row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+            row_min = std::min(row_min, row[j]);
         }
+        if (row_min >= limit) return limit;
     }
-    return row[b.size()];
+    return std::min(row[b.size()], limit);
 }
 
 // The closest candidate, if it is close enough to be a plausible typo.
@@ -87,9 +96,9 @@ std::string closest(std::string_view word, const std::vector<std::string>& candi
     size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
     for (const std::string& c : candidates) {
         if (c == word) continue;
-        size_t d = edit_distance(word, c);
         // A missing "gl_" prefix is the commonest slip of all.
-        if (c == "gl_" + std::string(word)) d = 1;
+        bool lacks_gl_prefix = c.size() == word.size() + 3 && c.starts_with("gl_") && c.ends_with(word);
+        size_t d = lacks_gl_prefix ? 1 : edit_distance_below(word, c, best_distance);
         if (d < best_distance) best_distance = d, best = c;
     }
     return best;
@@ -117,15 +126,20 @@ std::string quoted_token(const std::string& message) {
     return end == std::string::npos ? std::string() : message.substr(1, end - 1);
 }
 
-void explain_undeclared(Diagnostic& d, const std::string& source) {
+// The built-in variables, then the source's identifiers.
+std::vector<std::string> undeclared_candidates(const std::string& source) {
+    std::vector<std::string> candidates(kBuiltinNames.begin(), kBuiltinNames.end());
+    for (std::string& id : identifiers_in(source)) candidates.push_back(std::move(id));
+    return candidates;
+}
+
+void explain_undeclared(Diagnostic& d, const std::vector<std::string>& candidates) {
     std::string name = quoted_token(d.message);
     for (const ApiMistake& m : kApiMistakes)
         if (name == m.written) {
             d.message += fmt::format(" ('{}' is the OpenGL API's name; in GLSL use {})", name, m.hint);
             return;
         }
-    std::vector<std::string> candidates(kBuiltinNames.begin(), kBuiltinNames.end());
-    for (std::string& id : identifiers_in(source)) candidates.push_back(std::move(id));
     std::string guess = closest(name, candidates);
     if (!guess.empty()) d.message += fmt::format(" (did you mean '{}'?)", guess);
 }
@@ -207,12 +221,14 @@ void explain_missing_semicolon(Diagnostic& d, const std::string& source) {
 }  // namespace
 
 void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource& source) {
+    std::optional<std::vector<std::string>> candidates;  // gathered at the first undeclared name
     for (size_t i = first; i < diags.size(); ++i) {
         Diagnostic& d = diags[i];
         if (d.warning || d.file != source.name) continue;
         const std::string& m = d.message;
         if (m.find(": undeclared identifier") != std::string::npos) {
-            explain_undeclared(d, source.text);
+            if (!candidates) candidates = undeclared_candidates(source.text);
+            explain_undeclared(d, *candidates);
         } else if (m.find(": no such field in structure") != std::string::npos) {
             explain_missing_field(d);
         } else if (m.find("wrong operand types") != std::string::npos && mixes_int_and_float(m)) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -70,14 +71,16 @@ std::optional<LogLine> split_log_line(std::string_view s) {
                 size_t digits = colon + 1 + (s.substr(colon + 1, 1) == "-");
                 size_t d = digits;
                 while (d < s.size() && std::isdigit(static_cast<unsigned char>(s[d]))) ++d;
-                if (d == digits || d - digits > 9 || s.substr(d, 3) != ": '" || colon == 0) continue;
+                // 10 digits: `#line 2147483647` makes glslang's next lines -2147483648 and on.
+                if (d == digits || d - digits > 10 || s.substr(d, 3) != ": '" || colon == 0) continue;
                 size_t token_end = s.find("' :", d + 3);
                 if (token_end == std::string_view::npos) break;
                 size_t text_begin = token_end + 3;
                 if (text_begin >= s.size() || s[text_begin] != ' ') break;
                 out.file = std::string(s.substr(0, colon));
                 out.located = true;
-                out.line = std::max(0, std::stoi(std::string(s.substr(colon + 1, d - colon - 1))));
+                long long line = std::stoll(std::string(s.substr(colon + 1, d - colon - 1)));
+                out.line = int(std::clamp<long long>(line, 0, INT_MAX));
                 out.token = std::string(s.substr(d + 3, token_end - d - 3));
                 out.text = trim(std::string(s.substr(text_begin)));
                 break;

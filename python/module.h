@@ -31,7 +31,7 @@ inline void check(const Status& status) {
 
 // An RGBA8 image as an H x W x 4 uint8 array, top row first, and back.
 py::array_t<uint8_t> to_array(const scene::Image& image);
-scene::Image to_image(const py::array_t<uint8_t, py::array::c_style | py::array::forcecast>& array);
+scene::Image to_image(const py::object& image);
 
 void bind_scene(py::module_& m);
 

@@ -393,14 +393,14 @@ public:
     std::unique_ptr<Engine> engine;
 };
 
-TracedInterpreter::TracedInterpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+TracedInterpreter::TracedInterpreter(const ir::Shader& shader, const uint32_t* uniforms, const RunLimits& limits,
                                      const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops,
                                      TraceHook& hook)
     : engine_(std::make_unique<TracedEngine>()) {
     if (precision == Precision::Reference)
-        engine_->engine = std::make_unique<Wide<true>>(shader, uniforms, max_loop_iterations, textures, &hook);
+        engine_->engine = std::make_unique<Wide<true>>(shader, uniforms, limits, textures, &hook);
     else
-        engine_->engine = std::make_unique<Narrow<true>>(shader, uniforms, max_loop_iterations, textures, precision,
+        engine_->engine = std::make_unique<Narrow<true>>(shader, uniforms, limits, textures, precision,
                                                          fast_ops, &hook);
 }
 

@@ -48,9 +48,10 @@ class TracedEngine;
 
 class TracedInterpreter {
 public:
-    // As rt::Interpreter; `hook` must outlive the interpreter, and so must
+    // As rt::Interpreter, under the same limits (loop cap, instruction
+    // budget, cancel flag); `hook` must outlive the interpreter, and so must
     // `shader` (the hook is given its nodes).
-    TracedInterpreter(const ir::Shader& shader, const uint32_t* uniforms, uint64_t max_loop_iterations,
+    TracedInterpreter(const ir::Shader& shader, const uint32_t* uniforms, const RunLimits& limits,
                       const GLState::TextureUnit* textures, Precision precision, uint32_t fast_ops, TraceHook& hook);
     ~TracedInterpreter();
     uint32_t* lanes(ir::Reg r);

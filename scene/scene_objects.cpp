@@ -166,8 +166,18 @@ void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scen
     const toml::array* list = n.as_array();
     if (!list || (!list->empty() && !list->is_array_of_tables()))
         fail(n, fmt::format("'objects' must be an array of tables ([[objects]]) (got {})", describe(n)));
-    for (size_t i = 0; i < list->size(); ++i)
+    if (list->size() > kMaxSceneObjects)
+        fail(n, fmt::format("the scene has {} objects; a scene may have at most {} (docs/limits.md)", list->size(),
+                            kMaxSceneObjects));
+    uint64_t vertices = 0;
+    for (size_t i = 0; i < list->size(); ++i) {
         scene.objects.push_back(read_object((*list)[i], i, scene_dir, scene));
+        vertices += scene.objects.back().mesh.vertex_count;
+        if (vertices > kMaxSceneVertices)
+            fail((*list)[i], fmt::format("the objects up to objects[{}] have {} vertices in all; a scene may have at "
+                                         "most {} (docs/limits.md)",
+                                         i, vertices, kMaxSceneVertices));
+    }
 }
 
 void read_object_states(const toml::node& n, Scene& scene) {

@@ -367,15 +367,28 @@ TextureSetting read_texture(const Section& s, int unit, const std::string& dir, 
     return setting;
 }
 
+int64_t texel_count(const Texture& t) {
+    int64_t count = 0;
+    for (int face = 0; face < t.faces(); ++face)
+        for (const TextureImage& level : t.levels(face)) count += int64_t(level.texels.size());
+    return count;
+}
+
 }  // namespace
 
 void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene) {
     const toml::table& units = table(n, "textures");
+    int64_t texels = 0;
     for (auto&& [k, v] : units) {
         int unit = index_key(k, kMaxTextureUnits, "textures",
                              "texture units are 0..15 ([textures.0] .. [textures.15], GL_TEXTURE0..15)");
         std::string what = fmt::format("textures.{}", unit);
         scene.textures.push_back(read_texture(Section(table(v, what), what), unit, scene_dir, scene));
+        texels += texel_count(*scene.textures.back().texture);
+        if (texels > kMaxSceneTexels)
+            fail(v, fmt::format("the textures up to [{}] hold {} texels in all, mipmaps included; a scene may hold "
+                                "at most {} (docs/limits.md)",
+                                what, texels, kMaxSceneTexels));
     }
     std::sort(scene.textures.begin(), scene.textures.end(),
               [](const TextureSetting& a, const TextureSetting& b) { return a.unit < b.unit; });

@@ -16,11 +16,14 @@
 // read here, with our own size limit and error messages). stb's dimension
 // limit stays its default: a lower one would make stbi_info fail with
 // "unknown image type" instead of letting image_size() say what is wrong.
+// The user messages ("Corrupt PNG") name the format; the terse ones may hold
+// a chunk type's bytes, NUL included, in a buffer shared by all threads.
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG
 #define STBI_NO_STDIO
+#define STBI_FAILURE_USERMSG
 #include <stb/stb_image.h>
 
 namespace glslrun::scene {
@@ -92,14 +95,17 @@ Result<TextureImage> read_texture_image(const std::string& path, bool bottom_up)
     auto size = image_size(path, *data);
     if (!size) return size.error();
     int w = 0, h = 0, channels = 0;
+    // stb tries JPEG before PNG, and a few of its PNG failures (an IDAT
+    // length past 2^31) set no reason: the JPEG test's "Corrupt JPEG" would
+    // be reported for a PNG. So the reason is cleared first (this file
+    // compiles stb, whose reason is a thread-local of this file).
+    stbi__g_failure_reason = nullptr;
     // Four channels requested: stb expands grey to (L, L, L) and adds alpha 255.
     stbi_uc* pixels = stbi_load_from_memory(data->data(), int(data->size()), &w, &h, &channels, 4);
     if (!pixels) {
-        // stb's reasons may quote the file's bytes ("PNG chunk not known" names the chunk).
-        std::string reason = stbi_failure_reason();
-        for (char& c : reason)
-            if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-        return Error(fmt::format("cannot decode the image '{}': {}", path, reason));
+        const char* reason = stbi_failure_reason();
+        return Error(fmt::format("cannot decode the image '{}': {}", path,
+                                 reason ? reason : sniff(*data) == Format::Png ? "Corrupt PNG" : "Corrupt JPEG"));
     }
     // A header that lied about the size would index past the decoded pixels.
     if (std::pair{w, h} != *size) {

@@ -215,6 +215,21 @@ def test_images_compare_and_round_trip(tmp_path):
     assert glslrun.compare_images(image, image)["passed"]
 
 
+def test_bad_image_arrays_are_errors(tmp_path):
+    out = str(tmp_path / "bad.png")
+    # Issue #17: floats were cast (300 -> 44, NaN -> anything), and a side
+    # past 2^31 narrowed to a negative int in the message.
+    with pytest.raises(TypeError, match="H x W x 4 uint8 array"):
+        glslrun.write_png(np.full((2, 2, 4), 300.0), out)
+    with pytest.raises(ValueError, match="each side at most 16384"):
+        glslrun.write_png(np.zeros((3000000000, 0, 4), np.uint8), out)
+    with pytest.raises(ValueError, match="each side at most 16384"):
+        glslrun.compare_images(np.zeros((0, 4294967297, 4), np.uint8), np.zeros((0, 1, 4), np.uint8))
+    with pytest.raises(ValueError, match="H x W x 4"):
+        glslrun.write_png(np.zeros((2, 2, 3), np.uint8), out)
+    glslrun.write_png(np.zeros((2, 2, 4), np.uint8)[:, ::-1], out)  # any strides: copied
+
+
 def test_error_report_as_a_dict():
     report = glslrun.error_report(path("shaders", "colors.vert"), path("shaders", "colors.frag"),
                                   path("scenes", "quad.toml"), mode="fast")

@@ -45,6 +45,11 @@ void initialise_llvm() {
 // piglit's glsl-*-inline-explosion calls grow exponentially, and the
 // interpreter, which runs calls as calls, serves such shaders.
 constexpr uint64_t kMaxExpandedNodes = 20000;
+// LLVM's passes grow faster than linearly with one function's control flow:
+// 250 loops one after another took 2.8 s of CPU to compile, 1000 took 21 s,
+// and 1000 nested ones more than two minutes (#17; `--backend jit --stats`).
+// So an If or a Loop counts as this many nodes: 200 of them at most.
+constexpr uint64_t kControlFlowNodes = 100;
 
 // The node count of `block` with its calls expanded, memoized per function;
 // UINT64_MAX for a recursive call graph or past the limit.
@@ -54,7 +59,7 @@ public:
     uint64_t of(const ir::Block& block) {
         uint64_t n = 0;
         for (const ir::Node& node : block) {
-            n = add(add(add(n, 1), of(node.body)), of(node.alt));
+            n = add(add(add(n, cost(node)), of(node.body)), of(node.alt));
             if (node.kind == ir::NodeKind::Call && node.callee < shader_.functions.size()) n = add(n, of_function(node.callee));
             if (n == kTooLarge) return n;
         }
@@ -63,6 +68,9 @@ public:
 
 private:
     static constexpr uint64_t kUnknown = UINT64_MAX - 1, kOnPath = UINT64_MAX - 2, kTooLarge = UINT64_MAX;
+    static uint64_t cost(const ir::Node& node) {
+        return node.kind == ir::NodeKind::If || node.kind == ir::NodeKind::Loop ? kControlFlowNodes : 1;
+    }
     static uint64_t add(uint64_t a, uint64_t b) { return a > kMaxExpandedNodes || b > kMaxExpandedNodes || a + b > kMaxExpandedNodes ? kTooLarge : a + b; }
     uint64_t of_function(uint32_t f) {
         if (size_[f] == kOnPath) return kTooLarge;  // recursion

@@ -127,6 +127,30 @@ TEST_CASE("hardening: calls that multiply stop at the instruction budget, and th
     CHECK_THAT(st.error().str(), Catch::Contains("cancelled"));
 }
 
+// LLVM's compile time grows faster than linearly with a function's control
+// flow (1000 loops in a row: 21 s of CPU): the JIT leaves shaders with more
+// than 200 Ifs and Loops to the interpreter, which gives the same bits. Both
+// stages loop, so that jit_compile_seconds() says whether the JIT took them.
+TEST_CASE("hardening: the JIT leaves a shader of hundreds of loops to the interpreter", "[api][hardening]") {
+    if (!jit_available()) return;
+    auto loops = [](int count) {
+        std::string sum = "uniform int n;\nfloat sum() {\n    float s = 0.0;\n";
+        for (int i = 0; i < count; ++i) sum += "    for (int i = 0; i < n; ++i) s += 1.0;\n";
+        return sum + "    return s / 1024.0;\n}\n";
+    };
+    for (int count : {20, 400}) {
+        INFO(count << " loops");
+        Program p = compile(loops(count) + "void main() { gl_Position = gl_Vertex * (1.0 + sum()); }\n",
+                            loops(count) + "void main() { gl_FragColor = vec4(sum()); }\n");
+        p.exec.backend = Backend::Jit;
+        REQUIRE(p.set_uniform("n", std::array{1}).ok());
+        Framebuffer fb(4, 4, true);
+        REQUIRE(draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3).ok());
+        CHECK(fb.pixel(2, 2).r == float(count) / 1024.0f);
+        CHECK((p.jit_compile_seconds() > 0) == (count == 20));
+    }
+}
+
 TEST_CASE("hardening: both backends stop a long loop at the instruction budget and at the cancel flag",
           "[api][hardening]") {
     Program p = compile(kVs, "uniform int n; void main() { float s = 0.0;"

@@ -41,9 +41,18 @@ open('huge.png', 'wb').write(b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', ihdr) + 
 "
 expect 2 "more than its" "$glslrun" --compare huge.png huge.png
 expect 2 "the path is empty" "$glslrun" "$vs" "$fs" "$scene" -o ''
+# sscanf's %d wrapped 4294967360 to 64 and rendered a 64x64 image.
+expect 1 "--size '4294967360x64' must be WxH" "$glslrun" "$vs" "$fs" "$scene" --size 4294967360x64 -o wrapped.png
+[ ! -e wrapped.png ] || fail "--size 4294967360x64 wrote an image"
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "a PNG was written: $(ls)"
 "$glslrun" --dump-ir "$vs" "$fs" "$scene" > ir.txt || fail "--dump-ir with a scene failed"
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "--dump-ir with a scene wrote a PNG: $(ls)"
+
+# Output cut short by a full disk is an error, not a success.
+if [ -w /dev/full ]; then
+    "$glslrun" --dump-ir "$vs" "$fs" > /dev/full 2> err.txt
+    [ $? = 2 ] && grep -q "cannot write standard output" err.txt || fail "--dump-ir > /dev/full: $(cat err.txt)"
+fi
 
 # -o goes through a temporary file: a failed write leaves nothing at the path.
 mkdir ro && chmod 555 ro
@@ -67,6 +76,10 @@ mkdir empty
 expect 2 "no tests found" "$glslrun" test empty
 expect 2 "is not a number" "$glslrun" test --time-limit nan "$src/tests/extremes"
 expect 2 "must be I/N" "$glslrun" test --shard 3/3 "$src/tests/extremes"
+if [ -w /dev/full ]; then
+    expect 2 "/dev/full: cannot write the TSV file" "$glslrun" test --tsv /dev/full "$src/tests/extremes"
+    expect 2 "/dev/full: cannot write the JSON file" "$glslrun" test --json /dev/full "$src/tests/extremes"
+fi
 timeout 60 "$glslrun" test --no-isolate --time-limit 2 "$src/tests/hardening/slow_without_loops.shader_test" > slow.txt
 [ $? = 1 ] || fail "the slow test did not fail with status 1 within its time limit"
 grep -q "time limit ran out" slow.txt || fail "no time-limit message: $(cat slow.txt)"
@@ -88,5 +101,8 @@ expect 1 "jobs.txt:3: error: job failed" "$glslrun" batch jobs.txt
 [ -s b1.png ] && [ ! -e b2.png ] || fail "batch: b1.png should be written, b2.png not: $(ls)"
 echo "$vs $fs" > bad_jobs.txt
 expect 2 "bad_jobs.txt:1: error: a job is" "$glslrun" batch bad_jobs.txt
+printf '%s %s %s b3.png\n%s %s %s b3.txt\n' "$vs" "$fs" "$scene" "$vs" "$fs" "$scene" > txt_jobs.txt
+expect 2 "txt_jobs.txt:2: error: cannot write 'b3.txt': glslrun writes PNG images only" "$glslrun" batch txt_jobs.txt
+[ ! -e b3.png ] && [ ! -e b3.txt ] || fail "batch: a job file with a bad line rendered: $(ls)"
 
 finish "hardening: every reproducer ends with a message and status 1 or 2"

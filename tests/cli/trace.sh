@@ -1,8 +1,8 @@
 #!/bin/sh
 # Checks `glslrun trace`: --json is valid JSON with the text's content, every
 # replay matches the render in all three precision modes and with an odd
-# size, --vertex and --find-nan work from the command line, and bad
-# arguments are clear errors with a nonzero status.
+# size, --vertex and --find-nan work from the command line, and bad input
+# and bad arguments are clear errors with status 1 and 2.
 #
 #   tests/cli/trace.sh SOURCE_DIR GLSLRUN
 set -u
@@ -56,15 +56,28 @@ grep -A4 "gl_ModelViewMatrix =$" "$tmp/stats.txt" | grep -c "^ *|.* -5 |$" | gre
 grep -q "gl_LightSource\[0\].spotCosCutoff = 0.9396926$" "$tmp/stats.txt" || fail "--stats: no spotCosCutoff value"
 awk 'length > 100 { exit 1 }' "$tmp/stats.txt" || fail "--stats: a line longer than 100 columns"
 
-# Bad arguments: a message and status 1 (CLI11's usage errors: nonzero too).
+# Bad input: a message and status 1 (the scene, the shaders or the request do
+# not fit); bad arguments: status 2 (docs/ci.md), CLI11's parse errors too.
 expect_error() {
-    if "$glslrun" trace "$@" >"$tmp/err.out" 2>"$tmp/err.txt"; then fail "trace $*: exit status 0"; fi
+    want=$1
+    shift
+    "$glslrun" trace "$@" >"$tmp/err.out" 2>"$tmp/err.txt"
+    got=$?
+    [ $got = "$want" ] || fail "trace $*: exit status $got, not $want"
     [ -s "$tmp/err.txt" ] || fail "trace $*: no message"
 }
-expect_error --pixel 600,10 "$vs" "$fs" "$scene"
-expect_error --pixel 10 "$vs" "$fs" "$scene"
-expect_error "$vs" "$fs" "$scene"
-expect_error --pixel 1,1 "$vs" "$fs"
-expect_error --vertex 999999 "$vs" "$fs" "$scene"
-expect_error --vertex 0 --draw 3 "$vs" "$fs" "$scene"
+expect_error 1 --pixel 600,10 "$vs" "$fs" "$scene"
+expect_error 1 --vertex 999999 "$vs" "$fs" "$scene"
+expect_error 1 --vertex 0 --draw 3 "$vs" "$fs" "$scene"
+expect_error 1 --pixel 1,1 "$vs" "$src/shaders/missing.frag" "$scene"
+expect_error 2 --pixel 10 "$vs" "$fs" "$scene"
+expect_error 2 --pixel 1,1x "$vs" "$fs" "$scene"
+expect_error 2 --pixel 99999999999999,1 "$vs" "$fs" "$scene"
+expect_error 2 --pixel " 1,1" "$vs" "$fs" "$scene"
+expect_error 2 "$vs" "$fs" "$scene"
+expect_error 2 --pixel 1,1 "$vs" "$fs"
+expect_error 2 --pixel 1,1
+expect_error 2 --no-such-option --pixel 1,1 "$vs" "$fs" "$scene"
+expect_error 2 --vertex -3 "$vs" "$fs" "$scene"
+expect_error 2 --precision exact --pixel 1,1 "$vs" "$fs" "$scene"
 finish "trace: JSON, replays equal to the render, --vertex, --find-nan and errors"

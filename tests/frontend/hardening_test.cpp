@@ -39,6 +39,17 @@ TEST_CASE("hardening: #line with a negative number gives the file without a line
     CHECK(e.find(":-") == std::string::npos);
 }
 
+TEST_CASE("hardening: #line past INT_MAX gives the file without a line") {
+    // glslang's line counter wraps to -2147483648; its location was printed raw.
+    for (const char* line : {"#line 2147483647\n", "#line 2147483646\n\n\n"}) {
+        std::string fs = std::string(line) + "void main() { gl_FragColor = vec4(1.0) + undefined_name; }\n";
+        std::string e = compile_error(kPassVs, fs);
+        INFO(e);
+        CHECK(e.find("t.frag: error: 'undefined_name' : undeclared identifier") != std::string::npos);
+        CHECK(e.find(":-") == std::string::npos);
+    }
+}
+
 TEST_CASE("hardening: x+x+...+x nested 100000 deep compiles on the compile thread's deep stack") {
     // glslang's traversals recurse once per `+`: 8 MB of stack overflowed at ~50000.
     std::string sum = "x";

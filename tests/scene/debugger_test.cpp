@@ -3,9 +3,11 @@
 // every fragment at a pixel, and --find-nan naming the line and the pixel.
 // GLSLRUN_UPDATE_GOLDEN=1 rewrites tests/scene/traces/ instead of comparing.
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -207,4 +209,107 @@ TEST_CASE("--find-nan looks at the vertices first, in draw order", "[debug]") {
     REQUIRE(trace->vertices.size() == 1);
     CHECK(trace->vertices[0].trace.first_nan);
     CHECK(trace->vertices[0].matches_render);
+}
+
+// minimal.vert and a fragment shader that loops `iterations` times (line 3),
+// compiled for rendering and for debugging.
+struct LongLoop {
+    explicit LongLoop(int iterations) {
+        std::vector<ShaderSource> vs{shader("shaders/minimal.vert")};
+        std::vector<ShaderSource> fs{{"long.frag", fmt::format("void main() {{\n"
+                                                               "    float s = 0.5;\n"
+                                                               "    for (int i = 0; i < {}; ++i) s = fract(s * 3.7 + 0.1);\n"
+                                                               "    gl_FragColor = vec4(s);\n"
+                                                               "}}\n",
+                                                               iterations)}};
+        auto compiled = Program::compile(vs, fs);
+        auto debugging = debug::compile_for_debugging(vs, fs, Precision::Precise);
+        REQUIRE(compiled);
+        REQUIRE(debugging);
+        program = std::move(*compiled);
+        debug = std::move(*debugging);
+    }
+    std::optional<Program> program, debug;
+};
+
+// The replays run under the debugging program's limits (debug.exec), as the
+// render runs under the program's: its instruction budget stops a long replay,
+// which says why, and its cancel flag ends the trace and --find-nan with an
+// error. The render keeps its own limits (here the defaults: it completes).
+TEST_CASE("the traced replays stop at debug.exec's instruction budget and cancel flag", "[debug]") {
+    auto scene = scene::load_scene(kRoot + "/scenes/spot.toml");
+    REQUIRE(scene);
+    scene->width = scene->height = 8;
+    LongLoop programs(30000);
+    auto& [prog, dbg] = programs;
+    Framebuffer fb(8, 8, true);
+    debug::TraceRequest request;
+    request.pixel = {4, 4};
+
+    SECTION("within the limits the replay completes") {
+        auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE(r);
+        REQUIRE_FALSE(r->fragments.empty());
+        for (const debug::FragmentTrace& f : r->fragments) {
+            CHECK(f.matches_render);
+            CHECK_FALSE(f.trace.truncated);
+            CHECK(f.trace.stopped.empty());
+        }
+    }
+    SECTION("the instruction budget stops the replay, which says why") {
+        dbg->exec.max_instructions = 5000;
+        auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE(r);
+        REQUIRE_FALSE(r->fragments.empty());
+        for (const debug::FragmentTrace& f : r->fragments) {
+            CHECK(f.trace.truncated);
+            CHECK(f.trace.stopped == "the shader executed more than 5000 instructions in one batch (calls that "
+                                     "multiply, or a loop too long)");
+            CHECK_FALSE(f.matches_render);
+        }
+        CHECK_THAT(debug::format_text(*r), Catch::Contains("... (stopped: the shader executed more than 5000"));
+        CHECK_THAT(debug::format_json(*r), Catch::Contains("\"stopped\":\"the shader executed more than 5000"));
+        auto nan = debug::find_nan(*prog, *dbg, *scene, fb, false);
+        REQUIRE_FALSE(nan);
+        CHECK_THAT(nan.error().str(), Catch::Contains("long.frag: error: the shader executed more than 5000"));
+    }
+    SECTION("the cancel flag ends the trace and --find-nan") {
+        std::atomic<bool> cancel{true};
+        dbg->exec.cancel = &cancel;
+        auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE_FALSE(r);
+        CHECK_THAT(r.error().str(), Catch::Contains("cancelled: the time limit ran out"));
+        auto nan = debug::find_nan(*prog, *dbg, *scene, fb, false);
+        REQUIRE_FALSE(nan);
+        CHECK_THAT(nan.error().str(), Catch::Contains("cancelled: the time limit ran out"));
+    }
+}
+
+// Issue #17: the trace keeps every fragment at the pixel, and each could keep
+// kMaxSteps steps; 20 overlapping quads with a long loop took 900 MB. The
+// trace as a whole keeps kMaxTraceSteps; the replays still run to the end.
+TEST_CASE("a trace keeps at most kMaxTraceSteps steps over all its invocations", "[debug]") {
+    std::string quads = "[output]\nsize = [8, 8]\n";
+    for (int i = 0; i < 8; ++i) quads += "[[objects]]\nmesh = \"quad\"\n";
+    auto scene = scene::parse_scene(quads, "quads.toml");
+    REQUIRE(scene);
+    LongLoop programs(100000);
+    auto& [prog, dbg] = programs;
+    Framebuffer fb(8, 8, true);
+    debug::TraceRequest request;
+    request.pixel = {4, 4};
+    auto r = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE(r);
+    REQUIRE(r->fragments.size() == 8);
+    size_t steps = 0;
+    for (const debug::FragmentTrace& f : r->fragments) {
+        CHECK(f.matches_render);
+        CHECK(f.trace.truncated);
+        CHECK(f.trace.steps.size() <= debug::InvocationTrace::kMaxSteps);
+        steps += f.trace.steps.size();
+    }
+    for (const debug::VertexTrace& v : r->vertices) steps += v.trace.steps.size();
+    CHECK(steps == debug::InvocationTrace::kMaxTraceSteps);
+    CHECK(r->fragments.back().trace.steps.empty());
+    CHECK_THAT(debug::format_text(*r), Catch::Contains("at most 200000 steps per invocation and 1000000 per trace"));
 }

@@ -1,5 +1,6 @@
 // The scene parser's errors: every mistake cites scene.toml and its line and
 // says what is wrong, so a typo never passes silently.
+#include "glslrun/scene/meshes.h"
 #include "parse_helpers.h"
 
 using namespace scene_test;
@@ -115,6 +116,21 @@ TEST_CASE("output sizes are checked before anything is allocated", "[scene][erro
         {"[output]\nsize = [512]\n", 2, "must be [width, height]"},
     });
     CHECK(parse_ok("[output]\nsize = [16384, 1]\n").width == 16384);
+}
+
+// Issue #17 (found by fuzz_scene's long run): every object keeps its own GL
+// state, so a 64 MiB scene of 2.8M quads needed 14 GB; and each mesh is
+// bounded, but not a scene of many of the largest.
+TEST_CASE("a scene's objects and their vertices are bounded", "[scene][errors]") {
+    std::string quads;
+    for (size_t i = 0; i <= glslrun::scene::kMaxSceneObjects; ++i) quads += "[[objects]]\nmesh = \"quad\"\n";
+    check_error(quads, 1, "the scene has 65537 objects; a scene may have at most 65536");
+    std::string planes;
+    for (int i = 0; i < 8; ++i) planes += "[[objects]]\nmesh = \"plane\"\nsubdivisions = 1024\n";
+    // Each plane has 1025^2 vertices: the eighth passes 8M.
+    check_error(planes, 22, "the objects up to objects[7] have 8405000 vertices in all; a scene may have at most 8388608");
+    planes.resize(planes.size() / 8 * 7);
+    CHECK(parse_ok(planes).objects.size() == 7);
 }
 
 TEST_CASE("NaN, infinity and numbers beyond a float are refused", "[scene][errors]") {

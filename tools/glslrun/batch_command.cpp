@@ -10,6 +10,7 @@
 
 #include "glslrun/scene/image_compare.h"
 #include "glslrun/scene/render.h"
+#include "render_command.h"
 #include "scene/text_file.h"
 
 namespace glslrun::cli {
@@ -31,6 +32,8 @@ Result<std::vector<Job>> parse_jobs(const std::string& path, const std::string& 
         if (!(fields >> job.vertex)) continue;  // blank or comment
         if (!(fields >> job.fragment >> job.scene >> job.output) || fields >> extra)
             return Error("a job is `VERT FRAG SCENE OUTPUT.png`", path, number);
+        if (Status st = check_png_name(job.output); !st)
+            return Error(st.error().diagnostics.front().message, path, number);
         jobs.push_back(std::move(job));
     }
     if (jobs.empty()) return Error("no jobs in the file", path);

@@ -20,6 +20,7 @@
 #include <fmt/ranges.h>
 
 #include "batch_command.h"
+#include "command_line.h"
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
@@ -32,47 +33,11 @@ namespace {
 
 using namespace glslrun;
 namespace pg = glslrun::piglit;
+using cli::add_backend_option;
+using cli::add_precision_option;
+using cli::parse_command_line;
 
 constexpr const char* kVersion = "glslrun " GLSLRUN_VERSION_STRING " (GLSL 1.10/1.20 on the CPU)";
-
-// --precision NAME, for rendering and for `glslrun test`; a bad name is a usage error.
-void add_precision_option(CLI::App& app, Precision& precision) {
-    app.add_option_function<std::string>(
-           "--precision",
-           [&precision](const std::string& name) { precision = parse_precision(name).value(); },
-           "reference (double, slow), precise (fp32, the default) or fast (fp32, GPU-style approximations)")
-        ->check([](const std::string& name) {
-            auto parsed = parse_precision(name);
-            return parsed ? std::string() : parsed.error().diagnostics.front().message;
-        });
-}
-
-// --backend NAME, for rendering and for `glslrun test`; a bad name, or jit in
-// a build without it, is a usage error.
-void add_backend_option(CLI::App& app, Backend& backend) {
-    app.add_option_function<std::string>(
-           "--backend", [&backend](const std::string& name) { backend = parse_backend(name).value(); },
-           "who runs the shaders: interp (the interpreter), jit (native code compiled by LLVM, the "
-           "interpreter's bits) or auto (the default: jit where built in). Reference precision always "
-           "runs on the interpreter")
-        ->check([](const std::string& name) {
-            auto parsed = parse_backend(name);
-            if (!parsed) return parsed.error().diagnostics.front().message;
-            if (*parsed == Backend::Jit && !jit_available()) return std::string("this glslrun was built without the JIT");
-            return std::string();
-        });
-}
-
-// CLI11's parse: -1 to go on; 0 after --help or --version; 2 for a usage
-// error (CLI11's own codes are 100 and up, and glslrun's are 0, 1 and 2).
-int parse_command_line(CLI::App& app, int argc, char** argv) {
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
-    return -1;
-}
 
 // A number in [lo, hi]; unlike CLI::Range, NaN is refused.
 CLI::Validator finite_in(double lo, double hi) {
@@ -184,6 +149,11 @@ int run_test_command(const TestOptions& o) {
     bool have_expect = !o.expect.empty();
     auto summary = pg::summarize(cases, results, have_expect ? &expectations : nullptr);
     std::fputs(pg::format_summary(summary, have_expect).c_str(), stdout);
+    // The TSV is written as tests finish; a full disk shows at the flush.
+    if (tsv.is_open() && !tsv.flush()) {
+        fmt::print(stderr, "{}: cannot write the TSV file\n", o.tsv);
+        return 2;
+    }
     if (!write_report(o.junit, pg::format_junit(cases, results), "JUnit") ||
         !write_report(o.json, pg::format_json(cases, results), "JSON"))
         return 2;
@@ -306,19 +276,29 @@ int program_cli(int argc, char** argv) {
     return cli::run_render_command(files, o);
 }
 
+int run_command(int argc, char** argv) {
+    if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
+    if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
+    if (argc >= 2 && std::string_view(argv[1]) == "trace") return glslrun::cli::trace_main(argc - 1, argv + 1);
+    return program_cli(argc, argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     // Sizes are checked before allocating (docs/limits.md); what is left is a
     // machine with less memory than the limits assume: a message, not an abort.
+    int status = 0;
     try {
-        if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
-        if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
-        if (argc >= 2 && std::string_view(argv[1]) == "trace")
-            return glslrun::cli::trace_main(argc - 1, argv + 1, add_precision_option);
-        return program_cli(argc, argv);
+        status = run_command(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fputs("glslrun: error: out of memory\n", stderr);
         return 2;
     }
+    // A trace, the IR or a report cut short by a full disk is an error, not a success.
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fputs("glslrun: error: cannot write standard output\n", stderr);
+        return status == 0 ? 2 : status;
+    }
+    return status;
 }

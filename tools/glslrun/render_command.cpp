@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "command_line.h"
 #include "error_report_command.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
@@ -31,9 +32,7 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-constexpr int kToolError = 2;
-
-int fail(const Error& e, int status = 1) {
+int fail(const Error& e, int status = kResultError) {
     std::string text = e.str();
     std::fputs(text.c_str(), stderr);
     return status;
@@ -64,14 +63,20 @@ Result<Inputs> classify(const std::vector<std::string>& files) {
     return in;
 }
 
+Status check_png_name(const std::string& output) {
+    std::string ext = fs::path(output).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png")
+        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
+                                 "for standard output)", output));
+    return Ok{};
+}
+
 namespace {
 
 Result<std::pair<int, int>> parse_size(const std::string& text) {
-    int width = 0, height = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X'))
-        return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
-    return std::pair{width, height};
+    if (auto size = parse_int_pair(text, "xX")) return *size;
+    return Error(fmt::format("--size '{}' must be WxH, e.g. 512x512", text));
 }
 
 std::string default_output(const Inputs& in) {
@@ -93,12 +98,7 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
                          "--dump-ir or --compare, which print there too");
         return Ok{};
     }
-    std::string ext = fs::path(output).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png")
-        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
-                                 "for standard output)", output));
-    return Ok{};
+    return check_png_name(output);
 }
 
 // Frame i's image name: out.png -> out.0000.png, out.0001.png, ...

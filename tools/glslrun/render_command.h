@@ -35,6 +35,10 @@ Result<Inputs> classify(const std::vector<std::string>& files);
 // The scene file, with --size applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
 
+// An output name ends in .png (any case): PNG data is never written under
+// a misleading name.
+Status check_png_name(const std::string& output);
+
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for
 // --compare at most one PNG. Returns the process exit status.
 int run_render_command(const std::vector<std::string>& files, const RenderOptions& options);

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "command_line.h"
 #include "debug/debugger.h"
 #include "glslrun/scene/render.h"
 #include "render_command.h"
@@ -16,17 +17,14 @@
 namespace glslrun::cli {
 namespace {
 
-int fail(const Error& e) {
+int fail(const Error& e, int status = kResultError) {
     std::fputs(e.str().c_str(), stderr);
-    return 1;
+    return status;
 }
 
 Result<std::pair<int, int>> parse_pixel(const std::string& text) {
-    int x = 0, y = 0;
-    char comma = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',')
-        return Error(fmt::format("--pixel '{}' must be X,Y (image coordinates, top-left origin), e.g. 256,200", text));
-    return std::pair{x, y};
+    if (auto pixel = parse_int_pair(text, ",")) return *pixel;
+    return Error(fmt::format("--pixel '{}' must be X,Y (image coordinates, top-left origin), e.g. 256,200", text));
 }
 
 struct TraceOptions {
@@ -42,9 +40,15 @@ int run_trace(const TraceOptions& o) {
     auto in = classify(o.files);
     if (!in) return fail(in.error());
     if (in->scene.empty() || (in->vertex.empty() && in->fragment.empty()))
-        return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"));
+        return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"), kToolError);
     if (o.pixel.empty() && !o.vertex && !o.find_nan)
-        return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"));
+        return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"), kToolError);
+    std::optional<std::pair<int, int>> pixel;
+    if (!o.pixel.empty()) {
+        auto parsed = parse_pixel(o.pixel);
+        if (!parsed) return fail(parsed.error(), kToolError);
+        pixel = *parsed;
+    }
     RenderOptions render;
     render.size = o.size;
     auto scene = load_sized_scene(*in, render);
@@ -64,11 +68,7 @@ int run_trace(const TraceOptions& o) {
     debug::TraceRequest request;
     request.vertex = o.vertex;
     request.draw = o.draw;
-    if (!o.pixel.empty()) {
-        auto pixel = parse_pixel(o.pixel);
-        if (!pixel) return fail(pixel.error());
-        request.pixel = *pixel;
-    }
+    request.pixel = pixel;
     auto trace = debug::trace(*program, *debug, *scene, fb, request);
     if (!trace) return fail(trace.error());
     std::string text = o.json ? debug::format_json(*trace) : debug::format_text(*trace);
@@ -78,7 +78,7 @@ int run_trace(const TraceOptions& o) {
 
 }  // namespace
 
-int trace_main(int argc, char** argv, void (*add_precision)(CLI::App&, Precision&)) {
+int trace_main(int argc, char** argv) {
     CLI::App app{"Traces shader invocations of a scene at source level, or finds the first NaN", "glslrun trace"};
     TraceOptions o;
     app.add_option("files", o.files, "shader.vert shader.frag scene.toml")->required();
@@ -91,8 +91,8 @@ int trace_main(int argc, char** argv, void (*add_precision)(CLI::App&, Precision
                  "report the first invocation (draw and tile order) computing a NaN or infinity");
     app.add_flag("--colour-range", o.colour_range, "--find-nan: also the first colour output outside [0,1]");
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
-    add_precision(app, o.precision);
-    CLI11_PARSE(app, argc, argv);
+    add_precision_option(app, o.precision);
+    if (int status = parse_command_line(app, argc, argv); status >= 0) return status;
     return run_trace(o);
 }
 

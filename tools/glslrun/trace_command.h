@@ -1,14 +1,10 @@
 // `glslrun trace`: the shader debugger's command (docs/debugging.md).
 #pragma once
-#include "glslrun/glslrun.h"
-
-namespace CLI {
-class App;
-}
 
 namespace glslrun::cli {
 
-// `add_precision` adds the shared --precision option.
-int trace_main(int argc, char** argv, void (*add_precision)(CLI::App&, Precision&));
+// Returns the exit status: 0 traced, 1 a shader, scene or trace error (a
+// pixel outside the image, no such vertex), 2 a usage error.
+int trace_main(int argc, char** argv);
 
 }  // namespace glslrun::cli

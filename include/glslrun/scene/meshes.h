@@ -4,6 +4,7 @@
 // precision and stored as float, so glslrun and the reference tool (Mesa) see
 // bit-identical inputs.
 #pragma once
+#include <cstdint>
 #include <string>
 
 #include "glslrun/scene/scene.h"
@@ -35,5 +36,11 @@ void add_normal_colors(Mesh& mesh);
 constexpr int kMaxSubdivisions = 1024;
 // The teapot's 32 patches have (n+1)^2 vertices each: 256 gives 2.1M vertices.
 constexpr int kMaxTeapotSubdivisions = 256;
+// All objects of a scene together (each mesh is counted once built, so a
+// scene holds at most this plus one mesh): four of the largest teapots.
+constexpr uint64_t kMaxSceneVertices = uint64_t(8) << 20;
+// [[objects]] of a scene: each holds its own GL state (about 5 KB with its
+// mesh's bookkeeping), so a 64 MiB scene of 2.8M quads would need 14 GB.
+constexpr size_t kMaxSceneObjects = 65536;
 
 }  // namespace glslrun::scene

@@ -19,6 +19,10 @@ namespace glslrun::scene {
 // texels (16M: 256 MiB as glslrun's float texels). Checked before decoding
 // or generating anything; GL_MAX_TEXTURE_SIZE alone would allow 4 GiB.
 inline constexpr int64_t kMaxTextureTexels = int64_t(1) << 24;
+// All textures of a scene together, generated mipmaps included (32M: 512 MiB,
+// two textures of 4096x4096); each is counted once built, so a scene holds at
+// most this plus one texture. 16 units of 4096x4096 took 4.5 GB and 42 s.
+inline constexpr int64_t kMaxSceneTexels = int64_t(1) << 25;
 // Image files larger than this are refused before they are read.
 inline constexpr int64_t kMaxTextureFileBytes = int64_t(256) << 20;
 

@@ -1,0 +1,54 @@
+#include "command_line.h"
+
+#include <charconv>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace glslrun::cli {
+
+void add_precision_option(CLI::App& app, Precision& precision) {
+    app.add_option_function<std::string>(
+           "--precision",
+           [&precision](const std::string& name) { precision = parse_precision(name).value(); },
+           "reference (double, slow), precise (fp32, the default) or fast (fp32, GPU-style approximations)")
+        ->check([](const std::string& name) {
+            auto parsed = parse_precision(name);
+            return parsed ? std::string() : parsed.error().diagnostics.front().message;
+        });
+}
+
+void add_backend_option(CLI::App& app, Backend& backend) {
+    app.add_option_function<std::string>(
+           "--backend", [&backend](const std::string& name) { backend = parse_backend(name).value(); },
+           "who runs the shaders: interp (the interpreter), jit (native code compiled by LLVM, the "
+           "interpreter's bits) or auto (the default: jit where built in). Reference precision always "
+           "runs on the interpreter")
+        ->check([](const std::string& name) {
+            auto parsed = parse_backend(name);
+            if (!parsed) return parsed.error().diagnostics.front().message;
+            if (*parsed == Backend::Jit && !jit_available()) return std::string("this glslrun was built without the JIT");
+            return std::string();
+        });
+}
+
+std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::string_view separators) {
+    int a = 0, b = 0;
+    const char* end = text.data() + text.size();
+    auto [after_a, ea] = std::from_chars(text.data(), end, a);
+    if (ea != std::errc() || after_a == end || separators.find(*after_a) == std::string_view::npos) return std::nullopt;
+    auto [after_b, eb] = std::from_chars(after_a + 1, end, b);
+    if (eb != std::errc() || after_b != end) return std::nullopt;
+    return std::pair{a, b};
+}
+
+int parse_command_line(CLI::App& app, int argc, char** argv) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : kToolError;
+    }
+    return -1;
+}
+
+}  // namespace glslrun::cli

@@ -1,0 +1,36 @@
+// What the glslrun subcommands share on the command line: the exit statuses
+// (docs/ci.md), CLI11's parse mapped onto them, and the common options.
+#pragma once
+#include <optional>
+#include <string_view>
+#include <utility>
+
+#include "glslrun/glslrun.h"
+
+namespace CLI {
+class App;
+}
+
+namespace glslrun::cli {
+
+// 0: done as expected; 1: a result differs or the input is wrong (a shader,
+// scene or draw error); 2: a usage or tool error (docs/ci.md).
+inline constexpr int kResultError = 1;
+inline constexpr int kToolError = 2;
+
+// CLI11's parse: -1 to go on; 0 after --help or --version; kToolError for a
+// usage error (CLI11's own codes are 100 and up).
+int parse_command_line(CLI::App& app, int argc, char** argv);
+
+// "A<sep>B" of two ints, <sep> one of `separators` ("512x512", "256,200");
+// nullopt when malformed or out of int's range. from_chars, not sscanf: "%d"
+// of a number past INT_MAX is undefined (glibc wrapped 4294967360 to 64).
+std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::string_view separators);
+
+// --precision NAME, for rendering, tracing and `glslrun test`; a bad name is a usage error.
+void add_precision_option(CLI::App& app, Precision& precision);
+// --backend NAME, for rendering and `glslrun test`; a bad name, or jit in a
+// build without it, is a usage error.
+void add_backend_option(CLI::App& app, Backend& backend);
+
+}  // namespace glslrun::cli
