@@ -99,7 +99,9 @@ void clip_polygon(ClipPolygon& poly, const ClipParams& params, AttrArena& arena)
                 const ClipVertex& in = a_in ? a : b;
                 const ClipVertex& out = a_in ? b : a;
                 float d_in = a_in ? da : db, d_out = a_in ? db : da;
-                next.push_back(clip_edge(in, out, d_in, d_out, plane, params, arena));
+                ClipVertex cut = clip_edge(in, out, d_in, d_out, plane, params, arena);
+                cut.edge = a_in ? plane >= kFrustumPlanes : a.edge;
+                next.push_back(cut);
             }
         }
         poly = next;

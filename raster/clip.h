@@ -24,6 +24,11 @@ struct ClipVertex {
     std::array<float, kMaxUserPlanes> user{};  // signed distances to the user planes
     const float* attrs = nullptr;              // `attr_count` floats, owned elsewhere
     int source = -1;                           // the vertex of the arrays; -1: made by clipping
+    // GL's edge flag: glPolygonMode(GL_LINE) draws the edge from this vertex
+    // to the next, GL_POINT this vertex. Clipping keeps it on the parts of
+    // the polygon's edges and sets it on edges along a user plane, not on
+    // those along the view volume (Mesa's rule, after NVIDIA's).
+    bool edge = true;
 };
 
 struct ClipParams {

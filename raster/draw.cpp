@@ -139,27 +139,36 @@ float polygon_offset(const GLState& gl, const FsVertex* v, PolygonMode mode) {
     return float(slope * gl.polygon_offset_factor + kDepthResolution * gl.polygon_offset_units);
 }
 
-void draw_segment(const DrawContext& c, SetupOut& out, uint32_t a, uint32_t b, uint32_t provoking_id,
-                  const EdgeStyle& style);
-void draw_point(const DrawContext& c, SetupOut& out, uint32_t id, const EdgeStyle& style);
-
 // A triangle of the arrays: its vertices and which of its edges are the drawn primitive's.
 struct TriangleIds {
     std::array<uint32_t, 3> ids;
     uint8_t edges = 7;
 };
 
-// glPolygonMode(GL_LINE / GL_POINT): the boundary edges (each clipped as a
-// line) or their first vertices (each clipped as a point). Edges in Mesa's
-// order (v2-v0, v0-v1, v1-v2), which decides the pixels two edges share.
-void draw_unfilled(const DrawContext& c, SetupOut& out, const TriangleIds& tri, PolygonMode mode,
-                   uint32_t provoking_id, const EdgeStyle& style) {
-    for (size_t k : {size_t(2), size_t(0), size_t(1)}) {
-        if (mode == PolygonMode::Line && ((tri.edges >> k) & 1u))
-            draw_segment(c, out, tri.ids[k], tri.ids[(k + 1) % 3], provoking_id, style);
+void emit_segment(const DrawContext& c, SetupOut& out, const ClipVertex& a, const ClipVertex& b,
+                  uint32_t provoking_id, const EdgeStyle& style);
+void emit_point(const DrawContext& c, SetupOut& out, const ClipVertex& v, const EdgeStyle& style);
+
+// glPolygonMode(GL_LINE / GL_POINT): the polygon's edges whose flag is set
+// (bit k: poly[k] to poly[k + 1]), or their first vertices, in Mesa's order:
+// an unclipped triangle's edges v2-v0, v0-v1, v1-v2 and points v0, v1, v2; a
+// clipped polygon, drawn by Mesa as a fan, its edges from the first on and
+// points v1, v0, v2, v3, ... The order decides the pixels two edges share.
+void draw_unfilled(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, size_t n, uint32_t edges,
+                   bool clipped, PolygonMode mode, uint32_t provoking_id, const EdgeStyle& style) {
+    std::array<size_t, kMaxClipVertices> order;
+    for (size_t k = 0; k < n; ++k) order[k] = k;
+    if (!clipped && mode == PolygonMode::Line) order = {2, 0, 1};
+    if (clipped && mode == PolygonMode::Point) {
+        std::swap(order[0], order[1]);
+        if (n == 3) order = {1, 2, 0};
     }
-    for (size_t k = 0; k < 3 && mode == PolygonMode::Point; ++k)
-        if ((tri.edges >> k) & 1u) draw_point(c, out, tri.ids[k], style);
+    for (size_t i = 0; i < n; ++i) {
+        size_t k = order[i];
+        if (!((edges >> k) & 1u)) continue;
+        if (mode == PolygonMode::Line) emit_segment(c, out, *poly[k], *poly[(k + 1) % n], provoking_id, style);
+        else emit_point(c, out, *poly[k], style);
+    }
 }
 
 // A convex polygon of n <= N vertices in the view volume: facing, culling,
@@ -167,7 +176,7 @@ void draw_unfilled(const DrawContext& c, SetupOut& out, const TriangleIds& tri, 
 // `verts` holds the vertices' window positions.
 template <size_t N>
 void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* poly, std::array<FsVertex, N>& verts,
-                  size_t n, uint32_t provoking_id, const TriangleIds& tri) {
+                  size_t n, uint32_t provoking_id, uint32_t edges, bool clipped) {
     double area = signed_area(verts.data(), n);
     if (!(area != 0.0)) return;  // degenerate or NaN
     bool front = (area > 0) == c.gl.front_ccw;
@@ -176,7 +185,8 @@ void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* 
     PolygonMode mode = c.gl.polygon_mode[front ? 0 : 1];
     float offset = polygon_offset(c.gl, verts.data(), mode);
     if (mode != PolygonMode::Fill)
-        return draw_unfilled(c, out, tri, mode, provoking_id, {front, back_colors, offset, provoking_id});
+        return draw_unfilled(c, out, poly, n, edges, clipped, mode, provoking_id,
+                             {front, back_colors, offset, provoking_id});
     if (offset != 0.0f)
         for (size_t i = 0; i < n; ++i) verts[i].z += offset;
     set_attrs(c, out, poly, n, provoking_id, back_colors, verts.data());
@@ -190,58 +200,66 @@ void draw_triangle(const DrawContext& c, SetupOut& out, const TriangleIds& tri, 
     if (codes[0] & codes[1] & codes[2]) return;
     if (!(codes[0] | codes[1] | codes[2])) {
         std::array<FsVertex, 3> verts{c.window[ids[0]], c.window[ids[1]], c.window[ids[2]]};
-        return draw_polygon(c, out, corners, verts, 3, provoking_id, tri);
+        return draw_polygon(c, out, corners, verts, 3, provoking_id, tri.edges, false);
     }
     ClipPolygon poly{*corners[0], *corners[1], *corners[2]};
-    clip_polygon(poly, c.clip, out.arena);
+    for (size_t k = 0; k < 3; ++k) poly[k].edge = (tri.edges >> k) & 1u;
+    // A polygon that needs clipping Mesa clips to the viewport's sides as
+    // well, not to the guard band: in GL_POINT mode the vertices made there
+    // are drawn.
+    ClipParams params = c.clip;
+    if (c.gl.polygon_mode[0] != PolygonMode::Fill || c.gl.polygon_mode[1] != PolygonMode::Fill) params.guard = 1.0f;
+    clip_polygon(poly, params, out.arena);
     if (poly.size() < 3) return;
     std::array<const ClipVertex*, kMaxClipVertices> clipped;
     std::array<FsVertex, kMaxClipVertices> verts;
+    uint32_t edges = 0;
     for (size_t i = 0; i < poly.size(); ++i) {
         clipped[i] = &poly[i];
         to_window(c, poly[i].pos, verts[i]);
+        edges |= uint32_t(poly[i].edge) << i;
     }
-    draw_polygon(c, out, clipped.data(), verts, poly.size(), provoking_id, tri);
+    draw_polygon(c, out, clipped.data(), verts, poly.size(), provoking_id, edges, true);
 }
 
-// A line's pixels lie within one pixel of its end points, and a wide line's
-// within half its width more.
+// A line's pixels lie within two pixels of its end points (the diamond rule
+// moves an end by up to one pixel along the line), and a wide line's within
+// half its width more.
 Rect line_rect(const FsPrimitive& p) {
     glm::vec2 lo = glm::min(p.v[0].win, p.v[1].win), hi = glm::max(p.v[0].win, p.v[1].win);
-    int reach = 1 + p.line_width / 2;
+    int reach = 2 + p.line_width / 2;
     return {pixel_floor(lo.x) - reach, pixel_floor(lo.y) - reach, pixel_floor(hi.x) + 1 + reach,
             pixel_floor(hi.y) + 1 + reach};
 }
 
-void draw_segment(const DrawContext& c, SetupOut& out, uint32_t a, uint32_t b, uint32_t provoking_id,
-                  const EdgeStyle& style) {
-    ClipVertex ends[2] = {c.vertices[a], c.vertices[b]};
-    const ClipVertex* end_ptrs[2] = {&ends[0], &ends[1]};
-    uint32_t ca = c.outcodes[a], cb = c.outcodes[b];
-    if (ca & cb) return;
-    if ((ca | cb) && !clip_segment(ends[0], ends[1], c.clip, out.arena)) return;
+// A segment inside the view volume and the user planes.
+void emit_segment(const DrawContext& c, SetupOut& out, const ClipVertex& a, const ClipVertex& b,
+                  uint32_t provoking_id, const EdgeStyle& style) {
+    const ClipVertex* ends[2] = {&a, &b};
     FsPrimitive p;
     p.count = 2;
     p.front = style.front;
     p.line_width = line_pixels(c.gl.line_width);
-    to_window(c, ends[0].pos, p.v[0]);
-    to_window(c, ends[1].pos, p.v[1]);
+    to_window(c, a.pos, p.v[0]);
+    to_window(c, b.pos, p.v[1]);
     p.v[0].z += style.z_offset;
     p.v[1].z += style.z_offset;
-    set_attrs(c, out, end_ptrs, 2, provoking_id, style.back_colors, p.v.data());
+    set_attrs(c, out, ends, 2, provoking_id, style.back_colors, p.v.data());
     set_line_planes(p);
     bin(out, p, line_rect(p));
 }
 
 void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
-    draw_segment(c, out, ids[0], ids[1], provoking_id, {});
+    ClipVertex a = c.vertices[ids[0]], b = c.vertices[ids[1]];
+    uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
+    if (ca & cb) return;
+    if ((ca | cb) && !clip_segment(a, b, c.clip, out.arena)) return;
+    emit_segment(c, out, a, b, provoking_id, {});
 }
 
-void draw_point(const DrawContext& c, SetupOut& out, uint32_t id, const EdgeStyle& style) {
-    const ClipVertex& v = c.vertices[id];
-    ClipParams frustum = c.clip;
-    frustum.guard = 1.0f;  // a point is dropped when its centre is outside the view volume
-    if (outcode(v, frustum)) return;
+// A point inside the guard band (a polygon's vertex in GL_POINT mode, which
+// Mesa does not clip again, or a point whose centre is in the view volume).
+void emit_point(const DrawContext& c, SetupOut& out, const ClipVertex& v, const EdgeStyle& style) {
     FsPrimitive p;
     p.front = style.front;
     to_window(c, v.pos, p.v[0]);
@@ -255,6 +273,13 @@ void draw_point(const DrawContext& c, SetupOut& out, uint32_t id, const EdgeStyl
     p.point_size = float(point_pixels(size));
     set_point_planes(p);
     bin(out, p, point_rect(p));
+}
+
+// GL_POINTS: dropped when the centre is outside the view volume.
+void draw_point(const DrawContext& c, SetupOut& out, const ClipVertex& v) {
+    ClipParams frustum = c.clip;
+    frustum.guard = 1.0f;
+    if (!outcode(v, frustum)) emit_point(c, out, v, {});
 }
 
 // Where a vertex's clip position and user-plane distances come from.
@@ -393,7 +418,7 @@ void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<Assembl
         } else if (p.count == 2) {
             draw_line(c, out, ids, id(p.provoking));
         } else {
-            draw_point(c, out, ids[0], {});
+            draw_point(c, out, c.vertices[ids[0]]);
         }
     }
 }

@@ -38,6 +38,109 @@ void rasterize_point(FragmentStage& stage, const FsPrimitive& prim, const Rect& 
         }
 }
 
+namespace {
+
+// GL's pixel centres lie at +0.5; the corners are kept with centres on whole
+// numbers, in 1/256 pixel rounded to nearest even, as llvmpipe snaps them.
+int64_t snap_fixed(float v) { return std::llrint((v - 0.5f) * 256.0f); }
+bool non_negative(float v) { return v >= 0.0f; }
+float fraction(float v) { return v - std::floor(v); }
+
+// Where an end point lies in its pixel, from the centre: (-0.5, -0.5) to (0.5, 0.5).
+glm::vec2 from_centre(glm::vec2 p) { return p - glm::floor(p) - 0.5f; }
+
+// The diamond-exit test for one end point: the start's pixel is drawn when
+// the line leaves its diamond, the end's when the line leaves the diamond
+// before reaching the end point. `along` and `across` are the major and
+// minor components of the point's offset from its pixel's centre and of the
+// line's delta; `meet` is where the line crosses the centre's column (row).
+struct EndTest {
+    float along_diff, across_diff, along_delta, across_delta, across_frac, slope;
+};
+
+bool draws_start(const EndTest& t) {
+    if (std::fabs(t.along_diff) + std::fabs(t.across_diff) < 0.5f) return true;
+    if (non_negative(t.along_diff) == non_negative(-t.along_delta)) return false;
+    if (non_negative(-t.across_diff) != non_negative(t.across_delta)) return true;
+    float meet = t.across_frac + t.along_diff * t.slope;
+    return meet < 1.0f && meet > 0.0f;
+}
+
+bool draws_end(const EndTest& t, bool closed_at_zero) {
+    if (std::fabs(t.along_diff) + std::fabs(t.across_diff) < 0.5f) return false;
+    if (non_negative(t.along_diff) != non_negative(-t.along_delta)) return false;
+    if (non_negative(-t.across_diff) == non_negative(t.across_delta)) return true;
+    float meet = t.across_frac + t.along_diff * t.slope;
+    return meet < 1.0f && (closed_at_zero ? meet >= 0.0f : meet > 0.0f);
+}
+
+}  // namespace
+
+bool line_corners(glm::vec2 a, glm::vec2 b, int width, LineCorners& out) {
+    // Deltas run from b to a, as in llvmpipe's setup, whose decisions
+    // (including its asymmetries) this reproduces for the same pixels.
+    glm::vec2 d = a - b;
+    if (d.x * d.x + d.y * d.y == 0.0f || !std::isfinite(d.x) || !std::isfinite(d.y)) return false;
+    glm::vec2 da = from_centre(a), db = from_centre(b);
+    int64_t half = int64_t(width) * 256 / 2;
+    glm::vec2 off_a{0.0f}, off_b{0.0f};  // moves of each end along the line
+    bool x_major = std::fabs(d.x) >= std::fabs(d.y);
+    int major = x_major ? 0 : 1, minor = 1 - major;
+    if (db[minor] == -0.5f && d[minor] < 0.0f) db[minor] = 0.5f;
+    float slope = d[minor] / d[major];
+    // llvmpipe reads a y-major line's differences negated (its y runs down).
+    float s = x_major ? 1.0f : -1.0f;
+    EndTest at_a{s * da[major], s * da[minor], s * d[major], s * d[minor], fraction(a[minor]), s * slope};
+    EndTest at_b{s * db[major], s * db[minor], s * d[major], s * d[minor], fraction(b[minor]), s * slope};
+    bool draw_start = draws_start(at_a), draw_end = draws_end(at_b, !x_major);
+    // Whether the span of centres between the ends (llvmpipe's reckoning,
+    // not quite the half-open span) takes each end's pixel; where it
+    // disagrees with the diamond rule, the end moves to a pixel boundary
+    // along the major axis (llvmpipe moves both ends the same way).
+    bool a_low = d[major] < 0.0f;
+    bool span_takes_a = non_negative(-at_a.along_diff) != non_negative(at_a.along_delta);
+    bool span_takes_b =
+        non_negative(at_b.along_diff) == non_negative(-at_b.along_delta) || at_b.along_diff == 0.0f;
+    auto move = [&](glm::vec2& off, float diff) {
+        off[major] = -diff + (a_low ? -0.5f : 0.5f);
+        off[minor] = off[major] * slope;
+    };
+    if (span_takes_a != draw_start) move(off_a, da[major]);
+    if (span_takes_b != draw_end) move(off_b, db[major]);
+    // Corners, clockwise: the right end (x-major) or the bottom end
+    // (y-major) first, each end split across the minor axis.
+    glm::vec2 end_a = a + off_a, end_b = b + off_b;
+    bool a_first = x_major ? !a_low : a_low;
+    glm::vec2 first = a_first ? end_a : end_b, second = a_first ? end_b : end_a;
+    int64_t* qmajor = x_major ? out.x : out.y;
+    int64_t* qminor = x_major ? out.y : out.x;
+    qmajor[0] = qmajor[3] = snap_fixed(first[major]);
+    qmajor[1] = qmajor[2] = snap_fixed(second[major]);
+    qminor[0] = snap_fixed(first[minor]) - half;
+    qminor[1] = snap_fixed(second[minor]) - half;
+    qminor[2] = snap_fixed(second[minor]) + half;
+    qminor[3] = snap_fixed(first[minor]) + half;
+    return true;
+}
+
+LineEdges::LineEdges(const LineCorners& q) {
+    for (int i = 0; i < 4; ++i) {
+        int n = (i + 1) % 4;
+        dcdy[i] = q.x[i] - q.x[n];
+        dcdx[i] = q.y[i] - q.y[n];
+        c[i] = dcdx[i] * q.x[i] - dcdy[i] * q.y[i];
+        // Centres on the left or top edge are inside (GL's rule in a
+        // framebuffer object, as llvmpipe applies it to lines).
+        if (dcdx[i] < 0 || (dcdx[i] == 0 && dcdy[i] > 0)) ++c[i];
+    }
+}
+
+bool LineEdges::covers(int x, int y) const {
+    for (int i = 0; i < 4; ++i)
+        if (c[i] + dcdy[i] * 256 * int64_t(y) - dcdx[i] * 256 * int64_t(x) <= 0) return false;
+    return true;
+}
+
 void rasterize_line(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor) {
     int qx = 0, qy = 0;
     unsigned mask = 0;

@@ -1,6 +1,8 @@
 // Point and line rasterization (GL 2.1 §3.4, §3.5, non-antialiased), feeding
 // the fragment stage in 2x2 quads.
 #pragma once
+#include <cstdint>
+
 #include "raster/fragments.h"
 
 namespace glslrun::raster {
@@ -18,13 +20,33 @@ Rect point_rect(const FsPrimitive& prim);
 // already whole (point_pixels). prim must outlive the stage's next flush.
 void rasterize_point(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor);
 
-// A line covers one pixel per column (x-major) or row (y-major) whose centre
-// lies on [start, end), and a line of width w a column (row) of w pixels
-// whose lowest is that of the line moved by -(w-1)/2 across (GL 2.1
-// §3.5.2); prim.count must be 2. prim must outlive the stage's next flush.
+// A non-antialiased line covers the pixels GL 2.1 §3.4.1's diamond-exit rule
+// gives, in the form llvmpipe (the reference, tools/glref) rasterizes it: a
+// parallelogram `width` pixels across the minor axis, whose ends along the
+// major axis are moved to a pixel boundary wherever the half-open span of
+// centres would disagree with the diamond rule about the first or last pixel
+// (the end point inside a pixel's diamond is not drawn, the start point's
+// pixel is). prim.count must be 2. prim must outlive the stage's next flush.
 void rasterize_line(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor);
 
-// The pixels rasterize_line visits, in order (for tests).
+// The corners of that parallelogram in 1/256 pixel with pixel centres on
+// whole numbers, clockwise; false for a line of zero length or not finite.
+struct LineCorners {
+    int64_t x[4], y[4];
+};
+bool line_corners(glm::vec2 a, glm::vec2 b, int width, LineCorners& out);
+
+// Whether the pixel (x, y) lies in the parallelogram: its centre inside
+// every edge, or on a left or top edge (llvmpipe's rule for lines in a
+// framebuffer object).
+struct LineEdges {
+    int64_t c[4], dcdx[4], dcdy[4];
+    explicit LineEdges(const LineCorners& q);
+    bool covers(int x, int y) const;
+};
+
+// The pixels rasterize_line visits, column by column (row by row for a
+// y-major line), each once.
 template <class Visit>
 void for_each_line_pixel(glm::vec2 a, glm::vec2 b, const Rect& scissor, Visit&& visit, int width = 1);
 
@@ -37,27 +59,30 @@ namespace glslrun::raster {
 
 template <class Visit>
 void for_each_line_pixel(glm::vec2 a, glm::vec2 b, const Rect& scissor, Visit&& visit, int width) {
+    LineCorners q;
+    if (!line_corners(a, b, width, q)) return;
+    LineEdges edges(q);
     glm::vec2 d = b - a;
     bool x_major = std::fabs(d.x) >= std::fabs(d.y);
     int major = x_major ? 0 : 1;
-    float start = a[major], end = b[major], delta = d[major];
-    if (delta == 0.0f || !std::isfinite(delta)) return;
-    // Pixel centres c = i + 0.5 with c in [start, end) (or (end, start] going backwards).
-    int step = delta > 0 ? 1 : -1;
-    int first = step > 0 ? int(std::ceil(start - 0.5f)) : int(std::floor(start - 0.5f));
+    const int64_t* qmajor = x_major ? q.x : q.y;
+    // Whole pixels between the corners, widened by one for the fill rule.
+    int first = int(std::min({qmajor[0], qmajor[1], qmajor[2], qmajor[3]}) >> 8) - 1;
+    int last = int(std::max({qmajor[0], qmajor[1], qmajor[2], qmajor[3]}) >> 8) + 1;
     int lo = x_major ? scissor.x0 : scissor.y0, hi = x_major ? scissor.x1 : scissor.y1;
-    first = step > 0 ? std::max(first, lo) : std::min(first, hi - 1);
-    for (int i = first;; i += step) {
-        float c = float(i) + 0.5f;
-        if (step > 0 ? c >= end : c <= end) break;
-        if (step > 0 ? i >= hi : i < lo) break;
-        float t = (c - start) / delta;
-        float minor = a[1 - major] + t * d[1 - major] - float(width - 1) * 0.5f;
-        int lowest = int(std::floor(minor));
-        for (int j = lowest; j < lowest + width; ++j) {
+    first = std::max(first, lo);
+    last = std::min(last, hi - 1);
+    float slope = d[1 - major] / d[major];
+    for (int i = first; i <= last; ++i) {
+        // The minor coordinate of the line at this centre, and the pixels
+        // within half the width (and the moved ends' reach) of it.
+        float minor = a[1 - major] + (float(i) + 0.5f - a[major]) * slope;
+        if (!std::isfinite(minor)) continue;
+        int j0 = int(std::floor(minor - float(width) * 0.5f)) - 2, j1 = j0 + width + 4;
+        for (int j = j0; j <= j1; ++j) {
             int x = x_major ? i : j, y = x_major ? j : i;
             if (x < scissor.x0 || x >= scissor.x1 || y < scissor.y0 || y >= scissor.y1) continue;
-            visit(x, y);
+            if (edges.covers(x, y)) visit(x, y);
         }
     }
 }

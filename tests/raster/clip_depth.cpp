@@ -186,19 +186,30 @@ TEST_CASE("primitive assembly and provoking vertices", "[raster][assemble]") {
     CHECK(assemble(Primitive::Triangles, 2).empty());
 }
 
-TEST_CASE("line pixels: one per major-axis column, start in, end out", "[raster][lines]") {
+TEST_CASE("line pixels: GL's diamond-exit rule, as llvmpipe draws it", "[raster][lines]") {
     Rect scissor{0, 0, 16, 16};
-    std::vector<std::pair<int, int>> px;
-    auto collect = [&](int x, int y) { px.push_back({x, y}); };
+    std::set<std::pair<int, int>> px;
+    auto collect = [&](int x, int y) { CHECK(px.insert({x, y}).second); };  // each pixel once
+    using Pixels = std::set<std::pair<int, int>>;
+    // From one centre to another: the start's diamond is left, the end's never.
     for_each_line_pixel({0.5f, 2.5f}, {4.5f, 2.5f}, scissor, collect);
-    CHECK(px == std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 2}, {3, 2}});
+    CHECK(px == Pixels{{0, 2}, {1, 2}, {2, 2}, {3, 2}});
     px.clear();
     for_each_line_pixel({4.5f, 2.5f}, {0.5f, 2.5f}, scissor, collect);  // backwards: 4..1
-    CHECK(px == std::vector<std::pair<int, int>>{{4, 2}, {3, 2}, {2, 2}, {1, 2}});
+    CHECK(px == Pixels{{1, 2}, {2, 2}, {3, 2}, {4, 2}});
     px.clear();
-    for_each_line_pixel({1.0f, 0.0f}, {1.0f, 8.0f}, scissor, collect);  // y-major
-    REQUIRE(px.size() == 8);
-    for (int i = 0; i < 8; ++i) CHECK(px[i] == std::pair<int, int>{1, i});
+    // Ends inside diamonds but off centre: the half-open span of centres
+    // would take column 5 and drop column 1; the diamond rule the reverse.
+    for_each_line_pixel({1.7f, 6.5f}, {5.6f, 6.5f}, scissor, collect);
+    CHECK(px == Pixels{{1, 6}, {2, 6}, {3, 6}, {4, 6}});
+    px.clear();
+    // Ends outside every diamond (a pixel's corner): one pixel per centre passed.
+    for_each_line_pixel({1.0f, 9.0f}, {5.0f, 9.0f}, scissor, collect);
+    CHECK(px.size() == 4);
+    px.clear();
+    for_each_line_pixel({1.5f, 0.25f}, {1.5f, 8.25f}, scissor, collect);  // y-major
+    CHECK(px.size() == 8);
+    for (auto [x, y] : px) CHECK(x == 1);
     px.clear();
     for_each_line_pixel({0.0f, 0.0f}, {8.0f, 4.0f}, scissor, collect);  // diagonal, x-major
     REQUIRE(px.size() == 8);
@@ -211,6 +222,10 @@ TEST_CASE("line pixels: one per major-axis column, start in, end out", "[raster]
     px.clear();
     for_each_line_pixel({-100.0f, 3.5f}, {100.0f, 3.5f}, scissor, collect);  // clipped by the scissor
     CHECK(px.size() == 16);
+    px.clear();
+    for_each_line_pixel({1.25f, 3.5f}, {9.25f, 3.5f}, scissor, collect, 3);  // 3 wide: rows 2..4
+    CHECK(px.size() == 24);
+    for (auto [x, y] : px) CHECK((y >= 2 && y <= 4));
     CHECK(point_pixels(0.2f) == 1);
     CHECK(point_pixels(2.5f) == 3);
     CHECK(point_pixels(2.4f) == 2);

@@ -4,6 +4,11 @@
 // (gl_PointCoord, GL_COORD_REPLACE), and glCullFace / glFrontFace, with
 // GL_FRONT_AND_BACK. Vertices sit off pixel boundaries (on one, the pixel a
 // point or a line's end takes is the implementation's rounding).
+#include <fmt/format.h>
+
+#include <array>
+#include <glm/glm.hpp>
+
 #include "tests/reference/helpers.h"
 
 using namespace glslrun;
@@ -15,10 +20,10 @@ void main() { gl_FrontColor = gl_Color; gl_BackColor = vec4(1.0) - gl_Color; gl_
 )";
 const char* kColorFragment = "void main() { gl_FragColor = gl_Color; }\n";
 
-void compare_colors(const std::string& name, const char* toml) {
+void compare_colors(const std::string& name, const char* toml, const char* vertex = kColorVertex) {
     auto scene = scene::parse_scene(toml, name + ".toml");
     if (!scene) FAIL(scene.error().str());
-    reference::compare(name, {{{"color.vert", kColorVertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
+    reference::compare(name, {{{"color.vert", vertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)});
 }
 
 // Counter-clockwise shapes are front faces, clockwise ones back faces.
@@ -58,11 +63,14 @@ vertices = [[9.76, 6.76], [9.885, 10.635], [12.135, 6.635], [12.26, 10.885], [14
 colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1]]
 )";
 
-std::string shapes(const std::string& state) {
-    std::string text = kShapes;
+// `scene` with its "%s" replaced by `state`.
+std::string with_state(const std::string& scene, const std::string& state) {
+    std::string text = scene;
     text.replace(text.find("%s"), 2, state);
     return text;
 }
+
+std::string shapes(const std::string& state) { return with_state(kShapes, state); }
 
 }  // namespace
 
@@ -188,4 +196,123 @@ colors = [[1, 1, 1], [1, 0, 1]]
 state = { line_width = 4 }
 )";
     compare_colors("primitive-cull-front-and-back", both.c_str());
+}
+
+namespace {
+
+// Window coordinates that survive the transforms exactly (a 128-pixel
+// viewport and an ortho of the same size, powers of two), so that an end
+// point meant to lie on a diamond's edge or a pixel's centre does.
+const char* kPixelGrid = R"(
+[output]
+size = [128, 128]
+clear_color = [0, 0, 0, 1]
+[camera]
+ortho = { left = 0, right = 128, bottom = 0, top = 128, near = -1, far = 1 }
+)";
+
+// Where in its pixel an end point lies: the centre, inside the diamond off
+// the centre, on the diamond's edge, at the pixel's corner.
+const std::array<glm::vec2, 4> kEndPlaces = {{{0.5f, 0.5f}, {0.75f, 0.625f}, {0.75f, 0.75f}, {0.0f, 0.0f}}};
+
+// One line per 8x8 cell: 16 directions (every octant, both slopes of each,
+// the axes and the diagonals) times every pair of end places.
+std::string octant_lines() {
+    const int directions[16][2] = {{5, 2},  {2, 5},  {-2, 5}, {-5, 2}, {-5, -2}, {-2, -5}, {2, -5}, {5, -2},
+                                   {4, 0},  {0, 4},  {-4, 0}, {0, -4}, {3, 3},   {-3, 3},  {-3, -3}, {3, -3}};
+    std::string vertices, colors;
+    int cell = 0;
+    for (const auto& dir : directions)
+        for (glm::vec2 start : kEndPlaces)
+            for (glm::vec2 end : kEndPlaces) {
+                glm::vec2 base{float(cell % 16 * 8 + (dir[0] < 0 ? 6 : 1)), float(cell / 16 * 8 + (dir[1] < 0 ? 6 : 1))};
+                glm::vec2 a = base + start, b = base + glm::vec2(dir[0], dir[1]) + end;
+                vertices += fmt::format("[{}, {}], [{}, {}], ", a.x, a.y, b.x, b.y);
+                colors += fmt::format("[1, {}, 0.5], [0.25, 1, {}], ", cell % 7 / 6.0, cell % 5 / 4.0);
+                ++cell;
+            }
+    return fmt::format("{}[[objects]]\nmesh = \"arrays\"\nprimitive = \"lines\"\nvertices = [{}]\ncolors = [{}]\n",
+                       kPixelGrid, vertices, colors);
+}
+
+}  // namespace
+
+TEST_CASE("glslrun matches Mesa on line ends in and on pixel diamonds", "[reference]") {
+    // GL 2.1 §3.4.1's diamond-exit rule decides the first and last pixels.
+    compare_colors("primitive-line-diamonds", octant_lines().c_str());
+    // Strips and loops whose shared vertices lie at centres, inside diamonds
+    // and on their edges, blended additively: a shared vertex's pixel drawn
+    // twice (or dropped) shows. Wide, the same ends move whole rows.
+    std::string strips = std::string(kPixelGrid) + R"(
+[state]
+blend = true
+blend_func = ["one", "one"]
+%s
+[[objects]]
+mesh = "arrays"
+primitive = "line_strip"
+vertices = [[4.5, 4.5], [20.75, 9.625], [30.75, 30.75], [9.0, 40.0], [12.5, 60.5], [40.75, 58.625], [44.5, 20.5]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0], [0, 0.25, 0], [0, 0, 0.25]]
+[[objects]]
+mesh = "arrays"
+primitive = "line_loop"
+vertices = [[70.5, 10.5], [110.75, 14.75], [118.5, 50.5], [90.0, 40.0], [100.75, 70.625], [66.5, 60.5]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0], [0, 0.25, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "line_loop"
+vertices = [[20.5, 80.5], [60.5, 80.5], [60.5, 120.5], [20.5, 120.5], [40.75, 100.75]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "line_strip"
+vertices = [[80.0, 80.0], [120.0, 84.0], [84.0, 124.0], [124.0, 120.0], [100.25, 100.5]]
+colors = [[0.25, 0.25, 0.25], [0.25, 0, 0.25], [0, 0.25, 0.25], [0.25, 0.25, 0], [0.25, 0, 0]]
+)";
+    compare_colors("primitive-line-strip-diamonds", with_state(strips, "").c_str());
+    compare_colors("primitive-line-strip-diamonds-width-3", with_state(strips, "line_width = 3").c_str());
+    compare_colors("primitive-line-diamonds-width-2", (octant_lines() + "state = { line_width = 2 }\n").c_str());
+}
+
+TEST_CASE("glslrun matches Mesa on polygon edges made by clipping", "[reference]") {
+    // Mesa draws a clipped polygon's edges along a user plane, and not those
+    // along the view volume; points where an edge comes back into it.
+    const char* clip_vertex = R"(
+void main() {
+    gl_FrontColor = gl_Color;
+    gl_BackColor = vec4(1.0) - gl_Color;
+    gl_ClipVertex = gl_ModelViewMatrix * gl_Vertex;
+    gl_Position = ftransform();
+}
+)";
+    auto compare_clipped = [&](const std::string& name, const std::string& toml) {
+        compare_colors(name, toml.c_str(), clip_vertex);
+    };
+    const std::string user_plane = "clip_planes = [[1, -0.35, 0, -4.6], [-0.2, -1, 0, 10.3]]\n";
+    compare_clipped("primitive-clip-plane-line", shapes(user_plane + "polygon_mode = \"line\""));
+    compare_clipped("primitive-clip-plane-point", shapes(user_plane + "polygon_mode = \"point\""));
+    compare_clipped("primitive-clip-plane-line-width-3", shapes(user_plane + "polygon_mode = \"line\"\nline_width = 3"));
+    // Through the near plane: a quad and a triangle reaching behind the eye.
+    std::string near = R"(
+[output]
+size = [128, 96]
+clear_color = [0, 0, 0, 1]
+[camera]
+look_at = { eye = [0, 0.5, 4], center = [0, 0, 0], up = [0, 1, 0] }
+perspective = { fovy = 60, near = 1, far = 20 }
+[state]
+%s
+[[objects]]
+mesh = "arrays"
+primitive = "quads"
+vertices = [[-2.1, -1.3, 6.2], [-0.35, -1.1, 6.1], [-0.45, -0.9, -5.3], [-1.9, -1.15, -5.1]]
+colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0]]
+[[objects]]
+mesh = "arrays"
+primitive = "triangles"
+vertices = [[0.35, -0.8, -4.3], [2.2, 0.9, -3.7], [1.1, -0.2, 7.4]]
+colors = [[0, 1, 1], [1, 0, 1], [1, 1, 1]]
+)";
+    compare_clipped("primitive-near-plane-line", with_state(near, "polygon_mode = \"line\""));
+    compare_clipped("primitive-near-plane-point", with_state(near, "polygon_mode = \"point\"\npoint_size = 6"));
 }
