@@ -176,7 +176,8 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
 
 // The fused pipeline where the shader runs JIT-compiled and the draw's
 // state is one it takes: the depth test (any function, either mask) and
-// plain stores into one colour buffer, no shader debugger. Null otherwise,
+// plain stores into one colour buffer, no shader debugger, no
+// GL_COORD_REPLACE. Null otherwise,
 // until the program has shaded enough fragments to pay for it
 // (rt::kPipelineAfterFragments), and under Backend::Auto until its
 // background compile is done.
@@ -189,6 +190,7 @@ const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
     rt::PipelineKey key;
     for (const InputPlan& p : inputs_) {
         const ir::Binding& b = *p.binding;
+        if (p.sprite_coord) return nullptr;  // GL_COORD_REPLACE: not in the generated code yet
         const bool is_bool = b.kind == ir::Kind::Bool && p.source == InputPlan::Source::FrontFacing;
         if (b.kind != ir::Kind::F32 && !is_bool && p.source != InputPlan::Source::Zero) return nullptr;
         for (uint32_t c = 0; c < b.count; ++c) {
