@@ -230,10 +230,9 @@ llvm::Value* Emitter::emit_derivative(Op op, llvm::Value* a) {
 
 void Emitter::emit_call_out(const ir::Instr& in) {
     call_outs_.push_back({kernel_for(in.op, avx2_, precision_, fast_ops_), in});
-    auto* type = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, ptr_, i64_}, false);
+    auto* type = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, i64_, i64_}, false);
     auto* callee = llvm::ConstantExpr::getIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&run_call_out)), ptr_);
-    auto* record = llvm::ConstantExpr::getIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&call_outs_.back())), ptr_);
-    b_.CreateCall(type, callee, {ctx_arg_, regs_, record, load_mask(exec_)});
+    b_.CreateCall(type, callee, {ctx_arg_, regs_, b_.getInt64(call_outs_.size() - 1), load_mask(exec_)});
 }
 
 }  // namespace glslrun::rt::jit
