@@ -86,6 +86,24 @@ private:
     Value* sin_quadrant(const Reduced& red, uint32_t shift);
     Value* sin(Value* x);
     Value* cos(Value* x);
+    Value* tan(Value* x);
+    Value* atan2_core(Value* ay, Value* ax);
+    Value* atan(Value* x);
+    Value* atan2(Value* y, Value* x);
+    Value* asin(Value* x);
+    Value* acos(Value* x);
+    Value* copysign(Value* magnitude, Value* sign) {
+        return b_.CreateBinaryIntrinsic(llvm::Intrinsic::copysign, magnitude, sign);
+    }
+    // |x| <= 1 ? r : the NaN of asin and acos outside their domain
+    Value* inverse_domain(Value* x, Value* r) {
+        return sel(b_.CreateFCmpOLE(fabs(x), f(1.0f)), r, sel(is_nan(x), b_.CreateFAdd(x, x), f_bits(0x7FC00000u)));
+    }
+    // sqrt(1 - ax^2) as (1 - ax)(1 + ax)
+    Value* cosine_of(Value* ax) {
+        return b_.CreateUnaryIntrinsic(llvm::Intrinsic::sqrt,
+                                       b_.CreateFMul(b_.CreateFSub(d(1.0), ax), b_.CreateFAdd(d(1.0), ax)));
+    }
 
     // --- ir/fast_math.h, single precision
     template <size_t M>
@@ -261,6 +279,56 @@ Value* MathEmitter::cos(Value* x) {
     return sel(b_.CreateFCmpOLT(fabs(x), f(kInf)), r, b_.CreateFSub(x, x));
 }
 
+// math::tan
+Value* MathEmitter::tan(Value* x) {
+    const Reduced red = reduce_pi2(x);
+    Value* z = b_.CreateFMul(red.r, red.r);
+    Value* s = b_.CreateFMul(red.r, estrin(z, precise::kSinPoly));
+    Value* c = estrin(z, precise::kCosPoly);
+    Value* odd = bit_set(red.quadrant, 1);
+    Value* ratio = narrow(b_.CreateFDiv(sel(odd, b_.CreateFNeg(c), s), sel(odd, s, c)));
+    Value* r = sel(b_.CreateFCmpOEQ(x, f(0.0f)), x, ratio);
+    return sel(b_.CreateFCmpOLT(fabs(x), f(kInf)), r, b_.CreateFSub(x, x));
+}
+
+// detail::atan2_core (doubles ay, ax >= 0)
+Value* MathEmitter::atan2_core(Value* ay, Value* ax) {
+    Value* low = b_.CreateFCmpOLE(ay, b_.CreateFMul(d(precise::kTanPi8), ax));
+    Value* high = b_.CreateFCmpOGT(ay, b_.CreateFMul(d(precise::kTan3Pi8), ax));
+    Value* num = sel(low, ay, sel(high, b_.CreateFNeg(ax), b_.CreateFSub(ay, ax)));
+    Value* den = sel(low, ax, sel(high, ay, b_.CreateFAdd(ay, ax)));
+    Value* offset = sel(low, d(0.0), sel(high, d(precise::kPi2), d(precise::kPi4)));
+    Value* u = b_.CreateFDiv(num, den);
+    return b_.CreateFAdd(offset, b_.CreateFMul(u, estrin(b_.CreateFMul(u, u), precise::kAtanPoly)));
+}
+
+// math::atan, math::atan2 (y, x), math::asin, math::acos
+Value* MathEmitter::atan(Value* x) { return copysign(narrow(atan2_core(fabs(widen(x)), d(1.0))), x); }
+
+Value* MathEmitter::atan2(Value* y, Value* x) {
+    Value* ay = fabs(widen(y));
+    Value* ax = fabs(widen(x));
+    Value* a = atan2_core(ay, ax);
+    a = sel(b_.CreateAnd(b_.CreateFCmpOEQ(ay, d(0.0)), b_.CreateFCmpOEQ(ax, d(0.0))), d(0.0), a);
+    Value* inf = d(double(kInf));
+    a = sel(b_.CreateAnd(b_.CreateFCmpOEQ(ay, inf), b_.CreateFCmpOEQ(ax, inf)), d(precise::kPi4), a);
+    a = sel(b_.CreateICmpSLT(as_int(x), i32(0)), b_.CreateFSub(d(precise::kPi), a), a);
+    Value* r = copysign(narrow(a), y);
+    Value* nan = sel(is_nan(x), b_.CreateFAdd(x, x), b_.CreateFAdd(y, y));  // detail::first_nan(x, y)
+    return sel(b_.CreateOr(is_nan(x), is_nan(y)), nan, r);
+}
+
+Value* MathEmitter::asin(Value* x) {
+    Value* ax = fabs(widen(x));
+    return inverse_domain(x, copysign(narrow(atan2_core(ax, cosine_of(ax))), x));
+}
+
+Value* MathEmitter::acos(Value* x) {
+    Value* xd = widen(x);
+    Value* a = atan2_core(cosine_of(fabs(xd)), fabs(xd));
+    return inverse_domain(x, narrow(sel(b_.CreateFCmpOLT(xd, d(0.0)), b_.CreateFSub(d(precise::kPi), a), a)));
+}
+
 // fast::detail::poly: c[0] + x (c[1] + x (...)), innermost first.
 template <size_t M>
 Value* MathEmitter::horner(Value* x, const float (&c)[M]) {
@@ -353,6 +421,11 @@ Value* MathEmitter::precise_op(Op op, Value* a, Value* b) {
     case Op::fpow: return ftz(pow_batch(ftz(a), ftz(b)));
     case Op::fsin: return ftz(sin(ftz(a)));
     case Op::fcos: return ftz(cos(ftz(a)));
+    case Op::ftan: return ftz(tan(ftz(a)));
+    case Op::fasin: return ftz(asin(ftz(a)));
+    case Op::facos: return ftz(acos(ftz(a)));
+    case Op::fatan: return ftz(atan(ftz(a)));
+    case Op::fatan2: return ftz(atan2(ftz(a), ftz(b)));
     default: return nullptr;
     }
 }
@@ -383,6 +456,7 @@ Value* MathEmitter::emit(Op op, bool fast, Value* a, Value* b) {
 bool generates_math(Op op, bool fast) {
     switch (op) {
     case Op::fexp: case Op::fexp2: case Op::flog: case Op::flog2: case Op::fpow: case Op::fsin: case Op::fcos:
+    case Op::ftan: case Op::fasin: case Op::facos: case Op::fatan: case Op::fatan2:
         return true;
     case Op::frsqrt: case Op::fsqrt_divisor: case Op::fdiv_by_sqrt: return fast;
     default: return false;

@@ -29,7 +29,7 @@ std::vector<uint32_t> boundary_words() {
         0.49999997f, 1.5f, 2.5f, 126.0f, 127.0f, 128.0f, 129.0f, 149.0f, 150.0f, 151.0f, 152.0f, 200.0f,
         88.72283f, 87.33654f, 103.97208f, 0.70710677f, 1.4142135f, 0.6931472f, 1.442695f,
         pi2 / 2, pi2, 2 * pi2, 3 * pi2, 4 * pi2, 100 * pi2, 8192 * pi2, 0x1p13f * pi2, 0x1p22f * pi2,
-        0x1p29f * pi2, 0x1p50f, 1e10f, 12345.678f, 0.786f};
+        0x1p29f * pi2, 0x1p50f, 1e10f, 12345.678f, 0.786f, 0.41421357f, 2.4142137f, 0.99999994f, 0.7853982f};
     std::vector<uint32_t> words;
     for (float v : values)
         for (float s : {v, -v}) {
@@ -60,12 +60,13 @@ Inputs inputs(bool binary, int randoms) {
             in.b.push_back(edge[j]);
         }
     std::mt19937 rng(12);
-    std::uniform_real_distribution<float> range(-160.0f, 160.0f), exponent(-40.0f, 40.0f);
+    std::uniform_real_distribution<float> range(-160.0f, 160.0f), exponent(-40.0f, 40.0f), unit(-1.1f, 1.1f);
     for (int i = 0; i < randoms; ++i) {
-        const int kind = i % 3;
+        const int kind = i % 4;
         auto pick = [&]() -> uint32_t {
             if (kind == 0) return uint32_t(rng());  // any bit pattern
             if (kind == 1) return bits(range(rng));
+            if (kind == 3) return bits(unit(rng));  // asin's and acos's domain
             return bits(std::exp2(exponent(rng)));  // positive, many magnitudes (pow's x)
         };
         in.a.push_back(pick());
@@ -78,8 +79,8 @@ Inputs inputs(bool binary, int randoms) {
 
 TEST_CASE("generated built-ins give the kernels' bits", "[runtime][backend][jit_math]") {
     if (!jit_available()) return;
-    const Op ops[] = {Op::fexp, Op::fexp2, Op::flog, Op::flog2, Op::fpow, Op::fsin, Op::fcos,
-                      Op::frsqrt, Op::fsqrt_divisor, Op::fdiv_by_sqrt};
+    const Op ops[] = {Op::fexp,  Op::fexp2, Op::flog,  Op::flog2, Op::fpow,   Op::fsin,   Op::fcos,          Op::ftan,
+                      Op::fasin, Op::facos, Op::fatan, Op::fatan2, Op::frsqrt, Op::fsqrt_divisor, Op::fdiv_by_sqrt};
     for (Op op : ops) {
         const bool binary = ir::op_info(op).arity == 2;
         const Inputs in = inputs(binary, 1 << 20);
