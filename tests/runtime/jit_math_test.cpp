@@ -4,6 +4,7 @@
 // zeros, denormals, infinities, NaNs with payloads and signs, signalling
 // NaNs), the functions' range-reduction and special-case boundaries and their
 // neighbours, and random bit patterns and random values in the ops' ranges.
+// Integer division and remainder likewise, on their edge cases (0, -1, INT_MIN).
 // CI runs this at 8, 16 and 64 lanes (tools/setup.sh).
 #include <catch2/catch.hpp>
 
@@ -75,6 +76,45 @@ Inputs inputs(bool binary, int randoms) {
     return in;
 }
 
+// Runs `op` on every (a[i], b[i]) in both backends and compares the results
+// word for word; every fourth batch runs under a partial mask, where the
+// other lanes must keep r's old words.
+void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in) {
+    const bool binary = ir::op_info(op).arity == 2;
+    Builder b;
+    const Kind kind = ir::op_info(op).operand == ir::TypeClass::F ? Kind::F32 : Kind::I32;
+    Reg x = b.reg(kind), y = b.reg(kind), r = b.reg(kind);
+    b.instr(op, kind, r, binary ? std::initializer_list<Reg>{x, y} : std::initializer_list<Reg>{x});
+    std::vector<uint32_t> uniforms(4);
+    rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
+    auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);
+    auto jit = rt::compile_shader(b.sh, Backend::Jit, precision, params.fast_ops, avx2);
+    REQUIRE(jit);
+    auto ia = interp->instantiate(params), ja = jit->instantiate(params);
+    size_t mismatches = 0;
+    for (size_t k = 0; k < in.a.size(); k += rt::kLanes) {
+        const rt::LaneMask live =
+            (k / rt::kLanes) % 4 == 3 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
+        for (rt::Executor* e : {ia.get(), ja.get()})
+            for (int lane = 0; lane < rt::kLanes; ++lane) {
+                const size_t i = (k + size_t(lane)) % in.a.size();
+                e->lanes(x)[lane] = in.a[i];
+                e->lanes(y)[lane] = in.b[i];
+                e->lanes(r)[lane] = 0xdeadbeefu + uint32_t(lane);
+            }
+        REQUIRE(ia->run(live, nullptr));
+        REQUIRE(ja->run(live, nullptr));
+        for (int lane = 0; lane < rt::kLanes; ++lane) {
+            if (ia->lanes(r)[lane] == ja->lanes(r)[lane] || ++mismatches > 8) continue;
+            INFO(ir::op_info(op).name << " " << precision_name(precision) << (avx2 ? " avx2" : " baseline") << std::hex
+                                      << " a " << ia->lanes(x)[lane] << " b " << ia->lanes(y)[lane] << " interp "
+                                      << ia->lanes(r)[lane] << " jit " << ja->lanes(r)[lane]);
+            CHECK(ia->lanes(r)[lane] == ja->lanes(r)[lane]);
+        }
+    }
+    CHECK(mismatches == 0);
+}
+
 }  // namespace
 
 TEST_CASE("generated built-ins give the kernels' bits", "[runtime][backend][jit_math]") {
@@ -82,43 +122,25 @@ TEST_CASE("generated built-ins give the kernels' bits", "[runtime][backend][jit_
     const Op ops[] = {Op::fexp,  Op::fexp2, Op::flog,  Op::flog2, Op::fpow,   Op::fsin,   Op::fcos,          Op::ftan,
                       Op::fasin, Op::facos, Op::fatan, Op::fatan2, Op::frsqrt, Op::fsqrt_divisor, Op::fdiv_by_sqrt};
     for (Op op : ops) {
-        const bool binary = ir::op_info(op).arity == 2;
-        const Inputs in = inputs(binary, 1 << 20);
+        const Inputs in = inputs(ir::op_info(op).arity == 2, 1 << 20);
         for (Precision precision : {Precision::Precise, Precision::Fast})
-            for (bool avx2 : {false, true}) {
-                if (avx2 && !rt::cpu_has_avx2()) continue;
-                Builder b;
-                Reg x = b.reg(Kind::F32), y = b.reg(Kind::F32), r = b.reg(Kind::F32);
-                b.instr(op, Kind::F32, r, binary ? std::initializer_list<Reg>{x, y} : std::initializer_list<Reg>{x});
-                std::vector<uint32_t> uniforms(4);
-                rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
-                auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);
-                auto jit = rt::compile_shader(b.sh, Backend::Jit, precision, params.fast_ops, avx2);
-                REQUIRE(jit);
-                auto ia = interp->instantiate(params), ja = jit->instantiate(params);
-                size_t mismatches = 0;
-                for (size_t k = 0; k < in.a.size(); k += rt::kLanes) {
-                    // Every fourth batch runs under a partial mask: the other lanes keep r's old words.
-                    const rt::LaneMask live = (k / rt::kLanes) % 4 == 3 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes
-                                                                        : rt::kAllLanes;
-                    for (rt::Executor* e : {ia.get(), ja.get()})
-                        for (int lane = 0; lane < rt::kLanes; ++lane) {
-                            const size_t i = (k + size_t(lane)) % in.a.size();
-                            e->lanes(x)[lane] = in.a[i];
-                            e->lanes(y)[lane] = in.b[i];
-                            e->lanes(r)[lane] = 0xdeadbeefu + uint32_t(lane);
-                        }
-                    REQUIRE(ia->run(live, nullptr));
-                    REQUIRE(ja->run(live, nullptr));
-                    for (int lane = 0; lane < rt::kLanes; ++lane) {
-                        if (ia->lanes(r)[lane] == ja->lanes(r)[lane] || ++mismatches > 8) continue;
-                        INFO(ir::op_info(op).name << " " << precision_name(precision) << (avx2 ? " avx2" : " baseline")
-                                                  << std::hex << " a " << ia->lanes(x)[lane] << " b " << ia->lanes(y)[lane]
-                                                  << " interp " << ia->lanes(r)[lane] << " jit " << ja->lanes(r)[lane]);
-                        CHECK(ia->lanes(r)[lane] == ja->lanes(r)[lane]);
-                    }
-                }
-                CHECK(mismatches == 0);
-            }
+            for (bool avx2 : {false, true})
+                if (!avx2 || rt::cpu_has_avx2()) compare_backends(op, precision, avx2, in);
     }
+}
+
+TEST_CASE("generated integer division gives the kernels' words", "[runtime][backend][jit_math]") {
+    if (!jit_available()) return;
+    const int32_t edge[] = {0, 1, -1, 2, -2, 3, 7, -7, 100, INT32_MAX, INT32_MIN, INT32_MIN + 1, INT32_MAX - 1};
+    Inputs in;
+    for (int32_t a : edge)
+        for (int32_t b : edge) in.a.push_back(bits(a)), in.b.push_back(bits(b));
+    std::mt19937 rng(5);
+    for (int i = 0; i < 1 << 16; ++i) {
+        in.a.push_back(uint32_t(rng()));
+        in.b.push_back(i % 2 ? uint32_t(rng()) : uint32_t(int32_t(rng() % 33) - 16));  // small divisors, 0 and -1
+    }
+    for (Op op : {Op::idiv, Op::imod})
+        for (bool avx2 : {false, true})
+            if (!avx2 || rt::cpu_has_avx2()) compare_backends(op, Precision::Precise, avx2, in);
 }
