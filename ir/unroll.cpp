@@ -22,6 +22,7 @@
 // Every lane that reads it there wrote it in the same iteration, so the
 // copies need not share it. Registers addressed by position (inputs,
 // outputs, indexed ranges, tex blocks) keep their numbers.
+#include <algorithm>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -102,11 +103,14 @@ void find_temporaries(const Block& block, const Uses& uses, std::vector<Reg>& ou
         find_temporaries(n.body, uses, out);
         find_temporaries(n.alt, uses, out);
         const Reg r = n.kind == NodeKind::Instr ? n.instr.dst : kNoReg;
-        if (r >= uses.writes.size() || uses.pinned[r] || uses.writes[r] != 1 || n.instr.op == Op::tex) continue;
+        if (r >= uses.writes.size() || uses.pinned[r] || uses.writes[r] != 1) continue;
         uint32_t later_reads = 0;
-        flow::walk(Block(block.begin() + std::ptrdiff_t(i) + 1, block.end()), [&](const Node& m) {
-            flow::for_each_read(m, [&](Reg read) { later_reads += read == r; });
-        });
+        auto count = [&](const Node& m) { flow::for_each_read(m, [&](Reg read) { later_reads += read == r; }); };
+        for (size_t j = i + 1; j < block.size(); ++j) {
+            count(block[j]);
+            flow::walk(block[j].body, count);
+            flow::walk(block[j].alt, count);
+        }
         if (later_reads == uses.reads[r]) out.push_back(r);
     }
 }
@@ -132,10 +136,8 @@ void forget(Facts& facts, const Block& block) {
     for (Reg r : writes.regs) facts.erase(r);
 }
 
-bool straight_line(const Block& block, size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i)
-        if (block[i].kind != NodeKind::Instr) return false;
-    return true;
+bool straight_line(const Block& block) {
+    return std::all_of(block.begin(), block.end(), [](const Node& n) { return n.kind == NodeKind::Instr; });
 }
 
 // A break or continue of this loop (not of a loop nested in it).
@@ -164,7 +166,7 @@ std::optional<Block> unrolled(Shader& shader, const Node& loop, const Facts& bef
         !test.alt.empty())
         return std::nullopt;
     const Block rest(body.begin() + std::ptrdiff_t(exit) + 1, body.end());
-    if (!straight_line(loop.alt, 0, loop.alt.size()) || leaves_loop(rest)) return std::nullopt;
+    if (!straight_line(loop.alt) || leaves_loop(rest)) return std::nullopt;
     if (flow::writes_of(rest).calls) return std::nullopt;
 
     Facts facts = before;
