@@ -59,6 +59,7 @@ private:
     llvm::Value* emit_derivative(ir::Op op, llvm::Value* a);
     llvm::Value* element_index(const ir::Instr& in);  // kLanes x i32
     llvm::Value* register_lanes(llvm::Value* regs);     // kLanes x ptr
+    void emit_precise_pow(const ir::Instr& in);
     void emit_call_out(const ir::Instr& in);
     llvm::Value* reg_ptr(ir::Reg r);
     llvm::Value* load_reg(ir::Reg r);  // kLanes x i32

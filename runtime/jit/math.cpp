@@ -32,9 +32,12 @@ constexpr float kInf = precise::kInf;
 
 class MathEmitter {
 public:
-    explicit MathEmitter(llvm::IRBuilder<>& b) : b_(b) {}
+    // For operands of the type of `like` (kLanes floats).
+    MathEmitter(llvm::IRBuilder<>& b, Value* like) : b_(b) { set_lanes(like); }
 
-    Value* emit(Op op, bool fast, Value* a, Value* b);
+    Value* emit(Op op, bool fast, Value* a, Value* b) { return fast ? fast_op(op, a, b) : precise_op(op, a, b); }
+    Value* pow_common(Value* x, Value* y);
+    Value* pow_is_common(Value* x, Value* y);
 
 private:
     // --- vectors of the operands' lane count
@@ -71,13 +74,6 @@ private:
     Value* log(Value* x) {
         return sel(positive_finite(x), narrow(b_.CreateFMul(log2_core(x), d(precise::kLn2))), log_special(x));
     }
-    Value* is_integer(Value* y);
-    Value* odd_power_sign(Value* x, Value* y);
-    Value* flip_sign(Value* v, Value* sign) { return as_float(b_.CreateXor(as_int(v), sign)); }
-    Value* signalling(Value* x) { return b_.CreateAnd(is_nan(x), b_.CreateNot(bit_set(as_int(x), 0x00400000u))); }
-    Value* pow(Value* x, Value* y);
-    Value* pow_common(Value* x, Value* y);
-    Value* pow_batch(Value* x, Value* y);
     struct Reduced {
         Value* r;
         Value* quadrant;
@@ -180,69 +176,16 @@ Value* MathEmitter::log_special(Value* x) {
                sel(b_.CreateFCmpOLT(x, f(0.0f)), f_bits(0xFFC00000u), b_.CreateFAdd(x, x)));
 }
 
-// detail::is_integer
-Value* MathEmitter::is_integer(Value* y) {
-    Value* ay = fabs(y);
-    Value* rounded = b_.CreateFSub(b_.CreateFAdd(ay, f(0x1p23f)), f(0x1p23f));
-    return b_.CreateOr(b_.CreateFCmpOGE(ay, f(0x1p23f)), b_.CreateFCmpOEQ(rounded, ay));
-}
-
-// detail::odd_power_sign
-Value* MathEmitter::odd_power_sign(Value* x, Value* y) {
-    Value* ay = fabs(y);
-    Value* low = b_.CreateAnd(as_int(b_.CreateFAdd(ay, f(0x1p23f))), i32(1));
-    Value* odd = sel(b_.CreateFCmpOLT(ay, f(0x1p23f)), low,
-                     sel(b_.CreateFCmpOLT(ay, f(0x1p24f)), b_.CreateAnd(as_int(ay), i32(1)), i32(0)));
-    return b_.CreateAnd(sel(is_integer(y), b_.CreateShl(odd, 31), i32(0)), as_int(x));
-}
-
-// math::pow, every special case
-Value* MathEmitter::pow(Value* x, Value* y) {
-    Value* ax = fabs(x);
-    Value* l = sel(b_.CreateFCmpOEQ(ax, f(0.0f)), d(-double(kInf)),
-                   sel(b_.CreateFCmpOEQ(ax, f(kInf)), d(double(kInf)), log2_core(ax)));
-    Value* magnitude = exp2_core(b_.CreateFMul(widen(y), l));
-    Value* sign = odd_power_sign(x, y);
-    Value* r = flip_sign(narrow(magnitude), sign);
-    Value* finite_y = b_.CreateFCmpOLT(fabs(y), f(kInf));
-    Value* invalid = b_.CreateAnd(b_.CreateAnd(b_.CreateFCmpOLT(x, f(0.0f)), b_.CreateFCmpOLT(ax, f(kInf))),
-                                  b_.CreateAnd(b_.CreateNot(is_integer(y)), finite_y));
-    r = sel(invalid, f_bits(0xFFC00000u), r);
-    Value* nan = sel(is_nan(x), b_.CreateFAdd(x, x), b_.CreateFAdd(y, y));  // detail::first_nan
-    r = sel(b_.CreateOr(is_nan(x), is_nan(y)), flip_sign(nan, sign), r);
-    r = sel(b_.CreateAnd(b_.CreateFCmpOEQ(x, f(-1.0f)), b_.CreateFCmpOEQ(fabs(y), f(kInf))), f(1.0f), r);
-    r = sel(b_.CreateFCmpOEQ(x, f(1.0f)), sel(signalling(y), nan, f(1.0f)), r);
-    return sel(b_.CreateFCmpOEQ(y, f(0.0f)), sel(signalling(x), nan, f(1.0f)), r);
-}
-
 // math::pow_common
 Value* MathEmitter::pow_common(Value* x, Value* y) {
     Value* l = sel(b_.CreateFCmpOEQ(x, f(0.0f)), d(-double(kInf)), log2_core(x));
     return narrow(exp2_core(b_.CreateFMul(widen(y), l)));
 }
 
-// math::pow_batch: pow_common in every lane, pow only where some lane is not
-// common (math::pow_is_common), behind a branch.
-Value* MathEmitter::pow_batch(Value* x, Value* y) {
-    Value* common = pow_common(x, y);
-    Value* is_common = b_.CreateAnd(b_.CreateAnd(b_.CreateICmpULT(as_int(x), i32(0x7F800000u)),
-                                                 b_.CreateFCmpOLT(fabs(y), f(kInf))),
-                                    b_.CreateFCmpUNE(y, f(0.0f)));
-    const unsigned n = vf_->getNumElements();
-    Value* rare_bits = b_.CreateBitCast(b_.CreateNot(is_common), b_.getIntNTy(n));
-    llvm::BasicBlock* before = b_.GetInsertBlock();
-    llvm::Function* fn = before->getParent();
-    llvm::BasicBlock* rare = llvm::BasicBlock::Create(b_.getContext(), "pow_rare", fn);
-    llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "pow_done", fn);
-    b_.CreateCondBr(b_.CreateICmpNE(rare_bits, b_.getIntN(n, 0)), rare, done);
-    b_.SetInsertPoint(rare);
-    Value* fixed = sel(is_common, common, pow(x, y));
-    b_.CreateBr(done);
-    b_.SetInsertPoint(done);
-    llvm::PHINode* r = b_.CreatePHI(vf_, 2);
-    r->addIncoming(common, before);
-    r->addIncoming(fixed, rare);
-    return r;
+// math::pow_is_common: x in [+0, Inf), y finite and nonzero.
+Value* MathEmitter::pow_is_common(Value* x, Value* y) {
+    return b_.CreateAnd(b_.CreateAnd(b_.CreateICmpULT(as_int(x), i32(0x7F800000u)), b_.CreateFCmpOLT(fabs(y), f(kInf))),
+                        b_.CreateFCmpUNE(y, f(0.0f)));
 }
 
 // detail::reduce_pi2 (double, Cody-Waite in four parts)
@@ -418,7 +361,6 @@ Value* MathEmitter::precise_op(Op op, Value* a, Value* b) {
     case Op::fexp: return ftz(narrow(exp2_core(b_.CreateFMul(widen(ftz(a)), d(precise::kLog2e)))));
     case Op::flog2: return ftz(log2(ftz(a)));
     case Op::flog: return ftz(log(ftz(a)));
-    case Op::fpow: return ftz(pow_batch(ftz(a), ftz(b)));
     case Op::fsin: return ftz(sin(ftz(a)));
     case Op::fcos: return ftz(cos(ftz(a)));
     case Op::ftan: return ftz(tan(ftz(a)));
@@ -446,25 +388,29 @@ Value* MathEmitter::fast_op(Op op, Value* a, Value* b) {
     }
 }
 
-Value* MathEmitter::emit(Op op, bool fast, Value* a, Value* b) {
-    set_lanes(a);
-    return fast ? fast_op(op, a, b) : precise_op(op, a, b);
-}
-
 }  // namespace
 
 bool generates_math(Op op, bool fast) {
     switch (op) {
-    case Op::fexp: case Op::fexp2: case Op::flog: case Op::flog2: case Op::fpow: case Op::fsin: case Op::fcos:
-    case Op::ftan: case Op::fasin: case Op::facos: case Op::fatan: case Op::fatan2:
+    case Op::fexp: case Op::fexp2: case Op::flog: case Op::flog2: case Op::fsin: case Op::fcos: case Op::ftan: case Op::fasin: case Op::facos: case Op::fatan: case Op::fatan2:
         return true;
-    case Op::frsqrt: case Op::fsqrt_divisor: case Op::fdiv_by_sqrt: return fast;
+    case Op::frsqrt: case Op::fsqrt_divisor: case Op::fdiv_by_sqrt: case Op::fpow: return fast;
     default: return false;
     }
 }
 
 Value* emit_math(llvm::IRBuilder<>& builder, Op op, bool fast, Value* a, Value* b) {
-    return MathEmitter(builder).emit(op, fast, a, b);
+    return MathEmitter(builder, a).emit(op, fast, a, b);
+}
+
+PowCommon emit_pow_common(llvm::IRBuilder<>& builder, Value* a, Value* b) {
+    MathEmitter m(builder, a);
+    Value* x = flush_denormals(builder, a);
+    Value* y = flush_denormals(builder, b);
+    Value* some_rare = builder.CreateNot(m.pow_is_common(x, y));
+    const unsigned n = llvm::cast<llvm::FixedVectorType>(a->getType())->getNumElements();
+    Value* any_rare = builder.CreateICmpNE(builder.CreateBitCast(some_rare, builder.getIntNTy(n)), builder.getIntN(n, 0));
+    return {flush_denormals(builder, m.pow_common(x, y)), any_rare};
 }
 
 Value* flush_denormals(llvm::IRBuilder<>& b, Value* v) {
