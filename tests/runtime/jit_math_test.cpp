@@ -63,7 +63,7 @@ Inputs inputs(bool binary, int randoms) {
     std::mt19937 rng(12);
     std::uniform_real_distribution<float> range(-160.0f, 160.0f), exponent(-40.0f, 40.0f), unit(-1.1f, 1.1f);
     for (int i = 0; i < randoms; ++i) {
-        const int kind = i % 4;
+        const int kind = i / 64 % 4;  // runs of one kind fill whole batches (pow: all lanes common)
         auto pick = [&]() -> uint32_t {
             if (kind == 0) return uint32_t(rng());  // any bit pattern
             if (kind == 1) return bits(range(rng));
