@@ -13,6 +13,7 @@
 
 #include <bit>
 #include <cfloat>
+#include <string>
 
 #include <llvm/IR/Intrinsics.h>
 
@@ -399,18 +400,50 @@ bool generates_math(Op op, bool fast) {
     }
 }
 
+namespace {
+
+// A call of the module's function `name`, (a, b) -> float vector, whose body
+// `body(builder, a, b)` writes where the module first uses it: one copy of
+// each built-in per module, so LLVM's time grows with the ops a shader uses,
+// not with how often (inlined, multi_light's unrolled loop took 175 ms).
+template <class Body>
+Value* call_shared(llvm::IRBuilder<>& builder, const std::string& name, Value* a, Value* b, Body&& body) {
+    llvm::Module* module = builder.GetInsertBlock()->getModule();
+    llvm::Function* fn = module->getFunction(name);
+    if (!fn) {
+        auto* type = llvm::FunctionType::get(a->getType(), {a->getType(), a->getType()}, false);
+        fn = llvm::Function::Create(type, llvm::Function::InternalLinkage, name, module);
+        // The denormal mode the shader's functions declare (runtime/jit/control.cpp).
+        fn->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
+        fn->addFnAttr("denormal-fp-math-f32", "preserve-sign,preserve-sign");
+        for (auto kind : {llvm::Attribute::NoUnwind, llvm::Attribute::NoInline, llvm::Attribute::ReadNone,
+                          llvm::Attribute::WillReturn})
+            fn->addFnAttr(kind);
+        llvm::IRBuilder<> inner(llvm::BasicBlock::Create(builder.getContext(), "entry", fn));
+        inner.CreateRet(body(inner, fn->getArg(0), fn->getArg(1)));
+    }
+    return builder.CreateCall(fn, {a, b ? b : a});
+}
+
+}  // namespace
+
 Value* emit_math(llvm::IRBuilder<>& builder, Op op, bool fast, Value* a, Value* b) {
-    return MathEmitter(builder, a).emit(op, fast, a, b);
+    const std::string name = std::string("glslrun_") + (fast ? "fast_" : "precise_") + ir::op_info(op).name;
+    return call_shared(builder, name, a, b, [&](llvm::IRBuilder<>& inner, Value* x, Value* y) {
+        return MathEmitter(inner, x).emit(op, fast, x, y);
+    });
 }
 
 PowCommon emit_pow_common(llvm::IRBuilder<>& builder, Value* a, Value* b) {
-    MathEmitter m(builder, a);
     Value* x = flush_denormals(builder, a);
     Value* y = flush_denormals(builder, b);
-    Value* some_rare = builder.CreateNot(m.pow_is_common(x, y));
+    Value* some_rare = builder.CreateNot(MathEmitter(builder, a).pow_is_common(x, y));
     const unsigned n = llvm::cast<llvm::FixedVectorType>(a->getType())->getNumElements();
     Value* any_rare = builder.CreateICmpNE(builder.CreateBitCast(some_rare, builder.getIntNTy(n)), builder.getIntN(n, 0));
-    return {flush_denormals(builder, m.pow_common(x, y)), any_rare};
+    Value* common = call_shared(builder, "glslrun_precise_pow_common", x, y, [](llvm::IRBuilder<>& inner, Value* u, Value* v) {
+        return flush_denormals(inner, MathEmitter(inner, u).pow_common(u, v));
+    });
+    return {common, any_rare};
 }
 
 Value* flush_denormals(llvm::IRBuilder<>& b, Value* v) {
