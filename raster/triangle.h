@@ -70,18 +70,20 @@ inline bool covers(const TriangleSetup& t, const std::array<int64_t, 3>& e) {
 enum class BlockCover { Outside, Partial, Inside };
 
 // Edge functions are linear, so a rectangle is inside (outside) an edge when
-// all four corner pixels are.
+// all four corner pixels are, that is when the corner where the edge
+// function is least (greatest) is: one corner per test, picked by the signs
+// of the edge's gradient.
 inline BlockCover classify_block(const TriangleSetup& t, const Rect& b) {
-    const std::array<std::array<int64_t, 3>, 4> corner{edge_values(t, b.x0, b.y0), edge_values(t, b.x1 - 1, b.y0),
-                                                       edge_values(t, b.x0, b.y1 - 1),
-                                                       edge_values(t, b.x1 - 1, b.y1 - 1)};
-    int64_t s = t.area2 > 0 ? 1 : -1;
+    const int64_t s = t.area2 > 0 ? 1 : -1;
+    const int64_t x0 = int64_t(b.x0) * kSubpixelOne + kSubpixelOne / 2, x1 = int64_t(b.x1 - 1) * kSubpixelOne + kSubpixelOne / 2;
+    const int64_t y0 = int64_t(b.y0) * kSubpixelOne + kSubpixelOne / 2, y1 = int64_t(b.y1 - 1) * kSubpixelOne + kSubpixelOne / 2;
     bool inside = true;
-    for (int i = 0; i < 3; ++i) {
-        int in = 0;
-        for (const auto& e : corner) in += s * e[size_t(i)] + t.bias[size_t(i)] >= 0;
-        if (in == 0) return BlockCover::Outside;
-        inside = inside && in == 4;
+    for (size_t i = 0; i < 3; ++i) {
+        const int64_t a = s * t.ea[i], bb = s * t.eb[i], c = s * t.ec[i] + t.bias[i];
+        const int64_t greatest = a * (a > 0 ? x1 : x0) + bb * (bb > 0 ? y1 : y0) + c;
+        if (greatest < 0) return BlockCover::Outside;
+        const int64_t least = a * (a > 0 ? x0 : x1) + bb * (bb > 0 ? y0 : y1) + c;
+        inside = inside && least >= 0;
     }
     return inside ? BlockCover::Inside : BlockCover::Partial;
 }
