@@ -62,15 +62,15 @@ void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage&
         // Consecutive primitives of a bin are rarely adjacent in memory: the
         // loads of p missed the cache (perf: 15% of render_tile on one load).
         if (i + 1 < bin.size()) prefetch(bin[i + 1]);
-        auto add_quad = [&](int x, int y, unsigned mask) { stage.add_quad(p, x, y, mask); };
+        auto add_quads = [&](uint64_t pixels, uint64_t part, int ox, int oy) { stage.add_quads(p, pixels, part, ox, oy); };
         if (p.count == 3 && p.cover.mask) {
-            for_each_small_quad(p.cover, clip, add_quad);
+            for_each_small_part(p.cover, clip, add_quads);
         } else if (p.count == 3) {
             // Larger triangles are set up again rather than stored: they are
             // few, and it saves the memory of their edge functions.
             TriangleSetup setup;
             if (setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor, setup))
-                for_each_quad(setup, clip, add_quad);
+                for_each_block(setup, clip, add_quads);
         } else if (p.count == 2) {
             rasterize_line(stage, p, clip);
         } else {

@@ -42,6 +42,7 @@ public:
     }
 
     void define_quad_depth();
+    void define_square_depth();
     void define_inputs();
     void define_outputs();
 
@@ -295,6 +296,65 @@ void PipelineEmitter::define_quad_depth() {
     b_.CreateRet(mask);
 }
 
+// square_depth(prim, ox, oy, pixels, target): define_quad_depth's test on
+// the pixels of an 8x8 square, a row of eight at a time. The pixels are
+// distinct, so their order does not matter; the masked loads and stores
+// touch only the pixels in `pixels`.
+void PipelineEmitter::define_square_depth() {
+    begin("glslrun_square_depth", i64_, {ptr_, i32_, i32_, i64_, ptr_});
+    llvm::Value* prim = fn_->getArg(0);
+    llvm::Value *ox = fn_->getArg(1), *oy = fn_->getArg(2), *pixels = fn_->getArg(3);
+    load_target(fn_->getArg(4));
+    auto* v8f = llvm::FixedVectorType::get(f32_, 8);
+    auto* v8i = llvm::FixedVectorType::get(i32_, 8);
+    llvm::Value* columns = llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7});
+    llvm::Value* bits = llvm::ConstantDataVector::get(b_.getContext(),
+                                                      llvm::ArrayRef<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128});
+    // The plane's terms as Quad and plane() take them, eight lanes wide.
+    llvm::Value* fx = b_.CreateSIToFP(
+        b_.CreateAdd(b_.CreateVectorSplat(8, b_.CreateSub(ox, load_i(prim, layout_.ox))), columns), v8f);
+    llvm::Value* prim_oy = load_i(prim, layout_.oy);
+    llvm::Value* a = b_.CreateVectorSplat(8, load_f(prim, layout_.depth));
+    llvm::Value* b = b_.CreateVectorSplat(8, load_f(prim, layout_.depth + 4));
+    llvm::Value* c = load_f(prim, layout_.depth + 8);
+    llvm::Value* cax = b_.CreateSelect(is_nan(c), b_.CreateVectorSplat(8, b_.CreateFAdd(c, c)),
+                                       b_.CreateFAdd(b_.CreateVectorSplat(8, c), b_.CreateFMul(a, fx)));
+    llvm::Value* zero = llvm::ConstantFP::get(v8f, 0.0), *one = llvm::ConstantFP::get(v8f, 1.0);
+    llvm::Value* passing = b_.getInt64(0);
+    for (int row = 0; row < 8; ++row) {
+        llvm::Value* row_bits = b_.CreateTrunc(b_.CreateLShr(pixels, uint64_t(8 * row)), i8_);
+        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "row", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+        llvm::BasicBlock* from = b_.GetInsertBlock();
+        b_.CreateCondBr(b_.CreateICmpNE(row_bits, b_.getInt8(0)), test, next);
+        b_.SetInsertPoint(test);
+        llvm::Value* y = b_.CreateAdd(oy, b_.getInt32(uint32_t(row)));
+        llvm::Value* fy = b_.CreateVectorSplat(8, b_.CreateSIToFP(b_.CreateSub(y, prim_oy), f32_));
+        llvm::Value* planar = b_.CreateFAdd(cax, b_.CreateFMul(b, fy));
+        llvm::Value* z = b_.CreateSelect(is_nan(cax), cax, planar);
+        llvm::Value* low = b_.CreateSelect(b_.CreateFCmpOGT(zero, z), zero, z);
+        z = b_.CreateSelect(b_.CreateFCmpOLT(one, low), one, low);
+        llvm::Value* in = b_.CreateICmpNE(
+            b_.CreateAnd(b_.CreateVectorSplat(8, b_.CreateZExt(row_bits, i32_)), bits), llvm::Constant::getNullValue(v8i));
+        // Not inbounds: the lanes outside `pixels` may lie outside the buffer.
+        llvm::Value* slot = b_.CreateGEP(f32_, target_.depth, pixel_index(ox, y, target_.width));
+        llvm::Value* stored = b_.CreateMaskedLoad(v8f, slot, llvm::Align(4), in, zero);
+        llvm::Value* passes = depth_passes(z, stored);
+        if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
+        passes = b_.CreateAnd(passes, in);
+        if (key_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
+        llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
+        llvm::Value* tested = b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+        llvm::PHINode* merged = b_.CreatePHI(i64_, 2);
+        merged->addIncoming(passing, from);
+        merged->addIncoming(tested, test);
+        passing = merged;
+    }
+    b_.CreateRet(passing);
+}
+
 // Emits body(index, quad) for quads 0 .. batch->quads - 1, a loop.
 void PipelineEmitter::for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value*, const Quad&)>& body) {
     llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
@@ -463,7 +523,10 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
     const std::string suffix = "_" + std::to_string(engine->modules++);
     {
         PipelineEmitter emitter(*context, *module, key, layout, suffix);
-        if (key.early_depth) emitter.define_quad_depth();
+        if (key.early_depth) {
+            emitter.define_quad_depth();
+            emitter.define_square_depth();
+        }
         emitter.define_inputs();
         emitter.define_outputs();
     }
@@ -482,11 +545,14 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
         llvm::consumeError(symbol.takeError());
         return nullptr;
     };
-    if (key.early_depth)
+    if (key.early_depth) {
         code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"));
+        code->square_depth = reinterpret_cast<FragmentPipeline::SquareDepthFn>(lookup("glslrun_square_depth"));
+    }
     code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(lookup("glslrun_inputs"));
     code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(lookup("glslrun_outputs"));
-    if (!code->inputs || !code->outputs || (key.early_depth && !code->quad_depth)) return nullptr;
+    if (!code->inputs || !code->outputs || (key.early_depth && (!code->quad_depth || !code->square_depth)))
+        return nullptr;
     if (seconds) *seconds = thread_cpu_seconds() - start;
     return code;
 }
