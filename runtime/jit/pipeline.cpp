@@ -382,13 +382,29 @@ void PipelineEmitter::define_inputs() {
     begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
     std::vector<llvm::Value*> regs;
     for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), i * 8)));
+    // The last quad's primitive and whether it has NaN inputs: a batch's
+    // quads mostly come several from one primitive, and the test loads all
+    // its interpolated values. Slots in the entry block, which SROA turns
+    // into registers.
+    llvm::AllocaInst* last_prim = b_.CreateAlloca(ptr_);
+    llvm::AllocaInst* last_nan = b_.CreateAlloca(b_.getInt1Ty());
+    b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), last_prim);
+    b_.CreateStore(b_.getFalse(), last_nan);
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "nan_test", fn_);
+        llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "nan_tested", fn_);
+        b_.CreateCondBr(b_.CreateICmpEQ(q.prim, b_.CreateLoad(ptr_, last_prim)), tested, test);
+        b_.SetInsertPoint(test);
+        b_.CreateStore(nan_inputs(q), last_nan);
+        b_.CreateStore(q.prim, last_prim);
+        b_.CreateBr(tested);
+        b_.SetInsertPoint(tested);
         // Two versions: the one that orders NaNs (add, mul) runs only for
         // primitives with NaNs in their inputs.
         llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
         llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
         llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
-        b_.CreateCondBr(nan_inputs(q), strict, plain);
+        b_.CreateCondBr(b_.CreateLoad(b_.getInt1Ty(), last_nan), strict, plain);
         for (llvm::BasicBlock* block : {plain, strict}) {
             b_.SetInsertPoint(block);
             strict_ = block == strict;
