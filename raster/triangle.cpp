@@ -51,6 +51,10 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
         int64_t cdx = t.area2 > 0 ? dx : -dx, cdy = t.area2 > 0 ? dy : -dy;
         bool inclusive = cdy < 0 || (cdy == 0 && cdx < 0);
         t.bias[i] = inclusive ? 0 : -1;
+        const int64_t sign = t.area2 > 0 ? 1 : -1;
+        t.ia[i] = sign * t.ea[i];
+        t.ib[i] = sign * t.eb[i];
+        t.ic[i] = sign * t.ec[i] + t.bias[i];
     }
     int64_t min_x = std::min({t.fx[0], t.fx[1], t.fx[2]}), max_x = std::max({t.fx[0], t.fx[1], t.fx[2]});
     int64_t min_y = std::min({t.fy[0], t.fy[1], t.fy[2]}), max_y = std::max({t.fy[0], t.fy[1], t.fy[2]});
@@ -110,13 +114,13 @@ uint64_t coverage_mask_32(const std::array<int64_t, 3>& row, const std::array<in
 }  // namespace
 
 uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
-    const int64_t s = t.area2 > 0 ? 1 : -1;
     // Whole rows of the square, from column ox; the columns outside r are cut at the end.
-    std::array<int64_t, 3> row = edge_values(t, ox, r.y0), dx{}, dy{};
+    const int64_t px = int64_t(ox) * kSubpixelOne + kSubpixelOne / 2, py = int64_t(r.y0) * kSubpixelOne + kSubpixelOne / 2;
+    std::array<int64_t, 3> row, dx, dy;
     for (size_t i = 0; i < 3; ++i) {
-        row[i] = s * row[i] + t.bias[i];
-        dx[i] = s * t.ea[i] * kSubpixelOne;
-        dy[i] = s * t.eb[i] * kSubpixelOne;
+        row[i] = t.ia[i] * px + t.ib[i] * py + t.ic[i];
+        dx[i] = t.ia[i] * kSubpixelOne;
+        dy[i] = t.ib[i] * kSubpixelOne;
     }
     uint64_t mask = 0;
 #if defined(__SSE2__)

@@ -36,6 +36,9 @@ struct TriangleSetup {
     // Edge i is opposite vertex i: E_i(p) = a*px + b*py + c, with E_i(v_i) = area2.
     std::array<int64_t, 3> ea, eb, ec;
     std::array<int64_t, 3> bias;  // 0 if ties on the edge are inside (top-left), else -1
+    // The same edges turned so that a pixel centre is covered where all
+    // three are >= 0: times the orientation's sign, with the bias in c.
+    std::array<int64_t, 3> ia, ib, ic;
     int64_t area2;                // twice the signed area in subpixel units (> 0: CCW)
     Rect bbox;  // covered pixels lie inside, already clipped to the scissor
 };
@@ -74,12 +77,11 @@ enum class BlockCover { Outside, Partial, Inside };
 // function is least (greatest) is: one corner per test, picked by the signs
 // of the edge's gradient.
 inline BlockCover classify_block(const TriangleSetup& t, const Rect& b) {
-    const int64_t s = t.area2 > 0 ? 1 : -1;
     const int64_t x0 = int64_t(b.x0) * kSubpixelOne + kSubpixelOne / 2, x1 = int64_t(b.x1 - 1) * kSubpixelOne + kSubpixelOne / 2;
     const int64_t y0 = int64_t(b.y0) * kSubpixelOne + kSubpixelOne / 2, y1 = int64_t(b.y1 - 1) * kSubpixelOne + kSubpixelOne / 2;
     bool inside = true;
     for (size_t i = 0; i < 3; ++i) {
-        const int64_t a = s * t.ea[i], bb = s * t.eb[i], c = s * t.ec[i] + t.bias[i];
+        const int64_t a = t.ia[i], bb = t.ib[i], c = t.ic[i];
         const int64_t greatest = a * (a > 0 ? x1 : x0) + bb * (bb > 0 ? y1 : y0) + c;
         if (greatest < 0) return BlockCover::Outside;
         const int64_t least = a * (a > 0 ? x0 : x1) + bb * (bb > 0 ? y0 : y1) + c;
