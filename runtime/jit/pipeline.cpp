@@ -80,6 +80,8 @@ private:
         return strict_ ? a_nan_first(a, b_.CreateFMul(a, b)) : b_.CreateFMul(a, b);
     }
     llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
+    // then()'s value where `condition` holds, else `otherwise`: a branch and a phi.
+    llvm::Value* if_then(llvm::Value* condition, llvm::Value* otherwise, const std::function<llvm::Value*()>& then);
     Quad quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y);
     llvm::Value* plane(const Quad& q, uint64_t offset);
     llvm::Value* clamp01(llvm::Value* v);
@@ -138,6 +140,23 @@ llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llv
     return fn_;
 }
 
+llvm::Value* PipelineEmitter::if_then(llvm::Value* condition, llvm::Value* otherwise,
+                                      const std::function<llvm::Value*()>& then) {
+    llvm::BasicBlock* taken = llvm::BasicBlock::Create(b_.getContext(), "then", fn_);
+    llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+    llvm::BasicBlock* from = b_.GetInsertBlock();
+    b_.CreateCondBr(condition, taken, next);
+    b_.SetInsertPoint(taken);
+    llvm::Value* value = then();
+    llvm::BasicBlock* end = b_.GetInsertBlock();
+    b_.CreateBr(next);
+    b_.SetInsertPoint(next);
+    llvm::PHINode* merged = b_.CreatePHI(otherwise->getType(), 2);
+    merged->addIncoming(otherwise, from);
+    merged->addIncoming(value, end);
+    return merged;
+}
+
 PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y) {
     Quad q{prim, nullptr, nullptr, nullptr, nullptr};
     q.px = b_.CreateAdd(splat(x), lanes_i(kDx));
@@ -188,8 +207,8 @@ std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t 
 
 // raster::clamp01: maxss then minss, NaN and -0 kept.
 llvm::Value* PipelineEmitter::clamp01(llvm::Value* v) {
-    llvm::Value* zero = splat_f(0.0f);
-    llvm::Value* one = splat_f(1.0f);
+    llvm::Value* zero = llvm::ConstantFP::get(v->getType(), 0.0);
+    llvm::Value* one = llvm::ConstantFP::get(v->getType(), 1.0);
     llvm::Value* low = b_.CreateSelect(b_.CreateFCmpOGT(zero, v), zero, v);
     return b_.CreateSelect(b_.CreateFCmpOLT(one, low), one, low);
 }
@@ -273,26 +292,18 @@ void PipelineEmitter::define_quad_depth() {
     load_target(target);
     llvm::Value* mask = fn_->getArg(3);
     for (int i = 0; i < 4; ++i) {
-        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "test", fn_);
-        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
-        llvm::BasicBlock* from = b_.GetInsertBlock();
-        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0)), test, next);
-        b_.SetInsertPoint(test);
-        llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
-        llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
-        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel_index(px, py, target_.width));
-        llvm::Value* stored = b_.CreateLoad(f32_, slot);
-        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
-        llvm::Value* passes = depth_passes(zi, stored);
-        if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
-        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
-        llvm::Value* tested = b_.CreateAnd(mask, b_.CreateNot(failed));
-        b_.CreateBr(next);
-        b_.SetInsertPoint(next);
-        llvm::PHINode* merged = b_.CreatePHI(i32_, 2);
-        merged->addIncoming(mask, from);
-        merged->addIncoming(tested, test);
-        mask = merged;
+        llvm::Value* lane = b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0));
+        mask = if_then(lane, mask, [&] {
+            llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
+            llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
+            llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel_index(px, py, target_.width));
+            llvm::Value* stored = b_.CreateLoad(f32_, slot);
+            llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+            llvm::Value* passes = depth_passes(zi, stored);
+            if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
+            llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+            return b_.CreateAnd(mask, b_.CreateNot(failed));
+        });
     }
     b_.CreateRet(mask);
 }
@@ -320,38 +331,25 @@ void PipelineEmitter::define_square_depth() {
     llvm::Value* c = load_f(prim, layout_.depth + 8);
     llvm::Value* cax = b_.CreateSelect(is_nan(c), b_.CreateVectorSplat(8, b_.CreateFAdd(c, c)),
                                        b_.CreateFAdd(b_.CreateVectorSplat(8, c), b_.CreateFMul(a, fx)));
-    llvm::Value* zero = llvm::ConstantFP::get(v8f, 0.0), *one = llvm::ConstantFP::get(v8f, 1.0);
     llvm::Value* passing = b_.getInt64(0);
     for (int row = 0; row < 8; ++row) {
         llvm::Value* row_bits = b_.CreateTrunc(b_.CreateLShr(pixels, uint64_t(8 * row)), i8_);
-        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "row", fn_);
-        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
-        llvm::BasicBlock* from = b_.GetInsertBlock();
-        b_.CreateCondBr(b_.CreateICmpNE(row_bits, b_.getInt8(0)), test, next);
-        b_.SetInsertPoint(test);
-        llvm::Value* y = b_.CreateAdd(oy, b_.getInt32(uint32_t(row)));
-        llvm::Value* fy = b_.CreateVectorSplat(8, b_.CreateSIToFP(b_.CreateSub(y, prim_oy), f32_));
-        llvm::Value* planar = b_.CreateFAdd(cax, b_.CreateFMul(b, fy));
-        llvm::Value* z = b_.CreateSelect(is_nan(cax), cax, planar);
-        llvm::Value* low = b_.CreateSelect(b_.CreateFCmpOGT(zero, z), zero, z);
-        z = b_.CreateSelect(b_.CreateFCmpOLT(one, low), one, low);
-        llvm::Value* in = b_.CreateICmpNE(
-            b_.CreateAnd(b_.CreateVectorSplat(8, b_.CreateZExt(row_bits, i32_)), bits), llvm::Constant::getNullValue(v8i));
-        // Not inbounds: the lanes outside `pixels` may lie outside the buffer.
-        llvm::Value* slot = b_.CreateGEP(f32_, target_.depth, pixel_index(ox, y, target_.width));
-        llvm::Value* stored = b_.CreateMaskedLoad(v8f, slot, llvm::Align(4), in, zero);
-        llvm::Value* passes = depth_passes(z, stored);
-        if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
-        passes = b_.CreateAnd(passes, in);
-        if (key_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
-        llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
-        llvm::Value* tested = b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
-        b_.CreateBr(next);
-        b_.SetInsertPoint(next);
-        llvm::PHINode* merged = b_.CreatePHI(i64_, 2);
-        merged->addIncoming(passing, from);
-        merged->addIncoming(tested, test);
-        passing = merged;
+        passing = if_then(b_.CreateICmpNE(row_bits, b_.getInt8(0)), passing, [&] {
+            llvm::Value* y = b_.CreateAdd(oy, b_.getInt32(uint32_t(row)));
+            llvm::Value* fy = b_.CreateVectorSplat(8, b_.CreateSIToFP(b_.CreateSub(y, prim_oy), f32_));
+            llvm::Value* z = clamp01(b_.CreateSelect(is_nan(cax), cax, b_.CreateFAdd(cax, b_.CreateFMul(b, fy))));
+            llvm::Value* in = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(8, b_.CreateZExt(row_bits, i32_)), bits),
+                                              llvm::Constant::getNullValue(v8i));
+            // Not inbounds: the lanes outside `pixels` may lie outside the buffer.
+            llvm::Value* slot = b_.CreateGEP(f32_, target_.depth, pixel_index(ox, y, target_.width));
+            llvm::Value* stored = b_.CreateMaskedLoad(v8f, slot, llvm::Align(4), in, llvm::ConstantFP::get(v8f, 0.0));
+            llvm::Value* passes = depth_passes(z, stored);
+            if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
+            passes = b_.CreateAnd(passes, in);
+            if (key_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
+            llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
+            return b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
+        });
     }
     b_.CreateRet(passing);
 }
