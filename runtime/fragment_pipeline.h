@@ -1,7 +1,7 @@
 // The fused fragment pipeline: per (program, fragment draw state), native
 // code made by the JIT for the per-lane work around the fragment shader, as
 // llvmpipe's fragment functions do it: depth from the plane equation and the
-// early depth test of a quad; the shader inputs of a batch of quads
+// early depth test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
 // (perspective-correct interpolation from the plane equations,
 // gl_FragCoord, gl_FrontFacing, gl_PointCoord); after the shader, the late
 // depth test, the depth write, the colour conversion and the colour write

@@ -1,9 +1,9 @@
 // The fused fragment pipeline's code (runtime/fragment_pipeline.h): LLVM IR
-// for the early depth test of a quad, the shader inputs of a batch and the
-// per-fragment writes, computing what raster/fragments.cpp's C++ path
-// computes, operation for operation. A quad's four lanes are one 4-wide
-// vector; the writes go lane by lane, in lane order, as two quads of a batch
-// may cover the same pixel.
+// for the early depth test of a quad or of an 8x8 square, the shader inputs
+// of a batch and the per-fragment writes, computing what raster/fragments.cpp's
+// C++ path computes, operation for operation. A quad's four lanes are one
+// 4-wide vector; the writes go in lane order, as two quads of a batch may
+// cover the same pixel (a quad's own four pixels are distinct).
 #include <array>
 #include <functional>
 #include <mutex>
