@@ -319,6 +319,26 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
     if (++quads_ == rt::kLanes / 4) flush();
 }
 
+void FragmentStage::add_quads(const FsPrimitive& prim, uint64_t pixels, uint64_t part, int ox, int oy) {
+    if (!pipeline_) {
+        visit_quads(pixels, part, ox, oy, [&](int x, int y, unsigned mask) { add_quad(prim, x, y, mask); });
+        return;
+    }
+    if (error_) return;
+    // The parts' edges are even (triangle.h), so the part's pixels are its
+    // quads' pixels. Early depth tests and writes only depth: testing all
+    // of them before the batches they fill are shaded changes nothing.
+    if (early_depth_) pixels = pipeline_->square_depth(&prim, ox, oy, pixels & part, &target_);
+    visit_quads(pixels, part, ox, oy, [&](int x, int y, unsigned mask) {
+        if (error_) return;
+        batch_.prim[quads_] = &prim;
+        batch_.x[quads_] = x;
+        batch_.y[quads_] = y;
+        covered_ |= rt::LaneMask(mask) << (quads_ * 4);
+        if (++quads_ == rt::kLanes / 4) flush();
+    });
+}
+
 void FragmentStage::compute_weights(Weights& w) const {
     for (int q = 0; q < quads_; ++q) {
         const FsPrimitive& p = *quad_prim_[size_t(q)];

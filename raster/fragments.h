@@ -82,6 +82,9 @@ public:
     // Queues a quad of `prim` (which must stay alive until flush()). With the
     // early depth test, the depth test and depth write happen here.
     void add_quad(const FsPrimitive& prim, int x, int y, unsigned mask);
+    // add_quad() for each quad visit_quads(pixels, part, ox, oy) visits; the
+    // fused pipeline tests the early depth of the part's pixels in one call.
+    void add_quads(const FsPrimitive& prim, uint64_t pixels, uint64_t part, int ox, int oy);
     // Asks the caches for the depth and colour of the pixels of r, which
     // the stage is about to render (a tile): their misses overlap instead
     // of stalling one quad at a time.

@@ -62,15 +62,15 @@ void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage&
         // Consecutive primitives of a bin are rarely adjacent in memory: the
         // loads of p missed the cache (perf: 15% of render_tile on one load).
         if (i + 1 < bin.size()) prefetch(bin[i + 1]);
-        auto add_quad = [&](int x, int y, unsigned mask) { stage.add_quad(p, x, y, mask); };
+        auto add_quads = [&](uint64_t pixels, uint64_t part, int ox, int oy) { stage.add_quads(p, pixels, part, ox, oy); };
         if (p.count == 3 && p.cover.mask) {
-            for_each_small_quad(p.cover, clip, add_quad);
+            for_each_small_part(p.cover, clip, add_quads);
         } else if (p.count == 3) {
             // Larger triangles are set up again rather than stored: they are
             // few, and it saves the memory of their edge functions.
             TriangleSetup setup;
             if (setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor, setup))
-                for_each_quad(setup, clip, add_quad);
+                for_each_block(setup, clip, add_quads);
         } else if (p.count == 2) {
             rasterize_line(stage, p, clip);
         } else {
@@ -110,7 +110,10 @@ TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsi
     // Clearing in the tile jobs pays off only with several workers: at 16 threads it halved
     // a 1080p spot frame (8.1-9.6 -> 4.0-4.7 ms), while with one or two a single sequential
     // clear was cheaper (first 512x512 spot draw 7.09 -> 7.66 ms at 1 thread; 16-core device
-    // and 2-vCPU machine, docs/performance.md "Thread scaling").
+    // and 2-vCPU machine, docs/performance.md "Thread scaling"). Measured again under the fused
+    // pipeline (1080p spot, 1 thread, 2026-11-26): 9.6 -> 10.6 ms CPU per frame with the clear
+    // in the tile jobs, 10.1 with streaming stores for the tiles no primitive touches, while the
+    // early depth test's share of the profile stayed the same (docs/performance.md, #12).
     constexpr unsigned kFusedClearMinThreads = 4;
     if (clear && rt::thread_count(threads, SIZE_MAX) < kFusedClearMinThreads) {
         clear_rect(target.fb, *clear, 0, 0, target.fb.width, target.fb.height);

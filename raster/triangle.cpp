@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -50,6 +51,10 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
         int64_t cdx = t.area2 > 0 ? dx : -dx, cdy = t.area2 > 0 ? dy : -dy;
         bool inclusive = cdy < 0 || (cdy == 0 && cdx < 0);
         t.bias[i] = inclusive ? 0 : -1;
+        const int64_t sign = t.area2 > 0 ? 1 : -1;
+        t.ia[i] = sign * t.ea[i];
+        t.ib[i] = sign * t.eb[i];
+        t.ic[i] = sign * t.ec[i] + t.bias[i];
     }
     int64_t min_x = std::min({t.fx[0], t.fx[1], t.fx[2]}), max_x = std::max({t.fx[0], t.fx[1], t.fx[2]});
     int64_t min_y = std::min({t.fy[0], t.fy[1], t.fy[2]}), max_y = std::max({t.fy[0], t.fy[1], t.fy[2]});
@@ -63,17 +68,63 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
     return t.bbox.x0 < t.bbox.x1 && t.bbox.y0 < t.bbox.y1;
 }
 
-uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
-    const int64_t s = t.area2 > 0 ? 1 : -1;
-    // Whole rows of the square, from column ox; the columns outside r are cut at the end.
-    std::array<int64_t, 3> row = edge_values(t, ox, r.y0), dx{}, dy{};
+namespace {
+
+#if defined(__SSE2__)
+// Whether every edge value coverage_mask() computes (rows from `row`,
+// `rows` of them, 8 columns) fits in 32 bits: then they are computed four
+// pixels to a register, exactly.
+bool fits_32_bits(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
+                  const std::array<int64_t, 3>& dy, int rows) {
+    constexpr int64_t kLimit = int64_t(1) << 31;
     for (size_t i = 0; i < 3; ++i) {
-        row[i] = s * row[i] + t.bias[i];
-        dx[i] = s * t.ea[i] * kSubpixelOne;
-        dy[i] = s * t.eb[i] * kSubpixelOne;
+        // Each term is checked first, so that the sum cannot overflow.
+        const int64_t r = std::abs(row[i]), x = std::abs(dx[i]), y = std::abs(dy[i]);
+        if (r >= kLimit || x >= kLimit || y >= kLimit || r + (kSquareSize - 1) * x + (rows - 1) * y >= kLimit)
+            return false;
+    }
+    return true;
+}
+
+// coverage_mask() where fits_32_bits(): a row of the square is two registers
+// per edge, and the sign bits of (e0 | e1 | e2) are the pixels outside.
+uint64_t coverage_mask_32(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
+                          const std::array<int64_t, 3>& dy, int oy, const Rect& r) {
+    auto first_four = [&](size_t i) {
+        const int32_t d = int32_t(dx[i]);
+        return _mm_add_epi32(_mm_set1_epi32(int32_t(row[i])), _mm_setr_epi32(0, d, 2 * d, 3 * d));
+    };
+    auto next_four = [&](__m128i e, size_t i) { return _mm_add_epi32(e, _mm_set1_epi32(4 * int32_t(dx[i]))); };
+    __m128i a0 = first_four(0), b0 = first_four(1), c0 = first_four(2);
+    __m128i a1 = next_four(a0, 0), b1 = next_four(b0, 1), c1 = next_four(c0, 2);
+    const __m128i sa = _mm_set1_epi32(int32_t(dy[0])), sb = _mm_set1_epi32(int32_t(dy[1])),
+                  sc = _mm_set1_epi32(int32_t(dy[2]));
+    uint64_t mask = 0;
+    for (int y = r.y0; y < r.y1; ++y) {
+        const unsigned outside = unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(a0, b0), c0)))) |
+                                 unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(a1, b1), c1)))) << 4;
+        mask |= uint64_t(~outside & 0xFFu) << ((y - oy) * kSquareSize);
+        a0 = _mm_add_epi32(a0, sa), b0 = _mm_add_epi32(b0, sb), c0 = _mm_add_epi32(c0, sc);
+        a1 = _mm_add_epi32(a1, sa), b1 = _mm_add_epi32(b1, sb), c1 = _mm_add_epi32(c1, sc);
+    }
+    return mask;
+}
+#endif
+
+}  // namespace
+
+uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
+    // Whole rows of the square, from column ox; the columns outside r are cut at the end.
+    const int64_t px = int64_t(ox) * kSubpixelOne + kSubpixelOne / 2, py = int64_t(r.y0) * kSubpixelOne + kSubpixelOne / 2;
+    std::array<int64_t, 3> row, dx, dy;
+    for (size_t i = 0; i < 3; ++i) {
+        row[i] = t.ia[i] * px + t.ib[i] * py + t.ic[i];
+        dx[i] = t.ia[i] * kSubpixelOne;
+        dy[i] = t.ib[i] * kSubpixelOne;
     }
     uint64_t mask = 0;
 #if defined(__SSE2__)
+    if (fits_32_bits(row, dx, dy, r.y1 - r.y0)) return coverage_mask_32(row, dx, dy, oy, r) & square_columns(r.x0 - ox, r.x1 - ox);
     // Two pixels per register: the sign bits of (e0 | e1 | e2) are the
     // pixels outside an edge, and movmskpd gathers them.
     __m128i step[3][kSquareSize / 2];

@@ -36,6 +36,9 @@ struct TriangleSetup {
     // Edge i is opposite vertex i: E_i(p) = a*px + b*py + c, with E_i(v_i) = area2.
     std::array<int64_t, 3> ea, eb, ec;
     std::array<int64_t, 3> bias;  // 0 if ties on the edge are inside (top-left), else -1
+    // The same edges turned so that a pixel centre is covered where all
+    // three are >= 0: times the orientation's sign, with the bias in c.
+    std::array<int64_t, 3> ia, ib, ic;
     int64_t area2;                // twice the signed area in subpixel units (> 0: CCW)
     Rect bbox;  // covered pixels lie inside, already clipped to the scissor
 };
@@ -70,18 +73,19 @@ inline bool covers(const TriangleSetup& t, const std::array<int64_t, 3>& e) {
 enum class BlockCover { Outside, Partial, Inside };
 
 // Edge functions are linear, so a rectangle is inside (outside) an edge when
-// all four corner pixels are.
+// all four corner pixels are, that is when the corner where the edge
+// function is least (greatest) is: one corner per test, picked by the signs
+// of the edge's gradient.
 inline BlockCover classify_block(const TriangleSetup& t, const Rect& b) {
-    const std::array<std::array<int64_t, 3>, 4> corner{edge_values(t, b.x0, b.y0), edge_values(t, b.x1 - 1, b.y0),
-                                                       edge_values(t, b.x0, b.y1 - 1),
-                                                       edge_values(t, b.x1 - 1, b.y1 - 1)};
-    int64_t s = t.area2 > 0 ? 1 : -1;
+    const int64_t x0 = int64_t(b.x0) * kSubpixelOne + kSubpixelOne / 2, x1 = int64_t(b.x1 - 1) * kSubpixelOne + kSubpixelOne / 2;
+    const int64_t y0 = int64_t(b.y0) * kSubpixelOne + kSubpixelOne / 2, y1 = int64_t(b.y1 - 1) * kSubpixelOne + kSubpixelOne / 2;
     bool inside = true;
-    for (int i = 0; i < 3; ++i) {
-        int in = 0;
-        for (const auto& e : corner) in += s * e[size_t(i)] + t.bias[size_t(i)] >= 0;
-        if (in == 0) return BlockCover::Outside;
-        inside = inside && in == 4;
+    for (size_t i = 0; i < 3; ++i) {
+        const int64_t a = t.ia[i], bb = t.ib[i], c = t.ic[i];
+        const int64_t greatest = a * (a > 0 ? x1 : x0) + bb * (bb > 0 ? y1 : y0) + c;
+        if (greatest < 0) return BlockCover::Outside;
+        const int64_t least = a * (a > 0 ? x0 : x1) + bb * (bb > 0 ? y0 : y1) + c;
+        inside = inside && least >= 0;
     }
     return inside ? BlockCover::Inside : BlockCover::Partial;
 }
@@ -133,12 +137,12 @@ void visit_quads(uint64_t pixels, uint64_t part, int ox, int oy, Visit&& visit) 
     }
 }
 
-// Calls visit(x, y, mask) for every 2x2 quad (x, y even) with at least one
-// covered pixel inside `clip`. The walk goes over aligned 8x8 blocks (rows of
-// blocks bottom up, left to right): blocks outside an edge are skipped, and
-// pixels of blocks inside all edges are not tested one by one.
+// Calls visit(pixels, part, ox, oy) for the aligned 8x8 blocks (as squares
+// for visit_quads) with a covered pixel inside `clip`: rows of blocks bottom
+// up, left to right. Blocks outside an edge are skipped, and pixels of
+// blocks inside all edges are not tested one by one.
 template <class Visit>
-void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
+void for_each_block(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
     Rect r{std::max(t.bbox.x0, clip.x0), std::max(t.bbox.y0, clip.y0), std::min(t.bbox.x1, clip.x1),
            std::min(t.bbox.y1, clip.y1)};
     for (int by = r.y0 & ~(kBlockSize - 1); by < r.y1; by += kBlockSize) {
@@ -148,9 +152,16 @@ void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
             BlockCover cover = classify_block(t, b);
             if (cover == BlockCover::Outside) continue;
             uint64_t pixels = cover == BlockCover::Inside ? square_rect(bx, by, b) : coverage_mask(t, bx, by, b);
-            visit_quads(pixels, ~uint64_t(0), bx, by, visit);
+            if (pixels) visit(pixels, ~uint64_t(0), bx, by);
         }
     }
+}
+
+// Calls visit(x, y, mask) for every 2x2 quad (x, y even) with at least one
+// covered pixel inside `clip`, block by block (for_each_block).
+template <class Visit>
+void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
+    for_each_block(t, clip, [&](uint64_t pixels, uint64_t part, int ox, int oy) { visit_quads(pixels, part, ox, oy, visit); });
 }
 
 // Coverage of a small triangle, one whose candidate pixels lie within the
@@ -166,20 +177,29 @@ struct SmallCoverage {
 // Nothing when the triangle's bounding box does not fit the square.
 std::optional<SmallCoverage> small_coverage(const TriangleSetup& t);
 
-// Calls visit(x, y, mask) for the quads of `c` with a covered pixel inside
-// `clip`, in the order for_each_quad visits them, so that a tile's batches
-// (and the loop cap's iteration count per batch) are the same either way.
+// Calls visit(pixels, part, x, y) for the parts of `c`'s square that hold
+// covered pixels inside `clip`, in the order for_each_block visits them, so
+// that a tile's batches (and the loop cap's iteration count per batch) are
+// the same either way. The parts' edges are even: they cut no quad.
 template <class Visit>
-void for_each_small_quad(const SmallCoverage& c, const Rect& clip, Visit&& visit) {
+void for_each_small_part(const SmallCoverage& c, const Rect& clip, Visit&& visit) {
     const uint64_t pixels = c.mask & square_rect(c.x, c.y, clip);
     if (!pixels) return;
-    // Where the square crosses a block boundary, for_each_quad finishes the
+    // Where the square crosses a block boundary, for_each_block finishes the
     // lower (left) block before it starts the next.
     const int sx = kBlockSize - (c.x & (kBlockSize - 1)), sy = kBlockSize - (c.y & (kBlockSize - 1));
     const uint64_t rows[2] = {square_rows(0, sy), square_rows(sy, kSquareSize)};
     const uint64_t columns[2] = {square_columns(0, sx), square_columns(sx, kSquareSize)};
     for (uint64_t row : rows)
-        for (uint64_t column : columns) visit_quads(pixels, row & column, c.x, c.y, visit);
+        for (uint64_t column : columns)
+            if (pixels & row & column) visit(pixels, row & column, c.x, c.y);
+}
+
+// Calls visit(x, y, mask) for the quads of `c` with a covered pixel inside
+// `clip`, in the order for_each_quad visits them.
+template <class Visit>
+void for_each_small_quad(const SmallCoverage& c, const Rect& clip, Visit&& visit) {
+    for_each_small_part(c, clip, [&](uint64_t pixels, uint64_t part, int ox, int oy) { visit_quads(pixels, part, ox, oy, visit); });
 }
 
 }  // namespace glslrun::raster

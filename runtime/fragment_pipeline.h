@@ -1,7 +1,7 @@
 // The fused fragment pipeline: per (program, fragment draw state), native
 // code made by the JIT for the per-lane work around the fragment shader, as
 // llvmpipe's fragment functions do it: depth from the plane equation and the
-// early depth test of a quad; the shader inputs of a batch of quads
+// early depth test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
 // (perspective-correct interpolation from the plane equations,
 // gl_FragCoord, gl_FrontFacing, gl_PointCoord); after the shader, the late
 // depth test, the depth write, the colour conversion and the colour write
@@ -93,6 +93,11 @@ struct PipelineTarget {
 struct FragmentPipeline {
     // The early depth test (and write) of one quad's lanes in `mask`; returns those that pass.
     using QuadDepthFn = uint32_t (*)(const void* prim, int32_t x, int32_t y, uint32_t mask, const PipelineTarget* t);
+    // The same test on the pixels of the 8x8 square at (ox, oy) in `pixels`
+    // (bit j * 8 + i: pixel (ox + i, oy + j)), which must lie in the buffer;
+    // returns those that pass.
+    using SquareDepthFn = uint64_t (*)(const void* prim, int32_t ox, int32_t oy, uint64_t pixels,
+                                       const PipelineTarget* t);
     // Writes the inputs: regs[i] is the register of key.inputs[i].
     using InputsFn = void (*)(const QuadBatch* batch, uint32_t* const* regs);
     // The per-fragment operations of the lanes of `alive` in lane order;
@@ -102,6 +107,7 @@ struct FragmentPipeline {
                                    const PipelineTarget* t);
     virtual ~FragmentPipeline() = default;
     QuadDepthFn quad_depth = nullptr;  // null unless key.early_depth
+    SquareDepthFn square_depth = nullptr;  // null unless key.early_depth
     InputsFn inputs = nullptr;
     OutputsFn outputs = nullptr;
 };

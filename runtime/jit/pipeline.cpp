@@ -1,9 +1,9 @@
 // The fused fragment pipeline's code (runtime/fragment_pipeline.h): LLVM IR
-// for the early depth test of a quad, the shader inputs of a batch and the
-// per-fragment writes, computing what raster/fragments.cpp's C++ path
-// computes, operation for operation. A quad's four lanes are one 4-wide
-// vector; the writes go lane by lane, in lane order, as two quads of a batch
-// may cover the same pixel.
+// for the early depth test of a quad or of an 8x8 square, the shader inputs
+// of a batch and the per-fragment writes, computing what raster/fragments.cpp's
+// C++ path computes, operation for operation. A quad's four lanes are one
+// 4-wide vector; the writes go in lane order, as two quads of a batch may
+// cover the same pixel (a quad's own four pixels are distinct).
 #include <array>
 #include <functional>
 #include <mutex>
@@ -42,6 +42,7 @@ public:
     }
 
     void define_quad_depth();
+    void define_square_depth();
     void define_inputs();
     void define_outputs();
 
@@ -79,6 +80,8 @@ private:
         return strict_ ? a_nan_first(a, b_.CreateFMul(a, b)) : b_.CreateFMul(a, b);
     }
     llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
+    // then()'s value where `condition` holds, else `otherwise`: a branch and a phi.
+    llvm::Value* if_then(llvm::Value* condition, llvm::Value* otherwise, const std::function<llvm::Value*()>& then);
     Quad quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y);
     llvm::Value* plane(const Quad& q, uint64_t offset);
     llvm::Value* clamp01(llvm::Value* v);
@@ -106,6 +109,7 @@ private:
     };
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
     void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
+    void write_whole_quad(const Quad& q, const QuadValues& v, llvm::Value* bits);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
         target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
@@ -134,6 +138,23 @@ llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llv
     fn_->addFnAttr(llvm::Attribute::NoUnwind);
     b_.SetInsertPoint(llvm::BasicBlock::Create(b_.getContext(), "entry", fn_));
     return fn_;
+}
+
+llvm::Value* PipelineEmitter::if_then(llvm::Value* condition, llvm::Value* otherwise,
+                                      const std::function<llvm::Value*()>& then) {
+    llvm::BasicBlock* taken = llvm::BasicBlock::Create(b_.getContext(), "then", fn_);
+    llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+    llvm::BasicBlock* from = b_.GetInsertBlock();
+    b_.CreateCondBr(condition, taken, next);
+    b_.SetInsertPoint(taken);
+    llvm::Value* value = then();
+    llvm::BasicBlock* end = b_.GetInsertBlock();
+    b_.CreateBr(next);
+    b_.SetInsertPoint(next);
+    llvm::PHINode* merged = b_.CreatePHI(otherwise->getType(), 2);
+    merged->addIncoming(otherwise, from);
+    merged->addIncoming(value, end);
+    return merged;
 }
 
 PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y) {
@@ -186,8 +207,8 @@ std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t 
 
 // raster::clamp01: maxss then minss, NaN and -0 kept.
 llvm::Value* PipelineEmitter::clamp01(llvm::Value* v) {
-    llvm::Value* zero = splat_f(0.0f);
-    llvm::Value* one = splat_f(1.0f);
+    llvm::Value* zero = llvm::ConstantFP::get(v->getType(), 0.0);
+    llvm::Value* one = llvm::ConstantFP::get(v->getType(), 1.0);
     llvm::Value* low = b_.CreateSelect(b_.CreateFCmpOGT(zero, v), zero, v);
     return b_.CreateSelect(b_.CreateFCmpOLT(one, low), one, low);
 }
@@ -271,28 +292,66 @@ void PipelineEmitter::define_quad_depth() {
     load_target(target);
     llvm::Value* mask = fn_->getArg(3);
     for (int i = 0; i < 4; ++i) {
-        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "test", fn_);
-        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
-        llvm::BasicBlock* from = b_.GetInsertBlock();
-        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0)), test, next);
-        b_.SetInsertPoint(test);
-        llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
-        llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
-        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel_index(px, py, target_.width));
-        llvm::Value* stored = b_.CreateLoad(f32_, slot);
-        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
-        llvm::Value* passes = depth_passes(zi, stored);
-        if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
-        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
-        llvm::Value* tested = b_.CreateAnd(mask, b_.CreateNot(failed));
-        b_.CreateBr(next);
-        b_.SetInsertPoint(next);
-        llvm::PHINode* merged = b_.CreatePHI(i32_, 2);
-        merged->addIncoming(mask, from);
-        merged->addIncoming(tested, test);
-        mask = merged;
+        llvm::Value* lane = b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0));
+        mask = if_then(lane, mask, [&] {
+            llvm::Value* px = b_.CreateExtractElement(q.px, uint64_t(i));
+            llvm::Value* py = b_.CreateExtractElement(q.py, uint64_t(i));
+            llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel_index(px, py, target_.width));
+            llvm::Value* stored = b_.CreateLoad(f32_, slot);
+            llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+            llvm::Value* passes = depth_passes(zi, stored);
+            if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
+            llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+            return b_.CreateAnd(mask, b_.CreateNot(failed));
+        });
     }
     b_.CreateRet(mask);
+}
+
+// square_depth(prim, ox, oy, pixels, target): define_quad_depth's test on
+// the pixels of an 8x8 square, a row of eight at a time. The pixels are
+// distinct, so their order does not matter; the masked loads and stores
+// touch only the pixels in `pixels`.
+void PipelineEmitter::define_square_depth() {
+    begin("glslrun_square_depth", i64_, {ptr_, i32_, i32_, i64_, ptr_});
+    llvm::Value* prim = fn_->getArg(0);
+    llvm::Value *ox = fn_->getArg(1), *oy = fn_->getArg(2), *pixels = fn_->getArg(3);
+    load_target(fn_->getArg(4));
+    auto* v8f = llvm::FixedVectorType::get(f32_, 8);
+    auto* v8i = llvm::FixedVectorType::get(i32_, 8);
+    llvm::Value* columns = llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7});
+    llvm::Value* bits = llvm::ConstantDataVector::get(b_.getContext(),
+                                                      llvm::ArrayRef<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128});
+    // The plane's terms as Quad and plane() take them, eight lanes wide.
+    llvm::Value* fx = b_.CreateSIToFP(
+        b_.CreateAdd(b_.CreateVectorSplat(8, b_.CreateSub(ox, load_i(prim, layout_.ox))), columns), v8f);
+    llvm::Value* prim_oy = load_i(prim, layout_.oy);
+    llvm::Value* a = b_.CreateVectorSplat(8, load_f(prim, layout_.depth));
+    llvm::Value* b = b_.CreateVectorSplat(8, load_f(prim, layout_.depth + 4));
+    llvm::Value* c = load_f(prim, layout_.depth + 8);
+    llvm::Value* cax = b_.CreateSelect(is_nan(c), b_.CreateVectorSplat(8, b_.CreateFAdd(c, c)),
+                                       b_.CreateFAdd(b_.CreateVectorSplat(8, c), b_.CreateFMul(a, fx)));
+    llvm::Value* passing = b_.getInt64(0);
+    for (int row = 0; row < 8; ++row) {
+        llvm::Value* row_bits = b_.CreateTrunc(b_.CreateLShr(pixels, uint64_t(8 * row)), i8_);
+        passing = if_then(b_.CreateICmpNE(row_bits, b_.getInt8(0)), passing, [&] {
+            llvm::Value* y = b_.CreateAdd(oy, b_.getInt32(uint32_t(row)));
+            llvm::Value* fy = b_.CreateVectorSplat(8, b_.CreateSIToFP(b_.CreateSub(y, prim_oy), f32_));
+            llvm::Value* z = clamp01(b_.CreateSelect(is_nan(cax), cax, b_.CreateFAdd(cax, b_.CreateFMul(b, fy))));
+            llvm::Value* in = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(8, b_.CreateZExt(row_bits, i32_)), bits),
+                                              llvm::Constant::getNullValue(v8i));
+            // Not inbounds: the lanes outside `pixels` may lie outside the buffer.
+            llvm::Value* slot = b_.CreateGEP(f32_, target_.depth, pixel_index(ox, y, target_.width));
+            llvm::Value* stored = b_.CreateMaskedLoad(v8f, slot, llvm::Align(4), in, llvm::ConstantFP::get(v8f, 0.0));
+            llvm::Value* passes = depth_passes(z, stored);
+            if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
+            passes = b_.CreateAnd(passes, in);
+            if (key_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
+            llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
+            return b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
+        });
+    }
+    b_.CreateRet(passing);
 }
 
 // Emits body(index, quad) for quads 0 .. batch->quads - 1, a loop.
@@ -322,13 +381,29 @@ void PipelineEmitter::define_inputs() {
     begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
     std::vector<llvm::Value*> regs;
     for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), i * 8)));
+    // The last quad's primitive and whether it has NaN inputs: a batch's
+    // quads mostly come several from one primitive, and the test loads all
+    // its interpolated values. Slots in the entry block, which SROA turns
+    // into registers.
+    llvm::AllocaInst* last_prim = b_.CreateAlloca(ptr_);
+    llvm::AllocaInst* last_nan = b_.CreateAlloca(b_.getInt1Ty());
+    b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), last_prim);
+    b_.CreateStore(b_.getFalse(), last_nan);
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "nan_test", fn_);
+        llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "nan_tested", fn_);
+        b_.CreateCondBr(b_.CreateICmpEQ(q.prim, b_.CreateLoad(ptr_, last_prim)), tested, test);
+        b_.SetInsertPoint(test);
+        b_.CreateStore(nan_inputs(q), last_nan);
+        b_.CreateStore(q.prim, last_prim);
+        b_.CreateBr(tested);
+        b_.SetInsertPoint(tested);
         // Two versions: the one that orders NaNs (add, mul) runs only for
         // primitives with NaNs in their inputs.
         llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
         llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
         llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
-        b_.CreateCondBr(nan_inputs(q), strict, plain);
+        b_.CreateCondBr(b_.CreateLoad(b_.getInt1Ty(), last_nan), strict, plain);
         for (llvm::BasicBlock* block : {plain, strict}) {
             b_.SetInsertPoint(block);
             strict_ = block == strict;
@@ -381,6 +456,26 @@ void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm
     b_.SetInsertPoint(next);
 }
 
+// write_lane() of all four lanes of a quad into RGBA8 storage, without a
+// late depth test: the lanes' pixels are distinct, two rows of two, so two
+// stores of two pixels each write the same bytes.
+void PipelineEmitter::write_whole_quad(const Quad& q, const QuadValues& v, llvm::Value* bits) {
+    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bits), written_);
+    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
+    llvm::Value* words = llvm::Constant::getNullValue(v4i);
+    for (unsigned k = 0; k < 4; ++k) {
+        llvm::Value* byte = b_.CreateAnd(v.rgba[k], llvm::ConstantInt::get(v4i, 255));
+        words = b_.CreateOr(words, b_.CreateShl(byte, llvm::ConstantInt::get(v4i, 8 * k)));
+    }
+    llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(0)),
+                                     b_.CreateExtractElement(q.py, uint64_t(0)), target_.width);
+    llvm::Value* above = b_.CreateAdd(pixel, b_.CreateSExt(target_.width, i64_));
+    llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1});
+    llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3});
+    b_.CreateAlignedStore(lower, b_.CreateInBoundsGEP(i32_, target_.color, pixel), llvm::Align(4));
+    b_.CreateAlignedStore(upper, b_.CreateInBoundsGEP(i32_, target_.color, above), llvm::Align(4));
+}
+
 // A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)
 // and colour as stored (RGBA8: raster::to_unorm8's steps, as 32-bit integers).
 PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const std::vector<llvm::Value*>& regs,
@@ -420,6 +515,7 @@ void PipelineEmitter::define_outputs() {
     load_target(fn_->getArg(3));
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
+    const bool whole_quads = !key_.float_color && key_.color_channels > 0 && !(key_.depth_test && !key_.early_depth);
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
         llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
         llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
@@ -428,6 +524,16 @@ void PipelineEmitter::define_outputs() {
         b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bits), b_.getInt64(0)), body, next);
         b_.SetInsertPoint(body);
         QuadValues v = quad_values(q, regs, index);
+        if (whole_quads) {
+            // All four lanes alive and no late test: two 8-byte stores.
+            llvm::BasicBlock* whole = llvm::BasicBlock::Create(b_.getContext(), "whole", fn_);
+            llvm::BasicBlock* lanes = llvm::BasicBlock::Create(b_.getContext(), "lanes", fn_);
+            b_.CreateCondBr(b_.CreateICmpEQ(b_.CreateAnd(fn_->getArg(2), bits), bits), whole, lanes);
+            b_.SetInsertPoint(whole);
+            write_whole_quad(q, v, bits);
+            b_.CreateBr(next);
+            b_.SetInsertPoint(lanes);
+        }
         for (int i = 0; i < 4; ++i) write_lane(q, i, v, b_.CreateShl(first, uint64_t(i)));
         b_.CreateBr(next);
         b_.SetInsertPoint(next);
@@ -463,7 +569,10 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
     const std::string suffix = "_" + std::to_string(engine->modules++);
     {
         PipelineEmitter emitter(*context, *module, key, layout, suffix);
-        if (key.early_depth) emitter.define_quad_depth();
+        if (key.early_depth) {
+            emitter.define_quad_depth();
+            emitter.define_square_depth();
+        }
         emitter.define_inputs();
         emitter.define_outputs();
     }
@@ -482,11 +591,14 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
         llvm::consumeError(symbol.takeError());
         return nullptr;
     };
-    if (key.early_depth)
+    if (key.early_depth) {
         code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"));
+        code->square_depth = reinterpret_cast<FragmentPipeline::SquareDepthFn>(lookup("glslrun_square_depth"));
+    }
     code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(lookup("glslrun_inputs"));
     code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(lookup("glslrun_outputs"));
-    if (!code->inputs || !code->outputs || (key.early_depth && !code->quad_depth)) return nullptr;
+    if (!code->inputs || !code->outputs || (key.early_depth && (!code->quad_depth || !code->square_depth)))
+        return nullptr;
     if (seconds) *seconds = thread_cpu_seconds() - start;
     return code;
 }

@@ -146,11 +146,15 @@ TEST_CASE("plane equations give the screen-space weights and depth at pixel cent
 
 TEST_CASE("8x8 blocks inside or outside a triangle cover what the per-pixel test covers", "[raster][coverage]") {
     std::mt19937 rng(17);
-    std::uniform_real_distribution<float> coord(-20.0f, 140.0f);
+    // Near vertices give edge values of 32 bits (coverage_mask's 4-wide
+    // path); two far ones give values that need 64 bits, with the edges from
+    // the near one still crossing the window.
+    const float reach = GENERATE(140.0f, 3.0e5f);
+    std::uniform_real_distribution<float> near(-20.0f, 140.0f), far(-reach, reach);
     const Rect scissor{3, 5, 117, 101};  // odd edges: blocks cut by the scissor
     for (int n = 0; n < 200; ++n) {
-        auto t = setup_triangle({glm::vec2(coord(rng), coord(rng)), glm::vec2(coord(rng), coord(rng)),
-                                 glm::vec2(coord(rng), coord(rng))},
+        auto t = setup_triangle({glm::vec2(near(rng), near(rng)), glm::vec2(far(rng), far(rng)),
+                                 glm::vec2(far(rng), far(rng))},
                                 scissor);
         if (!t) continue;
         std::vector<int> hits(size_t(128 * 128), 0);
