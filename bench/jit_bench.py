@@ -7,6 +7,9 @@ glslrun --backend interp, glslrun --backend jit and llvmpipe (BUILD/glref), inte
 run's median frame (wall and process CPU time).
 compile: glslrun --backend jit --bench 1 on every lecture program of bench/precision.py
 (its own scene and size), printing llvm_compile_ms (both stages, both functions each).
+fast: Fast against Precise under the JIT on the per-pixel lecture scenes of
+bench/precision.py at 1920x1080 and 1 thread, interleaved; per mode the median over the runs
+of each run's median frame CPU time (the #12 target: Fast >= 1.5x Precise).
 
 --rows: the other rows of issue #12's table, 1 thread, glslrun --backend jit against
 llvmpipe, interleaved, medians of CPU ms per frame:
@@ -134,6 +137,27 @@ def main():
                               os.path.join(REPO, "scenes", scene), "--bench", "1", "--backend", "jit",
                               "-o", "/tmp/jit_bench.png"])["llvm_compile_ms"]) for _ in range(3)]
         print(f"| {program} | {scene} | {statistics.median(times):.1f} |")
+    fast_against_precise(args)
+
+
+def fast_against_precise(args):
+    print(f"\nload average at start: {os.getloadavg()[0]:.2f}")
+    print("| program | scene | precise CPU ms | fast CPU ms | fast speed-up |")
+    print("|---|---|---|---|---|")
+    for program, scene, kind in precision.CASES:
+        if "pixel" not in kind:
+            continue
+        stem = os.path.join(REPO, "shaders", program)
+        cmd = [os.path.join(args.build, "glslrun"), stem + ".vert", stem + ".frag", os.path.join(REPO, "scenes", scene),
+               "--size", "1920x1080", "--threads", "1", "--backend", "jit", "--bench", str(args.frames),
+               "-o", "/tmp/jit_bench.png"]
+        runs = {mode: [] for mode in ("precise", "fast")}
+        for _ in range(args.runs):
+            for mode in runs:
+                runs[mode].append(float(bench(cmd + ["--precision", mode])["cpu_median_ms"]))
+        precise, fast = (statistics.median(runs[m]) for m in ("precise", "fast"))
+        print(f"| {program} | {scene} | {precise:.2f} | {fast:.2f} | {precise / fast:.2f}x |")
+    print(f"load average at end: {os.getloadavg()[0]:.2f}")
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-// The pass pipeline: inline, then (fold, copyprop, dead_stores, dce) until nothing changes
+// The pass pipeline: inline, unroll, then (fold, copyprop, dead_stores, dce) until nothing changes
 // (at most a few rounds), then fuse_mad, hoist, dce, sqrt_divisor and regalloc. With
 // PassOptions::verify the verifier runs after every pass and its first complaint is
 // returned, naming the pass.
@@ -58,6 +58,8 @@ std::string optimize(Shader& shader, const PassOptions& options) {
     if (!error.empty()) return error;
     inline_calls(shader, options.inline_budget);
     if (!(error = check(shader, "inline", options.verify)).empty()) return error;
+    unroll_loops(shader);
+    if (!(error = check(shader, "unroll", options.verify)).empty()) return error;
     for (int round = 0; round < kMaxRounds; ++round) {
         uint64_t before = fingerprint(shader);
         fold_constants(shader);

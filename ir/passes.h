@@ -22,6 +22,10 @@ std::string print(const Program& program);
 // the callee while the shader grows by less than `budget` nodes; the calls
 // beyond the budget stay real calls.
 void inline_calls(Shader& shader, uint32_t budget);
+// ir/unroll.cpp: a loop of the frontend's shape whose trip count is a
+// constant of at most 8 becomes that many copies of its body (the shader
+// grows by at most 2000 nodes), so that fold sees its counter as constants.
+void unroll_loops(Shader& shader);
 // ir/fold.cpp: evaluates Alu instructions whose operands are constants, using
 // the opcode table's expressions; folds If on constant conditions. With
 // `uniforms` (a specialization, ir/specialize.cpp) `uniform` reads fold to

@@ -52,7 +52,7 @@ test)
     bash tools/image_hashes.sh build/glslrun > build/hashes-16.txt
     for lanes in 8 64; do
         cmake -S . -B "build-lanes$lanes" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLSLRUN_LANES=$lanes "${launcher[@]}" > /dev/null
-        cmake --build "build-lanes$lanes" -j "$(nproc)" --target glslrun test_fused > /dev/null
+        cmake --build "build-lanes$lanes" -j "$(nproc)" --target glslrun test_fused test_runtime > /dev/null
         bash tools/image_hashes.sh "build-lanes$lanes/glslrun" > "build/hashes-$lanes.txt"
         diff build/hashes-16.txt "build/hashes-$lanes.txt" || { echo "images differ with $lanes lanes" >&2; exit 1; }
         echo "batch width $lanes: $(wc -l < build/hashes-16.txt) images identical to 16 lanes"
@@ -60,6 +60,9 @@ test)
         sh tests/cli/backend_identical.sh . "build-lanes$lanes/glslrun"
         # The fused fragment pipeline (quad order within a batch) against the interpreter's path.
         "build-lanes$lanes/test_fused"
+        # The JIT against the interpreter op by op: generated built-ins, gathers, NaN operands (not the
+        # fuzz test: at 64 lanes LLVM takes minutes over its programs).
+        "build-lanes$lanes/test_runtime" "[jit_math],[jit_indexed],[nan]"
     done
     # ASan + UBSan over the unit tests of the library's inputs, the piglit suite and
     # the hostile-input reproducers, then each fuzzer for 20 s (docs/ci.md).

@@ -6,13 +6,15 @@
 
 namespace glslrun::rt::jit {
 
-void run_call_out(Context* ctx, uint32_t* regs, const CallOut* call, uint64_t exec) {
-    const uint32_t zero = ctx->reg_count;
-    Step<uint32_t> step = instr_step<uint32_t>(call->instr, call->kernel, [&](ir::Reg r) {
-        return regs + size_t(r == ir::kNoReg || r >= zero ? zero : r) * kLanes;
+Step<uint32_t> call_out_step(const CallOut& call, uint32_t* regs, uint32_t reg_count) {
+    return instr_step<uint32_t>(call.instr, call.kernel, [&](ir::Reg r) {
+        return regs + size_t(r == ir::kNoReg || r >= reg_count ? reg_count : r) * kLanes;
     });
-    Machine<uint32_t>& m = ctx->machine;
-    m.regs = regs;
+}
+
+void run_call_out(Context* ctx, [[maybe_unused]] uint32_t* regs, uint64_t index, uint64_t exec) {
+    const Step<uint32_t>& step = ctx->call_steps[index];
+    Machine<uint32_t>& m = ctx->machine;  // m.regs == regs
     m.mask.reset(exec);
     step.fn(step, m);
 }

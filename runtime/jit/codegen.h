@@ -1,7 +1,7 @@
 // The emitter of one shader's LLVM IR (runtime/jit/jit.h): control.cpp
 // writes the functions, blocks and masks, alu.cpp the instructions.
 #pragma once
-#include <deque>
+#include <vector>
 #include <string>
 
 #include <llvm/IR/IRBuilder.h>
@@ -21,9 +21,10 @@ enum class WriteMode { Honours, Blends };
 class Emitter {
 public:
     // Kernels for the call-outs are picked for (precision, fast_ops, avx2);
-    // their records go to `call_outs`, which must outlive the code.
+    // their records go to `call_outs`, in the order of the indices the
+    // generated code passes to run_call_out.
     Emitter(llvm::LLVMContext& context, llvm::Module& module, const ir::Shader& shader, Precision precision,
-            uint32_t fast_ops, bool avx2, std::deque<CallOut>& call_outs);
+            uint32_t fast_ops, bool avx2, std::vector<CallOut>& call_outs);
 
     // Defines `name`, a ShaderFn running `block` (the main body, or the
     // prologue) as the interpreter's run() does: the run's call frame
@@ -56,6 +57,9 @@ private:
     llvm::Value* emit_compare(ir::Op op, llvm::Value* a, llvm::Value* b);
     llvm::Value* emit_conversion(ir::Op op, llvm::Value* a);
     llvm::Value* emit_derivative(ir::Op op, llvm::Value* a);
+    llvm::Value* element_index(const ir::Instr& in);  // kLanes x i32
+    llvm::Value* register_lanes(llvm::Value* regs);     // kLanes x ptr
+    void emit_precise_pow(const ir::Instr& in);
     void emit_call_out(const ir::Instr& in);
     llvm::Value* reg_ptr(ir::Reg r);
     llvm::Value* load_reg(ir::Reg r);  // kLanes x i32
@@ -76,7 +80,7 @@ private:
     Precision precision_;
     uint32_t fast_ops_;
     bool avx2_;
-    std::deque<CallOut>& call_outs_;
+    std::vector<CallOut>& call_outs_;
 
     llvm::Type* i1_;
     llvm::Type* i32_;

@@ -29,9 +29,10 @@ struct Context {
     uint64_t alive = 0;                // written at exit: the lanes that did not discard
     int32_t error_line = 0;            // with a Failure
     // The call-outs run the interpreter's kernels over this machine (its
-    // regs and mask set per call).
+    // mask set per call), each with its Step built once per executor over
+    // the executor's register file (call_steps[i] for the i-th CallOut).
     Machine<uint32_t> machine;
-    uint32_t reg_count = 0;  // register reg_count is the zero register
+    const Step<uint32_t>* call_steps = nullptr;
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
@@ -49,9 +50,15 @@ struct CallOut {
 // lanes, before any batch). `regs` is the executor's register file.
 using ShaderFn = int32_t (*)(Context* ctx, uint32_t* regs, const uint32_t* uniforms, uint64_t live);
 
-// Runs `call`'s kernel on the lanes in `exec` (a plain C++ function whose
-// address the generated code holds).
-void run_call_out(Context* ctx, uint32_t* regs, const CallOut* call, uint64_t exec);
+// The Step of `call` over the register file `regs` of `reg_count` registers
+// (register reg_count is the zero register).
+Step<uint32_t> call_out_step(const CallOut& call, uint32_t* regs, uint32_t reg_count);
+
+// Runs the `index`-th call-out's kernel on the lanes in `exec` (a plain C++
+// function whose address the generated code holds). `regs`, the register
+// file that the call-out's Step points into, is passed so that LLVM knows
+// the call reads and writes it (the generated function's `regs` is noalias).
+void run_call_out(Context* ctx, uint32_t* regs, uint64_t index, uint64_t exec);
 
 // Charges `instructions` with only `credit` left before an event: returns
 // the Failure (Instructions, Cancelled or None) and sets ctx->credit anew.

@@ -14,7 +14,7 @@
 namespace glslrun::rt::jit {
 
 Emitter::Emitter(llvm::LLVMContext& context, llvm::Module& module, const ir::Shader& shader, Precision precision,
-                 uint32_t fast_ops, bool avx2, std::deque<CallOut>& call_outs)
+                 uint32_t fast_ops, bool avx2, std::vector<CallOut>& call_outs)
     : ctx_(context), module_(module), b_(context), shader_(shader), precision_(precision), fast_ops_(fast_ops),
       avx2_(avx2), call_outs_(call_outs) {
     i1_ = llvm::Type::getInt1Ty(ctx_);

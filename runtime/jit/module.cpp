@@ -7,7 +7,6 @@
 
 #include <ctime>
 #include <cstdlib>
-#include <deque>
 #include <mutex>
 
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
@@ -176,7 +175,7 @@ public:
     }
     Engine* engine = nullptr;
     llvm::orc::ResourceTrackerSP tracker;  // this shader's code in the engine's LLJIT
-    std::deque<CallOut> call_outs;  // the generated code points at these
+    std::vector<CallOut> call_outs;  // the generated code calls the i-th by its index
     ShaderFn main = nullptr, prologue = nullptr;
     uint32_t reg_count = 0;
 
@@ -192,7 +191,9 @@ public:
         ctx_.machine.uniforms = p.uniforms;
         ctx_.machine.textures = p.textures;
         ctx_.machine.regs = regs_.data;
-        ctx_.reg_count = code.reg_count;
+        call_steps_.reserve(code.call_outs.size());
+        for (const CallOut& call : code.call_outs) call_steps_.push_back(call_out_step(call, regs_.data, code.reg_count));
+        ctx_.call_steps = call_steps_.data();
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
     }
@@ -221,6 +222,7 @@ private:
     AlignedWords<uint32_t> regs_;
     const uint32_t* uniforms_;
     RunLimits limits_;
+    std::vector<Step<uint32_t>> call_steps_;
     Context ctx_;
 };
 
