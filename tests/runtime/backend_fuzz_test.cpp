@@ -338,6 +338,13 @@ Outcome run_on(const ir::Shader& shader, Backend backend, const std::vector<uint
     return run_all(*e, shader, batches);
 }
 
+std::vector<Reg> output_registers(const ir::Shader& shader) {
+    std::vector<Reg> regs;
+    for (const ir::Binding& b : shader.outputs)
+        for (uint32_t k = 0; k < b.count; ++k) regs.push_back(b.first + k);
+    return regs;
+}
+
 // `o` (every register) cut down to the outputs of `shader`.
 Outcome outputs_of(const Outcome& o, const ir::Shader& shader) {
     const size_t per_batch = 2 + shader.regs.size() * rt::kLanes;
@@ -345,9 +352,8 @@ Outcome outputs_of(const Outcome& o, const ir::Shader& shader) {
     for (size_t batch = 0; batch < o.words.size() / per_batch; ++batch) {
         auto at = o.words.begin() + long(batch * per_batch);
         out.words.insert(out.words.end(), at, at + 2);
-        for (const ir::Binding& b : shader.outputs)
-            out.words.insert(out.words.end(), at + long(2 + b.first * rt::kLanes),
-                             at + long(2 + (b.first + b.count) * rt::kLanes));
+        for (Reg r : output_registers(shader))
+            out.words.insert(out.words.end(), at + long(2 + r * rt::kLanes), at + long(2 + (r + 1) * rt::kLanes));
     }
     return out;
 }
@@ -372,12 +378,11 @@ std::string first_difference(const ir::Shader& shader, bool specialize, const st
         size_t first = 0;
         while (first < a.words.size() && a.words[first] == b.words[first]) ++first;
         if (first == a.words.size()) return std::string();
-        std::vector<Reg> regs;
-        if (outputs)
-            for (const ir::Binding& b : sh.outputs)
-                for (uint32_t k = 0; k < b.count; ++k) regs.push_back(b.first + k);
-        else
-            for (size_t r = 0; r < sh.regs.size(); ++r) regs.push_back(Reg(r));
+        std::vector<Reg> regs = output_registers(sh);
+        if (!outputs) {
+            regs.resize(sh.regs.size());
+            for (size_t r = 0; r < regs.size(); ++r) regs[r] = Reg(r);
+        }
         const size_t per_batch = 2 + regs.size() * rt::kLanes, word = first % per_batch;
         std::ostringstream out;
         out << what << ": batch " << first / per_batch << ", "
