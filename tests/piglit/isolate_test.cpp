@@ -2,7 +2,10 @@
 #include <catch2/catch.hpp>
 
 #include <csignal>
+#include <string>
 #include <thread>
+
+#include <unistd.h>
 
 #include "tools/glslrun/piglit_exec.h"
 #include "tools/glslrun/piglit_isolate.h"
@@ -88,4 +91,20 @@ TEST_CASE("children of a warmed-up runner give the same results as in-process ru
         CHECK(child.outcome == in_process.outcome);
         CHECK(child.message == in_process.message);
     }
+}
+
+TEST_CASE("a runner whose stdin and stdout are closed still isolates its tests", "[piglit][isolate]") {
+    // The pipe then gets descriptors 0 and 1; its write end must move above stdio.
+    int saved_in = ::dup(0), saved_out = ::dup(1);
+    REQUIRE(saved_in >= 0);
+    REQUIRE(saved_out >= 0);
+    ::close(0);
+    ::close(1);
+    TestResult r = run_isolated([] { return TestResult{Outcome::Pass, std::to_string(::getpid())}; }, 10);
+    ::dup2(saved_in, 0);
+    ::dup2(saved_out, 1);
+    ::close(saved_in);
+    ::close(saved_out);
+    CHECK(r.outcome == Outcome::Pass);
+    CHECK(r.message != std::to_string(::getpid()));  // it ran in a child
 }

@@ -109,21 +109,44 @@ std::string describe_status(int status) {
     return "ended without a result";
 }
 
+// fork() and pipe2() fail with EAGAIN at a process or descriptor limit that
+// other children are about to free, so they are retried for a while.
+template <typename Call>
+int retry_while_busy(Call call) {
+    int result = -1;
+    for (int attempt = 0; attempt < 50; ++attempt) {
+        result = call();
+        if (result >= 0 || (errno != EAGAIN && errno != ENOMEM && errno != EMFILE && errno != ENFILE)) break;
+        ::usleep(20'000);
+    }
+    return result;
+}
+
+TestResult not_isolated(const char* what) {
+    return {Outcome::Fail, std::string("not run: ") + what + " failed: " + std::strerror(errno)};
+}
+
 }  // namespace
 
 TestResult run_isolated(const std::function<TestResult()>& fn, double timeout_s) {
     int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) return fn();
-    if (fds[1] < 3) {  // stdio was closed; keep it simple and run in-process
-        ::close(fds[0]);
+    if (retry_while_busy([&] { return ::pipe2(fds, O_CLOEXEC); }) != 0) return not_isolated("pipe2");
+    if (fds[1] < 3) {  // stdio was closed: move the write end above it, where the child keeps it
+        int moved = ::fcntl(fds[1], F_DUPFD_CLOEXEC, 3);
         ::close(fds[1]);
-        return fn();
+        if (moved < 0) {
+            ::close(fds[0]);
+            return not_isolated("fcntl");
+        }
+        fds[1] = moved;
     }
-    pid_t pid = ::fork();
+    pid_t pid = retry_while_busy([] { return int(::fork()); });
     if (pid < 0) {
+        int saved = errno;
         ::close(fds[0]);
         ::close(fds[1]);
-        return fn();
+        errno = saved;
+        return not_isolated("fork");
     }
     if (pid == 0) {
         // Drop every other descriptor, including the pipes of tests that other
