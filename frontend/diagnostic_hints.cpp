@@ -70,10 +70,11 @@ const std::vector<BuiltinStruct>& builtin_structs() {
 
 // The case-insensitive edit distance of a and b if it is below limit, else
 // limit: a row whose minimum reaches the limit cannot come back under it, so
-// the many far candidates of a long shader cost little.
-size_t edit_distance_below(std::string_view a, std::string_view b, size_t limit) {
+// the many far candidates of a long shader cost little. `row` is the caller's
+// scratch, reused across candidates.
+size_t edit_distance_below(std::string_view a, std::string_view b, size_t limit, std::vector<size_t>& row) {
     if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) >= limit) return limit;
-    std::vector<size_t> row(b.size() + 1);
+    row.resize(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
         size_t diagonal = row[0];
@@ -94,11 +95,12 @@ size_t edit_distance_below(std::string_view a, std::string_view b, size_t limit)
 std::string closest(std::string_view word, const std::vector<std::string>& candidates) {
     std::string best;
     size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+    std::vector<size_t> row;
     for (const std::string& c : candidates) {
         if (c == word) continue;
         // A missing "gl_" prefix is the commonest slip of all.
         bool lacks_gl_prefix = c.size() == word.size() + 3 && c.starts_with("gl_") && c.ends_with(word);
-        size_t d = lacks_gl_prefix ? 1 : edit_distance_below(word, c, best_distance);
+        size_t d = lacks_gl_prefix ? 1 : edit_distance_below(word, c, best_distance, row);
         if (d < best_distance) best_distance = d, best = c;
     }
     return best;

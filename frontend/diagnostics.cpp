@@ -65,7 +65,6 @@ std::optional<LogLine> split_log_line(std::string_view s) {
         if (s.substr(0, kind.size()) == kind) {
             out.warning = kind[0] == 'W';
             s.remove_prefix(kind.size());
-            out.text = trim(std::string(s));
             // Located: `file:line: 'token' : text`, at the first `:digits: '`.
             for (size_t colon = s.find(':'); colon != std::string_view::npos; colon = s.find(':', colon + 1)) {
                 size_t digits = colon + 1 + (s.substr(colon + 1, 1) == "-");
@@ -85,6 +84,7 @@ std::optional<LogLine> split_log_line(std::string_view s) {
                 out.text = trim(std::string(s.substr(text_begin)));
                 break;
             }
+            if (!out.located) out.text = trim(std::string(s));
             return out;
         }
     return std::nullopt;

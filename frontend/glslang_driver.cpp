@@ -25,6 +25,7 @@
 #include "frontend/lower.h"
 #include "frontend/size_limits.h"
 #include "frontend/source_rewrite.h"
+#include "frontend/token_budget.h"
 #include "frontend/unit_checks.h"
 
 namespace glslrun::frontend {
@@ -117,9 +118,15 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     std::string preamble = lang == EShLangVertex ? "#extension GL_ARB_shader_texture_lod : enable\n" : "";
     preamble += helpers;
     out.shader->setPreamble(preamble.c_str());
-    {
-        FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
-        out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
+    TokenBudgetScope budget;
+    out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    if (budget.exceeded()) {
+        out.ok = false;
+        out.diags.push_back(Diagnostic{file, 0, fmt::format(
+            "the source's macros expand past glslrun's limit: {} tokens for the parser, {} read back from "
+            "macro bodies and arguments (docs/limits.md)", kMaxParserTokens, kMaxMacroTokens), false});
+        return out;
     }
     parse_info_log(out.shader->getInfoLog(), file, out.diags);
     return out;

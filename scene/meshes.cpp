@@ -23,6 +23,15 @@ struct MeshBuilder {
     std::vector<float> pos, nrm, tex;
     std::vector<uint32_t> indices;
 
+    // Room for the mesh's vertices and triangles, known from its parameters
+    // (a plane of 1024 subdivisions has a million vertices: no regrowing).
+    MeshBuilder(size_t vertices, size_t triangles) {
+        pos.reserve(3 * vertices);
+        nrm.reserve(3 * vertices);
+        tex.reserve(2 * vertices);
+        indices.reserve(3 * triangles);
+    }
+
     uint32_t vertex(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec2& st) {
         const uint32_t index = uint32_t(pos.size() / 3);
         pos.insert(pos.end(), {float(p.x), float(p.y), float(p.z)});
@@ -63,6 +72,8 @@ glm::dvec2 unit_circle(int k, int count) {
 // from outside when d(column) x d(row) points outwards. With `poles`, the
 // first and the last row of vertices are each a single point (a sphere's
 // poles), and the zero-area triangle of each cell there is left out.
+size_t grid_vertices(int columns, int rows) { return (size_t(columns) + 1) * (size_t(rows) + 1); }
+
 void grid_triangles(MeshBuilder& m, int columns, int rows, bool poles = false) {
     const uint32_t stride = uint32_t(columns) + 1;
     for (int r = 0; r < rows; ++r) {
@@ -107,7 +118,7 @@ Mesh make_cube(double size) {
                                          {{0, 0, -1}, {-1, 0, 0}}}};
     constexpr std::array<glm::dvec2, 4> corners{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
     const double h = size / 2;
-    MeshBuilder m;
+    MeshBuilder m(24, 12);
     for (const Face& f : faces) {
         const glm::dvec3 up = glm::cross(f.normal, f.right);
         uint32_t first = 0;
@@ -132,7 +143,7 @@ Mesh make_sphere(double radius, int slices, int stacks) {
     // zero-area triangles are left out: (stacks+1)(slices+1) vertices, vertex
     // i*(slices+1) + j, and 2 * slices * (stacks - 1) triangles.
     assert(slices >= 3 && stacks >= 2 && slices <= kMaxSubdivisions && stacks <= kMaxSubdivisions);
-    MeshBuilder m;
+    MeshBuilder m(grid_vertices(slices, stacks), 2 * size_t(slices) * size_t(stacks - 1));
     for (int i = 0; i <= stacks; ++i) {
         // Polar angle as a half turn of a full circle of 2*stacks steps.
         const glm::dvec2 polar = unit_circle(i, 2 * stacks);  // (cos phi, sin phi)
@@ -156,7 +167,7 @@ Mesh make_torus(double inner_radius, double outer_radius, int sides, int rings) 
     // vertex j*(rings+1) + i; 2 * rings * sides triangles.
     assert(sides >= 3 && rings >= 3 && sides <= kMaxSubdivisions && rings <= kMaxSubdivisions);
     // Rows are sides and columns rings, so that d(ring) x d(side) points out.
-    MeshBuilder m;
+    MeshBuilder m(grid_vertices(rings, sides), 2 * size_t(rings) * size_t(sides));
     for (int j = 0; j <= sides; ++j) {
         const glm::dvec2 side = unit_circle(j, sides);
         for (int i = 0; i <= rings; ++i) {
@@ -175,7 +186,7 @@ Mesh make_plane(double size, int subdivisions) {
     // normal +z; (s, t) = (j/n, i/n), so the texture sits upright seen from +z.
     assert(subdivisions >= 1 && subdivisions <= kMaxSubdivisions);
     const int n = subdivisions;
-    MeshBuilder m;
+    MeshBuilder m(grid_vertices(n, n), 2 * size_t(n) * size_t(n));
     for (int i = 0; i <= n; ++i) {
         for (int j = 0; j <= n; ++j) {
             const glm::dvec2 st(double(j) / n, double(i) / n);

@@ -50,21 +50,24 @@ namespace {
 
 char lower(char c) { return char(std::tolower(static_cast<unsigned char>(c))); }
 
-// Optimal string alignment distance: a transposition ("ambeint") is one edit,
-// as a typist would count it.
+// Optimal string alignment distance, case-insensitive: a transposition
+// ("ambeint") is one edit, as a typist would count it. Three rolling rows (a
+// transposition looks two rows back).
 size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    std::vector<size_t> before(b.size() + 1), previous(b.size() + 1), row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
+        std::swap(before, previous);
+        std::swap(previous, row);
+        row[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
             size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + cost});
             if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) && lower(a[i - 2]) == lower(b[j - 1]))
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+                row[j] = std::min(row[j], before[j - 2] + 1);
         }
     }
-    return d[a.size()][b.size()];
+    return row[b.size()];
 }
 
 std::string range_text(const Range& r) {

@@ -32,6 +32,10 @@ ln -s /dev/zero zero.frag
 expect 1 "not a regular file" "$glslrun" "$vs" zero.frag
 printf 'void main() { float a[1000000000]; a[1] = 1.0; gl_FragColor = vec4(a[1]); }\n' > array.frag
 expect 1 "array.frag:1: error: 'a' : 1000000000 components" "$glslrun" "$vs" array.frag
+# Macros that double one another 40 times (2^40 terms) stop at the token budget.
+{ echo '#define A1 x+x'; for i in $(seq 2 40); do echo "#define A$i A$((i - 1))+A$((i - 1))"; done
+  echo 'uniform float x; void main() { gl_FragColor = vec4(A40); }'; } > macros.frag
+expect 1 "macros.frag: error: the source's macros expand past glslrun's limit" "$glslrun" "$vs" macros.frag
 # A PNG of a few bytes whose header claims 16384x16384 pixels.
 python3 -c "
 import struct, zlib

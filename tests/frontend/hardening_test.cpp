@@ -65,3 +65,32 @@ TEST_CASE("hardening: the parser's depth limit and the source size limit are cle
     CHECK_THAT(compile_error(kPassVs, huge), Catch::Contains("glslrun's limit is 1024 KiB per stage"));
     CHECK_FALSE(check_shader(Stage::Fragment, {"t.frag", huge}).ok());
 }
+
+// Each macro doubles the one before: a few hundred bytes that expand to 2^n
+// tokens. A20 overflowed the compile thread's 512 MiB stack under ASan (found
+// by a long fuzz_compile run's author, not by the fuzzer).
+std::string doubling_macros(int n, const std::string& use) {
+    std::string s = "#define A1 x+x\n";
+    for (int i = 2; i <= n; ++i) s += "#define A" + std::to_string(i) + " A" + std::to_string(i - 1) + "+A" +
+                                      std::to_string(i - 1) + "\n";
+    return s + "uniform float x;\n" + use + "void main() { gl_FragColor = vec4(A" + std::to_string(n) + "); }\n";
+}
+
+TEST_CASE("hardening: macros that expand exponentially stop at the token budget with a clear error") {
+    compile_ok(kPassVs, doubling_macros(14, ""));  // 16384 terms: within the budget
+    for (int n : {20, 40}) {
+        INFO(n);
+        CHECK_THAT(compile_error(kPassVs, doubling_macros(n, "")), Catch::Contains("t.frag: error: the source's macros "
+                                                                                  "expand past glslrun's limit"));
+    }
+    // Expansions that never reach the parser: an argument expanded before it
+    // is substituted (2^40 tokens), and an #if.
+    std::string args = "#define F(a) a+a\n#define X ";
+    for (int i = 0; i < 40; ++i) args += "F(";
+    args += "x" + std::string(40, ')') + "\n";
+    for (const std::string& fs : {args + "uniform float x;\nvoid main() { gl_FragColor = vec4(X); }\n",
+                                  doubling_macros(40, "#if A40\n#endif\n")}) {
+        CHECK_THAT(compile_error(kPassVs, fs), Catch::Contains("expand past glslrun's limit"));
+        CHECK_FALSE(check_shader(Stage::Fragment, {"t.frag", fs}).ok());
+    }
+}

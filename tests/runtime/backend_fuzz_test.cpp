@@ -1,11 +1,26 @@
 // Differential fuzzing of the backends: random shaders (every op of the
-// table but tex, random structured control flow with break, continue,
-// return, discard and loops that may hit the iteration cap) run on the
-// interpreter and on the JIT, in Precise and Fast, for the baseline and the
-// AVX2 code (and LLVM's quick code generation in Precise), half of them under an instruction budget that some batches
-// exhaust; every register of every lane, the alive mask and the run's error
-// must be bit-identical. Inputs mix ordinary values with the special
-// ones (signed zeros, denormals, infinities, NaNs, integer extremes).
+// table, texture lookups included, random structured control flow with
+// break, continue, return, discard and loops that may hit the iteration cap)
+// run on the interpreter and on the JIT, in Precise and Fast, for the
+// baseline and the AVX2 code (and LLVM's quick code generation in Precise),
+// half of them under an instruction budget that some batches exhaust; every
+// register of every lane, the alive mask and the run's error must be
+// bit-identical. Inputs mix ordinary values with the special ones (signed
+// zeros, denormals, infinities, NaNs, integer extremes).
+//
+// Texture lookups are GLSL 1.10/1.20's: texture1D/2D/3D/Cube, their Proj
+// forms (but Cube's), shadow1D/2D; in fragment shaders with implicit level
+// of detail (derivatives of the coordinates) or a bias, in vertex shaders
+// (a third of the programs) with an explicit lod. They sample small
+// textures of every target, filter, wrap mode and format, on units that the
+// sampler uniforms name (some unbound or out of range).
+//
+// A quarter of the programs also run specialized on their uniforms
+// (ir/specialize.cpp, as ExecOptions::jit_specialize_after does): on both
+// backends, which must agree on every register, and against the
+// unspecialized interpreter, which they must match on the shader's outputs
+// (the registers that specialization must keep; it may drop or hoist writes
+// to the others).
 //
 // Nothing may differ, NaNs included: + and * say which of two NaN operands
 // they return (ir::a_nan_first), so the compilers' operand order cannot
@@ -16,11 +31,15 @@
 // to the first top-level nodes that differ.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <random>
+#include <sstream>
 
 #include "ir/alu_eval.h"
+#include "ir/flow.h"
 #include "ir/passes.h"
 #include "runtime/backend.h"
 #include "runtime/interp_kernels.h"
@@ -33,18 +52,32 @@ namespace {
 
 constexpr int kBatches = 4;
 constexpr uint64_t kLoopCap = 40;
+// The uniform store: words 0..15 hold values, 16..19 the sampler uniforms' units.
+constexpr uint32_t kUniformWords = 32, kSamplerWords = 16, kSamplers = 4;
 
 struct Fuzzer {
     std::mt19937 rng;
     Builder b;
-    std::vector<Reg> f, i, bo;  // registers by kind
+    std::vector<Reg> f, i, bo;  // registers by kind: the program's variables
     int loop_depth = 0, scope_depth = 0;
+    // A program to specialize reads uniforms more often (more code to fold)
+    // and has no random `unmasked` flags: regalloc sets only true ones (no
+    // lane reads what the register held), on which specialization relies.
+    bool specializing = false;
 
-    explicit Fuzzer(uint32_t seed) : rng(seed) {
+    Fuzzer(uint32_t seed, ir::Stage stage) : rng(seed), b(stage) {
         for (int k = 0; k < 20; ++k) f.push_back(b.reg(Kind::F32));
         for (int k = 0; k < 8; ++k) i.push_back(b.reg(Kind::I32));
         for (int k = 0; k < 8; ++k) bo.push_back(b.reg(Kind::Bool));
+        // The variables are inputs; the first half of each kind are also outputs.
+        for (const std::vector<Reg>* regs : {&f, &i, &bo})
+            for (size_t k = 0; k < regs->size(); ++k) {
+                Reg r = (*regs)[k];
+                b.input("in", r);
+                if (k < regs->size() / 2) b.output("out", r);
+            }
     }
+    bool fragment() const { return b.sh.stage == ir::Stage::Fragment; }
     int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
     Reg any(const std::vector<Reg>& regs) { return regs[size_t(pick(int(regs.size())))]; }
     Reg of(Kind k) { return any(k == Kind::F32 ? f : k == Kind::I32 ? i : bo); }
@@ -69,6 +102,7 @@ struct Fuzzer {
 
     void instr() {
         int roll = pick(100);
+        if (specializing && pick(6) == 0) roll = 15;  // a uniform read
         Op op;
         if (roll < 6) op = Op::konst;
         else if (roll < 10) op = Op::mov;
@@ -79,12 +113,15 @@ struct Fuzzer {
         else if (roll < 23) op = Op::load_ind;
         else if (roll < 25) op = Op::store_ind;
         else if (roll < 27) op = Op::uniform_ind;
+        else if (roll < 30) return tex();
         else {
             do op = Op(pick(int(Op::Count_)));
             while (ir::op_info(op).kind != ir::OpKind::Alu);
         }
+        if (!fragment() && (op == Op::ddx || op == Op::ddy)) op = Op::mov;  // derivatives are fragment-only
         const ir::OpInfo& info = ir::op_info(op);
-        Kind type = op == Op::ddx || op == Op::ddy ? Kind::F32 : any_kind();
+        // load_ind reads a range of the float variables.
+        Kind type = op == Op::ddx || op == Op::ddy || op == Op::load_ind ? Kind::F32 : any_kind();
         Kind result = Builder::result_kind(op, type);
         Reg dst = op == Op::store_ind ? ir::kNoReg : of(result);
         std::vector<Reg> src;
@@ -109,8 +146,49 @@ struct Fuzzer {
         n.instr.dst = dst;
         for (size_t k = 0; k < src.size(); ++k) n.instr.src[k] = src[k];
         for (size_t k = 0; k < imm.size(); ++k) n.instr.imm[k] = imm[k];
-        n.instr.unmasked = pick(10) == 0 && op != Op::store_ind;
+        n.instr.unmasked = pick(10) == 0 && op != Op::store_ind && !specializing;
         b.push(std::move(n));
+    }
+
+    // A lookup as lower_texture.cpp emits it: the operand block filled by
+    // moves (projected coordinates divided by q), derivatives of the
+    // coordinates for an implicit lod, the unit from a sampler uniform (or,
+    // now and then, any int), and the results read back into variables.
+    void tex() {
+        ir::TexInfo info;
+        info.target = ir::TexTarget(pick(4));
+        info.shadow = info.target <= ir::TexTarget::T2D && pick(3) == 0;  // shadow1D, shadow2D
+        info.lod = !fragment() ? ir::TexLod::Explicit : pick(3) == 0 ? ir::TexLod::ImplicitBias : ir::TexLod::Implicit;
+        const bool proj = info.target != ir::TexTarget::Cube && pick(3) == 0;
+        const Reg q = of(Kind::F32);
+        auto coordinate = [&] {
+            if (!proj) return of(Kind::F32);
+            Reg r = b.reg(Kind::F32);
+            b.instr(Op::fdiv, Kind::F32, r, {of(Kind::F32), q});
+            return r;
+        };
+        std::vector<Reg> operands;
+        for (uint32_t d = 0; d < info.dims(); ++d) operands.push_back(coordinate());
+        if (info.shadow) operands.push_back(coordinate());
+        if (info.lod != ir::TexLod::Implicit) operands.push_back(of(Kind::F32));  // lod or bias
+        if (info.lod != ir::TexLod::Explicit)
+            for (Op d : {Op::ddx, Op::ddy})
+                for (uint32_t k = 0; k < info.dims(); ++k) {
+                    Reg r = b.reg(Kind::F32);
+                    b.instr(d, Kind::F32, r, {operands[k]});
+                    operands.push_back(r);
+                }
+        const Reg block = b.range(Kind::F32, uint32_t(operands.size()));
+        for (size_t k = 0; k < operands.size(); ++k) b.mov(block + Reg(k), operands[k]);
+        Reg unit = of(Kind::I32);
+        if (pick(6)) {
+            unit = b.reg(Kind::I32);
+            b.instr(Op::uniform, Kind::I32, unit, {}, {kSamplerWords + uint32_t(pick(kSamplers))});
+        }
+        const Reg result = b.range(Kind::F32, ir::kTexResults);
+        b.instr(Op::tex, Kind::F32, result, {unit}, {block, uint32_t(operands.size()), info.encode()});
+        for (uint32_t c = 0; c < ir::kTexResults; ++c)
+            if (pick(2)) b.mov(of(Kind::F32), result + c);
     }
 
     void block(int depth, int length) {
@@ -131,14 +209,17 @@ struct Fuzzer {
                 }, [&] { b.instr(Op::iadd, Kind::I32, counter, {counter, b.ki(1)}); });
                 --loop_depth;
             } else if (depth > 0 && roll < 15) {
-                ++scope_depth;
+                // An inlined function: break and continue cannot leave it.
+                const int loops_outside = loop_depth;
+                ++scope_depth, loop_depth = 0;
                 b.scope([&] { block(depth - 1, 1 + pick(5)); });
-                --scope_depth;
+                --scope_depth, loop_depth = loops_outside;
             } else if (roll < 18) {
                 NodeKind leave = loop_depth > 0 && pick(2) ? (pick(2) ? NodeKind::Break : NodeKind::Continue)
                                  : scope_depth > 0 && pick(2) ? NodeKind::Return
                                                               : NodeKind::Discard;
-                b.if_(of(Kind::Bool), [&] { b.leaf(leave); });
+                if (leave == NodeKind::Discard && !fragment()) instr();
+                else b.if_(of(Kind::Bool), [&] { b.leaf(leave); });
             } else {
                 instr();
             }
@@ -151,41 +232,201 @@ struct Batch {
     rt::LaneMask live;
 };
 
-// Runs `shader` on `executor` for each batch; returns what it left.
-std::string run_all(rt::Executor& e, const ir::Shader& shader, const std::vector<Batch>& batches,
-                    std::vector<uint32_t>* out) {
-    std::string log;
-    for (const Batch& batch : batches) {
-        for (size_t r = 0; r < shader.regs.size(); ++r)
-            std::copy_n(batch.words.begin() + long(r * rt::kLanes), rt::kLanes, e.lanes(Reg(r)));
-        rt::RunError error;
-        bool ok = e.run(batch.live, &error);
-        log += ok ? "ok;" : error.message + "@" + std::to_string(error.line) + ";";
-        out->push_back(uint32_t(e.alive()));
-        out->push_back(uint32_t(e.alive() >> 32));
-        for (size_t r = 0; r < shader.regs.size(); ++r) out->insert(out->end(), e.lanes(Reg(r)), e.lanes(Reg(r)) + rt::kLanes);
-    }
-    return log;
+// Textures of every target, filter, wrap mode and format on units 0..4; unit
+// 5 has none. Texels are fixed pseudo-random values (outside [0, 1] in the
+// float formats).
+std::array<GLState::TextureUnit, kMaxTextureUnits> make_textures() {
+    std::mt19937 rng(0x7e47u);
+    auto image = [&](int w, int h, int d, float lo, float hi) {
+        TextureImage img{w, h, d, {}};
+        std::uniform_real_distribution<float> value(lo, hi);
+        for (int k = 0; k < w * h * d; ++k) img.texels.push_back({value(rng), value(rng), value(rng), value(rng)});
+        return img;
+    };
+    auto make = [](TextureTarget target, std::vector<TextureImage> faces, TextureFormat format, auto&& set) {
+        Result<Texture> t = Texture::create(target, std::move(faces), format);
+        REQUIRE(t.ok());
+        set(*t);
+        return std::make_shared<const Texture>(std::move(*t));
+    };
+    std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
+    auto bind = [&](int unit, std::shared_ptr<const Texture> t) { units[size_t(unit)].bound[size_t(t->target())] = t; };
+    bind(0, make(TextureTarget::Tex2D, {image(4, 4, 1, 0, 1)}, TextureFormat::RGBA8, [](Texture& t) {
+        t.generate_mipmaps();  // trilinear, repeat
+        t.sampler.min_filter = TextureFilter::LinearMipmapLinear;
+    }));
+    bind(1, make(TextureTarget::Tex2D, {image(4, 2, 1, 0, 1)}, TextureFormat::Depth, [](Texture& t) {
+        t.sampler.compare = true;  // shadow2D
+        t.sampler.min_filter = TextureFilter::Linear;
+        t.sampler.mag_filter = TextureFilter::Nearest;
+        t.sampler.wrap_s = t.sampler.wrap_t = TextureWrap::ClampToEdge;
+    }));
+    bind(1, make(TextureTarget::Tex1D, {image(4, 1, 1, 0, 1)}, TextureFormat::Depth, [](Texture& t) {
+        t.generate_mipmaps();  // shadow1D, alpha result, mipmapped
+        t.sampler.compare = true;
+        t.sampler.compare_func = CompareFunc::Greater;
+        t.sampler.depth_mode = DepthTextureMode::Alpha;
+        t.sampler.min_filter = TextureFilter::NearestMipmapNearest;
+    }));
+    bind(2, make(TextureTarget::Cube, std::vector<TextureImage>(6, image(2, 2, 1, -2, 3)), TextureFormat::RGBA32F,
+                 [](Texture& t) {
+                     t.sampler.min_filter = TextureFilter::Nearest;
+                     t.sampler.wrap_s = t.sampler.wrap_t = TextureWrap::ClampToEdge;
+                     t.sampler.lod_bias = 0.5f;
+                 }));
+    bind(2, make(TextureTarget::Tex2D, {image(3, 5, 1, 0, 1)}, TextureFormat::RGBA8, [](Texture& t) {
+        t.sampler.min_filter = t.sampler.mag_filter = TextureFilter::Nearest;  // not a power of two, GL_CLAMP
+        t.sampler.wrap_s = t.sampler.wrap_t = TextureWrap::Clamp;
+    }));
+    bind(3, make(TextureTarget::Tex3D, {image(2, 2, 2, 0, 1)}, TextureFormat::RGBA8, [](Texture& t) {
+        t.generate_mipmaps();
+        t.sampler.min_filter = TextureFilter::LinearMipmapNearest;
+        t.sampler.wrap_s = t.sampler.wrap_t = t.sampler.wrap_r = TextureWrap::MirroredRepeat;
+    }));
+    bind(4, make(TextureTarget::Tex1D, {image(8, 1, 1, -1, 2)}, TextureFormat::RGBA32F, [](Texture& t) {
+        t.generate_mipmaps();  // border colour, a clamped lod range from level 1
+        t.sampler.min_filter = TextureFilter::NearestMipmapLinear;
+        t.sampler.wrap_s = TextureWrap::ClampToBorder;
+        t.sampler.border_color = {0.25f, 0.5f, 0.75f, 1.0f};
+        t.sampler.min_lod = 0.5f, t.sampler.max_lod = 2.0f, t.sampler.base_level = 1;
+    }));
+    return units;
 }
 
-// The first word where the backends differ on `shader` (size when none).
-size_t first_difference(const ir::Shader& shader, const std::vector<uint32_t>& uniforms, const std::vector<Batch>& batches,
-                        uint64_t max_instructions, Precision precision, bool avx2, bool quick, std::string* logs,
-                        uint32_t* words) {
-    rt::ExecParams params{uniforms.data(), kLoopCap, nullptr, precision, rt::kAllFastOps};
-    params.limits.max_instructions = max_instructions;
-    auto interp = rt::compile_shader(shader, Backend::Interp, precision, params.fast_ops, avx2);
-    auto jit = rt::compile_shader(shader, Backend::Jit, precision, params.fast_ops, avx2, nullptr, quick);
-    auto a = interp->instantiate(params);
-    auto b = jit->instantiate(params);
-    REQUIRE(b->backend() == Backend::Jit);
-    std::vector<uint32_t> words_a, words_b;
-    logs[0] = run_all(*a, shader, batches, &words_a);
-    logs[1] = run_all(*b, shader, batches, &words_b);
-    size_t first = 0;
-    while (first < words_a.size() && words_a[first] == words_b[first]) ++first;
-    if (first < words_a.size()) words[0] = words_a[first], words[1] = words_b[first];
-    return first == words_a.size() ? std::string::npos : first;
+// What one backend leaves: the runs' errors, and per batch the alive mask
+// and every register's lanes.
+struct Outcome {
+    std::string log;
+    std::vector<uint32_t> words;
+};
+
+Outcome run_all(rt::Executor& e, const ir::Shader& shader, const std::vector<Batch>& batches) {
+    // Each batch sets every register but those of the prologue (a
+    // specialization's hoisted code), which it computed once for all lanes.
+    std::vector<bool> set(shader.regs.size(), true);
+    for (const ir::Node& n : shader.prologue) ir::flow::for_each_write(n.instr, [&](Reg r) { set[r] = false; });
+    Outcome out;
+    for (const Batch& batch : batches) {
+        for (size_t r = 0; r < shader.regs.size(); ++r)
+            if (set[r]) std::copy_n(batch.words.begin() + long(r * rt::kLanes), rt::kLanes, e.lanes(Reg(r)));
+        rt::RunError error;
+        bool ok = e.run(batch.live, &error);
+        out.log += ok ? "ok;" : error.message + "@" + std::to_string(error.line) + ";";
+        out.words.push_back(uint32_t(e.alive()));
+        out.words.push_back(uint32_t(e.alive() >> 32));
+        for (size_t r = 0; r < shader.regs.size(); ++r)
+            out.words.insert(out.words.end(), e.lanes(Reg(r)), e.lanes(Reg(r)) + rt::kLanes);
+    }
+    return out;
+}
+
+struct Config {
+    Precision precision;
+    bool avx2, quick;
+    uint64_t max_instructions;
+    const GLState::TextureUnit* textures;
+};
+
+Outcome run_on(const ir::Shader& shader, Backend backend, const std::vector<uint32_t>& uniforms,
+               const std::vector<Batch>& batches, const Config& c) {
+    rt::ExecParams params{uniforms.data(), kLoopCap, c.textures, c.precision, rt::kAllFastOps};
+    params.limits.max_instructions = c.max_instructions;
+    auto code = rt::compile_shader(shader, backend, c.precision, params.fast_ops, c.avx2, nullptr,
+                                   backend == Backend::Jit && c.quick);
+    auto e = code->instantiate(params);
+    REQUIRE(e->backend() == backend);
+    return run_all(*e, shader, batches);
+}
+
+std::vector<Reg> output_registers(const ir::Shader& shader) {
+    std::vector<Reg> regs;
+    for (const ir::Binding& b : shader.outputs)
+        for (uint32_t k = 0; k < b.count; ++k) regs.push_back(b.first + k);
+    return regs;
+}
+
+// `o` (every register) cut down to the outputs of `shader`.
+Outcome outputs_of(const Outcome& o, const ir::Shader& shader) {
+    const size_t per_batch = 2 + shader.regs.size() * rt::kLanes;
+    Outcome out{o.log, {}};
+    for (size_t batch = 0; batch < o.words.size() / per_batch; ++batch) {
+        auto at = o.words.begin() + long(batch * per_batch);
+        out.words.insert(out.words.end(), at, at + 2);
+        for (Reg r : output_registers(shader))
+            out.words.insert(out.words.end(), at + long(2 + r * rt::kLanes), at + long(2 + (r + 1) * rt::kLanes));
+    }
+    return out;
+}
+
+// The specialization of `shader` on `uniforms` (ExecOptions::jit_specialize_after's).
+ir::Shader specialized(const ir::Shader& shader, const std::vector<uint32_t>& uniforms, Precision precision) {
+    ir::Shader s = shader;
+    const std::string error = ir::specialize(s, uniforms, precision == Precision::Fast ? uint32_t(rt::kAllFastOps) : 0u);
+    INFO(error);
+    REQUIRE(error.empty());
+    return s;
+}
+
+// The first difference of one program in one configuration: the JIT
+// against the interpreter on every register; specialized, the JIT's code of
+// the specialization against the interpreter's on every register, and the
+// interpreter's against its unspecialized run on the outputs.
+std::string first_difference(const ir::Shader& shader, bool specialize, const std::vector<uint32_t>& uniforms,
+                             const std::vector<Batch>& batches, const Config& c, std::string* log) {
+    auto differ = [&](const char* what, const Outcome& a, const Outcome& b, const ir::Shader& sh, bool outputs) {
+        if (a.log != b.log) return std::string(what) + ": the runs end differently: " + a.log + " vs " + b.log;
+        size_t first = 0;
+        while (first < a.words.size() && a.words[first] == b.words[first]) ++first;
+        if (first == a.words.size()) return std::string();
+        std::vector<Reg> regs = output_registers(sh);
+        if (!outputs) {
+            regs.resize(sh.regs.size());
+            for (size_t r = 0; r < regs.size(); ++r) regs[r] = Reg(r);
+        }
+        const size_t per_batch = 2 + regs.size() * rt::kLanes, word = first % per_batch;
+        std::ostringstream out;
+        out << what << ": batch " << first / per_batch << ", "
+            << (word < 2 ? std::string("alive mask")
+                         : "register %" + std::to_string(regs[(word - 2) / rt::kLanes]) + " lane " +
+                               std::to_string((word - 2) % rt::kLanes))
+            << ": " << std::hex << a.words[first] << " vs " << b.words[first];
+        return out.str();
+    };
+    const Outcome interp = run_on(shader, Backend::Interp, uniforms, batches, c);
+    *log = interp.log;
+    std::string d = differ("interpreter vs JIT", interp, run_on(shader, Backend::Jit, uniforms, batches, c), shader, false);
+    if (!d.empty() || !specialize) return d;
+    const ir::Shader s = specialized(shader, uniforms, c.precision);
+    const Outcome s_interp = run_on(s, Backend::Interp, uniforms, batches, c);
+    d = differ("specialized interpreter vs specialized JIT", s_interp, run_on(s, Backend::Jit, uniforms, batches, c), s,
+               false);
+    if (!d.empty()) return d;
+    return differ("interpreter vs specialized interpreter, outputs", outputs_of(interp, shader),
+                  outputs_of(s_interp, s), shader, true);
+}
+
+// Alone, a program is cut down to the top-level node after which the
+// backends differ: "" when the whole program agrees.
+template <class Differs>
+std::string cut_down(ir::Shader& shader, const std::vector<Batch>& batches, Differs&& differs) {
+    ir::Block body = shader.body;
+    std::string where;
+    for (size_t n = 1; n <= body.size(); ++n) {
+        shader.body.assign(body.begin(), body.begin() + long(n));
+        if (!differs(shader)) continue;
+        where = "\nthe first " + std::to_string(n) + " nodes differ:\n" + ir::print(shader) + "unmasked:";
+        std::function<void(const ir::Block&)> list = [&](const ir::Block& block) {
+            for (const ir::Node& node : block) {
+                if (node.kind == NodeKind::Instr && node.instr.unmasked) where += " %" + std::to_string(node.instr.dst);
+                list(node.body), list(node.alt);
+            }
+        };
+        list(shader.body);
+        for (const Batch& batch : batches) where += "\nlive " + std::to_string(batch.live);
+        break;
+    }
+    shader.body = body;
+    return where;
 }
 
 }  // namespace
@@ -197,15 +438,28 @@ TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fu
     int first_program = 0;
     if (const char* one = std::getenv("GLSLRUN_FUZZ_PROGRAM")) first_program = std::atoi(one), programs = 1;
     const bool avx2 = rt::cpu_has_avx2();
-    int compared = 0, over_budget = 0;
+    const auto textures = make_textures();
+    int compared = 0, over_budget = 0, specialized_runs = 0, vertex = 0;
     for (int p = first_program; p < first_program + programs && jit_available(); ++p) {
-        Fuzzer fz(0x5eed0000u + uint32_t(p));
+        const ir::Stage stage = p % 3 == 2 ? ir::Stage::Vertex : ir::Stage::Fragment;
+        const bool specialize = p % 4 == 2;
+        Fuzzer fz(0x5eed0000u + uint32_t(p), stage);
+        fz.specializing = specialize;
         fz.block(3, 30);
         ir::Shader& shader = fz.b.sh;
-        // Every other program has a small instruction budget, which some batches exhaust.
+        INFO("program " << p);
+        REQUIRE(ir::verify(shader) == "");
+        vertex += stage == ir::Stage::Vertex;
+        // Every other program has a small instruction budget, which some
+        // batches exhaust; specialization changes the count, so a quarter
+        // of the others run specialized.
         const uint64_t max_instructions = p % 2 ? uint64_t(20 + fz.pick(400)) : ExecOptions{}.max_instructions;
-        std::vector<uint32_t> uniforms(32);
+        std::vector<uint32_t> uniforms(kUniformWords);
         for (uint32_t& u : uniforms) u = fz.special_word(fz.any_kind());
+        for (uint32_t k = 0; k < kSamplers; ++k) {
+            static const int32_t units[] = {0, 1, 2, 3, 4, 5, -1, kMaxTextureUnits};
+            uniforms[kSamplerWords + k] = uint32_t(units[fz.pick(fz.pick(4) ? 5 : 8)]);
+        }
         std::vector<Batch> batches(kBatches);
         for (Batch& batch : batches) {
             for (size_t r = 0; r < shader.regs.size(); ++r)
@@ -217,46 +471,25 @@ TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fu
                 // Baseline, AVX2, and (Precise only) quick code generation for this CPU.
                 const bool isa = config == 1 || (config == 2 && avx2), quick = config == 2;
                 if ((config == 1 && !avx2) || (quick && precision != Precision::Precise)) continue;
-                INFO("program " << p << ", " << precision_name(precision) << (isa ? ", avx2" : ", baseline")
-                                << (quick ? ", quick codegen" : ""));
-                std::string logs[2];
-                uint32_t words[2];
-                size_t first = first_difference(shader, uniforms, batches, max_instructions, precision, isa, quick, logs, words);
-                REQUIRE(logs[0] == logs[1]);
-                over_budget += logs[0].find("instructions in one batch") != std::string::npos;
-                if (first != std::string::npos) {
-                    // Alone, the program is cut down to the top-level node after which the backends differ.
+                INFO(precision_name(precision) << (isa ? ", avx2" : ", baseline") << (quick ? ", quick codegen" : ""));
+                const Config c{precision, isa, quick, max_instructions, textures.data()};
+                std::string log;
+                const std::string difference = first_difference(shader, specialize, uniforms, batches, c, &log);
+                if (!difference.empty()) {
                     std::string where;
-                    if (programs == 1) {
-                        ir::Block body = shader.body;
-                        for (size_t n = 1; n <= body.size(); ++n) {
-                            shader.body.assign(body.begin(), body.begin() + long(n));
-                            if (first_difference(shader, uniforms, batches, max_instructions, precision, isa, quick, logs, words) != std::string::npos) {
-                                where = "\nthe first " + std::to_string(n) + " nodes differ:\n" + ir::print(shader);
-                                where += "unmasked:";
-                                std::function<void(const ir::Block&)> list = [&](const ir::Block& block) {
-                                    for (const ir::Node& node : block) {
-                                        if (node.kind == NodeKind::Instr && node.instr.unmasked) where += " %" + std::to_string(node.instr.dst);
-                                        list(node.body), list(node.alt);
-                                    }
-                                };
-                                list(shader.body);
-                                for (const Batch& batch : batches) where += "\nlive " + std::to_string(batch.live);
-                                break;
-                            }
-                        }
-                        shader.body = body;
-                    }
-                    const size_t per_batch = 2 + shader.regs.size() * rt::kLanes, word = first % per_batch;
-                    FAIL("batch " << first / per_batch << ", "
-                                  << (word < 2 ? std::string("alive mask")
-                                               : "register %" + std::to_string((word - 2) / rt::kLanes) + " lane " +
-                                                     std::to_string((word - 2) % rt::kLanes))
-                                  << ": interpreter " << std::hex << words[0] << ", JIT " << words[1] << std::dec << where);
+                    if (programs == 1)
+                        where = cut_down(shader, batches, [&](const ir::Shader& sh) {
+                            std::string l;
+                            return !first_difference(sh, specialize, uniforms, batches, c, &l).empty();
+                        });
+                    FAIL(difference << where);
                 }
+                over_budget += log.find("instructions in one batch") != std::string::npos;
                 ++compared;
+                specialized_runs += specialize;
             }
     }
-    WARN(compared << " program runs compared, " << over_budget << " stopped by the instruction budget");
+    WARN(compared << " program runs compared (" << specialized_runs << " also specialized; " << vertex
+                  << " vertex programs), " << over_budget << " stopped by the instruction budget");
     CHECK((compared > 0 || !jit_available()));
 }

@@ -1,0 +1,61 @@
+// The token budgets of frontend/token_budget.h: the glslang functions that
+// ld's --wrap (CMakeLists.txt) redirects here count against the scope active
+// on the thread and, past a budget, return the end of the input or drop the
+// token.
+// No glslang code changes; the ABI is that of the installed headers
+// (glslang/MachineIndependent/preprocessor/PpContext.h, Scan.h).
+#include "frontend/token_budget.h"
+
+namespace {
+
+constexpr int kEndOfInput = -1;  // glslang's EndOfInput (Scan.h)
+constexpr int kParserEnd = 0;    // what yylex returns at the end of the input (bison's YYEOF)
+
+thread_local glslrun::frontend::TokenBudgetScope::Counts* active = nullptr;
+
+// Counts one token of the active scope's `used` against `budget`: false
+// once past either budget.
+bool spend(uint64_t& used, uint64_t budget) {
+    if (++used > budget) active->exceeded = true;
+    return !active->exceeded;
+}
+
+}  // namespace
+
+extern "C" {
+// int yylex(YYSTYPE*, glslang::TParseContext&): the parser's next token.
+int __real__Z5yylexP7YYSTYPERN7glslang13TParseContextE(void* value, void* context);
+int __wrap__Z5yylexP7YYSTYPERN7glslang13TParseContextE(void* value, void* context) {
+    if (active && !spend(active->parser, glslrun::frontend::kMaxParserTokens)) return kParserEnd;
+    return __real__Z5yylexP7YYSTYPERN7glslang13TParseContextE(value, context);
+}
+
+// int TPpContext::TokenStream::getToken(TParseContextBase&, TPpToken*): the
+// next token of a macro body (the calls from Pp.cpp; glslang's own file
+// reads expanded arguments without passing here).
+int __real__ZN7glslang10TPpContext11TokenStream8getTokenERNS_17TParseContextBaseEPNS_8TPpTokenE(void* self,
+                                                                                                void* context,
+                                                                                                void* token);
+int __wrap__ZN7glslang10TPpContext11TokenStream8getTokenERNS_17TParseContextBaseEPNS_8TPpTokenE(void* self,
+                                                                                                void* context,
+                                                                                                void* token) {
+    if (active && !spend(active->macro, glslrun::frontend::kMaxMacroTokens)) return kEndOfInput;
+    return __real__ZN7glslang10TPpContext11TokenStream8getTokenERNS_17TParseContextBaseEPNS_8TPpTokenE(self, context,
+                                                                                                       token);
+}
+
+// void TPpContext::TokenStream::putToken(int, TPpToken*): a token stored in
+// a macro body or an expanded argument. Past the budget it is dropped.
+void __real__ZN7glslang10TPpContext11TokenStream8putTokenEiPNS_8TPpTokenE(void* self, int token, void* pp_token);
+void __wrap__ZN7glslang10TPpContext11TokenStream8putTokenEiPNS_8TPpTokenE(void* self, int token, void* pp_token) {
+    if (active && !spend(active->macro, glslrun::frontend::kMaxMacroTokens)) return;
+    __real__ZN7glslang10TPpContext11TokenStream8putTokenEiPNS_8TPpTokenE(self, token, pp_token);
+}
+}
+
+namespace glslrun::frontend {
+
+TokenBudgetScope::TokenBudgetScope() : saved_(active) { active = &counts_; }
+TokenBudgetScope::~TokenBudgetScope() { active = saved_; }
+
+}  // namespace glslrun::frontend
