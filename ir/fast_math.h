@@ -123,8 +123,12 @@ inline float log(float x) { return log2(x) * 0.693147181f; }
 
 // llvmpipe's pow: exp2(y * log2 x), 0 where x = 0 (lp_build_pow) and where x
 // is NaN (measured on llvmpipe, docs/extremes.md).
+// y * log2 x with both NaN (y NaN, x < 0) is y's NaN, quieted, chosen here:
+// x86 returns the first operand's NaN, and GCC and clang order the operands
+// differently (runtime/jit/math.cpp's fast_pow picks the same).
 inline float pow(float x, float y) {
-    const float r = exp2(y * log2(x));
+    const float quiet_y = std::bit_cast<float>(std::bit_cast<uint32_t>(y) | 0x00400000u);
+    const float r = exp2(std::isnan(y) ? quiet_y : y * log2(x));
     return x == 0.0f || std::isnan(x) ? 0.0f : r;
 }
 

@@ -317,9 +317,9 @@ Value* MathEmitter::fast_log2(Value* x) {
 
 // fast::pow
 Value* MathEmitter::fast_pow(Value* x, Value* y) {
-    // y * log2(x) with both NaN (y NaN, x < 0): GCC's kernels return y's
-    // NaN, quieted, in both ISAs; LLVM may swap the operands, so the NaN is
-    // picked explicitly (tests/runtime/jit_math_test.cpp checks the pairs).
+    // y * log2(x) with both NaN (y NaN, x < 0) is y's NaN, quieted, picked
+    // explicitly as fast::pow picks it: LLVM, like the C++ compilers, may
+    // swap the operands (tests/runtime/jit_math_test.cpp checks the pairs).
     Value* quiet_y = as_float(b_.CreateOr(as_int(y), i32(0x00400000u)));
     Value* r = fast_exp2(sel(is_nan(y), quiet_y, b_.CreateFMul(y, fast_log2(x))));
     return sel(b_.CreateOr(b_.CreateFCmpOEQ(x, f(0.0f)), is_nan(x)), f(0.0f), r);
