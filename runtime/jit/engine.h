@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <string>
 
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
@@ -31,8 +32,38 @@ struct Engine {
     // Null where LLVM could not make it. `quick`: ExecOptions::jit_quick_codegen.
     static Engine* of(bool avx2, bool quick);
 
+    // A new module for this engine's target, in a context of its own; its
+    // functions' names end with `suffix`. Under `lock`.
+    struct NewModule {
+        std::unique_ptr<llvm::LLVMContext> context;
+        std::unique_ptr<llvm::Module> module;
+        std::string suffix;
+    };
+    NewModule new_module(const char* name);
+
 private:
     void make(llvm::orc::JITTargetMachineBuilder target);
+};
+
+// One module's code in an Engine's LLJIT; the code goes when this does.
+// Its destructor takes the engine's lock, so an owner is made before the
+// lock is taken and never destroyed under it.
+class EngineCode {
+public:
+    EngineCode() = default;
+    EngineCode(const EngineCode&) = delete;
+    EngineCode& operator=(const EngineCode&) = delete;
+    ~EngineCode();
+    // Adds `made` (verified and optimised) to `engine`'s LLJIT, under its
+    // lock; false where LLVM failed.
+    bool add(Engine& engine, Engine::NewModule made);
+    // The address of the module's function `name`; null where absent.
+    void* lookup(const std::string& name) const;
+
+private:
+    Engine* engine_ = nullptr;
+    llvm::orc::ResourceTrackerSP tracker_;
+    std::string suffix_;
 };
 
 // LLVM's native target, registered once per process.

@@ -113,6 +113,38 @@ Engine* Engine::of(bool avx2, bool quick) {
     return e.jit ? &e : nullptr;
 }
 
+Engine::NewModule Engine::new_module(const char* name) {
+    NewModule made{std::make_unique<llvm::LLVMContext>(), nullptr, "_" + std::to_string(modules++)};
+    made.module = std::make_unique<llvm::Module>(name, *made.context);
+    made.module->setDataLayout(machine->createDataLayout());
+    made.module->setTargetTriple(machine->getTargetTriple().str());
+    return made;
+}
+
+EngineCode::~EngineCode() {
+    if (!tracker_) return;
+    std::lock_guard hold(engine_->lock);
+    llvm::consumeError(tracker_->remove());
+}
+
+bool EngineCode::add(Engine& engine, Engine::NewModule made) {
+    engine_ = &engine;
+    suffix_ = std::move(made.suffix);
+    tracker_ = engine.jit->getMainJITDylib().createResourceTracker();
+    auto err = engine.jit->addIRModule(tracker_, llvm::orc::ThreadSafeModule(std::move(made.module),
+                                                                             std::move(made.context)));
+    if (!err) return true;
+    llvm::consumeError(std::move(err));
+    return false;
+}
+
+void* EngineCode::lookup(const std::string& name) const {
+    auto symbol = engine_->jit->lookup(name + suffix_);
+    if (symbol) return symbol->toPtr<void*>();
+    llvm::consumeError(symbol.takeError());
+    return nullptr;
+}
+
 void Engine::make(llvm::orc::JITTargetMachineBuilder target) {
     initialise_llvm();
     auto tm = target.createTargetMachine();
@@ -168,13 +200,7 @@ namespace {
 
 class JitShader final : public CompiledShader {
 public:
-    ~JitShader() override {
-        if (!tracker) return;
-        std::lock_guard hold(engine->lock);
-        llvm::consumeError(tracker->remove());
-    }
-    Engine* engine = nullptr;
-    llvm::orc::ResourceTrackerSP tracker;  // this shader's code in the engine's LLJIT
+    EngineCode code;  // this shader's functions in the engine's LLJIT
     std::vector<CallOut> call_outs;  // the generated code calls the i-th by its index
     ShaderFn main = nullptr, prologue = nullptr;
     uint32_t reg_count = 0;
@@ -242,39 +268,23 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     std::lock_guard hold(engine->lock);
     code->reg_count = uint32_t(shader.regs.size());
 
-    auto context = std::make_unique<llvm::LLVMContext>();
-    auto module = std::make_unique<llvm::Module>("shader", *context);
-    module->setDataLayout(engine->machine->createDataLayout());
-    module->setTargetTriple(engine->machine->getTargetTriple().str());
-    const std::string suffix = "_" + std::to_string(engine->modules++);
+    Engine::NewModule made = engine->new_module("shader");
+    llvm::Module& module = *made.module;
     {
-        Emitter emitter(*context, *module, shader, precision, fast_ops, avx2, code->call_outs);
-        emitter.define("glslrun_main" + suffix, shader.body);
-        emitter.define("glslrun_prologue" + suffix, shader.prologue);
+        Emitter emitter(*made.context, module, shader, precision, fast_ops, avx2, code->call_outs);
+        emitter.define("glslrun_main" + made.suffix, shader.body);
+        emitter.define("glslrun_prologue" + made.suffix, shader.prologue);
     }
-    if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
+    if (llvm::verifyModule(module, &llvm::errs())) return nullptr;
     // GLSLRUN_JIT_DUMP=1 prints the module before and after optimization (a debugging aid).
     const bool dump = std::getenv("GLSLRUN_JIT_DUMP") != nullptr;
-    if (dump) module->print(llvm::errs(), nullptr);
-    optimise(*module, *engine->machine);
-    if (dump) module->print(llvm::errs(), nullptr);
-
-    llvm::orc::JITDylib& dylib = engine->jit->getMainJITDylib();
-    code->engine = engine;
-    code->tracker = dylib.createResourceTracker();
-    if (auto err = engine->jit->addIRModule(code->tracker,
-                                            llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
-        llvm::consumeError(std::move(err));
-        return nullptr;
-    }
-    for (auto [name, fn] : {std::pair{"glslrun_main", &code->main}, std::pair{"glslrun_prologue", &code->prologue}}) {
-        auto symbol = engine->jit->lookup(name + suffix);
-        if (!symbol) {
-            llvm::consumeError(symbol.takeError());
-            return nullptr;
-        }
-        *fn = symbol->toPtr<ShaderFn>();
-    }
+    if (dump) module.print(llvm::errs(), nullptr);
+    optimise(module, *engine->machine);
+    if (dump) module.print(llvm::errs(), nullptr);
+    if (!code->code.add(*engine, std::move(made))) return nullptr;
+    code->main = reinterpret_cast<ShaderFn>(code->code.lookup("glslrun_main"));
+    code->prologue = reinterpret_cast<ShaderFn>(code->code.lookup("glslrun_prologue"));
+    if (!code->main || !code->prologue) return nullptr;
     if (stats) stats->seconds = thread_cpu_seconds() - start;
     return code;
 }

@@ -544,13 +544,7 @@ void PipelineEmitter::define_outputs() {
 // The pipeline's code in the process's LLJIT (engine.h), removed with it.
 class CompiledPipeline final : public FragmentPipeline {
 public:
-    ~CompiledPipeline() override {
-        if (!tracker) return;
-        std::lock_guard hold(engine->lock);
-        llvm::consumeError(tracker->remove());
-    }
-    Engine* engine = nullptr;
-    llvm::orc::ResourceTrackerSP tracker;
+    EngineCode code;
 };
 
 }  // namespace
@@ -562,13 +556,9 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
     if (!engine) return nullptr;
     auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);
-    auto context = std::make_unique<llvm::LLVMContext>();
-    auto module = std::make_unique<llvm::Module>("pipeline", *context);
-    module->setDataLayout(engine->machine->createDataLayout());
-    module->setTargetTriple(engine->machine->getTargetTriple().str());
-    const std::string suffix = "_" + std::to_string(engine->modules++);
+    Engine::NewModule made = engine->new_module("pipeline");
     {
-        PipelineEmitter emitter(*context, *module, key, layout, suffix);
+        PipelineEmitter emitter(*made.context, *made.module, key, layout, made.suffix);
         if (key.early_depth) {
             emitter.define_quad_depth();
             emitter.define_square_depth();
@@ -576,27 +566,16 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
         emitter.define_inputs();
         emitter.define_outputs();
     }
-    if (llvm::verifyModule(*module, &llvm::errs())) return nullptr;
-    optimise(*module, *engine->machine);
-    code->engine = engine;
-    code->tracker = engine->jit->getMainJITDylib().createResourceTracker();
-    if (auto err = engine->jit->addIRModule(code->tracker,
-                                            llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
-        llvm::consumeError(std::move(err));
-        return nullptr;
-    }
-    auto lookup = [&](const char* name) -> void* {
-        auto symbol = engine->jit->lookup(name + suffix);
-        if (symbol) return symbol->toPtr<void*>();
-        llvm::consumeError(symbol.takeError());
-        return nullptr;
-    };
+    if (llvm::verifyModule(*made.module, &llvm::errs())) return nullptr;
+    optimise(*made.module, *engine->machine);
+    if (!code->code.add(*engine, std::move(made))) return nullptr;
     if (key.early_depth) {
-        code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(lookup("glslrun_quad_depth"));
-        code->square_depth = reinterpret_cast<FragmentPipeline::SquareDepthFn>(lookup("glslrun_square_depth"));
+        code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(code->code.lookup("glslrun_quad_depth"));
+        code->square_depth =
+            reinterpret_cast<FragmentPipeline::SquareDepthFn>(code->code.lookup("glslrun_square_depth"));
     }
-    code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(lookup("glslrun_inputs"));
-    code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(lookup("glslrun_outputs"));
+    code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(code->code.lookup("glslrun_inputs"));
+    code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(code->code.lookup("glslrun_outputs"));
     if (!code->inputs || !code->outputs || (key.early_depth && (!code->quad_depth || !code->square_depth)))
         return nullptr;
     if (seconds) *seconds = thread_cpu_seconds() - start;
