@@ -42,16 +42,17 @@ inline double ftz(double a) { return a; }
 
 // T is float, or double in Precision::Reference (ir/alu_eval.h).
 //
-// `r`, an a + b or a * b, with a's NaN when a is one. x86 returns the first
-// source operand's NaN when both operands are NaNs, but compilers commute +
-// and * freely (GCC in the interpreter's kernels, differently per ISA; LLVM
-// in the JIT), so those ops say which NaN they return: a itself (the
-// cheapest rule to generate code for). A NaN b passes through as before.
+// `r`, an a + b or a * b, with a's NaN (quieted) when a is one. x86 returns
+// the first source operand's NaN when both operands are NaNs, but compilers
+// commute + and * freely (GCC in the interpreter's kernels, differently per
+// ISA), so those ops say which NaN they return: the CPU's own rule with a
+// first, which the JIT gets from one instruction that LLVM cannot commute
+// (runtime/jit/alu.cpp). A NaN b passes through, quieted, as before.
 // (The passes still treat + and * as commutative: ir/copyprop.cpp,
 // ir/fuse_mad.cpp; that may pick the other of two NaNs, the same for both
 // backends, which run the same IR.)
 template <class T>
-T a_nan_first(T a, T r) { return a != a ? a : r; }
+T a_nan_first(T a, T r) { return a != a ? a + a : r; }
 template <class T>
 T glsl_mad(T a, T b, T c) {
     const T p = a_nan_first(a, a * b);

@@ -39,7 +39,7 @@ const ir::Binding* find_binding(const std::vector<ir::Binding>& list, std::initi
 
 Plane to_plane(double a, double b, double c) { return {float(a), float(b), float(c)}; }
 
-// a + b and a * b naming a's NaN (a itself) when a is one (ir::a_nan_first),
+// a + b and a * b naming a's NaN (quieted) when a is one (ir::a_nan_first),
 // whatever order the compiler gives the operands: the fused pipeline
 // (runtime/jit/pipeline.cpp) computes the same expressions with the same rule.
 QuadF add(QuadF a, QuadF b) { return ir::a_nan_first(a, a + b); }

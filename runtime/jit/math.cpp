@@ -377,7 +377,7 @@ Value* MathEmitter::precise_op(Op op, Value* a, Value* b) {
 Value* MathEmitter::fast_op(Op op, Value* a, Value* b) {
     switch (op) {
     case Op::frsqrt: case Op::fsqrt_divisor: return ftz(fast_rsqrt(a));
-    case Op::fdiv_by_sqrt: return ftz(sel(is_nan(a), a, b_.CreateFMul(a, b)));  // ir::a_nan_first
+    case Op::fdiv_by_sqrt: return ftz(sel(is_nan(a), b_.CreateFAdd(a, a), b_.CreateFMul(a, b)));  // ir::a_nan_first
     case Op::fexp2: return ftz(fast_exp2(ftz(a)));
     case Op::fexp: return ftz(fast_exp2(b_.CreateFMul(ftz(a), f(1.44269504f))));
     case Op::flog2: return ftz(fast_log2(ftz(a)));

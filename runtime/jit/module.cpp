@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <mutex>
 
+#include <llvm/ExecutionEngine/JITEventListener.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
+#include <llvm/ExecutionEngine/Orc/RTDyldObjectLinkingLayer.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
@@ -35,6 +37,7 @@ void initialise_llvm() {
     std::call_once(once, [] {
         llvm::InitializeNativeTarget();
         llvm::InitializeNativeTargetAsmPrinter();
+        llvm::InitializeNativeTargetAsmParser();  // the ops written as x86 instructions (alu.cpp)
     });
 }
 
@@ -162,6 +165,9 @@ void Engine::make(llvm::orc::JITTargetMachineBuilder target) {
         return;
     }
     (*built)->getMainJITDylib().addGenerator(std::move(*process));
+    if (std::getenv("GLSLRUN_JIT_PERF"))
+        if (auto* rtdyld = llvm::dyn_cast<llvm::orc::RTDyldObjectLinkingLayer>(&(*built)->getObjLinkingLayer()))
+            rtdyld->registerJITEventListener(*llvm::JITEventListener::createPerfJITEventListener());
     machine = std::move(*tm);
     jit = std::move(*built);
 }

@@ -67,11 +67,11 @@ private:
                                                                                      uint32_t(v[2]), uint32_t(v[3])});
     }
     llvm::Value* splat_f(float v) { return llvm::ConstantFP::get(v4f_, v); }
-    // a + b and a * b returning a's NaN when a is one (a itself, as
+    // a + b and a * b returning a's NaN (quieted) when a is one (as
     // ir::a_nan_first and raster/fragments.cpp's add() and mul()). Without strict_, plain: exact where every NaN is
     // the CPU's default NaN (made by the arithmetic, none in the inputs).
     llvm::Value* a_nan_first(llvm::Value* a, llvm::Value* r) {
-        return b_.CreateSelect(b_.CreateFCmpUNO(a, a), a, r);
+        return b_.CreateSelect(b_.CreateFCmpUNO(a, a), b_.CreateFAdd(a, a), r);
     }
     llvm::Value* add(llvm::Value* a, llvm::Value* b) {
         return strict_ ? a_nan_first(a, b_.CreateFAdd(a, b)) : b_.CreateFAdd(a, b);

@@ -12,8 +12,10 @@ using namespace glslrun::test;
 
 TEST_CASE("backends return the same NaN for NaN operands", "[runtime][backend][nan]") {
     if (!jit_available()) return;
-    const uint32_t words[] = {0x7fc00000u, 0xffc00000u, 0x7fc01234u, 0xffd00001u, bits(1.0f), bits(-0.0f),
-                              0x7f800000u, 0xff800000u};
+    // Quiet NaNs, signalling ones (an op returns them quieted), numbers.
+    const uint32_t words[] = {0x7fc00000u, 0xffc00000u, 0x7fc01234u, 0xffd00001u, 0x7fa00001u, 0xff800123u,
+                              bits(1.0f),  bits(-0.0f), 0x7f800000u, 0xff800000u};
+    constexpr int n = int(std::size(words));
     const Op ops[] = {Op::fadd, Op::fsub, Op::fmul, Op::fdiv, Op::fmod, Op::fmin, Op::fmax, Op::fmad, Op::fmsub,
                       Op::fnmadd, Op::ffract, Op::fdiv_by_sqrt, Op::fneg, Op::fabs, Op::fsqrt, Op::ddx, Op::ddy};
     for (Op op : ops)
@@ -29,13 +31,13 @@ TEST_CASE("backends return the same NaN for NaN operands", "[runtime][backend][n
                 auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);
                 auto jit = rt::compile_shader(b.sh, Backend::Jit, precision, params.fast_ops, avx2);
                 auto ia = interp->instantiate(params), ja = jit->instantiate(params);
-                for (int k = 0; k < 8 * 8 * 8; k += rt::kLanes) {
+                for (int k = 0; k < n * n * n; k += rt::kLanes) {
                     for (rt::Executor* e : {ia.get(), ja.get()})
                         for (int lane = 0; lane < rt::kLanes; ++lane) {
-                            const int c = (k + lane) % (8 * 8 * 8);
-                            e->lanes(x)[lane] = words[c % 8];
-                            e->lanes(y)[lane] = words[c / 8 % 8];
-                            e->lanes(z)[lane] = words[c / 64];
+                            const int c = (k + lane) % (n * n * n);
+                            e->lanes(x)[lane] = words[c % n];
+                            e->lanes(y)[lane] = words[c / n % n];
+                            e->lanes(z)[lane] = words[c / (n * n)];
                         }
                     REQUIRE(ia->run(rt::kAllLanes, nullptr));
                     REQUIRE(ja->run(rt::kAllLanes, nullptr));
