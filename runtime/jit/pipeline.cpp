@@ -61,12 +61,15 @@ private:
     llvm::Value* at(llvm::Value* base, uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(i8_, base, offset); }
     llvm::Value* load_f(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(f32_, at(base, offset)); }
     llvm::Value* load_i(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(i32_, at(base, offset)); }
-    llvm::Value* splat(llvm::Value* v) { return b_.CreateVectorSplat(4, v); }
+    // Values of a quad's lanes, or of two quads' (width_ 8).
+    llvm::FixedVectorType* vf() { return llvm::FixedVectorType::get(f32_, width_); }
+    llvm::Value* splat(llvm::Value* v) { return b_.CreateVectorSplat(width_, v); }
     llvm::Value* lanes_i(const int (&v)[4]) {
-        return llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{uint32_t(v[0]), uint32_t(v[1]),
-                                                                                     uint32_t(v[2]), uint32_t(v[3])});
+        std::vector<uint32_t> lanes;
+        for (unsigned i = 0; i < width_; ++i) lanes.push_back(uint32_t(v[i % 4]));
+        return llvm::ConstantDataVector::get(b_.getContext(), lanes);
     }
-    llvm::Value* splat_f(float v) { return llvm::ConstantFP::get(v4f_, v); }
+    llvm::Value* splat_f(float v) { return llvm::ConstantFP::get(vf(), v); }
     // a + b and a * b returning a's NaN (quieted) when a is one (as
     // ir::a_nan_first and raster/fragments.cpp's add() and mul()). Without strict_, plain: exact where every NaN is
     // the CPU's default NaN (made by the arithmetic, none in the inputs).
@@ -82,7 +85,8 @@ private:
     llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
     // then()'s value where `condition` holds, else `otherwise`: a branch and a phi.
     llvm::Value* if_then(llvm::Value* condition, llvm::Value* otherwise, const std::function<llvm::Value*()>& then);
-    Quad quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y);
+    // One quad at (x[0], y[0]), or two of one primitive (width_ 8).
+    Quad quad(llvm::Value* prim, llvm::ArrayRef<llvm::Value*> x, llvm::ArrayRef<llvm::Value*> y);
     llvm::Value* plane(const Quad& q, uint64_t offset);
     llvm::Value* clamp01(llvm::Value* v);
     // The window depth: its plane is not among nan_inputs(), so always strict.
@@ -102,6 +106,12 @@ private:
     llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     void for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value* index, const Quad& q)>& body);
+    // define_inputs()'s registers and its last primitive's NaN test.
+    struct InputsState {
+        std::vector<llvm::Value*> regs;
+        llvm::AllocaInst *last_prim, *last_nan;
+    };
+    void store_inputs(const InputsState& state, llvm::Value* index, const Quad& q);
     // A quad's depth and colour values to store.
     struct QuadValues {
         llvm::Value* z;
@@ -130,6 +140,7 @@ private:
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
+    unsigned width_ = 4;   // lanes per vector: one quad, or two in the inputs' pairs
 };
 
 llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
@@ -157,12 +168,18 @@ llvm::Value* PipelineEmitter::if_then(llvm::Value* condition, llvm::Value* other
     return merged;
 }
 
-PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::Value* x, llvm::Value* y) {
+PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::ArrayRef<llvm::Value*> x,
+                                            llvm::ArrayRef<llvm::Value*> y) {
+    auto per_quad = [&](llvm::ArrayRef<llvm::Value*> v) {
+        llvm::Value* lanes = llvm::PoisonValue::get(llvm::FixedVectorType::get(i32_, width_));
+        for (unsigned i = 0; i < width_; ++i) lanes = b_.CreateInsertElement(lanes, v[i / 4], uint64_t(i));
+        return lanes;
+    };
     Quad q{prim, nullptr, nullptr, nullptr, nullptr};
-    q.px = b_.CreateAdd(splat(x), lanes_i(kDx));
-    q.py = b_.CreateAdd(splat(y), lanes_i(kDy));
-    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, layout_.ox))), v4f_);
-    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, layout_.oy))), v4f_);
+    q.px = b_.CreateAdd(per_quad(x), lanes_i(kDx));
+    q.py = b_.CreateAdd(per_quad(y), lanes_i(kDy));
+    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, layout_.ox))), vf());
+    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, layout_.oy))), vf());
     return q;
 }
 
@@ -237,8 +254,8 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
     }
     case InputSource::FragCoord:
         switch (in.index) {
-        case 0: return b_.CreateFAdd(b_.CreateSIToFP(q.px, v4f_), splat_f(0.5f));
-        case 1: return b_.CreateFAdd(b_.CreateSIToFP(q.py, v4f_), splat_f(0.5f));
+        case 0: return b_.CreateFAdd(b_.CreateSIToFP(q.px, vf()), splat_f(0.5f));
+        case 1: return b_.CreateFAdd(b_.CreateSIToFP(q.py, vf()), splat_f(0.5f));
         case 2: return quad_depth(q);
         default: return w.inv_w;
         }
@@ -253,7 +270,7 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
         llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
         llvm::Value* size = splat(load_f(q.prim, layout_.point_size));
         llvm::Value* centre = splat(load_f(q.prim, layout_.point_center + (in.index == 0 ? 0 : 4)));
-        llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, v4f_), splat_f(0.5f));
+        llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf()), splat_f(0.5f));
         llvm::Value* offset = b_.CreateFDiv(b_.CreateFSub(pixel, centre), size);
         llvm::Value* value =
             in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
@@ -368,59 +385,105 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const std::function<void
     auto field = [&](size_t offset, llvm::Type* type) {
         return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), index64));
     };
-    body(index64, quad(field(offsetof(QuadBatch, prim), ptr_), field(offsetof(QuadBatch, x), i32_),
-                       field(offsetof(QuadBatch, y), i32_)));
+    body(index64, quad(field(offsetof(QuadBatch, prim), ptr_), {field(offsetof(QuadBatch, x), i32_)},
+                       {field(offsetof(QuadBatch, y), i32_)}));
     llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
     index->addIncoming(next, b_.GetInsertBlock());
     b_.CreateCondBr(b_.CreateICmpSLT(next, quads), loop, done);
     b_.SetInsertPoint(done);
 }
 
-// inputs(batch, regs): FragmentStage::fill_inputs.
+// inputs(batch, regs): FragmentStage::fill_inputs. Two quads of one
+// primitive (the common case: a batch's quads come several from one
+// triangle) are interpolated together, 8 lanes a vector: the same
+// operations per lane, half the instructions.
 void PipelineEmitter::define_inputs() {
     begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
+    llvm::Value* batch = fn_->getArg(0);
     std::vector<llvm::Value*> regs;
     for (size_t i = 0; i < key_.inputs.size(); ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), i * 8)));
-    // The last quad's primitive and whether it has NaN inputs: a batch's
-    // quads mostly come several from one primitive, and the test loads all
-    // its interpolated values. Slots in the entry block, which SROA turns
-    // into registers.
-    llvm::AllocaInst* last_prim = b_.CreateAlloca(ptr_);
-    llvm::AllocaInst* last_nan = b_.CreateAlloca(b_.getInt1Ty());
-    b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), last_prim);
-    b_.CreateStore(b_.getFalse(), last_nan);
-    for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
-        llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "nan_test", fn_);
-        llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "nan_tested", fn_);
-        b_.CreateCondBr(b_.CreateICmpEQ(q.prim, b_.CreateLoad(ptr_, last_prim)), tested, test);
-        b_.SetInsertPoint(test);
-        b_.CreateStore(nan_inputs(q), last_nan);
-        b_.CreateStore(q.prim, last_prim);
-        b_.CreateBr(tested);
-        b_.SetInsertPoint(tested);
-        // Two versions: the one that orders NaNs (add, mul) runs only for
-        // primitives with NaNs in their inputs.
-        llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
-        llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
-        llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
-        b_.CreateCondBr(b_.CreateLoad(b_.getInt1Ty(), last_nan), strict, plain);
-        for (llvm::BasicBlock* block : {plain, strict}) {
-            b_.SetInsertPoint(block);
-            strict_ = block == strict;
-            // All values before the first store: the stores could alias the
-            // primitive for all LLVM knows, which would reload its fields.
-            Weights w = weights(q);
-            std::vector<llvm::Value*> values;
-            for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
-            for (size_t i = 0; i < values.size(); ++i)
-                b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, regs[i], b_.CreateShl(index, 2)),
-                                      llvm::Align(16));
-            b_.CreateBr(stored);
-        }
-        strict_ = false;
-        b_.SetInsertPoint(stored);
-    });
+    // The last quad's primitive and whether it has NaN inputs: the test
+    // loads all its interpolated values. Slots in the entry block, which
+    // SROA turns into registers.
+    InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty())};
+    b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), state.last_prim);
+    b_.CreateStore(b_.getFalse(), state.last_nan);
+    llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
+    llvm::BasicBlock* entry = b_.GetInsertBlock();
+    llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
+    llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "done", fn_);
+    b_.CreateCondBr(b_.CreateICmpSGT(quads, b_.getInt32(0)), loop, done);
+    b_.SetInsertPoint(loop);
+    llvm::PHINode* index = b_.CreatePHI(i32_, 2);
+    index->addIncoming(b_.getInt32(0), entry);
+    auto field = [&](size_t offset, llvm::Type* type, llvm::Value* i) {
+        return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), b_.CreateZExt(i, i64_)));
+    };
+    llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
+    llvm::Value* prim = field(offsetof(QuadBatch, prim), ptr_, index);
+    llvm::Value* x = field(offsetof(QuadBatch, x), i32_, index);
+    llvm::Value* y = field(offsetof(QuadBatch, y), i32_, index);
+    llvm::BasicBlock* pair = llvm::BasicBlock::Create(b_.getContext(), "pair", fn_);
+    llvm::BasicBlock* single = llvm::BasicBlock::Create(b_.getContext(), "single", fn_);
+    llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
+    llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
+    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), test_pair, single);
+    b_.SetInsertPoint(test_pair);
+    b_.CreateCondBr(b_.CreateICmpEQ(field(offsetof(QuadBatch, prim), ptr_, next), prim), pair, single);
+    b_.SetInsertPoint(pair);
+    width_ = 8;
+    store_inputs(state, b_.CreateZExt(index, i64_),
+                 quad(prim, {x, field(offsetof(QuadBatch, x), i32_, next)}, {y, field(offsetof(QuadBatch, y), i32_, next)}));
+    width_ = 4;
+    llvm::BasicBlock* pair_end = b_.GetInsertBlock();
+    b_.CreateBr(stored);
+    b_.SetInsertPoint(single);
+    store_inputs(state, b_.CreateZExt(index, i64_), quad(prim, {x}, {y}));
+    llvm::BasicBlock* single_end = b_.GetInsertBlock();
+    b_.CreateBr(stored);
+    b_.SetInsertPoint(stored);
+    llvm::PHINode* step = b_.CreatePHI(i32_, 2);
+    step->addIncoming(b_.getInt32(2), pair_end);
+    step->addIncoming(b_.getInt32(1), single_end);
+    llvm::Value* after = b_.CreateAdd(index, step);
+    index->addIncoming(after, stored);
+    b_.CreateCondBr(b_.CreateICmpSLT(after, quads), loop, done);
+    b_.SetInsertPoint(done);
     b_.CreateRetVoid();
+}
+
+// The inputs of quad `index` (and the next, width_ 8): the primitive's NaN
+// test unless it is the last quad's, then the plain or the strict version.
+void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index, const Quad& q) {
+    llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "nan_test", fn_);
+    llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "nan_tested", fn_);
+    b_.CreateCondBr(b_.CreateICmpEQ(q.prim, b_.CreateLoad(ptr_, state.last_prim)), tested, test);
+    b_.SetInsertPoint(test);
+    b_.CreateStore(nan_inputs(q), state.last_nan);
+    b_.CreateStore(q.prim, state.last_prim);
+    b_.CreateBr(tested);
+    b_.SetInsertPoint(tested);
+    // Two versions: the one that orders NaNs (add, mul) runs only for
+    // primitives with NaNs in their inputs.
+    llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
+    llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
+    llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
+    b_.CreateCondBr(b_.CreateLoad(b_.getInt1Ty(), state.last_nan), strict, plain);
+    for (llvm::BasicBlock* block : {plain, strict}) {
+        b_.SetInsertPoint(block);
+        strict_ = block == strict;
+        // All values before the first store: the stores could alias the
+        // primitive for all LLVM knows, which would reload its fields.
+        Weights w = weights(q);
+        std::vector<llvm::Value*> values;
+        for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
+        for (size_t i = 0; i < values.size(); ++i)
+            b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, state.regs[i], b_.CreateShl(index, 2)),
+                                  llvm::Align(16));
+        b_.CreateBr(stored);
+    }
+    strict_ = false;
+    b_.SetInsertPoint(stored);
 }
 
 // One lane's late depth test and writes (FragmentStage::write_plain), if it
