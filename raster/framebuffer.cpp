@@ -39,14 +39,31 @@ Result<Framebuffer> Framebuffer::create(int w, int h, bool float_target, int col
 
 namespace {
 
+// Fills from this size on use x86's string store (fill_repeated).
+constexpr size_t kStringStoreBytes = 4096;
+
 // Fills `bytes` bytes at dst with `pattern` repeated: 16 bytes of whole
 // elements (pixels, depths) whose size divides 16, so that a tail is a
 // prefix of it. Clears are memory bound; whole 16-byte stores keep them so.
+
 void fill_repeated(void* dst, size_t bytes, const std::array<uint8_t, 16>& pattern) {
     auto* p = static_cast<uint8_t*>(dst);
     size_t i = 0;
 #if defined(__SSE2__)
     const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pattern.data()));
+#if defined(__x86_64__)
+    // Large fills of an 8-byte pattern (RGBA8 colour, depth): the string
+    // store writes whole cache lines without reading them first (1080p
+    // spot frame under the JIT: 6.32 -> 6.07 ms CPU, docs/performance.md).
+    uint64_t halves[2];
+    std::memcpy(halves, pattern.data(), 16);
+    if (bytes >= kStringStoreBytes && halves[0] == halves[1]) {
+        size_t words = bytes / 8;
+        void* at = p;
+        asm volatile("rep stosq" : "+D"(at), "+c"(words) : "a"(halves[0]) : "memory");
+        i = bytes / 8 * 8;
+    }
+#endif
     for (; i + 16 <= bytes; i += 16) _mm_storeu_si128(reinterpret_cast<__m128i*>(p + i), v);
 #else
     for (; i + 16 <= bytes; i += 16) std::memcpy(p + i, pattern.data(), 16);
@@ -128,13 +145,15 @@ bool storage_matches(const Framebuffer& fb) {
 
 void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x1, int y1) {
     const std::array<uint8_t, 16> depth = repeated(&clear.d, 1);
-    const size_t pixels = size_t(x1 - x0);
-    for (int y = y0; y < y1; ++y) {
-        size_t row = size_t(y) * size_t(fb.width);
+    // Whole rows are one block, filled at once.
+    const bool whole_rows = x0 == 0 && x1 == fb.width;
+    const size_t pixels = whole_rows ? size_t(x1) * size_t(y1 - y0) : size_t(x1 - x0);
+    for (int y = y0; y < (whole_rows ? y0 + 1 : y1); ++y) {
+        size_t start = size_t(y) * size_t(fb.width) + size_t(x0);
         for (int b = 0; clear.color && b < fb.color_buffers(); ++b)
             fill_repeated(color_at(fb, b, x0, y), pixels * color_pixel_bytes(fb), clear.color_pattern);
-        if (clear.depth) fill_repeated(&fb.depth[row + size_t(x0)], pixels * sizeof(float), depth);
-        if (clear.stencil) std::fill(&fb.stencil[row + size_t(x0)], &fb.stencil[row + size_t(x1)], clear.s);
+        if (clear.depth) fill_repeated(&fb.depth[start], pixels * sizeof(float), depth);
+        if (clear.stencil) std::fill_n(&fb.stencil[start], pixels, clear.s);
     }
 }
 
