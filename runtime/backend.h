@@ -81,7 +81,9 @@ public:
     virtual ~Executor() = default;
     // kLanes words of register r: floats, ints and bools (0/1) as raw bits.
     // The caller fills the shader's inputs (ir::Shader::inputs) here before
-    // run() and reads its outputs after it.
+    // run() and reads its outputs after it; what other registers hold after
+    // a run is the backend's (the JIT keeps the body's temporaries in its
+    // own values, runtime/jit/codegen.h).
     virtual uint32_t* lanes(ir::Reg r) = 0;
     float* lanes_f(ir::Reg r) { return reinterpret_cast<float*>(lanes(r)); }
     // Runs the shader for the lanes in `live` (the others are left alone).

@@ -41,6 +41,7 @@ llvm::Value* Emitter::call_intrinsic(unsigned id, std::initializer_list<llvm::Va
 }
 
 llvm::Value* Emitter::reg_ptr(ir::Reg r) {
+    if (r < locals_.size() && locals_[r]) return locals_[r];
     const uint64_t index = r == ir::kNoReg || r >= shader_.regs.size() ? shader_.regs.size() : r;
     return b_.CreateConstInBoundsGEP1_64(i32_, regs_, index * kLanes);
 }

@@ -97,6 +97,12 @@ private:
     llvm::Value* ctx_arg_ = nullptr;
     llvm::Value* regs_ = nullptr;
     llvm::Value* uniforms_ = nullptr;
+    // The main body's registers that only it reads and writes (not the
+    // bindings, the prologue's, indexed arrays, call-outs' operands): an
+    // alloca each, which SROA turns into values, so that they are never
+    // stored; null for those kept in the register file.
+    std::vector<llvm::AllocaInst*> locals_;
+    void make_locals(const ir::Block& block);
     llvm::AllocaInst* exec_ = nullptr;
     llvm::AllocaInst* alive_ = nullptr;
     llvm::AllocaInst* brk_ = nullptr;

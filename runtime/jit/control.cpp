@@ -8,6 +8,7 @@
 // after each control-flow node), so instructions run exactly where the
 // interpreter runs them, and loop iterations are counted alike.
 #include "runtime/jit/codegen.h"
+#include "ir/flow.h"
 
 #include <llvm/IR/Function.h>
 
@@ -44,6 +45,43 @@ void Emitter::branch_unless_active(llvm::BasicBlock* exit) {
     b_.SetInsertPoint(next);
 }
 
+void Emitter::make_locals(const ir::Block& block) {
+    using namespace ir::flow;
+    locals_.clear();
+    if (&block != &shader_.body) return;
+    std::vector<bool> shared(shader_.regs.size());
+    auto share = [&](ir::Reg r) {
+        if (r < shared.size()) shared[r] = true;
+    };
+    for (const auto* list : {&shader_.inputs, &shader_.outputs})
+        for (const ir::Binding& b : *list)
+            for (uint32_t i = 0; i < b.count; ++i) share(b.first + i);
+    auto all_registers = [&](const ir::Node& n) {
+        for_each_read(n, share);
+        if (n.kind == ir::NodeKind::Instr) for_each_write(n.instr, share);
+    };
+    walk(shader_.prologue, all_registers);
+    // What the generated code reaches through the register file: indexed
+    // arrays, and the operands of ops that may call a kernel (Precise pow's
+    // rare lanes, texture sampling).
+    auto in_memory = [&](const ir::Node& n) {
+        if (n.kind != ir::NodeKind::Instr) return;
+        if (reads_range(n.instr.op) || writes_range(n.instr.op)) for_each_in_range(n.instr, share);
+        if (n.instr.op == ir::Op::tex || n.instr.op == ir::Op::fpow) all_registers(n);
+    };
+    walk(shader_.body, in_memory);
+    for (const ir::Function& f : shader_.functions) walk(f.body, in_memory);
+    locals_.resize(shader_.regs.size());
+    for (size_t r = 0; r < shared.size(); ++r) {
+        if (shared[r]) continue;
+        // Starting from the register file's value: what a lane reads
+        // before the body writes it is what the interpreter would read.
+        llvm::Value* initial = load_reg(ir::Reg(r));
+        locals_[r] = b_.CreateAlloca(vi32_, nullptr, "r" + std::to_string(r));
+        b_.CreateStore(initial, locals_[r]);
+    }
+}
+
 void Emitter::define(const std::string& name, const ir::Block& block) {
     auto* type = llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i64_}, false);
     fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
@@ -60,6 +98,7 @@ void Emitter::define(const std::string& name, const ir::Block& block) {
     llvm::Value* live = fn_->getArg(3);
 
     b_.SetInsertPoint(new_block("entry"));
+    make_locals(block);
     exec_ = b_.CreateAlloca(i64_, nullptr, "exec");
     alive_ = b_.CreateAlloca(i64_, nullptr, "alive");
     brk_ = b_.CreateAlloca(i64_, nullptr, "brk");

@@ -367,10 +367,11 @@ ir::Shader specialized(const ir::Shader& shader, const std::vector<uint32_t>& un
     return s;
 }
 
-// The first difference of one program in one configuration: the JIT
-// against the interpreter on every register; specialized, the JIT's code of
-// the specialization against the interpreter's on every register, and the
-// interpreter's against its unspecialized run on the outputs.
+// The first difference of one program in one configuration, on the outputs
+// (what a caller may read after a run: the JIT keeps the body's other
+// registers out of the register file): the JIT against the interpreter;
+// specialized, the JIT's code of the specialization against the
+// interpreter's, and the interpreter's against its unspecialized run.
 std::string first_difference(const ir::Shader& shader, bool specialize, const std::vector<uint32_t>& uniforms,
                              const std::vector<Batch>& batches, const Config& c, std::string* log) {
     auto differ = [&](const char* what, const Outcome& a, const Outcome& b, const ir::Shader& sh, bool outputs) {
@@ -394,12 +395,13 @@ std::string first_difference(const ir::Shader& shader, bool specialize, const st
     };
     const Outcome interp = run_on(shader, Backend::Interp, uniforms, batches, c);
     *log = interp.log;
-    std::string d = differ("interpreter vs JIT", interp, run_on(shader, Backend::Jit, uniforms, batches, c), shader, false);
+    std::string d = differ("interpreter vs JIT", outputs_of(interp, shader),
+                           outputs_of(run_on(shader, Backend::Jit, uniforms, batches, c), shader), shader, true);
     if (!d.empty() || !specialize) return d;
     const ir::Shader s = specialized(shader, uniforms, c.precision);
     const Outcome s_interp = run_on(s, Backend::Interp, uniforms, batches, c);
-    d = differ("specialized interpreter vs specialized JIT", s_interp, run_on(s, Backend::Jit, uniforms, batches, c), s,
-               false);
+    d = differ("specialized interpreter vs specialized JIT", outputs_of(s_interp, s),
+               outputs_of(run_on(s, Backend::Jit, uniforms, batches, c), s), s, true);
     if (!d.empty()) return d;
     return differ("interpreter vs specialized interpreter, outputs", outputs_of(interp, shader),
                   outputs_of(s_interp, s), shader, true);

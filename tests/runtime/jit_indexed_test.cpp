@@ -26,6 +26,8 @@ TEST_CASE("generated indexed access gives the kernels' words", "[runtime][backen
     b.instr(Op::load_ind, Kind::F32, loaded, {idx}, {arr, 5, 1});
     b.if_(cond, [&] { b.instr(Op::store_ind, Kind::F32, ir::kNoReg, {idx2, val}, {arr + 1, 2, 2}); });
     b.instr(Op::load_ind, Kind::F32, loaded_after, {idx2}, {arr, 5, 1});
+    for (Reg r = arr; r < arr + 5; ++r) b.output("arr", r);
+    for (Reg r : {from_uniform, loaded, loaded_after}) b.output("r", r);
     std::vector<uint32_t> uniforms(12);
     for (size_t i = 0; i < uniforms.size(); ++i) uniforms[i] = bits(float(i) + 0.5f);
     rt::ExecParams params{uniforms.data(), 10, nullptr, Precision::Precise, rt::kAllFastOps};
@@ -48,8 +50,9 @@ TEST_CASE("generated indexed access gives the kernels' words", "[runtime][backen
                 }
             REQUIRE(ia->run(live, nullptr));
             REQUIRE(ja->run(live, nullptr));
-            for (Reg r = 0; r < Reg(b.sh.regs.size()); ++r)
+            for (const ir::Binding& out : b.sh.outputs)
                 for (int lane = 0; lane < rt::kLanes; ++lane) {
+                    const Reg r = out.first;
                     INFO("register " << r << " lane " << lane << " round " << round << (avx2 ? " avx2" : " baseline"));
                     CHECK(ia->lanes(r)[lane] == ja->lanes(r)[lane]);
                 }

@@ -85,6 +85,7 @@ void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in) {
     const Kind kind = ir::op_info(op).operand == ir::TypeClass::F ? Kind::F32 : Kind::I32;
     Reg x = b.reg(kind), y = b.reg(kind), r = b.reg(kind);
     b.instr(op, kind, r, binary ? std::initializer_list<Reg>{x, y} : std::initializer_list<Reg>{x});
+    b.output("r", r);
     std::vector<uint32_t> uniforms(4);
     rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
     auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);

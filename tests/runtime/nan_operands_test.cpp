@@ -25,6 +25,7 @@ TEST_CASE("backends return the same NaN for NaN operands", "[runtime][backend][n
                 Builder b;
                 Reg x = b.reg(Kind::F32), y = b.reg(Kind::F32), z = b.reg(Kind::F32), r = b.reg(Kind::F32);
                 const int arity = ir::op_info(op).arity;
+                b.output("r", r);
                 b.instr(op, Kind::F32, r, arity == 1 ? std::initializer_list<Reg>{x} : arity == 2 ? std::initializer_list<Reg>{x, y} : std::initializer_list<Reg>{x, y, z});
                 std::vector<uint32_t> uniforms(4);
                 rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
