@@ -11,6 +11,7 @@
 #include <llvm/IR/InlineAsm.h>
 #include <llvm/IR/Intrinsics.h>
 
+#include "ir/flow.h"
 #include "runtime/fast_kernels.h"
 #include "runtime/jit/codegen.h"
 #include "runtime/jit/math.h"
@@ -42,6 +43,10 @@ llvm::Value* Emitter::call_intrinsic(unsigned id, std::initializer_list<llvm::Va
 
 llvm::Value* Emitter::reg_ptr(ir::Reg r) {
     if (r < locals_.size() && locals_[r]) return locals_[r];
+    return file_ptr(r);
+}
+
+llvm::Value* Emitter::file_ptr(ir::Reg r) {
     const uint64_t index = r == ir::kNoReg || r >= shader_.regs.size() ? shader_.regs.size() : r;
     return b_.CreateConstInBoundsGEP1_64(i32_, regs_, index * kLanes);
 }
@@ -326,9 +331,23 @@ llvm::Value* Emitter::register_lanes(llvm::Value* regs) {
 
 void Emitter::emit_call_out(const ir::Instr& in) {
     call_outs_.push_back({kernel_for(in.op, avx2_, precision_, fast_ops_), in});
+    // The kernel works on the register file: the locals it reads or writes
+    // go there first (the lanes it leaves alone included), and come back.
+    std::vector<ir::Reg> synced;
+    ir::Node node;
+    node.instr = in;
+    auto sync = [&](ir::Reg r) {
+        if (r >= locals_.size() || !locals_[r]) return;
+        b_.CreateAlignedStore(load_reg(r), file_ptr(r), llvm::Align(kRegAlign));
+        synced.push_back(r);
+    };
+    ir::flow::for_each_read(node, sync);
+    ir::flow::for_each_write(in, sync);
     auto* type = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, i64_, i64_}, false);
     auto* callee = llvm::ConstantExpr::getIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&run_call_out)), ptr_);
     b_.CreateCall(type, callee, {ctx_arg_, regs_, b_.getInt64(call_outs_.size() - 1), load_mask(exec_)});
+    for (ir::Reg r : synced)
+        b_.CreateStore(b_.CreateAlignedLoad(vi32_, file_ptr(r), llvm::Align(kRegAlign)), locals_[r]);
 }
 
 }  // namespace glslrun::rt::jit

@@ -62,7 +62,8 @@ private:
     llvm::Value* register_lanes(llvm::Value* regs);     // kLanes x ptr
     void emit_precise_pow(const ir::Instr& in);
     void emit_call_out(const ir::Instr& in);
-    llvm::Value* reg_ptr(ir::Reg r);
+    llvm::Value* reg_ptr(ir::Reg r);   // its local, or file_ptr(r)
+    llvm::Value* file_ptr(ir::Reg r);  // in the register file
     llvm::Value* load_reg(ir::Reg r);  // kLanes x i32
     llvm::Value* load_float(ir::Reg r);
     void write_reg(ir::Reg r, llvm::Value* words, WriteMode mode, bool unmasked);
@@ -98,9 +99,9 @@ private:
     llvm::Value* regs_ = nullptr;
     llvm::Value* uniforms_ = nullptr;
     // The main body's registers that only it reads and writes (not the
-    // bindings, the prologue's, indexed arrays, call-outs' operands): an
-    // alloca each, which SROA turns into values, so that they are never
-    // stored; null for those kept in the register file.
+    // bindings, the prologue's, indexed arrays): an alloca each, which SROA
+    // turns into values, so that they are never stored (call-outs excepted);
+    // null for those kept in the register file.
     std::vector<llvm::AllocaInst*> locals_;
     void make_locals(const ir::Block& block);
     llvm::AllocaInst* exec_ = nullptr;

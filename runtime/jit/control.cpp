@@ -61,16 +61,13 @@ void Emitter::make_locals(const ir::Block& block) {
         if (n.kind == ir::NodeKind::Instr) for_each_write(n.instr, share);
     };
     walk(shader_.prologue, all_registers);
-    // What the generated code reaches through the register file: indexed
-    // arrays, and the operands of ops that may call a kernel (Precise pow's
-    // rare lanes, texture sampling).
-    auto in_memory = [&](const ir::Node& n) {
-        if (n.kind != ir::NodeKind::Instr) return;
-        if (reads_range(n.instr.op) || writes_range(n.instr.op)) for_each_in_range(n.instr, share);
-        if (n.instr.op == ir::Op::tex || n.instr.op == ir::Op::fpow) all_registers(n);
+    // Indexed arrays: gathers and scatters reach them through the register file.
+    auto indexed = [&](const ir::Node& n) {
+        if (n.kind == ir::NodeKind::Instr && (reads_range(n.instr.op) || writes_range(n.instr.op)))
+            for_each_in_range(n.instr, share);
     };
-    walk(shader_.body, in_memory);
-    for (const ir::Function& f : shader_.functions) walk(f.body, in_memory);
+    walk(shader_.body, indexed);
+    for (const ir::Function& f : shader_.functions) walk(f.body, indexed);
     locals_.resize(shader_.regs.size());
     for (size_t r = 0; r < shared.size(); ++r) {
         if (shared[r]) continue;
