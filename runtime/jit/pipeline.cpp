@@ -105,7 +105,13 @@ private:
     std::array<llvm::Value*, 3> attributes(const Quad& q, uint32_t index);  // of vertices 0, 1, 2
     llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
-    void for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value* index, const Quad& q)>& body);
+    using QuadBody = std::function<void(llvm::Value* index, const Quad& q)>;
+    using PairTest = std::function<llvm::Value*(llvm::Value* index, llvm::Value* next)>;
+    void for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable = nullptr);
+    // Element `index` (i32) of the QuadBatch array at `offset`, of `type`.
+    llvm::Value* batch_field(llvm::Value* batch, size_t offset, llvm::Type* type, llvm::Value* index) {
+        return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), b_.CreateZExt(index, i64_)));
+    }
     // define_inputs()'s registers and its last primitive's NaN test.
     struct InputsState {
         std::vector<llvm::Value*> regs;
@@ -371,8 +377,10 @@ void PipelineEmitter::define_square_depth() {
     b_.CreateRet(passing);
 }
 
-// Emits body(index, quad) for quads 0 .. batch->quads - 1, a loop.
-void PipelineEmitter::for_each_quad(llvm::Value* batch, const std::function<void(llvm::Value*, const Quad&)>& body) {
+// Emits body(index, quads) for the batch's quads in order, a loop: quads
+// `index` and `index + 1` together (width_ 8, the first one's primitive)
+// where pairable(index, index + 1) holds, else quad `index` alone (width_ 4).
+void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable) {
     llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
     llvm::BasicBlock* entry = b_.GetInsertBlock();
     llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
@@ -381,15 +389,40 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const std::function<void
     b_.SetInsertPoint(loop);
     llvm::PHINode* index = b_.CreatePHI(i32_, 2);
     index->addIncoming(b_.getInt32(0), entry);
-    llvm::Value* index64 = b_.CreateZExt(index, i64_);
-    auto field = [&](size_t offset, llvm::Type* type) {
-        return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), index64));
-    };
-    body(index64, quad(field(offsetof(QuadBatch, prim), ptr_), {field(offsetof(QuadBatch, x), i32_)},
-                       {field(offsetof(QuadBatch, y), i32_)}));
     llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
-    index->addIncoming(next, b_.GetInsertBlock());
-    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), loop, done);
+    auto x = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, x), i32_, i); };
+    auto y = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, y), i32_, i); };
+    llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
+    llvm::Value* step = b_.getInt32(1);
+    if (pairable) {
+        llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
+        llvm::BasicBlock* pair = llvm::BasicBlock::Create(b_.getContext(), "pair", fn_);
+        llvm::BasicBlock* single = llvm::BasicBlock::Create(b_.getContext(), "single", fn_);
+        llvm::BasicBlock* after = llvm::BasicBlock::Create(b_.getContext(), "after_quads", fn_);
+        b_.CreateCondBr(b_.CreateICmpSLT(next, quads), test_pair, single);
+        b_.SetInsertPoint(test_pair);
+        b_.CreateCondBr(pairable(index, next), pair, single);
+        b_.SetInsertPoint(pair);
+        width_ = 8;
+        body(b_.CreateZExt(index, i64_), quad(prim, {x(index), x(next)}, {y(index), y(next)}));
+        width_ = 4;
+        llvm::BasicBlock* pair_end = b_.GetInsertBlock();
+        b_.CreateBr(after);
+        b_.SetInsertPoint(single);
+        body(b_.CreateZExt(index, i64_), quad(prim, {x(index)}, {y(index)}));
+        llvm::BasicBlock* single_end = b_.GetInsertBlock();
+        b_.CreateBr(after);
+        b_.SetInsertPoint(after);
+        llvm::PHINode* taken = b_.CreatePHI(i32_, 2);
+        taken->addIncoming(b_.getInt32(2), pair_end);
+        taken->addIncoming(b_.getInt32(1), single_end);
+        step = taken;
+    } else {
+        body(b_.CreateZExt(index, i64_), quad(prim, {x(index)}, {y(index)}));
+    }
+    llvm::Value* following = b_.CreateAdd(index, step);
+    index->addIncoming(following, b_.GetInsertBlock());
+    b_.CreateCondBr(b_.CreateICmpSLT(following, quads), loop, done);
     b_.SetInsertPoint(done);
 }
 
@@ -408,47 +441,11 @@ void PipelineEmitter::define_inputs() {
     InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty())};
     b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), state.last_prim);
     b_.CreateStore(b_.getFalse(), state.last_nan);
-    llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
-    llvm::BasicBlock* entry = b_.GetInsertBlock();
-    llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
-    llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "done", fn_);
-    b_.CreateCondBr(b_.CreateICmpSGT(quads, b_.getInt32(0)), loop, done);
-    b_.SetInsertPoint(loop);
-    llvm::PHINode* index = b_.CreatePHI(i32_, 2);
-    index->addIncoming(b_.getInt32(0), entry);
-    auto field = [&](size_t offset, llvm::Type* type, llvm::Value* i) {
-        return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), b_.CreateZExt(i, i64_)));
+    auto same_primitive = [&](llvm::Value* index, llvm::Value* next) {
+        return b_.CreateICmpEQ(batch_field(batch, offsetof(QuadBatch, prim), ptr_, index),
+                               batch_field(batch, offsetof(QuadBatch, prim), ptr_, next));
     };
-    llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
-    llvm::Value* prim = field(offsetof(QuadBatch, prim), ptr_, index);
-    llvm::Value* x = field(offsetof(QuadBatch, x), i32_, index);
-    llvm::Value* y = field(offsetof(QuadBatch, y), i32_, index);
-    llvm::BasicBlock* pair = llvm::BasicBlock::Create(b_.getContext(), "pair", fn_);
-    llvm::BasicBlock* single = llvm::BasicBlock::Create(b_.getContext(), "single", fn_);
-    llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
-    llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
-    b_.CreateCondBr(b_.CreateICmpSLT(next, quads), test_pair, single);
-    b_.SetInsertPoint(test_pair);
-    b_.CreateCondBr(b_.CreateICmpEQ(field(offsetof(QuadBatch, prim), ptr_, next), prim), pair, single);
-    b_.SetInsertPoint(pair);
-    width_ = 8;
-    store_inputs(state, b_.CreateZExt(index, i64_),
-                 quad(prim, {x, field(offsetof(QuadBatch, x), i32_, next)}, {y, field(offsetof(QuadBatch, y), i32_, next)}));
-    width_ = 4;
-    llvm::BasicBlock* pair_end = b_.GetInsertBlock();
-    b_.CreateBr(stored);
-    b_.SetInsertPoint(single);
-    store_inputs(state, b_.CreateZExt(index, i64_), quad(prim, {x}, {y}));
-    llvm::BasicBlock* single_end = b_.GetInsertBlock();
-    b_.CreateBr(stored);
-    b_.SetInsertPoint(stored);
-    llvm::PHINode* step = b_.CreatePHI(i32_, 2);
-    step->addIncoming(b_.getInt32(2), pair_end);
-    step->addIncoming(b_.getInt32(1), single_end);
-    llvm::Value* after = b_.CreateAdd(index, step);
-    index->addIncoming(after, stored);
-    b_.CreateCondBr(b_.CreateICmpSLT(after, quads), loop, done);
-    b_.SetInsertPoint(done);
+    for_each_quad(batch, [&](llvm::Value* index, const Quad& q) { store_inputs(state, index, q); }, same_primitive);
     b_.CreateRetVoid();
 }
 
