@@ -45,7 +45,6 @@ constexpr size_t kStringStoreBytes = 4096;
 // Fills `bytes` bytes at dst with `pattern` repeated: 16 bytes of whole
 // elements (pixels, depths) whose size divides 16, so that a tail is a
 // prefix of it. Clears are memory bound; whole 16-byte stores keep them so.
-
 void fill_repeated(void* dst, size_t bytes, const std::array<uint8_t, 16>& pattern) {
     auto* p = static_cast<uint8_t*>(dst);
     size_t i = 0;
