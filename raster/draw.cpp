@@ -107,6 +107,7 @@ void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const
     if (small && !small->mask) return;  // between pixel centres: no fragments
     FsPrimitive& p = out.prims.emplace_back();  // built in place: it is large
     if (small) p.cover = *small;
+    else out.edges.push_back(setup);
     p.v = {v0, v1, v2};
     p.front = front;
     p.primitive = out.current_primitive;
@@ -449,12 +450,18 @@ std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint
     return outs;
 }
 
-// Bins the jobs' primitives in submission order, where the jobs left them.
-void bin_primitives(std::span<const SetupOut> outs, TileBins& bins, uint64_t* triangles) {
+// Bins the jobs' primitives in submission order, where the jobs left them,
+// and points the large triangles at their edges.
+void bin_primitives(std::span<SetupOut> outs, TileBins& bins, uint64_t* triangles) {
     *triangles = 0;
-    for (const SetupOut& out : outs) {
+    for (SetupOut& out : outs) {
         *triangles += out.triangles;
-        for (size_t i = 0; i < out.prims.size(); ++i) bins.add(&out.prims[i], out.bounds[i]);
+        size_t large = 0;
+        for (size_t i = 0; i < out.prims.size(); ++i) {
+            FsPrimitive& p = out.prims[i];
+            if (p.count == 3 && !p.cover.mask) p.edges = &out.edges[large++];
+            bins.add(&p, out.bounds[i]);
+        }
     }
 }
 

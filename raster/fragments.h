@@ -46,9 +46,11 @@ struct FsPrimitive {
     int ox = 0, oy = 0;
     std::array<Plane, 3> weight;
     Plane z;
-    // Triangles: the coverage of a small one; mask 0 for the others, which
-    // tiles set up again (small triangles that cover nothing are not kept).
+    // Triangles: the coverage of a small one (small triangles that cover
+    // nothing are not kept); mask 0 for the others, whose edges the draw
+    // keeps for the tiles' block walk.
     SmallCoverage cover;
+    const TriangleEdges* edges = nullptr;
     // Which primitive of the draw (raster/assemble.h's order) and the
     // indices of its vertices, for the shader debugger (raster/probe.h).
     uint32_t primitive = 0;

@@ -21,6 +21,9 @@ struct SetupOut {
     AttrArena arena;  // attributes of clipped and flat-shaded vertices, until the draw ends
     std::vector<FsPrimitive, HugePageAllocator<FsPrimitive>> prims;
     std::vector<Rect> bounds;  // per primitive: the pixels it may cover
+    // Per triangle larger than a square, in order: its edges (FsPrimitive::edges,
+    // set when the draw bins the primitives, once this no longer grows).
+    std::vector<TriangleEdges> edges;
     uint64_t triangles = 0;
     // The primitive being set up and its vertices (FsPrimitive::primitive).
     uint32_t current_primitive = 0;
@@ -30,6 +33,7 @@ struct SetupOut {
         arena.clear();
         prims.clear();
         bounds.clear();
+        edges.clear();
         triangles = 0;
     }
 };

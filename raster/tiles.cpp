@@ -66,11 +66,7 @@ void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage&
         if (p.count == 3 && p.cover.mask) {
             for_each_small_part(p.cover, clip, add_quads);
         } else if (p.count == 3) {
-            // Larger triangles are set up again rather than stored: they are
-            // few, and it saves the memory of their edge functions.
-            TriangleSetup setup;
-            if (setup_triangle({p.v[0].win, p.v[1].win, p.v[2].win}, target.scissor, setup))
-                for_each_block(setup, clip, add_quads);
+            for_each_block(*p.edges, clip, add_quads);
         } else if (p.count == 2) {
             rasterize_line(stage, p, clip);
         } else {

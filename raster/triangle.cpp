@@ -70,7 +70,8 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
 
 namespace {
 
-#if defined(__SSE2__)
+int64_t pixel_centre(int v) { return int64_t(v) * kSubpixelOne + kSubpixelOne / 2; }
+
 // Whether every edge value coverage_mask() computes (rows from `row`,
 // `rows` of them, 8 columns) fits in 32 bits: then they are computed four
 // pixels to a register, exactly.
@@ -86,15 +87,18 @@ bool fits_32_bits(const std::array<int64_t, 3>& row, const std::array<int64_t, 3
     return true;
 }
 
-// coverage_mask() where fits_32_bits(): a row of the square is two registers
-// per edge, and the sign bits of (e0 | e1 | e2) are the pixels outside.
-uint64_t coverage_mask_32(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
-                          const std::array<int64_t, 3>& dy, int oy, const Rect& r) {
+#if defined(__SSE2__)
+// rows_covered() where every edge value it computes fits in 32 bits: a row
+// of the square is two registers per edge, and the sign bits of
+// (e0 | e1 | e2) are the pixels outside. The steps need not fit: the sums
+// wrap modulo 2^32 (the 64-bit values are truncated, C++20) to the values.
+[[gnu::always_inline]] inline uint64_t rows_covered_32(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
+                                                        const std::array<int64_t, 3>& dy, int oy, const Rect& r) {
     auto first_four = [&](size_t i) {
-        const int32_t d = int32_t(dx[i]);
-        return _mm_add_epi32(_mm_set1_epi32(int32_t(row[i])), _mm_setr_epi32(0, d, 2 * d, 3 * d));
+        return _mm_add_epi32(_mm_set1_epi32(int32_t(row[i])),
+                             _mm_setr_epi32(0, int32_t(dx[i]), int32_t(2 * dx[i]), int32_t(3 * dx[i])));
     };
-    auto next_four = [&](__m128i e, size_t i) { return _mm_add_epi32(e, _mm_set1_epi32(4 * int32_t(dx[i]))); };
+    auto next_four = [&](__m128i e, size_t i) { return _mm_add_epi32(e, _mm_set1_epi32(int32_t(4 * dx[i]))); };
     __m128i a0 = first_four(0), b0 = first_four(1), c0 = first_four(2);
     __m128i a1 = next_four(a0, 0), b1 = next_four(b0, 1), c1 = next_four(c0, 2);
     const __m128i sa = _mm_set1_epi32(int32_t(dy[0])), sb = _mm_set1_epi32(int32_t(dy[1])),
@@ -111,20 +115,15 @@ uint64_t coverage_mask_32(const std::array<int64_t, 3>& row, const std::array<in
 }
 #endif
 
-}  // namespace
-
-uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
-    // Whole rows of the square, from column ox; the columns outside r are cut at the end.
-    const int64_t px = int64_t(ox) * kSubpixelOne + kSubpixelOne / 2, py = int64_t(r.y0) * kSubpixelOne + kSubpixelOne / 2;
-    std::array<int64_t, 3> row, dx, dy;
-    for (size_t i = 0; i < 3; ++i) {
-        row[i] = t.ia[i] * px + t.ib[i] * py + t.ic[i];
-        dx[i] = t.ia[i] * kSubpixelOne;
-        dy[i] = t.ib[i] * kSubpixelOne;
-    }
+// The pixels of rows [r.y0, r.y1) of the square at (ox, oy), all eight
+// columns, where all three edges are >= 0, given their values at the
+// centre of pixel (ox, r.y0) and their steps per pixel; where they fit in
+// 32 bits, rows_covered_32(), inlined into the callers (measured: 2.4% of
+// the 1080p spot frame against a call).
+uint64_t rows_covered_64(std::array<int64_t, 3> row, const std::array<int64_t, 3>& dx,
+                         const std::array<int64_t, 3>& dy, int oy, const Rect& r) {
     uint64_t mask = 0;
 #if defined(__SSE2__)
-    if (fits_32_bits(row, dx, dy, r.y1 - r.y0)) return coverage_mask_32(row, dx, dy, oy, r) & square_columns(r.x0 - ox, r.x1 - ox);
     // Two pixels per register: the sign bits of (e0 | e1 | e2) are the
     // pixels outside an edge, and movmskpd gathers them.
     __m128i step[3][kSquareSize / 2];
@@ -153,10 +152,62 @@ uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r) {
         for (size_t i = 0; i < 3; ++i) row[i] += dy[i];
     }
 #endif
-    return mask & square_columns(r.x0 - ox, r.x1 - ox);
+    return mask;
 }
 
-std::optional<SmallCoverage> small_coverage(const TriangleSetup& t) {
+[[gnu::always_inline]] inline uint64_t rows_covered(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
+                                                    const std::array<int64_t, 3>& dy, int oy, const Rect& r,
+                                                    bool fits_32) {
+#if defined(__SSE2__)
+    if (fits_32) return rows_covered_32(row, dx, dy, oy, r);
+#endif
+    return rows_covered_64(row, dx, dy, oy, r);
+}
+
+}  // namespace
+
+uint64_t coverage_mask(const TriangleEdges& t, int ox, int oy, const Rect& r) {
+    // Whole rows of the square, from column ox; the columns outside r are cut at the end.
+    const int64_t px = pixel_centre(ox), py = pixel_centre(r.y0);
+    std::array<int64_t, 3> row, dx, dy;
+    for (size_t i = 0; i < 3; ++i) {
+        row[i] = t.ia[i] * px + t.ib[i] * py + t.ic[i];
+        dx[i] = t.ia[i] * kSubpixelOne;
+        dy[i] = t.ib[i] * kSubpixelOne;
+    }
+    return rows_covered(row, dx, dy, oy, r, fits_32_bits(row, dx, dy, r.y1 - r.y0)) &
+           square_columns(r.x0 - ox, r.x1 - ox);
+}
+
+BlockWalk::BlockWalk(const TriangleEdges& t, const Rect& r)
+    : r_(r), x0_(r.x0 & ~(kBlockSize - 1)), y0_(r.y0 & ~(kBlockSize - 1)) {
+    // The blocks' pixels span [x0_, x0_ + w] x [y0_, y0_ + h].
+    const int64_t w = ((r.x1 + kBlockSize - 1) & ~(kBlockSize - 1)) - x0_ - 1;
+    const int64_t h = ((r.y1 + kBlockSize - 1) & ~(kBlockSize - 1)) - y0_ - 1;
+    constexpr int64_t kLimit = int64_t(1) << 31;
+    fits_32_bits_ = true;
+    for (size_t i = 0; i < 3; ++i) {
+        dx_[i] = t.ia[i] * kSubpixelOne;
+        dy_[i] = t.ib[i] * kSubpixelOne;
+        origin_[i] = t.ia[i] * pixel_centre(x0_) + t.ib[i] * pixel_centre(y0_) + t.ic[i];
+        const int64_t across = (kBlockSize - 1) * dx_[i], up = (kBlockSize - 1) * dy_[i];
+        greatest_[i] = std::max<int64_t>(across, 0) + std::max<int64_t>(up, 0);
+        least_[i] = std::min<int64_t>(across, 0) + std::min<int64_t>(up, 0);
+        // An edge function is linear: over the blocks it is largest in
+        // magnitude at a corner of their span.
+        const int64_t right = origin_[i] + w * dx_[i], top = h * dy_[i];
+        for (int64_t corner : {origin_[i], right, origin_[i] + top, right + top})
+            fits_32_bits_ = fits_32_bits_ && corner < kLimit && corner > -kLimit;
+    }
+}
+
+uint64_t BlockWalk::partial(const std::array<int64_t, 3>& e, int bx, int by, const Rect& b) const {
+    std::array<int64_t, 3> row;
+    for (size_t i = 0; i < 3; ++i) row[i] = e[i] + int64_t(b.y0 - by) * dy_[i];
+    return rows_covered(row, dx_, dy_, by, b, fits_32_bits_) & square_columns(b.x0 - bx, b.x1 - bx);
+}
+
+std::optional<SmallCoverage> small_coverage(const TriangleEdges& t) {
     SmallCoverage c{t.bbox.x0 & ~1, t.bbox.y0 & ~1, 0};
     if (t.bbox.x1 - c.x > kSquareSize || t.bbox.y1 - c.y > kSquareSize) return std::nullopt;
     c.mask = coverage_mask(t, c.x, c.y, t.bbox);

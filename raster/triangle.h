@@ -29,18 +29,24 @@ struct Rect {
 inline constexpr int kQuadDx[4] = {0, 1, 0, 1};
 inline constexpr int kQuadDy[4] = {0, 0, 1, 1};
 
+// What the block walk needs of a triangle. FsPrimitive keeps it for the
+// triangles larger than a square, so that tiles do not set them up again.
+struct TriangleEdges {
+    // Edge i (opposite vertex i) turned so that a pixel centre is covered
+    // where all three are >= 0: times the orientation's sign, with the fill
+    // rule's bias in c.
+    std::array<int64_t, 3> ia, ib, ic;
+    Rect bbox;  // covered pixels lie inside, already clipped to the scissor
+};
+
 // setup_triangle() sets every field; there are no initializers, because
 // zeroing this per triangle showed in profiles.
-struct TriangleSetup {
+struct TriangleSetup : TriangleEdges {
     std::array<int64_t, 3> fx, fy;  // snapped vertex positions
     // Edge i is opposite vertex i: E_i(p) = a*px + b*py + c, with E_i(v_i) = area2.
     std::array<int64_t, 3> ea, eb, ec;
     std::array<int64_t, 3> bias;  // 0 if ties on the edge are inside (top-left), else -1
-    // The same edges turned so that a pixel centre is covered where all
-    // three are >= 0: times the orientation's sign, with the bias in c.
-    std::array<int64_t, 3> ia, ib, ic;
     int64_t area2;                // twice the signed area in subpixel units (> 0: CCW)
-    Rect bbox;  // covered pixels lie inside, already clipped to the scissor
 };
 
 int64_t snap(float window_coord);
@@ -68,26 +74,6 @@ inline std::array<int64_t, 3> edge_values(const TriangleSetup& t, int x, int y) 
 inline bool covers(const TriangleSetup& t, const std::array<int64_t, 3>& e) {
     int64_t s = t.area2 > 0 ? 1 : -1;
     return s * e[0] + t.bias[0] >= 0 && s * e[1] + t.bias[1] >= 0 && s * e[2] + t.bias[2] >= 0;
-}
-
-enum class BlockCover { Outside, Partial, Inside };
-
-// Edge functions are linear, so a rectangle is inside (outside) an edge when
-// all four corner pixels are, that is when the corner where the edge
-// function is least (greatest) is: one corner per test, picked by the signs
-// of the edge's gradient.
-inline BlockCover classify_block(const TriangleSetup& t, const Rect& b) {
-    const int64_t x0 = int64_t(b.x0) * kSubpixelOne + kSubpixelOne / 2, x1 = int64_t(b.x1 - 1) * kSubpixelOne + kSubpixelOne / 2;
-    const int64_t y0 = int64_t(b.y0) * kSubpixelOne + kSubpixelOne / 2, y1 = int64_t(b.y1 - 1) * kSubpixelOne + kSubpixelOne / 2;
-    bool inside = true;
-    for (size_t i = 0; i < 3; ++i) {
-        const int64_t a = t.ia[i], bb = t.ib[i], c = t.ic[i];
-        const int64_t greatest = a * (a > 0 ? x1 : x0) + bb * (bb > 0 ? y1 : y0) + c;
-        if (greatest < 0) return BlockCover::Outside;
-        const int64_t least = a * (a > 0 ? x0 : x1) + bb * (bb > 0 ? y0 : y1) + c;
-        inside = inside && least >= 0;
-    }
-    return inside ? BlockCover::Inside : BlockCover::Partial;
 }
 
 inline constexpr int kBlockSize = 8;
@@ -119,9 +105,43 @@ inline uint64_t square_rect(int ox, int oy, const Rect& r) {
 
 // The pixels of r (which must lie in the square at (ox, oy)) that t covers:
 // covers() with the orientation and the fill rule's bias folded into each
-// edge, a whole row of the square at a time (two pixels per SSE2 register),
-// without branches (a test per pixel mispredicted often: perf).
-uint64_t coverage_mask(const TriangleSetup& t, int ox, int oy, const Rect& r);
+// edge, a whole row of the square at a time (four pixels per SSE2 register
+// where the edge values fit in 32 bits, else two), without branches (a test
+// per pixel mispredicted often: perf).
+uint64_t coverage_mask(const TriangleEdges& t, int ox, int oy, const Rect& r);
+
+// A triangle's coverage, block by block, within a rectangle r of its
+// bounding box: the edge values at r's first block are computed once, and
+// each block's from them. A block outside an edge costs a few additions;
+// one inside all three is not tested pixel by pixel.
+class BlockWalk {
+public:
+    BlockWalk(const TriangleEdges& t, const Rect& r);
+    // The covered pixels of r in the aligned block at (bx, by).
+    uint64_t pixels(int bx, int by) const {
+        std::array<int64_t, 3> e;
+        bool inside = true;
+        for (size_t i = 0; i < 3; ++i) {
+            e[i] = origin_[i] + int64_t(bx - x0_) * dx_[i] + int64_t(by - y0_) * dy_[i];
+            if (e[i] + greatest_[i] < 0) return 0;
+            inside = inside && e[i] + least_[i] >= 0;
+        }
+        const Rect b{std::max(bx, r_.x0), std::max(by, r_.y0), std::min(bx + kBlockSize, r_.x1),
+                     std::min(by + kBlockSize, r_.y1)};
+        return inside ? square_rect(bx, by, b) : partial(e, bx, by, b);
+    }
+
+private:
+    uint64_t partial(const std::array<int64_t, 3>& e, int bx, int by, const Rect& b) const;
+
+    Rect r_;
+    int x0_, y0_;  // r's first block
+    // Per edge: its value at the centre of pixel (x0_, y0_), its steps per
+    // pixel, and what it adds at a block's corner where it is greatest
+    // (least) to its value at the block's first pixel.
+    std::array<int64_t, 3> origin_, dx_, dy_, greatest_, least_;
+    bool fits_32_bits_;  // every edge value of r's blocks
+};
 
 // Calls visit(x, y, mask) for each quad of `part` (pixels of the square at
 // (ox, oy), ox and oy even) with a pixel in `pixels`, in bit order: rows
@@ -142,16 +162,14 @@ void visit_quads(uint64_t pixels, uint64_t part, int ox, int oy, Visit&& visit) 
 // up, left to right. Blocks outside an edge are skipped, and pixels of
 // blocks inside all edges are not tested one by one.
 template <class Visit>
-void for_each_block(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
+void for_each_block(const TriangleEdges& t, const Rect& clip, Visit&& visit) {
     Rect r{std::max(t.bbox.x0, clip.x0), std::max(t.bbox.y0, clip.y0), std::min(t.bbox.x1, clip.x1),
            std::min(t.bbox.y1, clip.y1)};
+    if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
+    const BlockWalk walk(t, r);
     for (int by = r.y0 & ~(kBlockSize - 1); by < r.y1; by += kBlockSize) {
         for (int bx = r.x0 & ~(kBlockSize - 1); bx < r.x1; bx += kBlockSize) {
-            Rect b{std::max(bx, r.x0), std::max(by, r.y0), std::min(bx + kBlockSize, r.x1),
-                   std::min(by + kBlockSize, r.y1)};
-            BlockCover cover = classify_block(t, b);
-            if (cover == BlockCover::Outside) continue;
-            uint64_t pixels = cover == BlockCover::Inside ? square_rect(bx, by, b) : coverage_mask(t, bx, by, b);
+            const uint64_t pixels = walk.pixels(bx, by);
             if (pixels) visit(pixels, ~uint64_t(0), bx, by);
         }
     }
@@ -160,7 +178,7 @@ void for_each_block(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
 // Calls visit(x, y, mask) for every 2x2 quad (x, y even) with at least one
 // covered pixel inside `clip`, block by block (for_each_block).
 template <class Visit>
-void for_each_quad(const TriangleSetup& t, const Rect& clip, Visit&& visit) {
+void for_each_quad(const TriangleEdges& t, const Rect& clip, Visit&& visit) {
     for_each_block(t, clip, [&](uint64_t pixels, uint64_t part, int ox, int oy) { visit_quads(pixels, part, ox, oy, visit); });
 }
 
@@ -175,7 +193,7 @@ struct SmallCoverage {
 };
 
 // Nothing when the triangle's bounding box does not fit the square.
-std::optional<SmallCoverage> small_coverage(const TriangleSetup& t);
+std::optional<SmallCoverage> small_coverage(const TriangleEdges& t);
 
 // Calls visit(pixels, part, x, y) for the parts of `c`'s square that hold
 // covered pixels inside `clip`, in the order for_each_block visits them, so
