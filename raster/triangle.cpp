@@ -72,9 +72,8 @@ namespace {
 
 int64_t pixel_centre(int v) { return int64_t(v) * kSubpixelOne + kSubpixelOne / 2; }
 
-// Whether every edge value coverage_mask() computes (rows from `row`,
-// `rows` of them, 8 columns) fits in 32 bits: then they are computed four
-// pixels to a register, exactly.
+// Whether every edge value of `rows` rows of a square (from `row`, 8
+// columns) fits in 32 bits: then square_covered_32() computes them exactly.
 bool fits_32_bits(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
                   const std::array<int64_t, 3>& dy, int rows) {
     constexpr int64_t kLimit = int64_t(1) << 31;
@@ -88,14 +87,17 @@ bool fits_32_bits(const std::array<int64_t, 3>& row, const std::array<int64_t, 3
 }
 
 #if defined(__SSE2__)
-// rows_covered() where every edge value it computes fits in 32 bits: a row
-// of the square is two registers per edge, and the sign bits of
-// (e0 | e1 | e2) are the pixels outside. The steps need not fit: the sums
+// The pixels of a square where all three edges are >= 0, given their values
+// at its first pixel and their steps per pixel, where every value in the
+// square fits in 32 bits: a row is two registers per edge, and the sign bits
+// of (e0 | e1 | e2) are the pixels outside. The steps need not fit: the sums
 // wrap modulo 2^32 (the 64-bit values are truncated, C++20) to the values.
-[[gnu::always_inline]] inline uint64_t rows_covered_32(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
-                                                        const std::array<int64_t, 3>& dy, int oy, const Rect& r) {
+// The first `rows` rows, in the mask's first rows.
+[[gnu::always_inline]] inline uint64_t rows_covered_32(const std::array<int64_t, 3>& first,
+                                                       const std::array<int64_t, 3>& dx,
+                                                       const std::array<int64_t, 3>& dy, int rows) {
     auto first_four = [&](size_t i) {
-        return _mm_add_epi32(_mm_set1_epi32(int32_t(row[i])),
+        return _mm_add_epi32(_mm_set1_epi32(int32_t(first[i])),
                              _mm_setr_epi32(0, int32_t(dx[i]), int32_t(2 * dx[i]), int32_t(3 * dx[i])));
     };
     auto next_four = [&](__m128i e, size_t i) { return _mm_add_epi32(e, _mm_set1_epi32(int32_t(4 * dx[i]))); };
@@ -104,22 +106,30 @@ bool fits_32_bits(const std::array<int64_t, 3>& row, const std::array<int64_t, 3
     const __m128i sa = _mm_set1_epi32(int32_t(dy[0])), sb = _mm_set1_epi32(int32_t(dy[1])),
                   sc = _mm_set1_epi32(int32_t(dy[2]));
     uint64_t mask = 0;
-    for (int y = r.y0; y < r.y1; ++y) {
+#pragma GCC unroll 8
+    for (int y = 0; y < rows; ++y) {
         const unsigned outside = unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(a0, b0), c0)))) |
                                  unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(a1, b1), c1)))) << 4;
-        mask |= uint64_t(~outside & 0xFFu) << ((y - oy) * kSquareSize);
+        mask |= uint64_t(~outside & 0xFFu) << (y * kSquareSize);
         a0 = _mm_add_epi32(a0, sa), b0 = _mm_add_epi32(b0, sb), c0 = _mm_add_epi32(c0, sc);
         a1 = _mm_add_epi32(a1, sa), b1 = _mm_add_epi32(b1, sb), c1 = _mm_add_epi32(c1, sc);
     }
     return mask;
 }
+
+// All eight rows: without a branch on the row count (data-dependent
+// branches mispredicted at every other block of a tile's walk: perf).
+[[gnu::always_inline]] inline uint64_t square_covered_32(const std::array<int64_t, 3>& first,
+                                                         const std::array<int64_t, 3>& dx,
+                                                         const std::array<int64_t, 3>& dy) {
+    return rows_covered_32(first, dx, dy, kSquareSize);
+}
 #endif
 
 // The pixels of rows [r.y0, r.y1) of the square at (ox, oy), all eight
 // columns, where all three edges are >= 0, given their values at the
-// centre of pixel (ox, r.y0) and their steps per pixel; where they fit in
-// 32 bits, rows_covered_32(), inlined into the callers (measured: 2.4% of
-// the 1080p spot frame against a call).
+// centre of pixel (ox, r.y0) and their steps per pixel: where some value
+// does not fit in 32 bits.
 uint64_t rows_covered_64(std::array<int64_t, 3> row, const std::array<int64_t, 3>& dx,
                          const std::array<int64_t, 3>& dy, int oy, const Rect& r) {
     uint64_t mask = 0;
@@ -155,56 +165,71 @@ uint64_t rows_covered_64(std::array<int64_t, 3> row, const std::array<int64_t, 3
     return mask;
 }
 
-[[gnu::always_inline]] inline uint64_t rows_covered(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
-                                                    const std::array<int64_t, 3>& dy, int oy, const Rect& r,
-                                                    bool fits_32) {
-#if defined(__SSE2__)
-    if (fits_32) return rows_covered_32(row, dx, dy, oy, r);
-#endif
-    return rows_covered_64(row, dx, dy, oy, r);
-}
-
 }  // namespace
 
 uint64_t coverage_mask(const TriangleEdges& t, int ox, int oy, const Rect& r) {
-    // Whole rows of the square, from column ox; the columns outside r are cut at the end.
-    const int64_t px = pixel_centre(ox), py = pixel_centre(r.y0);
+    // Whole rows of the square, from column ox; the pixels outside r are cut at the end.
+    // Small triangles' rows only: most span two or three (the subdivided
+    // teapot was 2% slower with all eight).
     std::array<int64_t, 3> row, dx, dy;
     for (size_t i = 0; i < 3; ++i) {
-        row[i] = t.ia[i] * px + t.ib[i] * py + t.ic[i];
+        row[i] = t.ia[i] * pixel_centre(ox) + t.ib[i] * pixel_centre(r.y0) + t.ic[i];
         dx[i] = t.ia[i] * kSubpixelOne;
         dy[i] = t.ib[i] * kSubpixelOne;
     }
-    return rows_covered(row, dx, dy, oy, r, fits_32_bits(row, dx, dy, r.y1 - r.y0)) &
-           square_columns(r.x0 - ox, r.x1 - ox);
+    const uint64_t in_r = square_rect(ox, oy, r);
+#if defined(__SSE2__)
+    if (fits_32_bits(row, dx, dy, r.y1 - r.y0))
+        return (rows_covered_32(row, dx, dy, r.y1 - r.y0) << ((r.y0 - oy) * kSquareSize)) & in_r;
+#endif
+    return rows_covered_64(row, dx, dy, oy, r) & in_r;
 }
 
-BlockWalk::BlockWalk(const TriangleEdges& t, const Rect& r)
-    : r_(r), x0_(r.x0 & ~(kBlockSize - 1)), y0_(r.y0 & ~(kBlockSize - 1)) {
-    // The blocks' pixels span [x0_, x0_ + w] x [y0_, y0_ + h].
-    const int64_t w = ((r.x1 + kBlockSize - 1) & ~(kBlockSize - 1)) - x0_ - 1;
-    const int64_t h = ((r.y1 + kBlockSize - 1) & ~(kBlockSize - 1)) - y0_ - 1;
+size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out) {
+    const int x0 = r.x0 & ~(kBlockSize - 1), y0 = r.y0 & ~(kBlockSize - 1);
+    // The blocks' pixels span [x0, x0 + w] x [y0, y0 + h].
+    const int64_t w = ((r.x1 + kBlockSize - 1) & ~(kBlockSize - 1)) - x0 - 1;
+    const int64_t h = ((r.y1 + kBlockSize - 1) & ~(kBlockSize - 1)) - y0 - 1;
     constexpr int64_t kLimit = int64_t(1) << 31;
-    fits_32_bits_ = true;
+    // Per edge: its value at the centre of pixel (x0, y0) and its steps per pixel.
+    std::array<int64_t, 3> row_start, dx, dy;
+    bool fits_32 = true;
     for (size_t i = 0; i < 3; ++i) {
-        dx_[i] = t.ia[i] * kSubpixelOne;
-        dy_[i] = t.ib[i] * kSubpixelOne;
-        origin_[i] = t.ia[i] * pixel_centre(x0_) + t.ib[i] * pixel_centre(y0_) + t.ic[i];
-        const int64_t across = (kBlockSize - 1) * dx_[i], up = (kBlockSize - 1) * dy_[i];
-        greatest_[i] = std::max<int64_t>(across, 0) + std::max<int64_t>(up, 0);
-        least_[i] = std::min<int64_t>(across, 0) + std::min<int64_t>(up, 0);
+        dx[i] = t.ia[i] * kSubpixelOne;
+        dy[i] = t.ib[i] * kSubpixelOne;
+        row_start[i] = t.ia[i] * pixel_centre(x0) + t.ib[i] * pixel_centre(y0) + t.ic[i];
         // An edge function is linear: over the blocks it is largest in
         // magnitude at a corner of their span.
-        const int64_t right = origin_[i] + w * dx_[i], top = h * dy_[i];
-        for (int64_t corner : {origin_[i], right, origin_[i] + top, right + top})
-            fits_32_bits_ = fits_32_bits_ && corner < kLimit && corner > -kLimit;
+        const int64_t right = row_start[i] + w * dx[i], top = h * dy[i];
+        for (int64_t corner : {row_start[i], right, row_start[i] + top, right + top})
+            fits_32 = fits_32 && corner < kLimit && corner > -kLimit;
     }
-}
-
-uint64_t BlockWalk::partial(const std::array<int64_t, 3>& e, int bx, int by, const Rect& b) const {
-    std::array<int64_t, 3> row;
-    for (size_t i = 0; i < 3; ++i) row[i] = e[i] + int64_t(b.y0 - by) * dy_[i];
-    return rows_covered(row, dx_, dy_, by, b, fits_32_bits_) & square_columns(b.x0 - bx, b.x1 - bx);
+    // Without branches on the coverage (they mispredicted at every other
+    // block: perf): where r's values fit in 32 bits every block's eight rows
+    // are computed, and blocks without pixels are written over.
+    size_t n = 0;
+    for (int by = y0; by < r.y1; by += kBlockSize) {
+        std::array<int64_t, 3> e = row_start;
+        for (int bx = x0; bx < r.x1; bx += kBlockSize) {
+            const Rect b{std::max(bx, r.x0), std::max(by, r.y0), std::min(bx + kBlockSize, r.x1),
+                         std::min(by + kBlockSize, r.y1)};
+            uint64_t pixels = square_rect(bx, by, b);
+#if defined(__SSE2__)
+            if (fits_32) pixels &= square_covered_32(e, dx, dy);
+            else
+#endif
+            {
+                std::array<int64_t, 3> first_row;
+                for (size_t i = 0; i < 3; ++i) first_row[i] = e[i] + int64_t(b.y0 - by) * dy[i];
+                pixels &= rows_covered_64(first_row, dx, dy, by, b);
+            }
+            out[n] = {bx, by, pixels};
+            n += pixels != 0;
+            for (size_t i = 0; i < 3; ++i) e[i] += kBlockSize * dx[i];
+        }
+        for (size_t i = 0; i < 3; ++i) row_start[i] += kBlockSize * dy[i];
+    }
+    return n;
 }
 
 std::optional<SmallCoverage> small_coverage(const TriangleEdges& t) {
