@@ -125,7 +125,7 @@ private:
     };
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
     void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
-    void write_whole_quad(const Quad& q, const QuadValues& v, llvm::Value* bits);
+    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
         target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
@@ -516,24 +516,36 @@ void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm
     b_.SetInsertPoint(next);
 }
 
-// write_lane() of all four lanes of a quad into RGBA8 storage, without a
-// late depth test: the lanes' pixels are distinct, two rows of two, so two
-// stores of two pixels each write the same bytes.
-void PipelineEmitter::write_whole_quad(const Quad& q, const QuadValues& v, llvm::Value* bits) {
-    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bits), written_);
+// write_lane() of a quad's live lanes into RGBA8 storage, without a late
+// depth test: the lanes' pixels are distinct, two rows of two, so two
+// masked stores of two pixels each write the same bytes. No branch on the
+// lanes: a quad's live lanes vary, and branches on them mispredicted (perf).
+void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
     llvm::Value* words = llvm::Constant::getNullValue(v4i);
     for (unsigned k = 0; k < 4; ++k) {
         llvm::Value* byte = b_.CreateAnd(v.rgba[k], llvm::ConstantInt::get(v4i, 255));
         words = b_.CreateOr(words, b_.CreateShl(byte, llvm::ConstantInt::get(v4i, 8 * k)));
     }
+    llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, b_.CreateTrunc(lanes, i32_)),
+                                                     llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{1, 2, 4, 8})),
+                                        llvm::Constant::getNullValue(v4i));
     llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(0)),
                                      b_.CreateExtractElement(q.py, uint64_t(0)), target_.width);
     llvm::Value* above = b_.CreateAdd(pixel, b_.CreateSExt(target_.width, i64_));
-    llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1});
-    llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3});
-    b_.CreateAlignedStore(lower, b_.CreateInBoundsGEP(i32_, target_.color, pixel), llvm::Align(4));
-    b_.CreateAlignedStore(upper, b_.CreateInBoundsGEP(i32_, target_.color, above), llvm::Align(4));
+    // Four-lane stores whose last two lanes are off (they may lie past the buffer).
+    llvm::Value* off = b_.getFalse();
+    auto row = [&](int first) {
+        llvm::Value* lo = b_.CreateExtractElement(live, uint64_t(first));
+        llvm::Value* hi = b_.CreateExtractElement(live, uint64_t(first + 1));
+        llvm::Value* mask = llvm::PoisonValue::get(llvm::FixedVectorType::get(b_.getInt1Ty(), 4));
+        for (unsigned i = 0; i < 4; ++i) mask = b_.CreateInsertElement(mask, i == 0 ? lo : i == 1 ? hi : off, uint64_t(i));
+        return mask;
+    };
+    llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1});
+    llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3, 2, 3});
+    b_.CreateMaskedStore(lower, b_.CreateGEP(i32_, target_.color, pixel), llvm::Align(4), row(0));
+    b_.CreateMaskedStore(upper, b_.CreateGEP(i32_, target_.color, above), llvm::Align(4), row(2));
 }
 
 // A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)
@@ -575,25 +587,23 @@ void PipelineEmitter::define_outputs() {
     load_target(fn_->getArg(3));
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
-    const bool whole_quads = !key_.float_color && key_.color_channels > 0 && !(key_.depth_test && !key_.early_depth);
+    const bool rgba8_only = !key_.float_color && key_.color_channels > 0 && !(key_.depth_test && !key_.early_depth);
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
+        llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
+        if (rgba8_only) {
+            // Every quad, its dead lanes masked: no branch.
+            llvm::Value* lanes = b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), b_.CreateShl(index, 2)), b_.getInt64(0xF));
+            write_rgba8_quad(q, quad_values(q, regs, index), lanes);
+            b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(lanes, b_.CreateShl(index, 2))),
+                           written_);
+            return;
+        }
         llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
         llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
-        llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
         llvm::Value* bits = b_.CreateMul(first, b_.getInt64(0xF));
         b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bits), b_.getInt64(0)), body, next);
         b_.SetInsertPoint(body);
         QuadValues v = quad_values(q, regs, index);
-        if (whole_quads) {
-            // All four lanes alive and no late test: two 8-byte stores.
-            llvm::BasicBlock* whole = llvm::BasicBlock::Create(b_.getContext(), "whole", fn_);
-            llvm::BasicBlock* lanes = llvm::BasicBlock::Create(b_.getContext(), "lanes", fn_);
-            b_.CreateCondBr(b_.CreateICmpEQ(b_.CreateAnd(fn_->getArg(2), bits), bits), whole, lanes);
-            b_.SetInsertPoint(whole);
-            write_whole_quad(q, v, bits);
-            b_.CreateBr(next);
-            b_.SetInsertPoint(lanes);
-        }
         for (int i = 0; i < 4; ++i) write_lane(q, i, v, b_.CreateShl(first, uint64_t(i)));
         b_.CreateBr(next);
         b_.SetInsertPoint(next);
