@@ -7,6 +7,9 @@
 //
 // Per-pixel code: no allocation, and every texel index is either in range or
 // the border marker, whatever the coordinates (NaN and infinities included).
+// The helpers are inlined into the two entry points: called, their small
+// structs and vectors went back through memory, and the loads stalled on
+// the stores (perf: a third of a textured frame).
 #include "runtime/sampling.h"
 
 #include <cmath>
@@ -42,7 +45,13 @@ float floor_f(float x) {
 // wraps below always reduce it to an index in range.
 int floor_int(float x) { return int(floor_f(clamp_or_low(x, -kIndexLimit, kIndexLimit))); }
 
+// i mod n in [0, n). The wraps' indices lie within a size of the image
+// except where the coordinate was huge or NaN: no division for those (two
+// per axis and level were a quarter of a trilinear lookup: perf).
 int repeat_index(int i, int n) {
+    if (i >= 0 && i < n) return i;
+    if (i < 0 && i >= -n) return i + n;
+    if (i >= n && i < 2 * n) return i - n;
     i %= n;
     return i < 0 ? i + n : i;
 }
@@ -64,7 +73,7 @@ float mirror(float s) {
 // CLAMP and CLAMP_TO_EDGE both end in [0, size-1] (CLAMP reaches the border
 // only when filtering linearly); CLAMP_TO_BORDER's s in [-1/2N, 1+1/2N] makes
 // -1 or N, the border.
-int nearest_index(TextureWrap wrap, float s, int n) {
+[[gnu::always_inline]] inline int nearest_index(TextureWrap wrap, float s, int n) {
     switch (wrap) {
     case TextureWrap::Repeat: return repeat_index(floor_int((s - floor_f(s)) * float(n)), n);
     case TextureWrap::MirroredRepeat: s = mirror(s); [[fallthrough]];
@@ -75,6 +84,8 @@ int nearest_index(TextureWrap wrap, float s, int n) {
     return 0;
 }
 
+// Returned by linear_axis(), which is inlined: returned from a call, the
+// struct went through memory and its load stalled (perf: half of the call).
 struct LinearAxis {
     int i0, i1;  // texel indices or kBorder
     float a;     // weight of i1
@@ -85,7 +96,7 @@ struct LinearAxis {
 // indices mod size; CLAMP lets them leave [0, size) so the border blends in;
 // CLAMP_TO_EDGE (and the mirrored coordinate) keeps u in [1/2, size - 1/2],
 // so only texels of the image take part.
-LinearAxis linear_axis(TextureWrap wrap, float s, int n) {
+[[gnu::always_inline]] inline LinearAxis linear_axis(TextureWrap wrap, float s, int n) {
     const float size = float(n);
     float u = 0.0f;
     bool edge = false;
@@ -137,7 +148,7 @@ int cube_face(const glm::vec3& r) {
 
 // s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2 (§3.8.6). A zero
 // direction gives NaN, which the wraps turn into some texel of the face.
-glm::vec3 cube_coord(const CubeFace& f, const glm::vec3& r) {
+[[gnu::always_inline]] inline glm::vec3 cube_coord(const CubeFace& f, const glm::vec3& r) {
     const float ma = std::fabs(r[f.major]);
     return {0.5f * (f.s_sign * r[f.s_axis] / ma + 1.0f), 0.5f * (f.t_sign * r[f.t_axis] / ma + 1.0f), 0.0f};
 }
@@ -172,7 +183,7 @@ struct Lookup {
 
 float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
 
-Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref) {
+[[gnu::always_inline]] inline Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref) {
     const SamplerState& st = texture.sampler;
     Lookup lk{&texture, &st, 0, texture_dims(texture.target()), coord, false, 0.0f};
     if (texture.target() == TextureTarget::Cube) {
@@ -187,21 +198,21 @@ Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref) {
 
 // GL 2.1 clamps TEXTURE_BORDER_COLOR to [0, 1] when it is set (§3.8.4); a
 // depth texture's border is the depth border_color.r.
-glm::vec4 border_texel(const Lookup& lk) {
+[[gnu::always_inline]] inline glm::vec4 border_texel(const Lookup& lk) {
     const glm::vec4& b = lk.st->border_color;
     if (lk.compare) return glm::vec4(compare_depth(lk.st->compare_func, lk.ref, unorm(b.r)));
     return {unorm(b.r), unorm(b.g), unorm(b.b), unorm(b.a)};
 }
 
 // Texel (i, j, k) of `image`; any index kBorder means the border colour.
-glm::vec4 fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k) {
+[[gnu::always_inline]] inline glm::vec4 fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k) {
     if (i < 0 || j < 0 || k < 0) return border_texel(lk);
     const size_t at = size_t(i) + size_t(image.width) * (size_t(j) + size_t(image.height) * size_t(k));
     const glm::vec4& texel = image.texels[at];
     return lk.compare ? glm::vec4(compare_depth(lk.st->compare_func, lk.ref, texel.r)) : texel;
 }
 
-glm::vec4 sample_nearest(const Lookup& lk, const TextureImage& image) {
+[[gnu::always_inline]] inline glm::vec4 sample_nearest(const Lookup& lk, const TextureImage& image) {
     const int i = nearest_index(lk.st->wrap_s, lk.str.x, image.width);
     const int j = lk.dims > 1 ? nearest_index(lk.st->wrap_t, lk.str.y, image.height) : 0;
     const int k = lk.dims > 2 ? nearest_index(lk.st->wrap_r, lk.str.z, image.depth) : 0;
@@ -209,7 +220,7 @@ glm::vec4 sample_nearest(const Lookup& lk, const TextureImage& image) {
 }
 
 // §3.8.8: the (bi/tri)linear blend of the 2, 4 or 8 texels around u.
-glm::vec4 sample_linear(const Lookup& lk, const TextureImage& image) {
+[[gnu::always_inline]] inline glm::vec4 sample_linear(const Lookup& lk, const TextureImage& image) {
     const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
     if (lk.dims == 1) return glm::mix(fetch(lk, image, x.i0, 0, 0), fetch(lk, image, x.i1, 0, 0), x.a);
     const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
@@ -224,7 +235,7 @@ glm::vec4 sample_linear(const Lookup& lk, const TextureImage& image) {
 }
 
 // `level` is within [level_base, q], which completeness guarantees exist.
-glm::vec4 sample_level(const Lookup& lk, int level, bool linear) {
+[[gnu::always_inline]] inline glm::vec4 sample_level(const Lookup& lk, int level, bool linear) {
     const TextureImage& image = lk.texture->levels(lk.face)[size_t(level)];
     return linear ? sample_linear(lk, image) : sample_nearest(lk, image);
 }
@@ -260,7 +271,7 @@ float mag_threshold(const SamplerState& st) {
     return st.mag_filter == TextureFilter::Linear && nearest_mipmap ? 0.5f : 0.0f;
 }
 
-glm::vec4 filter(const Lookup& lk, float lambda) {
+[[gnu::always_inline]] inline glm::vec4 filter(const Lookup& lk, float lambda) {
     const SamplerState& st = *lk.st;
     const int base = st.base_level;
     // §3.8.9: lambda <= c magnifies: the mag filter on level_base.
@@ -279,7 +290,7 @@ glm::vec4 filter(const Lookup& lk, float lambda) {
 }
 
 // §3.8.14 DEPTH_TEXTURE_MODE: how a depth (or comparison result) becomes RGBA.
-glm::vec4 expand_depth(DepthTextureMode mode, float d) {
+[[gnu::always_inline]] inline glm::vec4 expand_depth(DepthTextureMode mode, float d) {
     switch (mode) {
     case DepthTextureMode::Luminance: return {d, d, d, 1.0f};
     case DepthTextureMode::Intensity: return {d, d, d, d};
@@ -294,7 +305,7 @@ float face_derivative(float sc, float dsc, float ama, float dama) {
 }
 
 // (ds, dt) on the cube face `r` selects, from the derivative d of the direction.
-glm::vec3 cube_derivative(const CubeFace& f, const glm::vec3& r, const glm::vec3& d) {
+[[gnu::always_inline]] inline glm::vec3 cube_derivative(const CubeFace& f, const glm::vec3& r, const glm::vec3& d) {
     const float ama = std::fabs(r[f.major]);
     const float dama = r[f.major] >= 0.0f ? d[f.major] : -d[f.major];
     return {face_derivative(f.s_sign * r[f.s_axis], f.s_sign * d[f.s_axis], ama, dama),
@@ -302,15 +313,14 @@ glm::vec3 cube_derivative(const CubeFace& f, const glm::vec3& r, const glm::vec3
 }
 
 // |(du, dv, dw)| for the derivative d of (s, t, r): only the target's dimensions count.
-float scaled_length(const glm::vec3& d, const TextureImage& base, int dims) {
+[[gnu::always_inline]] inline float scaled_length(const glm::vec3& d, const TextureImage& base, int dims) {
     const glm::vec3 uvw(d.x * float(base.width), dims > 1 ? d.y * float(base.height) : 0.0f,
                         dims > 2 ? d.z * float(base.depth) : 0.0f);
     return glm::length(uvw);
 }
 
-}  // namespace
-
-float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx, const glm::vec3& ddy) {
+[[gnu::always_inline]] inline float lod_of(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx,
+                                           const glm::vec3& ddy) {
     // §3.8.8: u = s * w_t etc. with the sizes of level_base.
     const TextureImage* base = level_image(texture, 0, texture.sampler.base_level);
     if (!base) return 0.0f;  // incomplete: the lookup gives (0, 0, 0, 1) whatever the LOD
@@ -327,12 +337,31 @@ float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::ve
     return std::min(math::log2(rho), kLodLimit);
 }
 
-glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod) {
-    if (!texture.complete()) return {0.0f, 0.0f, 0.0f, 1.0f};
+[[gnu::always_inline]] inline glm::vec4 sample_complete(const Texture& texture, const glm::vec3& coord, float ref,
+                                                         float lod) {
     const SamplerState& st = texture.sampler;
     const Lookup lk = make_lookup(texture, coord, ref);
     const glm::vec4 v = filter(lk, clamp_lambda(lod + st.lod_bias, st));
     return texture.depth() ? expand_depth(st.depth_mode, v.r) : v;
+}
+
+}  // namespace
+
+float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx, const glm::vec3& ddy) {
+    return lod_of(texture, coord, ddx, ddy);
+}
+
+glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod) {
+    if (!texture.complete()) return {0.0f, 0.0f, 0.0f, 1.0f};
+    return sample_complete(texture, coord, ref, lod);
+}
+
+void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, float* rgba) {
+    float lod = lookup.lod;
+    if (lookup.implicit) lod = lookup.bias ? lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy) + lookup.lod
+                                           : lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy);
+    const glm::vec4 v = sample_complete(texture, lookup.coord, lookup.ref, lod);
+    for (int c = 0; c < 4; ++c) rgba[c] = v[c];
 }
 
 }  // namespace glslrun::rt

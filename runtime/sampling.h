@@ -28,5 +28,20 @@ float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::ve
 // texture object's own lod_bias, min/max_lod and base/max_level apply here.
 // An incomplete texture gives (0, 0, 0, 1).
 glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod);
+// What a shader's lookup gives one lane: the coordinate, the reference, and
+// either the LOD (explicit) or the derivatives with an optional bias.
+struct LaneLookup {
+    glm::vec3 coord{0.0f}, ddx{0.0f}, ddy{0.0f};
+    float ref = 0.0f;
+    float lod = 0.0f;  // the explicit LOD, or the bias
+    bool implicit = true, bias = false;
+};
+
+// implicit_lod() (where the lookup has no explicit LOD) and sample_texture()
+// of a texture known to be complete (Texture::complete() walks the mipmap
+// chains: the `tex` kernel asks once per texture and batch), into rgba.
+// One call does all: called one by one, the helpers' small vectors went
+// back through memory and the loads stalled on the stores (perf).
+void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, float* rgba);
 
 }  // namespace glslrun::rt

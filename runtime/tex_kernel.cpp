@@ -29,26 +29,27 @@ template <class W>
 struct Operands {
     const FloatOf<W>* block;  // operand k of lane i at block[k * kLanes + i]
     float at(uint32_t k, int lane) const { return float(block[size_t(k) * kLanes + size_t(lane)]); }
+    // Built whole: stored component by component (a variable index), the
+    // vector was then loaded from memory and stalled (perf).
     glm::vec3 vec(uint32_t first, uint32_t dims, int lane) const {
-        glm::vec3 v(0.0f);
-        for (uint32_t d = 0; d < dims; ++d) v[int(d)] = at(first + d, lane);
-        return v;
+        return {at(first, lane), dims > 1 ? at(first + 1, lane) : 0.0f, dims > 2 ? at(first + 2, lane) : 0.0f};
     }
 };
 
 template <class W>
-glm::vec4 sample_lane(const Texture& texture, const ir::TexInfo& info, const Operands<W>& ops, int lane) {
+LaneLookup lane_lookup(const ir::TexInfo& info, const Operands<W>& ops, int lane) {
     const uint32_t dims = info.dims();
-    const glm::vec3 coord = ops.vec(0, dims, lane);
-    const float ref = info.shadow ? ops.at(info.ref_at(), lane) : 0.0f;
-    float lod = 0.0f;
-    if (info.lod == ir::TexLod::Explicit) {
-        lod = ops.at(info.lod_at(), lane);
-    } else {
-        lod = implicit_lod(texture, coord, ops.vec(info.ddx_at(), dims, lane), ops.vec(info.ddy_at(), dims, lane));
-        if (info.lod == ir::TexLod::ImplicitBias) lod += ops.at(info.lod_at(), lane);
+    LaneLookup lk;
+    lk.coord = ops.vec(0, dims, lane);
+    if (info.shadow) lk.ref = ops.at(info.ref_at(), lane);
+    lk.implicit = info.lod != ir::TexLod::Explicit;
+    lk.bias = info.lod == ir::TexLod::ImplicitBias;
+    if (info.lod != ir::TexLod::Implicit) lk.lod = ops.at(info.lod_at(), lane);
+    if (lk.implicit) {
+        lk.ddx = ops.vec(info.ddx_at(), dims, lane);
+        lk.ddy = ops.vec(info.ddy_at(), dims, lane);
     }
-    return sample_texture(texture, coord, ref, lod);
+    return lk;
 }
 
 }  // namespace
@@ -60,11 +61,21 @@ void tex(const Step<W>& s, Machine<W>& m) {
     const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
     const LaneMask active = m.mask.active();
     alignas(64) F out[ir::kTexResults][kLanes] = {};
+    // The lanes' texture is almost always one: its completeness is asked once.
+    const Texture* last = nullptr;
+    bool last_complete = false;
     for (int i = 0; i < kLanes; ++i) {
         if (!((active >> i) & 1)) continue;
         const Texture* texture = bound_texture(m, s.src[0][i], info.target);
-        const glm::vec4 texel = texture ? sample_lane(*texture, info, ops, i) : glm::vec4(0, 0, 0, 1);
-        for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = F(texel[int(c)]);
+        if (texture && texture != last) {
+            last = texture;
+            last_complete = texture->complete();
+        }
+        // An incomplete texture samples as (0, 0, 0, 1), as nothing bound (GL 2.1 §3.8.10).
+        const bool samples = texture && last_complete;
+        float texel[ir::kTexResults] = {0.0f, 0.0f, 0.0f, 1.0f};
+        if (samples) sample_complete_lane(*texture, lane_lookup(info, ops, i), texel);
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = F(texel[c]);
     }
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
         W words[kLanes];
