@@ -129,6 +129,7 @@ struct CoveredBlock {
 // mispredicted at every other block (perf; 6% of the 1080p spot frame).
 size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out);
 
+// How many aligned blocks r touches.
 inline size_t blocks_spanned(const Rect& r) {
     auto span = [](int lo, int hi) { return size_t((hi + kBlockSize - 1) / kBlockSize - lo / kBlockSize); };
     return span(r.x0 & ~(kBlockSize - 1), r.x1) * span(r.y0 & ~(kBlockSize - 1), r.y1);
@@ -150,8 +151,7 @@ void visit_quads(uint64_t pixels, uint64_t part, int ox, int oy, Visit&& visit) 
 
 // Calls visit(pixels, part, ox, oy) for the aligned 8x8 blocks (as squares
 // for visit_quads) with a covered pixel inside `clip`: rows of blocks bottom
-// up, left to right. Blocks outside an edge are skipped, and pixels of
-// blocks inside all edges are not tested one by one.
+// up, left to right (covered_blocks()).
 template <class Visit>
 void for_each_block(const TriangleEdges& t, const Rect& clip, Visit&& visit) {
     Rect r{std::max(t.bbox.x0, clip.x0), std::max(t.bbox.y0, clip.y0), std::min(t.bbox.x1, clip.x1),

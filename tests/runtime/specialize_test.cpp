@@ -51,7 +51,7 @@ TEST_CASE("specialization folds uniform code and dead branches, with the same bi
     for (Precision precision : {Precision::Precise, Precision::Fast}) {
         INFO(precision_name(precision));
         ir::Shader specialized = b.sh;
-        const uint32_t approximated = precision == Precision::Fast ? rt::kAllFastOps : 0;
+        const uint32_t approximated = precision == Precision::Fast ? uint32_t(rt::kAllFastOps) : 0u;
         REQUIRE(ir::specialize(specialized, uniforms, approximated) == "");
         CHECK(count_ifs(specialized.body) == 0);
         CHECK(count_ops(specialized.body, Op::fsin) == 0);
