@@ -159,6 +159,10 @@ struct Shader {
     std::vector<Binding> outputs;     // read by the caller after running
     bool uses_derivatives = false;
     bool uses_discard = false;
+    // Whether a helper lane's texture lookups can change a fragment's result
+    // (ir/helper_lookups.cpp; set by optimize()). Where they cannot, the
+    // fragment stage lets its batches' helper lanes skip their lookups.
+    bool helper_lookups_matter = true;
     std::vector<std::string> sources;   // names of the stage's sources (SourceLoc::source)
     std::vector<Variable> variables;    // until regalloc
 };

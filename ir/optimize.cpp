@@ -53,6 +53,7 @@ uint64_t fingerprint(const Shader& shader) {
 }  // namespace
 
 std::string optimize(Shader& shader, const PassOptions& options) {
+    shader.helper_lookups_matter = helper_lookups_matter(shader);  // passes add no such reads
     if (!options.optimize) return check(shader, "frontend", options.verify);
     std::string error = check(shader, "frontend", options.verify);
     if (!error.empty()) return error;

@@ -14,6 +14,11 @@ namespace glslrun::ir {
 // else a description of the first problem (an internal bug, never user error).
 std::string verify(const Shader& shader);
 
+// ir/helper_lookups.cpp: whether a helper lane's texture lookup can change
+// a fragment's result (a derivative or a branch reads a value computed from
+// a lookup); optimize() records it in Shader::helper_lookups_matter.
+bool helper_lookups_matter(const Shader& shader);
+
 // ir/print.cpp: the text form used by --dump-ir and the golden tests.
 std::string print(const Shader& shader);
 std::string print(const Program& program);

@@ -171,6 +171,8 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
     early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
+    // The debugger shows every lane's values, helpers' lookups too.
+    skip_helper_lookups_ = !fs.helper_lookups_matter && !probe_;
     pipeline_ = fused_pipeline();
 }
 
@@ -437,6 +439,7 @@ void FragmentStage::flush() {
         fill_inputs(w);
     }
     rt::LaneMask live = lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << lanes) - 1;
+    if (skip_helper_lookups_) interp_->skip_lookups(live & ~covered_);
     rt::RunError run_error;
     if (probe_) [[unlikely]]
         probe_->before_run(probe_batch(covered_));

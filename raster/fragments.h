@@ -150,6 +150,7 @@ private:
     std::vector<const uint32_t*> output_regs_;
     std::optional<Error> error_;
     DrawProbe* probe_ = nullptr;
+    bool skip_helper_lookups_ = false;  // helper lanes skip texture lookups (ir::Shader::helper_lookups_matter)
 };
 
 }  // namespace glslrun::raster

@@ -91,6 +91,10 @@ public:
     virtual bool run(LaneMask live, RunError* error) = 0;
     // After run(): the lanes that were live and did not discard.
     virtual LaneMask alive() const = 0;
+    // The following runs' texture lookups skip `lanes` (they read 0): a
+    // fragment batch's helper lanes, where ir::Shader::helper_lookups_matter
+    // says nothing reads their lookups.
+    virtual void skip_lookups(LaneMask lanes) = 0;
     // "interp" or "jit": which backend this is.
     virtual Backend backend() const = 0;
 };

@@ -55,6 +55,9 @@ struct Machine {
     const uint32_t* uniforms = nullptr;
     const GLState::TextureUnit* textures = nullptr;  // kMaxTextureUnits units, or none at all
     ExecMask mask;
+    // The lanes whose texture lookups are run; the others read 0
+    // (Executor::skip_lookups).
+    LaneMask lookups = kAllLanes;
 
     // Masked register write: inactive lanes keep their old value.
     void write(W* __restrict dst, const W* __restrict value) {

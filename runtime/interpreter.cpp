@@ -303,6 +303,7 @@ public:
     virtual uint32_t* lanes(ir::Reg r) = 0;
     virtual bool run(LaneMask live, RunError* error) = 0;
     virtual LaneMask alive() const = 0;
+    virtual void skip_lookups(LaneMask lanes) = 0;
 };
 
 namespace {
@@ -321,6 +322,7 @@ public:
         return ok;
     }
     LaneMask alive() const override { return core_.machine.mask.alive(); }
+    void skip_lookups(LaneMask lanes) override { core_.machine.lookups = ~lanes; }
 
 private:
     Core<uint32_t, kTraced> core_;
@@ -359,6 +361,7 @@ public:
         return ok;
     }
     LaneMask alive() const override { return core_.machine.mask.alive(); }
+    void skip_lookups(LaneMask lanes) override { core_.machine.lookups = ~lanes; }
 
 private:
     Core<uint64_t, kTraced> core_;
@@ -383,6 +386,8 @@ uint32_t* Interpreter::lanes(ir::Reg r) { return engine_->lanes(r); }
 bool Interpreter::run(LaneMask live, RunError* error) { return engine_->run(live, error); }
 
 LaneMask Interpreter::alive() const { return engine_->alive(); }
+
+void Interpreter::skip_lookups(LaneMask lanes) { engine_->skip_lookups(lanes); }
 
 }  // namespace glslrun::rt
 

@@ -40,6 +40,7 @@ public:
     uint32_t* lanes(ir::Reg r) override;
     bool run(LaneMask live, RunError* error) override;
     LaneMask alive() const override;
+    void skip_lookups(LaneMask lanes) override;
     Backend backend() const override { return Backend::Interp; }
 
 private:

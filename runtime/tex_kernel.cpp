@@ -59,7 +59,7 @@ void tex(const Step<W>& s, Machine<W>& m) {
     using F = FloatOf<W>;
     const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
     const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
-    const LaneMask active = m.mask.active();
+    const LaneMask active = m.mask.active() & m.lookups;
     alignas(64) F out[ir::kTexResults][kLanes] = {};
     // The lanes' texture is almost always one: its completeness is asked once.
     const Texture* last = nullptr;

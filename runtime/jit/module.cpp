@@ -247,6 +247,7 @@ public:
         return false;
     }
     LaneMask alive() const override { return ctx_.alive; }
+    void skip_lookups(LaneMask lanes) override { ctx_.machine.lookups = ~lanes; }
     Backend backend() const override { return Backend::Jit; }
 
 private:
