@@ -187,10 +187,12 @@ uint64_t coverage_mask(const TriangleEdges& t, int ox, int oy, const Rect& r) {
 
 size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out) {
     const int x0 = r.x0 & ~(kBlockSize - 1), y0 = r.y0 & ~(kBlockSize - 1);
-    // The blocks' pixels span [x0, x0 + w] x [y0, y0 + h].
-    const int64_t w = ((r.x1 + kBlockSize - 1) & ~(kBlockSize - 1)) - x0 - 1;
-    const int64_t h = ((r.y1 + kBlockSize - 1) & ~(kBlockSize - 1)) - y0 - 1;
-    constexpr int64_t kLimit = int64_t(1) << 31;
+    // Within a block an edge's values are its value at the block's first
+    // pixel plus offsets of at most 7 (|dx| + |dy|). Where that is below
+    // kClamp, clamping the first value to [-kClamp, kClamp] keeps every
+    // value's sign and brings them all within 32 bits: far from an edge only
+    // the side matters. Edges longer than about 1000 pixels take 64 bits.
+    constexpr int64_t kClamp = int64_t(1) << 30;
     // Per edge: its value at the centre of pixel (x0, y0) and its steps per pixel.
     std::array<int64_t, 3> row_start, dx, dy;
     bool fits_32 = true;
@@ -198,15 +200,11 @@ size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out) 
         dx[i] = t.ia[i] * kSubpixelOne;
         dy[i] = t.ib[i] * kSubpixelOne;
         row_start[i] = t.ia[i] * pixel_centre(x0) + t.ib[i] * pixel_centre(y0) + t.ic[i];
-        // An edge function is linear: over the blocks it is largest in
-        // magnitude at a corner of their span.
-        const int64_t right = row_start[i] + w * dx[i], top = h * dy[i];
-        for (int64_t corner : {row_start[i], right, row_start[i] + top, right + top})
-            fits_32 = fits_32 && corner < kLimit && corner > -kLimit;
+        fits_32 = fits_32 && (kBlockSize - 1) * (std::abs(dx[i]) + std::abs(dy[i])) < kClamp;
     }
     // Without branches on the coverage (they mispredicted at every other
-    // block: perf): where r's values fit in 32 bits every block's eight rows
-    // are computed, and blocks without pixels are written over.
+    // block: perf): every block's eight rows are computed, and blocks
+    // without pixels are written over.
     size_t n = 0;
     for (int by = y0; by < r.y1; by += kBlockSize) {
         std::array<int64_t, 3> e = row_start;
@@ -215,8 +213,11 @@ size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out) 
                          std::min(by + kBlockSize, r.y1)};
             uint64_t pixels = square_rect(bx, by, b);
 #if defined(__SSE2__)
-            if (fits_32) pixels &= square_covered_32(e, dx, dy);
-            else
+            if (fits_32) {
+                const std::array<int64_t, 3> first{std::clamp(e[0], -kClamp, kClamp), std::clamp(e[1], -kClamp, kClamp),
+                                                   std::clamp(e[2], -kClamp, kClamp)};
+                pixels &= square_covered_32(first, dx, dy);
+            } else
 #endif
             {
                 std::array<int64_t, 3> first_row;
