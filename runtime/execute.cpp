@@ -2,6 +2,7 @@
 #include "runtime/execute.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <optional>
 
@@ -109,7 +110,13 @@ void fill_batch(rt::Executor& interp, const InputSource& src, uint32_t base, int
             continue;
         }
         const float* data = src.attrib->data.data() + size_t(base) * src.attrib->components + c;
-        for (int lane = 0; lane < n; ++lane) dst[lane] = to_bits(b.kind, data[size_t(lane) * src.attrib->components]);
+        const size_t stride = src.attrib->components;
+        // Floats, nearly always, as a plain copy: to_bits()'s switch per lane
+        // stayed in the loop (perf: most of a vertex batch's plumbing).
+        if (b.kind == ir::Kind::F32)
+            for (int lane = 0; lane < n; ++lane) dst[lane] = std::bit_cast<uint32_t>(data[size_t(lane) * stride]);
+        else
+            for (int lane = 0; lane < n; ++lane) dst[lane] = to_bits(b.kind, data[size_t(lane) * stride]);
     }
 }
 
@@ -145,7 +152,10 @@ std::optional<Error> shade_range(rt::Executor& interp, const Program::State& st,
             for (uint32_t c = 0; c < b.count; ++c) {
                 const uint32_t* src = interp.lanes(b.first + c);
                 float* dst = out.data.data() + size_t(base) * out.stride + out.offset[o] + c;
-                for (int lane = 0; lane < n; ++lane) dst[size_t(lane) * out.stride] = from_bits(b.kind, src[lane]);
+                if (b.kind == ir::Kind::F32)  // as fill_batch
+                    for (int lane = 0; lane < n; ++lane) dst[size_t(lane) * out.stride] = std::bit_cast<float>(src[lane]);
+                else
+                    for (int lane = 0; lane < n; ++lane) dst[size_t(lane) * out.stride] = from_bits(b.kind, src[lane]);
             }
         }
     }
