@@ -72,27 +72,29 @@ namespace {
 
 int64_t pixel_centre(int v) { return int64_t(v) * kSubpixelOne + kSubpixelOne / 2; }
 
-// Whether every edge value of `rows` rows of a square (from `row`, 8
-// columns) fits in 32 bits: then square_covered_32() computes them exactly.
-bool fits_32_bits(const std::array<int64_t, 3>& row, const std::array<int64_t, 3>& dx,
-                  const std::array<int64_t, 3>& dy, int rows) {
-    constexpr int64_t kLimit = int64_t(1) << 31;
-    for (size_t i = 0; i < 3; ++i) {
-        // Each term is checked first, so that the sum cannot overflow.
-        const int64_t r = std::abs(row[i]), x = std::abs(dx[i]), y = std::abs(dy[i]);
-        if (r >= kLimit || x >= kLimit || y >= kLimit || r + (kSquareSize - 1) * x + (rows - 1) * y >= kLimit)
-            return false;
-    }
-    return true;
+// Within a square an edge's values are its value at the square's first
+// pixel plus offsets of at most 7 (|dx| + |dy|). Where that is below
+// kClamp, clamping the first value to [-kClamp, kClamp] (clamped()) keeps
+// every value's sign and brings them all within 32 bits: far from an edge
+// only the side matters. Edges longer than about 1000 pixels take 64 bits.
+constexpr int64_t kClamp = int64_t(1) << 30;
+
+bool steps_fit_32(const std::array<int64_t, 3>& dx, const std::array<int64_t, 3>& dy) {
+    bool fit = true;
+    for (size_t i = 0; i < 3; ++i) fit = fit && (kSquareSize - 1) * (std::abs(dx[i]) + std::abs(dy[i])) < kClamp;
+    return fit;
+}
+
+std::array<int64_t, 3> clamped(const std::array<int64_t, 3>& e) {
+    return {std::clamp(e[0], -kClamp, kClamp), std::clamp(e[1], -kClamp, kClamp), std::clamp(e[2], -kClamp, kClamp)};
 }
 
 #if defined(__SSE2__)
 // The pixels of a square where all three edges are >= 0, given their values
-// at its first pixel and their steps per pixel, where every value in the
-// square fits in 32 bits: a row is two registers per edge, and the sign bits
-// of (e0 | e1 | e2) are the pixels outside. The steps need not fit: the sums
-// wrap modulo 2^32 (the 64-bit values are truncated, C++20) to the values.
-// The first `rows` rows, in the mask's first rows.
+// at its first pixel (clamped()) and their steps per pixel (steps_fit_32()),
+// so that every value fits in 32 bits: a row is two registers per edge, and
+// the sign bits of (e0 | e1 | e2) are the pixels outside. The first `rows`
+// rows, in the mask's first rows.
 [[gnu::always_inline]] inline uint64_t rows_covered_32(const std::array<int64_t, 3>& first,
                                                        const std::array<int64_t, 3>& dx,
                                                        const std::array<int64_t, 3>& dy, int rows) {
@@ -179,29 +181,22 @@ uint64_t coverage_mask(const TriangleEdges& t, int ox, int oy, const Rect& r) {
     }
     const uint64_t in_r = square_rect(ox, oy, r);
 #if defined(__SSE2__)
-    if (fits_32_bits(row, dx, dy, r.y1 - r.y0))
-        return (rows_covered_32(row, dx, dy, r.y1 - r.y0) << ((r.y0 - oy) * kSquareSize)) & in_r;
+    if (steps_fit_32(dx, dy))
+        return (rows_covered_32(clamped(row), dx, dy, r.y1 - r.y0) << ((r.y0 - oy) * kSquareSize)) & in_r;
 #endif
     return rows_covered_64(row, dx, dy, oy, r) & in_r;
 }
 
 size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out) {
     const int x0 = r.x0 & ~(kBlockSize - 1), y0 = r.y0 & ~(kBlockSize - 1);
-    // Within a block an edge's values are its value at the block's first
-    // pixel plus offsets of at most 7 (|dx| + |dy|). Where that is below
-    // kClamp, clamping the first value to [-kClamp, kClamp] keeps every
-    // value's sign and brings them all within 32 bits: far from an edge only
-    // the side matters. Edges longer than about 1000 pixels take 64 bits.
-    constexpr int64_t kClamp = int64_t(1) << 30;
     // Per edge: its value at the centre of pixel (x0, y0) and its steps per pixel.
     std::array<int64_t, 3> row_start, dx, dy;
-    bool fits_32 = true;
     for (size_t i = 0; i < 3; ++i) {
         dx[i] = t.ia[i] * kSubpixelOne;
         dy[i] = t.ib[i] * kSubpixelOne;
         row_start[i] = t.ia[i] * pixel_centre(x0) + t.ib[i] * pixel_centre(y0) + t.ic[i];
-        fits_32 = fits_32 && (kBlockSize - 1) * (std::abs(dx[i]) + std::abs(dy[i])) < kClamp;
     }
+    const bool fits_32 = steps_fit_32(dx, dy);
     // Without branches on the coverage (they mispredicted at every other
     // block: perf): every block's eight rows are computed, and blocks
     // without pixels are written over.
@@ -213,11 +208,8 @@ size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out) 
                          std::min(by + kBlockSize, r.y1)};
             uint64_t pixels = square_rect(bx, by, b);
 #if defined(__SSE2__)
-            if (fits_32) {
-                const std::array<int64_t, 3> first{std::clamp(e[0], -kClamp, kClamp), std::clamp(e[1], -kClamp, kClamp),
-                                                   std::clamp(e[2], -kClamp, kClamp)};
-                pixels &= square_covered_32(first, dx, dy);
-            } else
+            if (fits_32) pixels &= square_covered_32(clamped(e), dx, dy);
+            else
 #endif
             {
                 std::array<int64_t, 3> first_row;
