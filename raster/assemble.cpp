@@ -57,7 +57,7 @@ void assemble(Primitive prim, uint32_t n, std::vector<AssembledPrim>& out, bool 
         if (n >= 2) add_line(out, n - 1, 0, 0);
         break;
     case Primitive::Triangles:
-        for (uint32_t i = 0; i + 2 < n; i += 3) add_tri(out, i, i + 1, i + 2, i + 2);
+        for (uint32_t i = 0; 3 * i + 2 < n; ++i) out.push_back(triangle_at(i));
         break;
     case Primitive::TriangleStrip:
         for (uint32_t i = 0; i + 2 < n; ++i) {

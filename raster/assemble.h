@@ -20,6 +20,10 @@ struct AssembledPrim {
     uint8_t edges = 7;
 };
 
+// Triangle i of GL_TRIANGLES: draw() makes these on the fly instead of an
+// array (for a 262k-triangle draw the array cost 2.4% of the frame: perf).
+inline AssembledPrim triangle_at(uint32_t i) { return {{3 * i, 3 * i + 1, 3 * i + 2}, 3 * i + 2, 3, 7}; }
+
 // Quads split 0-1-2 / 0-2-3 as llvmpipe does; polygons become fans around
 // vertex 0. Incomplete trailing primitives are dropped.
 // `unfilled` (glPolygonMode other than GL_FILL on a face): quads, quad strips

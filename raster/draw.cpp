@@ -403,13 +403,14 @@ void prepare(DrawContext& c, const ir::Shader& vs, uint32_t vertex_count, unsign
 constexpr size_t kSetupJob = 8192;
 constexpr size_t kParallelSetup = 2 * kSetupJob;
 
-void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<AssembledPrim>& assembled, size_t begin,
-                  size_t end, std::span<const uint32_t> indices) {
+void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<AssembledPrim>& assembled, bool triangles,
+                  size_t begin, size_t end, std::span<const uint32_t> indices) {
     auto id = [&](uint32_t position) { return indices.empty() ? position : indices[position]; };
     out.prims.reserve(end - begin);
     out.bounds.reserve(end - begin);
     for (size_t i = begin; i < end; ++i) {
-        const AssembledPrim& p = assembled[i];
+        // GL_TRIANGLES, the commonest mode, without the array (raster/assemble.h).
+        const AssembledPrim p = triangles ? triangle_at(uint32_t(i)) : assembled[i];
         std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
         out.current_primitive = uint32_t(i);
         out.current_ids = ids;
@@ -430,21 +431,24 @@ std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint
                                        std::span<const uint32_t> indices, unsigned threads, DrawScratch& scratch) {
     uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
     std::vector<AssembledPrim>& assembled = scratch.assembled;
+    const bool triangles = prim == Primitive::Triangles;  // the same either way in the unfilled modes
     bool unfilled = c.gl.polygon_mode[0] != PolygonMode::Fill || c.gl.polygon_mode[1] != PolygonMode::Fill;
-    assemble(prim, stream, assembled, unfilled);
-    size_t jobs = (assembled.size() + kSetupJob - 1) / kSetupJob;
-    unsigned workers = assembled.size() < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
+    if (triangles) assembled.clear();
+    else assemble(prim, stream, assembled, unfilled);
+    const size_t count = triangles ? stream / 3 : assembled.size();
+    size_t jobs = (count + kSetupJob - 1) / kSetupJob;
+    unsigned workers = count < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
     // One thread: one job, whose primitives need no copy. A primitive's setup
     // does not depend on its job, so neither do the results.
-    size_t job_size = workers == 1 ? std::max<size_t>(assembled.size(), 1) : kSetupJob;
-    jobs = std::max<size_t>(1, (assembled.size() + job_size - 1) / job_size);
+    size_t job_size = workers == 1 ? std::max<size_t>(count, 1) : kSetupJob;
+    jobs = std::max<size_t>(1, (count + job_size - 1) / job_size);
     if (scratch.setup.size() < jobs) scratch.setup.resize(jobs);
     std::span<SetupOut> outs(scratch.setup.data(), jobs);
     for (SetupOut& out : outs) out.clear();
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
         for (size_t job; queue.next(&job);)
-            set_up_range(c, outs[job], assembled, job * job_size, std::min(assembled.size(), (job + 1) * job_size),
+            set_up_range(c, outs[job], assembled, triangles, job * job_size, std::min(count, (job + 1) * job_size),
                          indices);
     });
     return outs;
