@@ -32,6 +32,7 @@ std::optional<TriangleSetup> setup_triangle(const std::array<glm::vec2, 3>& win,
 }
 
 bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, TriangleSetup& t) {
+#pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
         if (!std::isfinite(win[i].x) || !std::isfinite(win[i].y)) return false;
         t.fx[i] = snap(win[i].x);
@@ -39,6 +40,8 @@ bool setup_triangle(const std::array<glm::vec2, 3>& win, const Rect& scissor, Tr
     }
     t.area2 = (t.fx[1] - t.fx[0]) * (t.fy[2] - t.fy[0]) - (t.fy[1] - t.fy[0]) * (t.fx[2] - t.fx[0]);
     if (t.area2 == 0) return false;
+    // Unrolled: as a loop, `% 3` and the indexed loads were a fifth of setup (perf).
+#pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
         int a = (i + 1) % 3, b = (i + 2) % 3;
         int64_t dx = t.fx[b] - t.fx[a], dy = t.fy[b] - t.fy[a];
