@@ -122,9 +122,9 @@ struct CoveredBlock {
 // pixel, rows of blocks bottom up, left to right, into `out` (room for
 // blocks_spanned(r)); returns how many. One call per triangle and tile: the
 // edge values at r's first block are computed once and each block's from
-// them by additions. Where r's values fit in 32 bits (almost always), every
-// block's 64 pixels are tested, four a register, without a branch on the
-// coverage: the triangles of the lecture's scenes span a few blocks each,
+// them by additions. Where the edges' steps allow (edges under about 1000
+// pixels), every block's 64 pixels are tested in 32 bits, four a register,
+// without a branch on the coverage: the triangles of the lecture's scenes span a few blocks each,
 // and branches that skipped the blocks outside an edge or inside all three
 // mispredicted at every other block (perf; 6% of the 1080p spot frame).
 size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out);
