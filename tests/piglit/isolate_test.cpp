@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <csignal>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -48,18 +49,35 @@ TEST_CASE("a hang is killed at the time limit", "[piglit][isolate]") {
     CHECK(secs < 5);
 }
 
-TEST_CASE("parallel isolated runs keep their own results", "[piglit][isolate]") {
-    std::vector<TestCase> cases;
-    for (int i = 0; i < 24; ++i) cases.push_back({std::to_string(i), std::to_string(i)});
-    auto results = run_tests(cases, 6, [](const TestCase& tc) {
-        return run_isolated([&] {
-            int i = std::stoi(tc.path);
-            if (i % 5 == 4) std::raise(SIGSEGV);
-            return TestResult{Outcome::Pass, "r" + tc.path};
-        }, 10);
-    }, nullptr);
-    for (int i = 0; i < 24; ++i) {
+// The threads of this process, from /proc/self/status.
+static int thread_count() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(8));
+    return -1;
+}
+
+TEST_CASE("parallel isolated runs keep their own results, reported in order", "[piglit][isolate]") {
+    std::vector<size_t> order;
+    std::vector<int> threads_at_report;
+    auto results = run_isolated_tests(24, 6, [](size_t i) {
+        if (i % 5 == 4) std::raise(SIGSEGV);
+        if (i % 7 == 3) std::this_thread::sleep_for(std::chrono::seconds(30));
+        // Later tests end first: the reports must still come in order.
+        std::this_thread::sleep_for(std::chrono::milliseconds(10 * (24 - i)));
+        return TestResult{Outcome::Pass, "r" + std::to_string(i)};
+    }, 2, [&](size_t i, const TestResult&) {
+        order.push_back(i);
+        threads_at_report.push_back(thread_count());
+    });
+    for (size_t i = 0; i < 24; ++i) {
+        INFO(i);
+        CHECK(order[i] == i);
+        // Children are forked from this thread alone: no thread of the runner
+        // may be allocating at a fork (#17: an ASan child hung on its lock).
+        CHECK(threads_at_report[i] == 1);
         if (i % 5 == 4) CHECK(results[i].message == "crashed: signal 11 (SIGSEGV)");
+        else if (i % 7 == 3) CHECK(results[i].message == "timed out after 2 s");
         else CHECK(results[i].message == "r" + std::to_string(i));
     }
 }

@@ -127,25 +127,27 @@ int run_test_command(const TestOptions& o) {
     run_options.time_limit_s = o.time_limit;
     run_options.precision = o.precision;
     run_options.backend = o.backend;
-    if (!o.no_isolate) pg::warm_up_compiler(o.backend);
-    auto run_one = [&](const pg::TestCase& tc) {
-        if (o.no_isolate) {
+    auto report = [&](size_t i, const pg::TestResult& r) {
+        std::fputs((pg::format_result_line(cases[i].display, r) + "\n").c_str(), stdout);
+        std::fflush(stdout);
+        if (tsv) tsv << pg::format_tsv_line(cases[i].display, r) << "\n";
+    };
+    std::vector<pg::TestResult> results;
+    if (o.no_isolate) {
+        results = pg::run_tests(cases, o.jobs, [&](const pg::TestCase& tc) {
             Watchdog watchdog(o.time_limit);
             pg::RunOptions limited = run_options;
             limited.cancel = watchdog.flag();
             return pg::run_test_file(tc.path, limited);
-        }
+        }, report);
+    } else {
+        // Every thread the warm-up started has ended: the children are forked from this one.
+        pg::warm_up_compiler(o.backend);
         // A hard limit a bit above the soft one, which is only checked between commands.
-        return pg::run_isolated([&] { return pg::run_test_file(tc.path, run_options); },
-                                o.time_limit * 1.25 + 5);
-    };
-    auto results = pg::run_tests(
-        cases, o.jobs, run_one,
-        [&](size_t i, const pg::TestResult& r) {
-            std::fputs((pg::format_result_line(cases[i].display, r) + "\n").c_str(), stdout);
-            std::fflush(stdout);
-            if (tsv) tsv << pg::format_tsv_line(cases[i].display, r) << "\n";
-        });
+        results = pg::run_isolated_tests(cases.size(), o.jobs, [&](size_t i) {
+            return pg::run_test_file(cases[i].path, run_options);
+        }, o.time_limit * 1.25 + 5, report);
+    }
     bool have_expect = !o.expect.empty();
     auto summary = pg::summarize(cases, results, have_expect ? &expectations : nullptr);
     std::fputs(pg::format_summary(summary, have_expect).c_str(), stdout);

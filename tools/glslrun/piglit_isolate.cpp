@@ -13,6 +13,8 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
 namespace glslrun::piglit {
 namespace {
@@ -81,24 +83,6 @@ std::optional<TestResult> decode(const std::string& bytes) {
     ::_exit(0);  // no atexit handlers or static destructors of the parent's state
 }
 
-// Reads the child's pipe until the whole result or EOF arrived; false on timeout.
-bool read_until_eof(int fd, std::string& out, std::chrono::steady_clock::time_point deadline) {
-    char buf[4096];
-    while (true) {
-        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) return false;
-        pollfd p{fd, POLLIN, 0};
-        int ready = ::poll(&p, 1, int(std::min<long long>(left.count(), 1000)));
-        if (ready < 0 && errno == EINTR) continue;
-        if (ready <= 0) continue;
-        ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return true;
-        out.append(buf, size_t(n));
-        if (auto size = payload_size(out); size && out.size() >= kHeader + *size) return true;
-    }
-}
-
 std::string describe_status(int status) {
     if (WIFSIGNALED(status)) {
         int sig = WTERMSIG(status);
@@ -126,9 +110,19 @@ TestResult not_isolated(const char* what) {
     return {Outcome::Fail, std::string("not run: ") + what + " failed: " + std::strerror(errno)};
 }
 
-}  // namespace
+using Clock = std::chrono::steady_clock;
 
-TestResult run_isolated(const std::function<TestResult()>& fn, double timeout_s) {
+// A test whose child is running: its pipe's read end and what arrived so far.
+struct Child {
+    size_t index = 0;
+    pid_t pid = -1;
+    int fd = -1;
+    std::string bytes;
+    Clock::time_point start, deadline;
+};
+
+// Forks the child for test `index`; a result instead when pipe2 or fork fails.
+std::variant<Child, TestResult> start_child(size_t index, const IsolatedTest& fn, double timeout_s) {
     int fds[2];
     if (retry_while_busy([&] { return ::pipe2(fds, O_CLOEXEC); }) != 0) return not_isolated("pipe2");
     if (fds[1] < 3) {  // stdio was closed: move the write end above it, where the child keeps it
@@ -149,25 +143,100 @@ TestResult run_isolated(const std::function<TestResult()>& fn, double timeout_s)
         return not_isolated("fork");
     }
     if (pid == 0) {
-        // Drop every other descriptor, including the pipes of tests that other
-        // threads are running right now.
+        // Drop every other descriptor, including the pipes of the other running children.
         if (fds[1] > 3) ::close_range(3, unsigned(fds[1]) - 1, 0);
         ::close_range(unsigned(fds[1]) + 1, ~0u, 0);
-        child_main(fds[1], fn);
+        child_main(fds[1], [&] { return fn(index); });
     }
     ::close(fds[1]);
-    auto deadline = std::chrono::steady_clock::now() +
-                    std::chrono::milliseconds(static_cast<long long>(timeout_s * 1000));
-    std::string bytes;
-    bool finished = read_until_eof(fds[0], bytes, deadline);
-    ::close(fds[0]);
-    if (!finished) ::kill(pid, SIGKILL);
+    Child child{index, pid, fds[0], {}, Clock::now(), {}};
+    child.deadline = child.start + std::chrono::milliseconds(static_cast<long long>(timeout_s * 1000));
+    return child;
+}
+
+// Reads what the child's pipe holds now; true once the whole result or EOF arrived.
+bool read_available(Child& child) {
+    char buf[65536];
+    ssize_t n = ::read(child.fd, buf, sizeof buf);
+    if (n < 0) return errno != EINTR && errno != EAGAIN;
+    if (n == 0) return true;
+    child.bytes.append(buf, size_t(n));
+    auto size = payload_size(child.bytes);
+    return size && child.bytes.size() >= kHeader + *size;
+}
+
+// Ends a child (killed first when it ran out of time) and makes its result.
+TestResult finish_child(Child& child, bool timed_out, double timeout_s) {
+    ::close(child.fd);
+    if (timed_out) ::kill(child.pid, SIGKILL);
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-    if (!finished)
-        return {Outcome::Fail, "timed out after " + std::to_string(static_cast<long long>(timeout_s)) + " s"};
-    if (auto r = decode(bytes)) return *r;
-    return {Outcome::Fail, describe_status(status)};
+    while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {}
+    TestResult r;
+    if (timed_out)
+        r = {Outcome::Fail, "timed out after " + std::to_string(static_cast<long long>(timeout_s)) + " s"};
+    else if (auto decoded = decode(child.bytes))
+        r = *decoded;
+    else
+        r = {Outcome::Fail, describe_status(status)};
+    r.seconds = std::chrono::duration<double>(Clock::now() - child.start).count();
+    return r;
+}
+
+// Waits until some child's pipe is readable or the earliest deadline passes
+// (at most a second), then advances every child; finished ones leave `running`.
+void advance_children(std::vector<Child>& running, double timeout_s,
+                      const std::function<void(size_t, TestResult)>& finished) {
+    std::vector<pollfd> polls;
+    auto earliest = running.front().deadline;
+    for (const Child& c : running) {
+        polls.push_back({c.fd, POLLIN, 0});
+        earliest = std::min(earliest, c.deadline);
+    }
+    auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(earliest - Clock::now()).count();
+    int ready = ::poll(polls.data(), polls.size(), int(std::clamp<long long>(wait + 1, 0, 1000)));
+    if (ready < 0 && errno != EINTR) ready = 0;
+    auto now = Clock::now();
+    std::vector<Child> still_running;
+    for (size_t i = 0; i < running.size(); ++i) {
+        Child& c = running[i];
+        bool done = ready > 0 && polls[i].revents != 0 && read_available(c);
+        if (done || now >= c.deadline)
+            finished(c.index, finish_child(c, !done, timeout_s));
+        else
+            still_running.push_back(std::move(c));
+    }
+    running = std::move(still_running);
+}
+
+}  // namespace
+
+std::vector<TestResult> run_isolated_tests(size_t count, int jobs, const IsolatedTest& fn, double timeout_s,
+                                           const Report& report) {
+    std::vector<TestResult> results(count);
+    std::vector<char> done(count, 0);
+    size_t next = 0, reported = 0;
+    auto finished = [&](size_t index, TestResult r) {
+        results[index] = std::move(r);
+        done[index] = 1;
+    };
+    std::vector<Child> running;
+    jobs = std::clamp(jobs, 1, 256);
+    while (reported < count) {
+        while (running.size() < size_t(jobs) && next < count) {
+            auto started = start_child(next, fn, timeout_s);
+            if (auto* child = std::get_if<Child>(&started)) running.push_back(std::move(*child));
+            else finished(next, std::get<TestResult>(std::move(started)));
+            ++next;
+        }
+        for (; reported < count && done[reported]; ++reported)
+            if (report) report(reported, results[reported]);
+        if (!running.empty()) advance_children(running, timeout_s, finished);
+    }
+    return results;
+}
+
+TestResult run_isolated(const std::function<TestResult()>& fn, double timeout_s) {
+    return run_isolated_tests(1, 1, [&](size_t) { return fn(); }, timeout_s, nullptr)[0];
 }
 
 }  // namespace glslrun::piglit
