@@ -159,7 +159,7 @@ TEST_CASE("per-fragment operations give the same image whatever the thread count
     Framebuffer one = render(1);
     // Something of every buffer was written: not a vacuous comparison.
     CHECK(one.color_buffers() == 2);
-    CHECK(std::count(one.stencil.begin(), one.stencil.end(), uint8_t(2)) < one.stencil.size());
+    CHECK(std::count(one.stencil.begin(), one.stencil.end(), uint8_t(2)) < std::ptrdiff_t(one.stencil.size()));
     for (unsigned threads : {2u, 3u, 7u}) {
         INFO("threads " << threads);
         Framebuffer many = render(threads);
