@@ -176,18 +176,35 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     pipeline_ = fused_pipeline();
 }
 
+namespace {
+
+// The fused pipeline's blending and colour mask (rt::ColorOps) of `o`.
+rt::ColorOps color_ops_of(const FragmentOps& o) {
+    rt::ColorOps c;
+    c.mask = o.color_mask;
+    if (!o.blend) return c;
+    const BlendState& s = o.blend_state;
+    c.blend = true;
+    c.src_rgb = s.src_rgb, c.dst_rgb = s.dst_rgb, c.src_alpha = s.src_alpha, c.dst_alpha = s.dst_alpha;
+    c.equation_rgb = s.equation_rgb, c.equation_alpha = s.equation_alpha;
+    for (size_t k = 0; k < 4; ++k) c.constant[k] = uint8_t(o.resolved_blend.constant8[k]);
+    return c;
+}
+
+}  // namespace
+
 // The fused pipeline where the shader runs JIT-compiled and the draw's
 // state is one it takes: the depth test (any function, either mask) and
-// plain stores into one colour buffer, no shader debugger, no
+// stores into one colour buffer, with blending and the colour mask where
+// that buffer is RGBA8 and the depth test early; no shader debugger, no
 // GL_COORD_REPLACE. Null otherwise,
 // until the program has shaded enough fragments to pay for it
 // (rt::kPipelineAfterFragments), and under Backend::Auto until its
 // background compile is done.
 const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
     const FragmentOps& o = ops_;
-    bool all_channels = o.color_mask == std::array<bool, 4>{true, true, true, true};
-    if (interp_->backend() != Backend::Jit || probe_ || o.alpha_test || o.stencil_test || o.blend || o.logic_op ||
-        !all_channels || gl_.draw_buffers != 1)
+    if (interp_->backend() != Backend::Jit || probe_ || o.alpha_test || o.stencil_test || o.logic_op ||
+        gl_.draw_buffers != 1)
         return nullptr;
     rt::PipelineKey key;
     for (const InputPlan& p : inputs_) {
@@ -216,11 +233,15 @@ const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
     key.depth_write = o.depth_write;
     key.depth_func = o.depth_func;
     key.early_depth = early_depth_;
+    // Without a colour output nothing is blended or masked.
+    if (color_out_[0]) key.color_ops = color_ops_of(o);
+    if (key.color_ops.reads_color() && (key.float_color || (o.depth_test && !early_depth_))) return nullptr;
     key.avx2 = rt::cpu_has_avx2();
     target_.depth = fb_.depth.data();
     target_.color = key.float_color ? static_cast<void*>(fb_.color_data<float>(0).data())
                                     : static_cast<void*>(fb_.color_data<uint8_t>(0).data());
     target_.width = fb_.width;
+    target_.height = fb_.height;
     return state_of(program_).pipelines->get(key, primitive_layout(), program_.exec.backend == Backend::Jit);
 }
 

@@ -17,6 +17,7 @@
 // rasterizer's primitive is read through PrimitiveLayout's offsets (the
 // runtime does not know raster/'s types).
 #pragma once
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -55,10 +56,28 @@ struct PipelineInput {
     bool operator<(const PipelineInput& o) const { return tie() < o.tie(); }
 };
 
+// Blending into RGBA8 storage and the colour mask (raster/fragment_ops.h:
+// blend_unorm8's 8-bit steps): with either on, the colour write reads the
+// buffer's bytes first.
+struct ColorOps {
+    bool blend = false;
+    BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
+    BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;
+    BlendEquation equation_rgb = BlendEquation::Add, equation_alpha = BlendEquation::Add;
+    std::array<uint8_t, 4> constant{};  // the blend colour as bytes
+    std::array<bool, 4> mask{true, true, true, true};
+    bool reads_color() const { return blend || mask != std::array<bool, 4>{true, true, true, true}; }
+    auto tie() const {
+        return std::tie(blend, src_rgb, dst_rgb, src_alpha, dst_alpha, equation_rgb, equation_alpha, constant, mask);
+    }
+    bool operator<(const ColorOps& o) const { return tie() < o.tie(); }
+};
+
 // What one pipeline is compiled for: the program's inputs and outputs and
-// the draw's per-fragment state. The fused path takes only the depth test
-// (any function, with or without writes) and plain stores into one colour
-// buffer; other states keep the C++ path.
+// the draw's per-fragment state. The fused path takes the depth test (any
+// function, with or without writes) and stores into one colour buffer,
+// with blending and the colour mask where the buffer is RGBA8 and the depth
+// test, if any, is early; other states keep the C++ path.
 struct PipelineKey {
     std::vector<PipelineInput> inputs;  // per input register, in the order the fragment stage passes them
     uint32_t color_channels = 0;        // components of the colour output (0: none written)
@@ -66,10 +85,11 @@ struct PipelineKey {
     bool depth_output = false;          // gl_FragDepth written
     bool depth_test = false, depth_write = false, early_depth = false;
     CompareFunc depth_func = CompareFunc::Less;
+    ColorOps color_ops;  // only with RGBA8 storage, colour written and no late depth test
     bool avx2 = false;
     auto tie() const {
         return std::tie(inputs, color_channels, float_color, depth_output, depth_test, depth_write, early_depth,
-                        depth_func, avx2);
+                        depth_func, color_ops, avx2);
     }
     bool operator<(const PipelineKey& o) const { return tie() < o.tie(); }
 };
@@ -87,7 +107,7 @@ struct QuadBatch {
 struct PipelineTarget {
     float* depth = nullptr;
     void* color = nullptr;
-    int32_t width = 0;
+    int32_t width = 0, height = 0;
 };
 
 struct FragmentPipeline {

@@ -26,6 +26,13 @@ namespace {
 constexpr int kDx[4] = {0, 1, 0, 1};
 constexpr int kDy[4] = {0, 0, 1, 1};
 
+// Whether the colour is written a quad at a time (write_rgba8_quad): RGBA8
+// storage and no late depth test. Blending and the colour mask are
+// generated there only.
+bool writes_rgba8_quads(const PipelineKey& key) {
+    return !key.float_color && key.color_channels > 0 && !(key.depth_test && !key.early_depth);
+}
+
 class PipelineEmitter {
 public:
     // The functions are named glslrun_quad_depth, glslrun_inputs and
@@ -126,10 +133,16 @@ private:
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
     void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
     void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes);
+    void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
+                                llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
+    llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
+    std::array<llvm::Value*, 4> blend_and_mask(const std::array<llvm::Value*, 4>& src,
+                                               const std::array<llvm::Value*, 4>& dst);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
         target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
         target_.width = load_i(target, offsetof(PipelineTarget, width));
+        target_.height = load_i(target, offsetof(PipelineTarget, height));
     }
 
     llvm::Module& module_;
@@ -142,7 +155,7 @@ private:
     // Per function being defined.
     llvm::Function* fn_ = nullptr;
     struct {
-        llvm::Value *depth, *color, *width;
+        llvm::Value *depth, *color, *width, *height;
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
@@ -522,11 +535,6 @@ void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm
 // lanes: a quad's live lanes vary, and branches on them mispredicted (perf).
 void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
-    llvm::Value* words = llvm::Constant::getNullValue(v4i);
-    for (unsigned k = 0; k < 4; ++k) {
-        llvm::Value* byte = b_.CreateAnd(v.rgba[k], llvm::ConstantInt::get(v4i, 255));
-        words = b_.CreateOr(words, b_.CreateShl(byte, llvm::ConstantInt::get(v4i, 8 * k)));
-    }
     llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, b_.CreateTrunc(lanes, i32_)),
                                                      llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{1, 2, 4, 8})),
                                         llvm::Constant::getNullValue(v4i));
@@ -542,10 +550,134 @@ void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm:
         for (unsigned i = 0; i < 4; ++i) mask = b_.CreateInsertElement(mask, i == 0 ? lo : i == 1 ? hi : off, uint64_t(i));
         return mask;
     };
+    llvm::Value* lower_slot = b_.CreateGEP(i32_, target_.color, pixel);
+    llvm::Value* upper_slot = b_.CreateGEP(i32_, target_.color, above);
+    if (key_.color_ops.reads_color()) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
+    llvm::Value* words = pack_rgba8(v.rgba);
     llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1});
     llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3, 2, 3});
-    b_.CreateMaskedStore(lower, b_.CreateGEP(i32_, target_.color, pixel), llvm::Align(4), row(0));
-    b_.CreateMaskedStore(upper, b_.CreateGEP(i32_, target_.color, above), llvm::Align(4), row(2));
+    b_.CreateMaskedStore(lower, lower_slot, llvm::Align(4), row(0));
+    b_.CreateMaskedStore(upper, upper_slot, llvm::Align(4), row(2));
+}
+
+// Four lanes of channel values (0 to 255) as RGBA8 words.
+llvm::Value* PipelineEmitter::pack_rgba8(const std::array<llvm::Value*, 4>& rgba) {
+    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
+    llvm::Value* words = llvm::Constant::getNullValue(v4i);
+    for (unsigned k = 0; k < 4; ++k) {
+        llvm::Value* byte = b_.CreateAnd(rgba[k], llvm::ConstantInt::get(v4i, 255));
+        words = b_.CreateOr(words, b_.CreateShl(byte, llvm::ConstantInt::get(v4i, 8 * k)));
+    }
+    return words;
+}
+
+// write_rgba8_quad() with blending or a colour mask: the buffer's bytes of
+// the quad are read, combined with the fragments' (blend_and_mask) and
+// written back in the live lanes. A quad inside the buffer reads and writes
+// its two rows as plain 8-byte words: a masked load of four pixels after the
+// previous quad's masked store over the same 16 bytes (two of them its
+// pixels) waited for that store (perf: half of the blending function). At
+// the buffer's right and top edges its lanes may lie outside, and the row's
+// other pixel in another tile: masked loads and stores there.
+void PipelineEmitter::read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live,
+                                             llvm::Value* lower_slot, llvm::Value* upper_slot,
+                                             llvm::Value* lower_mask, llvm::Value* upper_mask) {
+    auto* v2i = llvm::FixedVectorType::get(i32_, 2);
+    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
+    auto combined = [&](llvm::Value* stored) {
+        std::array<llvm::Value*, 4> dst;
+        for (unsigned k = 0; k < 4; ++k)
+            dst[k] = b_.CreateAnd(b_.CreateLShr(stored, llvm::ConstantInt::get(v4i, 8 * k)), llvm::ConstantInt::get(v4i, 255));
+        return b_.CreateSelect(live, pack_rgba8(blend_and_mask(v.rgba, dst)), stored);
+    };
+    llvm::Value* x = b_.CreateExtractElement(q.px, uint64_t(0));
+    llvm::Value* y = b_.CreateExtractElement(q.py, uint64_t(0));
+    llvm::Value* inside = b_.CreateAnd(b_.CreateICmpSLT(b_.CreateAdd(x, b_.getInt32(1)), target_.width),
+                                       b_.CreateICmpSLT(b_.CreateAdd(y, b_.getInt32(1)), target_.height));
+    llvm::BasicBlock* whole = llvm::BasicBlock::Create(b_.getContext(), "whole_quad", fn_);
+    llvm::BasicBlock* edge = llvm::BasicBlock::Create(b_.getContext(), "edge_quad", fn_);
+    llvm::BasicBlock* done = llvm::BasicBlock::Create(b_.getContext(), "quad_written", fn_);
+    b_.CreateCondBr(inside, whole, edge);
+    b_.SetInsertPoint(whole);
+    {
+        llvm::Value* below = b_.CreateAlignedLoad(v2i, lower_slot, llvm::Align(4));
+        llvm::Value* top = b_.CreateAlignedLoad(v2i, upper_slot, llvm::Align(4));
+        llvm::Value* words = combined(b_.CreateShuffleVector(below, top, llvm::ArrayRef<int>{0, 1, 2, 3}));
+        b_.CreateAlignedStore(b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1}), lower_slot, llvm::Align(4));
+        b_.CreateAlignedStore(b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3}), upper_slot, llvm::Align(4));
+        b_.CreateBr(done);
+    }
+    b_.SetInsertPoint(edge);
+    {
+        llvm::Value* zero = llvm::Constant::getNullValue(v4i);
+        llvm::Value* below = b_.CreateMaskedLoad(v4i, lower_slot, llvm::Align(4), lower_mask, zero);
+        llvm::Value* top = b_.CreateMaskedLoad(v4i, upper_slot, llvm::Align(4), upper_mask, zero);
+        llvm::Value* words = combined(b_.CreateShuffleVector(below, top, llvm::ArrayRef<int>{0, 1, 4, 5}));
+        b_.CreateMaskedStore(b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1}), lower_slot, llvm::Align(4),
+                             lower_mask);
+        b_.CreateMaskedStore(b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3, 2, 3}), upper_slot, llvm::Align(4),
+                             upper_mask);
+        b_.CreateBr(done);
+    }
+    b_.SetInsertPoint(done);
+}
+
+// The channels to store, four lanes each, from the fragments' bytes `src`
+// and the buffer's `dst`: raster::blend_unorm8 (factor8, combine8 and
+// mul_unorm8 in raster/fragment_ops.cpp) where blending is on, then the
+// colour mask.
+std::array<llvm::Value*, 4> PipelineEmitter::blend_and_mask(const std::array<llvm::Value*, 4>& src,
+                                                            const std::array<llvm::Value*, 4>& dst) {
+    const ColorOps& o = key_.color_ops;
+    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
+    auto constant = [&](uint32_t c) { return llvm::ConstantInt::get(v4i, c); };
+    auto inv = [&](llvm::Value* x) { return b_.CreateSub(constant(255), x); };
+    auto umin = [&](llvm::Value* x, llvm::Value* y) { return b_.CreateSelect(b_.CreateICmpULT(x, y), x, y); };
+    auto umax = [&](llvm::Value* x, llvm::Value* y) { return b_.CreateSelect(b_.CreateICmpUGT(x, y), x, y); };
+    // Table 4.1's factor for channel k (3: alpha) in 8-bit fixed point.
+    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
+        switch (f) {
+        case BlendFactor::Zero: return constant(0);
+        case BlendFactor::One: return constant(255);
+        case BlendFactor::SrcColor: return src[k];
+        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
+        case BlendFactor::DstColor: return dst[k];
+        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
+        case BlendFactor::SrcAlpha: return src[3];
+        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
+        case BlendFactor::DstAlpha: return dst[3];
+        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
+        case BlendFactor::ConstantColor: return constant(o.constant[k]);
+        case BlendFactor::OneMinusConstantColor: return constant(255u - o.constant[k]);
+        case BlendFactor::ConstantAlpha: return constant(o.constant[3]);
+        case BlendFactor::OneMinusConstantAlpha: return constant(255u - o.constant[3]);
+        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(255) : umin(src[3], inv(dst[3]));
+        }
+        return constant(0);
+    };
+    // (x * f * 2 + 255) / 510: the product rounded to n/255.
+    auto product = [&](llvm::Value* x, llvm::Value* f) {
+        return b_.CreateUDiv(b_.CreateAdd(b_.CreateShl(b_.CreateMul(x, f), constant(1)), constant(255)), constant(510));
+    };
+    std::array<llvm::Value*, 4> out;
+    for (size_t k = 0; k < 4; ++k) {
+        out[k] = src[k];
+        if (o.blend) {
+            const bool alpha = k == 3;
+            const BlendEquation eq = alpha ? o.equation_alpha : o.equation_rgb;
+            llvm::Value* a = product(src[k], factor(alpha ? o.src_alpha : o.src_rgb, k));
+            llvm::Value* b = product(dst[k], factor(alpha ? o.dst_alpha : o.dst_rgb, k));
+            switch (eq) {
+            case BlendEquation::Add: out[k] = umin(b_.CreateAdd(a, b), constant(255)); break;
+            case BlendEquation::Subtract: out[k] = b_.CreateSelect(b_.CreateICmpUGT(a, b), b_.CreateSub(a, b), constant(0)); break;
+            case BlendEquation::ReverseSubtract: out[k] = b_.CreateSelect(b_.CreateICmpUGT(b, a), b_.CreateSub(b, a), constant(0)); break;
+            case BlendEquation::Min: out[k] = umin(src[k], dst[k]); break;
+            case BlendEquation::Max: out[k] = umax(src[k], dst[k]); break;
+            }
+        }
+        if (!o.mask[k]) out[k] = dst[k];
+    }
+    return out;
 }
 
 // A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)
@@ -587,7 +719,7 @@ void PipelineEmitter::define_outputs() {
     load_target(fn_->getArg(3));
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
-    const bool rgba8_only = !key_.float_color && key_.color_channels > 0 && !(key_.depth_test && !key_.early_depth);
+    const bool rgba8_only = writes_rgba8_quads(key_);
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
         llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
         if (rgba8_only) {
@@ -622,6 +754,7 @@ public:
 std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
                                                    double* seconds) {
     const double start = thread_cpu_seconds();
+    if (key.color_ops.reads_color() && !writes_rgba8_quads(key)) return nullptr;  // not generated
     Engine* engine = Engine::of(key.avx2, false);
     if (!engine) return nullptr;
     auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it

@@ -2,8 +2,8 @@
 # The JIT computes the interpreter's bits: every case of the image-hash set
 # (bench/precision.py's CASES, which cover every scene in scenes/), in
 # Precise and Fast, at 1 and 2 threads, rendered by both backends, must give
-# byte-identical PNGs; and the fused fragment pipeline's last frames of two
-# scenes. Reference runs on the interpreter only (--help).
+# byte-identical PNGs; and the fused fragment pipeline's last frames of
+# three scenes. Reference runs on the interpreter only (--help).
 #   tests/cli/backend_identical.sh SOURCE_DIR GLSLRUN
 set -u
 src=$1
@@ -34,9 +34,9 @@ while read -r shader scene; do
     done
 done < "$tmp/cases"
 # The fused fragment pipeline: a program takes it once it has shaded 2^20
-# fragments (runtime/fragment_pipeline.h), so several frames of two scenes,
-# the last of which it must have drawn.
-for case in "spot_pix_fixed spot 1920x1080 6" "colors quad 1024x1024 8"; do
+# fragments (runtime/fragment_pipeline.h), so several frames of three scenes,
+# the last of which it must have drawn (multi_pass: its light passes blend).
+for case in "spot_pix_fixed spot 1920x1080 6" "colors quad 1024x1024 8" "minimal multi_pass 1280x720 3"; do
     set -- $case
     for backend in interp jit; do
         "$glslrun" "$src/shaders/$1.vert" "$src/shaders/$1.frag" "$src/scenes/$2.toml" --size $3 --bench $4 \
