@@ -655,9 +655,12 @@ std::array<llvm::Value*, 4> PipelineEmitter::blend_and_mask(const std::array<llv
         }
         return constant(0);
     };
-    // (x * f * 2 + 255) / 510: the product rounded to n/255.
+    // mul_unorm8's (x * f * 2 + 255) / 510, the product rounded to n/255, as
+    // (t + (t >> 8)) >> 8 with t = x * f + 128: equal for every x and f in
+    // [0, 255] (tests/fused/fused_pipeline.cpp checks), and shifts, not a division.
     auto product = [&](llvm::Value* x, llvm::Value* f) {
-        return b_.CreateUDiv(b_.CreateAdd(b_.CreateShl(b_.CreateMul(x, f), constant(1)), constant(255)), constant(510));
+        llvm::Value* t = b_.CreateAdd(b_.CreateMul(x, f), constant(128));
+        return b_.CreateLShr(b_.CreateAdd(t, b_.CreateLShr(t, constant(8))), constant(8));
     };
     std::array<llvm::Value*, 4> out;
     for (size_t k = 0; k < 4; ++k) {
