@@ -358,7 +358,14 @@ glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float r
 
 void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, float* rgba) {
     float lod = lookup.lod;
-    if (lookup.implicit) lod = lookup.bias ? lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy) + lookup.lod
+    // Without mipmaps and with one filter within a level for both, both
+    // sides of §3.8.9 sample level_base alike: the implicit LOD (a log2 and,
+    // for cube maps, the derivatives on the face) is not needed (perf: most
+    // of the cube-map scene's lookup).
+    const SamplerState& st = texture.sampler;
+    const bool lod_matters =
+        is_mipmap_filter(st.min_filter) || linear_within_level(st.min_filter) != linear_within_level(st.mag_filter);
+    if (lookup.implicit && lod_matters) lod = lookup.bias ? lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy) + lookup.lod
                                            : lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy);
     const glm::vec4 v = sample_complete(texture, lookup.coord, lookup.ref, lod);
     for (int c = 0; c < 4; ++c) rgba[c] = v[c];
