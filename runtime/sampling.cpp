@@ -14,6 +14,9 @@
 
 #include <cmath>
 #include <cstdint>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include "ir/precise_math.h"
 #include "runtime/texture_levels.h"
@@ -196,6 +199,31 @@ float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
     return lk;
 }
 
+#if defined(__SSE2__)
+// A texel's four channels in one register. As glm::vec4, the filters'
+// values came back from calls in two halves and were put together through
+// the stack, where the load waited on the two stores (perf: a fifth of the
+// cube-map scene's lookup). mix() is glm::mix's arithmetic, x * (1 - a) +
+// y * a, channel by channel, so the bits are the same.
+using Texel = __m128;
+inline Texel texel_of(const glm::vec4& v) { return _mm_loadu_ps(&v.x); }
+inline Texel splat_texel(float v) { return _mm_set1_ps(v); }
+inline glm::vec4 vec_of(Texel t) {
+    glm::vec4 v;
+    _mm_storeu_ps(&v.x, t);
+    return v;
+}
+inline Texel mix(Texel x, Texel y, float a) {
+    return _mm_add_ps(_mm_mul_ps(x, _mm_set1_ps(1.0f - a)), _mm_mul_ps(y, _mm_set1_ps(a)));
+}
+#else
+using Texel = glm::vec4;
+inline Texel texel_of(const glm::vec4& v) { return v; }
+inline Texel splat_texel(float v) { return glm::vec4(v); }
+inline glm::vec4 vec_of(Texel t) { return t; }
+inline Texel mix(Texel x, Texel y, float a) { return glm::mix(x, y, a); }
+#endif
+
 // GL 2.1 clamps TEXTURE_BORDER_COLOR to [0, 1] when it is set (§3.8.4); a
 // depth texture's border is the depth border_color.r.
 [[gnu::always_inline]] inline glm::vec4 border_texel(const Lookup& lk) {
@@ -205,14 +233,14 @@ float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
 }
 
 // Texel (i, j, k) of `image`; any index kBorder means the border colour.
-[[gnu::always_inline]] inline glm::vec4 fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k) {
-    if (i < 0 || j < 0 || k < 0) return border_texel(lk);
+[[gnu::always_inline]] inline Texel fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0) return texel_of(border_texel(lk));
     const size_t at = size_t(i) + size_t(image.width) * (size_t(j) + size_t(image.height) * size_t(k));
     const glm::vec4& texel = image.texels[at];
-    return lk.compare ? glm::vec4(compare_depth(lk.st->compare_func, lk.ref, texel.r)) : texel;
+    return lk.compare ? splat_texel(compare_depth(lk.st->compare_func, lk.ref, texel.r)) : texel_of(texel);
 }
 
-[[gnu::always_inline]] inline glm::vec4 sample_nearest(const Lookup& lk, const TextureImage& image) {
+[[gnu::always_inline]] inline Texel sample_nearest(const Lookup& lk, const TextureImage& image) {
     const int i = nearest_index(lk.st->wrap_s, lk.str.x, image.width);
     const int j = lk.dims > 1 ? nearest_index(lk.st->wrap_t, lk.str.y, image.height) : 0;
     const int k = lk.dims > 2 ? nearest_index(lk.st->wrap_r, lk.str.z, image.depth) : 0;
@@ -220,22 +248,22 @@ float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
 }
 
 // §3.8.8: the (bi/tri)linear blend of the 2, 4 or 8 texels around u.
-[[gnu::always_inline]] inline glm::vec4 sample_linear(const Lookup& lk, const TextureImage& image) {
+[[gnu::always_inline]] inline Texel sample_linear(const Lookup& lk, const TextureImage& image) {
     const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
-    if (lk.dims == 1) return glm::mix(fetch(lk, image, x.i0, 0, 0), fetch(lk, image, x.i1, 0, 0), x.a);
+    if (lk.dims == 1) return mix(fetch(lk, image, x.i0, 0, 0), fetch(lk, image, x.i1, 0, 0), x.a);
     const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
     auto plane = [&](int k) {
-        const glm::vec4 row0 = glm::mix(fetch(lk, image, x.i0, y.i0, k), fetch(lk, image, x.i1, y.i0, k), x.a);
-        const glm::vec4 row1 = glm::mix(fetch(lk, image, x.i0, y.i1, k), fetch(lk, image, x.i1, y.i1, k), x.a);
-        return glm::mix(row0, row1, y.a);
+        const Texel row0 = mix(fetch(lk, image, x.i0, y.i0, k), fetch(lk, image, x.i1, y.i0, k), x.a);
+        const Texel row1 = mix(fetch(lk, image, x.i0, y.i1, k), fetch(lk, image, x.i1, y.i1, k), x.a);
+        return mix(row0, row1, y.a);
     };
     if (lk.dims == 2) return plane(0);
     const LinearAxis z = linear_axis(lk.st->wrap_r, lk.str.z, image.depth);
-    return glm::mix(plane(z.i0), plane(z.i1), z.a);
+    return mix(plane(z.i0), plane(z.i1), z.a);
 }
 
 // `level` is within [level_base, q], which completeness guarantees exist.
-[[gnu::always_inline]] inline glm::vec4 sample_level(const Lookup& lk, int level, bool linear) {
+[[gnu::always_inline]] inline Texel sample_level(const Lookup& lk, int level, bool linear) {
     const TextureImage& image = lk.texture->levels(lk.face)[size_t(level)];
     return linear ? sample_linear(lk, image) : sample_nearest(lk, image);
 }
@@ -271,7 +299,7 @@ float mag_threshold(const SamplerState& st) {
     return st.mag_filter == TextureFilter::Linear && nearest_mipmap ? 0.5f : 0.0f;
 }
 
-[[gnu::always_inline]] inline glm::vec4 filter(const Lookup& lk, float lambda) {
+[[gnu::always_inline]] inline Texel filter(const Lookup& lk, float lambda) {
     const SamplerState& st = *lk.st;
     const int base = st.base_level;
     // §3.8.9: lambda <= c magnifies: the mag filter on level_base.
@@ -286,7 +314,7 @@ float mag_threshold(const SamplerState& st) {
     if (float(base) + lambda >= float(q)) return sample_level(lk, q, linear);
     const float whole = floor_f(lambda);
     const int d1 = base + int(whole);
-    return glm::mix(sample_level(lk, d1, linear), sample_level(lk, d1 + 1, linear), lambda - whole);
+    return mix(sample_level(lk, d1, linear), sample_level(lk, d1 + 1, linear), lambda - whole);
 }
 
 // §3.8.14 DEPTH_TEXTURE_MODE: how a depth (or comparison result) becomes RGBA.
@@ -341,7 +369,7 @@ float face_derivative(float sc, float dsc, float ama, float dama) {
                                                          float lod) {
     const SamplerState& st = texture.sampler;
     const Lookup lk = make_lookup(texture, coord, ref);
-    const glm::vec4 v = filter(lk, clamp_lambda(lod + st.lod_bias, st));
+    const glm::vec4 v = vec_of(filter(lk, clamp_lambda(lod + st.lod_bias, st)));
     return texture.depth() ? expand_depth(st.depth_mode, v.r) : v;
 }
 
