@@ -22,7 +22,12 @@ llvmpipe, interleaved, medians of CPU ms per frame:
 - the first 512x512 spot frame, compile included, default backend (auto), 1 thread,
   a fresh process each run (first_frame_ms).
 
-    /usr/bin/python3 bench/jit_bench.py --build build [--runs 5] [--frames 10] [--threads 1,2] [--rows]
+--scenes: every lecture program on its scene (bench/precision.py's cases) and the
+multi-pass scene (blending), 1920x1080, 1 thread, glslrun --backend jit against llvmpipe,
+interleaved, medians of CPU ms per frame over --frames frames (the fused pipeline takes
+over after 2^20 fragments: give it 30 or more).
+
+    /usr/bin/python3 bench/jit_bench.py --build build [--runs 5] [--frames 10] [--threads 1,2] [--rows | --scenes]
 """
 import argparse
 import os
@@ -103,6 +108,29 @@ def rows(args):
           f"{statistics.median(first['auto']) / statistics.median(first['llvmpipe']):.2f} |")
 
 
+def scenes(args):
+    """Each lecture scene and the multi-pass one against llvmpipe (see the module's text)."""
+    cases = list(dict.fromkeys((program, scene) for program, scene, _ in precision.CASES))
+    cases.append(("minimal", "multi_pass.toml"))  # its passes name their own programs
+    runs = {(c, r): [] for c in cases for r in ("jit", "llvmpipe")}
+    for _ in range(args.runs):
+        for program, scene in cases:
+            stem = os.path.join(REPO, "shaders", program)
+            common = [stem + ".vert", stem + ".frag", os.path.join(REPO, "scenes", scene), "--size", "1920x1080",
+                      "--bench", str(args.frames), "-o", "/tmp/jit_bench.png"]
+            runs[((program, scene), "jit")].append(
+                bench([os.path.join(args.build, "glslrun"), *common, "--threads", "1", "--backend", "jit"]))
+            runs[((program, scene), "llvmpipe")].append(
+                bench([os.path.join(args.build, "glref"), "--driver", "llvmpipe", *common],
+                      dict(os.environ, LP_NUM_THREADS="1")))
+    print("| program | scene | jit CPU ms | llvmpipe CPU ms | jit / llvmpipe |")
+    print("|---|---|---|---|---|")
+    for program, scene in cases:
+        jit, lp = (statistics.median(float(x["cpu_median_ms"]) for x in runs[((program, scene), r)])
+                   for r in ("jit", "llvmpipe"))
+        print(f"| {program} | {scene} | {jit:.2f} | {lp:.2f} | {jit / lp:.2f} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", required=True)
@@ -110,10 +138,11 @@ def main():
     ap.add_argument("--frames", type=int, default=10)
     ap.add_argument("--threads", default="1,2")
     ap.add_argument("--rows", action="store_true", help="the marginal rows and the first frame instead")
+    ap.add_argument("--scenes", action="store_true", help="every lecture scene and multi_pass against llvmpipe instead")
     args = ap.parse_args()
     print(f"load average at start: {os.getloadavg()[0]:.2f}; {os.cpu_count()} cores")
-    if args.rows:
-        rows(args)
+    if args.rows or args.scenes:
+        (rows if args.rows else scenes)(args)
         print(f"load average at end: {os.getloadavg()[0]:.2f}")
         return
     renderers = ["interp", "jit"] + (["llvmpipe"] if os.access(os.path.join(args.build, "glref"), os.X_OK) else [])
