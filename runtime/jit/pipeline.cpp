@@ -16,6 +16,7 @@
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Verifier.h>
 
+#include "runtime/jit/blend.h"
 #include "runtime/jit/engine.h"
 
 namespace glslrun::rt::jit {
@@ -136,8 +137,6 @@ private:
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
-    std::array<llvm::Value*, 4> blend_and_mask(const std::array<llvm::Value*, 4>& src,
-                                               const std::array<llvm::Value*, 4>& dst);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
         target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
@@ -572,7 +571,7 @@ llvm::Value* PipelineEmitter::pack_rgba8(const std::array<llvm::Value*, 4>& rgba
 }
 
 // write_rgba8_quad() with blending or a colour mask: the buffer's bytes of
-// the quad are read, combined with the fragments' (blend_and_mask) and
+// the quad are read, combined with the fragments' (emit_blend_and_mask) and
 // written back in the live lanes. A quad inside the buffer reads and writes
 // its two rows as plain 8-byte words: a masked load of four pixels after the
 // previous quad's masked store over the same 16 bytes (two of them its
@@ -588,7 +587,7 @@ void PipelineEmitter::read_modify_write_quad(const Quad& q, const QuadValues& v,
         std::array<llvm::Value*, 4> dst;
         for (unsigned k = 0; k < 4; ++k)
             dst[k] = b_.CreateAnd(b_.CreateLShr(stored, llvm::ConstantInt::get(v4i, 8 * k)), llvm::ConstantInt::get(v4i, 255));
-        return b_.CreateSelect(live, pack_rgba8(blend_and_mask(v.rgba, dst)), stored);
+        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, key_.color_ops, v.rgba, dst)), stored);
     };
     llvm::Value* x = b_.CreateExtractElement(q.px, uint64_t(0));
     llvm::Value* y = b_.CreateExtractElement(q.py, uint64_t(0));
@@ -620,67 +619,6 @@ void PipelineEmitter::read_modify_write_quad(const Quad& q, const QuadValues& v,
         b_.CreateBr(done);
     }
     b_.SetInsertPoint(done);
-}
-
-// The channels to store, four lanes each, from the fragments' bytes `src`
-// and the buffer's `dst`: raster::blend_unorm8 (factor8, combine8 and
-// mul_unorm8 in raster/fragment_ops.cpp) where blending is on, then the
-// colour mask.
-std::array<llvm::Value*, 4> PipelineEmitter::blend_and_mask(const std::array<llvm::Value*, 4>& src,
-                                                            const std::array<llvm::Value*, 4>& dst) {
-    const ColorOps& o = key_.color_ops;
-    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
-    auto constant = [&](uint32_t c) { return llvm::ConstantInt::get(v4i, c); };
-    auto inv = [&](llvm::Value* x) { return b_.CreateSub(constant(255), x); };
-    auto umin = [&](llvm::Value* x, llvm::Value* y) { return b_.CreateSelect(b_.CreateICmpULT(x, y), x, y); };
-    auto umax = [&](llvm::Value* x, llvm::Value* y) { return b_.CreateSelect(b_.CreateICmpUGT(x, y), x, y); };
-    // Table 4.1's factor for channel k (3: alpha) in 8-bit fixed point.
-    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
-        switch (f) {
-        case BlendFactor::Zero: return constant(0);
-        case BlendFactor::One: return constant(255);
-        case BlendFactor::SrcColor: return src[k];
-        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
-        case BlendFactor::DstColor: return dst[k];
-        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
-        case BlendFactor::SrcAlpha: return src[3];
-        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
-        case BlendFactor::DstAlpha: return dst[3];
-        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
-        case BlendFactor::ConstantColor: return constant(o.constant[k]);
-        case BlendFactor::OneMinusConstantColor: return constant(255u - o.constant[k]);
-        case BlendFactor::ConstantAlpha: return constant(o.constant[3]);
-        case BlendFactor::OneMinusConstantAlpha: return constant(255u - o.constant[3]);
-        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(255) : umin(src[3], inv(dst[3]));
-        }
-        return constant(0);
-    };
-    // mul_unorm8's (x * f * 2 + 255) / 510, the product rounded to n/255, as
-    // (t + (t >> 8)) >> 8 with t = x * f + 128: equal for every x and f in
-    // [0, 255] (tests/fused/fused_pipeline.cpp checks), and shifts, not a division.
-    auto product = [&](llvm::Value* x, llvm::Value* f) {
-        llvm::Value* t = b_.CreateAdd(b_.CreateMul(x, f), constant(128));
-        return b_.CreateLShr(b_.CreateAdd(t, b_.CreateLShr(t, constant(8))), constant(8));
-    };
-    std::array<llvm::Value*, 4> out;
-    for (size_t k = 0; k < 4; ++k) {
-        out[k] = src[k];
-        if (o.blend) {
-            const bool alpha = k == 3;
-            const BlendEquation eq = alpha ? o.equation_alpha : o.equation_rgb;
-            llvm::Value* a = product(src[k], factor(alpha ? o.src_alpha : o.src_rgb, k));
-            llvm::Value* b = product(dst[k], factor(alpha ? o.dst_alpha : o.dst_rgb, k));
-            switch (eq) {
-            case BlendEquation::Add: out[k] = umin(b_.CreateAdd(a, b), constant(255)); break;
-            case BlendEquation::Subtract: out[k] = b_.CreateSelect(b_.CreateICmpUGT(a, b), b_.CreateSub(a, b), constant(0)); break;
-            case BlendEquation::ReverseSubtract: out[k] = b_.CreateSelect(b_.CreateICmpUGT(b, a), b_.CreateSub(b, a), constant(0)); break;
-            case BlendEquation::Min: out[k] = umin(src[k], dst[k]); break;
-            case BlendEquation::Max: out[k] = umax(src[k], dst[k]); break;
-            }
-        }
-        if (!o.mask[k]) out[k] = dst[k];
-    }
-    return out;
 }
 
 // A quad's depth (gl_FragDepth clamped to [0, 1], NaN -> 0, or the plane's)

@@ -1,0 +1,63 @@
+// Blending and the colour mask as generated vector code (runtime/jit/blend.h).
+#include "runtime/jit/blend.h"
+
+namespace glslrun::rt::jit {
+
+std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& o,
+                                                const std::array<llvm::Value*, 4>& src,
+                                                const std::array<llvm::Value*, 4>& dst) {
+    auto* v4i = llvm::FixedVectorType::get(builder.getInt32Ty(), 4);
+    auto constant = [&](uint32_t c) { return llvm::ConstantInt::get(v4i, c); };
+    auto inv = [&](llvm::Value* x) { return builder.CreateSub(constant(255), x); };
+    auto umin = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpULT(x, y), x, y); };
+    auto umax = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpUGT(x, y), x, y); };
+    // Table 4.1's factor for channel k (3: alpha) in 8-bit fixed point.
+    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
+        switch (f) {
+        case BlendFactor::Zero: return constant(0);
+        case BlendFactor::One: return constant(255);
+        case BlendFactor::SrcColor: return src[k];
+        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
+        case BlendFactor::DstColor: return dst[k];
+        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
+        case BlendFactor::SrcAlpha: return src[3];
+        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
+        case BlendFactor::DstAlpha: return dst[3];
+        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
+        case BlendFactor::ConstantColor: return constant(o.constant[k]);
+        case BlendFactor::OneMinusConstantColor: return constant(255u - o.constant[k]);
+        case BlendFactor::ConstantAlpha: return constant(o.constant[3]);
+        case BlendFactor::OneMinusConstantAlpha: return constant(255u - o.constant[3]);
+        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(255) : umin(src[3], inv(dst[3]));
+        }
+        return constant(0);
+    };
+    // mul_unorm8's (x * f * 2 + 255) / 510, the product rounded to n/255, as
+    // (t + (t >> 8)) >> 8 with t = x * f + 128: equal for every x and f in
+    // [0, 255] (tests/fused/fused_pipeline.cpp checks), and shifts, not a division.
+    auto product = [&](llvm::Value* x, llvm::Value* f) {
+        llvm::Value* t = builder.CreateAdd(builder.CreateMul(x, f), constant(128));
+        return builder.CreateLShr(builder.CreateAdd(t, builder.CreateLShr(t, constant(8))), constant(8));
+    };
+    std::array<llvm::Value*, 4> out;
+    for (size_t k = 0; k < 4; ++k) {
+        out[k] = src[k];
+        if (o.blend) {
+            const bool alpha = k == 3;
+            const BlendEquation eq = alpha ? o.equation_alpha : o.equation_rgb;
+            llvm::Value* a = product(src[k], factor(alpha ? o.src_alpha : o.src_rgb, k));
+            llvm::Value* b = product(dst[k], factor(alpha ? o.dst_alpha : o.dst_rgb, k));
+            switch (eq) {
+            case BlendEquation::Add: out[k] = umin(builder.CreateAdd(a, b), constant(255)); break;
+            case BlendEquation::Subtract: out[k] = builder.CreateSelect(builder.CreateICmpUGT(a, b), builder.CreateSub(a, b), constant(0)); break;
+            case BlendEquation::ReverseSubtract: out[k] = builder.CreateSelect(builder.CreateICmpUGT(b, a), builder.CreateSub(b, a), constant(0)); break;
+            case BlendEquation::Min: out[k] = umin(src[k], dst[k]); break;
+            case BlendEquation::Max: out[k] = umax(src[k], dst[k]); break;
+            }
+        }
+        if (!o.mask[k]) out[k] = dst[k];
+    }
+    return out;
+}
+
+}  // namespace glslrun::rt::jit

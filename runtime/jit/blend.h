@@ -1,0 +1,20 @@
+// The fused pipeline's blending and colour mask (rt::ColorOps) as generated
+// vector code: raster::blend_unorm8's 8-bit steps (factor8, combine8 and
+// mul_unorm8 in raster/fragment_ops.cpp), four lanes at a time.
+#pragma once
+#include <array>
+
+#include <llvm/IR/IRBuilder.h>
+
+#include "runtime/fragment_pipeline.h"
+
+namespace glslrun::rt::jit {
+
+// The channels to store (i32 vectors of four lanes, 0 to 255 each) from the
+// fragments' bytes `src` and the buffer's `dst`, channel by channel (RGBA):
+// blended where `ops` blends, then the colour mask.
+std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& ops,
+                                                const std::array<llvm::Value*, 4>& src,
+                                                const std::array<llvm::Value*, 4>& dst);
+
+}  // namespace glslrun::rt::jit
