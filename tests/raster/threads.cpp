@@ -376,8 +376,8 @@ Framebuffer dirty_framebuffer(int w, int h, bool float_color) {
 TEST_CASE("a draw that clears gives the pixels of a clear, then the draw", "[raster][threads][clear]") {
     Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
     Geometry g = small_triangles(5, 400);
-    const ClearValues both{glm::vec4(0.1f, 0.25f, 1.5f, -0.5f), 0.9f};
-    const ClearValues kinds[] = {both, {both.color, std::nullopt}, {std::nullopt, 0.6f}, {}};
+    const ClearValues both{glm::vec4(0.1f, 0.25f, 1.5f, -0.5f), 0.9f, std::nullopt};
+    const ClearValues kinds[] = {both, {both.color, std::nullopt, std::nullopt}, {std::nullopt, 0.6f, std::nullopt}, {}};
     const std::array<int, 4> viewports[] = {{0, 0, 0, 0}, {20, 10, 150, 100}, {400, 400, 10, 10}};
     for (auto [w, h] : {std::pair{300, 200}, std::pair{130, 70}})
         for (bool float_color : {false, true})
@@ -410,7 +410,7 @@ TEST_CASE("a draw that clears and fails leaves no pixel uncleared", "[raster][th
         INFO("threads " << threads);
         p.exec.threads = threads;
         Framebuffer fb = dirty_framebuffer(300, 200, false);
-        auto stats = draw(p, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f}, Primitive::Triangles,
+        auto stats = draw(p, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f, std::nullopt}, Primitive::Triangles,
                           {g.pos, g.color}, g.count);
         REQUIRE_FALSE(stats.ok());
         // Pixels still wholly dirty: the clear is 51, the shader writes alpha 255.
