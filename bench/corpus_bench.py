@@ -91,8 +91,8 @@ def table(selected, runs, loads, args):
         r2c = med(n, "jit2", "cpu_median_ms") / med(n, "lp2", "cpu_median_ms")
         fast = med(n, "jit1", "cpu_median_ms") / med(n, "fast1", "cpu_median_ms")
         ratios[n] = (case[0], r1)
-        lines.append(f"| {case[0]} | {n} | {med(n, 'jit1', 'cpu_median_ms'):.2f} | {med(n, 'lp1', 'cpu_median_ms'):.2f} | "
-                     f"{r1:.2f} | {med(n, 'jit2', 'median_ms'):.2f} | {med(n, 'lp2', 'median_ms'):.2f} | {r2w:.2f} | "
+        lines.append(f"| {case[0]} | {n} | {med(n, 'jit1', 'cpu_median_ms'):.2f} | "
+                     f"{med(n, 'lp1', 'cpu_median_ms'):.2f} | {r1:.2f} | {med(n, 'jit2', 'median_ms'):.2f} | {med(n, 'lp2', 'median_ms'):.2f} | {r2w:.2f} | "
                      f"{r2c:.2f} | {fast:.2f}x | {med(n, 'jit1', 'llvm_compile_ms'):.1f} |")
     lines.append("")
     for group in ("corpus", "lecture"):
