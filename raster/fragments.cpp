@@ -229,6 +229,7 @@ const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
         output_regs_.push_back(interp_->lanes(depth_out_->first));
     }
     key.float_color = fb_.float_color();
+    key.gpu_rounding = !key.float_color && fb_.rounding == ColorRounding::Gpu;
     key.depth_test = o.depth_test;
     key.depth_write = o.depth_write;
     key.depth_func = o.depth_func;
@@ -545,7 +546,8 @@ void FragmentStage::store_color_quad(int base, const std::array<Lanes, 4>& rgba,
     }
     uint8_t* buffer = fb_.color_data<uint8_t>(0).data();
     const QuadI words = pack_unorm8(load_quad(&rgba[0][size_t(base)]), load_quad(&rgba[1][size_t(base)]),
-                                    load_quad(&rgba[2][size_t(base)]), load_quad(&rgba[3][size_t(base)]));
+                                    load_quad(&rgba[2][size_t(base)]), load_quad(&rgba[3][size_t(base)]),
+                                    fb_.rounding);
     const auto* word_bytes = reinterpret_cast<const uint8_t*>(&words);
     if (mask == 0xFu) {  // all four pixels exist: two 8-byte stores
         std::memcpy(buffer + offset(0), word_bytes, 8);

@@ -125,7 +125,8 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
     if (clear.stencil) out.s = uint8_t(*clear.stencil & ((1 << kStencilBits) - 1));
     if (clear.color) {
         const glm::vec4 c = *clear.color;
-        const uint8_t bytes[4] = {to_unorm8(c.r), to_unorm8(c.g), to_unorm8(c.b), to_unorm8(c.a)};
+        const uint8_t bytes[4] = {to_unorm8(c.r, fb.rounding), to_unorm8(c.g, fb.rounding), to_unorm8(c.b, fb.rounding),
+                                 to_unorm8(c.a, fb.rounding)};
         out.color_pattern = fb.float_color() ? repeated(&c[0], 4) : repeated(bytes, 4);
     }
     if (clear.depth) out.d = std::isnan(*clear.depth) ? 0.0f : std::clamp(*clear.depth, 0.0f, 1.0f);
@@ -162,7 +163,7 @@ void write_color(Framebuffer& fb, int x, int y, glm::vec4 c) {
         return;
     }
     auto* p = static_cast<uint8_t*>(color_at(fb, 0, x, y));
-    for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k]);
+    for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k], fb.rounding);
 }
 
 }  // namespace raster

@@ -82,14 +82,15 @@ struct PipelineKey {
     std::vector<PipelineInput> inputs;  // per input register, in the order the fragment stage passes them
     uint32_t color_channels = 0;        // components of the colour output (0: none written)
     bool float_color = false;           // float storage, else RGBA8 (clamped, rounded to n/255)
+    bool gpu_rounding = false;          // RGBA8 bytes as ColorRounding::Gpu rounds them, else Nearest
     bool depth_output = false;          // gl_FragDepth written
     bool depth_test = false, depth_write = false, early_depth = false;
     CompareFunc depth_func = CompareFunc::Less;
     ColorOps color_ops;  // only with RGBA8 storage, colour written and no late depth test
     bool avx2 = false;
     auto tie() const {
-        return std::tie(inputs, color_channels, float_color, depth_output, depth_test, depth_write, early_depth,
-                        depth_func, color_ops, avx2);
+        return std::tie(inputs, color_channels, float_color, gpu_rounding, depth_output, depth_test, depth_write,
+                        early_depth, depth_func, color_ops, avx2);
     }
     bool operator<(const PipelineKey& o) const { return tie() < o.tie(); }
 };

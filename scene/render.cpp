@@ -221,6 +221,8 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
 
 Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                                      const ClearValues& clear) {
+    // Scenes store colours as their precision mode's GL would (Fast: the GPU's rule).
+    fb.rounding = color_rounding_for(programs.of_pass(0).exec.precision);
     ClearValues pending = clear;
     auto result = draw_passes(programs, scene, fb, pending);
     // No object, or an error before the first draw: the clear still happens.

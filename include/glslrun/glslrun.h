@@ -477,6 +477,21 @@ Status check_framebuffer_size(int width, int height);
 // Readers call pixel(); writers take a typed view of a buffer or a row
 // (uint8_t channels for RGBA8, float for float colour) after checking
 // float_color(). Rows go bottom up (GL's convention), width * 4 channels each.
+// How RGBA8 storage turns a colour channel v (clamped to [0, 1]) into its
+// byte n. GL 2.1 (§2.14.9) leaves the rounding to the implementation.
+//   Nearest: n = v * 255 rounded to nearest, ties to even (Mesa's llvmpipe
+//            and softpipe).
+//   Gpu:     v truncated to 12 fraction bits, then rounded to nearest with
+//            ties down: n = ceil(floor(v * 4096) * 255 / 4096 - 1/2), as
+//            NVIDIA's OpenGL driver stores it (measured on all 2^18 values
+//            of a probe; docs/precision.md, "The GPU's colour conversion").
+enum class ColorRounding : uint8_t { Nearest, Gpu };
+// The rounding that matches a precision mode: Gpu for Fast (the GPU's
+// arithmetic), Nearest otherwise.
+inline ColorRounding color_rounding_for(Precision p) {
+    return p == Precision::Fast ? ColorRounding::Gpu : ColorRounding::Nearest;
+}
+
 class Framebuffer {
 public:
     // color_buffers: 1..kMaxDrawBuffers colour buffers, all of one format.
@@ -488,6 +503,10 @@ public:
     int width = 0, height = 0;
     std::vector<float> depth;  // [0,1]
     std::vector<uint8_t> stencil;  // kStencilBits per pixel
+    // How colours are stored as RGBA8 bytes, by clears, draws and blending
+    // alike; float colour buffers ignore it. The scene renderers set it from
+    // the program's precision (color_rounding_for).
+    ColorRounding rounding = ColorRounding::Nearest;
 
     bool float_color() const { return float_color_; }
     int color_buffers() const { return int(float_color_ ? float_colors_.size() : rgba8_colors_.size()); }
