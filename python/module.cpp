@@ -35,6 +35,9 @@ bool takes_floats(const std::string& type) {
 void set_uniform(Program& program, const std::string& name, const py::object& value) {
     const UniformInfo* u = find_declaration(program.uniforms(), name);
     if (!u) throw ErrorException{Error("no active uniform named '" + name + "'")};
+    // Counted before a copy: a broadcast view of 2^40 values costs nothing until copied.
+    if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).size() > py::ssize_t(1) << 16)
+        throw ErrorException{Error("uniform '" + name + "': more values than any uniform holds (65536)")};
     if (takes_floats(u->type)) {
         FloatArray values = FloatArray::ensure(value);
         if (!values) throw py::type_error("uniform '" + name + "' takes numbers");
@@ -64,9 +67,22 @@ std::vector<VertexAttrib> to_attribs(const py::dict& arrays, uint32_t& count) {
     bool have_count = count != 0;
     for (auto [key, value] : arrays) {
         std::string name = py::cast<std::string>(key);
+        // The shape first, on the array as given: a broadcast view of 2^40
+        // rows costs nothing until forcecast copies it.
+        const std::string shape = "input '" + name + "' must be an array of shape (count,) or (count, components), "
+                                  "count at most 2^26 and components 1..16";
+        if (py::isinstance<py::array>(value)) {
+            auto given = py::reinterpret_borrow<py::array>(value);
+            if (given.ndim() < 1 || given.ndim() > 2 || given.shape(0) > py::ssize_t(1) << 26 ||
+                (given.ndim() == 2 && (given.shape(1) < 1 || given.shape(1) > 16)))
+                throw py::value_error(shape);
+        }
         FloatArray a = FloatArray::ensure(value);
-        if (!a || a.ndim() < 1 || a.ndim() > 2)
-            throw py::value_error("input '" + name + "' must be an array of shape (count,) or (count, components)");
+        if (!a && PyErr_ExceptionMatches(PyExc_MemoryError)) throw py::error_already_set();
+        PyErr_Clear();
+        if (!a || a.ndim() < 1 || a.ndim() > 2 || a.shape(0) > py::ssize_t(1) << 26 ||
+            (a.ndim() == 2 && (a.shape(1) < 1 || a.shape(1) > 16)))
+            throw py::value_error(shape);
         uint32_t rows = uint32_t(a.shape(0)), components = a.ndim() == 2 ? uint32_t(a.shape(1)) : 1;
         if (!have_count) count = rows, have_count = true;
         if (rows != count)

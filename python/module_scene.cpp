@@ -20,11 +20,16 @@ py::array_t<uint8_t> to_array(const scene::Image& image) {
 scene::Image to_image(const py::object& object) {
     // uint8 only: a cast would wrap 300 to 44 and make NaN anything. Sides are
     // checked before they narrow to int (3000000000 rows became -1294967296).
-    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side at most 16384";
+    // The shape is checked on the array as given, before a contiguous copy
+    // (a broadcast view of 2^40 pixels costs nothing until it is copied).
+    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side 1..16384";
     if (!py::isinstance<py::array_t<uint8_t>>(object)) throw py::type_error(kShape);
-    auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(object);
-    if (a.ndim() != 3 || a.shape(2) != 4 || a.shape(0) > kMaxFramebufferSide || a.shape(1) > kMaxFramebufferSide)
+    auto given = py::reinterpret_borrow<py::array>(object);
+    auto side_ok = [](py::ssize_t side) { return side >= 1 && side <= kMaxFramebufferSide; };
+    if (given.ndim() != 3 || given.shape(2) != 4 || !side_ok(given.shape(0)) || !side_ok(given.shape(1)))
         throw py::value_error(kShape);
+    auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(object);
+    if (!a) throw py::error_already_set();  // the copy failed: MemoryError
     return {int(a.shape(1)), int(a.shape(0)), std::vector<uint8_t>(a.data(), a.data() + a.size())};
 }
 

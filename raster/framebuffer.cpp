@@ -17,11 +17,21 @@ Status check_framebuffer_size(int w, int h) {
                              w, h, kMaxFramebufferSide, kMaxFramebufferPixels >> 20));
 }
 
+namespace {
+
+Status check_color_buffers(int count) {
+    if (count >= 1 && count <= kMaxDrawBuffers) return Ok{};
+    return Error(fmt::format("a framebuffer of {} colour buffers is not allowed: 1..{} (GL_MAX_DRAW_BUFFERS)", count,
+                             kMaxDrawBuffers));
+}
+
+}  // namespace
+
 Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : float_color_(float_target) {
-    if (!check_framebuffer_size(w, h)) return;
+    if (!check_framebuffer_size(w, h) || !check_color_buffers(color_buffers)) return;
     width = w;
     height = h;
-    const size_t pixels = size_t(w) * size_t(h), buffers = size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers));
+    const size_t pixels = size_t(w) * size_t(h), buffers = size_t(color_buffers);
     if (float_color_) float_colors_.assign(buffers, std::vector<float>(pixels * 4, 0.0f));
     else rgba8_colors_.assign(buffers, std::vector<uint8_t>(pixels * 4, 0));
     depth.assign(pixels, 1.0f);
@@ -30,6 +40,7 @@ Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : f
 
 Result<Framebuffer> Framebuffer::create(int w, int h, bool float_target, int color_buffers) {
     if (Status st = check_framebuffer_size(w, h); !st) return st.error();
+    if (Status st = check_color_buffers(color_buffers); !st) return st.error();
     try {
         return Framebuffer(w, h, float_target, color_buffers);
     } catch (const std::bad_alloc&) {

@@ -31,6 +31,7 @@ Backend effective_backend(Backend requested, Precision precision) {
 }
 
 double Program::jit_compile_seconds() const {
+    if (!valid()) return 0;  // moved from: nothing compiled
     return state_->backends->jit_compile_seconds() + state_->pipelines->compile_seconds();
 }
 
