@@ -121,6 +121,13 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
     TokenBudgetScope budget;
     out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    if (const TokenBudgetScope::LargeStruct& large = budget.large_struct(); !large.name.empty()) {
+        out.ok = false;
+        out.diags.push_back(Diagnostic{file, large.line, fmt::format(
+            "'{}' : a struct of more than {} members (nested structs' members included) is past glslrun's limit "
+            "(docs/limits.md)", large.name, kMaxStructMembers), false});
+        return out;
+    }
     if (budget.exceeded()) {
         out.ok = false;
         out.diags.push_back(Diagnostic{file, 0, fmt::format(
