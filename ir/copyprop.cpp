@@ -88,6 +88,9 @@ struct Facts {
         return h;
     }
     void add_expr(const Expr& e, Reg d) {
+        regs.reference(d);
+        for (Reg r : e.src)
+            if (r != kNoReg) regs.reference(r);
         Holder h{d, regs.version(d), {0, 0, 0}};
         for (int k = 0; k < 3; ++k) h.src_versions[k] = e.src[k] == kNoReg ? 0 : regs.version(e.src[k]);
         holders.set(e, h);
@@ -125,8 +128,13 @@ void instr(Instr& in, Facts& facts) {
     }
     bool copy = in.op == Op::mov && in.src[0] != in.dst;
     flow::for_each_write(in, [&](Reg r) {
-        if (copy && r == in.dst) facts.regs.write(r, Copy{in.src[0], facts.regs.version(in.src[0])});
-        else facts.regs.write(r);
+        if (copy && r == in.dst) {
+            facts.regs.reference(in.src[0]);
+            facts.regs.write(r, Copy{in.src[0], facts.regs.version(in.src[0])});
+        }
+        else {
+            facts.regs.write(r);
+        }
     });
     if (!copy && pure && std::find(e.src, e.src + 3, in.dst) == e.src + 3) {
         facts.add_expr(e, in.dst);

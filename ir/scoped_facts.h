@@ -50,18 +50,19 @@ public:
         log_.push_back({kNoReg, Slot{floor_, std::nullopt}});
         floor_ = ++next_;
     }
+    // Records that a fact taken now depends on r's version (a copy's source,
+    // an expression's operand): forgetting r must then change its version.
+    void reference(Reg r) {
+        if (r < slots_.size()) slots_[r].referenced = true;
+    }
     void forget(const flow::Writes& writes) {
         if (writes.calls) return forget_all();
-        uint64_t start = next_;
-        for (Reg r : writes.regs)
-            if (version(r) <= start) write(r);
+        forget_each(writes.regs);
     }
     // After a join: forgets what the nested blocks wrote.
     void forget(const BlockWrites& writes) {
         if (writes.forgot_all) return forget_all();
-        uint64_t start = next_;
-        for (Reg r : writes.regs)
-            if (version(r) <= start) write(r);
+        forget_each(writes.regs);
     }
 
     size_t mark() const { return log_.size(); }
@@ -84,7 +85,20 @@ private:
     struct Slot {
         uint64_t version = 0;
         std::optional<Fact> fact;
+        bool referenced = false;  // by a fact taken since `version`
     };
+
+    // Only registers that some fact depends on change version: a loop nested
+    // d deep forgets what its body writes at each level, and logging every
+    // register again at every level made the log quadratic in d.
+    void forget_each(const std::vector<Reg>& regs) {
+        uint64_t start = next_;
+        for (Reg r : regs) {
+            if (r >= slots_.size() || version(r) > start) continue;
+            const Slot& slot = slots_[r];
+            if (slot.referenced || (slot.fact && slot.version > floor_)) write(r);
+        }
+    }
     std::vector<Slot> slots_;
     std::vector<std::pair<Reg, Slot>> log_;  // the register (kNoReg: the floor) and its previous state
     uint64_t next_ = 0, floor_ = 0;
