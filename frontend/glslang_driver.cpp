@@ -121,6 +121,13 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
     TokenBudgetScope budget;
     out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    if (const TokenBudgetScope::LargeStruct& large = budget.large_struct(); !large.name.empty()) {
+        out.ok = false;
+        out.diags.push_back(Diagnostic{file, large.line, fmt::format(
+            "'{}' : a struct of more than {} members (nested structs' members included) is past glslrun's limit "
+            "(docs/limits.md)", large.name, kMaxStructMembers), false});
+        return out;
+    }
     if (budget.exceeded()) {
         out.ok = false;
         out.diags.push_back(Diagnostic{file, 0, fmt::format(
@@ -134,6 +141,7 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
 
 bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
     bool ok = true;
+    uint64_t stage_components = 0;
     st.texts.clear();
     for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
     for (size_t i = 0; i < st.sources.size(); ++i) {
@@ -152,7 +160,7 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
         add_hints(diags, first, src);
         if (unit.ok && unit.shader->getIntermediate()) {
             check_unit_rules(*unit.shader->getIntermediate(), st.texts[i], src.name, diags);
-            check_size_limits(*unit.shader->getIntermediate(), src.name, diags);
+            check_size_limits(*unit.shader->getIntermediate(), src.name, stage_components, diags);
         }
         ok = ok && unit.ok;
         st.shaders.push_back(std::move(unit.shader));
