@@ -100,7 +100,7 @@ Result<const ir::Uniform*> locate(const ir::Program& p, std::string_view name, s
 
 }  // namespace
 
-Status Program::set_uniform(std::string_view name, std::span<const float> values) {
+Status Program::set_uniform(std::string_view name, Span<const float> values) {
     ProgramUse use(*this);
     if (!use.status()) return use.status();
     uint32_t element = 0;
@@ -119,7 +119,7 @@ Status Program::set_uniform(std::string_view name, std::span<const float> values
     return Ok{};
 }
 
-Status Program::set_uniform(std::string_view name, std::span<const int32_t> values) {
+Status Program::set_uniform(std::string_view name, Span<const int32_t> values) {
     ProgramUse use(*this);
     if (!use.status()) return use.status();
     uint32_t element = 0;

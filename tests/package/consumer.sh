@@ -4,8 +4,11 @@
 # outside this project, once with find_package(glslrun) and once with
 # pkg-config, and run. The spot scene rendered through the package must be
 # byte-identical to the command line's PNG; the Python module must import
-# from the staged prefix. Last, a project that adds this tree with
-# add_subdirectory() must configure.
+# from the staged prefix; a C++17 project must compile against glslrun.h.
+# The install must be stripped and under 60 MB, its components must hold
+# what they say, the man page and the bash completion must work. Then a
+# project that adds this tree with add_subdirectory() must configure, and
+# the uninstall target must leave the staged prefix empty.
 #   consumer.sh SOURCE_DIR BUILD_DIR GLSLRUN_BINARY [PYTHON]
 set -eu
 src=$1 build=$2 cli=$3 python=${4:-python3}
@@ -38,7 +41,31 @@ c++ -std=c++20 "$src/examples/render_scene.cpp" -o "$out/render_scene_pc" \
 "$out/render_scene_pc" $spot "$out/spot-pc.png"
 cmp "$out/spot-cli.png" "$out/spot-pc.png"
 
-if ls "$stage"/lib/python3*/dist-packages/glslrun*.so > /dev/null 2>&1; then
+# C++17: the public header compiles and links (the library stays C++20).
+cat > "$out/cpp17.cpp" <<'CPP'
+#include <cstdio>
+#include <vector>
+#include "glslrun/glslrun.h"
+int main() {
+    auto program = glslrun::Program::compile({{"a.vert", "void main() { gl_Position = gl_Vertex; }"}},
+                                             {{"a.frag", "uniform float w[2]; void main() { gl_FragColor = vec4(w[0], w[1], 0, 1); }"}});
+    if (!program) return std::fputs(program.error().str().c_str(), stderr), 1;
+    std::vector<float> w = {1.0f, 0.5f};
+    if (!program->set_uniform("w", w)) return 1;
+    glslrun::Framebuffer fb(4, 4);
+    std::vector<glslrun::VertexAttrib> quad = {{"gl_Vertex", 2, {-1, -1, 1, -1, -1, 1, 1, 1}}};
+    auto drawn = glslrun::draw(*program, glslrun::GLState(), fb, glslrun::Primitive::TriangleStrip, quad, 4);
+    glslrun::Span<const uint8_t> rgba = fb.color_data<uint8_t>();
+    if (!drawn || rgba.size() != 64 || rgba[0] != 255 || rgba[1] != 128) return 1;
+    std::puts("  C++17 consumer: drew (255, 128, 0, 255)");
+    return 0;
+}
+CPP
+c++ -std=c++17 -Wall -Wextra -Werror -pedantic "$out/cpp17.cpp" -o "$out/cpp17" $(pkg-config --cflags --libs glslrun) \
+    -Wl,-rpath,"$libdir"
+"$out/cpp17"
+
+if ls "$stage"/lib/python3*/dist-packages/glslrun/__init__*.so > /dev/null 2>&1; then
     echo "python3 -c 'import glslrun' from the staged prefix:"
     PYTHONPATH=$(echo "$stage"/lib/python3*/dist-packages) "$python" -c \
         "import glslrun; a = glslrun.render('$src/shaders/minimal.vert', '$src/shaders/minimal.frag', '$src/scenes/quad.toml'); print(' ', glslrun.__version__, a.shape, a.dtype)"
