@@ -170,6 +170,14 @@ std::vector<UniformInfo> Program::uniforms() const {
     return out;
 }
 
+std::vector<Program::Input> Program::inputs(Stage stage) const {
+    std::vector<Input> out;
+    if (!valid()) return out;
+    const ir::Shader& shader = stage == Stage::Vertex ? state_->ir.vertex : state_->ir.fragment;
+    for (const ir::Binding& b : shader.inputs) out.push_back({b.name, b.count});
+    return out;
+}
+
 std::string Program::dump_ir() const { return valid() ? ir::print(state_->ir) : std::string(); }
 
 }  // namespace glslrun

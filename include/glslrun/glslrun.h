@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -25,6 +24,7 @@
 
 #include <glm/glm.hpp>
 
+#include "glslrun/span.h"
 #include "glslrun/version.h"
 
 namespace glslrun {
@@ -221,6 +221,16 @@ public:
     }
     bool has_uniform(std::string_view name) const;
     std::vector<UniformInfo> uniforms() const;
+    // The inputs the optimized stage reads, as run_vertices and run_fragments
+    // take them by name: attributes ("gl_Vertex", "weight") or varyings and
+    // fragment built-ins ("v_normal", "gl_FragCoord"), each with its number of
+    // components (a mat4 attribute: 16). An input declared but never read is
+    // not listed: the optimizer removed it.
+    struct Input {
+        std::string name;
+        uint32_t components = 0;
+    };
+    std::vector<Input> inputs(Stage stage) const;
 
     ExecOptions exec;
     // Seconds LLVM has spent compiling this program's shaders (0 without the JIT).
