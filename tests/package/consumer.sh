@@ -17,6 +17,62 @@ rm -rf "$out"
 mkdir -p "$out"
 cmake --install "$build" --prefix "$stage" > "$out/install.log"
 
+# Stripped by default (cmake/install_strip.cmake): 355 MB before, unstripped.
+size_kb=$(du -sk "$stage" | cut -f1)
+echo "installed size: $((size_kb / 1024)) MB"
+if [ "$size_kb" -ge $((60 * 1024)) ]; then
+    echo "the install is $size_kb KB, over 60 MB: is it stripped?" >&2
+    exit 1
+fi
+if file -L "$stage/bin/glslrun" "$stage"/lib/libglslrun.so.0 | grep "not stripped"; then exit 1; fi
+
+# Components: what each holds, and nothing of the others.
+for component in runtime development python; do
+    cmake --install "$build" --prefix "$out/$component" --component $component > /dev/null
+done
+has() { test -e "$1" || test -L "$1" || { echo "missing from the install: $1" >&2; exit 1; }; }
+lacks() { test ! -e "$1" || { echo "should not be installed: $1" >&2; exit 1; }; }
+has "$out/runtime/bin/glslrun"
+has "$out/runtime/lib/libglslrun.so.0"
+has "$out/runtime/share/man/man1/glslrun.1"
+has "$out/runtime/share/doc/glslrun/LICENSE"
+has "$out/runtime/share/bash-completion/completions/glslrun"
+lacks "$out/runtime/include"
+lacks "$out/runtime/lib/libglslrun.a"
+has "$out/development/include/glslrun/glslrun.h"
+has "$out/development/lib/libglslrun.a"
+has "$out/development/lib/libglslrun.so"
+has "$out/development/lib/cmake/glslrun/glslrunConfig.cmake"
+lacks "$out/development/bin"
+if [ -d "$out/python/lib" ]; then
+    has "$(echo "$out"/python/lib/python3*/dist-packages/glslrun)/__init__.pyi"
+    lacks "$out/python/bin"
+fi
+echo "components runtime, development, python: as documented"
+
+# The man page (help2man over the built command's --help) names every
+# subcommand and the options of the help it came from.
+man_page=$stage/share/man/man1/glslrun.1
+for command in test trace batch; do
+    grep -q "glslrun $command" "$man_page" || { echo "the man page lacks glslrun $command" >&2; exit 1; }
+done
+sed 's/\\-/-/g' "$man_page" > "$out/man.txt"  # roff's \- is a plain hyphen
+for option in $("$stage/bin/glslrun" --help | grep -oE -- '--[a-z][a-z-]*' | sort -u); do
+    grep -qF -- "$option" "$out/man.txt" || { echo "the man page lacks $option" >&2; exit 1; }
+done
+# bash completion: options from the command's help, values, subcommands.
+bash -c '
+    . "$1"
+    complete_line() { COMP_WORDS=("$2" "${@:3}"); COMP_CWORD=$((${#COMP_WORDS[@]} - 1)); _glslrun; echo "${COMPREPLY[*]}"; }
+    set -e
+    complete_line x "$2" --prec | grep -qx -- "--precision"
+    complete_line x "$2" --precision f | grep -qx "fast"
+    complete_line x "$2" tr | grep -qw "trace"
+    complete_line x "$2" test --jun | grep -qx -- "--junit"
+' sh "$stage/share/bash-completion/completions/glslrun" "$stage/bin/glslrun"
+test -s "$stage/share/zsh/site-functions/_glslrun"
+echo "man page and bash completion: from glslrun --help"
+
 spot="$src/shaders/spot_pix_fixed.vert $src/shaders/spot_pix_fixed.frag $src/scenes/spot.toml"
 "$cli" $spot -o "$out/spot-cli.png" > /dev/null
 
@@ -82,3 +138,13 @@ target_link_libraries(user PRIVATE glslrun::scene)
 CMAKE
 cmake -S "$out/sub" -B "$out/sub/build" -G Ninja > "$out/sub.log"
 echo "  configures"
+
+# uninstall: every file the install above wrote, and glslrun's own directories.
+cmake --build "$build" --target uninstall > "$out/uninstall.log"
+left=$(find "$stage" -type f -o -type l)
+if [ -n "$left" ]; then
+    echo "uninstall left files behind:" >&2
+    echo "$left" >&2
+    exit 1
+fi
+echo "uninstall: $stage holds no file"
