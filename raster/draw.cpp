@@ -518,7 +518,7 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
 
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                        const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices) {
+                       Span<const uint32_t> indices) {
     bool cleared = false;
     return rt::without_throwing("draw()", [&] {
         return raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, nullptr, &cleared);
@@ -527,7 +527,7 @@ Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Pri
 
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
                        Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices) {
+                       Span<const uint32_t> indices) {
     raster::StoredClear stored = raster::stored_clear(fb, clear);
     bool any = raster::storage_matches(fb) && (stored.color || stored.depth || stored.stencil);
     bool cleared = false;

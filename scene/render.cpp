@@ -119,6 +119,8 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     GLState gl = *state;
     gl.texture_units = bound.texture_units;
     gl.modelview = scene.view * object.model;
+    gl.projection = scene.projection;
+    gl.lights = eye_space_lights(scene);
     if (object.front_material) gl.front_material = *object.front_material;
     if (object.back_material) gl.back_material = *object.back_material;
     if (object.color) gl.current_color = *object.color;
@@ -199,8 +201,37 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState&
     return total;
 }
 
+// scene.gl's modelview, projection and lights are copies of view, projection
+// and lights (load_scene fills them in); draws take the originals. A copy set
+// to something else would be ignored: refuse it instead.
+Status check_gl_copies(const Scene& scene) {
+    const GLState defaults;
+    auto problem = [](const char* copy, const char* source) {
+        return Error(fmt::format("scene.gl.{} differs from scene.{}, which rendering uses: set scene.{} (and "
+                                 "leave scene.gl.{} at GL's default, or call derive_eye_space_lights())",
+                                 copy, source, source, copy));
+    };
+    if (scene.gl.modelview != defaults.modelview && scene.gl.modelview != scene.view)
+        return problem("modelview", "view");
+    if (scene.gl.projection != defaults.projection && scene.gl.projection != scene.projection)
+        return problem("projection", "projection");
+    std::array<LightState, 8> eye = eye_space_lights(scene);
+    auto same = [](const LightState& a, const LightState& b) {
+        return a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+               a.position == b.position && a.spot_direction == b.spot_direction &&
+               a.spot_exponent == b.spot_exponent && a.spot_cutoff == b.spot_cutoff &&
+               a.constant_attenuation == b.constant_attenuation && a.linear_attenuation == b.linear_attenuation &&
+               a.quadratic_attenuation == b.quadratic_attenuation;
+    };
+    for (size_t i = 0; i < eye.size(); ++i)
+        if (!same(scene.gl.lights[i], defaults.lights[i]) && !same(scene.gl.lights[i], eye[i]))
+            return problem(fmt::format("lights[{}]", i).c_str(), fmt::format("lights[{}]", i).c_str());
+    return Ok{};
+}
+
 Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                               ClearValues& pending) {
+    if (Status st = check_gl_copies(scene); !st) return st.error();
     if (!scene.passes.empty())
         if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture

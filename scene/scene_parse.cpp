@@ -59,22 +59,12 @@ void read_animation(const Section& s, Animation& animation) {
 Section section(const toml::node& n, const char* name) { return Section(detail::table(n, name), name); }
 
 // Lights the file leaves out keep GL's eye-space defaults; no transform.
-void init_lights(Scene& scene) {
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-        LightSetting& l = scene.lights[i];
-        l.enabled = false;
-        l.as_given = scene.gl.lights[i];
-        l.has_position = l.has_spot_direction = false;
-    }
-}
-
 Scene build_scene(const toml::table& root, const std::string& path) {
     Section top(root, "");
     top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
                "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects", "passes", "animation"});
     Scene scene;
     scene.path = path;
-    init_lights(scene);
     if (const toml::node* n = top.get("output")) read_output(section(*n, "output"), scene);
     if (const toml::node* n = top.get("camera")) detail::read_camera(section(*n, "camera"), scene);
     if (const toml::node* n = top.get("animation")) read_animation(section(*n, "animation"), scene.animation);
@@ -84,8 +74,6 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     if (const toml::node* n = top.get("textures")) detail::read_textures(*n, dir, scene);
     if (const toml::node* n = top.get("uniforms")) detail::read_uniforms(*n, "uniforms", scene.uniforms);
     if (const toml::node* n = top.get("objects")) detail::read_objects(*n, dir, scene);
-    scene.gl.modelview = scene.view;
-    scene.gl.projection = scene.projection;
     derive_eye_space_lights(scene);
     if (const toml::node* n = top.get("objects")) detail::read_object_states(*n, scene);
     if (const toml::node* n = top.get("passes")) detail::read_passes(*n, top.get("objects"), dir, scene);
