@@ -125,11 +125,14 @@ void image_keys(std::string& out, const ImageError& e) {
 
 }  // namespace
 
-Result<std::vector<std::string>> write_error_images(const ErrorReport& r, const std::string& dir) {
+Result<std::vector<std::string>> write_error_images(const ErrorReport& r, const std::string& dir,
+                                                    const std::function<Status(const std::string&)>& check_path) {
     namespace fs = std::filesystem;
     std::vector<std::string> written;
     auto write = [&](const Image& image, const std::string& name) -> Status {
         std::string path = (fs::path(dir) / name).string();
+        if (check_path)
+            if (Status st = check_path(path); !st) return st;
         if (Status st = write_png(image, path); !st) return st;
         written.push_back(path);
         return Ok{};
