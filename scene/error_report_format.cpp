@@ -139,6 +139,8 @@ Result<std::vector<std::string>> write_error_images(const ErrorReport& r, const 
     };
     if (Status st = write(r.reference_image, "reference.png"); !st) return st.error();
     if (Status st = write(r.mode_image, fmt::format("actual-{}.png", precision_name(r.mode))); !st) return st.error();
+    if (!r.outputs.empty())
+        if (Status st = write(heat_map_legend_image(), "heat_legend.png"); !st) return st.error();
     for (const ImageError& e : r.outputs) {
         if (Status st = write(heat_map(e), file_stem(e.name) + "_ulp.png"); !st) return st.error();
         if (!e.quantized) continue;
@@ -164,7 +166,7 @@ std::string format_error_table(const ErrorReport& r, const std::vector<std::stri
     if (!files.empty()) {
         out += "\nfiles:";
         for (const std::string& f : files) out += " " + f;
-        out += "\nheat maps (*_ulp.png): " + heat_map_legend() + "\n";
+        out += "\nheat maps (*_ulp.png, their legend in heat_legend.png): " + heat_map_legend() + "\n";
         out += "8-bit differences (*_diff8.png): the reference dimmed, pixels that differ in red\n";
     }
     return out;

@@ -66,7 +66,7 @@ int accumulate(CompareStats& s, std::array<uint64_t, 4>& sums, const uint8_t* re
 // ----------------------------------------------------------- public API ---
 Result<Image> read_png(const std::string& path) {
     // A FIFO would block libpng's fopen for ever.
-    if (Status st = check_regular_file(path, "image"); !st) return st.error();
+    if (Status st = check_regular_file(path, "the image"); !st) return st.error();
     auto read = png::read_rgba8(path, kMaxImageSide);
     if (!read) return read.error();
     return Image{read->width, read->height, std::move(read->rgba)};

@@ -11,7 +11,7 @@ namespace glslrun::scene {
 
 Status check_path(const std::string& path, const char* what) {
     if (path.find('\0') == std::string::npos) return Ok{};
-    return Error(fmt::format("the {} path '{}' contains a NUL byte", what,
+    return Error(fmt::format("{} path '{}' contains a NUL byte", what,
                              std::string_view(path).substr(0, path.find('\0'))));
 }
 

@@ -33,7 +33,7 @@ namespace glslrun::scene {
 namespace {
 
 Result<std::vector<unsigned char>> read_file(const std::string& path) {
-    if (Status st = check_regular_file(path, "image"); !st) return st.error();
+    if (Status st = check_regular_file(path, "the image"); !st) return st.error();
     std::error_code ec;
     auto bytes = std::filesystem::file_size(path, ec);
     if (ec) return Error(fmt::format("cannot read the image '{}': {}", path, ec.message()));

@@ -29,6 +29,7 @@
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
+#include "progress.h"
 #include "render_command.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
@@ -78,6 +79,7 @@ struct TestOptions {
     std::string junit, json, shard;
     double time_limit = 120;
     bool no_isolate = false;
+    bool quiet = false, verbose = false;  // per-test lines: none, or passes too (default: the others)
     Precision precision = Precision::Precise;
     Backend backend = Backend::Auto;
 };
@@ -146,9 +148,14 @@ int run_test_command(const TestOptions& o) {
     run_options.time_limit_s = o.time_limit;
     run_options.precision = o.precision;
     run_options.backend = o.backend;
+    // Thousands of passes would bury the few lines that matter: by default
+    // only tests that do not pass get a line; a terminal gets a counter and ETA.
+    std::optional<cli::Progress> progress;
+    progress.emplace("tests", cases.size());
     auto report = [&](size_t i, const pg::TestResult& r) {
-        std::fputs((pg::format_result_line(cases[i].display, r) + "\n").c_str(), stdout);
-        std::fflush(stdout);
+        bool print = o.verbose || (!o.quiet && r.outcome != pg::Outcome::Pass);
+        if (print) progress->print(pg::format_result_line(cases[i].display, r), stdout);
+        progress->step(r.outcome == pg::Outcome::Fail);
         if (tsv) tsv << pg::format_tsv_line(cases[i].display, r) << "\n";
     };
     std::vector<pg::TestResult> results;
@@ -167,6 +174,7 @@ int run_test_command(const TestOptions& o) {
             return pg::run_test_file(cases[i].path, run_options);
         }, o.time_limit * 1.25 + 5, report);
     }
+    progress.reset();  // ends its line before the summary
     bool have_expect = !o.expect.empty();
     auto summary = pg::summarize(cases, results, have_expect ? &expectations : nullptr);
     std::fputs(pg::format_summary(summary, have_expect).c_str(), stdout);
@@ -190,7 +198,8 @@ int test_main(int argc, char** argv) {
     app.add_option("-j,--jobs", o.jobs, "tests run in parallel")->check(CLI::Range(1, 256));
     app.add_option("--tsv", o.tsv, "also write path, result, seconds, message to this TSV file");
     app.add_option("--expect", o.expect,
-                   "expectations list (\"path fail|skip # reason\"); unlisted tests must pass");
+                   "expectations list (\"path fail|skip # reason\"); unlisted tests must pass: an unlisted "
+                   "skip or fail is a regression (exit status 1), a listed test that passes is reported");
     app.add_option("--root", o.root, "print paths relative to this directory (and look them up there)");
     app.add_option("--time-limit", o.time_limit, "seconds per test (default 120)")
         ->check(finite_in(1e-3, 1e6));
@@ -198,12 +207,19 @@ int test_main(int argc, char** argv) {
     app.add_option("--json", o.json, "also write the results as JSON (name, result, time, message per test)");
     app.add_option("--shard", o.shard,
                    "run only shard I of N (0-based, I/N): every N-th test from the I-th, for CI matrices");
+    app.add_flag("-q,--quiet", o.quiet, "print no line per test, only the summary (and the reports asked for)");
+    app.add_flag("-v,--verbose", o.verbose,
+                 "print a line for every test, passes too (default: a line for each test that does not pass)");
     app.add_flag("--no-isolate", o.no_isolate,
                  "run tests in this process (default: one forked process per test, so a crash "
                  "or hang fails only that test)");
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
+    if (o.quiet && o.verbose) {
+        fmt::print(stderr, "error: --quiet and --verbose contradict each other\n");
+        return 2;
+    }
     return run_test_command(o);
 }
 

@@ -34,10 +34,14 @@ void Progress::step(bool failed) {
 
 void Progress::clear() { std::fputs("\r\033[K", stderr); }
 
-void Progress::print(const std::string& text) {
-    if (active_) clear();
-    std::fputs(text.c_str(), stderr);
-    if (!text.empty() && text.back() != '\n') std::fputc('\n', stderr);
+void Progress::print(const std::string& text, std::FILE* to) {
+    if (active_) {
+        clear();
+        std::fflush(stderr);
+    }
+    std::fputs(text.c_str(), to);
+    if (!text.empty() && text.back() != '\n') std::fputc('\n', to);
+    std::fflush(to);
     if (active_) draw();
 }
 

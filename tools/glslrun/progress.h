@@ -5,6 +5,7 @@
 #pragma once
 #include <chrono>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 
 namespace glslrun::cli {
@@ -17,8 +18,8 @@ public:
     Progress& operator=(const Progress&) = delete;
 
     void step(bool failed = false);
-    // Prints a whole line (a failure's message) above the progress line.
-    void print(const std::string& text);
+    // Prints a whole line (a failure's message) to `to` above the progress line.
+    void print(const std::string& text, std::FILE* to = stderr);
     bool active() const { return active_; }
 
 private:
