@@ -14,6 +14,9 @@ include(CMakePackageConfigHelpers)
 
 set(GLSLRUN_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/glslrun)
 install(TARGETS glslrun RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+# The documentation that `glslrun --help` points to.
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
 install(TARGETS glslrun_lib glslrun_shared glslrun_scene EXPORT glslrunTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT development

@@ -203,9 +203,27 @@ std::string strip_line_comment(std::string line) {
 
 // glslang reports a missing ';' at the next token, often on the next line.
 // Point at the line that lacks it instead.
+// Whether `line` begins with the token glslang calls `unexpected` (RIGHT_BRACE,
+// IDENTIFIER, FLOAT, ...). When it does not, code precedes the token on the
+// same line, and the ';' is missing there, not on an earlier line.
+bool starts_with_token(const std::string& line, const std::string& unexpected) {
+    size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) return true;  // nothing to blame on this line
+    char c = line[first];
+    if (unexpected == "RIGHT_BRACE") return c == '}';
+    if (unexpected == "RIGHT_PAREN") return c == ')';
+    if (unexpected == "LEFT_BRACE") return c == '{';
+    if (unexpected == "LEFT_PAREN") return c == '(';
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';  // a name, keyword or type
+}
+
 void explain_missing_semicolon(Diagnostic& d, const std::string& source) {
     std::vector<std::string> lines = split_lines(source);
     if (d.line < 1 || d.line > int(lines.size())) return;
+    const size_t at = d.message.find("unexpected ");
+    const std::string unexpected =
+        at == std::string::npos ? "" : d.message.substr(at + 11, d.message.find(',', at) - at - 11);
+    if (!unexpected.empty() && !starts_with_token(lines[d.line - 1], unexpected)) return;
     for (int l = d.line - 1; l >= 1; --l) {
         std::string code = strip_line_comment(lines[l - 1]);
         if (code.empty()) continue;

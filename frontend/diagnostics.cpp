@@ -107,7 +107,9 @@ void parse_info_log(const std::string& log, const std::string& unit_file, std::v
             if (text == "memory exhausted")
                 message = "expressions or blocks nest too deeply for the parser (glslang: memory exhausted)";
             // String 0 is the unit itself; another number comes from `#line L S`.
-            std::string file = l->file == "0" ? unit_file : l->file;
+            // A number past INT_MAX (`#line 1 4294967295`) reaches glslang
+            // wrapped to a negative one, which names no source string.
+            std::string file = l->file == "0" || l->file.starts_with('-') ? unit_file : l->file;
             // Later errors on a line that already has one are cascades of
             // the first (glslang recovers by inventing a declaration).
             if (!l->warning && !reported.insert(fmt::format("{}:{}", l->file, l->line)).second) continue;

@@ -350,19 +350,37 @@ Status check_here(Stage stage, const ShaderSource& source, int default_version) 
     return Ok{};
 }
 
+// A lone CR ends a line (old Mac OS files), as glslang's scanner reads it;
+// the #version check and the rewrites before glslang split lines at LF. A CR
+// not followed by LF becomes one: the same bytes, lines and columns.
+ShaderSource with_lf_line_ends(const ShaderSource& source) {
+    ShaderSource out = source;
+    for (size_t i = 0; i < out.text.size(); ++i)
+        if (out.text[i] == '\r' && (i + 1 == out.text.size() || out.text[i + 1] != '\n')) out.text[i] = '\n';
+    return out;
+}
+
+std::vector<ShaderSource> with_lf_line_ends(const std::vector<ShaderSource>& sources) {
+    std::vector<ShaderSource> out;
+    for (const ShaderSource& s : sources) out.push_back(with_lf_line_ends(s));
+    return out;
+}
+
 }  // namespace
 
-Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs_in, const std::vector<ShaderSource>& fs_in,
                                     const CompileOptions& options) {
-    for (const auto* stage : {&vs, &fs})
+    for (const auto* stage : {&vs_in, &fs_in})
         if (Status st = check_source_sizes(*stage); !st) return st.error();
+    const std::vector<ShaderSource> vs = with_lf_line_ends(vs_in), fs = with_lf_line_ends(fs_in);
     Result<ir::Program> out = Error("not compiled");
     run_on_deep_stack([&] { out = compile_here(vs, fs, options); });
     return out;
 }
 
-Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
-    if (Status st = check_source_sizes({source}); !st) return st;
+Status check_shader(Stage stage, const ShaderSource& source_in, int default_version) {
+    if (Status st = check_source_sizes({source_in}); !st) return st;
+    const ShaderSource source = with_lf_line_ends(source_in);
     Status out = Ok{};
     run_on_deep_stack([&] { out = check_here(stage, source, default_version); });
     return out;

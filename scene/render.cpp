@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
 namespace glslrun::scene {
@@ -38,6 +39,18 @@ bool is_integer_type(std::string_view type) {
            type.starts_with("bvec") || type.starts_with("sampler");
 }
 
+// What follows "has no active uniform 'x'": the closest non-built-in name
+// when the user probably misspelt it, else the usual causes.
+std::string no_uniform_hint(const std::vector<const std::vector<UniformInfo>*>& lists, std::string_view name) {
+    std::vector<std::string_view> names;
+    for (const auto* list : lists)
+        for (const UniformInfo& u : *list)
+            if (!u.builtin) names.push_back(u.name);
+    std::string best = detail::closest(name, names);
+    if (!best.empty()) return fmt::format("; did you mean '{}'?", best);
+    return " (is it declared and used by a shader?)";
+}
+
 Error error_at(const SourceLoc& where, std::string message) {
     return Error(std::move(message), where.file, where.line);
 }
@@ -45,8 +58,8 @@ Error error_at(const SourceLoc& where, std::string message) {
 Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const UniformSetting& s) {
     const UniformInfo* info = find_declaration(infos, s.name);
     if (!info)
-        return error_at(s.where, fmt::format("the program has no active uniform '{}' (is it "
-                                             "declared and used by a shader?)", s.name));
+        return error_at(s.where, fmt::format("the program has no active uniform '{}'{}", s.name,
+                                             no_uniform_hint({&infos}, s.name)));
     Status st = Ok{};
     if (is_integer_type(info->type)) {
         if (!s.integral && info->type.starts_with("sampler"))
@@ -160,9 +173,12 @@ Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scen
         for (const UniformSetting& s : settings) {
             bool found = false;
             for (const auto& list : infos) found = found || find_declaration(list, s.name);
-            if (!found)
-                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}' (is it "
-                                                     "declared and used by a shader?)", s.name));
+            if (!found) {
+                std::vector<const std::vector<UniformInfo>*> lists;
+                for (const auto& list : infos) lists.push_back(&list);
+                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}'{}", s.name,
+                                                     no_uniform_hint(lists, s.name)));
+            }
         }
         return Ok{};
     };

@@ -100,8 +100,24 @@ Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg)
     if (eq == std::string_view::npos || name.empty() || name.find_first_of("\"\\\n") != std::string_view::npos)
         return Error(fmt::format("--uniform '{}': expected name=value, the value written as in a scene's "
                                  "[uniforms] (3, 0.5, [1, 0, 0], true)", arg));
-    // The value is TOML, read exactly as a scene's [uniforms] entry.
-    std::string text = fmt::format("[uniforms]\n\"{}\" = {}\n", name, arg.substr(eq + 1));
+    // The value is TOML, read exactly as a scene's [uniforms] entry; a bare
+    // list "1,0,0" is what a shell user writes for [1, 0, 0].
+    std::string value(arg.substr(eq + 1));
+    size_t first = value.find_first_not_of(' ');
+    if (value.find(',') != std::string::npos && first != std::string::npos && value[first] != '[')
+        value = "[" + value + "]";
+    std::string text = fmt::format("[uniforms]\n\"{}\" = {}\n", name, value);
+    if (value.find('\n') != std::string::npos) text.clear();  // one value, not more TOML
+    bool syntax_ok = !text.empty();
+    try {
+        if (syntax_ok) (void)toml::parse(std::string_view(text), std::string_view("--uniform"));
+    } catch (const toml::parse_error&) {
+        syntax_ok = false;
+    }
+    // toml++'s own message speaks of TOML's grammar, which the user did not write.
+    if (!syntax_ok)
+        return Error(fmt::format("--uniform '{}': '{}' is not a value: write a number (0.5, 3), a list "
+                                 "(1,0,0 or [1, 0, 0]) or true/false", arg, arg.substr(eq + 1)));
     auto scene = parse_scene(text, "--uniform");
     if (!scene) {
         std::string why = scene.error().diagnostics.empty() ? "invalid" : scene.error().diagnostics[0].message;

@@ -148,6 +148,10 @@ struct Scene {
     // [[passes]]; empty: one pass of every object with the scene's program and state.
     std::vector<Pass> passes;
     Animation animation;
+    // The image and mesh files the scene read (its textures, OBJ meshes), as
+    // opened; a pass's shader files are its sources' names. The command line
+    // never writes an output over any of them.
+    std::vector<std::string> files;
     // Legal but probably unintended settings, e.g. a texture that GL 2.1's
     // completeness rules make sample as (0, 0, 0, 1). Renderers print them.
     std::vector<Diagnostic> warnings;
