@@ -19,12 +19,10 @@
 #pragma once
 #include <array>
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -141,14 +139,14 @@ struct FragmentPipeline {
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
 // The pipelines of one Program, by key, compiled once and shared by its
-// workers and later draws. Tiering as for shaders (runtime/backend_cache.h):
-// without `wait`, null until a background compile is done.
-class PipelineCache {
+// workers and later draws. Without `wait`, null until a compile queued on
+// the process's compile thread (runtime/compile_queue.h) is done.
+class PipelineCache : public std::enable_shared_from_this<PipelineCache> {
 public:
     PipelineCache() = default;
     PipelineCache(const PipelineCache&) = delete;
     PipelineCache& operator=(const PipelineCache&) = delete;
-    ~PipelineCache();  // waits for the background compiles
+    ~PipelineCache() = default;  // waits for nothing: queued compiles find it gone
 
     // Null where the JIT is not built in or declined the key, and until the
     // program has shaded kPipelineAfterFragments fragments without one.
@@ -160,10 +158,10 @@ public:
 
 private:
     mutable std::mutex mutex_;
-    std::condition_variable compiled_;
     std::map<PipelineKey, std::unique_ptr<FragmentPipeline>> pipelines_;
     std::map<PipelineKey, bool> done_;  // compiled (the pipeline may still be null: declined)
-    std::vector<std::thread> threads_;
+    // Stores a compile's result (under the lock); leaves `code` where the key has one.
+    void store(const PipelineKey& key, std::unique_ptr<FragmentPipeline>& code, double seconds);
     double compile_seconds_ = 0;
     std::atomic<uint64_t> unfused_{0};
 };
