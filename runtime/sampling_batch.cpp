@@ -23,11 +23,12 @@ struct Lanes {
     alignas(32) int linear[kLanes];        // LINEAR within the level (else NEAREST)
     alignas(32) float ref[kLanes];         // the depth reference, clamped to [0, 1]
     // Per level pass: the lane's image, its size, and the texel indices and weights.
-    const TextureImage* image[kLanes];
+    const TextureImage* image[kLanes];  // null where the lane is skipped
+    const TextureImage* sized[kLanes];  // the image whose size the lane's indices use: never null
     alignas(32) int width[kLanes], height[kLanes];
     alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes];
     alignas(32) float ax[kLanes], ay[kLanes];
-    Texel texel[kLanes], second[kLanes];
+    alignas(32) float rgba[4][kLanes], second[4][kLanes];  // results, channel by channel
 };
 
 // §3.8.6 for every lane: the face and (s, t) on it, the selects written
@@ -174,10 +175,51 @@ void axis_indices(TextureWrap wrap, bool linear, const float* s, const int* n, i
     });
 }
 
+// Lane i's texel into channel arrays.
+inline void put(float (*out)[kLanes], int i, Texel t) {
+    const glm::vec4 v = vec_of(t);
+    for (int c = 0; c < 4; ++c) out[c][i] = v[c];
+}
+
+// Whether a wrap mode's indices can be the border's (kBorder).
+bool may_border(TextureWrap wrap) { return wrap == TextureWrap::Clamp || wrap == TextureWrap::ClampToBorder; }
+
+#if defined(__SSE2__)
+// sample_linear()'s bilinear blend for the four lanes from g, channel by
+// channel: the same products and sums as mix() of four-channel texels, with
+// the lanes side by side. `at[k]`: the offsets of corner k, (x0, y0), (x1, y0),
+// (x0, y1), (x1, y1), in texels; none is the border's. Skipped lanes read
+// texels of the image their indices were computed for.
+void bilinear4(const Lanes& l, const int (*at)[kLanes], int g, float (*out)[kLanes]) {
+    __m128 corner[4][4];  // [corner][channel]
+    for (int k = 0; k < 4; ++k) {
+        __m128 t0 = _mm_loadu_ps(&l.sized[g]->texels[size_t(at[k][g])].x);
+        __m128 t1 = _mm_loadu_ps(&l.sized[g + 1]->texels[size_t(at[k][g + 1])].x);
+        __m128 t2 = _mm_loadu_ps(&l.sized[g + 2]->texels[size_t(at[k][g + 2])].x);
+        __m128 t3 = _mm_loadu_ps(&l.sized[g + 3]->texels[size_t(at[k][g + 3])].x);
+        _MM_TRANSPOSE4_PS(t0, t1, t2, t3);
+        corner[k][0] = t0;
+        corner[k][1] = t1;
+        corner[k][2] = t2;
+        corner[k][3] = t3;
+    }
+    const __m128 one = _mm_set1_ps(1.0f);
+    const __m128 ax = _mm_loadu_ps(&l.ax[g]), ay = _mm_loadu_ps(&l.ay[g]);
+    const __m128 bx = _mm_sub_ps(one, ax), by = _mm_sub_ps(one, ay);
+    for (int c = 0; c < 4; ++c) {
+        const __m128 row0 = _mm_add_ps(_mm_mul_ps(corner[0][c], bx), _mm_mul_ps(corner[1][c], ax));
+        const __m128 row1 = _mm_add_ps(_mm_mul_ps(corner[2][c], bx), _mm_mul_ps(corner[3][c], ax));
+        _mm_storeu_ps(&out[c][g], _mm_add_ps(_mm_mul_ps(row0, by), _mm_mul_ps(row1, ay)));
+    }
+}
+#endif
+
 // One level per lane (`level`; lanes whose `take` is 0 are skipped) into
-// `out`: sample_level()'s filtering, lane by lane.
+// out[c][i]: sample_level()'s filtering. Four lanes at a time where all
+// four blend bilinearly and no texel can be the border or a comparison;
+// the others lane by lane.
 void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const int* level, const int* take,
-                   Texel* out) {
+                   float (*out)[kLanes]) {
     const bool dims2 = texture_dims(texture.target()) > 1;
     const TextureImage* faces[6] = {};
     for (int f = 0; f < texture.faces() && f < 6; ++f) faces[f] = texture.levels(f).data();
@@ -186,6 +228,7 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
         // A skipped lane reads the size of its first level, which exists (the sizes must not be 0).
         const TextureImage* image = faces[l.face[i]] + (take[i] ? level[i] : l.level[0][i]);
         l.image[i] = take[i] ? image : nullptr;
+        l.sized[i] = image;
         l.width[i] = image->width;
         l.height[i] = image->height;
         any_linear |= take[i] & l.linear[i];
@@ -201,45 +244,51 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
         axis_indices(st.wrap_s, true, l.s, l.width, l.x0, l.x1, l.ax);
         if (dims2) axis_indices(st.wrap_t, true, l.t, l.height, l.y0, l.y1, l.ay);
     }
+#if defined(__SSE2__)
+    const bool four = any_linear && dims2 && !proto.compare && !may_border(st.wrap_s) && !may_border(st.wrap_t);
+#else
+    const bool four = false;
+#endif
+    alignas(32) int at[4][kLanes];
+    if (four)
+        for (int i = 0; i < kLanes; ++i) {
+            const int row0 = l.y0[i] * l.width[i], row1 = l.y1[i] * l.width[i];  // below 2^28: no overflow
+            at[0][i] = row0 + l.x0[i];
+            at[1][i] = row0 + l.x1[i];
+            at[2][i] = row1 + l.x0[i];
+            at[3][i] = row1 + l.x1[i];
+        }
     Lookup lk = proto;
-    for (int i = 0; i < kLanes; ++i) {
-        if (!l.image[i]) {
-            out[i] = splat_texel(0.0f);  // defined, for store()'s four-lane loads
+    for (int g = 0; g < kLanes; g += 4) {
+#if defined(__SSE2__)
+        // A skipped lane blends too, on its own indices (in range: no border), and is selected away.
+        const auto blends = [&](int i) { return (take[i] ^ 1) | l.linear[i]; };
+        if (four && (blends(g) & blends(g + 1) & blends(g + 2) & blends(g + 3)) &&
+            (take[g] | take[g + 1] | take[g + 2] | take[g + 3])) {
+            bilinear4(l, at, g, out);
             continue;
         }
-        const TextureImage& image = *l.image[i];
-        lk.ref = l.ref[i];
-        if (!l.linear[i]) {
-            out[i] = fetch(lk, image, nx[i], dims2 ? ny[i] : 0, 0);
-        } else if (!dims2) {
-            out[i] = mix(fetch(lk, image, l.x0[i], 0, 0), fetch(lk, image, l.x1[i], 0, 0), l.ax[i]);
-        } else {
-            const Texel row0 = mix(fetch(lk, image, l.x0[i], l.y0[i], 0), fetch(lk, image, l.x1[i], l.y0[i], 0), l.ax[i]);
-            const Texel row1 = mix(fetch(lk, image, l.x0[i], l.y1[i], 0), fetch(lk, image, l.x1[i], l.y1[i], 0), l.ax[i]);
-            out[i] = mix(row0, row1, l.ay[i]);
-        }
-    }
-}
-
-// The texels of the lanes in `active` into out[c][i], four lanes at a time.
-void store(const Texel* texel, const int* active, float (*out)[kLanes]) {
-#if defined(__SSE2__)
-    for (int i = 0; i < kLanes; i += 4) {
-        __m128 c0 = texel[i], c1 = texel[i + 1], c2 = texel[i + 2], c3 = texel[i + 3];
-        _MM_TRANSPOSE4_PS(c0, c1, c2, c3);
-        const __m128 keep = _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(active + i)),
-                                                             _mm_setzero_si128()));
-        const __m128 channels[4] = {c0, c1, c2, c3};
-        for (int c = 0; c < 4; ++c) {
-            const __m128 old = _mm_loadu_ps(&out[c][i]);
-            _mm_storeu_ps(&out[c][i], _mm_or_ps(_mm_and_ps(keep, old), _mm_andnot_ps(keep, channels[c])));
-        }
-    }
-#else
-    for (int i = 0; i < kLanes; ++i)
-        if (active[i])
-            for (int c = 0; c < 4; ++c) out[c][i] = vec_of(texel[i])[c];
 #endif
+        for (int i = g; i < g + 4; ++i) {
+            if (!l.image[i]) {
+                put(out, i, splat_texel(0.0f));  // defined, for the channel loops that select it away
+                continue;
+            }
+            const TextureImage& image = *l.image[i];
+            lk.ref = l.ref[i];
+            if (!l.linear[i]) {
+                put(out, i, fetch(lk, image, nx[i], dims2 ? ny[i] : 0, 0));
+            } else if (!dims2) {
+                put(out, i, mix(fetch(lk, image, l.x0[i], 0, 0), fetch(lk, image, l.x1[i], 0, 0), l.ax[i]));
+            } else {
+                const Texel row0 =
+                    mix(fetch(lk, image, l.x0[i], l.y0[i], 0), fetch(lk, image, l.x1[i], l.y0[i], 0), l.ax[i]);
+                const Texel row1 =
+                    mix(fetch(lk, image, l.x0[i], l.y1[i], 0), fetch(lk, image, l.x1[i], l.y1[i], 0), l.ax[i]);
+                put(out, i, mix(row0, row1, l.ay[i]));
+            }
+        }
+    }
 }
 
 [[gnu::always_inline]] inline void run(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
@@ -265,16 +314,22 @@ void store(const Texel* texel, const int* active, float (*out)[kLanes]) {
     const SamplerState& st = texture.sampler;
     const Lookup proto{&texture, &st, 0, texture_dims(texture.target()), glm::vec3(0.0f),
                        texture.depth() && st.compare, 0.0f};
-    sample_levels(texture, proto, l, l.level[0], active, l.texel);
+    sample_levels(texture, proto, l, l.level[0], active, l.rgba);
     if (two) {
         sample_levels(texture, proto, l, l.level[1], second, l.second);
-        for (int i = 0; i < kLanes; ++i)
-            if (second[i]) l.texel[i] = mix(l.texel[i], l.second[i], l.mip_weight[i]);
+        // filter()'s mix() of the two levels, channel by channel.
+        for (int c = 0; c < 4; ++c)
+            for (int i = 0; i < kLanes; ++i) {
+                const float w = l.mip_weight[i];
+                const float blend = l.rgba[c][i] * (1.0f - w) + l.second[c][i] * w;
+                l.rgba[c][i] = second[i] ? blend : l.rgba[c][i];
+            }
     }
     if (texture.depth())
         for (int i = 0; i < kLanes; ++i)
-            if (active[i]) l.texel[i] = texel_of(expand_depth(st.depth_mode, vec_of(l.texel[i]).r));
-    store(l.texel, active, out);
+            if (active[i]) put(l.rgba, i, texel_of(expand_depth(st.depth_mode, l.rgba[0][i])));
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) out[c][i] = active[i] ? l.rgba[c][i] : out[c][i];
 }
 
 void run_baseline(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
