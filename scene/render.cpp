@@ -93,6 +93,7 @@ int color_buffers(const Scene& scene) {
     for (const Object& o : scene.objects)
         if (o.state) n = std::max(n, o.state->draw_buffers);
     for (const Pass& p : scene.passes) {
+        if (p.target >= 0) continue;  // draws into a render target's own colour buffers
         n = std::max(n, p.state.draw_buffers);
         for (const auto& state : p.object_states)
             if (state) n = std::max(n, state->draw_buffers);
@@ -131,8 +132,9 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     }
     GLState gl = *state;
     gl.texture_units = bound.texture_units;
-    gl.modelview = scene.view * object.model;
-    gl.projection = scene.projection;
+    gl.modelview = (pass && pass->view ? *pass->view : scene.view) * object.model;
+    // A pass with a camera of its own keeps its projection; the others draw with the scene's.
+    if (!(pass && pass->own_projection)) gl.projection = scene.projection;
     gl.lights = eye_space_lights(scene);
     if (object.front_material) gl.front_material = *object.front_material;
     if (object.back_material) gl.back_material = *object.back_material;
@@ -245,6 +247,56 @@ Status check_gl_copies(const Scene& scene) {
     return Ok{};
 }
 
+// The render targets' framebuffers, as glref's FBOs start: colour (0, 0, 0, 0),
+// depth 1, stencil 0.
+Result<std::vector<Framebuffer>> make_targets(const Scene& scene) {
+    std::vector<Framebuffer> targets;
+    for (const RenderTarget& t : scene.targets) {
+        auto fb = Framebuffer::create(t.width, t.height, false, t.color_buffers);
+        if (!fb) return fb.error();
+        fb->clear_color(glm::vec4(0));
+        fb->clear_depth(1);
+        fb->clear_stencil(0);
+        targets.push_back(std::move(*fb));
+    }
+    return targets;
+}
+
+// What a pass drew into target `index` becomes the texels of the textures
+// that sample it (an FBO's attachment is that texture). Depth is stored as a
+// 24-bit depth buffer stores it (GL_DEPTH24_STENCIL8), as GL would sample it.
+Status refresh_target_textures(const Scene& scene, int index, const Framebuffer& fb, GLState& bound) {
+    for (const TextureSetting& setting : scene.textures) {
+        if (setting.render_target != index) continue;
+        TextureImage image{fb.width, fb.height, 1, {}};
+        image.texels.reserve(size_t(fb.width) * size_t(fb.height));
+        constexpr double kMax24 = double((1 << 24) - 1);
+        for (int y = 0; y < fb.height; ++y)
+            for (int x = 0; x < fb.width; ++x) {
+                if (setting.attachment >= 0) {
+                    image.texels.push_back(fb.pixel(x, y, setting.attachment));
+                    continue;
+                }
+                double d = std::clamp(double(fb.depth[size_t(y) * size_t(fb.width) + size_t(x)]), 0.0, 1.0);
+                image.texels.push_back(glm::vec4(float(std::nearbyint(d * kMax24) / kMax24), 0, 0, 1));
+            }
+        auto texture = Texture::create(TextureTarget::Tex2D, {std::move(image)}, setting.texture->format());
+        if (!texture) return texture.error();
+        texture->sampler = setting.texture->sampler;
+        if (Status st = bound.bind_texture(setting.unit, std::make_shared<const Texture>(std::move(*texture))); !st)
+            return st;
+    }
+    return Ok{};
+}
+
+// Leftover clears of a pass that drew nothing still happen.
+void flush_clear(Framebuffer& fb, ClearValues& pending) {
+    if (pending.color) fb.clear_color(*pending.color);
+    if (pending.depth) fb.clear_depth(*pending.depth);
+    if (pending.stencil) fb.clear_stencil(*pending.stencil);
+    pending = {};
+}
+
 Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                               ClearValues& pending) {
     if (Status st = check_gl_copies(scene); !st) return st.error();
@@ -255,11 +307,24 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
     auto bound = bind_scene_textures(scene);
     if (!bound) return bound.error();
     if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
+    auto targets = make_targets(scene);
+    if (!targets) return targets.error();
     DrawStats total;
     for (size_t i = 0; i < scene.passes.size(); ++i) {
-        auto stats = draw_pass(programs.of_pass(i), scene, *bound, &scene.passes[i], fb, pending);
+        const Pass& pass = scene.passes[i];
+        // A pass's clear after the scene's: a full clear replaces an earlier one.
+        ClearValues target_clear = pass.clear;
+        ClearValues& clear = pass.target < 0 ? pending : target_clear;
+        if (pass.clear.color) clear.color = pass.clear.color;
+        if (pass.clear.depth) clear.depth = pass.clear.depth;
+        if (pass.clear.stencil) clear.stencil = pass.clear.stencil;
+        Framebuffer& into = pass.target < 0 ? fb : (*targets)[size_t(pass.target)];
+        auto stats = draw_pass(programs.of_pass(i), scene, *bound, &pass, into, clear);
+        if (pass.target >= 0) flush_clear(into, target_clear);
         if (!stats) return stats.error();
         total += *stats;
+        if (pass.target >= 0)
+            if (Status st = refresh_target_textures(scene, pass.target, into, *bound); !st) return st.error();
     }
     return total;
 }
@@ -273,9 +338,7 @@ Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene&
     ClearValues pending = clear;
     auto result = draw_passes(programs, scene, fb, pending);
     // No object, or an error before the first draw: the clear still happens.
-    if (pending.color) fb.clear_color(*pending.color);
-    if (pending.depth) fb.clear_depth(*pending.depth);
-    if (pending.stencil) fb.clear_stencil(*pending.stencil);
+    flush_clear(fb, pending);
     return result;
 }
 

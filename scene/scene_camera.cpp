@@ -116,12 +116,24 @@ glm::dmat4 rotate_entry(const toml::node& n, const std::string& what) {
     return gl_rotate(v[0], axis);
 }
 
+// gluLookAt, gluPerspective, glOrtho, glFrustum as entries of a list (they
+// multiply the current matrix too); defined with the camera below.
+glm::dmat4 camera_entry(const Section& s, std::string_view key);
+
 glm::dmat4 transform_entry(const toml::node& n, const std::string& what) {
     Section s(table(n, what), what);
-    s.allow({"translate", "rotate", "scale", "matrix"});
+    s.allow({"translate", "rotate", "scale", "matrix", "look_at", "perspective", "ortho", "frustum", "inverse"});
     if (s.table().size() != 1)
-        fail(n, fmt::format("'{}' must have exactly one of translate, rotate, scale, matrix (got {})",
-                            what, s.table().size()));
+        fail(n, fmt::format("'{}' must have exactly one of translate, rotate, scale, matrix, look_at, perspective, "
+                            "ortho, frustum, inverse (got {})", what, s.table().size()));
+    for (std::string_view key : {"look_at", "perspective", "ortho", "frustum"})
+        if (s.get(key)) return camera_entry(s, key);
+    if (auto t = s.get("inverse")) {
+        // The inverse of a list, as a program multiplies by the inverse of its camera's matrix.
+        glm::dmat4 m = transform_list(*t, s.name("inverse"));
+        if (glm::determinant(m) == 0) fail(*t, fmt::format("'{}' is singular: it has no inverse", s.name("inverse")));
+        return glm::inverse(m);
+    }
     if (auto t = s.get("translate")) {
         std::vector<double> v = numbers(*t, s.name("translate"), 3, 3);
         return glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, v[0], v[1], v[2], 1);
@@ -212,6 +224,21 @@ void read_box(const Section& s, Camera& cam, Camera::Kind kind) {
     differ(cam.near, cam.far, "near and far");
 }
 
+glm::dmat4 camera_entry(const Section& s, std::string_view key) {
+    const toml::node& n = *s.get(key);
+    std::string what = s.name(key);
+    if (key == "look_at") return read_look_at(n, what);
+    Section sub(table(n, what), what);
+    Camera cam;
+    if (key == "perspective") {
+        read_perspective(sub, cam);
+        if (cam.aspect == 0) fail(n, fmt::format("'{}' needs its aspect (width / height) in a transform list", what));
+    } else {
+        read_box(sub, cam, key == "ortho" ? Camera::Kind::Ortho : Camera::Kind::Frustum);
+    }
+    return projection_of(cam, 1, 1);
+}
+
 // Exactly one of `keys` may be present; returns it, or "" for none.
 std::string_view one_of(const Section& s, const std::vector<std::string_view>& keys) {
     std::string_view found;
@@ -224,30 +251,34 @@ std::string_view one_of(const Section& s, const std::vector<std::string_view>& k
     return found;
 }
 
-void read_projection(const Section& s, Scene& scene) {
+void read_projection(const Section& s, Camera& cam, glm::mat4& projection, int width, int height) {
     std::string_view kind = one_of(s, {"perspective", "ortho", "frustum", "projection_matrix"});
     if (kind.empty()) return;
     const toml::node& n = *s.get(kind);
     std::string what = s.name(kind);
-    Camera& cam = scene.camera;
     if (kind == "projection_matrix") {
-        scene.projection = glm::mat4(matrix(n, what));
+        projection = glm::mat4(matrix(n, what));
         return;
     }
     Section sub(table(n, what), what);
     if (kind == "perspective") read_perspective(sub, cam);
     else read_box(sub, cam, kind == "ortho" ? Camera::Kind::Ortho : Camera::Kind::Frustum);
-    scene.projection = glm::mat4(projection_of(cam, scene.width, scene.height));
+    projection = glm::mat4(projection_of(cam, width, height));
 }
 
 }  // namespace
 
-void read_camera(const Section& s, Scene& scene) {
+void read_camera_into(const Section& s, Camera& camera, glm::mat4& view, glm::mat4& projection, int width,
+                      int height) {
     s.allow({"look_at", "view_matrix", "perspective", "ortho", "frustum", "projection_matrix"});
-    std::string_view view = one_of(s, {"look_at", "view_matrix"});
-    if (view == "look_at") scene.view = glm::mat4(read_look_at(*s.get(view), s.name(view)));
-    if (view == "view_matrix") scene.view = glm::mat4(matrix(*s.get(view), s.name(view)));
-    read_projection(s, scene);
+    std::string_view v = one_of(s, {"look_at", "view_matrix"});
+    if (v == "look_at") view = glm::mat4(read_look_at(*s.get(v), s.name(v)));
+    if (v == "view_matrix") view = glm::mat4(matrix(*s.get(v), s.name(v)));
+    read_projection(s, camera, projection, width, height);
+}
+
+void read_camera(const Section& s, Scene& scene) {
+    read_camera_into(s, scene.camera, scene.view, scene.projection, scene.width, scene.height);
 }
 
 std::string size_problem(int64_t width, int64_t height) {
@@ -299,6 +330,15 @@ Status resize_scene(Scene& scene, int width, int height) {
     if (scene.camera.kind == Camera::Kind::Perspective && scene.camera.aspect == 0) {
         scene.projection = glm::mat4(detail::projection_of(scene.camera, width, height));
         derive_eye_space_lights(scene);
+        // Every state drawn with the scene's camera: the objects' and the passes' copies.
+        for (Object& o : scene.objects)
+            if (o.state) o.state->projection = scene.projection;
+        for (Pass& p : scene.passes) {
+            if (p.own_projection) continue;
+            p.state.projection = scene.projection;
+            for (auto& st : p.object_states)
+                if (st) st->projection = scene.projection;
+        }
     }
     return Ok{};
 }

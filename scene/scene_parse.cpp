@@ -62,7 +62,8 @@ Section section(const toml::node& n, const char* name) { return Section(detail::
 Scene build_scene(const toml::table& root, const std::string& path) {
     Section top(root, "");
     top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
-               "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects", "passes", "animation"});
+               "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects", "passes", "animation",
+               "render_targets"});
     Scene scene;
     scene.path = path;
     if (const toml::node* n = top.get("output")) read_output(section(*n, "output"), scene);
@@ -71,6 +72,7 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     if (const toml::node* n = top.get("lights")) detail::read_lights(*n, scene);
     detail::read_render_state(top, scene);
     std::string dir = std::filesystem::path(path).parent_path().string();
+    if (const toml::node* n = top.get("render_targets")) detail::read_render_targets(*n, scene);
     if (const toml::node* n = top.get("textures")) detail::read_textures(*n, dir, scene);
     if (const toml::node* n = top.get("uniforms")) detail::read_uniforms(*n, "uniforms", scene.uniforms);
     if (const toml::node* n = top.get("objects")) detail::read_objects(*n, dir, scene);

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "glslrun/scene/meshes.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
@@ -49,7 +50,9 @@ std::vector<ShaderSource> read_shaders(const Section& s, std::string_view key, c
     return sources;
 }
 
-// `objects = ["floor", "teapot"]`: every object of those names, in scene order.
+// `objects = ["floor", "teapot", "floor"]`: the objects of those names in
+// the list's order, as a program's draw calls; a name listed twice is drawn
+// twice. A name several objects share draws each of them, in scene order.
 std::vector<size_t> pass_objects(const Section& s, const Scene& scene) {
     const toml::node* n = s.get("objects");
     std::vector<size_t> picked;
@@ -58,21 +61,22 @@ std::vector<size_t> pass_objects(const Section& s, const Scene& scene) {
         return picked;
     }
     const toml::array& names = array(*n, s.name("objects"));
-    std::vector<bool> chosen(scene.objects.size(), false);
     std::vector<std::string_view> known;
     for (const Object& o : scene.objects) known.push_back(o.name);
     for (const toml::node& e : names) {
         auto name = e.as_string();
         if (!name) fail(e, fmt::format("'{}' must list object names (got {})", s.name("objects"), describe(e)));
-        bool found = false;
+        size_t before = picked.size();
         for (size_t i = 0; i < scene.objects.size(); ++i)
-            if (scene.objects[i].name == name->get()) chosen[i] = found = true;
-        if (!found)
+            if (scene.objects[i].name == name->get()) picked.push_back(i);
+        if (picked.size() == before)
             fail(e, fmt::format("'{}': there is no object named '{}'; {}", s.name("objects"), name->get(),
                                 suggestion(name->get(), known, "objects")));
+        // Each draw is bounded like an object (its vertices are the mesh's, already counted).
+        if (picked.size() > kMaxSceneObjects)
+            fail(e, fmt::format("'{}' draws more than {} objects (docs/limits.md)", s.name("objects"),
+                                kMaxSceneObjects));
     }
-    for (size_t i = 0; i < chosen.size(); ++i)
-        if (chosen[i]) picked.push_back(i);
     return picked;
 }
 
@@ -80,7 +84,7 @@ Pass read_pass(const toml::node& n, size_t index, const toml::array* objects, co
                const Scene& scene) {
     std::string what = fmt::format("passes[{}]", index);
     Section s(table(n, what), what);
-    s.allow({"name", "vertex", "fragment", "state", "uniforms", "objects"});
+    s.allow({"name", "vertex", "fragment", "state", "uniforms", "objects", "target", "clear", "camera"});
     Pass pass;
     pass.name = pass_name(s, index);
     pass.where = location(n);
@@ -91,6 +95,7 @@ Pass read_pass(const toml::node& n, size_t index, const toml::array* objects, co
     pass.fragment = read_shaders(s, "fragment", scene_dir);
     pass.state = scene.gl;
     if (auto st = s.get("state")) read_state_section(Section(table(*st, s.name("state")), s.name("state")), scene.view, pass.state);
+    read_pass_target(s, scene, pass);  // the camera's projection goes into pass.state, before the objects' copies
     if (auto u = s.get("uniforms")) read_uniforms(*u, s.name("uniforms"), pass.uniforms);
     pass.objects = pass_objects(s, scene);
     pass.object_states.resize(scene.objects.size());

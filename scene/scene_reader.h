@@ -96,6 +96,15 @@ glm::dmat4 projection_of(const Camera& camera, int width, int height);
 // scene_objects.cpp, scene_textures.cpp).
 glm::dmat4 transform_list(const toml::node& n, const std::string& what);
 void read_camera(const Section& camera, Scene& scene);
+// [camera]'s keys into a camera, view and projection (left alone when absent).
+void read_camera_into(const Section& s, Camera& camera, glm::mat4& view, glm::mat4& projection, int width,
+                      int height);
+// [render_targets.NAME] (scene_targets.cpp), before the textures that sample them.
+void read_render_targets(const toml::node& n, Scene& scene);
+// A [textures.N] with `render_target`: its attachment's texture, cleared.
+Texture target_texture(const Section& s, const Scene& scene, TextureSetting& setting);
+// A pass's `target`, `clear` and `camera` (its projection goes to pass.state).
+void read_pass_target(const Section& s, const Scene& scene, Pass& pass);
 void read_lights(const toml::node& n, Scene& scene);
 void read_material(const Section& s, MaterialState& m);
 void read_render_state(const Section& top, Scene& scene);

@@ -157,6 +157,23 @@ void read_point_sprite(const Section& s, GLState& gl) {
         gl.coord_replace |= 1u << integer(units[i], fmt::format("{}[{}] (texture units 0..7)", s.name("coord_replace"), i), 0, 7);
 }
 
+// glViewport(x, y, width, height). GL clamps the size to
+// GL_MAX_VIEWPORT_DIMS; a size of 0 draws nothing in GL, while glslrun's
+// GLState reads 0 as "the whole framebuffer", so sizes start at 1.
+void read_viewport(const Section& s, GLState& gl) {
+    const toml::node* n = s.get("viewport");
+    if (!n) return;
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 4)
+        fail(*n, fmt::format("'{}' must be [x, y, width, height] (got {})", s.name("viewport"), describe(*n)));
+    constexpr int64_t kFar = int64_t(1) << 30;
+    for (size_t i = 0; i < 4; ++i) {
+        std::string what = fmt::format("{}[{}]", s.name("viewport"), i);
+        gl.viewport[i] = i < 2 ? int(integer((*a)[i], what, -kFar, kFar))
+                               : int(integer((*a)[i], what + " (GL_MAX_VIEWPORT_DIMS)", 1, kMaxFramebufferSide));
+    }
+}
+
 void read_texture_matrices(const toml::node& n, GLState& gl) {
     const toml::table& units = table(n, "texture_matrix");
     for (auto&& [k, v] : units) {
@@ -188,7 +205,8 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
                                           "vertex_program_two_side", "point_size", "vertex_program_point_size",
                                           "clip_planes", "clip_planes_space", "depth_range", "polygon_mode",
                                           "polygon_offset", "polygon_offset_fill", "polygon_offset_line",
-                                          "polygon_offset_point", "line_width", "point_sprite", "coord_replace"};
+                                          "polygon_offset_point", "line_width", "point_sprite", "coord_replace",
+                                          "viewport"};
     keys.insert(keys.end(), fragment_state_keys().begin(), fragment_state_keys().end());
     s.allow(keys);
     s.read("depth_test", gl.depth_test);
@@ -207,6 +225,7 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
     read_polygon_offset(s, gl);
     s.read("line_width", gl.line_width, {.lo = 0, .lo_open = true, .why = "glLineWidth"});
     read_point_sprite(s, gl);
+    read_viewport(s, gl);
     read_fragment_state(s, gl);
 }
 

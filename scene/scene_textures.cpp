@@ -31,7 +31,14 @@ const std::vector<std::string_view> kDepthKeys = {"compare_mode", "compare_func"
 const std::vector<std::string_view> kTextureKeys = {
     "target", "internal_format", "image", "checkerboard", "rgbw", "solid", "faces", "levels",
     "generate_mipmap", "min_filter", "mag_filter", "wrap_s", "wrap_t", "wrap_r", "border_color", "min_lod",
-    "max_lod", "lod_bias", "base_level", "max_level", "compare_mode", "compare_func", "depth_texture_mode"};
+    "max_lod", "lod_bias", "base_level", "max_level", "compare_mode", "compare_func", "depth_texture_mode",
+    "render_target", "attachment"};
+
+// A render target's texture: its texels come from the passes, so no source,
+// format or mipmaps (the attachment is level 0 of a 2D texture).
+const std::vector<std::string_view> kTargetTextureKeys = {
+    "render_target", "attachment", "min_filter", "mag_filter", "wrap_s", "wrap_t", "border_color", "min_lod",
+    "max_lod", "lod_bias", "compare_mode", "compare_func", "depth_texture_mode"};
 
 // What every source of one texture needs to know.
 struct Context {
@@ -350,7 +357,30 @@ void warn_if_incomplete(const Texture& t, int unit, const SourceLoc& where, Scen
                                         true});
 }
 
+// A render target's attachment, sampled: GL's texture object with the
+// file's sampler state; the renderers replace its texels after each pass.
+TextureSetting read_target_texture(const Section& s, int unit, Scene& scene) {
+    s.allow(kTargetTextureKeys);
+    TextureSetting setting;
+    setting.unit = unit;
+    setting.where = location(s.table());
+    Texture texture = target_texture(s, scene, setting);
+    Context c;
+    c.format = texture.format();
+    texture.sampler = read_sampler(s, c);
+    if (auto n = s.get("min_filter"); is_mipmap_filter(texture.sampler.min_filter))
+        fail(n ? *n : *s.get("render_target"),
+             fmt::format("[{}]: a render target's texture has one level, so min_filter must be \"nearest\" or "
+                         "\"linear\"{}", s.path(), n ? "" : " (GL's default, nearest_mipmap_linear, would make it "
+                                                             "incomplete)"));
+    setting.texture = std::make_shared<const Texture>(std::move(texture));
+    return setting;
+}
+
 TextureSetting read_texture(const Section& s, int unit, const std::string& dir, Scene& scene) {
+    if (s.get("render_target")) return read_target_texture(s, unit, scene);
+    if (const toml::node* n = s.get("attachment"))
+        fail(*n, fmt::format("'{}' needs render_target = \"NAME\"", s.name("attachment")));
     s.allow(kTextureKeys);
     Context c = read_context(s, dir);
     c.files = &scene.files;

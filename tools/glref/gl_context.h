@@ -23,6 +23,7 @@ namespace glslrun::glref {
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                          \
     X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                                    \
     X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                            \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                                  \
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                              \
     X(PFNGLCREATESHADERPROC, CreateShader)                                                  \
     X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                  \

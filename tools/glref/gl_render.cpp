@@ -195,6 +195,13 @@ void set_primitive_state(const GLFunctions& gl, const GLState& g) {
     gl.ActiveTexture(GL_TEXTURE0);
 }
 
+// glViewport: GLState's width 0 is the whole framebuffer being drawn.
+void set_viewport(const GLState& g, const GLTarget& into) {
+    std::array<int, 4> vp = g.viewport;
+    if (vp[2] <= 0 || vp[3] <= 0) vp = {0, 0, into.width, into.height};
+    glViewport(vp[0], vp[1], vp[2], vp[3]);
+}
+
 void set_render_state(const GLFunctions& gl, const GLState& g) {
     enable(GL_DEPTH_TEST, g.depth_test);
     // GLState::DepthFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
@@ -238,19 +245,27 @@ void set_fog_and_textures(const GLFunctions& gl, const GLState& g) {
 
 // glClear obeys the scissor and the write masks, and clears the current draw
 // buffers: with GL's defaults and every colour buffer, as render_scene clears.
-void clear(const GLFunctions& gl, const Scene& s) {
-    std::array<int, 4> vp = s.gl.viewport;
-    if (vp[2] == 0) vp = {0, 0, s.width, s.height};
-    glViewport(vp[0], vp[1], vp[2], vp[3]);
+void clear(const GLFunctions& gl, const GLTarget& into, const ClearValues& values) {
+    GLbitfield bits = 0;
+    glViewport(0, 0, into.width, into.height);
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
-    set_draw_buffers(gl, scene::color_buffers(s));
-    glClearColor(s.clear_color.r, s.clear_color.g, s.clear_color.b, s.clear_color.a);
-    glClearDepth(s.clear_depth);
-    glClearStencil(s.clear_stencil);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    set_draw_buffers(gl, into.color_buffers);
+    if (const auto& c = values.color) {
+        glClearColor(c->r, c->g, c->b, c->a);
+        bits |= GL_COLOR_BUFFER_BIT;
+    }
+    if (values.depth) {
+        glClearDepth(*values.depth);
+        bits |= GL_DEPTH_BUFFER_BIT;
+    }
+    if (values.stencil) {
+        glClearStencil(*values.stencil);
+        bits |= GL_STENCIL_BUFFER_BIT;
+    }
+    if (bits) glClear(bits);
 }
 
 Status set_scene_state(const GLFunctions& gl, const Scene& s) {
@@ -405,7 +420,7 @@ Status bind_arrays(const GLFunctions& gl, GLuint program, const scene::Mesh& m, 
 // render_scene's per-object state, in the same order: modelview, materials,
 // current attributes, the object's uniforms, then the arrays and the draw.
 Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o,
-                   const scene::Pass* pass) {
+                   const scene::Pass* pass, const GLTarget& into) {
     if (Status st = check_mesh(o); !st) return st;
     const GLState* state = o.state ? &*o.state : &s.gl;
     if (pass) {
@@ -413,9 +428,11 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
         state = own ? &*own : &pass->state;
     }
     set_render_state(gl, *state);
+    set_viewport(*state, into);
     set_clip_planes(*state);
+    load_matrix(GL_PROJECTION, state->projection);  // a pass's camera has its own
     // The product glslrun uses, rather than glMultMatrixf's own rounding.
-    load_matrix(GL_MODELVIEW, s.view * o.model);
+    load_matrix(GL_MODELVIEW, (pass && pass->view ? *pass->view : s.view) * o.model);
     set_material(GL_FRONT, o.front_material.value_or(s.gl.front_material));
     set_material(GL_BACK, o.back_material.value_or(s.gl.back_material));
     glColor4fv(glm::value_ptr(o.color.value_or(s.gl.current_color)));
@@ -433,30 +450,46 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
 
 // One pass (the scene's one pass when `pass` is null): glUseProgram, the
 // scene's and the pass's uniforms, then its objects.
-Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, const scene::Pass* pass) {
+Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, const scene::Pass* pass,
+                 const GLTarget& into) {
     gl.UseProgram(program);
     if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
     if (pass)
         if (Status st = apply_uniforms(gl, program, pass->uniforms); !st) return st;
     if (!pass)
         for (const scene::Object& o : scene.objects)
-            if (Status st = draw_object(gl, program, scene, o, nullptr); !st) return st;
+            if (Status st = draw_object(gl, program, scene, o, nullptr, into); !st) return st;
     if (pass)
         for (size_t i : pass->objects)
-            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass); !st) return st;
+            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass, into); !st) return st;
     return Ok{};
 }
 
-// One frame: the clear, every pass (each starting with the scene's uniforms,
-// so every frame starts from the same program state), and glFinish, so the
-// frame is done. programs[i] is pass i's (or the one program without passes).
-Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, const Scene& scene) {
-    clear(gl, scene);
-    if (scene.passes.empty()) {
-        if (Status st = draw_pass(gl, programs[0], scene, nullptr); !st) return st;
+// One frame: the clears (the output's, and the render targets' to their
+// starting contents, so every frame starts alike), every pass in its
+// framebuffer (each starting with the scene's uniforms, so every frame
+// starts from the same program state), and glFinish, so the frame is done.
+// programs[i] is pass i's (or the one program without passes); targets[0]
+// is the output, targets[1 + t] render target t.
+Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, const Scene& scene,
+                  const std::vector<GLTarget>& targets) {
+    for (size_t t = 1; t < targets.size(); ++t) {
+        gl.BindFramebuffer(GL_FRAMEBUFFER, targets[t].fbo);
+        clear(gl, targets[t], ClearValues{glm::vec4(0), 1.0f, 0});
     }
-    for (size_t i = 0; i < scene.passes.size(); ++i)
-        if (Status st = draw_pass(gl, programs[i], scene, &scene.passes[i]); !st) return st;
+    gl.BindFramebuffer(GL_FRAMEBUFFER, targets[0].fbo);
+    clear(gl, targets[0], ClearValues{scene.clear_color, scene.clear_depth, scene.clear_stencil});
+    if (scene.passes.empty()) {
+        if (Status st = draw_pass(gl, programs[0], scene, nullptr, targets[0]); !st) return st;
+    }
+    for (size_t i = 0; i < scene.passes.size(); ++i) {
+        const scene::Pass& pass = scene.passes[i];
+        const GLTarget& into = targets[size_t(pass.target + 1)];
+        gl.BindFramebuffer(GL_FRAMEBUFFER, into.fbo);
+        clear(gl, into, pass.clear);
+        if (Status st = draw_pass(gl, programs[i], scene, &pass, into); !st) return st;
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, targets[0].fbo);
     glFinish();
     return Ok{};
 }
@@ -509,11 +542,17 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     double compile_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - compile_start).count();
     if (Status st = set_scene_state(gl, scene); !st) return st.error();
     if (Status st = upload_textures(gl, scene, options.upload_generated_mipmaps); !st) return st.error();
+    GLint output = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &output);
+    auto made = make_render_targets(gl, scene);
+    if (!made) return made.error();
+    std::vector<GLTarget> targets{{GLuint(output), scene.width, scene.height, buffers}};
+    targets.insert(targets.end(), made->begin(), made->end());
     std::vector<double> seconds, cpu_seconds;
     for (int frame = 0; frame < std::max(1, options.frames); ++frame) {
         auto start = std::chrono::steady_clock::now();
         double cpu_start = scene::process_cpu_seconds();
-        if (Status st = draw_frame(gl, *programs, scene); !st) return st.error();
+        if (Status st = draw_frame(gl, *programs, scene, targets); !st) return st.error();
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         cpu_seconds.push_back(scene::process_cpu_seconds() - cpu_start);
     }

@@ -149,11 +149,58 @@ Status upload_one(const GLFunctions& gl, const scene::TextureSetting& setting, b
     return Ok{};
 }
 
+// An empty 2D texture of the target's size, attached to the bound FBO; the
+// unit of a [textures.N] that samples it gets it with the file's sampler state.
+void attach_texture(const GLFunctions& gl, const scene::Scene& scene, int target, int attachment) {
+    const scene::RenderTarget& t = scene.targets[size_t(target)];
+    const scene::TextureSetting* sampled = nullptr;
+    for (const scene::TextureSetting& s : scene.textures)
+        if (s.render_target == target && s.attachment == attachment) sampled = &s;
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    gl.ActiveTexture(GLenum(GL_TEXTURE0 + (sampled ? sampled->unit : 0)));
+    glBindTexture(GL_TEXTURE_2D, id);
+    tex_parameters(GL_TEXTURE_2D, sampled ? sampled->texture->sampler : SamplerState{});
+    if (attachment < 0) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, t.width, t.height, 0, GL_DEPTH_STENCIL,
+                     GL_UNSIGNED_INT_24_8, nullptr);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, id, 0);
+    } else {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + attachment), GL_TEXTURE_2D, id, 0);
+    }
+    if (!sampled) glBindTexture(GL_TEXTURE_2D, 0);  // unit 0 keeps what the file bound there
+}
+
 }  // namespace
+
+Result<std::vector<GLTarget>> make_render_targets(const GLFunctions& gl, const scene::Scene& scene) {
+    GLint output = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &output);
+    std::vector<GLTarget> targets;
+    for (size_t i = 0; i < scene.targets.size(); ++i) {
+        const scene::RenderTarget& t = scene.targets[i];
+        GLTarget made{0, t.width, t.height, t.color_buffers};
+        gl.GenFramebuffers(1, &made.fbo);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, made.fbo);
+        for (int a = -1; a < t.color_buffers; ++a) attach_texture(gl, scene, int(i), a);
+        GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            return Error(fmt::format("Mesa's FBO for render target '{}' is incomplete (0x{:x})", t.name, status),
+                         t.where.file, t.where.line);
+        targets.push_back(made);
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, GLuint(output));
+    gl.ActiveTexture(GL_TEXTURE0);
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) return Error(fmt::format("Mesa reported {} while making the render targets", gl_error_name(e)));
+    return targets;
+}
 
 Status upload_textures(const GLFunctions& gl, const scene::Scene& scene, bool upload_generated_levels) {
     for (const scene::TextureSetting& setting : scene.textures)
-        if (Status st = upload_one(gl, setting, upload_generated_levels); !st) return st;
+        if (setting.render_target < 0)
+            if (Status st = upload_one(gl, setting, upload_generated_levels); !st) return st;
     gl.ActiveTexture(GL_TEXTURE0);
     return Ok{};
 }

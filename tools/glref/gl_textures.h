@@ -14,6 +14,19 @@ namespace glslrun::glref {
 // so the comparison covers glslrun's mipmap generation too; with
 // `upload_generated_levels` it gets glslrun's generated levels instead (to
 // tell a mipmap-generation difference from a sampling one).
+// [textures.N] with texels of their own (a render target's are made by make_render_targets).
 Status upload_textures(const GLFunctions& gl, const scene::Scene& scene, bool upload_generated_levels);
+
+// A framebuffer object to draw a pass into: the output's or a render target's.
+struct GLTarget {
+    GLuint fbo = 0;
+    int width = 0, height = 0, color_buffers = 1;
+};
+
+// One FBO per [render_targets.NAME], as a GL 2.1 program with
+// EXT_framebuffer_object makes them: GL_RGBA8 colour textures and a
+// GL_DEPTH24_STENCIL8 depth texture. The textures that [textures.N] sample
+// are bound to their units with the file's sampler state.
+Result<std::vector<GLTarget>> make_render_targets(const GLFunctions& gl, const scene::Scene& scene);
 
 }  // namespace glslrun::glref

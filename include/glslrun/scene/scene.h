@@ -89,8 +89,25 @@ struct TextureSetting {
     // uploads level 0 only and lets Mesa generate the rest (glGenerateMipmap),
     // so the comparison also covers glslrun's mipmap generation.
     bool generate_mipmap = false;
+    // `render_target`: the texture is an attachment of a render target (an
+    // FBO's texture), not texels of its own: `texture` holds its sampler
+    // state, and what the passes drew into the target replaces its texels
+    // after every pass into it. attachment: 0..7 colour, -1 depth.
+    int render_target = -1;
+    int attachment = 0;
     SourceLoc where;
 };
+
+// One [render_targets.NAME]: a framebuffer object whose colour and depth
+// attachments are textures (GL_RGBA8 and GL_DEPTH24_STENCIL8) of its own
+// size. Passes draw into it (`target`), [textures.N] sample it.
+struct RenderTarget {
+    std::string name;
+    int width = 0, height = 0;
+    int color_buffers = 1;  // GL_COLOR_ATTACHMENT0 .. n-1
+    SourceLoc where;
+};
+
 
 // One [[passes]] entry: the objects drawn again with a program and state of
 // the pass's own, as a multi-pass GL program does (a depth pre-pass, then a
@@ -107,6 +124,15 @@ struct Pass {
     // Per object (by index into Scene::objects): its `state` keys on top of
     // the pass's state; empty for objects without a state of their own.
     std::vector<std::optional<GLState>> object_states;
+    int target = -1;  // index into Scene::targets; -1: the output framebuffer
+    // A glClear before its first draw, with GL's default masks and no
+    // scissor; a buffer left out is not cleared.
+    ClearValues clear;
+    // `camera`: the view under the objects' transforms for this pass (the
+    // projection is in `state` and object_states). Lights and clip planes
+    // keep the scene camera's eye space, as GL stored them at glLightfv.
+    std::optional<glm::mat4> view;
+    bool own_projection = false;  // `camera` gave one: the output's size does not change it
     SourceLoc where;
 };
 
@@ -143,6 +169,7 @@ struct Scene {
     // (it would be ignored), never drawn silently.
     GLState gl;
     std::vector<TextureSetting> textures;  // by unit, ascending
+    std::vector<RenderTarget> targets;     // [render_targets.NAME], in file order
     std::vector<UniformSetting> uniforms;  // for every object
     std::vector<Object> objects;
     // [[passes]]; empty: one pass of every object with the scene's program and state.

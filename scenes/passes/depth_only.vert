@@ -1,0 +1,2 @@
+// The shadow pass: depth only, from the light (the pass's camera).
+void main() { gl_Position = ftransform(); }

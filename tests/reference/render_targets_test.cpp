@@ -1,0 +1,100 @@
+// glslrun against Mesa on render targets: passes that draw into textures
+// (framebuffer objects) which later passes sample. scenes/shadow_map.toml
+// (a depth texture from the light, compared through sampler2DShadow with
+// 2x2 PCF) and scenes/blur.toml (a two-pass blur of a rendered image). Each
+// image is also the same on both backends and at 1 and 2 threads.
+#include "tests/reference/helpers.h"
+
+#include "glslrun/scene/meshes.h"
+
+using namespace glslrun;
+
+namespace {
+
+const std::string kSourceDir = GLSLRUN_SOURCE_DIR;
+
+// The command line's program: every pass of these scenes names its own.
+const char* kUnusedVertex = "void main() { gl_Position = ftransform(); }\n";
+const char* kUnusedFragment = "void main() { gl_FragColor = vec4(1.0); }\n";
+
+Result<scene::Image> render(const reference::Inputs& in, Backend backend, unsigned threads) {
+    auto program = Program::compile(in.vertex, in.fragment);
+    if (!program) return program.error();
+    program->exec.backend = backend;
+    program->exec.threads = threads;
+    program->exec.precision = Precision::Precise;
+    Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
+    auto stats = scene::render_scene(*program, in.scene, fb);
+    if (!stats) return stats.error();
+    return scene::read_framebuffer(fb, 0);
+}
+
+// The interpreter at 1 thread against the JIT and 2 threads: bit for bit.
+void check_same_everywhere(const reference::Inputs& in) {
+    auto base = render(in, Backend::Interp, 1);
+    if (!base) FAIL(base.error().str());
+    for (Backend backend : {Backend::Interp, Backend::Jit})
+        for (unsigned threads : {1u, 2u}) {
+            if (backend == Backend::Jit && !jit_available()) continue;
+            INFO("backend " << (backend == Backend::Jit ? "jit" : "interp") << ", " << threads << " threads");
+            auto other = render(in, backend, threads);
+            REQUIRE(other);
+            CHECK(other->rgba == base->rgba);
+        }
+}
+
+void compare_scene_file(const std::string& name, const std::string& file) {
+    auto scene = scene::load_scene(kSourceDir + "/scenes/" + file);
+    if (!scene) FAIL(scene.error().str());
+    reference::Inputs in{{{"unused.vert", kUnusedVertex}}, {{"unused.frag", kUnusedFragment}}, std::move(*scene)};
+    reference::compare(name, in);
+    check_same_everywhere(in);
+}
+
+const char* kColorVertex = "void main() { gl_FrontColor = gl_Color; gl_Position = ftransform(); }\n";
+const char* kHalfFragment = "void main() { gl_FragColor = gl_Color * 0.45; }\n";
+
+// Passes into parts of the output (glViewport), one from its own camera after
+// a depth clear, and one that draws the cube twice, added.
+const char* kViewportScene = R"(
+[output]
+size = [96, 64]
+clear_color = [0.1, 0.1, 0.1, 1]
+[camera]
+look_at = { eye = [0, 0, 3], center = [0, 0, 0], up = [0, 1, 0] }
+perspective = { fovy = 45, near = 1, far = 10 }
+[state]
+depth_test = true
+[[objects]]
+name = "cube"
+mesh = "cube"
+vertex_colors = "normal"
+transform = [ { rotate = [30, 1, 1, 0] } ]
+[[passes]]
+state = { viewport = [0, 0, 48, 64] }
+[[passes]]
+clear = { depth = 1 }
+camera = { look_at = { eye = [2, 2, 2], center = [0, 0, 0], up = [0, 1, 0] }, perspective = { fovy = 50, aspect = 1, near = 1, far = 10 } }
+state = { viewport = [48, 8, 40, 40] }
+[[passes]]
+objects = ["cube", "cube"]
+state = { viewport = [60, 40, 36, 24], depth_test = false, blend = true, blend_func = ["one", "one"] }
+)";
+
+}  // namespace
+
+TEST_CASE("glslrun matches Mesa on viewports, per-pass cameras and clears, and an object drawn twice", "[reference]") {
+    auto scene = scene::parse_scene(kViewportScene, "viewports.toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::Inputs in{{{"color.vert", kColorVertex}}, {{"half.frag", kHalfFragment}}, std::move(*scene)};
+    reference::compare("targets-viewports", in);
+    check_same_everywhere(in);
+}
+
+TEST_CASE("glslrun matches Mesa on shadow mapping through a depth render target (PCF)", "[reference]") {
+    compare_scene_file("targets-shadow-map", "shadow_map.toml");
+}
+
+TEST_CASE("glslrun matches Mesa on a two-pass blur through colour render targets", "[reference]") {
+    compare_scene_file("targets-blur", "blur.toml");
+}

@@ -1,0 +1,126 @@
+// [render_targets.NAME], the passes that draw into them (target, clear,
+// camera), the textures that sample them, [state] viewport, and the
+// projection entries of transform lists; and their mistakes.
+#include "glslrun/scene/render.h"
+#include "parse_helpers.h"
+
+using namespace scene_test;
+
+namespace {
+
+const char* kTarget = R"([render_targets.shadow]
+size = [64, 32]
+color_buffers = 2
+[textures.3]
+render_target = "shadow"
+attachment = "depth"
+min_filter = "linear"
+compare_mode = "compare_r_to_texture"
+[textures.4]
+render_target = "shadow"
+attachment = "color1"
+min_filter = "nearest"
+[[objects]]
+mesh = "quad"
+)";
+
+}  // namespace
+
+TEST_CASE("render targets, the textures that sample them and the passes that draw into them", "[scene][parse]") {
+    Scene s = parse_ok(std::string(kTarget) + R"(
+[[passes]]
+target = "shadow"
+clear = { depth = 0.5, stencil = 3 }
+camera = { look_at = { eye = [0, 0, 2] }, ortho = { left = -2, right = 2, bottom = -1, top = 1, near = 1, far = 3 } }
+state = { viewport = [1, 2, 30, 20] }
+[[passes]]
+clear = { color = [1, 0, 0] }
+)");
+    REQUIRE(s.targets.size() == 1);
+    CHECK(s.targets[0].name == "shadow");
+    CHECK(s.targets[0].width == 64);
+    CHECK(s.targets[0].height == 32);
+    CHECK(s.targets[0].color_buffers == 2);
+    REQUIRE(s.textures.size() == 2);
+    CHECK(s.textures[0].render_target == 0);
+    CHECK(s.textures[0].attachment == -1);
+    CHECK(s.textures[0].texture->depth());
+    CHECK(s.textures[0].texture->sampler.compare);
+    CHECK(s.textures[0].texture->levels(0)[0].width == 64);
+    CHECK(s.textures[0].texture->levels(0)[0].texels[0].r == 1.0f);  // cleared depth until drawn
+    CHECK(s.textures[1].attachment == 1);
+    CHECK_FALSE(s.textures[1].texture->depth());
+    const auto& p = s.passes[0];
+    CHECK(p.target == 0);
+    CHECK(p.clear.depth == 0.5f);
+    CHECK(p.clear.stencil == 3);
+    CHECK_FALSE(p.clear.color);
+    REQUIRE(p.view);
+    CHECK((*p.view)[3][2] == -2.0f);                 // gluLookAt from z = 2
+    CHECK(p.state.projection[0][0] == 0.5f);          // glOrtho's 2 / (right - left)
+    CHECK(s.gl.projection[0][0] == 1.0f);             // the scene's camera is untouched
+    CHECK(p.state.viewport == std::array<int, 4>{1, 2, 30, 20});
+    CHECK(s.passes[1].target == -1);
+    check_vec(*s.passes[1].clear.color, {1, 0, 0, 1});
+    // A pass into a target does not add colour buffers to the output.
+    CHECK(glslrun::scene::color_buffers(s) == 1);
+}
+
+TEST_CASE("transform lists take gluLookAt, glOrtho, glFrustum, gluPerspective and inverses", "[scene][parse]") {
+    Scene s = parse_ok(R"(
+[texture_matrix.1]
+transform = [ { ortho = { left = -2, right = 2, bottom = -2, top = 2, near = -1, far = 1 } },
+              { look_at = { eye = [0, 0, 3] } }, { inverse = [ { look_at = { eye = [0, 0, 3] } } ] } ]
+[texture_matrix.2]
+transform = [ { perspective = { fovy = 90, aspect = 2, near = 1, far = 3 } }, { frustum = { left = -1, right = 1, bottom = -1, top = 1, near = 1, far = 3 } } ]
+)");
+    const glm::mat4& m = s.gl.texture_matrix[1];
+    CHECK(m[0][0] == 0.5f);  // the look_at and its inverse cancel
+    CHECK(m[3][2] == Approx(0.0f).margin(1e-6));
+    CHECK(s.gl.texture_matrix[2][1][1] == Approx(1.0f));  // cot(45) of the perspective, times frustum's 1
+}
+
+TEST_CASE("render target mistakes cite their line", "[scene][parse]") {
+    check_cases({
+        {"[render_targets.a]\ncolor_buffers = 1\n", 1, "needs its size"},
+        {"[render_targets.a]\nsize = [0, 4]\n", 2, "size 0x4 is not allowed"},
+        {"[render_targets.a]\nsize = [4, 4]\ncolor_buffers = 9\n", 3, "must be"},
+        {"[render_targets.a]\nsize = [8192, 4096]\n[render_targets.b]\nsize = [16, 16]\n", 3, "hold 67109376 pixels"},
+        {"[textures.0]\nrender_target = \"nope\"\nmin_filter = \"linear\"\n", 2, "no [render_targets.nope]"},
+        {"[render_targets.a]\nsize = [4, 4]\n[textures.0]\nrender_target = \"a\"\n", 4, "min_filter must be"},
+        {"[render_targets.a]\nsize = [4, 4]\n[textures.0]\nrender_target = \"a\"\nattachment = \"color1\"\n"
+         "min_filter = \"linear\"\n", 5, "has 1 colour buffer"},
+        {"[render_targets.a]\nsize = [4, 4]\n[textures.0]\nrender_target = \"a\"\nmin_filter = \"linear\"\n"
+         "[textures.1]\nrender_target = \"a\"\nmin_filter = \"linear\"\n", 7, "already samples"},
+        {"[render_targets.a]\nsize = [4, 4]\n[textures.0]\nrender_target = \"a\"\nmin_filter = \"linear\"\n"
+         "compare_mode = \"compare_r_to_texture\"\n", 6, "depth textures only"},
+        {"[render_targets.a]\nsize = [4, 4]\n[textures.0]\nrender_target = \"a\"\nmin_filter = \"linear\"\n"
+         "image = \"x.png\"\n", 6, "unknown key"},
+        {"[textures.0]\nattachment = \"depth\"\nsolid = [1, 1, 1]\n", 2, "needs render_target"},
+        {"[[objects]]\nmesh = \"quad\"\n[[passes]]\ntarget = \"x\"\n", 4, "the scene declares no render target"},
+        {"[[objects]]\nmesh = \"quad\"\n[[passes]]\nclear = { depth = 2 }\n", 4, "glClearDepth"},
+        {"[[objects]]\nmesh = \"quad\"\n[[passes]]\nclear = { colour = [1, 1, 1] }\n", 4, "unknown key"},
+        {"[[objects]]\nmesh = \"quad\"\n[[passes]]\ncamera = { look_at = {}, view_matrix = [] }\n", 4, "give only one"},
+        {"[state]\nviewport = [0, 0, 0, 4]\n", 2, "viewport[2]"},
+        {"[state]\nviewport = [0, 0, 4]\n", 2, "[x, y, width, height]"},
+        {"[texture_matrix.0]\ntransform = [ { perspective = { fovy = 45, near = 1, far = 2 } } ]\n", 2, "needs its aspect"},
+        {"[texture_matrix.0]\ntransform = [ { inverse = [ { scale = [0, 1, 1] } ] } ]\n", 2, "singular"},
+    });
+}
+
+TEST_CASE("a pass draws its objects in its list's order, a name listed twice twice", "[scene][parse]") {
+    Scene s = parse_ok(R"(
+[[objects]]
+name = "a"
+mesh = "quad"
+[[objects]]
+name = "b"
+mesh = "cube"
+[[objects]]
+name = "a"
+mesh = "sphere"
+[[passes]]
+objects = ["b", "a", "b"]
+)");
+    CHECK(s.passes[0].objects == std::vector<size_t>{1, 0, 2, 1});
+}
