@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "frontend/compile.h"
+#include "frontend/demangle.h"
 
 namespace glslrun {
 
@@ -121,12 +122,13 @@ void parse_info_log(const std::string& log, const std::string& unit_file, std::v
             if (text.find("compilation errors.") != std::string::npos && text.find("No code generated") != std::string::npos)
                 continue;
             if (text.empty()) continue;
-            out.push_back(Diagnostic{unit_file, 0, text, l->warning});
+            // Link messages name functions mangled: `f(vf3;` reads `f(vec3)`.
+            out.push_back(Diagnostic{unit_file, 0, demangle_signatures(text), l->warning});
             last_kept = true;
         } else if (last_kept && !trim(line).empty() && (line[0] == ' ' || line[0] == '\t')) {
             // Continuation of a multi-line link message.
             std::string& msg = out.back().message;
-            msg += (msg.empty() || msg.back() == ':' ? " " : "; ") + trim(line);
+            msg += (msg.empty() || msg.back() == ':' ? " " : "; ") + demangle_signatures(trim(line));
         }
     }
 }

@@ -94,7 +94,7 @@ struct StageUnits {
 std::string prepare_source(const ShaderSource& src, int default_version) {
     std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(src.text)));
     if (unit_version(src, default_version) == 110) s = hoist_nested_structs(s);
-    return rewrite_bool_literal_compares(brace_do_while_bodies(s));
+    return rewrite_bool_literal_compares(brace_do_while_bodies(accept_extension_directives(s)));
 }
 
 struct ParsedUnit {
@@ -116,7 +116,7 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
     // shader; glslang 12 wants the extension.
     std::string preamble = lang == EShLangVertex ? "#extension GL_ARB_shader_texture_lod : enable\n" : "";
-    preamble += helpers;
+    preamble += extension_macros() + helpers;
     out.shader->setPreamble(preamble.c_str());
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
     TokenBudgetScope budget;

@@ -271,11 +271,10 @@ void emit_point(const DrawContext& c, SetupOut& out, const ClipVertex& v, const 
     if (style.provoking >= 0) set_attrs(c, out, &own, 1, uint32_t(style.provoking), style.back_colors, p.v.data());
     else p.v[0].attrs = fs_attrs(c, out, v, style.back_colors);
     p.count = 1;
-    p.point_center = p.v[0].win;
     float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
-    p.point_size = float(point_pixels(size));
+    set_point_square(p, p.v[0].win, size, c.gl.point_sprite);
     set_point_planes(p);
-    bin(out, p, point_rect(p));
+    bin(out, p, p.point_box);
 }
 
 // GL_POINTS: dropped when the centre is outside the view volume.

@@ -197,6 +197,7 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
 
 FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
     : alpha_test(gl.alpha_test), alpha_func(gl.alpha_func), alpha_ref(std::clamp(gl.alpha_ref, 0.0f, 1.0f)),
+      alpha_ref8(unorm8_steps(alpha_ref)),
       stencil_test(gl.stencil_test), stencil(gl.stencil), depth_test(gl.depth_test), depth_write(gl.depth_mask),
       depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color()),
       float_color(fb.float_color()), rounding(fb.rounding), blend_state(gl.blend_state), logic(gl.logic_op),
@@ -298,9 +299,13 @@ Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst, C
 rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
-        // Fixed-point buffers see the shader's colour clamped to [0, 1] (§3.11.6).
-        float a = ops.float_color ? alpha[size_t(lane)] : clamp01(alpha[size_t(lane)]);
-        if (!depth_passes(ops.alpha_func, a, ops.alpha_ref)) mask &= ~(rt::LaneMask(1) << lane);
+        // §4.1.4 compares in the colour buffer's precision: with RGBA8 storage,
+        // the bytes that alpha and the reference would be stored as (llvmpipe
+        // too, so that 128/255 passes EQUAL 0.5 and 0.1005 fails GREATER 0.1).
+        // Float buffers compare the shader's value as is.
+        bool passes = ops.float_color ? depth_passes(ops.alpha_func, alpha[size_t(lane)], ops.alpha_ref)
+                                      : depth_passes(ops.alpha_func, unorm8_steps(alpha[size_t(lane)]), ops.alpha_ref8);
+        if (!passes) mask &= ~(rt::LaneMask(1) << lane);
     }
     return mask;
 }

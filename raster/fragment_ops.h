@@ -45,7 +45,8 @@ struct FragmentOps {
     bool plain = true;
     bool alpha_test = false;
     CompareFunc alpha_func = CompareFunc::Always;
-    float alpha_ref = 0;
+    float alpha_ref = 0;     // clamped to [0, 1]; compared as is with float buffers
+    float alpha_ref8 = 0;    // the byte RGBA8 storage would make of it, as a float
     bool stencil_test = false;
     std::array<StencilFace, 2> stencil;  // front, back
     bool depth_test = false, depth_write = true;

@@ -83,8 +83,8 @@ rt::PrimitiveLayout primitive_layout() {
     l.oy = offsetof(FsPrimitive, oy);
     l.front = offsetof(FsPrimitive, front);
     l.count = offsetof(FsPrimitive, count);
-    l.point_center = offsetof(FsPrimitive, point_center);
-    l.point_size = offsetof(FsPrimitive, point_size);
+    l.point_coord_origin = offsetof(FsPrimitive, point_coord_origin);
+    l.point_coord_step = offsetof(FsPrimitive, point_coord_step);
     return l;
 }
 
@@ -410,8 +410,8 @@ void FragmentStage::builtin_input(int source, uint32_t c, const Weights& w, Lane
             case Source::FrontFacing: value = prim.front ? 1.0f : 0.0f; break;
             case Source::PointCoord:
                 if (prim.count != 1) break;
-                value = c == 0 ? 0.5f + (fx - prim.point_center.x) / prim.point_size
-                               : 0.5f - (fy - prim.point_center.y) / prim.point_size;
+                value = std::fma(prim.point_coord_step[int(c & 1)], float(c == 0 ? lane_x_[lane] : lane_y_[lane]),
+                                 prim.point_coord_origin[int(c & 1)]);
                 break;
             default: break;
             }

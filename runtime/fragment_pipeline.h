@@ -40,7 +40,7 @@ struct PrimitiveLayout {
     uint32_t ox = 0, oy = 0;  // int32: the planes' origin
     uint32_t front = 0;       // bool
     uint32_t count = 0;       // int32: 1 point, 2 line, 3 triangle
-    uint32_t point_center = 0, point_size = 0;  // two floats, a float
+    uint32_t point_coord_origin = 0, point_coord_step = 0;  // two floats each
 };
 
 // Where a shader input component comes from.

@@ -287,12 +287,12 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
     }
     case InputSource::PointCoord: {
         llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
-        llvm::Value* size = splat(load_f(q.prim, layout_.point_size));
-        llvm::Value* centre = splat(load_f(q.prim, layout_.point_center + (in.index == 0 ? 0 : 4)));
-        llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf()), splat_f(0.5f));
-        llvm::Value* offset = b_.CreateFDiv(b_.CreateFSub(pixel, centre), size);
-        llvm::Value* value =
-            in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
+        // fma(step, pixel, origin), one rounding (raster/fragments.h).
+        const uint32_t component = in.index == 0 ? 0 : 4;
+        llvm::Value* step = splat(load_f(q.prim, layout_.point_coord_step + component));
+        llvm::Value* origin = splat(load_f(q.prim, layout_.point_coord_origin + component));
+        llvm::Value* pixel = b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf());
+        llvm::Value* value = b_.CreateIntrinsic(llvm::Intrinsic::fma, {vf()}, {step, pixel, origin});
         return b_.CreateSelect(is_point, value, splat_f(0.0f));
     }
     case InputSource::Zero: break;

@@ -142,6 +142,7 @@ Frame render(Program& p, Primitive prim, const Geometry& g, const GLState& secon
     first.depth_test = true;
     first.depth_func = GLState::DepthFunc::Lequal;
     first.point_size = second.point_size;
+    first.point_sprite = second.point_sprite;
     for (const GLState& gl : {first, second}) {
         auto stats = draw(p, gl, f.fb, prim, {g.pos, g.color}, g.count);
         if (!stats) FAIL(stats.error().str());
@@ -225,12 +226,17 @@ TEST_CASE("the fused pipeline draws the interpreter's bits: points and lines", "
         Programs p(shader.fs);
         for (Primitive prim : {Primitive::Points, Primitive::Lines, Primitive::LineStrip}) {
             for (GLState::DepthFunc func : {GLState::DepthFunc::Less, GLState::DepthFunc::Always}) {
-                GLState gl;
-                gl.depth_test = true;
-                gl.depth_func = func;
-                gl.point_size = 7.0f;
-                INFO(shader.name << ", primitive " << int(prim) << ", depth func " << int(func));
-                check_fused_matches(p, prim, g, gl, false);
+                // Sprites of a fractional size: gl_PointCoord steps by 1/6.3.
+                for (bool sprite : {false, true}) {
+                    GLState gl;
+                    gl.depth_test = true;
+                    gl.depth_func = func;
+                    gl.point_size = sprite ? 6.3f : 7.0f;
+                    gl.point_sprite = sprite;
+                    INFO(shader.name << ", primitive " << int(prim) << ", depth func " << int(func) << ", sprite " << sprite);
+                    check_fused_matches(p, prim, g, gl, false);
+                    if (prim != Primitive::Points) break;
+                }
             }
         }
     }

@@ -11,6 +11,8 @@
 
 #include "raster/fragment_ops.h"
 #include "raster/quad_lanes.h"
+#include "raster/framebuffer.h"
+#include "tests/raster/alpha_boundaries.h"
 #include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
 
@@ -215,4 +217,40 @@ TEST_CASE("scenes in Fast store colours by the GPU's rule, the other modes by Me
     CHECK(cleared(Precision::Fast) == std::array<int, 2>{25, 127});
     CHECK(cleared(Precision::Precise) == std::array<int, 2>{26, 128});
     CHECK(cleared(Precision::Reference) == std::array<int, 2>{26, 128});
+}
+
+TEST_CASE("the alpha test compares the bytes of an RGBA8 buffer, floats of a float buffer", "[raster][fragment]") {
+    using alpha_boundaries::kCases;
+    auto scene = scene::parse_scene(alpha_boundaries::scene(), "alpha.toml");
+    REQUIRE(scene);
+    for (size_t i = 0; i < kCases.size(); ++i) {
+        const auto& c = kCases[i];
+        INFO("case " << i << ": alpha " << c.alpha << " " << c.func << " " << c.ref);
+        REQUIRE(scene->objects[i].state);
+        const GLState& gl = *scene->objects[i].state;
+        REQUIRE(gl.alpha_test);
+        Lanes alpha{};
+        alpha.fill(c.alpha);
+        CHECK(bool(alpha_test(FragmentOps(gl, Framebuffer(4, 4)), alpha, 1) & 1) == c.passes);
+        // A float buffer compares the values themselves (clamped reference).
+        float ref = std::clamp(c.ref, 0.0f, 1.0f);
+        bool float_passes = depth_passes(gl.alpha_func, c.alpha, ref);
+        CHECK(bool(alpha_test(FragmentOps(gl, Framebuffer(4, 4, true)), alpha, 1) & 1) == float_passes);
+    }
+    // Both backends draw it so: the JIT's fused pipeline leaves the alpha test to the C++ path.
+    for (Backend backend : {Backend::Interp, Backend::Jit}) {
+        INFO("backend " << backend_name(backend));
+        auto p = Program::compile({{"vs", kVertex}}, {{"fs", "uniform float alpha;\n"
+                                                               "void main() { gl_FragColor = vec4(gl_Color.rgb, alpha); }\n"}});
+        REQUIRE(p);
+        p->exec.backend = backend;
+        Framebuffer fb(scene->width, scene->height);
+        REQUIRE(scene::render_scene(*p, *scene, fb));
+        for (size_t i = 0; i < kCases.size(); ++i) {
+            auto [x, y] = alpha_boundaries::centre(i);
+            INFO("case " << i);
+            // Drawn where it passes: the clear's black otherwise.
+            CHECK((fb.pixel(x, y).b > 0.0f) == kCases[i].passes);
+        }
+    }
 }

@@ -434,8 +434,11 @@ TestResult run_parser_test(const std::string& text, const std::string& ext, cons
     if (t.glsl_es) return skip("GLSL ES is not supported");
     if (t.glsl_version > options.caps.max_glsl_version)
         return skip(fmt::format("requires GLSL {}.{:02}", t.glsl_version / 100, t.glsl_version % 100));
-    for (const auto& e : t.extensions)
-        if (!e.empty() && e[0] != '!') return skip("extension " + e + " is not supported");
+    for (const auto& e : t.extensions) {
+        bool absent = !e.empty() && e[0] == '!';
+        if (options.caps.has_extension(absent ? e.substr(1) : e) == absent)
+            return skip(absent ? "requires " + e.substr(1) + " to be absent" : "extension " + e + " is not supported");
+    }
     Stage stage = ext == ".vert" ? Stage::Vertex : Stage::Fragment;
     ShaderSource src{name, text};
     std::string log;

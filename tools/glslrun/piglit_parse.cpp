@@ -471,7 +471,10 @@ std::optional<std::string> skip_reason(const ShaderTest& test, const Capabilitie
     if (req.gl_version > caps.max_gl_version)
         return "requires GL " + std::to_string(req.gl_version / 10) + "." +
                std::to_string(req.gl_version % 10);
-    if (!req.extensions.empty()) return "extension " + req.extensions[0] + " is not supported";
+    for (const auto& e : req.extensions)
+        if (!caps.has_extension(e)) return "extension " + e + " is not supported";
+    for (const auto& e : req.absent_extensions)
+        if (caps.has_extension(e)) return "requires " + e + " to be absent";
     for (const auto& limit : req.limits) {
         auto value = capability(caps, limit.name);
         if (!value) return "unknown limit " + limit.name;

@@ -3,6 +3,7 @@
 // processing: no file I/O beyond what the caller passes in, and nothing from
 // the glslrun library, so the parser can be unit-tested on its own.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "frontend/source_rewrite.h"  // kExtraExtensions: a constant, no code
 #include "glslrun/glslrun.h"
 
 namespace glslrun::piglit {
@@ -60,6 +62,11 @@ struct Capabilities {
     long max_vertex_uniform_components = 16384;
     long max_vertex_attribs = 16;
     long max_clip_planes = 6;
+    // The extensions a test may require, or require to be absent (frontend/source_rewrite.h).
+    std::vector<std::string> extensions{frontend::kExtraExtensions.begin(), frontend::kExtraExtensions.end()};
+    bool has_extension(const std::string& name) const {
+        return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
+    }
 };
 
 // ------------------------------------------------------------ commands ---
