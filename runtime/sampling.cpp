@@ -23,7 +23,7 @@ void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, floa
     if (lookup.implicit && lod_matters) lod = lookup.bias ? lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy) + lookup.lod
                                            : lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy);
     const glm::vec4 v = sample_complete(texture, lookup.coord, lookup.ref, lod);
-    for (int c = 0; c < 4; ++c) rgba[c] = v[c];
+    for (int c = 0; c < 4; ++c) rgba[c] = canonical_nan(v[c]);
 }
 
 }  // namespace glslrun::rt

@@ -2,7 +2,8 @@
 // level-of-detail selection, magnification/minification, mipmap choice,
 // wrap modes and the border, nearest/linear filtering, cube-face selection,
 // depth comparison and DEPTH_TEXTURE_MODE. The interpreter's `tex` kernel
-// decodes an instruction's operands and calls these per active lane.
+// decodes an instruction's operands and samples the lanes of one texture
+// together (sampling_batch.h), or one by one with sample_complete_lane().
 #pragma once
 #include <array>
 

@@ -5,6 +5,7 @@
 // registers hold: every step is safe for any float), but fetch nothing.
 #include "runtime/sampling_batch.h"
 
+#include "runtime/interp_kernels.h"
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt {
@@ -304,8 +305,11 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
         for (int i = 0; i < kLanes; ++i) l.ref[i] = 0.0f;  // unorm(0)
     alignas(32) int active[kLanes], second[kLanes];
     int two = 0;
+    for (int base = 0; base < kLanes; base += 32) {  // bit tests against a table: the loop vectorises
+        const uint32_t bits = uint32_t(lanes >> base);
+        for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
+    }
     for (int i = 0; i < kLanes; ++i) {
-        active[i] = int((lanes >> i) & 1);
         second[i] = active[i] & int(l.level[1][i] >= 0);
         two |= second[i];
     }
@@ -329,7 +333,7 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
         for (int i = 0; i < kLanes; ++i)
             if (active[i]) put(l.rgba, i, texel_of(expand_depth(st.depth_mode, l.rgba[0][i])));
     for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < kLanes; ++i) out[c][i] = active[i] ? l.rgba[c][i] : out[c][i];
+        for (int i = 0; i < kLanes; ++i) out[c][i] = active[i] ? canonical_nan(l.rgba[c][i]) : out[c][i];
 }
 
 void run_baseline(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -37,6 +38,12 @@ inline constexpr float kLodLimit = 1000.0f;
 inline constexpr float kIndexLimit = 1 << 24;
 // A texel index on the border (outside [0, size) under CLAMP or CLAMP_TO_BORDER).
 inline constexpr int kBorder = -1;
+
+// A lookup's NaN results as one NaN: a NaN's sign is the first operand's of
+// the multiply or add that made it, and the compiler orders those operands
+// as it likes in each inlined copy (the batched and per-lane samplers, the
+// baseline and AVX2 builds); naming one NaN keeps their bits the same.
+inline float canonical_nan(float x) { return x != x ? std::numeric_limits<float>::quiet_NaN() : x; }
 
 // x clamped to [lo, hi], NaN to lo.
 inline float clamp_or_low(float x, float lo, float hi) { return x > lo ? (x < hi ? x : hi) : lo; }

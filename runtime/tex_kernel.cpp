@@ -61,7 +61,7 @@ template <class W>
 struct FloatOperands {
     static constexpr uint32_t kMax = 12;  // 3 + ref + lod + 3 + 3, and a spare
     alignas(32) float copy[std::is_same_v<FloatOf<W>, float> ? 1 : kMax][kLanes];
-    alignas(32) float zeros[kLanes] = {};
+    alignas(32) static constexpr float zeros[kLanes] = {};
     const float* base = nullptr;
 
     FloatOperands(const ir::TexInfo& info, const FloatOf<W>* block) {
@@ -127,9 +127,13 @@ void tex(const Step<W>& s, Machine<W>& m) {
         out[3][i] = 1.0f;
     }
     const LaneMask lookups = m.mask.active() & m.lookups;
-    if (m.lookups != kAllLanes)
-        for (int i = 0; i < kLanes; ++i)
-            if (!((m.lookups >> i) & 1)) out[3][i] = 0.0f;  // skipped lookups read 0
+    if (m.lookups != kAllLanes) {  // skipped lookups read 0; the bit tests as in Machine::write
+        for (int base = 0; base < kLanes; base += 32) {
+            const uint32_t bits = uint32_t(m.lookups >> base);
+            const int n = kLanes - base < 32 ? kLanes - base : 32;
+            for (int i = 0; i < n; ++i) out[3][base + i] = (bits & kLaneBit[size_t(i)]) ? 1.0f : 0.0f;
+        }
+    }
     const FloatOperands<W> floats(info, ops.block);
     const BatchLookup batch = floats.lookup(info);
     // The lanes' unit is almost always one: each unit's lanes are sampled together.

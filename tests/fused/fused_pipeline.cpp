@@ -157,8 +157,8 @@ bool same_bits(std::span<const T> a, std::span<const T> b) {
 }
 
 bool same_colors(const Framebuffer& a, const Framebuffer& b) {
-    return a.float_color() == b.float_color() && same_bits(a.color_data<float>(), b.color_data<float>()) &&
-           same_bits(a.color_data<uint8_t>(), b.color_data<uint8_t>());
+    return a.float_color() == b.float_color() && same_bits<float>(a.color_data<float>(), b.color_data<float>()) &&
+           same_bits<uint8_t>(a.color_data<uint8_t>(), b.color_data<uint8_t>());
 }
 
 size_t distinct_colors(const Framebuffer& fb) {

@@ -62,8 +62,8 @@ size_t differences(std::span<const T> a, std::span<const T> b) {
 // Colour buffer 0's channels that differ, in either format.
 size_t color_differences(const Framebuffer& a, const Framebuffer& b) {
     if (a.float_color() != b.float_color()) return SIZE_MAX;
-    if (a.float_color()) return differences(a.color_data<float>(), b.color_data<float>());
-    return differences(a.color_data<uint8_t>(), b.color_data<uint8_t>());
+    if (a.float_color()) return differences<float>(a.color_data<float>(), b.color_data<float>());
+    return differences<uint8_t>(a.color_data<uint8_t>(), b.color_data<uint8_t>());
 }
 
 void check_same(const Frame& a, const Frame& b) {

@@ -1,15 +1,18 @@
 // The batched sampler (runtime/sampling_batch.h) against the per-lane one
-// (sample_complete_lane), bit for bit: random and extreme coordinates
+// (sample_complete_lane), bit for bit (NaN results included: both name one
+// NaN, canonical_nan()): random and extreme coordinates
 // (NaN, infinities, huge, denormal, texel edges), random derivatives, every
 // target it takes, every filter pair, every wrap mode, shadow compares,
 // explicit and biased LODs, lanes partly masked; the baseline and the AVX2
 // builds of its loops.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -57,15 +60,6 @@ float derivative(std::mt19937& rng) {
     if (p == 2) return kInf;
     const float magnitude = std::exp2(std::uniform_real_distribution<float>(-12.0f, 4.0f)(rng));
     return pick(rng) < 10 ? magnitude : -magnitude;
-}
-
-// Equal bits, or both NaN: a NaN's sign is the first operand's of the
-// multiply or add that made it, and the compiler may swap those operands in
-// one inlined copy and not in another (the per-lane sampler's own NaNs
-// differ between its builds so). GLSL 1.20 has no way to read a NaN's sign.
-bool same_bits(float got, float want) {
-    if (std::isnan(got) && std::isnan(want)) return true;
-    return std::bit_cast<uint32_t>(got) == std::bit_cast<uint32_t>(want);
 }
 
 struct Operands {
@@ -120,7 +114,7 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
                 INFO("avx2 " << avx2 << " lane " << i << " channel " << c << " coord (" << ops.coord[0][i] << ", "
                              << ops.coord[1][i] << ", " << ops.coord[2][i] << ") got " << out[c][i] << " want "
                              << want[c]);
-                REQUIRE(same_bits(out[c][i], want[c]));
+                REQUIRE(std::bit_cast<uint32_t>(out[c][i]) == std::bit_cast<uint32_t>(want[c]));
             }
         }
     }
@@ -202,4 +196,81 @@ TEST_CASE("3D textures keep the per-lane sampler", "[sampling][batch]") {
     auto three = Texture::create(TextureTarget::Tex3D, {TextureImage{2, 2, 2, std::vector<glm::vec4>(8)}});
     REQUIRE(three.ok());
     CHECK_FALSE(rt::batch_samples(*three));
+}
+
+// The `tex` kernel itself: lanes on several units (and on none: unbound, out
+// of range, an incomplete texture), some inactive, some skipping their
+// lookups; each lane must read what sample_complete_lane() gives it.
+TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sampling][batch][kernel]") {
+    std::mt19937 rng(31);
+    std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
+    auto bind = [&](int unit, Texture t) {
+        units[size_t(unit)].bound[size_t(TextureTarget::Tex2D)] = std::make_shared<const Texture>(std::move(t));
+    };
+    Texture trilinear = make(rng, TextureTarget::Tex2D, TextureFormat::RGBA8, 16, 8);
+    trilinear.sampler.min_filter = TextureFilter::LinearMipmapLinear;
+    bind(0, std::move(trilinear));
+    Texture border = make(rng, TextureTarget::Tex2D, TextureFormat::RGBA32F, 5, 7);
+    border.sampler.min_filter = TextureFilter::Nearest;
+    border.sampler.wrap_s = border.sampler.wrap_t = TextureWrap::ClampToBorder;
+    border.sampler.border_color = {1.0f, 0.0f, 0.5f, 1.0f};
+    bind(3, std::move(border));
+    auto incomplete = Texture::create(TextureTarget::Tex2D, {random_image(rng, 4, 4)});  // mipmap filter, one level
+    REQUIRE(incomplete.ok());
+    bind(4, std::move(*incomplete));
+
+    ir::TexInfo info;
+    info.target = ir::TexTarget::T2D;
+    info.lod = ir::TexLod::ImplicitBias;
+    constexpr int32_t kUnits[] = {0, 3, 0, 4, 5, -1, 99, 3};
+    for (int round = 0; round < 20; ++round) {
+        std::vector<uint32_t> block(size_t(info.operand_count()) * rt::kLanes);
+        auto operand = [&](uint32_t k, int lane) -> float& {
+            return *reinterpret_cast<float*>(&block[size_t(k) * rt::kLanes + size_t(lane)]);
+        };
+        alignas(64) uint32_t unit[rt::kLanes];
+        alignas(64) uint32_t dst[ir::kTexResults * rt::kLanes];
+        for (int i = 0; i < rt::kLanes; ++i) {
+            for (uint32_t k = 0; k < info.operand_count(); ++k)
+                operand(k, i) = k < 2 ? coordinate(rng) : k == info.lod_at() ? 0.5f : derivative(rng);
+            // Mostly one unit for the batch, as a uniform gives; now and then one per lane.
+            unit[i] = uint32_t(round % 2 ? kUnits[std::uniform_int_distribution<size_t>(0, 7)(rng)]
+                                         : kUnits[size_t(round / 2) % std::size(kUnits)]);
+        }
+        for (uint32_t& w : dst) w = 0xdeadbeefu;
+        rt::Step<uint32_t> step;
+        step.dst = dst;
+        step.src[0] = unit;
+        step.src[1] = block.data();
+        step.imm[2] = info.encode();
+        rt::Machine<uint32_t> m;
+        m.textures = units.data();
+        const rt::LaneMask active = std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+        m.mask.reset(active);
+        m.lookups = round % 3 ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+        rt::kernels::tex<uint32_t>(step, m);
+        for (int i = 0; i < rt::kLanes; ++i) {
+            float want[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            const int32_t u = int32_t(unit[i]);
+            const Texture* texture =
+                u >= 0 && u < kMaxTextureUnits ? units[size_t(u)].bound[size_t(TextureTarget::Tex2D)].get() : nullptr;
+            if (!((m.lookups >> i) & 1)) {
+                want[3] = 0.0f;
+            } else if (texture && texture->complete()) {
+                rt::LaneLookup lane;
+                lane.coord = {operand(0, i), operand(1, i), 0.0f};
+                lane.ddx = {operand(info.ddx_at(), i), operand(info.ddx_at() + 1, i), 0.0f};
+                lane.ddy = {operand(info.ddy_at(), i), operand(info.ddy_at() + 1, i), 0.0f};
+                lane.lod = operand(info.lod_at(), i);
+                lane.bias = true;
+                rt::sample_complete_lane(*texture, lane, want);
+            }
+            for (uint32_t c = 0; c < ir::kTexResults; ++c) {
+                INFO("round " << round << " lane " << i << " unit " << u << " channel " << c);
+                const uint32_t got = dst[c * rt::kLanes + size_t(i)];
+                if ((active >> i) & 1) REQUIRE(got == std::bit_cast<uint32_t>(want[c]));
+                else REQUIRE(got == 0xdeadbeefu);
+            }
+        }
+    }
 }
