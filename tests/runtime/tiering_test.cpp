@@ -12,6 +12,9 @@
 #include <sstream>
 #include <thread>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "runtime/backend_cache.h"
 #include "runtime/compile_queue.h"
 #include "runtime/interp_kernels.h"
@@ -183,4 +186,23 @@ TEST_CASE("the JIT's compile-cost bound: large programs stay on the interpreter"
                   ->instantiate(params)->backend() == Backend::Interp);
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
     }
+}
+
+TEST_CASE("a forked child has a compile thread of its own", "[runtime][tiering]") {
+    std::promise<void> ran;
+    auto done = ran.get_future();
+    REQUIRE(rt::submit_compile([&ran] { ran.set_value(); }));  // the parent's thread is started
+    REQUIRE(done.wait_for(std::chrono::seconds(60)) == std::future_status::ready);
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        std::promise<void> child_ran;
+        auto child_done = child_ran.get_future();
+        const bool queued = rt::submit_compile([&child_ran] { child_ran.set_value(); });
+        ::_exit(queued && child_done.wait_for(std::chrono::seconds(60)) == std::future_status::ready ? 0 : 1);
+    }
+    int status = -1;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
 }
