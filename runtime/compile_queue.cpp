@@ -1,10 +1,13 @@
 // The process-wide compile queue (runtime/compile_queue.h).
 #include "runtime/compile_queue.h"
 
+#include <pthread.h>
+
 #include <condition_variable>
 #include <cstdlib>
 #include <deque>
 #include <mutex>
+#include <new>
 #include <system_error>
 #include <thread>
 
@@ -22,6 +25,20 @@ public:
     static Queue& get() {
         static Queue* queue = new Queue;
         return *queue;
+    }
+
+    // A forked child (the piglit runner isolates tests so) has no compile
+    // thread: it starts its own, with nothing queued or running.
+    Queue() {
+        ::pthread_atfork([] { get().mutex_.lock(); }, [] { get().mutex_.unlock(); },
+                         [] {
+                             Queue& q = get();
+                             new (&q.mutex_) std::mutex;
+                             new (&q.ready_) std::condition_variable;
+                             new (&q.idle_) std::condition_variable;
+                             q.jobs_.clear();
+                             q.started_ = q.running_ = false;
+                         });
     }
 
     bool submit(std::function<void()> job) {

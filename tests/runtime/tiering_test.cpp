@@ -6,11 +6,15 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <future>
 #include <new>
 #include <sstream>
 #include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "runtime/backend_cache.h"
 #include "runtime/compile_queue.h"
@@ -183,4 +187,53 @@ TEST_CASE("the JIT's compile-cost bound: large programs stay on the interpreter"
                   ->instantiate(params)->backend() == Backend::Interp);
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
     }
+}
+
+TEST_CASE("a forked child has a compile thread of its own", "[runtime][tiering]") {
+    std::promise<void> ran;
+    auto done = ran.get_future();
+    REQUIRE(rt::submit_compile([&ran] { ran.set_value(); }));  // the parent's thread is started
+    REQUIRE(done.wait_for(std::chrono::seconds(60)) == std::future_status::ready);
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        std::promise<void> child_ran;
+        auto child_done = child_ran.get_future();
+        const bool queued = rt::submit_compile([&child_ran] { child_ran.set_value(); });
+        ::_exit(queued && child_done.wait_for(std::chrono::seconds(60)) == std::future_status::ready ? 0 : 1);
+    }
+    int status = -1;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}
+
+namespace {
+
+size_t thread_count() {
+    size_t n = 0;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) n += entry.is_directory();
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("300 programs' background compiles take one thread", "[runtime][tiering]") {
+    if (!jit_available()) return;
+    const ir::Shader shader = small_shader();
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    REQUIRE(rt::submit_compile([released] { released.wait(); }));  // the thread is started and held
+    const size_t threads = thread_count();
+    std::vector<std::shared_ptr<rt::BackendCache>> caches;
+    for (int i = 0; i < 300; ++i) {
+        caches.push_back(std::make_shared<rt::BackendCache>());
+        caches.back()->meter(ir::Stage::Fragment).nanos[0] = 1'000'000'000;
+        (void)caches.back()->auto_executor(shader, key_for(Backend::Jit), key_for(Backend::Interp), {});
+    }
+    CHECK(rt::compiles_pending() == 301);
+    CHECK(thread_count() == threads);
+    caches.clear();  // their queued compiles find them gone
+    release.set_value();
+    wait_for_queue();
 }
