@@ -54,6 +54,29 @@ void check_function_names(gl::TIntermAggregate& root, const std::map<std::string
     }
 }
 
+// §4.2: a structure's name and a function's share the global name space
+// (the structure's constructor is a function of that name). glslang refuses
+// a function after the structure, not a structure after the function; Mesa
+// refuses both, in 1.10 too.
+void check_struct_names(gl::TIntermAggregate& root, const std::string& text, const std::string& file,
+                        std::vector<Diagnostic>& out) {
+    std::vector<NamedPos> structs = global_struct_names(text);
+    if (structs.empty()) return;
+    for (TIntermNode* child : root.getSequence()) {
+        gl::TIntermAggregate* fn = child->getAsAggregate();
+        if (!fn || fn->getOp() != gl::EOpFunction) continue;
+        std::string name = fn->getName().c_str();
+        name = name.substr(0, name.find('('));
+        for (const NamedPos& s : structs)
+            if (s.name == name && s.pos.line >= fn->getLoc().line)
+                out.push_back(Diagnostic{file, s.pos.line,
+                                         fmt::format("'{}' : redefinition: a function has this name, and structures "
+                                                     "and functions share one name space",
+                                                     name),
+                                         false});
+    }
+}
+
 }  // namespace
 
 void check_declarations(gl::TIntermediate& unit, const std::string& text, const std::string& file,
@@ -71,6 +94,7 @@ void check_declarations(gl::TIntermediate& unit, const std::string& text, const 
         }
     }
     if (unit.getVersion() >= 120) check_function_names(*root, globals, file, out);
+    check_struct_names(*root, text, file, out);
     // GLSL 1.20 §3.6 reserves these (1.10 does not; glslang lets them be names).
     if (unit.getVersion() == 120)
         for (const TokenPos& p : word_positions(text, {"lowp", "mediump", "highp", "precision"}))

@@ -92,7 +92,7 @@ struct StageUnits {
 // The source rewrites that work around glslang before it parses (line
 // numbers are kept by each).
 std::string prepare_source(const ShaderSource& src, int default_version) {
-    std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(src.text)));
+    std::string s = drop_float_suffixes(define_predefined_macros(expand_defined_macros(splice_line_continuations(src.text))));
     if (unit_version(src, default_version) == 110) s = hoist_nested_structs(s);
     return rewrite_bool_literal_compares(brace_do_while_bodies(accept_extension_directives(s)));
 }

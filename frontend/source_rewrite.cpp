@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -427,6 +429,19 @@ std::vector<TokenPos> word_positions(const std::string& src, const std::vector<s
     return out;
 }
 
+std::vector<NamedPos> global_struct_names(const std::string& src) {
+    std::vector<NamedPos> out;
+    if (src.find("struct") == std::string::npos) return out;
+    std::vector<Token> t = lex(src);
+    int depth = 0;
+    for (size_t i = 0; i + 2 < t.size(); ++i) {
+        if (t[i].kind == Token::Punct) depth += t[i].text == "{" ? 1 : t[i].text == "}" ? -1 : 0;
+        if (depth == 0 && t[i].kind == Token::Word && t[i].text == "struct" && is_word(t[i + 1]) && t[i + 2].text == "{")
+            out.push_back({t[i + 1].text, position_of(src, t[i + 1].pos)});
+    }
+    return out;
+}
+
 }  // namespace glslrun::frontend
 
 namespace glslrun::frontend {
@@ -489,20 +504,72 @@ std::string hoist_nested_structs(const std::string& src) {
 
 namespace glslrun::frontend {
 
+namespace {
+
+bool integer_literal(const std::string& w) {
+    auto digits = [&](size_t from, auto ok) { return from < w.size() && std::all_of(w.begin() + long(from), w.end(), ok); };
+    if (w.size() > 2 && w[0] == '0' && (w[1] == 'x' || w[1] == 'X'))
+        return digits(2, [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
+    return digits(0, [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
+// `args` (a #line's, comments dropped) expands to one or two integer literals.
+bool line_numbers_ok(std::string args, const std::map<std::string, std::string>& macros) {
+    args = args.substr(0, args.find("//"));
+    std::vector<std::string> tokens;
+    std::istringstream in(args);
+    for (std::string w; in >> w;) tokens.push_back(w);
+    for (int round = 0; round < 16; ++round) {
+        std::vector<std::string> expanded;
+        bool changed = false;
+        for (const std::string& w : tokens) {
+            auto m = macros.find(w);
+            if (m == macros.end()) {
+                expanded.push_back(w);
+                continue;
+            }
+            std::istringstream body(m->second);
+            for (std::string b; body >> b;) expanded.push_back(b);
+            changed = true;
+        }
+        tokens = std::move(expanded);
+        if (!changed) break;
+    }
+    return (tokens.size() == 1 || tokens.size() == 2) && std::all_of(tokens.begin(), tokens.end(), integer_literal);
+}
+
+}  // namespace
+
 std::vector<DirectiveProblem> directive_problems(const std::string& src) {
     std::vector<DirectiveProblem> out;
     if (src.find('#') == std::string::npos) return out;
     bool seen_code = false;
+    // Macro bodies as far as #line needs them; the predefined ones are integers.
+    std::map<std::string, std::string> macros{{"__LINE__", "1"}, {"__FILE__", "0"}, {"__VERSION__", "110"}};
     for (const Token& t : lex(src)) {
         if (t.kind != Token::Directive) {
             seen_code = true;
             continue;
         }
-        std::istringstream words(t.text.substr(1));
+        std::istringstream words(t.text.substr(1, t.text.find("//") == std::string::npos ? std::string::npos
+                                                                                         : t.text.find("//") - 1));
         std::string directive, name;
         words >> directive >> name;
         name = name.substr(0, name.find('('));
         int line = position_of(src, t.pos).line;
+        if (directive == "undef") macros.erase(name);
+        if (directive == "define") {  // object-like: its tokens; function-like: none (no integer)
+            std::string rest;
+            std::getline(words, rest);
+            bool object_like = t.text.find(name + "(") == std::string::npos;
+            macros[name] = object_like ? rest : "(";
+        }
+        // #line's line and source-string numbers: integer literals after
+        // macro expansion, as Mesa reads them (it refuses `#line foo`,
+        // `#line 10 foo` and expressions such as `#line 10+1`; glslang
+        // takes a name as 0).
+        if (directive == "line" && !line_numbers_ok(t.text.substr(t.text.find("line") + 4), macros))
+            out.push_back({line, "'#line' : the line number and the source string number must be integers"});
         if ((directive == "define" || directive == "undef") &&
             (name == "__LINE__" || name == "__FILE__" || name == "__VERSION__"))
             out.push_back({line, "'#" + directive + "' : the predefined macro " + name + " cannot be redefined or undefined"});
@@ -541,6 +608,77 @@ std::string accept_extension_directives(const std::string& src) {
         if (directive != "extension" || !known || !valid) continue;
         for (size_t k = t.pos; k < t.pos + t.text.size(); ++k)
             if (out[k] != '\n') out[k] = ' ';
+    }
+    return out;
+}
+
+}  // namespace glslrun::frontend
+
+namespace glslrun::frontend {
+namespace {
+
+// `text` with each whole word that names a macro of `macros` replaced by its
+// body in parentheses, until none is left (at most 16 rounds: a macro that
+// names itself stops there, and glslang then reports it).
+std::string substitute_macros(std::string text, const std::map<std::string, std::string>& macros) {
+    for (int round = 0; round < 16; ++round) {
+        std::string out;
+        bool changed = false, operand_of_defined = false;  // `defined D`, `defined(D)`: D stays
+        for (size_t i = 0; i < text.size();) {
+            size_t end = i;
+            while (end < text.size() && word_char(text[end])) ++end;
+            if (end == i) {
+                char c = text[i++];
+                operand_of_defined = operand_of_defined && (c == '(' || c == ' ' || c == '\t');
+                out += c;
+                continue;
+            }
+            std::string word = text.substr(i, end - i);
+            auto m = operand_of_defined ? macros.end() : macros.find(word);
+            out += m == macros.end() ? word : "(" + m->second + ")";
+            changed = changed || m != macros.end();
+            operand_of_defined = word == "defined";
+            i = end;
+        }
+        text = std::move(out);
+        if (!changed) break;
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string expand_defined_macros(const std::string& src) {
+    if (src.find("defined") == std::string::npos) return src;
+    std::map<std::string, std::string> macros;  // object-like macros whose body says `defined`
+    std::string out;
+    size_t start = 0;
+    while (start < src.size()) {
+        size_t end = std::min(src.find('\n', start), src.size());
+        std::string line = src.substr(start, end - start);
+        size_t hash = line.find_first_not_of(" \t");
+        if (hash != std::string::npos && line[hash] == '#') {
+            size_t d = line.find_first_not_of(" \t", hash + 1), d_end = d;
+            while (d_end < line.size() && word_char(line[d_end])) ++d_end;
+            std::string directive = d == std::string::npos ? "" : line.substr(d, d_end - d);
+            size_t n = line.find_first_not_of(" \t", d_end), n_end = n;
+            while (n_end < line.size() && word_char(line[n_end])) ++n_end;
+            std::string name = n == std::string::npos ? "" : line.substr(n, n_end - n);
+            if (directive == "undef") macros.erase(name);
+            if (directive == "define") {
+                macros.erase(name);
+                std::string body = n_end < line.size() ? line.substr(n_end) : "";
+                body = body.substr(0, body.find("//"));
+                bool object_like = n_end >= line.size() || line[n_end] != '(';
+                std::vector<TokenPos> uses = word_positions(body, {"defined"});
+                if (object_like && !uses.empty()) macros[name] = body;
+            }
+            if ((directive == "if" || directive == "elif") && !macros.empty())
+                line = line.substr(0, d_end) + substitute_macros(line.substr(d_end), macros);
+        }
+        out += line;
+        if (end < src.size()) out += '\n';
+        start = end + 1;
     }
     return out;
 }

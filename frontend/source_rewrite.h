@@ -35,6 +35,12 @@ std::string splice_line_continuations(const std::string& src);
 // #if 1 / #if 0 (they cannot be #undef'd, so this is exact).
 std::string define_predefined_macros(const std::string& src);
 
+// Mesa compatibility: `defined` that an object-like macro's expansion puts
+// into an #if or #elif is evaluated (glslang refuses it; C leaves it
+// undefined). Such macros are expanded in #if/#elif lines before glslang
+// sees them, with the definitions in force at that line.
+std::string expand_defined_macros(const std::string& src);
+
 // GLSL extensions that glslrun enables in every shader of both stages, as
 // Mesa does in a compatibility context, and that glslang 12 does not know:
 // their macros are defined to 1 (extension_macros, for the preamble), and
@@ -81,6 +87,13 @@ struct UnaryPlusOperand {
 std::vector<UnaryPlusOperand> unary_plus_operands(const std::string& src);
 // Identifiers (outside comments and directives) that are one of `words`.
 std::vector<TokenPos> word_positions(const std::string& src, const std::vector<std::string>& words);
+// The structures defined at global scope (`struct Name {` outside every
+// brace), by name, with their positions.
+struct NamedPos {
+    std::string name;
+    TokenPos pos;
+};
+std::vector<NamedPos> global_struct_names(const std::string& src);
 // `[` directly holding nothing but a vector constructor: `[ivec2(2, 2)]`.
 std::vector<TokenPos> vector_constructor_subscripts(const std::string& src);
 
