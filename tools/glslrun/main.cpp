@@ -280,7 +280,7 @@ int program_cli(int argc, char** argv) {
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     app.add_option("--uniform", o.uniforms,
                    "NAME=VALUE: set a uniform after the scene's own settings (the value as in a scene's "
-                   "[uniforms]: 0.5, 3, [1, 0, 0], true); repeatable")
+                   "[uniforms]: 0.5, 3, [1, 0, 0] or 1,0,0, true); repeatable")
         ->type_name("NAME=VALUE");
     app.add_option("--frames", o.frames,
                    "render N frames with `uniform float time` = frame / 30 seconds, into OUT.0000.png, "
