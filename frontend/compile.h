@@ -16,6 +16,6 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const s
                                     const CompileOptions& options);
 
 // glslparsertest-style: compiles one unit alone, without linking.
-Status check_shader(Stage stage, const ShaderSource& source, int default_version);
+Status check_shader(Stage stage, const ShaderSource& source, const CompileOptions& options);
 
 }  // namespace glslrun::frontend

@@ -36,7 +36,13 @@ std::string Error::str() const {
 }
 
 Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
-    return frontend::check_shader(stage, source, default_version);
+    CompileOptions options;
+    options.default_version = default_version;
+    return frontend::check_shader(stage, source, options);
+}
+
+Status check_shader(Stage stage, const ShaderSource& source, const CompileOptions& options) {
+    return frontend::check_shader(stage, source, options);
 }
 
 namespace frontend {

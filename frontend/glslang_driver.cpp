@@ -139,17 +139,29 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     return out;
 }
 
-bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
+// `-D NAME[=VALUE]` as preamble lines: glslang reads them before the
+// source's first line without counting them, so #version may still come
+// first and every line number stays the file's.
+std::string define_lines(const std::vector<std::string>& defines) {
+    std::string out;
+    for (const std::string& d : defines) {
+        size_t eq = d.find('=');
+        out += "#define " + d.substr(0, eq) + (eq == std::string::npos ? "" : " " + d.substr(eq + 1)) + "\n";
+    }
+    return out;
+}
+
+bool parse_units(StageUnits& st, int default_version, const std::string& defines, std::vector<Diagnostic>& diags) {
     bool ok = true;
     uint64_t stage_components = 0;
     st.texts.clear();
     for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
     for (size_t i = 0; i < st.sources.size(); ++i) {
         const ShaderSource& src = st.sources[i];
-        ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, {}, default_version);
+        ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, defines, default_version);
         if (std::set<int> lines = int_builtin_retry_lines(unit.diags, st.texts[i]); !unit.ok && !lines.empty()) {
             std::string renamed = rename_int_builtin_calls(st.texts[i], lines);
-            ParsedUnit retry = parse_unit(st.lang, renamed, src.name, int_builtin_helpers(), default_version);
+            ParsedUnit retry = parse_unit(st.lang, renamed, src.name, defines + int_builtin_helpers(), default_version);
             if (retry.ok) {
                 unit = std::move(retry);
                 st.texts[i] = std::move(renamed);
@@ -308,7 +320,8 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
     if (vs.empty()) units[0].sources = {ShaderSource{"", kFixedFunctionVertex}};
     if (fs.empty()) units[1].sources = {ShaderSource{"", kFixedFunctionFragment}};
     bool parsed = true;
-    for (StageUnits& st : units) parsed = parse_units(st, options.default_version, diags) && parsed;
+    const std::string defines = define_lines(options.defines);
+    for (StageUnits& st : units) parsed = parse_units(st, options.default_version, defines, diags) && parsed;
     if (!parsed || has_errors(diags)) return to_error(std::move(diags));
     for (StageUnits& st : units) check_global_initializers(st, diags);
     bool linked = true;
@@ -338,14 +351,15 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
     return program;
 }
 
-Status check_here(Stage stage, const ShaderSource& source, int default_version) {
+Status check_here(Stage stage, const ShaderSource& source, const CompileOptions& options) {
     init_glslang();
+    const int default_version = options.default_version;
     std::vector<ShaderSource> one{source};
     if (auto refused = refuse_unsupported_versions({&one}, default_version)) return std::move(*refused);
     PoolScope pool;
     std::vector<Diagnostic> diags;
     StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}};
-    bool ok = parse_units(st, default_version, diags);
+    bool ok = parse_units(st, default_version, define_lines(options.defines), diags);
     if (!ok || has_errors(diags)) return to_error(std::move(diags));
     return Ok{};
 }
@@ -378,11 +392,11 @@ Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs_in, cons
     return out;
 }
 
-Status check_shader(Stage stage, const ShaderSource& source_in, int default_version) {
+Status check_shader(Stage stage, const ShaderSource& source_in, const CompileOptions& options) {
     if (Status st = check_source_sizes({source_in}); !st) return st;
     const ShaderSource source = with_lf_line_ends(source_in);
     Status out = Ok{};
-    run_on_deep_stack([&] { out = check_here(stage, source, default_version); });
+    run_on_deep_stack([&] { out = check_here(stage, source, options); });
     return out;
 }
 

@@ -102,6 +102,10 @@ struct CompileOptions {
     // the pass. For glslrun's own tests; GLSLRUN_VERIFY=1 in the environment
     // switches it on too.
     bool verify_ir = false;
+    // Preprocessor definitions, as glslangValidator's -D: "NAME" or
+    // "NAME=VALUE" becomes `#define NAME VALUE` ahead of every source, line
+    // numbers unchanged. NAME must be an identifier (not GL_ or __ reserved).
+    std::vector<std::string> defines;
 };
 
 // How shaders evaluate floating point (docs/precision.md).
@@ -171,6 +175,8 @@ enum class Stage { Vertex, Fragment };
 
 // Compiles one stage alone (glslparsertest-style checks): no link step.
 Status check_shader(Stage stage, const ShaderSource& source, int default_version = 110);
+// The same with `options`' default version and defines.
+Status check_shader(Stage stage, const ShaderSource& source, const CompileOptions& options);
 
 struct UniformInfo {
     std::string name;   // GL leaf name: "m", "lights[0].pos", "arr" (array_size > 1)

@@ -105,6 +105,17 @@ expect 1 "plain.glsl:" "$glslrun" check -S vert plain.glsl
 printf 'varying vec3 n;\nvoid main() { gl_FragColor = vec4(n, 1.0); }\n' > varying.frag
 expect 1 "no vertex shader was given" "$glslrun" varying.frag
 
+# ---- -D NAME[=VALUE], as glslangValidator's: line numbers unchanged.
+printf '#version 110\nvoid main() {\n    gl_FragColor = vec4(COLOR);\n}\n' > defined.frag
+"$glslrun" check -D COLOR=1.0,0.0,0.0,1.0 defined.frag || fail "check -D COLOR=..."
+expect 1 "defined.frag:3: error:" "$glslrun" check defined.frag
+"$glslrun" -D 'COLOR=0.0,1.0,0.0,1.0' "$vs" defined.frag "$scene" --size 8x8 -o defined.png || fail "render -D"
+printf 'void main() {\n#ifdef GREEN\n    gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0);\n#else\n    gl_FragColor = vec4(1.0);\n#endif\n}\n' > ifdef.frag
+"$glslrun" -D GREEN "$vs" ifdef.frag "$scene" --size 8x8 -o ifdef.png || fail "render -D GREEN"
+same defined.png ifdef.png "-D NAME and -D NAME=VALUE render differently"
+expect 2 "must be an identifier" "$glslrun" check -D 1X=2 defined.frag
+expect 2 "reserved" "$glslrun" check -D GL_FOO defined.frag
+
 # ---- Image formats by name; PNG stays lossless.
 "$glslrun" "$vs" "$fs" "$scene" --size 16x16 -o out.jpg || fail "-o out.jpg"
 head -c 3 out.jpg | od -An -tx1 | grep -q "ff d8 ff" || fail "out.jpg is not a JPEG"

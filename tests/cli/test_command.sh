@@ -67,4 +67,12 @@ printf '[require]\nGLSL >= 1.30\n\n[fragment shader]\n%s\n' "$green" > skip.shad
 echo "skip.shader_test  skip  # GLSL 1.30" > listed.txt
 "$glslrun" test --expect listed.txt good.shader_test skip.shader_test > listed.out || fail "listed skip: $(cat listed.out)"
 
+# Reports never overwrite an input.
+cp good.shader_test keep.shader_test
+"$glslrun" test --json good.shader_test good.shader_test 2> json.err
+[ $? = 2 ] && grep -q "is an input" json.err || fail "--json over a test file: $(cat json.err)"
+cmp -s good.shader_test keep.shader_test || fail "--json wrote over the test file"
+"$glslrun" test --expect listed.txt --tsv listed.txt good.shader_test 2> tsv.err
+[ $? = 2 ] && grep -q "is an input" tsv.err || fail "--tsv over the expectations: $(cat tsv.err)"
+
 finish "glslrun test: probes range-checked, file lines, quiet/verbose, progress, expectations"

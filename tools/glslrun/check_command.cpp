@@ -1,5 +1,6 @@
 #include "check_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace glslrun::cli {
 namespace {
 
 // One file: its stage from the name (or --stage), compiled with no link step.
-int check_file(const std::string& path, const std::string& stage) {
+int check_file(const std::string& path, const std::string& stage, const CompileOptions& options) {
     auto in = classify({path}, stage);
     if (!in) {
         std::fputs(in.error().str().c_str(), stderr);
@@ -26,7 +27,8 @@ int check_file(const std::string& path, const std::string& stage) {
         return kToolError;
     }
     const bool vertex = !in->vertex.empty();
-    Status st = check_shader(vertex ? Stage::Vertex : Stage::Fragment, vertex ? in->vertex[0] : in->fragment[0]);
+    Status st =
+        check_shader(vertex ? Stage::Vertex : Stage::Fragment, vertex ? in->vertex[0] : in->fragment[0], options);
     if (st) return 0;
     std::fputs(st.error().str().c_str(), stderr);
     return kResultError;
@@ -43,9 +45,11 @@ int check_main(int argc, char** argv) {
     app.add_option("files", files, "shader files: .vert/.vs and .frag/.fs, or any name with --stage")->required();
     app.add_option("--stage,-S", stage, "the stage of files whose name does not give it (a.glsl): vert or frag")
         ->check(CLI::IsMember({"vert", "frag"}));
+    CompileOptions options;
+    add_define_option(app, options.defines);
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
     int status = 0;
-    for (const std::string& f : files) status = std::max(status, check_file(f, stage));
+    for (const std::string& f : files) status = std::max(status, check_file(f, stage, options));
     return status;
 }
 

@@ -1,5 +1,6 @@
 #include "command_line.h"
 
+#include <cctype>
 #include <charconv>
 #include <string>
 
@@ -28,6 +29,25 @@ void add_backend_option(CLI::App& app, Backend& backend) {
             auto parsed = parse_backend(name);
             if (!parsed) return parsed.error().diagnostics.front().message;
             if (*parsed == Backend::Jit && !jit_available()) return std::string("this glslrun was built without the JIT");
+            return std::string();
+        });
+}
+
+void add_define_option(CLI::App& app, std::vector<std::string>& defines) {
+    app.add_option("-D,--define", defines,
+                   "NAME[=VALUE]: #define NAME VALUE before every shader source, as glslangValidator's -D (line "
+                   "numbers unchanged); repeatable")
+        ->type_name("NAME[=VALUE]")
+        ->allow_extra_args(false)
+        ->check([](const std::string& d) {
+            std::string name = d.substr(0, d.find('='));
+            bool ident = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+            for (char c : name) ident = ident && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+            if (!ident) return "-D '" + d + "': NAME must be an identifier (letters, digits, _)";
+            if (name.starts_with("GL_") || name.find("__") != std::string::npos)
+                return "-D '" + d + "': names with GL_ or __ are reserved by GLSL";
+            if (d.find_first_of(std::string("\n\r\0", 3)) != std::string::npos)
+                return "-D '" + d + "': the value must be on one line";
             return std::string();
         });
 }

@@ -2,6 +2,8 @@
 // (docs/ci.md), CLI11's parse mapped onto them, and the common options.
 #pragma once
 #include <optional>
+#include <string>
+#include <vector>
 #include <string_view>
 #include <utility>
 
@@ -26,6 +28,10 @@ int parse_command_line(CLI::App& app, int argc, char** argv);
 // nullopt when malformed or out of int's range. from_chars, not sscanf: "%d"
 // of a number past INT_MAX is undefined (glibc wrapped 4294967360 to 64).
 std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::string_view separators);
+
+// -D NAME[=VALUE] (repeatable) into `defines`: NAME an identifier that GLSL
+// does not reserve (GL_..., __...), VALUE on one line; a bad one is a usage error.
+void add_define_option(CLI::App& app, std::vector<std::string>& defines);
 
 // --precision NAME, for rendering, tracing and `glslrun test`; a bad name is a usage error.
 void add_precision_option(CLI::App& app, Precision& precision);

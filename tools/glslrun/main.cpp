@@ -28,6 +28,7 @@
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
+#include "output_guard.h"
 #include "piglit_suite.h"
 #include "progress.h"
 #include "render_command.h"
@@ -40,6 +41,7 @@ namespace {
 using namespace glslrun;
 namespace pg = glslrun::piglit;
 using cli::add_backend_option;
+using cli::add_define_option;
 using cli::add_precision_option;
 using cli::parse_command_line;
 
@@ -132,6 +134,16 @@ int run_test_command(const TestOptions& o) {
         fmt::print(stderr, "error: no tests found in {}\n", fmt::join(o.paths, ", "));
         return 2;
     }
+    // No report over the expectations or a test file (a slip of the tab key).
+    cli::InputFiles inputs;
+    inputs.add(o.expect);
+    for (const pg::TestCase& c : cases) inputs.add(c.path);
+    for (const auto& [path, option] : {std::pair{&o.tsv, "--tsv"}, {&o.junit, "--junit"}, {&o.json, "--json"}})
+        if (!path->empty())
+            if (Status st = inputs.check_output(*path, option); !st) {
+                std::fputs(st.error().str().c_str(), stderr);
+                return 2;
+            }
     if (!o.shard.empty()) {
         auto shard = pg::parse_shard(o.shard);
         if (!shard) { fmt::print(stderr, "error: --shard '{}' must be I/N with 0 <= I < N\n", o.shard); return 2; }
@@ -268,7 +280,7 @@ int program_cli(int argc, char** argv) {
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     app.add_option("--uniform", o.uniforms,
                    "NAME=VALUE: set a uniform after the scene's own settings (the value as in a scene's "
-                   "[uniforms]: 0.5, 3, [1, 0, 0], true); repeatable")
+                   "[uniforms]: 0.5, 3, [1, 0, 0] or 1,0,0, true); repeatable")
         ->type_name("NAME=VALUE");
     app.add_option("--frames", o.frames,
                    "render N frames with `uniform float time` = frame / 30 seconds, into OUT.0000.png, "
@@ -307,6 +319,7 @@ int program_cli(int argc, char** argv) {
                    "shader output (ULP, 8-bit) as a table, `key value` lines and heat maps into DIR "
                    "(created if missing)")
         ->type_name("DIR");
+    add_define_option(app, o.defines);
     app.add_option("--stage,-S", o.stage,
                    "the stage of shader files whose name does not give it (a.glsl): vert or frag")
         ->check(CLI::IsMember({"vert", "frag"}));

@@ -108,23 +108,42 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
     std::vector<ShaderSource> vs, fs;
     std::vector<std::pair<Stage, ShaderSource>> all;
     std::vector<const ShaderSection*> sections;
+    // The compiler sees a section's text alone, as shader_runner's GL does
+    // (__LINE__ counts from the section), under a name unique to the section;
+    // its diagnostics then move to the test file's own lines.
+    std::vector<std::pair<std::string, int>> moved;  // source name, lines to add
     for (const auto& section : test_.shaders) {
-        // Diagnostics cite the file the text is in, at that file's lines.
         ShaderSource src;
         if (!section.file.empty()) {
             src.name = (std::filesystem::path(dir) / section.file).string();
             auto loaded = scene::read_text_file(src.name, "shader file");
             if (!loaded) return fail(loaded.error().diagnostics[0].message);
             src.text = effective_source(*loaded, test_.require);
-        } else if (options_.file.empty() || section.text == passthrough_vertex_shader()) {
-            src = {section.label, effective_source(section.text, test_.require)};
         } else {
-            src = {options_.file, source_at_file_lines(section.text, test_.require, section.first_line)};
+            src = {section.label, effective_source(section.text, test_.require)};
+            for (int k = 2; std::any_of(moved.begin(), moved.end(), [&](const auto& m) { return m.first == src.name; });
+                 ++k)
+                src.name = fmt::format("{} #{}", section.label, k);
+            // A #version line put first is not in the file.
+            const bool version_added = src.text.size() != section.text.size();
+            if (section.text != passthrough_vertex_shader())
+                moved.emplace_back(src.name, section.first_line - 1 - (version_added ? 1 : 0));
         }
         (section.stage == ShaderStage::Vertex ? vs : fs).push_back(src);
         all.emplace_back(to_stage(section.stage), src);
         sections.push_back(&section);
     }
+    auto at_file_lines = [&](Error e) {
+        if (options_.file.empty()) return e;
+        for (Diagnostic& d : e.diagnostics)
+            for (const auto& [name, offset] : moved)
+                if (d.file == name) {
+                    d.file = options_.file;
+                    if (d.line > 0) d.line = std::max(1, d.line + offset);
+                    break;
+                }
+        return e;
+    };
     CompileOptions copts;
     copts.default_version = test_.require.glsl_version;
     auto prog = Program::compile(vs, fs, copts);
@@ -142,9 +161,9 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
     // only records a link error (the test may expect it). Tell them apart.
     for (size_t i = 0; i < all.size(); ++i) {
         auto st = check_shader(all[i].first, all[i].second, test_.require.glsl_version);
-        if (!st) return fail("failed to compile " + sections[i]->label + ": " + st.error().str());
+        if (!st) return fail("failed to compile " + sections[i]->label + ": " + at_file_lines(st.error()).str());
     }
-    link_log_ = prog.error().str();
+    link_log_ = at_file_lines(prog.error()).str();
     return std::nullopt;
 }
 

@@ -427,15 +427,6 @@ std::string effective_source(const std::string& text, const Requirements& requir
     return version + "\n" + text;
 }
 
-std::string source_at_file_lines(const std::string& text, const Requirements& require, int first_line) {
-    std::string source = effective_source(text, require);
-    const bool version_added = source.size() != text.size();
-    const int blank = first_line - 1 - (version_added ? 1 : 0);
-    if (blank <= 0) return source;
-    source.insert(version_added ? source.find('\n') + 1 : 0, size_t(blank), '\n');
-    return source;
-}
-
 // ------------------------------------------------------ requirements ---
 namespace {
 

@@ -169,10 +169,6 @@ std::optional<std::string> skip_reason(const ShaderTest& test, const Capabilitie
 // The text handed to the compiler: piglit prepends "#version N" (from
 // "GLSL >= N") to any shader that does not contain "#version ".
 std::string effective_source(const std::string& text, const Requirements& require);
-// effective_source, with blank lines before the section's text so that the
-// compiler's line numbers are the test file's (the section starts on
-// `first_line`); a #version line added goes first, on line 1.
-std::string source_at_file_lines(const std::string& text, const Requirements& require, int first_line);
 
 // The pass-through vertex shader of [vertex shader passthrough].
 std::string passthrough_vertex_shader();

@@ -192,8 +192,10 @@ Status check_outputs(const InputFiles& inputs, const std::string& output, int bu
 
 // Without a vertex shader glslrun links a stand-in for GL's fixed-function
 // vertex stage; an error about the vertex stage or a varying says so.
-Result<Program> compile_program(const Inputs& in) {
-    auto prog = Program::compile(in.vertex, in.fragment);
+Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
+    CompileOptions options;
+    options.defines = o.defines;
+    auto prog = Program::compile(in.vertex, in.fragment, options);
     if (prog || !in.vertex.empty()) return prog;
     Error e = prog.error();
     for (Diagnostic& d : e.diagnostics)
@@ -472,7 +474,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
     if (warm_up.joinable()) warm_up.join();
-    auto prog = compile_program(in);
+    auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
@@ -519,7 +521,7 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
     if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error(), kToolError);
     if (Status st = check_outputs(input_files(in, &*scene, o), output, scene::color_buffers(*scene), o); !st)
         return fail(st.error(), kToolError);
-    auto prog = compile_program(in);
+    auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
@@ -584,6 +586,8 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"), kToolError);
     if (!o.error_report.empty() && in->scene.empty())
         return fail(Error("--error-report needs a scene file (scene.toml) to render"), kToolError);
+    if (!o.error_report.empty() && !o.defines.empty())
+        return fail(Error("--error-report compiles the sources as they are: it does not take -D"), kToolError);
     if (!o.error_report.empty() &&
         (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
         return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "
@@ -602,7 +606,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
         return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"),
                     kToolError);
     // Compile only: diagnostics, and the IR with --dump-ir.
-    auto prog = compile_program(*in);
+    auto prog = compile_program(*in, o);
     if (!prog) return fail(prog.error());
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     return 0;
