@@ -157,14 +157,14 @@ void run_block(Block& block, Facts& facts) {
             break;
         }
         case NodeKind::Loop: {
-            facts.regs.forget(flow::writes_of(n.body));
-            facts.regs.forget(flow::writes_of(n.alt));
+            facts.regs.enter_loop(n);
             Facts::Mark before = facts.mark();
             BlockWrites ignored;  // already forgotten
             run_block(n.body, facts);
             facts.undo(before, ignored);
             run_block(n.alt, facts);
             facts.undo(before, ignored);
+            facts.regs.leave_loop();
             break;
         }
         case NodeKind::Scope:

@@ -119,15 +119,14 @@ struct Folder {
                 break;
             }
             case NodeKind::Loop: {
-                // Later iterations see the loop's own writes.
-                facts.forget(flow::writes_of(n.body));
-                facts.forget(flow::writes_of(n.alt));
+                facts.enter_loop(n);  // later iterations see the loop's own writes
                 size_t before = facts.mark();
                 BlockWrites ignored;  // already forgotten
                 run_block(n.body, facts);
                 facts.undo(before, ignored);
                 run_block(n.alt, facts);
                 facts.undo(before, ignored);
+                facts.leave_loop();
                 break;
             }
             case NodeKind::Scope:
