@@ -96,6 +96,11 @@ struct Facts {
         holders.set(e, h);
     }
 
+    void restart() {
+        regs.restart();
+        holders.clear();
+    }
+
     struct Mark {
         size_t regs, holders;
     };
@@ -187,11 +192,11 @@ void run_block(Block& block, Facts& facts) {
 }  // namespace
 
 void propagate_copies(Shader& shader) {
-    for (Function& f : shader.functions) {
-        Facts facts(shader.regs.size());
-        run_block(f.body, facts);
-    }
     Facts facts(shader.regs.size());
+    for (Function& f : shader.functions) {
+        run_block(f.body, facts);
+        facts.restart();
+    }
     run_block(shader.body, facts);
 }
 

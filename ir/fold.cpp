@@ -153,11 +153,11 @@ struct Folder {
 void fold_constants(Shader& shader, const FoldOptions& options) {
     FlushDenormals ftz;
     Folder folder{shader, options};
-    for (Function& f : shader.functions) {
-        Facts facts(shader.regs.size());
-        folder.run_block(f.body, facts);
-    }
     Facts facts(shader.regs.size());
+    for (Function& f : shader.functions) {
+        folder.run_block(f.body, facts);
+        facts.restart();
+    }
     folder.run_block(shader.body, facts);
 }
 

@@ -56,6 +56,13 @@ public:
         log_.push_back({kNoReg, Slot{floor_, std::nullopt}});
         floor_ = ++next_;
     }
+    // Before another function's body: no facts, nothing to undo. O(1), where
+    // fresh tables per function cost the registers times the functions.
+    void restart() {
+        floor_ = ++next_;
+        log_.clear();
+        loop_depth_ = 0;
+    }
     // Records that a fact taken now depends on r's version (a copy's source,
     // an expression's operand): forgetting r must then change its version.
     void reference(Reg r) {
@@ -134,6 +141,10 @@ public:
         auto [it, inserted] = map_.try_emplace(k, v);
         log_.emplace_back(k, inserted ? std::nullopt : std::optional<V>(it->second));
         it->second = std::move(v);
+    }
+    void clear() {
+        map_.clear();
+        log_.clear();
     }
     size_t mark() const { return log_.size(); }
     void undo(size_t mark) {

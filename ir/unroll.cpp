@@ -264,11 +264,11 @@ void run_block(Shader& shader, Block& block, Facts& facts, size_t& budget) {
 void unroll_loops(Shader& shader) {
     FlushDenormals ftz;  // evaluate() computes as fold does
     size_t budget = kMaxAddedNodes;
-    for (Function& f : shader.functions) {
-        Facts facts(shader.regs.size());
-        run_block(shader, f.body, facts, budget);
-    }
     Facts facts(shader.regs.size());
+    for (Function& f : shader.functions) {
+        run_block(shader, f.body, facts, budget);
+        facts.restart();
+    }
     run_block(shader, shader.body, facts, budget);
 }
 
