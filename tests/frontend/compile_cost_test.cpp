@@ -110,3 +110,18 @@ TEST_CASE("compile cost: 1200 nested loops around 700 KB of code optimize in tim
     CHECK(cpu_seconds() - start < 20);
     CHECK(peak_mib() - peak < 1024);
 }
+
+TEST_CASE("compile cost: more distinct calls than the stage's limit are refused before glslang's link") {
+    // glslang's link checks the call graph in quadratic time: 32768 small
+    // functions each called from main (1 MiB) would take about 16 s.
+    std::string fs = "uniform float u;\n";
+    for (int k = 0; k < 4200; ++k) fs += "float g" + std::to_string(k) + "(float x) { return x + 1.0; }\n";
+    fs += "void main() {\n    float x = u;\n";
+    for (int k = 0; k < 4200; ++k) fs += "    x = g" + std::to_string(k) + "(x);\n";
+    fs += "    gl_FragColor = vec4(x);\n}\n";
+    std::string e = compile_error(kPassVs, fs);
+    INFO(e.substr(0, 300));
+    // main's call of g4096 (line 4204 + 4096) is the 4097th.
+    CHECK(e.find("t.frag:8300: error: 'g4096' : the stage makes more than 4096 distinct calls") !=
+          std::string::npos);
+}
