@@ -153,7 +153,7 @@ std::string define_lines(const std::vector<std::string>& defines) {
 
 bool parse_units(StageUnits& st, int default_version, const std::string& defines, std::vector<Diagnostic>& diags) {
     bool ok = true;
-    uint64_t stage_components = 0;
+    StageTotals stage_totals;
     st.texts.clear();
     for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
     for (size_t i = 0; i < st.sources.size(); ++i) {
@@ -172,7 +172,7 @@ bool parse_units(StageUnits& st, int default_version, const std::string& defines
         add_hints(diags, first, src);
         if (unit.ok && unit.shader->getIntermediate()) {
             check_unit_rules(*unit.shader->getIntermediate(), st.texts[i], src.name, diags);
-            check_size_limits(*unit.shader->getIntermediate(), src.name, stage_components, diags);
+            check_size_limits(*unit.shader->getIntermediate(), src.name, stage_totals, diags);
         }
         ok = ok && unit.ok;
         st.shaders.push_back(std::move(unit.shader));

@@ -22,8 +22,17 @@ constexpr uint64_t kMaxVariableComponents = 65536;
 // image. 16 variables at the limit (180 MB).
 constexpr uint64_t kMaxStageComponents = uint64_t(1) << 20;
 
-// `stage_components` accumulates over the units of one stage.
-void check_size_limits(glslang::TIntermediate& unit, const std::string& file, uint64_t& stage_components,
+// Distinct calls (caller and callee pairs) in one stage: glslang's link
+// checks its call graph in time quadratic in them (8192 functions each
+// called from main spent 0.7 s of CPU there).
+constexpr uint64_t kMaxStageCalls = 4096;
+
+// What the units of one stage hold together, accumulated unit by unit.
+struct StageTotals {
+    uint64_t components = 0, calls = 0;
+};
+
+void check_size_limits(glslang::TIntermediate& unit, const std::string& file, StageTotals& stage,
                        std::vector<Diagnostic>& out);
 
 }  // namespace glslrun::frontend

@@ -96,6 +96,11 @@ struct Facts {
         holders.set(e, h);
     }
 
+    void restart() {
+        regs.restart();
+        holders.clear();
+    }
+
     struct Mark {
         size_t regs, holders;
     };
@@ -157,14 +162,14 @@ void run_block(Block& block, Facts& facts) {
             break;
         }
         case NodeKind::Loop: {
-            facts.regs.forget(flow::writes_of(n.body));
-            facts.regs.forget(flow::writes_of(n.alt));
+            facts.regs.enter_loop(n);
             Facts::Mark before = facts.mark();
             BlockWrites ignored;  // already forgotten
             run_block(n.body, facts);
             facts.undo(before, ignored);
             run_block(n.alt, facts);
             facts.undo(before, ignored);
+            facts.regs.leave_loop();
             break;
         }
         case NodeKind::Scope:
@@ -187,11 +192,11 @@ void run_block(Block& block, Facts& facts) {
 }  // namespace
 
 void propagate_copies(Shader& shader) {
-    for (Function& f : shader.functions) {
-        Facts facts(shader.regs.size());
-        run_block(f.body, facts);
-    }
     Facts facts(shader.regs.size());
+    for (Function& f : shader.functions) {
+        run_block(f.body, facts);
+        facts.restart();
+    }
     run_block(shader.body, facts);
 }
 

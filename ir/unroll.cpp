@@ -224,20 +224,23 @@ void run_block(Shader& shader, Block& block, Facts& facts, size_t& budget) {
         switch (n.kind) {
         case NodeKind::Instr: evaluate(n.instr, facts); break;
         case NodeKind::Loop:
-            if (std::optional<Block> copy = unrolled(shader, n, facts, budget)) {
+            // Past kMaxListedLoopDepth the facts are forgotten at every loop.
+            if (std::optional<Block> copy = facts.loop_depth() < kMaxListedLoopDepth
+                                                ? unrolled(shader, n, facts, budget)
+                                                : std::nullopt) {
                 block.erase(block.begin() + std::ptrdiff_t(i));
                 block.insert(block.begin() + std::ptrdiff_t(i), std::make_move_iterator(copy->begin()),
                              std::make_move_iterator(copy->end()));
                 continue;  // the copies are visited next (nested loops, facts)
             }
-            forget(facts, n.body);
-            forget(facts, n.alt);
+            facts.enter_loop(n);
             for (Block* inner : {&n.body, &n.alt}) {
                 size_t before = facts.mark();
                 BlockWrites ignored;  // already forgotten
                 run_block(shader, *inner, facts, budget);
                 facts.undo(before, ignored);
             }
+            facts.leave_loop();
             break;
         case NodeKind::If: case NodeKind::Scope: {
             size_t before = facts.mark();
@@ -261,11 +264,11 @@ void run_block(Shader& shader, Block& block, Facts& facts, size_t& budget) {
 void unroll_loops(Shader& shader) {
     FlushDenormals ftz;  // evaluate() computes as fold does
     size_t budget = kMaxAddedNodes;
-    for (Function& f : shader.functions) {
-        Facts facts(shader.regs.size());
-        run_block(shader, f.body, facts, budget);
-    }
     Facts facts(shader.regs.size());
+    for (Function& f : shader.functions) {
+        run_block(shader, f.body, facts, budget);
+        facts.restart();
+    }
     run_block(shader, shader.body, facts, budget);
 }
 
