@@ -100,7 +100,7 @@ JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen) {
     JitPlan plan;
     plan.quick = quick_codegen || full > double(kCompileBudgetNanos);
     plan.nanos = uint64_t(plan.quick ? full * kQuickCodegenShare : full);
-    plan.take = plan.nanos <= kCompileBudgetNanos;
+    plan.take = plan.nanos <= kDeclineNanos;
     return plan;
 }
 
