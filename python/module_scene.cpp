@@ -4,8 +4,13 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "module.h"
 
@@ -22,7 +27,7 @@ scene::Image to_image(const py::object& object) {
     // checked before they narrow to int (3000000000 rows became -1294967296).
     // The shape is checked on the array as given, before a contiguous copy
     // (a broadcast view of 2^40 pixels costs nothing until it is copied).
-    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side 1..16384";
+    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side at most 16384 (and at least 1)";
     if (!py::isinstance<py::array_t<uint8_t>>(object)) throw py::type_error(kShape);
     auto given = py::reinterpret_borrow<py::array>(object);
     auto side_ok = [](py::ssize_t side) { return side >= 1 && side <= kMaxFramebufferSide; };
@@ -31,6 +36,49 @@ scene::Image to_image(const py::object& object) {
     auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(object);
     if (!a) throw py::error_already_set();  // the copy failed: MemoryError
     return {int(a.shape(1)), int(a.shape(0)), std::vector<uint8_t>(a.data(), a.data() + a.size())};
+}
+
+void run_interruptibly(ExecOptions& exec, double time_limit, const std::function<void()>& work) {
+    std::atomic<bool> cancel{false};
+    const std::atomic<bool>* given = exec.cancel;
+    const auto deadline = exec.deadline;
+    exec.cancel = &cancel;
+    if (time_limit > 0) exec.set_time_limit(time_limit);
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false, interrupted = false;
+    std::exception_ptr error;
+    {
+        py::gil_scoped_release release;
+        std::thread worker([&] {
+            try {
+                work();
+            } catch (...) {
+                error = std::current_exception();
+            }
+            std::lock_guard lock(mutex);
+            done = true;
+            finished.notify_one();
+        });
+        std::unique_lock lock(mutex);
+        while (!finished.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; })) {
+            if (interrupted) continue;
+            lock.unlock();
+            {
+                py::gil_scoped_acquire acquire;
+                // Only the main thread sees signals; elsewhere this returns 0.
+                interrupted = PyErr_CheckSignals() != 0;
+            }
+            if (interrupted) cancel = true;
+            lock.lock();
+        }
+        lock.unlock();
+        worker.join();
+    }
+    exec.cancel = given;
+    exec.deadline = deadline;
+    if (interrupted) throw py::error_already_set();  // the KeyboardInterrupt that PyErr_CheckSignals raised
+    if (error) std::rethrow_exception(error);
 }
 
 namespace {
@@ -42,12 +90,9 @@ ExecOptions exec_options(unsigned threads, const std::string& precision) {
     return o;
 }
 
-py::array_t<uint8_t> render_program(Program& program, const scene::Scene& scene) {
+py::array_t<uint8_t> render_program(Program& program, const scene::Scene& scene, double time_limit) {
     scene::Image image;
-    {
-        py::gil_scoped_release release;
-        image = take(scene::render_image(program, scene));
-    }
+    run_interruptibly(program.exec, time_limit, [&] { image = take(scene::render_image(program, scene)); });
     return to_array(image);
 }
 
@@ -128,24 +173,24 @@ void bind_scene(py::module_& m) {
             "resize", [](scene::Scene& s, int w, int h) { check(scene::resize_scene(s, w, h)); }, py::arg("width"),
             py::arg("height"));
     py::class_<Program> program = py::reinterpret_borrow<py::class_<Program>>(m.attr("Program"));
-    program.def("render", &render_program, py::arg("scene"),
-                "Renders the scene: an H x W x 4 uint8 array, top row first (as the PNG).");
+    program.def("render", &render_program, py::arg("scene"), py::arg("time_limit") = 0.0,
+                "Renders the scene: an H x W x 4 uint8 array, top row first (as the PNG). A render still running "
+                "after time_limit seconds (> 0) raises glslrun.Error; Ctrl-C stops it (KeyboardInterrupt).");
 
     m.def(
         "render",
         [](const std::string& vertex, const std::string& fragment, const std::string& scene_path, unsigned threads,
-           const std::string& precision) {
+           const std::string& precision, double time_limit) {
             scene::Image image;
             ExecOptions exec = exec_options(threads, precision);
-            {
-                py::gil_scoped_release release;
-                image = take(scene::render_files(vertex, fragment, scene_path, exec));
-            }
+            run_interruptibly(exec, time_limit,
+                              [&] { image = take(scene::render_files(vertex, fragment, scene_path, exec)); });
             return to_array(image);
         },
         py::arg("vertex"), py::arg("fragment"), py::arg("scene"), py::arg("threads") = 0,
-        py::arg("precision") = "precise",
-        "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.");
+        py::arg("precision") = "precise", py::arg("time_limit") = 0.0,
+        "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG. "
+        "time_limit and Ctrl-C as for Program.render.");
     m.def(
         "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"));
     m.def(

@@ -7,10 +7,13 @@
 
 #include <fmt/format.h>
 
+#include "runtime/api_checks.h"
+
 namespace glslrun::scene {
 
-Result<std::string> read_text_file(const std::string& path, const char* what) {
+Result<std::string> read_text_file(const std::string& path, const char* what, int64_t max_bytes) {
     namespace fs = std::filesystem;
+    if (Status st = rt::check_path(path); !st) return Error(fmt::format("cannot open {}: {}", what, st.error().str()));
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (status.type() == fs::file_type::not_found) return Error(fmt::format("cannot open {}: no such file", what), path);
@@ -19,9 +22,8 @@ Result<std::string> read_text_file(const std::string& path, const char* what) {
     if (!fs::is_regular_file(status)) return Error(fmt::format("cannot read {}: not a regular file", what), path);
     const uintmax_t bytes = fs::file_size(path, ec);
     if (ec) return Error(fmt::format("cannot read {}: {}", what, ec.message()), path);
-    if (bytes > uintmax_t(kMaxTextFileBytes))
-        return Error(fmt::format("cannot read {}: it is {} bytes, the limit is {} MiB", what, bytes,
-                                 kMaxTextFileBytes >> 20),
+    if (bytes > uintmax_t(max_bytes))
+        return Error(fmt::format("cannot read {}: it is {} bytes, the limit is {} MiB", what, bytes, max_bytes >> 20),
                      path);
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error(fmt::format("cannot open {}: {}", what, std::strerror(errno)), path);

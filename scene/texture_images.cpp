@@ -11,6 +11,9 @@
 
 #include <fmt/format.h>
 
+#include "runtime/api_checks.h"
+#include "scene/jpeg_markers.h"
+
 // Static functions, so another stb_image in the same program cannot clash;
 // only the two formats the scene format documents; no stdio (the file is
 // read here, with our own size limit and error messages). stb's dimension
@@ -31,6 +34,7 @@ namespace glslrun::scene {
 namespace {
 
 Result<std::vector<unsigned char>> read_file(const std::string& path) {
+    if (Status st = rt::check_path(path); !st) return st.error();
     std::error_code ec;
     auto bytes = std::filesystem::file_size(path, ec);
     if (ec) return Error(fmt::format("cannot read the image '{}': {}", path, ec.message()));
@@ -84,6 +88,8 @@ Result<std::pair<int, int>> image_size(const std::string& path, const std::vecto
     if (!stbi_info_from_memory(data.data(), int(data.size()), &w, &h, &channels))
         return Error(fmt::format("'{}' is not a {} image that can be read: its header is corrupt", path, name));
     if (Status st = check_size(path, w, h); !st) return st.error();
+    if (format == Format::Jpeg)
+        if (Status st = check_jpeg_work(path, data); !st) return st.error();
     return std::pair{w, h};
 }
 
