@@ -13,7 +13,8 @@ packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools
           libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
           ccache)  # the builds below (and CI's variants) reuse each other's object files
-[ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build
+[ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev  # clang: the sanitizer and fuzzer build
+                                  python3-hypothesis)  # the Python module's fuzz run (python/tests/test_fuzz.py)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
