@@ -167,11 +167,10 @@ py::dict run_batch(PyProgram& program, const py::dict& inputs, uint32_t count, c
     else
         check(apply_builtin_uniforms(program, gl));
     std::vector<ShaderOutput> outputs;
-    {
-        py::gil_scoped_release release;
+    run_interruptibly(program.exec, 0, [&] {
         outputs = take(vertices ? run_vertices(program, attribs, count, &gl)
                                 : run_fragments(program, attribs, count, &gl));
-    }
+    });
     return to_dict(outputs, count);
 }
 

@@ -5,6 +5,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <functional>
+
 #include "glslrun/scene.h"
 
 namespace glslrun::python {
@@ -42,6 +44,13 @@ struct PyProgram : Program {
 std::vector<scene::UniformSetting> uniform_settings(const py::object& uniforms, const std::string& what);
 // The numbers of a uniform's value: TypeError for None, strings, objects.
 py::array_t<double> uniform_numbers(const std::string& name, const py::object& value);
+// Runs work() (a long render: C++ only, no Python objects) on another
+// thread without the GIL, while this one waits and checks for signals every
+// 20 ms: Ctrl-C (KeyboardInterrupt) sets `exec`'s cancel flag, so the work
+// stops within a few ms and the exception is raised once it has. A
+// `time_limit` > 0 sets exec's deadline (ExecOptions::set_time_limit) for
+// the whole of the work.
+void run_interruptibly(ExecOptions& exec, double time_limit, const std::function<void()>& work);
 
 // An RGBA8 image as an H x W x 4 uint8 array, top row first, and back.
 py::array_t<uint8_t> to_array(const scene::Image& image);

@@ -4,10 +4,15 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "module.h"
 
@@ -24,7 +29,7 @@ scene::Image to_image(const py::object& object) {
     // checked before they narrow to int (3000000000 rows became -1294967296).
     // The shape is checked on the array as given, before a contiguous copy
     // (a broadcast view of 2^40 pixels costs nothing until it is copied).
-    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side 1..16384";
+    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side at most 16384 (and at least 1)";
     if (!py::isinstance<py::array_t<uint8_t>>(object)) throw py::type_error(kShape);
     auto given = py::reinterpret_borrow<py::array>(object);
     auto side_ok = [](py::ssize_t side) { return side >= 1 && side <= kMaxFramebufferSide; };
@@ -61,6 +66,49 @@ std::vector<scene::UniformSetting> uniform_settings(const py::object& uniforms, 
     return settings;
 }
 
+void run_interruptibly(ExecOptions& exec, double time_limit, const std::function<void()>& work) {
+    std::atomic<bool> cancel{false};
+    const std::atomic<bool>* given = exec.cancel;
+    const auto deadline = exec.deadline;
+    exec.cancel = &cancel;
+    if (time_limit > 0) exec.set_time_limit(time_limit);
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false, interrupted = false;
+    std::exception_ptr error;
+    {
+        py::gil_scoped_release release;
+        std::thread worker([&] {
+            try {
+                work();
+            } catch (...) {
+                error = std::current_exception();
+            }
+            std::lock_guard lock(mutex);
+            done = true;
+            finished.notify_one();
+        });
+        std::unique_lock lock(mutex);
+        while (!finished.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; })) {
+            if (interrupted) continue;
+            lock.unlock();
+            {
+                py::gil_scoped_acquire acquire;
+                // Only the main thread sees signals; elsewhere this returns 0.
+                interrupted = PyErr_CheckSignals() != 0;
+            }
+            if (interrupted) cancel = true;
+            lock.lock();
+        }
+        lock.unlock();
+        worker.join();
+    }
+    exec.cancel = given;
+    exec.deadline = deadline;
+    if (interrupted) throw py::error_already_set();  // the KeyboardInterrupt that PyErr_CheckSignals raised
+    if (error) std::rethrow_exception(error);
+}
+
 namespace {
 
 ExecOptions exec_options(unsigned threads, const std::string& precision, const std::string& backend) {
@@ -73,7 +121,8 @@ ExecOptions exec_options(unsigned threads, const std::string& precision, const s
 
 // The uniforms the user set (set_uniform, then `uniforms`) win over the
 // scene's and its objects' [uniforms], on a copy of the scene.
-py::array_t<uint8_t> render_program(PyProgram& program, const scene::Scene& scene, const py::object& uniforms) {
+py::array_t<uint8_t> render_program(PyProgram& program, const scene::Scene& scene, const py::object& uniforms,
+                                    double time_limit) {
     std::vector<scene::UniformSetting> settings = program.user_uniforms;
     for (scene::UniformSetting& s : uniform_settings(uniforms, "uniforms")) settings.push_back(std::move(s));
     std::optional<scene::Scene> overridden;
@@ -82,10 +131,8 @@ py::array_t<uint8_t> render_program(PyProgram& program, const scene::Scene& scen
         scene::override_uniforms(*overridden, settings);
     }
     scene::Image image;
-    {
-        py::gil_scoped_release release;
-        image = take(scene::render_image(program, overridden ? *overridden : scene));
-    }
+    run_interruptibly(program.exec, time_limit,
+                      [&] { image = take(scene::render_image(program, overridden ? *overridden : scene)); });
     return to_array(image);
 }
 
@@ -169,31 +216,33 @@ void bind_scene(py::module_& m) {
             "Changes the output size; a perspective camera without an explicit aspect keeps width/height.");
     py::class_<PyProgram> program = py::reinterpret_borrow<py::class_<PyProgram>>(m.attr("Program"));
     program.def("render", &render_program, py::arg("scene"), py::kw_only(), py::arg("uniforms") = py::none(),
+                py::arg("time_limit") = 0.0,
                 "Renders the scene: an H x W x 4 uint8 array, top row first (as the PNG).\n\n"
                 "Uniforms set with set_uniform(), then those in `uniforms` ({name: value}), override the "
-                "scene's and its objects' [uniforms], as the command line's --uniform does.");
+                "scene's and its objects' [uniforms], as the command line's --uniform does. A render still "
+                "running after time_limit seconds (> 0) raises glslrun.Error; Ctrl-C stops it (KeyboardInterrupt).");
 
     m.def(
         "render",
         [](const std::string& vertex, const std::string& fragment, const std::string& scene_path, unsigned threads,
-           const std::string& precision, const py::object& uniforms, const std::string& backend) {
+           const std::string& precision, const py::object& uniforms, const std::string& backend,
+           double time_limit) {
             ExecOptions exec = exec_options(threads, precision, backend);
             scene::Scene scene = take(scene::load_scene(scene_path));
             scene::override_uniforms(scene, uniform_settings(uniforms, "uniforms"));
             Program program = take(scene::compile_files({vertex}, {fragment}));
             program.exec = exec;
             scene::Image image;
-            {
-                py::gil_scoped_release release;
-                image = take(scene::render_image(program, scene));
-            }
+            run_interruptibly(program.exec, time_limit, [&] { image = take(scene::render_image(program, scene)); });
             return to_array(image);
         },
         py::arg("vertex"), py::arg("fragment"), py::arg("scene"), py::arg("threads") = 0,
         py::arg("precision") = "precise", py::kw_only(), py::arg("uniforms") = py::none(), py::arg("backend") = "auto",
+        py::arg("time_limit") = 0.0,
         "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.\n\n"
         "`uniforms` ({name: value}) overrides the scene's [uniforms], as the command line's --uniform does; "
-        "`backend` is \"auto\", \"jit\" or \"interp\" (the same bits).");
+        "`backend` is \"auto\", \"jit\" or \"interp\" (the same bits); time_limit and Ctrl-C as for "
+        "Program.render.");
     m.def(
         "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"),
         "A PNG as an H x W x 4 uint8 array, top row first.");

@@ -481,7 +481,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     using Clock = std::chrono::steady_clock;
     auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     auto start = Clock::now();
-    if (Status st = exec::shade_vertices(program, attribs, vertex_count, gl, scratch.shaded); !st)
+    rt::DrawBudget budget(program.exec);
+    if (Status st = exec::shade_vertices(program, attribs, vertex_count, gl, scratch.shaded, budget); !st)
         return st.error();
     stats.vertex_seconds = seconds_since(start);
     if (raster::DrawProbe* probe = state_of(program).probe)
@@ -491,24 +492,30 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     const ir::Shader& vs = state_of(program).ir.vertex;
     glm::vec4 viewport;
     Rect scissor = scissor_rect(gl, fb, &viewport);
-    if (scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
-    FragmentStage stage(program, gl, fb);
-    DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
-                  {}, gl.vertex_program_point_size ? find_output(vs, "gl_PointSize") : -1, scratch.front_attrs,
-                  scratch.window};
-    prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
-    auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
-    scratch.bins.reset(scissor);
-    bin_primitives(outs, scratch.bins, &stats.triangles);
-    stats.raster_seconds = seconds_since(raster_start);
-    auto fragment_start = Clock::now();
-    TileResult tiles = scratch.bins.render(TileTarget{program, gl, fb, scissor}, stage, program.exec.threads, clear);
-    *cleared = true;
-    stats.fragment_seconds = seconds_since(fragment_start);
-    stats.fragments_shaded = tiles.fragments_shaded;
-    stats.fragments_written = tiles.fragments_written;
-    stats.fragments_fused = tiles.fragments_fused;
-    if (!tiles.status) return tiles.status.error();
+    if (scissor.x0 < scissor.x1 && scissor.y0 < scissor.y1) {
+        // The stage's executor goes at the end of this scope: its last instructions reach the budget.
+        FragmentStage stage(program, gl, fb, &budget);
+        DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
+                      {}, gl.vertex_program_point_size ? find_output(vs, "gl_PointSize") : -1, scratch.front_attrs,
+                      scratch.window};
+        prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
+        auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
+        scratch.bins.reset(scissor);
+        bin_primitives(outs, scratch.bins, &stats.triangles);
+        stats.raster_seconds = seconds_since(raster_start);
+        auto fragment_start = Clock::now();
+        TileResult tiles =
+            scratch.bins.render(TileTarget{program, gl, fb, scissor, &budget}, stage, program.exec.threads, clear);
+        *cleared = true;
+        stats.fragment_seconds = seconds_since(fragment_start);
+        stats.fragments_shaded = tiles.fragments_shaded;
+        stats.fragments_written = tiles.fragments_written;
+        stats.fragments_fused = tiles.fragments_fused;
+        if (!tiles.status) return tiles.status.error();
+    }
+    // Every executor has reported: the total decides, whatever the threads.
+    stats.instructions = budget.used();
+    if (budget.over() != rt::DrawBudget::Stop::None) return Error(budget.message(budget.over()));
     return stats;
 }
 
@@ -552,6 +559,7 @@ DrawStats& DrawStats::operator+=(const DrawStats& o) {
     vertex_seconds += o.vertex_seconds;
     raster_seconds += o.raster_seconds;
     fragment_seconds += o.fragment_seconds;
+    instructions += o.instructions;
     return *this;
 }
 

@@ -132,11 +132,11 @@ void set_point_planes(FsPrimitive& prim) {
     prim.z = Plane{0, 0, prim.v[0].z};
 }
 
-FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb)
+FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb, rt::DrawBudget* budget)
     : program_(program), gl_(gl), fb_(fb), ops_(gl, fb) {
     const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
-    interp_ = rt::make_executor(program, ir::Stage::Fragment, gl.texture_units.data());
+    interp_ = rt::make_executor(program, ir::Stage::Fragment, gl.texture_units.data(), budget);
     for (size_t i = 0; i < fs.inputs.size(); ++i) {
         const ir::Binding& b = fs.inputs[i];
         InputPlan plan{InputPlan::Source::Zero, &b, 0};

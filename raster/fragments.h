@@ -74,7 +74,7 @@ struct VaryingSlot {
 
 class FragmentStage {
 public:
-    FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb);
+    FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb, rt::DrawBudget* budget);
     ~FragmentStage();
 
     uint32_t attr_count() const { return attr_count_; }

@@ -17,6 +17,7 @@
 #include <png.h>
 
 #include "raster/framebuffer.h"
+#include "runtime/api_checks.h"
 
 namespace glslrun::png {
 
@@ -147,6 +148,7 @@ Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int h
 Status write_rgba8(const std::string& path, int width, int height, const RowSource& row_of) {
     if (width <= 0 || height <= 0) return Error("cannot write an empty image as PNG");
     if (path.empty()) return Error("cannot write a PNG to an empty path");
+    if (Status st = rt::check_path(path); !st) return st;
     if (path == "-") return write_rgba8_to(stdout, "standard output", width, height, row_of);  // stays open
     const std::string staging = staging_path(path);
     std::FILE* file = std::fopen(staging.c_str(), "wb");
@@ -162,6 +164,7 @@ Status write_rgba8(const std::string& path, int width, int height, const RowSour
 }
 
 Result<Rgba8Image> read_rgba8(const std::string& path, int max_side) {
+    if (Status st = rt::check_path(path); !st) return st.error();
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) return Error(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
     PngReader r;

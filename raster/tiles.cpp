@@ -125,7 +125,7 @@ TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsi
     std::vector<std::unique_ptr<FragmentStage>> stages(workers);
     rt::JobQueue queue(todo.size());
     rt::run_workers(workers, [&](unsigned k) {
-        if (k > 0) stages[k] = std::make_unique<FragmentStage>(target.program, target.gl, target.fb);
+        if (k > 0) stages[k] = std::make_unique<FragmentStage>(target.program, target.gl, target.fb, target.budget);
         FragmentStage& s = k > 0 ? *stages[k] : stage;
         for (size_t i; queue.next(&i);) {
             const Job& job = todo[i];

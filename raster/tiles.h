@@ -22,6 +22,7 @@ struct TileTarget {
     const GLState& gl;
     Framebuffer& fb;
     Rect scissor;
+    rt::DrawBudget* budget = nullptr;  // the draw's, shared by every worker's executor
 };
 
 // Fragment counts and the first error, by tile order.

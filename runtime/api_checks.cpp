@@ -78,6 +78,12 @@ Status check_gl_enums(const GLState& gl) {
     return Ok{};
 }
 
+Status check_path(std::string_view path) {
+    size_t nul = path.find('\0');
+    if (nul == std::string_view::npos) return Ok{};
+    return Error(fmt::format("the path '{}' holds a NUL byte (at byte {}): no file name does", path.substr(0, nul), nul));
+}
+
 Error out_of_memory(const char* what) {
     return Error(fmt::format("out of memory in {}", what));
 }

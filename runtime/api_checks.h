@@ -8,6 +8,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "glslrun/glslrun.h"
 
@@ -32,6 +33,11 @@ Status check_texture_enums(TextureTarget target, TextureFormat format);
 inline constexpr uint64_t kMaxBatchElements = uint64_t(1) << 26;  // as many as the framebuffer's pixels
 inline constexpr uint64_t kMaxBatchBytes = uint64_t(1) << 30;  // 1 GiB
 Status check_batch_size(uint64_t count, uint64_t words_per_element, const char* what);
+
+// A path that holds a NUL byte names no file: the C calls that open it
+// would stop at the NUL and open another one (a batch job wrote `a`, a
+// texture path loaded the wrong file). Every path the library opens passes here.
+Status check_path(std::string_view path);
 
 // call(), with an allocation failure (std::bad_alloc, std::length_error)
 // returned as an Error naming `what`: the API's functions return errors and

@@ -92,11 +92,13 @@ JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen) {
 }
 
 std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
-                                        const GLState::TextureUnit* textures) {
+                                        const GLState::TextureUnit* textures, DrawBudget* budget) {
     const Program::State& st = state_of(program);
     const ir::Shader& shader = stage == ir::Stage::Vertex ? st.ir.vertex : st.ir.fragment;
     ExecParams params{st.uniforms.data(), RunLimits(program.exec), textures, program.exec.precision,
                       st.fast_ops};
+    params.limits.draw = budget;
+    if (budget) params.limits.cancel = nullptr;  // the budget polls it
     BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
                           params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
     if (key.backend != Backend::Jit) return st.backends->get(shader, key).instantiate(params);

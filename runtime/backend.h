@@ -13,6 +13,7 @@
 
 #include "glslrun/glslrun.h"
 #include "ir/ir.h"
+#include "runtime/budget.h"
 
 namespace glslrun::rt {
 
@@ -53,6 +54,10 @@ struct RunLimits {
     uint64_t max_loop_iterations = ExecOptions{}.max_loop_iterations;
     uint64_t max_instructions = ExecOptions{}.max_instructions;
     const std::atomic<bool>* cancel = nullptr;
+    // The draw's budget as a whole (its instructions, cancel and deadline),
+    // which each executor reports to through a BudgetShare; null: the run's
+    // own limits only (the debugger's replays, the tests' executors).
+    DrawBudget* draw = nullptr;
     RunLimits(uint64_t loop_iterations) : max_loop_iterations(loop_iterations) {}  // the tests' loop cap alone
     explicit RunLimits(const ExecOptions& o)
         : max_loop_iterations(o.max_loop_iterations), max_instructions(o.max_instructions), cancel(o.cancel) {}
@@ -128,8 +133,9 @@ JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen);
 
 // An executor of `program`'s shader for `stage`, from the code cached on the
 // program (compiled at the first call for its key; thread-safe). The
-// program's uniforms, options and `textures` as the draw has them.
+// program's uniforms, options and `textures` as the draw has them; the
+// draw's `budget` (ExecOptions' cancel flag and deadline with it).
 std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
-                                        const GLState::TextureUnit* textures);
+                                        const GLState::TextureUnit* textures, DrawBudget* budget);
 
 }  // namespace glslrun::rt

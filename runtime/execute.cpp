@@ -193,7 +193,7 @@ Result<std::vector<std::vector<uint32_t>>> vertex_input_words(const ir::Shader& 
 // cache, one that never misses. Large draws shade jobs of vertices on
 // ExecOptions::threads workers.
 Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs, uint32_t count,
-                      const GLState& current, VertexOutputs& out) {
+                      const GLState& current, VertexOutputs& out, rt::DrawBudget& budget) {
     const Program::State& st = state_of(program);
     const ir::Shader& vs = st.ir.vertex;
     auto plan = plan_inputs(vs, attribs, count, current);
@@ -207,7 +207,8 @@ Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& a
     std::vector<std::optional<Error>> errors(jobs);
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
-        std::unique_ptr<rt::Executor> shader = rt::make_executor(program, ir::Stage::Vertex, current.texture_units.data());
+        std::unique_ptr<rt::Executor> shader =
+            rt::make_executor(program, ir::Stage::Vertex, current.texture_units.data(), &budget);
         rt::Executor& interp = *shader;
         for (size_t job; queue.next(&job);) {
             uint32_t begin = uint32_t(job) * kVertexJob, end = std::min(count, begin + kVertexJob);
@@ -240,8 +241,10 @@ Result<std::vector<ShaderOutput>> vertices_of(const Program& program, const std:
     // The shaded vertices, then their copy as ShaderOutputs.
     if (Status st = rt::check_batch_size(count, 2 * uint64_t(stride), "vertices"); !st) return st.error();
     exec::VertexOutputs shaded;
-    if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded); !st)
+    rt::DrawBudget budget(program.exec);
+    if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded, budget); !st)
         return st.error();
+    if (budget.over() != rt::DrawBudget::Stop::None) return Error(budget.message(budget.over()));
     const ir::Shader& vs = state_of(program).ir.vertex;
     std::vector<ShaderOutput> outputs;
     for (size_t o = 0; o < vs.outputs.size(); ++o) {
@@ -271,7 +274,9 @@ Result<std::vector<ShaderOutput>> fragments_of(const Program& program, const std
     std::vector<ShaderOutput> outputs;
     for (const ir::Binding& b : fs.outputs) outputs.push_back({b.name, b.count, std::vector<float>(size_t(count) * b.count)});
     ShaderOutput discarded{"discarded", 1, std::vector<float>(count)};
-    std::unique_ptr<rt::Executor> shader = rt::make_executor(program, ir::Stage::Fragment, state.texture_units.data());
+    rt::DrawBudget budget(program.exec);
+    std::unique_ptr<rt::Executor> shader =
+        rt::make_executor(program, ir::Stage::Fragment, state.texture_units.data(), &budget);
     rt::Executor& interp = *shader;
     for (uint32_t base = 0; base < count; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, count - base));
@@ -293,6 +298,8 @@ Result<std::vector<ShaderOutput>> fragments_of(const Program& program, const std
             }
         }
     }
+    shader.reset();  // its last instructions reach the budget
+    if (budget.over() != rt::DrawBudget::Stop::None) return Error(budget.message(budget.over()));
     outputs.push_back(std::move(discarded));
     return outputs;
 }

@@ -21,8 +21,9 @@ struct VertexOutputs {
 // Runs the vertex shader on vertices [0, count). Attributes the arrays lack
 // take `current`'s values (gl_Color, gl_SecondaryColor, gl_Normal) or (0,0,0,1).
 // `out` is overwritten; its storage is reused (draw() keeps it between draws).
+// `budget` is the draw's (or the run_vertices call's).
 Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& attribs, uint32_t count,
-                      const GLState& current, VertexOutputs& out);
+                      const GLState& current, VertexOutputs& out, rt::DrawBudget& budget);
 
 // The words (one per component, in the register's kind) that vertex
 // `element` gives each of `shader`'s inputs, in shader.inputs' order, as

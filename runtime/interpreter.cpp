@@ -46,6 +46,9 @@ struct Core {
     // polled when the count passes a multiple of kCancelPoll.
     uint64_t instructions_left = 0, next_cancel_poll = 0;
     static constexpr uint64_t kCancelPoll = RunLimits::kCancelPoll;
+    // The draw's budget, and the instructions of this run already given to it.
+    BudgetShare share;
+    uint64_t reported = 0;
     // One extra register of zeros backs operands that an op does not read.
     AlignedWords<W> file;
     Machine<W> machine;
@@ -81,7 +84,7 @@ struct Core {
 
     Core(const ir::Shader& s, const uint32_t* uniforms, const RunLimits& limits, const GLState::TextureUnit* textures,
          Precision precision, uint32_t fast_ops = kAllFastOps, TraceHook* trace_hook = nullptr)
-        : reg_count(s.regs.size()), limits(limits), file((s.regs.size() + 1) * kLanes),
+        : reg_count(s.regs.size()), limits(limits), share(limits.draw), file((s.regs.size() + 1) * kLanes),
           precision(precision), fast_ops(fast_ops), hook(trace_hook) {
         if constexpr (kTraced) kinds = s.regs;
         machine.regs = file.data;
@@ -232,11 +235,22 @@ struct Core {
         if (instructions > instructions_left)
             return fail(limits.instructions_message(), 0);
         instructions_left -= instructions;
-        if (limits.cancel && instructions_left < next_cancel_poll) {
+        if ((limits.cancel || share.active()) && instructions_left < next_cancel_poll) {
             next_cancel_poll = instructions_left > kCancelPoll ? instructions_left - kCancelPoll : 0;
-            if (limits.cancel->load(std::memory_order_relaxed)) return fail(RunLimits::kCancelledMessage, 0);
+            if (limits.cancel && limits.cancel->load(std::memory_order_relaxed))
+                return fail(RunLimits::kCancelledMessage, 0);
+            return report();
         }
         return true;
+    }
+
+    // Gives the draw's budget what this run charged since the last report.
+    bool report() {
+        if (!share.active()) return true;
+        const uint64_t used = limits.max_instructions - instructions_left;
+        DrawBudget::Stop stop = share.charge(used - reported);
+        reported = used;
+        return stop == DrawBudget::Stop::None || fail(share.message(stop), 0);
     }
 
     // A branch whose mask is empty is skipped entirely.
@@ -285,12 +299,14 @@ struct Core {
         loop_iterations_left = limits.max_loop_iterations;
         instructions_left = limits.max_instructions;
         next_cancel_poll = instructions_left > kCancelPoll ? instructions_left - kCancelPoll : 0;
+        reported = 0;
         error = {};
         machine.mask.reset(live & kAllLanes);
         ExecMask::CallFrame frame = machine.mask.call_begin();
         bool ok = run_block(main.begin, main.end);
         machine.mask.call_end(frame);
-        return ok;
+        bool within = report();  // after a failure too: the draw's total counts it
+        return ok && within;
     }
 };
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -85,6 +86,10 @@ Scene build_scene(const toml::table& root, const std::string& path) {
 }  // namespace
 
 Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
+    if (toml_text.size() > uint64_t(kMaxSceneFileBytes))
+        return Error(fmt::format("a scene is {} bytes; the limit is {} MiB (its TOML tree takes about 45 bytes per "
+                                 "byte)", toml_text.size(), kMaxSceneFileBytes >> 20),
+                     path);
     try {
         toml::table root = toml::parse(toml_text, path);
         return build_scene(root, path);
@@ -92,6 +97,8 @@ Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
         return Error(std::string(e.description()), path, int(e.source().begin.line));
     } catch (const detail::SceneFailure& f) {
         return f.error;
+    } catch (const std::bad_alloc&) {
+        return Error("out of memory parsing the scene", path);
     }
 }
 
@@ -137,7 +144,7 @@ void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings
 }
 
 Result<Scene> load_scene(const std::string& path) {
-    Result<std::string> text = read_text_file(path, "scene file");
+    Result<std::string> text = read_text_file(path, "scene file", kMaxSceneFileBytes);
     if (!text) return text.error();
     return parse_scene(*text, path);
 }

@@ -7,12 +7,13 @@
 
 #include <fmt/format.h>
 
+#include "runtime/api_checks.h"
+
 namespace glslrun::scene {
 
 Status check_path(const std::string& path, const char* what) {
-    if (path.find('\0') == std::string::npos) return Ok{};
-    return Error(fmt::format("{} path '{}' contains a NUL byte", what,
-                             std::string_view(path).substr(0, path.find('\0'))));
+    if (Status st = rt::check_path(path); !st) return Error(fmt::format("cannot open {}: {}", what, st.error().str()));
+    return Ok{};
 }
 
 Status check_regular_file(const std::string& path, const char* what) {
@@ -27,15 +28,14 @@ Status check_regular_file(const std::string& path, const char* what) {
     return Ok{};
 }
 
-Result<std::string> read_text_file(const std::string& path, const char* what) {
+Result<std::string> read_text_file(const std::string& path, const char* what, int64_t max_bytes) {
     namespace fs = std::filesystem;
     if (Status st = check_regular_file(path, what); !st) return st.error();
     std::error_code ec;
     const uintmax_t bytes = fs::file_size(path, ec);
     if (ec) return Error(fmt::format("cannot read {}: {}", what, ec.message()), path);
-    if (bytes > uintmax_t(kMaxTextFileBytes))
-        return Error(fmt::format("cannot read {}: it is {} bytes, the limit is {} MiB", what, bytes,
-                                 kMaxTextFileBytes >> 20),
+    if (bytes > uintmax_t(max_bytes))
+        return Error(fmt::format("cannot read {}: it is {} bytes, the limit is {} MiB", what, bytes, max_bytes >> 20),
                      path);
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error(fmt::format("cannot open {}: {}", what, std::strerror(errno)), path);

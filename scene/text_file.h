@@ -11,9 +11,14 @@ namespace glslrun::scene {
 
 // The largest text file glslrun reads (docs/limits.md).
 constexpr int64_t kMaxTextFileBytes = int64_t(64) << 20;
+// A scene's TOML: its parser's tree takes about 45 bytes per byte of text
+// (a 56 MB scene of numbers needed 2.4 GB; at 16 MiB, 750 MB at most:
+// numbers, empty arrays or empty tables), so scenes have a lower limit.
+constexpr int64_t kMaxSceneFileBytes = int64_t(16) << 20;
 
 // `what` names the file in messages ("shader", "scene file", ...); errors cite the path.
-Result<std::string> read_text_file(const std::string& path, const char* what);
+Result<std::string> read_text_file(const std::string& path, const char* what,
+                                   int64_t max_bytes = kMaxTextFileBytes);
 
 // A path with a NUL byte is refused: the C library would read it only up to
 // the NUL, and open another file than the one named ("a\0b" opens "a").

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/jpeg_markers.h"
 #include "scene/text_file.h"
 
 // Static functions, so another stb_image in the same program cannot clash;
@@ -87,6 +88,8 @@ Result<std::pair<int, int>> image_size(const std::string& path, const std::vecto
     if (!stbi_info_from_memory(data.data(), int(data.size()), &w, &h, &channels))
         return Error(fmt::format("'{}' is not a {} image that can be read: its header is corrupt", path, name));
     if (Status st = check_size(path, w, h); !st) return st.error();
+    if (format == Format::Jpeg)
+        if (Status st = check_jpeg_work(path, data); !st) return st.error();
     return std::pair{w, h};
 }
 

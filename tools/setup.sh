@@ -15,7 +15,8 @@ packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools
           python3-build python3-venv python3-mypy  # its wheel, venv and type stub tests (tests/package/wheel.sh)
           help2man  # the man page, from glslrun --help
           ccache)  # the builds below (and CI's variants) reuse each other's object files
-[ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build
+[ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev  # clang: the sanitizer and fuzzer build
+                                  python3-hypothesis)  # the Python module's fuzz run (python/tests/test_fuzz.py)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -11,6 +11,7 @@
 #pragma once
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -146,10 +147,26 @@ struct ExecOptions {
     // the work of shaders without loops too: 30 functions that each call the
     // one before twice make 2^29 calls.
     uint64_t max_instructions = uint64_t(1) << 28;
+    // Instructions of one draw() or run_* call, all its batches and threads
+    // together; past it the call stops with a clear error. The budgets per
+    // batch alone let a loop just under them run for tens of minutes over a
+    // 512x512 draw's 4096 batches. 2^32: about 20 s of one core's CPU on
+    // the JIT (60 s on the interpreter), 1700 times the busiest lecture
+    // scene at 1080p. Whether a draw passes depends on its total only,
+    // never on the thread count.
+    uint64_t max_draw_instructions = uint64_t(1) << 32;
     // When *cancel becomes true, a running draw or run_* call stops with an
-    // error: a wall-clock limit set by a watchdog thread (glslrun test
-    // --no-isolate). Polled every 2^16 instructions.
+    // error: a watchdog's flag (glslrun test --no-isolate), Ctrl-C in
+    // Python. Polled every 2^16 instructions.
     const std::atomic<bool>* cancel = nullptr;
+    // A draw or run_* call still running at this time stops with an error
+    // ("the time limit ran out"), never a partial image passed as success.
+    // Scene renders set it once for all their draws (glslrun --time-limit,
+    // Python's time_limit=); set_time_limit() sets it from now. Polled
+    // with cancel. The default: none.
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    // deadline = now + seconds; none where seconds is not > 0 or passes 10^9.
+    void set_time_limit(double seconds);
     // Worker threads of draw(); 0 means one per core. Images are
     // bit-identical whatever the count.
     unsigned threads = 0;
@@ -579,6 +596,8 @@ struct DrawStats {
     // triangle setup and binning into tiles; "fragment" is the tiles'
     // work (rasterization, shading, depth test and colour writes).
     double vertex_seconds = 0, raster_seconds = 0, fragment_seconds = 0;
+    // Shader instructions executed, as ExecOptions::max_draw_instructions counts them.
+    uint64_t instructions = 0;
     DrawStats& operator+=(const DrawStats& other);
 };
 

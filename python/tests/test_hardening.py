@@ -7,6 +7,8 @@ import pytest
 
 import glslrun
 
+SOURCE = os.environ.get("GLSLRUN_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+
 VS = "void main() { gl_Position = gl_Vertex; }"
 FS = "void main() { gl_FragColor = vec4(1.0); }"
 
@@ -53,3 +55,99 @@ def test_counts_past_the_limits_are_errors():
             p.run_fragments({}, count=count)
     with pytest.raises(TypeError):
         p.run_vertices({}, count=-1)
+
+
+def test_a_nul_byte_in_any_path_is_an_error(tmp_path):
+    image = np.zeros((2, 2, 4), np.uint8)
+    cut = tmp_path / "a"
+    with pytest.raises(glslrun.Error, match="NUL byte"):
+        glslrun.write_png(image, str(cut) + "\0.png")
+    assert not cut.exists()  # the path was cut at the NUL: `a` was written
+    glslrun.write_png(image, str(cut))
+    with pytest.raises(glslrun.Error, match="NUL byte"):
+        glslrun.read_png(str(cut) + "\0ignored")
+    with pytest.raises(glslrun.Error, match="NUL byte"):
+        glslrun.Scene.load(os.path.join(SOURCE, "scenes", "quad.toml") + "\0x")
+    with pytest.raises(glslrun.Error, match="NUL byte"):
+        glslrun.Program.from_files(os.path.join(SOURCE, "shaders", "colors.vert") + "\0x",
+                                   os.path.join(SOURCE, "shaders", "colors.frag"))
+    # A texture path inside a scene (TOML's \u0000) loaded another file.
+    (tmp_path / "t.png").write_bytes(cut.read_bytes())
+    with pytest.raises(glslrun.Error, match="NUL byte"):
+        glslrun.Scene.parse('[output]\nsize = [4, 4]\n[textures.0]\nimage = "t.png\\u0000.jpg"\n'
+                            '[[objects]]\nmesh = "quad"\n', str(tmp_path / "s.toml"))
+    glslrun.Scene.parse('[output]\nsize = [4, 4]\n[textures.0]\nimage = "t.png"\n[[objects]]\nmesh = "quad"\n',
+                        str(tmp_path / "s.toml"))
+
+
+# A two-line shader whose loop stays under every per-batch cap: minutes at 512x512.
+LONG_FS = ("uniform int n; void main() { float s = 0.0;"
+           " for (int i = 0; i < n; ++i) s += sin(float(i)); gl_FragColor = vec4(s); }")
+LONG_SCENE = '[output]\nsize = [512, 512]\n[uniforms]\nn = 4000000\n[[objects]]\nmesh = "quad"\n'
+
+
+def test_a_time_limit_ends_a_long_render_with_an_error():
+    p = glslrun.Program.compile(VS, LONG_FS)
+    scene = glslrun.Scene.parse(LONG_SCENE, os.path.join(SOURCE, "scenes", "inline.toml"))
+    with pytest.raises(glslrun.Error, match="time limit ran out"):
+        p.render(scene, time_limit=0.3)
+
+
+def test_ctrl_c_stops_a_long_render_within_a_second(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    import time
+    script = tmp_path / "long.py"
+    script.write_text(f"""
+import sys, time, glslrun
+p = glslrun.Program.compile({VS!r}, {LONG_FS!r})
+scene = glslrun.Scene.parse({LONG_SCENE!r}, {os.path.join(SOURCE, "scenes", "inline.toml")!r})
+print("rendering", flush=True)
+try:
+    p.render(scene)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(3)
+""")
+    child = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True,
+                             env=dict(os.environ))
+    try:
+        assert child.stdout.readline().strip() == "rendering"
+        time.sleep(0.5)  # into the draw
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        out, _ = child.communicate(timeout=30)
+        elapsed = time.monotonic() - sent
+    finally:
+        child.kill()
+    assert child.returncode == 3 and "interrupted" in out
+    # Within a second on an idle machine (about 20 ms); some room for a loaded one.
+    assert elapsed < 3, f"{elapsed:.2f} s from SIGINT to exit"
+
+
+def test_a_scene_past_16_mib_is_refused_before_it_is_parsed(tmp_path):
+    # 56 MB of numbers, under the 64 MiB text limit, needed 2.4 GB of TOML tree.
+    text = "[output]\nsize = [4, 4]\n[uniforms]\nbig = [" + "0," * (8 << 20) + "0]\n"
+    with pytest.raises(glslrun.Error, match="limit is 16 MiB"):
+        glslrun.Scene.parse(text)
+    big = tmp_path / "big.toml"
+    big.write_text(text)
+    with pytest.raises(glslrun.Error, match="limit is 16 MiB"):
+        glslrun.Scene.load(str(big))
+
+
+def texture_scene(image):
+    path = os.path.join(SOURCE, "tests", "hardening", image)
+    return glslrun.Scene.parse(f'[output]\nsize = [4, 4]\n[textures.0]\nimage = "{path}"\nmin_filter = "linear"\n'
+                               '[[objects]]\nmesh = "quad"\n', os.path.join(SOURCE, "scenes", "inline.toml"))
+
+
+def test_jpeg_decoding_is_bounded_by_its_scans_and_its_data():
+    texture_scene("jpeg_progressive.jpg")  # 10 scans: read as before
+    # The same file with one scan repeated 3000 times (100,000 took 110 s in stb_image).
+    with pytest.raises(glslrun.Error, match="more than 500 scans"):
+        texture_scene("jpeg_3000_scans.jpg")
+    # An 8x8 baseline JPEG whose header says 4000x4000: decoded as 16M grey texels before.
+    with pytest.raises(glslrun.Error, match="header lies about the size"):
+        texture_scene("jpeg_lying_size.jpg")

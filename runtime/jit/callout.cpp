@@ -4,6 +4,8 @@
 // kernel is the one the interpreter would pick, so the bits are its bits.
 #include "runtime/jit/context.h"
 
+#include <algorithm>
+
 namespace glslrun::rt::jit {
 
 Step<uint32_t> call_out_step(const CallOut& call, uint32_t* regs, uint32_t reg_count) {
@@ -25,10 +27,25 @@ uint64_t poll_below(uint64_t left) {
 }
 }  // namespace
 
-void Context::start_budget(uint64_t max_instructions, const std::atomic<bool>* flag) {
+void Context::start_budget(uint64_t max_instructions, const std::atomic<bool>* flag, BudgetShare* draw) {
     cancel = flag;
-    next_cancel_poll = flag ? poll_below(max_instructions) : 0;
+    share = draw;
+    run_instructions = max_instructions;
+    reported = 0;
+    stop = DrawBudget::Stop::None;
+    next_cancel_poll = flag || draw ? poll_below(max_instructions) : 0;
     credit = max_instructions - next_cancel_poll;
+}
+
+bool Context::report(uint64_t left) {
+    if (!share) return true;
+    // After a failure `left` may be stale (the generated code stores it only on a normal return).
+    const uint64_t used = std::max(run_instructions - left, reported);
+    const DrawBudget::Stop now = share->charge(used - reported);
+    reported = used;
+    if (now == DrawBudget::Stop::None) return true;
+    stop = now;  // kept for the message: a later report (after the run) does not clear it
+    return false;
 }
 
 // Interpreter's charge(), from credit = left - next_cancel_poll.
@@ -36,9 +53,10 @@ int32_t charge_slowly(Context* ctx, uint64_t credit, uint64_t instructions) {
     uint64_t left = ctx->next_cancel_poll + credit;
     if (instructions > left) return int32_t(Failure::Instructions);
     left -= instructions;
-    if (ctx->cancel && left < ctx->next_cancel_poll) {
+    if ((ctx->cancel || ctx->share) && left < ctx->next_cancel_poll) {
         ctx->next_cancel_poll = poll_below(left);
-        if (ctx->cancel->load(std::memory_order_relaxed)) return int32_t(Failure::Cancelled);
+        if (ctx->cancel && ctx->cancel->load(std::memory_order_relaxed)) return int32_t(Failure::Cancelled);
+        if (!ctx->report(left)) return int32_t(Failure::DrawBudget);
     }
     ctx->credit = left - ctx->next_cancel_poll;
     return int32_t(Failure::None);

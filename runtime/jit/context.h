@@ -11,7 +11,9 @@
 namespace glslrun::rt::jit {
 
 // Why a run stopped early (the generated function's return value).
-enum class Failure : int32_t { None = 0, LoopCap = 1, MissingFunction = 2, Instructions = 3, Cancelled = 4 };
+// DrawBudget: the draw's budget as a whole stopped it (Context::stop says why).
+enum class Failure : int32_t { None = 0, LoopCap = 1, MissingFunction = 2, Instructions = 3, Cancelled = 4,
+                               DrawBudget = 5 };
 
 struct Context {
     uint64_t max_loop_iterations = 0;  // read at entry
@@ -24,8 +26,16 @@ struct Context {
     uint64_t credit = 0;
     uint64_t next_cancel_poll = 0;
     const std::atomic<bool>* cancel = nullptr;
+    // The draw's budget (may be null), reported to at the polls and after
+    // the run (the generated code stores `credit` back when it returns).
+    BudgetShare* share = nullptr;
+    uint64_t run_instructions = 0, reported = 0;  // the run's budget, and what of it was reported
+    DrawBudget::Stop stop = DrawBudget::Stop::None;
     // Starts a run of `max_instructions` (RunLimits::kCancelPoll below it: the first poll).
-    void start_budget(uint64_t max_instructions, const std::atomic<bool>* flag);
+    void start_budget(uint64_t max_instructions, const std::atomic<bool>* flag, BudgetShare* draw = nullptr);
+    // Reports the instructions charged since the last report to `share`;
+    // false (and `stop` set) when the draw must stop.
+    bool report(uint64_t left);
     uint64_t alive = 0;                // written at exit: the lanes that did not discard
     int32_t error_line = 0;            // with a Failure
     // The call-outs run the interpreter's kernels over this machine (its

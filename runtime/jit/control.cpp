@@ -115,6 +115,8 @@ void Emitter::define(const std::string& name, const ir::Block& block) {
     b_.CreateBr(done);
     b_.SetInsertPoint(done);
     b_.CreateStore(load_mask(alive_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kAliveOffset));
+    // The credit left, from which the executor reports the run's instructions to the draw's budget.
+    b_.CreateStore(b_.CreateLoad(i64_, credit_), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCreditOffset));
     b_.CreateRet(b_.getInt32(int32_t(Failure::None)));
     end_budget();
 }

@@ -230,7 +230,8 @@ public:
 class JitExecutor final : public Executor {
 public:
     JitExecutor(const JitShader& code, const ExecParams& p)
-        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms), limits_(p.limits) {
+        : code_(code), regs_((size_t(code.reg_count) + 1) * kLanes), uniforms_(p.uniforms), limits_(p.limits),
+          share_(p.limits.draw) {
         ctx_.max_loop_iterations = p.limits.max_loop_iterations;
         ctx_.start_budget(UINT64_MAX, nullptr);  // the prologue: straight-line code, as the interpreter's
         ctx_.machine.uniforms = p.uniforms;
@@ -247,14 +248,18 @@ public:
     }
     bool run(LaneMask live, RunError* error) override {
         ir::FlushDenormals ftz;
-        ctx_.start_budget(limits_.max_instructions, limits_.cancel);
-        const Failure failure = Failure(code_.main(&ctx_, regs_.data, uniforms_, live));
+        ctx_.start_budget(limits_.max_instructions, limits_.cancel, share_.active() ? &share_ : nullptr);
+        Failure failure = Failure(code_.main(&ctx_, regs_.data, uniforms_, live));
+        // What the run left unreported counts after a failure too (as the interpreter's).
+        if (!ctx_.report(ctx_.next_cancel_poll + ctx_.credit) && failure == Failure::None)
+            failure = Failure::DrawBudget;
         if (failure == Failure::None) return true;
         if (error) {
-            error->line = ctx_.error_line;
+            error->line = failure == Failure::DrawBudget ? 0 : ctx_.error_line;
             error->message = failure == Failure::LoopCap        ? limits_.loop_cap_message()
                              : failure == Failure::Instructions ? limits_.instructions_message()
                              : failure == Failure::Cancelled    ? RunLimits::kCancelledMessage
+                             : failure == Failure::DrawBudget   ? share_.message(ctx_.stop)
                                                                 : "call to a missing function";
         }
         return false;
@@ -268,6 +273,7 @@ private:
     AlignedWords<uint32_t> regs_;
     const uint32_t* uniforms_;
     RunLimits limits_;
+    BudgetShare share_;
     std::vector<Step<uint32_t>> call_steps_;
     Context ctx_;
 };

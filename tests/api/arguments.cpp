@@ -2,7 +2,12 @@
 // their last value, counts past every limit, objects moved from. Each comes
 // back as an Error value (never a throw, a crash or memory written out of
 // bounds).
+#include <array>
+#include <chrono>
 #include <cstring>
+#include <filesystem>
+
+#include <unistd.h>
 
 #include "helpers.h"
 
@@ -136,4 +141,75 @@ TEST_CASE("arguments: counts past the batch limits are errors, not bad_alloc", "
     auto bytes = run_vertices(p, {}, 1u << 26);
     REQUIRE_FALSE(bytes.ok());
     CHECK_THAT(bytes.error().str(), Catch::Contains("MiB of outputs"));
+}
+
+// The budgets of a draw as a whole: a loop just under the per-batch caps,
+// over many batches, used to run for tens of minutes.
+TEST_CASE("arguments: the instruction budget of a draw counts all its batches and threads together",
+          "[api][arguments][budget]") {
+    Program p = compile(kVs, "uniform int n; void main() { float s = 0.0;"
+                             " for (int i = 0; i < n; ++i) s += float(i) * 0.5; gl_FragColor = vec4(s); }\n");
+    REQUIRE(p.set_uniform("n", std::array{1000}).ok());
+    Framebuffer fb(64, 64);
+    for (Backend backend : {Backend::Interp, Backend::Jit}) {
+        p.exec.backend = backend;
+        std::vector<uint64_t> totals;
+        for (unsigned threads : {1u, 2u, 5u}) {
+            INFO(backend_name(backend) << ", " << threads << " threads");
+            p.exec.threads = threads;
+            p.exec.max_draw_instructions = ExecOptions{}.max_draw_instructions;
+            auto st = draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3);
+            REQUIRE(st.ok());
+            CHECK(st->instructions > 100u * 1000);  // every batch's iterations, well past one batch's
+            totals.push_back(st->instructions);
+            // One instruction short of the total fails, exactly the total passes: whatever the threads.
+            p.exec.max_draw_instructions = st->instructions - 1;
+            auto over = draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3);
+            REQUIRE_FALSE(over.ok());
+            CHECK_THAT(over.error().str(), Catch::Contains("the draw executed more than"));
+            p.exec.max_draw_instructions = st->instructions;
+            CHECK(draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3).ok());
+        }
+        CHECK(totals[0] == totals[1]);
+        CHECK(totals[0] == totals[2]);
+        p.exec.max_draw_instructions = 100000;
+        CHECK_THAT(run_fragments(p, {}, 64 * 64).error().str(), Catch::Contains("the draw executed more than"));
+    }
+}
+
+TEST_CASE("arguments: a deadline stops a long draw with an error, on both backends", "[api][arguments][budget]") {
+    Program p = compile(kVs, "uniform int n; void main() { float s = 0.0;"
+                             " for (int i = 0; i < n; ++i) s += sin(float(i)); gl_FragColor = vec4(s); }\n");
+    REQUIRE(p.set_uniform("n", std::array{4000000}).ok());  // under the loop cap: minutes at 512x512
+    Framebuffer fb(512, 512);
+    for (Backend backend : {Backend::Interp, Backend::Jit}) {
+        INFO(backend_name(backend));
+        p.exec.backend = backend;
+        p.exec.max_draw_instructions = UINT64_MAX;
+        p.exec.set_time_limit(0.3);
+        auto start = std::chrono::steady_clock::now();
+        auto st = draw(p, GLState{}, fb, Primitive::Triangles, {big_triangle()}, 3);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        REQUIRE_FALSE(st.ok());
+        CHECK_THAT(st.error().str(), Catch::Contains("the time limit ran out"));
+        CHECK(seconds < 5);  // 0.3 s and the polls' latency, with room for a loaded machine
+        // The default budget alone ends it too, in about a minute rather than hours; not run here.
+    }
+    ExecOptions none;
+    none.set_time_limit(0);
+    CHECK(none.deadline == std::chrono::steady_clock::time_point::max());
+    none.set_time_limit(1e300);
+    CHECK(none.deadline == std::chrono::steady_clock::time_point::max());
+}
+
+TEST_CASE("arguments: a path with a NUL byte is an error, never a shorter path", "[api][arguments]") {
+    Framebuffer fb(2, 2);
+    const std::string dir = std::filesystem::temp_directory_path() / ("glslrun_nul_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string cut = dir + "/a";
+    auto written = write_png(fb, cut + std::string("\0.png", 5));
+    REQUIRE_FALSE(written.ok());
+    CHECK_THAT(written.error().str(), Catch::Contains("holds a NUL byte"));
+    CHECK_FALSE(std::filesystem::exists(cut));  // fopen stopped at the NUL and wrote `a`
+    std::filesystem::remove_all(dir);
 }

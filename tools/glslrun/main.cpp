@@ -301,6 +301,11 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
     app.add_option("--threads", o.threads, "worker threads for drawing (default: one per core); images do not depend on it")
         ->check(CLI::Range(1, 256));
+    app.add_option("--time-limit", o.time_limit,
+                   "stop a render still drawing after SECONDS of wall-clock time, with an error and exit status 1 "
+                   "(no image is written); default: none")
+        ->type_name("SECONDS")
+        ->check(finite_in(1e-3, 1e9));
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
     app.add_option("--specialize-after", o.specialize_after,

@@ -280,6 +280,7 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     // The fused pipeline's fragments, and its share of LLVM's time above.
     fmt::print("fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
                s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
+    fmt::print("instructions {} (ExecOptions::max_draw_instructions bounds each draw)\n", s.instructions);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
     fmt::print("built-in uniforms read   {}", builtin_values(prog, terminal_width()));
@@ -480,6 +481,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     prog->exec.precision = o.precision;
     prog->exec.backend = o.backend;
     prog->exec.jit_specialize_after = o.specialize_after;
+    prog->exec.set_time_limit(o.time_limit);  // before the passes' programs copy it
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     double compile_ms = ms_since(start);
@@ -525,6 +527,7 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
+    prog->exec.set_time_limit(o.time_limit);
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     const std::string time = o.time_uniform.empty() ? scene->animation.time_uniform : o.time_uniform;

@@ -28,6 +28,7 @@ struct RenderOptions {
     Precision precision = Precision::Precise;  // --precision
     Backend backend = Backend::Auto;           // --backend
     uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
+    double time_limit = 0;  // --time-limit SECONDS: the draws' deadline (ExecOptions::deadline); 0: none
 };
 
 // The files on the command line, sorted by their extensions.
