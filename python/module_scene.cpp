@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <string>
 #include <thread>
 
@@ -119,12 +120,36 @@ ExecOptions exec_options(unsigned threads, const std::string& precision, const s
     return o;
 }
 
+// The variable a uniform name sets: "arr" for "arr[2]", "s" for "s.f".
+std::string_view variable_of(std::string_view name) { return name.substr(0, name.find_first_of("[.")); }
+
+// Whether the scene sets anything of what `settings` set: only then must the
+// settings be applied again after the scene's (a copy per render; a scene
+// with passes always, since its passes' own programs need them too).
+bool scene_sets_any(const scene::Scene& scene, const std::vector<scene::UniformSetting>& settings) {
+    if (!scene.passes.empty()) return true;
+    auto hits = [&](const std::vector<scene::UniformSetting>& list) {
+        for (const scene::UniformSetting& a : list)
+            for (const scene::UniformSetting& b : settings)
+                if (variable_of(a.name) == variable_of(b.name)) return true;
+        return false;
+    };
+    if (hits(scene.uniforms)) return true;
+    for (const scene::Object& o : scene.objects)
+        if (hits(o.uniforms)) return true;
+    return false;
+}
+
 // The uniforms the user set (set_uniform, then `uniforms`) win over the
-// scene's and its objects' [uniforms], on a copy of the scene.
+// scene's and its objects' [uniforms], on a copy of the scene. set_uniform's
+// values are in the program already: without a clash, no copy is needed.
 py::array_t<uint8_t> render_program(PyProgram& program, const scene::Scene& scene, const py::object& uniforms,
                                     double time_limit) {
-    std::vector<scene::UniformSetting> settings = program.user_uniforms;
-    for (scene::UniformSetting& s : uniform_settings(uniforms, "uniforms")) settings.push_back(std::move(s));
+    std::vector<scene::UniformSetting> settings = uniform_settings(uniforms, "uniforms");
+    // A previous render's `uniforms` or scene may have changed them since.
+    check(scene::apply_uniforms(program, program.user_uniforms));
+    if (!settings.empty() || scene_sets_any(scene, program.user_uniforms))
+        settings.insert(settings.begin(), program.user_uniforms.begin(), program.user_uniforms.end());
     std::optional<scene::Scene> overridden;
     if (!settings.empty()) {
         overridden = scene;
@@ -219,8 +244,10 @@ void bind_scene(py::module_& m) {
                 py::arg("time_limit") = 0.0,
                 "Renders the scene: an H x W x 4 uint8 array, top row first (as the PNG).\n\n"
                 "Uniforms set with set_uniform(), then those in `uniforms` ({name: value}), override the "
-                "scene's and its objects' [uniforms], as the command line's --uniform does. A render still "
-                "running after time_limit seconds (> 0) raises glslrun.Error; Ctrl-C stops it (KeyboardInterrupt).");
+                "scene's and its objects' [uniforms], as the command line's --uniform does. Like the scene's, "
+                "`uniforms` stay set in the program afterwards (uniforms are program state, as in GL), but "
+                "set_uniform()'s values are set again on every render. A render still running after time_limit "
+                "seconds (> 0) raises glslrun.Error; Ctrl-C stops it (KeyboardInterrupt).");
 
     m.def(
         "render",

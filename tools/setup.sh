@@ -17,6 +17,7 @@ packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools
           ccache)  # the builds below (and CI's variants) reuse each other's object files
 [ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev  # clang: the sanitizer and fuzzer build
                                   python3-hypothesis)  # the Python module's fuzz run (python/tests/test_fuzz.py)
+[ "$mode" = test ] && packages+=(zsh)  # tests/package/consumer.sh tries the zsh completion
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -546,18 +546,18 @@ public:
     // for RGBA8, float for float colour. Empty for the other type or a
     // buffer that does not exist.
     template <class T, std::enable_if_t<std::is_same_v<T, uint8_t> || std::is_same_v<T, float>, int> = 0>
-    Span<T> color_data(int buffer = 0) { return data_of<T>(*this, buffer); }
+    View<T> color_data(int buffer = 0) { return data_of<T>(*this, buffer); }
     template <class T, std::enable_if_t<std::is_same_v<T, uint8_t> || std::is_same_v<T, float>, int> = 0>
-    Span<const T> color_data(int buffer = 0) const { return data_of<const T>(*this, buffer); }
+    View<const T> color_data(int buffer = 0) const { return data_of<const T>(*this, buffer); }
     // Row y of it (0 = bottom): width * 4 channels; null where color_data is empty.
     template <class T>
     T* color_row(int buffer, int y) {
-        Span<T> all = color_data<T>(buffer);
+        View<T> all = color_data<T>(buffer);
         return all.empty() ? nullptr : all.data() + size_t(y) * size_t(width) * 4;
     }
     template <class T>
     const T* color_row(int buffer, int y) const {
-        Span<const T> all = color_data<T>(buffer);
+        View<const T> all = color_data<T>(buffer);
         return all.empty() ? nullptr : all.data() + size_t(y) * size_t(width) * 4;
     }
 
@@ -569,7 +569,7 @@ public:
 
 private:
     template <class T, class Self>
-    static Span<T> data_of(Self& self, int buffer) {
+    static View<T> data_of(Self& self, int buffer) {
         auto& list = [&]() -> auto& {
             if constexpr (std::is_same_v<std::remove_const_t<T>, float>) return self.float_colors_;
             else return self.rgba8_colors_;

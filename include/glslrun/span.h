@@ -54,4 +54,21 @@ private:
     std::size_t size_ = 0;
 };
 
+// What inline functions of the header return: std::span<T> under C++20
+// (what C++20 code deduces and passes on), Span<T> before. Only header-only
+// templates use it, so the two never meet in one symbol of the library.
+#if __cplusplus >= 202002L
+template <class T>
+using View = std::span<T>;
+#else
+template <class T>
+using View = Span<T>;
+#endif
+
 }  // namespace glslrun
+
+#if __cplusplus >= 202002L
+// A Span borrows, as std::span does: ranges algorithms may return its iterators.
+template <class T>
+inline constexpr bool std::ranges::enable_borrowed_range<glslrun::Span<T>> = true;
+#endif

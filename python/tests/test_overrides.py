@@ -39,6 +39,18 @@ def test_set_uniform_overrides_the_scenes_uniforms_on_every_render():
     assert len(seen) == 100
 
 
+def test_uniforms_the_scene_leaves_alone_keep_their_values():
+    # No clash with the scene's [uniforms]: rendered without a copy of the scene.
+    program = glslrun.Program.compile(VS, FS)
+    plain = glslrun.Scene.parse(SCENE.replace("[uniforms]\ntint = [0.5, 0.5, 0.5, 1]\n", ""))
+    program.set_uniform("tint", [0, 0, 1, 1])
+    assert centre(program.render(plain)) == (0, 0, 255, 255)
+    assert centre(program.render(glslrun.Scene.parse(SCENE))) == (0, 0, 255, 255)
+    assert centre(program.render(plain)) == (0, 0, 255, 255)
+    assert centre(program.render(plain, uniforms={"tint": [1, 0, 0, 1]})) == (255, 0, 0, 255)
+    assert centre(program.render(plain)) == (0, 0, 255, 255)  # set_uniform's value again
+
+
 def test_render_takes_uniforms_that_override_the_scene(tmp_path):
     program = glslrun.Program.compile(VS, FS)
     scene = glslrun.Scene.parse(SCENE)

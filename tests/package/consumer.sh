@@ -70,8 +70,25 @@ bash -c '
     complete_line x "$2" tr | grep -qw "trace"
     complete_line x "$2" test --jun | grep -qx -- "--junit"
 ' sh "$stage/share/bash-completion/completions/glslrun" "$stage/bin/glslrun"
-test -s "$stage/share/zsh/site-functions/_glslrun"
-echo "man page and bash completion: from glslrun --help"
+# zsh completion, where zsh is installed (tools/setup.sh test installs it):
+# compadd and _files stand in for the completion system's, printing what they get.
+if command -v zsh > /dev/null; then
+    zsh -c '
+        compadd() { if [[ $1 == -a ]]; then print -r -- "${(P)2}"; else print -r -- "$*"; fi }
+        _files() { print -r -- _files; }
+        try() { local file=$1; shift; words=("$@"); CURRENT=${#words}; (source $file) }
+        try_all() {
+            try "$1" "$2" --prec | tr " " "\n" | grep -qx -- --precision &&
+            try "$1" "$2" --precision f | grep -qw fast &&
+            try "$1" "$2" tr | grep -qw trace &&
+            try "$1" "$2" test --jun | tr " " "\n" | grep -qx -- --junit &&
+            try "$1" "$2" a.vert sc | grep -qx _files
+        }
+        try_all "$1" "$2"
+    ' zsh "$stage/share/zsh/site-functions/_glslrun" "$stage/bin/glslrun" ||
+        { echo "the zsh completion does not complete as it should" >&2; exit 1; }
+fi
+echo "man page, bash and zsh completion: from glslrun --help"
 
 spot="$src/shaders/spot_pix_fixed.vert $src/shaders/spot_pix_fixed.frag $src/scenes/spot.toml"
 "$cli" $spot -o "$out/spot-cli.png" > /dev/null
