@@ -171,6 +171,22 @@ Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scen
     return Ok{};
 }
 
+// The mesh's arrays, and for each [current] value the mesh has no array of,
+// that value at every vertex: what GL's current attribute gives the shader.
+std::vector<VertexAttrib> attribs_with_current(const Scene& scene, const Mesh& m) {
+    std::vector<VertexAttrib> all = m.attribs;
+    size_t vertices = m.vertex_count;
+    for (const VertexAttrib& a : m.attribs) vertices = std::max(vertices, a.data.size() / std::max(a.components, 1u));
+    for (const CurrentAttribute& c : scene.current_attributes) {
+        if (m.find(c.name)) continue;
+        VertexAttrib a{c.name, 4, {}};
+        a.data.reserve(vertices * 4);
+        for (size_t v = 0; v < vertices; ++v) a.data.insert(a.data.end(), {c.value.x, c.value.y, c.value.z, c.value.w});
+        all.push_back(std::move(a));
+    }
+    return all;
+}
+
 // One pass's draws (the scene's one pass when `pass` is null); the first
 // draw takes `pending` (and empties it).
 Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState& bound, const Pass* pass,
@@ -184,9 +200,11 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState&
         GLState gl = object_gl_state(scene, bound, object, pass);
         if (Status st = apply_uniforms(program, object.uniforms, lenient); !st) return st;
         const Mesh& m = object.mesh;
+        std::vector<VertexAttrib> with_current;
+        if (!scene.current_attributes.empty()) with_current = attribs_with_current(scene, m);
         // The first draw clears, in its tiles on the workers (it clears even when it fails).
-        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive, m.attribs, m.vertex_count,
-                          m.indices);
+        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive,
+                          with_current.empty() ? m.attribs : with_current, m.vertex_count, m.indices);
         if (!stats) return stats.error();
         total += *stats;
         return Ok{};

@@ -81,7 +81,39 @@ objects = ["cube", "cube"]
 state = { viewport = [60, 40, 36, 24], depth_test = false, blend = true, blend_func = ["one", "one"] }
 )";
 
+// [current]: glMultiTexCoord on a unit the mesh has no array for (the
+// quad's unit 0 array wins over its current value), glFogCoord, and
+// constant generic attributes (glVertexAttrib).
+const char* kCurrentVertex = R"(
+attribute float weight;
+attribute vec2 shift;
+void main() {
+    gl_FrontColor = vec4(gl_MultiTexCoord0.x, gl_MultiTexCoord2.y + 0.25 * gl_MultiTexCoord2.w, weight + gl_FogCoord, 1.0);
+    gl_Position = ftransform() + vec4(shift, 0.0, 0.0);
+}
+)";
+const char* kColorFragment = "void main() { gl_FragColor = gl_Color; }\n";
+const char* kCurrentScene = R"(
+[output]
+size = [64, 64]
+[current]
+tex_coords = { 0 = [0.9, 0.9], 2 = [0.1, 0.3] }
+fog_coord = 0.2
+attributes = { weight = 0.5, shift = [0.25, -0.25] }
+[[objects]]
+mesh = "quad"
+transform = [ { scale = [0.6, 0.6, 1] } ]
+)";
+
 }  // namespace
+
+TEST_CASE("glslrun matches Mesa on current texture coordinates, fog coordinate and generic attributes", "[reference]") {
+    auto scene = scene::parse_scene(kCurrentScene, "current.toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::Inputs in{{{"current.vert", kCurrentVertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)};
+    reference::compare("current-attributes", in);
+    check_same_everywhere(in);
+}
 
 TEST_CASE("glslrun matches Mesa on viewports, per-pass cameras and clears, and an object drawn twice", "[reference]") {
     auto scene = scene::parse_scene(kViewportScene, "viewports.toml");

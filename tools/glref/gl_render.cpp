@@ -417,6 +417,19 @@ Status bind_arrays(const GLFunctions& gl, GLuint program, const scene::Mesh& m, 
     return Ok{};
 }
 
+// [current]'s other values: glMultiTexCoord4f, glFogCoordf, glVertexAttrib4f
+// (for the attributes the program has; an array, when bound, takes over).
+void set_current_attributes(const GLFunctions& gl, GLuint program, const Scene& s) {
+    for (const scene::CurrentAttribute& a : s.current_attributes) {
+        if (int unit = multi_tex_coord_unit(a.name); unit >= 0)
+            glMultiTexCoord4fv(GLenum(GL_TEXTURE0 + unit), glm::value_ptr(a.value));
+        else if (a.name == "gl_FogCoord")
+            gl.FogCoordf(a.value.x);
+        else if (GLint loc = gl.GetAttribLocation(program, a.name.c_str()); loc >= 0)
+            gl.VertexAttrib4fv(GLuint(loc), glm::value_ptr(a.value));
+    }
+}
+
 // render_scene's per-object state, in the same order: modelview, materials,
 // current attributes, the object's uniforms, then the arrays and the draw.
 Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o,
@@ -439,6 +452,7 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
     // GL sets only rgb; the current secondary alpha stays GL's 1.
     gl.SecondaryColor3fv(glm::value_ptr(s.gl.current_secondary_color));
     glNormal3fv(glm::value_ptr(s.gl.current_normal));
+    set_current_attributes(gl, program, s);
     if (Status st = apply_uniforms(gl, program, o.uniforms); !st) return st;
     BoundArrays bound;
     Status st = bind_arrays(gl, program, o.mesh, bound);

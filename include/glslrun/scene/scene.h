@@ -59,6 +59,15 @@ struct LightSetting {
     bool has_position = true, has_spot_direction = true;
 };
 
+// A [current] attribute value that no array gives: glMultiTexCoord4f
+// ("gl_MultiTexCoord0".."7"), glFogCoordf ("gl_FogCoord") or glVertexAttrib4f
+// (a user attribute's name). Missing components are GL's (0, 0, 0, 1).
+struct CurrentAttribute {
+    std::string name;
+    glm::vec4 value{0, 0, 0, 1};
+    SourceLoc where;
+};
+
 struct Object {
     std::string name;              // for messages; "objects[2]" when unnamed
     Mesh mesh;
@@ -160,6 +169,9 @@ struct Scene {
     std::vector<TextureSetting> textures;  // by unit, ascending
     std::vector<RenderTarget> targets;     // [render_targets.NAME], in file order
     std::vector<UniformSetting> uniforms;  // for every object
+    // [current] tex_coords, fog_coord and attributes: what a draw reads for
+    // those attributes when its mesh has no array of them.
+    std::vector<CurrentAttribute> current_attributes;
     std::vector<Object> objects;
     // [[passes]]; empty: one pass of every object with the scene's program and state.
     std::vector<Pass> passes;
