@@ -189,7 +189,7 @@ std::vector<VertexAttrib> attribs_with_current(const Scene& scene, const Mesh& m
 
 // One pass's draws (the scene's one pass when `pass` is null); the first
 // draw takes `pending` (and empties it).
-Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState& bound, const Pass* pass,
+Result<DrawStats> draw_pass(Program& program, const Scene& scene, GLState& bound, const Pass* pass,
                             Framebuffer& fb, ClearValues& pending) {
     const bool lenient = pass != nullptr;
     if (Status st = apply_uniforms(program, scene.uniforms, lenient); !st) return st.error();
@@ -197,6 +197,9 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState&
         if (Status st = apply_uniforms(program, pass->uniforms); !st) return st.error();
     DrawStats total;
     auto draw_object = [&](const Object& object) -> Status {
+        // glBindTexture: context state, so it stays for the objects after this one.
+        for (const TextureSetting& t : object.textures)
+            if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st;
         GLState gl = object_gl_state(scene, bound, object, pass);
         if (Status st = apply_uniforms(program, object.uniforms, lenient); !st) return st;
         const Mesh& m = object.mesh;
@@ -236,8 +239,12 @@ Result<std::vector<Framebuffer>> make_targets(const Scene& scene) {
 // What a pass drew into target `index` becomes the texels of the textures
 // that sample it (an FBO's attachment is that texture). Depth is stored as a
 // 24-bit depth buffer stores it (GL_DEPTH24_STENCIL8), as GL would sample it.
-Status refresh_target_textures(const Scene& scene, int index, const Framebuffer& fb, GLState& bound) {
-    for (const TextureSetting& setting : scene.textures) {
+// `live` holds each target texture's current texels (by index into
+// scene.textures); a unit an object has bound another texture to keeps it.
+Status refresh_target_textures(const Scene& scene, int index, const Framebuffer& fb, GLState& bound,
+                               std::vector<std::shared_ptr<const Texture>>& live) {
+    for (size_t i = 0; i < scene.textures.size(); ++i) {
+        const TextureSetting& setting = scene.textures[i];
         if (setting.render_target != index) continue;
         TextureImage image{fb.width, fb.height, 1, {}};
         image.texels.reserve(size_t(fb.width) * size_t(fb.height));
@@ -254,8 +261,10 @@ Status refresh_target_textures(const Scene& scene, int index, const Framebuffer&
         auto texture = Texture::create(TextureTarget::Tex2D, {std::move(image)}, setting.texture->format());
         if (!texture) return texture.error();
         texture->sampler = setting.texture->sampler;
-        if (Status st = bound.bind_texture(setting.unit, std::make_shared<const Texture>(std::move(*texture))); !st)
-            return st;
+        auto made = std::make_shared<const Texture>(std::move(*texture));
+        if (bound.texture_units[size_t(setting.unit)].bound[size_t(TextureTarget::Tex2D)] == live[i])
+            if (Status st = bound.bind_texture(setting.unit, made); !st) return st;
+        live[i] = std::move(made);
     }
     return Ok{};
 }
@@ -279,6 +288,8 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
     if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
     auto targets = make_targets(scene);
     if (!targets) return targets.error();
+    std::vector<std::shared_ptr<const Texture>> live;
+    for (const TextureSetting& t : scene.textures) live.push_back(t.texture);
     DrawStats total;
     for (size_t i = 0; i < scene.passes.size(); ++i) {
         const Pass& pass = scene.passes[i];
@@ -294,7 +305,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (!stats) return stats.error();
         total += *stats;
         if (pass.target >= 0)
-            if (Status st = refresh_target_textures(scene, pass.target, into, *bound); !st) return st.error();
+            if (Status st = refresh_target_textures(scene, pass.target, into, *bound, live); !st) return st.error();
     }
     return total;
 }

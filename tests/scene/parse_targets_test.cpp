@@ -147,3 +147,22 @@ attributes = { w = 0.5, v = [1, 2, 3] }
         {"[current]\nfog_coord = \"x\"\n", 2, "fog_coord"},
     });
 }
+
+TEST_CASE("objects bind textures of their own", "[scene][parse]") {
+    Scene s = parse_ok(R"(
+[[objects]]
+mesh = "quad"
+[objects.textures.2]
+solid = { size = [2, 2], color = [1, 0, 0] }
+min_filter = "linear"
+)");
+    REQUIRE(s.objects[0].textures.size() == 1);
+    CHECK(s.objects[0].textures[0].unit == 2);
+    CHECK(s.textures.empty());
+    check_cases({
+        {"[render_targets.a]\nsize = [4, 4]\n[[objects]]\nmesh = \"quad\"\n[objects.textures.0]\n"
+         "render_target = \"a\"\n", 6, "bound in [textures.N]"},
+        {"[[objects]]\nmesh = \"quad\"\n[objects.textures.16]\nsolid = { size = [1, 1], color = [1, 1, 1] }\n", 3,
+         "0..15"},
+    });
+}

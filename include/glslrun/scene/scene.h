@@ -68,18 +68,6 @@ struct CurrentAttribute {
     SourceLoc where;
 };
 
-struct Object {
-    std::string name;              // for messages; "objects[2]" when unnamed
-    Mesh mesh;
-    glm::mat4 model{1.0f};         // translate/rotate/scale in GL's order of application
-    std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
-    std::optional<MaterialState> front_material, back_material;  // overrides
-    std::vector<UniformSetting> uniforms;
-    // [objects.state]: the scene's GL state with this object's render state
-    // keys on top (lights, materials and textures stay the scene's).
-    std::optional<GLState> state;
-    SourceLoc where;
-};
 
 // One [textures.N] table: a texture object bound to unit N. The texels are
 // final (read, generated, rounded to the internal format) and shared by every
@@ -98,6 +86,22 @@ struct TextureSetting {
     // after every pass into it. attachment: 0..7 colour, -1 depth.
     int render_target = -1;
     int attachment = 0;
+    SourceLoc where;
+};
+
+struct Object {
+    std::string name;              // for messages; "objects[2]" when unnamed
+    Mesh mesh;
+    glm::mat4 model{1.0f};         // translate/rotate/scale in GL's order of application
+    std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
+    std::optional<MaterialState> front_material, back_material;  // overrides
+    std::vector<UniformSetting> uniforms;
+    // [objects.textures.N]: glBindTexture on unit N before this object's draw.
+    // Bindings are context state: they stay for the objects drawn after it.
+    std::vector<TextureSetting> textures;
+    // [objects.state]: the scene's GL state with this object's render state
+    // keys on top (lights, materials and textures stay the scene's).
+    std::optional<GLState> state;
     SourceLoc where;
 };
 
