@@ -43,6 +43,15 @@ void check_same_everywhere(const reference::Inputs& in) {
         }
 }
 
+// An inline scene with one program, compared and checked everywhere.
+void compare_inline(const std::string& name, const char* text, const char* vertex, const char* fragment) {
+    auto scene = scene::parse_scene(text, name + ".toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::Inputs in{{{name + ".vert", vertex}}, {{name + ".frag", fragment}}, std::move(*scene)};
+    reference::compare(name, in);
+    check_same_everywhere(in);
+}
+
 void compare_scene_file(const std::string& name, const std::string& file) {
     auto scene = scene::load_scene(kSourceDir + "/scenes/" + file);
     if (!scene) FAIL(scene.error().str());
@@ -145,27 +154,15 @@ transform = [ { translate = [0.66, 0, 0] }, { scale = [0.3, 0.9, 1] } ]
 }  // namespace
 
 TEST_CASE("glslrun matches Mesa on textures bound per object", "[reference]") {
-    auto scene = scene::parse_scene(kObjectTexturesScene, "object_textures.toml");
-    if (!scene) FAIL(scene.error().str());
-    reference::Inputs in{{{"tex.vert", kTexVertex}}, {{"tex.frag", kTexFragment}}, std::move(*scene)};
-    reference::compare("object-textures", in);
-    check_same_everywhere(in);
+    compare_inline("object-textures", kObjectTexturesScene, kTexVertex, kTexFragment);
 }
 
 TEST_CASE("glslrun matches Mesa on current texture coordinates, fog coordinate and generic attributes", "[reference]") {
-    auto scene = scene::parse_scene(kCurrentScene, "current.toml");
-    if (!scene) FAIL(scene.error().str());
-    reference::Inputs in{{{"current.vert", kCurrentVertex}}, {{"color.frag", kColorFragment}}, std::move(*scene)};
-    reference::compare("current-attributes", in);
-    check_same_everywhere(in);
+    compare_inline("current-attributes", kCurrentScene, kCurrentVertex, kColorFragment);
 }
 
 TEST_CASE("glslrun matches Mesa on viewports, per-pass cameras and clears, and an object drawn twice", "[reference]") {
-    auto scene = scene::parse_scene(kViewportScene, "viewports.toml");
-    if (!scene) FAIL(scene.error().str());
-    reference::Inputs in{{{"color.vert", kColorVertex}}, {{"half.frag", kHalfFragment}}, std::move(*scene)};
-    reference::compare("targets-viewports", in);
-    check_same_everywhere(in);
+    compare_inline("targets-viewports", kViewportScene, kColorVertex, kHalfFragment);
 }
 
 TEST_CASE("glslrun matches Mesa on shadow mapping through a depth render target (PCF)", "[reference]") {
