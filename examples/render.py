@@ -13,7 +13,7 @@ import numpy as np
 import glslrun
 
 
-def main(argv):
+def main(argv: list[str]) -> int:
     if len(argv) != 5:
         print(__doc__, file=sys.stderr)
         return 2

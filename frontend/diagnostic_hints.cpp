@@ -203,9 +203,27 @@ std::string strip_line_comment(std::string line) {
 
 // glslang reports a missing ';' at the next token, often on the next line.
 // Point at the line that lacks it instead.
+// Whether `line` begins with the token glslang calls `unexpected` (RIGHT_BRACE,
+// IDENTIFIER, FLOAT, ...). When it does not, code precedes the token on the
+// same line, and the ';' is missing there, not on an earlier line.
+bool starts_with_token(const std::string& line, const std::string& unexpected) {
+    size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) return true;  // nothing to blame on this line
+    char c = line[first];
+    if (unexpected == "RIGHT_BRACE") return c == '}';
+    if (unexpected == "RIGHT_PAREN") return c == ')';
+    if (unexpected == "LEFT_BRACE") return c == '{';
+    if (unexpected == "LEFT_PAREN") return c == '(';
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';  // a name, keyword or type
+}
+
 void explain_missing_semicolon(Diagnostic& d, const std::string& source) {
     std::vector<std::string> lines = split_lines(source);
     if (d.line < 1 || d.line > int(lines.size())) return;
+    const size_t at = d.message.find("unexpected ");
+    const std::string unexpected =
+        at == std::string::npos ? "" : d.message.substr(at + 11, d.message.find(',', at) - at - 11);
+    if (!unexpected.empty() && !starts_with_token(lines[d.line - 1], unexpected)) return;
     for (int l = d.line - 1; l >= 1; --l) {
         std::string code = strip_line_comment(lines[l - 1]);
         if (code.empty()) continue;
@@ -220,6 +238,66 @@ void explain_missing_semicolon(Diagnostic& d, const std::string& source) {
     }
 }
 
+// Syntax of GLSL 1.30 and later that legacy programs meet when they are
+// ported back, or when a newer tutorial is followed: glslang says "not
+// supported for this version", "Reserved word", or only "syntax error".
+// Each gets the feature, the version it needs and the GLSL 1.10/1.20 way.
+struct NewerFeature {
+    const char* glslang;  // a piece of glslang's message, or "word:" + a word on the line of a syntax error
+    const char* message;
+};
+constexpr std::array kNewerFeatures = {
+    NewerFeature{"'uniform block' : not supported",
+                 "uniform blocks need GLSL 1.40: in GLSL 1.10/1.20 declare each member as a uniform of its own"},
+    NewerFeature{"'in for stage inputs' : not supported",
+                 "'in' on a global variable needs GLSL 1.30: in GLSL 1.10/1.20 write 'attribute' in a vertex shader, "
+                 "'varying' in a fragment shader"},
+    NewerFeature{"'out for stage outputs' : not supported",
+                 "'out' on a global variable needs GLSL 1.30: in GLSL 1.10/1.20 write 'varying' in a vertex shader; "
+                 "a fragment shader writes gl_FragColor or gl_FragData[n]"},
+    NewerFeature{"'%' : not supported", "the '%' operator needs GLSL 1.30: in GLSL 1.10/1.20 write mod(a, b)"},
+    NewerFeature{"'bit shift", "bit shifts need GLSL 1.30; GLSL 1.10/1.20 have no bitwise operators"},
+    NewerFeature{"'bitwise", "bitwise operators need GLSL 1.30; GLSL 1.10/1.20 have none"},
+    NewerFeature{"'switch' : Reserved word", "switch statements need GLSL 1.30: in GLSL 1.10/1.20 write if / else if"},
+    NewerFeature{"'uint' : undeclared identifier", "unsigned integers ('uint') need GLSL 1.30; GLSL 1.10/1.20 have int"},
+    NewerFeature{"'texture' : no matching overloaded function",
+                 "texture() needs GLSL 1.30: in GLSL 1.10/1.20 write texture1D, texture2D, texture3D, textureCube, "
+                 "shadow1D or shadow2D (and their Proj forms)"},
+    NewerFeature{"word:layout", "layout qualifiers need GLSL 1.40 (attribute locations: 3.30); GLSL 1.10/1.20 have none"},
+    NewerFeature{"word:flat", "interpolation qualifiers ('flat') need GLSL 1.30"},
+    NewerFeature{"word:smooth", "interpolation qualifiers ('smooth') need GLSL 1.30"},
+    NewerFeature{"word:noperspective", "interpolation qualifiers ('noperspective') need GLSL 1.30"},
+};
+
+bool line_has_word(const std::string& line, std::string_view word) {
+    for (size_t at = line.find(word); at != std::string::npos; at = line.find(word, at + 1)) {
+        auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+        bool starts = at == 0 || !ident(line[at - 1]);
+        bool ends = at + word.size() >= line.size() || !ident(line[at + word.size()]);
+        if (starts && ends) return true;
+    }
+    return false;
+}
+
+// True when the message was replaced.
+bool explain_newer_syntax(Diagnostic& d, const std::string& source) {
+    const bool syntax_error = d.message.rfind("syntax error", 0) == 0;
+    std::string line;
+    if (syntax_error) {
+        std::vector<std::string> lines = split_lines(source);
+        if (d.line >= 1 && d.line <= int(lines.size())) line = strip_line_comment(lines[size_t(d.line - 1)]);
+    }
+    for (const NewerFeature& f : kNewerFeatures) {
+        std::string_view key = f.glslang;
+        bool hit = key.rfind("word:", 0) == 0 ? syntax_error && line_has_word(line, key.substr(5))
+                                              : d.message.find(key) != std::string::npos;
+        if (!hit) continue;
+        d.message = f.message;
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource& source) {
@@ -228,6 +306,7 @@ void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource&
         Diagnostic& d = diags[i];
         if (d.warning || d.file != source.name) continue;
         const std::string& m = d.message;
+        if (explain_newer_syntax(d, source.text)) continue;
         if (m.find(": undeclared identifier") != std::string::npos) {
             if (!candidates) candidates = undeclared_candidates(source.text);
             explain_undeclared(d, *candidates);

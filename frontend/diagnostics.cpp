@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "frontend/compile.h"
+#include "frontend/demangle.h"
 
 namespace glslrun {
 
@@ -107,7 +108,9 @@ void parse_info_log(const std::string& log, const std::string& unit_file, std::v
             if (text == "memory exhausted")
                 message = "expressions or blocks nest too deeply for the parser (glslang: memory exhausted)";
             // String 0 is the unit itself; another number comes from `#line L S`.
-            std::string file = l->file == "0" ? unit_file : l->file;
+            // A number past INT_MAX (`#line 1 4294967295`) reaches glslang
+            // wrapped to a negative one, which names no source string.
+            std::string file = l->file == "0" || l->file.starts_with('-') ? unit_file : l->file;
             // Later errors on a line that already has one are cascades of
             // the first (glslang recovers by inventing a declaration).
             if (!l->warning && !reported.insert(fmt::format("{}:{}", l->file, l->line)).second) continue;
@@ -119,12 +122,13 @@ void parse_info_log(const std::string& log, const std::string& unit_file, std::v
             if (text.find("compilation errors.") != std::string::npos && text.find("No code generated") != std::string::npos)
                 continue;
             if (text.empty()) continue;
-            out.push_back(Diagnostic{unit_file, 0, text, l->warning});
+            // Link messages name functions mangled: `f(vf3;` reads `f(vec3)`.
+            out.push_back(Diagnostic{unit_file, 0, demangle_signatures(text), l->warning});
             last_kept = true;
         } else if (last_kept && !trim(line).empty() && (line[0] == ' ' || line[0] == '\t')) {
             // Continuation of a multi-line link message.
             std::string& msg = out.back().message;
-            msg += (msg.empty() || msg.back() == ':' ? " " : "; ") + trim(line);
+            msg += (msg.empty() || msg.back() == ':' ? " " : "; ") + demangle_signatures(trim(line));
         }
     }
 }

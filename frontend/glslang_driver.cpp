@@ -94,7 +94,7 @@ struct StageUnits {
 std::string prepare_source(const ShaderSource& src, int default_version) {
     std::string s = drop_float_suffixes(define_predefined_macros(splice_line_continuations(src.text)));
     if (unit_version(src, default_version) == 110) s = hoist_nested_structs(s);
-    return rewrite_bool_literal_compares(brace_do_while_bodies(s));
+    return rewrite_bool_literal_compares(brace_do_while_bodies(accept_extension_directives(s)));
 }
 
 struct ParsedUnit {
@@ -116,11 +116,18 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
     // shader; glslang 12 wants the extension.
     std::string preamble = lang == EShLangVertex ? "#extension GL_ARB_shader_texture_lod : enable\n" : "";
-    preamble += helpers;
+    preamble += extension_macros() + helpers;
     out.shader->setPreamble(preamble.c_str());
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
     TokenBudgetScope budget;
     out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    if (const TokenBudgetScope::LargeStruct& large = budget.large_struct(); !large.name.empty()) {
+        out.ok = false;
+        out.diags.push_back(Diagnostic{file, large.line, fmt::format(
+            "'{}' : a struct of more than {} members (nested structs' members included) is past glslrun's limit "
+            "(docs/limits.md)", large.name, kMaxStructMembers), false});
+        return out;
+    }
     if (budget.exceeded()) {
         out.ok = false;
         out.diags.push_back(Diagnostic{file, 0, fmt::format(
@@ -134,6 +141,7 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
 
 bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& diags) {
     bool ok = true;
+    uint64_t stage_components = 0;
     st.texts.clear();
     for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
     for (size_t i = 0; i < st.sources.size(); ++i) {
@@ -152,7 +160,7 @@ bool parse_units(StageUnits& st, int default_version, std::vector<Diagnostic>& d
         add_hints(diags, first, src);
         if (unit.ok && unit.shader->getIntermediate()) {
             check_unit_rules(*unit.shader->getIntermediate(), st.texts[i], src.name, diags);
-            check_size_limits(*unit.shader->getIntermediate(), src.name, diags);
+            check_size_limits(*unit.shader->getIntermediate(), src.name, stage_components, diags);
         }
         ok = ok && unit.ok;
         st.shaders.push_back(std::move(unit.shader));
@@ -342,19 +350,37 @@ Status check_here(Stage stage, const ShaderSource& source, int default_version) 
     return Ok{};
 }
 
+// A lone CR ends a line (old Mac OS files), as glslang's scanner reads it;
+// the #version check and the rewrites before glslang split lines at LF. A CR
+// not followed by LF becomes one: the same bytes, lines and columns.
+ShaderSource with_lf_line_ends(const ShaderSource& source) {
+    ShaderSource out = source;
+    for (size_t i = 0; i < out.text.size(); ++i)
+        if (out.text[i] == '\r' && (i + 1 == out.text.size() || out.text[i + 1] != '\n')) out.text[i] = '\n';
+    return out;
+}
+
+std::vector<ShaderSource> with_lf_line_ends(const std::vector<ShaderSource>& sources) {
+    std::vector<ShaderSource> out;
+    for (const ShaderSource& s : sources) out.push_back(with_lf_line_ends(s));
+    return out;
+}
+
 }  // namespace
 
-Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs, const std::vector<ShaderSource>& fs,
+Result<ir::Program> compile_program(const std::vector<ShaderSource>& vs_in, const std::vector<ShaderSource>& fs_in,
                                     const CompileOptions& options) {
-    for (const auto* stage : {&vs, &fs})
+    for (const auto* stage : {&vs_in, &fs_in})
         if (Status st = check_source_sizes(*stage); !st) return st.error();
+    const std::vector<ShaderSource> vs = with_lf_line_ends(vs_in), fs = with_lf_line_ends(fs_in);
     Result<ir::Program> out = Error("not compiled");
     run_on_deep_stack([&] { out = compile_here(vs, fs, options); });
     return out;
 }
 
-Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
-    if (Status st = check_source_sizes({source}); !st) return st;
+Status check_shader(Stage stage, const ShaderSource& source_in, int default_version) {
+    if (Status st = check_source_sizes({source_in}); !st) return st;
+    const ShaderSource source = with_lf_line_ends(source_in);
     Status out = Ok{};
     run_on_deep_stack([&] { out = check_here(stage, source, default_version); });
     return out;

@@ -15,7 +15,15 @@ namespace glslrun::frontend {
 // Scalar components in one variable (a float[16384] of vec4s, a mat4[4096]);
 // GPU compilers refuse far less for registers.
 constexpr uint64_t kMaxVariableComponents = 65536;
+// Scalar components in all the variables of one stage together (its units'
+// globals, locals, parameters and uniforms, each counted once): every
+// component becomes an IR register, about 170 bytes of compile and run
+// state, and 400 variables at the limit above needed 3.4 GB for a 1x1
+// image. 16 variables at the limit (180 MB).
+constexpr uint64_t kMaxStageComponents = uint64_t(1) << 20;
 
-void check_size_limits(glslang::TIntermediate& unit, const std::string& file, std::vector<Diagnostic>& out);
+// `stage_components` accumulates over the units of one stage.
+void check_size_limits(glslang::TIntermediate& unit, const std::string& file, uint64_t& stage_components,
+                       std::vector<Diagnostic>& out);
 
 }  // namespace glslrun::frontend

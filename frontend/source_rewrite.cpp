@@ -513,3 +513,36 @@ std::vector<DirectiveProblem> directive_problems(const std::string& src) {
 }
 
 }  // namespace glslrun::frontend
+
+namespace glslrun::frontend {
+
+std::string extension_macros() {
+    std::string out;
+    for (std::string_view name : kExtraExtensions) out += "#define " + std::string(name) + " 1\n";
+    return out;
+}
+
+std::string accept_extension_directives(const std::string& src) {
+    if (src.find("extension") == std::string::npos) return src;
+    std::string out = src;
+    for (const Token& t : lex(src)) {
+        // One after code stays, for directive_problems to refuse.
+        if (t.kind != Token::Directive) break;
+        // `# extension NAME : behavior // comment`, spaces optional around ':'.
+        std::string line = t.text.substr(0, t.text.find("//")).substr(1);
+        bool one_colon = std::count(line.begin(), line.end(), ':') == 1;
+        std::replace(line.begin(), line.end(), ':', ' ');
+        std::istringstream words(line);
+        std::string directive, name, behavior, rest;
+        words >> directive >> name >> behavior >> rest;
+        bool known = std::find(kExtraExtensions.begin(), kExtraExtensions.end(), name) != kExtraExtensions.end();
+        bool valid = one_colon && rest.empty() &&
+                     (behavior == "require" || behavior == "enable" || behavior == "warn" || behavior == "disable");
+        if (directive != "extension" || !known || !valid) continue;
+        for (size_t k = t.pos; k < t.pos + t.text.size(); ++k)
+            if (out[k] != '\n') out[k] = ' ';
+    }
+    return out;
+}
+
+}  // namespace glslrun::frontend

@@ -2,7 +2,9 @@
 // unit, for places where glslang 12 departs from GLSL 1.10/1.20 and the AST
 // can no longer be repaired. Each keeps line numbers unchanged.
 #pragma once
+#include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace glslrun::frontend {
@@ -32,6 +34,16 @@ std::string splice_line_continuations(const std::string& src);
 // `defined X` / `defined(X)` becomes 1, and #ifdef X / #ifndef X become
 // #if 1 / #if 0 (they cannot be #undef'd, so this is exact).
 std::string define_predefined_macros(const std::string& src);
+
+// GLSL extensions that glslrun enables in every shader of both stages, as
+// Mesa does in a compatibility context, and that glslang 12 does not know:
+// their macros are defined to 1 (extension_macros, for the preamble), and
+// `#extension NAME : require|enable|warn|disable` lines become blank
+// (accept_extension_directives). GL_ARB_draw_buffers adds gl_FragData and
+// gl_MaxDrawBuffers, which GLSL 1.10 has anyway.
+inline constexpr std::array<std::string_view, 1> kExtraExtensions{"GL_ARB_draw_buffers"};
+std::string extension_macros();
+std::string accept_extension_directives(const std::string& src);
 
 // Mesa compatibility: a float literal's `f`/`F` suffix is accepted in GLSL
 // 1.10 as Mesa's lexer does (glslang requires 1.20, and piglit relies on

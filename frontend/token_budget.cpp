@@ -2,9 +2,16 @@
 // ld's --wrap (CMakeLists.txt) redirects here count against the scope active
 // on the thread and, past a budget, return the end of the input or drop the
 // token.
+// TParseContext::structArrayCheck, called once per struct definition with
+// the new type, counts its members against kMaxStructMembers and, past it,
+// ends the parse.
 // No glslang code changes; the ABI is that of the installed headers
 // (glslang/MachineIndependent/preprocessor/PpContext.h, Scan.h).
 #include "frontend/token_budget.h"
+
+#include <algorithm>
+
+#include <glslang/MachineIndependent/ParseHelper.h>
 
 namespace {
 
@@ -18,6 +25,20 @@ thread_local glslrun::frontend::TokenBudgetScope::Counts* active = nullptr;
 bool spend(uint64_t& used, uint64_t budget) {
     if (++used > budget) active->exceeded = true;
     return !active->exceeded;
+}
+
+// A struct's members, nested ones included, memoised by its member list,
+// which every member of that struct type shares: linear in the source even
+// when the member tree is exponential.
+uint64_t members_of(const glslang::TType& type, std::unordered_map<const void*, uint64_t>& memo) {
+    constexpr uint64_t kPast = glslrun::frontend::kMaxStructMembers + 1;
+    if (!type.isStruct() || !type.getStruct()) return 0;
+    const glslang::TTypeList* list = type.getStruct();
+    if (auto it = memo.find(list); it != memo.end()) return it->second;
+    uint64_t n = 0;
+    for (const glslang::TTypeLoc& member : *list) n = std::min(n + 1 + members_of(*member.type, memo), kPast);
+    memo.emplace(list, n);
+    return n;
 }
 
 }  // namespace
@@ -50,6 +71,20 @@ void __real__ZN7glslang10TPpContext11TokenStream8putTokenEiPNS_8TPpTokenE(void* 
 void __wrap__ZN7glslang10TPpContext11TokenStream8putTokenEiPNS_8TPpTokenE(void* self, int token, void* pp_token) {
     if (active && !spend(active->macro, glslrun::frontend::kMaxMacroTokens)) return;
     __real__ZN7glslang10TPpContext11TokenStream8putTokenEiPNS_8TPpTokenE(self, token, pp_token);
+}
+
+// void TParseContext::structArrayCheck(const TSourceLoc&, const TType&).
+void __real__ZN7glslang13TParseContext16structArrayCheckERKNS_10TSourceLocERKNS_5TTypeE(void* self,
+                                                                                        const glslang::TSourceLoc& loc,
+                                                                                        const glslang::TType& type);
+void __wrap__ZN7glslang13TParseContext16structArrayCheckERKNS_10TSourceLocERKNS_5TTypeE(void* self,
+                                                                                        const glslang::TSourceLoc& loc,
+                                                                                        const glslang::TType& type) {
+    __real__ZN7glslang13TParseContext16structArrayCheckERKNS_10TSourceLocERKNS_5TTypeE(self, loc, type);
+    if (!active || active->exceeded) return;
+    if (members_of(type, active->struct_members) <= glslrun::frontend::kMaxStructMembers) return;
+    active->large_struct = {type.getTypeName().c_str(), loc.line};
+    active->exceeded = true;  // the parser sees the end of its input from here on
 }
 }
 

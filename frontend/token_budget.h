@@ -13,6 +13,8 @@
 // only what was stored.
 #pragma once
 #include <cstdint>
+#include <string>
+#include <unordered_map>
 
 #include "frontend/deep_stack.h"
 
@@ -24,6 +26,15 @@ constexpr uint64_t kMaxParserTokens = kMaxSourceBytes;
 // Macro expansion's own work and memory: tokens of macro bodies read and
 // tokens stored.
 constexpr uint64_t kMaxMacroTokens = uint64_t(4) << 20;
+// Members of one struct type, its nested structs' members included (an
+// array of structs counts its element's members once). glslang walks a
+// struct's whole member tree at every declaration, parameter and mangled
+// name, and a struct of two copies of the previous one doubles that tree at
+// each line: 40 such lines (1.4 KB) took glslang exponential time. The
+// wrapped TParseContext::structArrayCheck sees each struct as it is defined,
+// before any variable of it, and ends the parse past this limit. It bounds
+// the nesting depth of structs as well.
+constexpr uint64_t kMaxStructMembers = 4096;
 
 class TokenBudgetScope {
 public:
@@ -34,9 +45,20 @@ public:
     // Whether glslang was cut off: its diagnostics after that are artefacts.
     bool exceeded() const { return counts_.exceeded; }
 
+    // The first struct past kMaxStructMembers (its name empty if none).
+    struct LargeStruct {
+        std::string name;
+        int line = 0;
+    };
+    const LargeStruct& large_struct() const { return counts_.large_struct; }
+
     struct Counts {
         uint64_t parser = 0, macro = 0;
         bool exceeded = false;
+        LargeStruct large_struct;
+        // Members per struct type seen (glslang's TTypeList*), so that a
+        // struct's size costs its own fields only.
+        std::unordered_map<const void*, uint64_t> struct_members;
     };
 
 private:

@@ -3,14 +3,16 @@
 // instruction recomputing a value that a register still holds (same op,
 // operands and immediates) becomes a `mov` from that register, so later
 // reads are forwarded too. Same conservativeness as the folder: facts flow
-// through straight-line code, nested blocks see a copy, and joins forget
-// every register the nested block may write (store_ind: its whole range).
+// through straight-line code, nested blocks start from their parent's facts,
+// and joins forget every register the nested block may write (store_ind: its
+// whole range), in time linear in the IR (ir/scoped_facts.h).
 #include <algorithm>
 #include <unordered_map>
 #include <vector>
 
 #include "ir/flow.h"
 #include "ir/passes.h"
+#include "ir/scoped_facts.h"
 
 namespace glslrun::ir {
 namespace {
@@ -55,46 +57,52 @@ Expr expr_of(const Instr& in) {
     return e;
 }
 
+// Copies (d holds the value of `src`) per destination, and the register
+// holding each expression, checked against the versions of the registers
+// they mention (ir/scoped_facts.h).
+struct Copy {
+    Reg src;
+    uint64_t src_version;
+};
+struct Holder {
+    Reg reg;
+    uint64_t version;
+    uint64_t src_versions[3];
+};
+
 struct Facts {
-    std::unordered_map<Reg, Reg> copy_of;  // d holds the same value as s
-    std::unordered_map<Expr, Reg, ExprHash> holder;  // a register holding the expression
-    // Reverse index: facts to forget when a register changes (may hold stale entries).
-    std::unordered_map<Reg, std::vector<Reg>> copies_from;
-    std::unordered_map<Reg, std::vector<Expr>> exprs_using;
+    RegisterFacts<Copy> regs;
+    UndoMap<Expr, Holder, ExprHash> holders;
+
+    explicit Facts(size_t n) : regs(n) {}
 
     Reg resolve(Reg r) const {
-        auto it = copy_of.find(r);
-        return it == copy_of.end() ? r : it->second;
+        const Copy* c = regs.find(r);
+        return c && regs.version(c->src) == c->src_version ? c->src : r;
     }
-    void clear() { *this = Facts{}; }
-
-    void kill(Reg r) {
-        copy_of.erase(r);
-        if (auto it = copies_from.find(r); it != copies_from.end()) {
-            for (Reg d : it->second)
-                if (auto c = copy_of.find(d); c != copy_of.end() && c->second == r) copy_of.erase(c);
-            copies_from.erase(it);
-        }
-        if (auto it = exprs_using.find(r); it != exprs_using.end()) {
-            for (const Expr& e : it->second) holder.erase(e);
-            exprs_using.erase(it);
-        }
-    }
-    void kill(const flow::Writes& writes) {
-        if (writes.calls) return clear();
-        for (Reg r : writes.regs) kill(r);
-    }
-
-    void add_copy(Reg d, Reg s) {
-        copy_of[d] = s;
-        copies_from[s].push_back(d);
+    const Holder* holder(const Expr& e) const {
+        const Holder* h = holders.find(e);
+        if (!h || !regs.current(h->reg, h->version)) return nullptr;
+        for (int k = 0; k < 3; ++k)
+            if (e.src[k] != kNoReg && regs.version(e.src[k]) != h->src_versions[k]) return nullptr;
+        return h;
     }
     void add_expr(const Expr& e, Reg d) {
-        holder[e] = d;
-        exprs_using[d].push_back(e);
-        int arity = op_info(e.op).arity;
-        for (int k = 0; k < arity; ++k)
-            if (e.src[k] != kNoReg) exprs_using[e.src[k]].push_back(e);
+        regs.reference(d);
+        for (Reg r : e.src)
+            if (r != kNoReg) regs.reference(r);
+        Holder h{d, regs.version(d), {0, 0, 0}};
+        for (int k = 0; k < 3; ++k) h.src_versions[k] = e.src[k] == kNoReg ? 0 : regs.version(e.src[k]);
+        holders.set(e, h);
+    }
+
+    struct Mark {
+        size_t regs, holders;
+    };
+    Mark mark() const { return {regs.mark(), holders.mark()}; }
+    void undo(Mark m, BlockWrites& out) {
+        regs.undo(m.regs, out);
+        holders.undo(m.holders);
     }
 };
 
@@ -113,15 +121,22 @@ void instr(Instr& in, Facts& facts) {
     Expr e{};
     if (pure) {
         e = expr_of(in);
-        if (auto it = facts.holder.find(e); it != facts.holder.end() && it->second != in.dst) {
-            make_mov(in, it->second);
+        if (const Holder* h = facts.holder(e); h && h->reg != in.dst) {
+            make_mov(in, h->reg);
             pure = false;
         }
     }
-    flow::for_each_write(in, [&](Reg r) { facts.kill(r); });
-    if (in.op == Op::mov && in.src[0] != in.dst) {
-        facts.add_copy(in.dst, in.src[0]);
-    } else if (pure && std::find(e.src, e.src + 3, in.dst) == e.src + 3) {
+    bool copy = in.op == Op::mov && in.src[0] != in.dst;
+    flow::for_each_write(in, [&](Reg r) {
+        if (copy && r == in.dst) {
+            facts.regs.reference(in.src[0]);
+            facts.regs.write(r, Copy{in.src[0], facts.regs.version(in.src[0])});
+        }
+        else {
+            facts.regs.write(r);
+        }
+    });
+    if (!copy && pure && std::find(e.src, e.src + 3, in.dst) == e.src + 3) {
         facts.add_expr(e, in.dst);
     }
 }
@@ -132,31 +147,38 @@ void run_block(Block& block, Facts& facts) {
         case NodeKind::Instr: instr(n.instr, facts); break;
         case NodeKind::If: {
             n.cond = facts.resolve(n.cond);
-            Facts then_facts = facts, else_facts = facts;
-            run_block(n.body, then_facts);
-            run_block(n.alt, else_facts);
-            facts.kill(flow::writes_of(n.body));
-            facts.kill(flow::writes_of(n.alt));
+            Facts::Mark before = facts.mark();
+            BlockWrites written;
+            run_block(n.body, facts);
+            facts.undo(before, written);
+            run_block(n.alt, facts);
+            facts.undo(before, written);
+            facts.regs.forget(written);
             break;
         }
         case NodeKind::Loop: {
-            facts.kill(flow::writes_of(n.body));
-            facts.kill(flow::writes_of(n.alt));
-            Facts body_facts = facts, cont_facts = facts;
-            run_block(n.body, body_facts);
-            run_block(n.alt, cont_facts);
+            facts.regs.forget(flow::writes_of(n.body));
+            facts.regs.forget(flow::writes_of(n.alt));
+            Facts::Mark before = facts.mark();
+            BlockWrites ignored;  // already forgotten
+            run_block(n.body, facts);
+            facts.undo(before, ignored);
+            run_block(n.alt, facts);
+            facts.undo(before, ignored);
             break;
         }
         case NodeKind::Scope:
             if (flow::returns_early(n.body)) {
-                Facts inner = facts;
-                run_block(n.body, inner);
-                facts.kill(flow::writes_of(n.body));
+                Facts::Mark before = facts.mark();
+                BlockWrites written;
+                run_block(n.body, facts);
+                facts.undo(before, written);
+                facts.regs.forget(written);
             } else {
                 run_block(n.body, facts);
             }
             break;
-        case NodeKind::Call: facts.clear(); break;
+        case NodeKind::Call: facts.regs.forget_all(); break;
         default: break;
         }
     }
@@ -166,10 +188,10 @@ void run_block(Block& block, Facts& facts) {
 
 void propagate_copies(Shader& shader) {
     for (Function& f : shader.functions) {
-        Facts facts;
+        Facts facts(shader.regs.size());
         run_block(f.body, facts);
     }
-    Facts facts;
+    Facts facts(shader.regs.size());
     run_block(shader.body, facts);
 }
 

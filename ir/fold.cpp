@@ -1,7 +1,8 @@
 // Constant folding. Registers are not SSA, so a register is known to hold a
 // constant at a point only when its reaching definition is known: facts flow
-// through straight-line code, a nested block sees a copy of them, and at the
-// join every register the block may write is forgotten. Facts hold for the
+// through straight-line code, a nested block starts from its parent's facts,
+// and at the join every register the block may write is forgotten
+// (ir/scoped_facts.h: linear in the IR). Facts hold for the
 // lanes active at that point, which are the only lanes an instruction there
 // touches.
 #include <algorithm>
@@ -11,11 +12,13 @@
 #include "ir/alu_eval.h"
 #include "ir/flow.h"
 #include "ir/passes.h"
+#include "ir/scoped_facts.h"
 
 namespace glslrun::ir {
 namespace {
 
-using Facts = std::unordered_map<Reg, uint32_t>;
+// The constant each register holds, while it holds it (ir/scoped_facts.h).
+using Facts = RegisterFacts<uint32_t>;
 
 // Same clamp as the interpreter's indexed accesses.
 uint32_t clamp_index(uint32_t raw, uint32_t count) {
@@ -39,22 +42,11 @@ void make_mov(Instr& in, Reg dst, Reg src) {
     in.imm[0] = in.imm[1] = in.imm[2] = 0;
 }
 
-void forget(Facts& facts, const flow::Writes& writes) {
-    if (writes.calls) {
-        facts.clear();
-        return;
-    }
-    for (Reg r : writes.regs) facts.erase(r);
-}
-
 struct Folder {
     const Shader& shader;
     const FoldOptions& options;
 
-    const uint32_t* known(const Facts& facts, Reg r) const {
-        auto it = facts.find(r);
-        return it == facts.end() ? nullptr : &it->second;
-    }
+    const uint32_t* known(const Facts& facts, Reg r) const { return facts.find(r); }
 
     // Indexed accesses with a constant index become direct ones.
     void fold_indexed(Instr& in, const Facts& facts) {
@@ -93,8 +85,10 @@ struct Folder {
             }
             if (all_known) make_konst(in, alu::eval(in.op, values[0], values[1], values[2]));
         }
-        flow::for_each_write(in, [&](Reg r) { facts.erase(r); });
-        if (in.op == Op::konst) facts[in.dst] = in.imm[0];
+        flow::for_each_write(in, [&](Reg r) {
+            if (in.op == Op::konst && r == in.dst) facts.write(r, in.imm[0]);
+            else facts.write(r);
+        });
     }
 
     // Replaces block[i] (an If with a known condition) by the taken branch.
@@ -115,32 +109,39 @@ struct Folder {
                     splice_taken_branch(block, i, *c != 0);
                     continue;  // the spliced nodes are folded next
                 }
-                Facts then_facts = facts, else_facts = facts;
-                run_block(n.body, then_facts);
-                run_block(n.alt, else_facts);
-                forget(facts, flow::writes_of(n.body));
-                forget(facts, flow::writes_of(n.alt));
+                size_t before = facts.mark();
+                BlockWrites written;
+                run_block(n.body, facts);
+                facts.undo(before, written);
+                run_block(n.alt, facts);
+                facts.undo(before, written);
+                facts.forget(written);
                 break;
             }
             case NodeKind::Loop: {
                 // Later iterations see the loop's own writes.
-                forget(facts, flow::writes_of(n.body));
-                forget(facts, flow::writes_of(n.alt));
-                Facts body_facts = facts, cont_facts = facts;
-                run_block(n.body, body_facts);
-                run_block(n.alt, cont_facts);
+                facts.forget(flow::writes_of(n.body));
+                facts.forget(flow::writes_of(n.alt));
+                size_t before = facts.mark();
+                BlockWrites ignored;  // already forgotten
+                run_block(n.body, facts);
+                facts.undo(before, ignored);
+                run_block(n.alt, facts);
+                facts.undo(before, ignored);
                 break;
             }
             case NodeKind::Scope:
                 if (flow::returns_early(n.body)) {
-                    Facts inner = facts;
-                    run_block(n.body, inner);
-                    forget(facts, flow::writes_of(n.body));
+                    size_t before = facts.mark();
+                    BlockWrites written;
+                    run_block(n.body, facts);
+                    facts.undo(before, written);
+                    facts.forget(written);
                 } else {
                     run_block(n.body, facts);
                 }
                 break;
-            case NodeKind::Call: facts.clear(); break;
+            case NodeKind::Call: facts.forget_all(); break;
             default: break;
             }
             ++i;
@@ -154,10 +155,10 @@ void fold_constants(Shader& shader, const FoldOptions& options) {
     FlushDenormals ftz;
     Folder folder{shader, options};
     for (Function& f : shader.functions) {
-        Facts facts;
+        Facts facts(shader.regs.size());
         folder.run_block(f.body, facts);
     }
-    Facts facts;
+    Facts facts(shader.regs.size());
     folder.run_block(shader.body, facts);
 }
 

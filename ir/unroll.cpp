@@ -30,6 +30,7 @@
 #include "ir/alu_eval.h"
 #include "ir/flow.h"
 #include "ir/passes.h"
+#include "ir/scoped_facts.h"
 
 namespace glslrun::ir {
 namespace {
@@ -37,30 +38,31 @@ namespace {
 constexpr uint32_t kMaxTrips = 8;
 constexpr size_t kMaxAddedNodes = 2000;  // per shader, nested loops included
 
-using Facts = std::unordered_map<Reg, uint32_t>;
+// Known constants, scoped as fold's are (ir/scoped_facts.h).
+using Facts = RegisterFacts<uint32_t>;
 
 // Runs one instruction on the known constants, as fold evaluates it.
 void evaluate(const Instr& in, Facts& facts) {
-    auto known = [&](Reg r) { return facts.find(r); };
     bool have = false;
     uint32_t value = 0;
     if (in.op == Op::konst) {
         have = true, value = in.imm[0];
     } else if (in.op == Op::mov) {
-        auto it = known(in.src[0]);
-        if (it != facts.end()) have = true, value = it->second;
+        if (const uint32_t* known = facts.find(in.src[0])) have = true, value = *known;
     } else if (alu::is_alu(in.op)) {
         uint32_t v[3] = {0, 0, 0};
         have = true;
         for (int k = 0; k < op_info(in.op).arity && have; ++k) {
-            auto it = known(in.src[k]);
-            have = it != facts.end();
-            if (have) v[k] = it->second;
+            const uint32_t* known = facts.find(in.src[k]);
+            have = known != nullptr;
+            if (have) v[k] = *known;
         }
         if (have) value = alu::eval(in.op, v[0], v[1], v[2]);
     }
-    flow::for_each_write(in, [&](Reg r) { facts.erase(r); });
-    if (have) facts[in.dst] = value;
+    flow::for_each_write(in, [&](Reg r) {
+        if (have && r == in.dst) facts.write(r, value);
+        else facts.write(r);
+    });
 }
 
 // Writes and reads of every register in the whole shader, and the
@@ -130,10 +132,29 @@ void rename(Block& block, const std::unordered_map<Reg, Reg>& to) {
     }
 }
 
-void forget(Facts& facts, const Block& block) {
-    const flow::Writes writes = flow::writes_of(block);
-    if (writes.calls) facts.clear();
-    for (Reg r : writes.regs) facts.erase(r);
+void forget(Facts& facts, const Block& block) { facts.forget(flow::writes_of(block)); }
+
+// The number of trips `loop` makes from `facts` (which it leaves as it found
+// them), or nothing.
+std::optional<uint32_t> trip_count(const Node& loop, size_t exit, const Block& rest, Facts& facts) {
+    const Block& body = loop.body;
+    const Node& test = body[exit];
+    size_t before = facts.mark();
+    BlockWrites ignored;
+    std::optional<uint32_t> trips = 0;
+    for (;;) {
+        for (size_t i = 0; i < exit; ++i) evaluate(body[i].instr, facts);
+        const uint32_t* cond = facts.find(test.cond);
+        if (cond && *cond != 0) break;
+        if (!cond || ++*trips > kMaxTrips) {
+            trips.reset();
+            break;
+        }
+        forget(facts, rest);
+        for (const Node& n : loop.alt) evaluate(n.instr, facts);
+    }
+    facts.undo(before, ignored);
+    return trips;
 }
 
 bool straight_line(const Block& block) {
@@ -156,7 +177,7 @@ size_t node_count(const Block& block) {
 }
 
 // The unrolled copy of `loop`, or nothing when it does not qualify.
-std::optional<Block> unrolled(Shader& shader, const Node& loop, const Facts& before, size_t& budget) {
+std::optional<Block> unrolled(Shader& shader, const Node& loop, Facts& facts, size_t& budget) {
     const Block& body = loop.body;
     size_t exit = 0;
     while (exit < body.size() && body[exit].kind == NodeKind::Instr) ++exit;
@@ -169,17 +190,9 @@ std::optional<Block> unrolled(Shader& shader, const Node& loop, const Facts& bef
     if (!straight_line(loop.alt) || leaves_loop(rest)) return std::nullopt;
     if (flow::writes_of(rest).calls) return std::nullopt;
 
-    Facts facts = before;
-    uint32_t trips = 0;
-    for (;;) {
-        for (size_t i = 0; i < exit; ++i) evaluate(body[i].instr, facts);
-        auto cond = facts.find(test.cond);
-        if (cond == facts.end()) return std::nullopt;
-        if (cond->second != 0) break;
-        if (++trips > kMaxTrips) return std::nullopt;
-        forget(facts, rest);
-        for (const Node& n : loop.alt) evaluate(n.instr, facts);
-    }
+    std::optional<uint32_t> counted = trip_count(loop, exit, rest, facts);
+    if (!counted) return std::nullopt;
+    uint32_t trips = *counted;
     const Block header(body.begin(), body.begin() + std::ptrdiff_t(exit));
     const size_t added = trips * (node_count(rest) + header.size() + loop.alt.size());
     if (added > budget) return std::nullopt;
@@ -220,19 +233,23 @@ void run_block(Shader& shader, Block& block, Facts& facts, size_t& budget) {
             forget(facts, n.body);
             forget(facts, n.alt);
             for (Block* inner : {&n.body, &n.alt}) {
-                Facts inner_facts = facts;
-                run_block(shader, *inner, inner_facts, budget);
+                size_t before = facts.mark();
+                BlockWrites ignored;  // already forgotten
+                run_block(shader, *inner, facts, budget);
+                facts.undo(before, ignored);
             }
             break;
-        case NodeKind::If: case NodeKind::Scope:
+        case NodeKind::If: case NodeKind::Scope: {
+            size_t before = facts.mark();
+            BlockWrites written;
             for (Block* inner : {&n.body, &n.alt}) {
-                Facts inner_facts = facts;
-                run_block(shader, *inner, inner_facts, budget);
+                run_block(shader, *inner, facts, budget);
+                facts.undo(before, written);
             }
-            forget(facts, n.body);
-            forget(facts, n.alt);
+            facts.forget(written);
             break;
-        case NodeKind::Call: facts.clear(); break;
+        }
+        case NodeKind::Call: facts.forget_all(); break;
         default: break;
         }
         ++i;
@@ -245,10 +262,10 @@ void unroll_loops(Shader& shader) {
     FlushDenormals ftz;  // evaluate() computes as fold does
     size_t budget = kMaxAddedNodes;
     for (Function& f : shader.functions) {
-        Facts facts;
+        Facts facts(shader.regs.size());
         run_block(shader, f.body, facts, budget);
     }
-    Facts facts;
+    Facts facts(shader.regs.size());
     run_block(shader, shader.body, facts, budget);
 }
 

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -29,45 +30,94 @@ bool takes_floats(const std::string& type) {
     return type == "float" || type.starts_with("vec") || type.starts_with("mat");
 }
 
+bool all_whole(const py::array_t<double>& numbers) {
+    for (py::ssize_t i = 0; i < numbers.size(); ++i)
+        if (numbers.data()[i] != std::trunc(numbers.data()[i])) return false;
+    return true;
+}
+
+// Records what set_uniform set, replacing an earlier setting of the same name.
+void remember(PyProgram& program, scene::UniformSetting setting) {
+    for (scene::UniformSetting& s : program.user_uniforms)
+        if (s.name == setting.name) {
+            s = std::move(setting);
+            return;
+        }
+    program.user_uniforms.push_back(std::move(setting));
+}
+
 // Numbers, sequences or arrays of any shape, flattened in C order (a
 // matrix's columns: pass m.T of a row-major numpy matrix, or a flat list
 // column by column, as glUniformMatrix without transpose).
-void set_uniform(Program& program, const std::string& name, const py::object& value) {
+void set_uniform(PyProgram& program, const std::string& name, const py::object& value) {
     const UniformInfo* u = find_declaration(program.uniforms(), name);
     if (!u) throw ErrorException{Error("no active uniform named '" + name + "'")};
+    // Counted before a copy: a broadcast view of 2^40 values costs nothing until copied.
+    if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).size() > py::ssize_t(1) << 16)
+        throw ErrorException{Error("uniform '" + name + "': more values than any uniform holds (65536)")};
+    py::array_t<double> numbers = uniform_numbers(name, value);
+    const double* d = numbers.data();
+    const size_t n = size_t(numbers.size());
     if (takes_floats(u->type)) {
-        FloatArray values = FloatArray::ensure(value);
-        if (!values) throw py::type_error("uniform '" + name + "' takes numbers");
-        check(program.set_uniform(name, std::span<const float>(values.data(), size_t(values.size()))));
+        std::vector<float> floats(d, d + n);
+        check(program.set_uniform(name, std::span<const float>(floats)));
     } else {
         // int, bool and sampler uniforms take whole numbers (Python bools too).
-        DoubleArray numbers = DoubleArray::ensure(value);
-        if (!numbers) throw py::type_error("uniform '" + name + "' takes numbers");
-        std::vector<int32_t> ints(size_t(numbers.size()));
-        for (size_t i = 0; i < ints.size(); ++i) {
-            double d = numbers.data()[i];
-            if (!(d >= INT32_MIN && d <= INT32_MAX) || d != double(int32_t(d))) {
-                std::string number = py::str(py::float_(d));
+        std::vector<int32_t> ints(n);
+        for (size_t i = 0; i < n; ++i) {
+            if (!(d[i] >= INT32_MIN && d[i] <= INT32_MAX) || d[i] != double(int32_t(d[i]))) {
+                std::string number = py::str(py::float_(d[i]));
                 throw ErrorException{Error("uniform '" + name + "' is " + u->type + "; " + number +
                                            " is not a 32-bit integer")};
             }
-            ints[i] = int32_t(d);
+            ints[i] = int32_t(d[i]);
         }
         check(program.set_uniform(name, std::span<const int32_t>(ints)));
     }
+    remember(program, {name, std::vector<double>(d, d + n), all_whole(numbers), {"set_uniform", 0}});
+}
+
+std::string input_names(const std::vector<Program::Input>& inputs) {
+    std::string out;
+    for (const Program::Input& i : inputs) out += (out.empty() ? "" : ", ") + i.name;
+    return out.empty() ? "nothing" : out;
 }
 
 // {name: array of shape (count,) or (count, components)} as attribute arrays;
-// `count` from the arrays when not given (they must agree).
-std::vector<VertexAttrib> to_attribs(const py::dict& arrays, uint32_t& count) {
+// `count` from the arrays when not given (they must agree). Every name must
+// be an input the stage reads: a misspelt one would silently read as zeros.
+std::vector<VertexAttrib> to_attribs(const py::dict& arrays, uint32_t& count, const std::vector<Program::Input>& inputs,
+                                     const std::string& stage) {
     std::vector<VertexAttrib> attribs;
     bool have_count = count != 0;
     for (auto [key, value] : arrays) {
         std::string name = py::cast<std::string>(key);
+        auto input = std::find_if(inputs.begin(), inputs.end(), [&](const Program::Input& i) { return i.name == name; });
+        if (input == inputs.end())
+            throw py::value_error("the " + stage + " shader reads no input '" + name + "' (it reads " +
+                                  input_names(inputs) + "; an input declared but never read is optimized away)");
+        // The shape first, on the array as given: a broadcast view of 2^40
+        // rows costs nothing until forcecast copies it.
+        const std::string shape = "input '" + name + "' must be an array of shape (count,) or (count, components), "
+                                  "count at most 2^26 and components 1..16";
+        if (py::isinstance<py::array>(value)) {
+            auto given = py::reinterpret_borrow<py::array>(value);
+            if (given.ndim() < 1 || given.ndim() > 2 || given.shape(0) > py::ssize_t(1) << 26 ||
+                (given.ndim() == 2 && (given.shape(1) < 1 || given.shape(1) > 16)))
+                throw py::value_error(shape);
+        }
         FloatArray a = FloatArray::ensure(value);
-        if (!a || a.ndim() < 1 || a.ndim() > 2)
-            throw py::value_error("input '" + name + "' must be an array of shape (count,) or (count, components)");
+        if (!a && PyErr_ExceptionMatches(PyExc_MemoryError)) throw py::error_already_set();
+        PyErr_Clear();
+        if (!a || a.ndim() < 1 || a.ndim() > 2 || a.shape(0) > py::ssize_t(1) << 26 ||
+            (a.ndim() == 2 && (a.shape(1) < 1 || a.shape(1) > 16)))
+            throw py::value_error(shape);
         uint32_t rows = uint32_t(a.shape(0)), components = a.ndim() == 2 ? uint32_t(a.shape(1)) : 1;
+        // As glVertexAttribPointer: 1..4 components (more only for a matrix's columns).
+        uint32_t most = std::max(4u, input->components);
+        if (components == 0 || components > most)
+            throw py::value_error("input '" + name + "' has " + std::to_string(components) + " components; it takes 1.." +
+                                  std::to_string(most));
         if (!have_count) count = rows, have_count = true;
         if (rows != count)
             throw py::value_error("input '" + name + "' has " + std::to_string(rows) + " rows; expected " +
@@ -91,21 +141,26 @@ py::dict to_dict(const std::vector<ShaderOutput>& outputs, uint32_t count) {
 // The state one object of `scene` is drawn with (matrices, lights, material,
 // textures, the scene's and the object's uniforms), applied to the program
 // as a draw would apply it.
-GLState object_state(Program& program, const scene::Scene& scene, size_t object) {
+GLState object_state(PyProgram& program, const scene::Scene& scene, size_t object) {
     if (object >= scene.objects.size())
         throw py::index_error("the scene has " + std::to_string(scene.objects.size()) + " objects");
     const scene::Object& o = scene.objects[object];
     GLState gl = scene::object_gl_state(scene, take(scene::bind_scene_textures(scene)), o);
     check(scene::apply_uniforms(program, scene.uniforms));
     check(scene::apply_uniforms(program, o.uniforms));
+    check(scene::apply_uniforms(program, program.user_uniforms));  // the user's win, as on render()
     check(apply_builtin_uniforms(program, gl));
     return gl;
 }
 
-py::dict run_batch(Program& program, const py::dict& inputs, uint32_t count, const scene::Scene* scene,
+py::dict run_batch(PyProgram& program, const py::dict& inputs, uint32_t count, const scene::Scene* scene,
                    size_t object, bool vertices) {
-    std::vector<VertexAttrib> attribs = to_attribs(inputs, count);
+    std::vector<VertexAttrib> attribs = to_attribs(inputs, count, program.inputs(vertices ? Stage::Vertex : Stage::Fragment),
+                                                   vertices ? "vertex" : "fragment");
     if (count == 0) throw py::value_error("nothing to run: no inputs and no count");
+    if (!vertices && count % 4 != 0)
+        throw py::value_error("fragments run in 2x2 quads: the count (" + std::to_string(count) +
+                              ") must be a multiple of 4");
     GLState gl;  // GL's defaults: identity matrices, ...
     if (scene)
         gl = object_state(program, *scene, object);
@@ -143,48 +198,59 @@ std::vector<std::string> paths(const py::object& p) {
 }
 
 void bind_program(py::module_& m) {
-    py::class_<Program>(m, "Program", "A compiled vertex and fragment program.")
+    py::class_<PyProgram>(m, "Program", "A compiled vertex and fragment program.")
         .def_static(
             "compile",
             [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize) {
-                return take(Program::compile(sources(vertex, "shader.vert"), sources(fragment, "shader.frag"),
-                                             compile_options(default_version, optimize)));
+                return PyProgram(take(Program::compile(sources(vertex, "shader.vert"), sources(fragment, "shader.frag"),
+                                                       compile_options(default_version, optimize))));
             },
             py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
             "Compiles GLSL text: a string per stage, or a list of (name, text) pairs.")
         .def_static(
             "from_files",
             [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize) {
-                return take(scene::compile_files(paths(vertex), paths(fragment),
-                                                 compile_options(default_version, optimize)));
+                return PyProgram(take(scene::compile_files(paths(vertex), paths(fragment),
+                                                           compile_options(default_version, optimize))));
             },
             py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
             "Compiles shader files: a path per stage, or a list of paths.")
         .def("set_uniform", &set_uniform, py::arg("name"), py::arg("value"),
              "Sets a uniform from a number, a sequence or a numpy array (glUniform semantics).")
-        .def("has_uniform", &Program::has_uniform)
-        .def_property_readonly("uniforms",
-                               [](const Program& p) {
+        .def("has_uniform", &Program::has_uniform, py::arg("name"),
+             "Whether the program has an active uniform `name` (\"u\", \"arr[2]\", \"s.f\").")
+        .def_property_readonly(
+            "uniforms",
+            [](const PyProgram& p) {
                                    py::list out;
                                    for (const UniformInfo& u : p.uniforms())
                                        out.append(py::dict(py::arg("name") = u.name, py::arg("type") = u.type,
                                                            py::arg("array_size") = u.array_size,
                                                            py::arg("builtin") = u.builtin, py::arg("read") = u.read));
                                    return out;
-                               })
+                               },
+            "The uniform declarations: dicts with name, type, array_size, builtin, read.")
         .def_property(
-            "threads", [](const Program& p) { return p.exec.threads; },
-            [](Program& p, unsigned n) { p.exec.threads = n; })
+            "threads", [](const PyProgram& p) { return p.exec.threads; },
+            [](PyProgram& p, unsigned n) { p.exec.threads = n; },
+            "Worker threads for rendering (0: one per core); images do not depend on it.")
         .def_property(
-            "precision", [](const Program& p) { return std::string(precision_name(p.exec.precision)); },
-            [](Program& p, const std::string& name) { p.exec.precision = take(parse_precision(name)); })
+            "precision", [](const PyProgram& p) { return std::string(precision_name(p.exec.precision)); },
+            [](PyProgram& p, const std::string& name) { p.exec.precision = take(parse_precision(name)); },
+            "How floats are evaluated: \"precise\" (fp32, the default), \"fast\" or \"reference\" (double).")
         .def_property(
-            "max_loop_iterations", [](const Program& p) { return p.exec.max_loop_iterations; },
-            [](Program& p, uint64_t n) { p.exec.max_loop_iterations = n; })
-        .def("dump_ir", &Program::dump_ir)
+            "backend", [](const PyProgram& p) { return std::string(backend_name(p.exec.backend)); },
+            [](PyProgram& p, const std::string& name) { p.exec.backend = take(parse_backend(name)); },
+            "Who runs the shaders: \"auto\" (the default: the LLVM JIT where built in), \"jit\" or \"interp\"; "
+            "both give the same bits.")
+        .def_property(
+            "max_loop_iterations", [](const PyProgram& p) { return p.exec.max_loop_iterations; },
+            [](PyProgram& p, uint64_t n) { p.exec.max_loop_iterations = n; },
+            "The iterations one loop may run before the run stops with an error.")
+        .def("dump_ir", &Program::dump_ir, "The intermediate representation of both stages, as glslrun --dump-ir prints it.")
         .def(
             "run_vertices",
-            [](Program& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
+            [](PyProgram& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
                 return run_batch(p, inputs, count, scene, object, true);
             },
             py::arg("inputs"), py::arg("count") = 0, py::arg("scene") = nullptr, py::arg("object") = 0,
@@ -192,7 +258,7 @@ void bind_program(py::module_& m) {
             "With a scene, in the state its object number `object` is drawn with; else in GL's defaults.")
         .def(
             "run_fragments",
-            [](Program& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
+            [](PyProgram& p, const py::dict& inputs, uint32_t count, const scene::Scene* scene, size_t object) {
                 return run_batch(p, inputs, count, scene, object, false);
             },
             py::arg("inputs"), py::arg("count") = 0, py::arg("scene") = nullptr, py::arg("object") = 0,
@@ -224,9 +290,14 @@ void register_error(py::module_& m) {
 
 PYBIND11_MODULE(glslrun, m) {
     using namespace glslrun::python;
-    m.doc() = "glslrun: legacy GLSL (1.10/1.20) on the CPU";
+    m.doc() =
+        "glslrun: legacy GLSL (1.10/1.20) on the CPU.\n\n"
+        "render(vert, frag, scene) renders a scene file to an H x W x 4 uint8 array; Program compiles "
+        "shaders, sets uniforms, renders Scenes and runs vertex or fragment batches on numpy arrays. "
+        "Errors raise glslrun.Error with file:line diagnostics. See docs/library.md.";
     m.attr("__version__") = GLSLRUN_VERSION_STRING;
     register_error(m);
     bind_program(m);
     bind_scene(m);
+    bind_mesh(m);
 }

@@ -29,10 +29,25 @@ inline void check(const Status& status) {
     if (!status) throw ErrorException{status.error()};
 }
 
+// A Program as Python holds it: the uniforms the user set with set_uniform,
+// kept so that they win over a scene's [uniforms] on every render, as the
+// command line's --uniform does.
+struct PyProgram : Program {
+    explicit PyProgram(Program&& p) : Program(std::move(p)) {}
+    std::vector<scene::UniformSetting> user_uniforms;
+};
+
+// {name: number, sequence or array} as uniform settings (a float uniform
+// takes any number, an int one whole numbers); `what` names them in errors.
+std::vector<scene::UniformSetting> uniform_settings(const py::object& uniforms, const std::string& what);
+// The numbers of a uniform's value: TypeError for None, strings, objects.
+py::array_t<double> uniform_numbers(const std::string& name, const py::object& value);
+
 // An RGBA8 image as an H x W x 4 uint8 array, top row first, and back.
 py::array_t<uint8_t> to_array(const scene::Image& image);
 scene::Image to_image(const py::object& image);
 
 void bind_scene(py::module_& m);
+void bind_mesh(py::module_& m);  // after bind_scene
 
 }  // namespace glslrun::python

@@ -4,6 +4,8 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -20,28 +22,69 @@ py::array_t<uint8_t> to_array(const scene::Image& image) {
 scene::Image to_image(const py::object& object) {
     // uint8 only: a cast would wrap 300 to 44 and make NaN anything. Sides are
     // checked before they narrow to int (3000000000 rows became -1294967296).
-    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side at most 16384";
+    // The shape is checked on the array as given, before a contiguous copy
+    // (a broadcast view of 2^40 pixels costs nothing until it is copied).
+    constexpr const char* kShape = "an image is an H x W x 4 uint8 array, each side 1..16384";
     if (!py::isinstance<py::array_t<uint8_t>>(object)) throw py::type_error(kShape);
-    auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(object);
-    if (a.ndim() != 3 || a.shape(2) != 4 || a.shape(0) > kMaxFramebufferSide || a.shape(1) > kMaxFramebufferSide)
+    auto given = py::reinterpret_borrow<py::array>(object);
+    auto side_ok = [](py::ssize_t side) { return side >= 1 && side <= kMaxFramebufferSide; };
+    if (given.ndim() != 3 || given.shape(2) != 4 || !side_ok(given.shape(0)) || !side_ok(given.shape(1)))
         throw py::value_error(kShape);
+    auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(object);
+    if (!a) throw py::error_already_set();  // the copy failed: MemoryError
     return {int(a.shape(1)), int(a.shape(0)), std::vector<uint8_t>(a.data(), a.data() + a.size())};
+}
+
+py::array_t<double> uniform_numbers(const std::string& name, const py::object& value) {
+    // Kinds b, i, u, f: bool, int, unsigned, float. None would become NaN
+    // through a float cast, a string an error deep in numpy.
+    py::array a = py::array::ensure(value);
+    char kind = a ? a.dtype().kind() : 'O';
+    if (!a || (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f'))
+        throw py::type_error("uniform '" + name + "' takes numbers (a number, a sequence or an array of them), not " +
+                             std::string(py::str(py::type::of(value).attr("__name__"))));
+    return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+}
+
+std::vector<scene::UniformSetting> uniform_settings(const py::object& uniforms, const std::string& what) {
+    std::vector<scene::UniformSetting> settings;
+    if (uniforms.is_none()) return settings;
+    if (!py::isinstance<py::dict>(uniforms)) throw py::type_error(what + " takes a dict {name: value}");
+    for (auto [key, value] : py::reinterpret_borrow<py::dict>(uniforms)) {
+        std::string name = py::cast<std::string>(key);
+        py::array_t<double> numbers = uniform_numbers(name, py::reinterpret_borrow<py::object>(value));
+        scene::UniformSetting s{name, std::vector<double>(numbers.data(), numbers.data() + numbers.size()), true,
+                                {what, 0}};
+        for (double d : s.values) s.integral = s.integral && d == std::trunc(d);
+        settings.push_back(std::move(s));
+    }
+    return settings;
 }
 
 namespace {
 
-ExecOptions exec_options(unsigned threads, const std::string& precision) {
+ExecOptions exec_options(unsigned threads, const std::string& precision, const std::string& backend) {
     ExecOptions o;
     o.threads = threads;
     o.precision = take(parse_precision(precision));
+    o.backend = take(parse_backend(backend));
     return o;
 }
 
-py::array_t<uint8_t> render_program(Program& program, const scene::Scene& scene) {
+// The uniforms the user set (set_uniform, then `uniforms`) win over the
+// scene's and its objects' [uniforms], on a copy of the scene.
+py::array_t<uint8_t> render_program(PyProgram& program, const scene::Scene& scene, const py::object& uniforms) {
+    std::vector<scene::UniformSetting> settings = program.user_uniforms;
+    for (scene::UniformSetting& s : uniform_settings(uniforms, "uniforms")) settings.push_back(std::move(s));
+    std::optional<scene::Scene> overridden;
+    if (!settings.empty()) {
+        overridden = scene;
+        scene::override_uniforms(*overridden, settings);
+    }
     scene::Image image;
     {
         py::gil_scoped_release release;
-        image = take(scene::render_image(program, scene));
+        image = take(scene::render_image(program, overridden ? *overridden : scene));
     }
     return to_array(image);
 }
@@ -103,7 +146,8 @@ py::dict compare(const py::object& reference, const py::object& actual, int tole
 void bind_scene(py::module_& m) {
     py::class_<scene::Scene>(m, "Scene", "A scene file's legacy GL state (docs/scene-format.md).")
         .def_static(
-            "load", [](const std::string& path) { return take(scene::load_scene(path)); }, py::arg("path"))
+            "load", [](const std::string& path) { return take(scene::load_scene(path)); }, py::arg("path"),
+            "A scene file (TOML, docs/scene-format.md); errors cite its file:line.")
         .def_static(
             "parse",
             [](const std::string& toml, const std::string& path) { return take(scene::parse_scene(toml, path)); },
@@ -121,32 +165,42 @@ void bind_scene(py::module_& m) {
                                })
         .def(
             "resize", [](scene::Scene& s, int w, int h) { check(scene::resize_scene(s, w, h)); }, py::arg("width"),
-            py::arg("height"));
-    py::class_<Program> program = py::reinterpret_borrow<py::class_<Program>>(m.attr("Program"));
-    program.def("render", &render_program, py::arg("scene"),
-                "Renders the scene: an H x W x 4 uint8 array, top row first (as the PNG).");
+            py::arg("height"),
+            "Changes the output size; a perspective camera without an explicit aspect keeps width/height.");
+    py::class_<PyProgram> program = py::reinterpret_borrow<py::class_<PyProgram>>(m.attr("Program"));
+    program.def("render", &render_program, py::arg("scene"), py::kw_only(), py::arg("uniforms") = py::none(),
+                "Renders the scene: an H x W x 4 uint8 array, top row first (as the PNG).\n\n"
+                "Uniforms set with set_uniform(), then those in `uniforms` ({name: value}), override the "
+                "scene's and its objects' [uniforms], as the command line's --uniform does.");
 
     m.def(
         "render",
         [](const std::string& vertex, const std::string& fragment, const std::string& scene_path, unsigned threads,
-           const std::string& precision) {
+           const std::string& precision, const py::object& uniforms, const std::string& backend) {
+            ExecOptions exec = exec_options(threads, precision, backend);
+            scene::Scene scene = take(scene::load_scene(scene_path));
+            scene::override_uniforms(scene, uniform_settings(uniforms, "uniforms"));
+            Program program = take(scene::compile_files({vertex}, {fragment}));
+            program.exec = exec;
             scene::Image image;
-            ExecOptions exec = exec_options(threads, precision);
             {
                 py::gil_scoped_release release;
-                image = take(scene::render_files(vertex, fragment, scene_path, exec));
+                image = take(scene::render_image(program, scene));
             }
             return to_array(image);
         },
         py::arg("vertex"), py::arg("fragment"), py::arg("scene"), py::arg("threads") = 0,
-        py::arg("precision") = "precise",
-        "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.");
+        py::arg("precision") = "precise", py::kw_only(), py::arg("uniforms") = py::none(), py::arg("backend") = "auto",
+        "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.\n\n"
+        "`uniforms` ({name: value}) overrides the scene's [uniforms], as the command line's --uniform does; "
+        "`backend` is \"auto\", \"jit\" or \"interp\" (the same bits).");
     m.def(
-        "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"));
+        "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"),
+        "A PNG as an H x W x 4 uint8 array, top row first.");
     m.def(
         "write_png",
         [](const py::object& image, const std::string& path) { check(scene::write_png(to_image(image), path)); },
-        py::arg("image"), py::arg("path"));
+        py::arg("image"), py::arg("path"), "Writes an H x W x 4 uint8 array as an RGBA8 PNG (lossless).");
     m.def("compare_images", &compare, py::arg("reference"), py::arg("actual"), py::arg("tolerance") = 1,
           "Per-channel differences of two H x W x 4 uint8 images (as glslrun --compare).");
     m.def("error_report", &error_report, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),

@@ -14,6 +14,7 @@
 #include "raster/scratch.h"
 #include "raster/tiles.h"
 #include "raster/triangle.h"
+#include "runtime/api_checks.h"
 #include "runtime/execute.h"
 #include "runtime/parallel.h"
 
@@ -270,11 +271,10 @@ void emit_point(const DrawContext& c, SetupOut& out, const ClipVertex& v, const 
     if (style.provoking >= 0) set_attrs(c, out, &own, 1, uint32_t(style.provoking), style.back_colors, p.v.data());
     else p.v[0].attrs = fs_attrs(c, out, v, style.back_colors);
     p.count = 1;
-    p.point_center = p.v[0].win;
     float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
-    p.point_size = float(point_pixels(size));
+    set_point_square(p, p.v[0].win, size, c.gl.point_sprite);
     set_point_planes(p);
-    bin(out, p, point_rect(p));
+    bin(out, p, p.point_box);
 }
 
 // GL_POINTS: dropped when the centre is outside the view volume.
@@ -321,19 +321,6 @@ Rect scissor_rect(const GLState& gl, const Framebuffer& fb, glm::vec4* viewport)
     return Rect{lo(box[0], r.x0), lo(box[1], r.y0), hi(box[0], box[2], r.x1), hi(box[1], box[3], r.y1)};
 }
 
-template <class E>
-bool enum_in_range(E value, E last) {
-    return uint32_t(value) <= uint32_t(last);
-}
-
-bool sampler_in_range(const SamplerState& s) {
-    auto wrap_ok = [](TextureWrap w) { return enum_in_range(w, TextureWrap::MirroredRepeat); };
-    return enum_in_range(s.min_filter, TextureFilter::LinearMipmapLinear) &&
-           enum_in_range(s.mag_filter, TextureFilter::LinearMipmapLinear) && wrap_ok(s.wrap_s) && wrap_ok(s.wrap_t) &&
-           wrap_ok(s.wrap_r) && enum_in_range(s.compare_func, CompareFunc::Always) &&
-           enum_in_range(s.depth_mode, DepthTextureMode::Alpha);
-}
-
 // What GL would refuse with GL_INVALID_ENUM / GL_INVALID_VALUE, and a
 // framebuffer whose size was refused.
 Status check_draw_input(const GLState& gl, const Framebuffer& fb, Primitive prim) {
@@ -343,23 +330,25 @@ Status check_draw_input(const GLState& gl, const Framebuffer& fb, Primitive prim
     if (gl.draw_buffers < 1 || gl.draw_buffers > fb.color_buffers())
         return Error(fmt::format("glDrawBuffers names {} colour buffers; the framebuffer has {}", gl.draw_buffers,
                                  fb.color_buffers()));
-    if (!enum_in_range(prim, Primitive::Polygon))
+    if (!rt::enum_in_range(prim, Primitive::Polygon))
         return Error(fmt::format("primitive {} is not a GL primitive (GL_INVALID_ENUM)", int(prim)));
-    if (!enum_in_range(gl.depth_func, CompareFunc::Always))
-        return Error(fmt::format("depth function {} is not a GL compare function (GL_INVALID_ENUM)", int(gl.depth_func)));
-    for (PolygonMode mode : gl.polygon_mode)
-        if (!enum_in_range(mode, PolygonMode::Fill))
-            return Error(fmt::format("polygon mode {} is not GL_POINT, GL_LINE or GL_FILL (GL_INVALID_ENUM)", int(mode)));
+    if (Status st = rt::check_gl_enums(gl); !st) return st;
     if (!(gl.line_width > 0.0f))
         return Error(fmt::format("line width {} must be > 0 (GL_INVALID_VALUE)", gl.line_width));
     if (gl.viewport[2] < 0 || gl.viewport[3] < 0)
         return Error(fmt::format("viewport {}x{}: width and height must not be negative (GL_INVALID_VALUE)",
                                  gl.viewport[2], gl.viewport[3]));
-    for (const GLState::TextureUnit& unit : gl.texture_units)
-        for (const auto& texture : unit.bound)
-            if (texture && !sampler_in_range(texture->sampler))
-                return Error("a bound texture's sampler state holds a value outside its enum (GL_INVALID_ENUM)");
     return Ok{};
+}
+
+// The draw's storage per vertex: the shaded outputs, the fragment
+// attributes (at most as many), and the clip and window vertices.
+Status check_draw_size(const ir::Shader& vs, uint64_t vertex_count, uint64_t index_count) {
+    uint64_t outputs = 0;
+    for (const ir::Binding& b : vs.outputs) outputs += b.count;
+    const uint64_t words = 2 * outputs + (sizeof(ClipVertex) + sizeof(FsVertex) + sizeof(uint32_t)) / 4;
+    if (Status st = rt::check_batch_size(vertex_count, words, "vertices"); !st) return st;
+    return rt::check_batch_size(index_count, 1, "indices");
 }
 
 // Vertices per job of prepare(), and the count below which it stays on the calling thread.
@@ -479,6 +468,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     ProgramUse use(program);
     if (!use.status()) return use.status().error();
     if (Status st = check_draw_input(gl, fb, prim); !st) return st.error();
+    if (Status st = rt::check_exec_options(program.exec); !st) return st.error();
+    if (Status st = check_draw_size(state_of(program).ir.vertex, vertex_count, indices.size()); !st) return st.error();
     for (uint32_t index : indices)
         if (index >= vertex_count)
             return Error(fmt::format("index {} is out of range ({} vertices)", index, vertex_count));
@@ -526,19 +517,23 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
 
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                        const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices) {
+                       Span<const uint32_t> indices) {
     bool cleared = false;
-    return raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, nullptr, &cleared);
+    return rt::without_throwing("draw()", [&] {
+        return raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, nullptr, &cleared);
+    });
 }
 
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
                        Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices) {
+                       Span<const uint32_t> indices) {
     raster::StoredClear stored = raster::stored_clear(fb, clear);
     bool any = raster::storage_matches(fb) && (stored.color || stored.depth || stored.stencil);
     bool cleared = false;
-    auto result = raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, any ? &stored : nullptr,
-                                     &cleared);
+    auto result = rt::without_throwing("draw()", [&] {
+        return raster::draw_tiles(program, gl, fb, prim, attribs, vertex_count, indices, any ? &stored : nullptr,
+                                  &cleared);
+    });
     // Failed or empty draws clear as glClear did before them.
     if (!cleared || !any) {
         if (clear.color) fb.clear_color(*clear.color);

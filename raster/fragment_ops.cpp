@@ -95,11 +95,35 @@ uint32_t combine8(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_
     return s;
 }
 
+// ColorRounding::Gpu's blending, as NVIDIA's driver blends into RGBA8: the
+// source is stored as a byte first (gpu_unorm8), then the bytes and factors
+// combine exactly (products in units of 1/65025), the result clamped to
+// [0, 1] and stored by gpu_unorm8's rule. On the multi_pass scene this model
+// gives the GPU's bytes on all but 1 of 65,536 pixels, where blending the
+// shader's float colour gives 91% and Mesa's 8-bit steps 96%
+// (docs/precision.md, "The GPU's colour conversion").
+uint32_t combine8_gpu(BlendEquation eq, uint32_t s, uint32_t sf, uint32_t d, uint32_t df) {
+    constexpr uint32_t kOne = 255 * 255;
+    const uint32_t a = s * sf, b = d * df;
+    uint32_t c = 0;
+    switch (eq) {
+    case BlendEquation::Add: c = std::min(a + b, kOne); break;
+    case BlendEquation::Subtract: c = a > b ? a - b : 0; break;
+    case BlendEquation::ReverseSubtract: c = b > a ? b - a : 0; break;
+    case BlendEquation::Min: return std::min(s, d);  // stored bytes: the rule gives them back
+    case BlendEquation::Max: return std::max(s, d);
+    }
+    const uint32_t t = c * 4096 / kOne;  // floor(v * 4096)
+    return (t * 510 + 4095) >> 13;
+}
+
 // One function per factor and equation: the switch folds away at compile time.
 template <BlendFactor F>
 U8x4 factor8_of(const U8x4& s, const U8x4& d, const U8x4& c) { return factor8(F, s, d, c); }
 template <BlendEquation E>
 uint32_t combine8_of(uint32_t s, uint32_t sf, uint32_t d, uint32_t df) { return combine8(E, s, sf, d, df); }
+template <BlendEquation E>
+uint32_t combine8_gpu_of(uint32_t s, uint32_t sf, uint32_t d, uint32_t df) { return combine8_gpu(E, s, sf, d, df); }
 
 template <size_t... I>
 constexpr std::array<ResolvedBlend::Factor8, sizeof...(I)> factor8_table(std::index_sequence<I...>) {
@@ -109,8 +133,13 @@ template <size_t... I>
 constexpr std::array<ResolvedBlend::Combine8, sizeof...(I)> combine8_table(std::index_sequence<I...>) {
     return {&combine8_of<BlendEquation(I)>...};
 }
+template <size_t... I>
+constexpr std::array<ResolvedBlend::Combine8, sizeof...(I)> combine8_gpu_table(std::index_sequence<I...>) {
+    return {&combine8_gpu_of<BlendEquation(I)>...};
+}
 constexpr auto kFactor8 = factor8_table(std::make_index_sequence<size_t(BlendFactor::SrcAlphaSaturate) + 1>());
 constexpr auto kCombine8 = combine8_table(std::make_index_sequence<size_t(BlendEquation::Max) + 1>());
+constexpr auto kCombine8Gpu = combine8_gpu_table(std::make_index_sequence<size_t(BlendEquation::Max) + 1>());
 
 U8x4 widen(const Unorm8& v) { return {v[0], v[1], v[2], v[3]}; }
 
@@ -168,28 +197,32 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
 
 FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
     : alpha_test(gl.alpha_test), alpha_func(gl.alpha_func), alpha_ref(std::clamp(gl.alpha_ref, 0.0f, 1.0f)),
+      alpha_ref8(unorm8_steps(alpha_ref)),
       stencil_test(gl.stencil_test), stencil(gl.stencil), depth_test(gl.depth_test), depth_write(gl.depth_mask),
       depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color()),
-      float_color(fb.float_color()), blend_state(gl.blend_state), logic(gl.logic_op), color_mask(gl.color_mask) {
+      float_color(fb.float_color()), rounding(fb.rounding), blend_state(gl.blend_state), logic(gl.logic_op),
+      color_mask(gl.color_mask) {
     blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
-    resolved_blend = resolve_blend(blend_state);
+    resolved_blend = resolve_blend(blend_state, rounding);
     for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
     bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
     plain = !alpha_test && !stencil_test && !blend && !logic_op && all_channels && gl.draw_buffers == 1 &&
             (depth_write || !depth_test);
 }
 
-ResolvedBlend resolve_blend(const BlendState& s) {
+ResolvedBlend resolve_blend(const BlendState& s, ColorRounding rounding) {
     ResolvedBlend b;
     b.state = s;
-    b.constant8 = {to_unorm8(s.color.r), to_unorm8(s.color.g), to_unorm8(s.color.b), to_unorm8(s.color.a)};
+    for (size_t k = 0; k < 4; ++k) b.constant8[k] = to_unorm8(s.color[int(k)], rounding);
     b.src_rgb = kFactor8[size_t(s.src_rgb)];
     b.dst_rgb = kFactor8[size_t(s.dst_rgb)];
     b.src_alpha = kFactor8[size_t(s.src_alpha)];
     b.dst_alpha = kFactor8[size_t(s.dst_alpha)];
-    b.rgb = kCombine8[size_t(s.equation_rgb)];
-    b.alpha = kCombine8[size_t(s.equation_alpha)];
+    const auto& combine = rounding == ColorRounding::Gpu ? kCombine8Gpu : kCombine8;
+    b.rgb = combine[size_t(s.equation_rgb)];
+    b.alpha = combine[size_t(s.equation_alpha)];
     b.pixel8 = &blend8_picked;
+    if (rounding == ColorRounding::Gpu) return b;  // the functions below round as Nearest
     // SrcAlphaSaturate's alpha factor is 1, not its RGB's: not a "same" pair.
     bool same = s.src_rgb == s.src_alpha && s.dst_rgb == s.dst_alpha && s.equation_rgb == s.equation_alpha &&
                 s.src_rgb != BlendFactor::SrcAlphaSaturate && s.equation_rgb == BlendEquation::Add;
@@ -250,24 +283,29 @@ glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst) {
     return out;
 }
 
-Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst) {
+Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst, ColorRounding rounding) {
     const std::array<uint32_t, 4> s8{src[0], src[1], src[2], src[3]}, d8{dst[0], dst[1], dst[2], dst[3]};
-    const std::array<uint32_t, 4> c8{to_unorm8(s.color.r), to_unorm8(s.color.g), to_unorm8(s.color.b),
-                                     to_unorm8(s.color.a)};
+    std::array<uint32_t, 4> c8;
+    for (size_t k = 0; k < 4; ++k) c8[k] = to_unorm8(s.color[int(k)], rounding);
     std::array<uint32_t, 4> sf = factor8(s.src_rgb, s8, d8, c8), df = factor8(s.dst_rgb, s8, d8, c8);
     uint32_t sfa = factor8(s.src_alpha, s8, d8, c8)[3], dfa = factor8(s.dst_alpha, s8, d8, c8)[3];
     Unorm8 out;
-    for (size_t k = 0; k < 3; ++k) out[k] = uint8_t(combine8(s.equation_rgb, s8[k], sf[k], d8[k], df[k]));
-    out[3] = uint8_t(combine8(s.equation_alpha, s8[3], sfa, d8[3], dfa));
+    auto combine = rounding == ColorRounding::Gpu ? &combine8_gpu : &combine8;
+    for (size_t k = 0; k < 3; ++k) out[k] = uint8_t(combine(s.equation_rgb, s8[k], sf[k], d8[k], df[k]));
+    out[3] = uint8_t(combine(s.equation_alpha, s8[3], sfa, d8[3], dfa));
     return out;
 }
 
 rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
-        // Fixed-point buffers see the shader's colour clamped to [0, 1] (§3.11.6).
-        float a = ops.float_color ? alpha[size_t(lane)] : clamp01(alpha[size_t(lane)]);
-        if (!depth_passes(ops.alpha_func, a, ops.alpha_ref)) mask &= ~(rt::LaneMask(1) << lane);
+        // §4.1.4 compares in the colour buffer's precision: with RGBA8 storage,
+        // the bytes that alpha and the reference would be stored as (llvmpipe
+        // too, so that 128/255 passes EQUAL 0.5 and 0.1005 fails GREATER 0.1).
+        // Float buffers compare the shader's value as is.
+        bool passes = ops.float_color ? depth_passes(ops.alpha_func, alpha[size_t(lane)], ops.alpha_ref)
+                                      : depth_passes(ops.alpha_func, unorm8_steps(alpha[size_t(lane)]), ops.alpha_ref8);
+        if (!passes) mask &= ~(rt::LaneMask(1) << lane);
     }
     return mask;
 }
@@ -306,7 +344,7 @@ void write_unorm8(const FragmentOps& ops, uint8_t* buffer, int width, const Lane
         uint8_t* dst = &buffer[pixel_index(px, lane, width) * 4];
         const Unorm8 d{dst[0], dst[1], dst[2], dst[3]};
         Unorm8 out;
-        for (size_t k = 0; k < 4; ++k) out[k] = to_unorm8(rgba[k][size_t(lane)]);
+        for (size_t k = 0; k < 4; ++k) out[k] = to_unorm8(rgba[k][size_t(lane)], ops.rounding);
         if (ops.logic_op) {
             for (size_t k = 0; k < 4; ++k) out[k] = uint8_t(logic_op(ops.logic, out[k], d[k]));
         } else if (ops.blend) {

@@ -35,7 +35,7 @@ struct ResolvedBlend {
     U8x4 constant8{};  // the blend colour as bytes
     BlendState state;
 };
-ResolvedBlend resolve_blend(const BlendState& s);
+ResolvedBlend resolve_blend(const BlendState& s, ColorRounding rounding = ColorRounding::Nearest);
 
 // The state of the operations, resolved once per draw from GLState.
 struct FragmentOps {
@@ -45,12 +45,14 @@ struct FragmentOps {
     bool plain = true;
     bool alpha_test = false;
     CompareFunc alpha_func = CompareFunc::Always;
-    float alpha_ref = 0;
+    float alpha_ref = 0;     // clamped to [0, 1]; compared as is with float buffers
+    float alpha_ref8 = 0;    // the byte RGBA8 storage would make of it, as a float
     bool stencil_test = false;
     std::array<StencilFace, 2> stencil;  // front, back
     bool depth_test = false, depth_write = true;
     CompareFunc depth_func = CompareFunc::Less;
     bool blend = false, logic_op = false, float_color = false;
+    ColorRounding rounding = ColorRounding::Nearest;  // the framebuffer's, for RGBA8 stores
     BlendState blend_state;
     ResolvedBlend resolved_blend;
     LogicOp logic = LogicOp::Copy;
@@ -87,7 +89,10 @@ glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst);
 // and each product is rounded to n/255 before the equation (saturating)
 // combines them. Float arithmetic rounded once at the end differed from
 // Mesa by 2/255 on 1.6% of a blended scene (subtractions of rounded terms).
-Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst);
+// With ColorRounding::Gpu the products are exact and only the result is
+// rounded, by the GPU's rule (combine8_gpu in fragment_ops.cpp).
+Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst,
+                    ColorRounding rounding = ColorRounding::Nearest);
 // One 8-bit channel's logic op (§4.1.10).
 uint32_t logic_op(LogicOp op, uint32_t src, uint32_t dst);
 // A stencil value after `op` (§4.1.5), before the write mask.

@@ -83,8 +83,8 @@ rt::PrimitiveLayout primitive_layout() {
     l.oy = offsetof(FsPrimitive, oy);
     l.front = offsetof(FsPrimitive, front);
     l.count = offsetof(FsPrimitive, count);
-    l.point_center = offsetof(FsPrimitive, point_center);
-    l.point_size = offsetof(FsPrimitive, point_size);
+    l.point_coord_origin = offsetof(FsPrimitive, point_coord_origin);
+    l.point_coord_step = offsetof(FsPrimitive, point_coord_step);
     return l;
 }
 
@@ -229,6 +229,7 @@ const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
         output_regs_.push_back(interp_->lanes(depth_out_->first));
     }
     key.float_color = fb_.float_color();
+    key.gpu_rounding = !key.float_color && fb_.rounding == ColorRounding::Gpu;
     key.depth_test = o.depth_test;
     key.depth_write = o.depth_write;
     key.depth_func = o.depth_func;
@@ -409,8 +410,8 @@ void FragmentStage::builtin_input(int source, uint32_t c, const Weights& w, Lane
             case Source::FrontFacing: value = prim.front ? 1.0f : 0.0f; break;
             case Source::PointCoord:
                 if (prim.count != 1) break;
-                value = c == 0 ? 0.5f + (fx - prim.point_center.x) / prim.point_size
-                               : 0.5f - (fy - prim.point_center.y) / prim.point_size;
+                value = std::fma(prim.point_coord_step[int(c & 1)], float(c == 0 ? lane_x_[lane] : lane_y_[lane]),
+                                 prim.point_coord_origin[int(c & 1)]);
                 break;
             default: break;
             }
@@ -545,7 +546,8 @@ void FragmentStage::store_color_quad(int base, const std::array<Lanes, 4>& rgba,
     }
     uint8_t* buffer = fb_.color_data<uint8_t>(0).data();
     const QuadI words = pack_unorm8(load_quad(&rgba[0][size_t(base)]), load_quad(&rgba[1][size_t(base)]),
-                                    load_quad(&rgba[2][size_t(base)]), load_quad(&rgba[3][size_t(base)]));
+                                    load_quad(&rgba[2][size_t(base)]), load_quad(&rgba[3][size_t(base)]),
+                                    fb_.rounding);
     const auto* word_bytes = reinterpret_cast<const uint8_t*>(&words);
     if (mask == 0xFu) {  // all four pixels exist: two 8-byte stores
         std::memcpy(buffer + offset(0), word_bytes, 8);

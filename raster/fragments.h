@@ -38,8 +38,11 @@ struct FsPrimitive {
     std::array<FsVertex, 3> v;  // lines repeat vertex 1, points vertex 0
     int count = 3;  // 1 point, 2 line, 3 triangle
     bool front = true;
-    glm::vec2 point_center{0.0f};  // points only: window position and size (whole pixels)
-    float point_size = 1;
+    // Points only (set_point_square): the pixels of the square before the
+    // scissor, and gl_PointCoord = fma(step, (x, y), origin) at pixel (x, y):
+    // llvmpipe's plane equations, evaluated as it does (one rounding).
+    Rect point_box;
+    glm::vec2 point_coord_origin{0.0f}, point_coord_step{0.0f};
     int line_width = 1;  // lines only: whole pixels (line_pixels)
     // Interpolation (set_*_planes): the screen-space (linear) weights of the
     // three vertices, and the window depth.

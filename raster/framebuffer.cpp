@@ -17,11 +17,21 @@ Status check_framebuffer_size(int w, int h) {
                              w, h, kMaxFramebufferSide, kMaxFramebufferPixels >> 20));
 }
 
+namespace {
+
+Status check_color_buffers(int count) {
+    if (count >= 1 && count <= kMaxDrawBuffers) return Ok{};
+    return Error(fmt::format("a framebuffer of {} colour buffers is not allowed: 1..{} (GL_MAX_DRAW_BUFFERS)", count,
+                             kMaxDrawBuffers));
+}
+
+}  // namespace
+
 Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : float_color_(float_target) {
-    if (!check_framebuffer_size(w, h)) return;
+    if (!check_framebuffer_size(w, h) || !check_color_buffers(color_buffers)) return;
     width = w;
     height = h;
-    const size_t pixels = size_t(w) * size_t(h), buffers = size_t(std::clamp(color_buffers, 1, kMaxDrawBuffers));
+    const size_t pixels = size_t(w) * size_t(h), buffers = size_t(color_buffers);
     if (float_color_) float_colors_.assign(buffers, std::vector<float>(pixels * 4, 0.0f));
     else rgba8_colors_.assign(buffers, std::vector<uint8_t>(pixels * 4, 0));
     depth.assign(pixels, 1.0f);
@@ -30,6 +40,7 @@ Framebuffer::Framebuffer(int w, int h, bool float_target, int color_buffers) : f
 
 Result<Framebuffer> Framebuffer::create(int w, int h, bool float_target, int color_buffers) {
     if (Status st = check_framebuffer_size(w, h); !st) return st.error();
+    if (Status st = check_color_buffers(color_buffers); !st) return st.error();
     try {
         return Framebuffer(w, h, float_target, color_buffers);
     } catch (const std::bad_alloc&) {
@@ -125,7 +136,8 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
     if (clear.stencil) out.s = uint8_t(*clear.stencil & ((1 << kStencilBits) - 1));
     if (clear.color) {
         const glm::vec4 c = *clear.color;
-        const uint8_t bytes[4] = {to_unorm8(c.r), to_unorm8(c.g), to_unorm8(c.b), to_unorm8(c.a)};
+        const uint8_t bytes[4] = {to_unorm8(c.r, fb.rounding), to_unorm8(c.g, fb.rounding), to_unorm8(c.b, fb.rounding),
+                                 to_unorm8(c.a, fb.rounding)};
         out.color_pattern = fb.float_color() ? repeated(&c[0], 4) : repeated(bytes, 4);
     }
     if (clear.depth) out.d = std::isnan(*clear.depth) ? 0.0f : std::clamp(*clear.depth, 0.0f, 1.0f);
@@ -162,7 +174,7 @@ void write_color(Framebuffer& fb, int x, int y, glm::vec4 c) {
         return;
     }
     auto* p = static_cast<uint8_t*>(color_at(fb, 0, x, y));
-    for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k]);
+    for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k], fb.rounding);
 }
 
 }  // namespace raster

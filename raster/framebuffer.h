@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -28,6 +29,26 @@ inline T unorm8_steps(T v) {
 inline uint8_t to_unorm8(float v) { return uint8_t(unorm8_steps(v)); }
 // The value that RGBA8 storage reads back: n / 255.
 inline float quantize_unorm8(float v) { return unorm8_steps(v) / 255.0f; }
+
+// ColorRounding::Gpu's byte of one channel, as an integer of I's lanes (I is
+// int32_t, or a vector of them matching T): v clamped to [0, 1] (NaN -> 0),
+// t = floor(v * 4096) (exact: v * 4096 is, and truncation is floor for v >= 0),
+// then ceil(t * 255 / 4096 - 1/2) = ceil((510 t - 4096) / 8192), which for
+// 510 t - 4096 > -8192 is (510 t + 4095) >> 13.
+template <class I, class T>
+inline I gpu_unorm8(T v) {
+    const T zero{};
+    T c = v > 0.0f ? v : zero;
+    c = c < 1.0f ? c : zero + 1.0f;
+    I t;
+    if constexpr (std::is_same_v<T, float>) t = I(c * 4096.0f);
+    else t = __builtin_convertvector(c * 4096.0f, I);
+    return (t * 510 + 4095) >> 13;
+}
+// The stored byte of one channel under `rounding`.
+inline uint8_t to_unorm8(float v, ColorRounding rounding) {
+    return rounding == ColorRounding::Gpu ? uint8_t(gpu_unorm8<int32_t>(v)) : to_unorm8(v);
+}
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);
 

@@ -103,18 +103,15 @@ const uint8_t* framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t
     return scratch;
 }
 
-namespace {
-
-// Where an image is written before it is renamed to `path`, so that a
-// process killed meanwhile never leaves a truncated PNG there. Unique per
-// process and thread; `path` itself where it is not a regular file
-// (/dev/stdout, a FIFO) and cannot be replaced.
+// Unique per process and thread.
 std::string staging_path(const std::string& path) {
     std::error_code ec;
     auto type = std::filesystem::status(path, ec).type();
     if (type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found) return path;
     return fmt::format("{}.partial-{}-{:x}", path, getpid(), std::hash<std::thread::id>{}(std::this_thread::get_id()));
 }
+
+namespace {
 
 Status write_rgba8_to(std::FILE* file, const std::string& path, int width, int height, const RowSource& row_of) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);

@@ -22,6 +22,11 @@ const uint8_t* framebuffer_row(const Framebuffer& fb, int buffer, int y, uint8_t
 using RowSource = std::function<const uint8_t*(int y, uint8_t* scratch)>;
 Status write_rgba8(const std::string& path, int width, int height, const RowSource& row);
 
+// Where an image file is written before it is renamed to `path`, so that a
+// process killed meanwhile never leaves a truncated image there; `path`
+// itself where it is not a regular file (/dev/stdout, a FIFO).
+std::string staging_path(const std::string& path);
+
 struct Rgba8Image {
     int width = 0, height = 0;
     std::vector<uint8_t> rgba;  // top row first

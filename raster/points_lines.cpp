@@ -5,9 +5,41 @@
 
 namespace glslrun::raster {
 
-int point_pixels(float size) {
-    if (!(size > 0.0f)) return 1;
-    return std::clamp(int(std::floor(std::min(size, 4096.0f) + 0.5f)), 1, 4096);
+namespace {
+
+// llvmpipe's subpixel_snap: 1/256 pixel, to nearest even (lrintf).
+int64_t snap256(float v) { return std::llrint(v * 256.0f); }
+// The first whole pixel at or after v/256.
+int ceil256(int64_t v) { return int((v + 255) >> 8); }
+
+}  // namespace
+
+void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool sprite) {
+    const int64_t width = snap256(size > 1.0f ? std::min(size, 4096.0f) : 1.0f);  // NaN -> 1
+    float step = 1.0f;
+    if (sprite) {
+        // Pixel x is in when x0 <= 256 x < x0 + width, the centres at whole
+        // numbers (the half-pixel offset taken off first, as llvmpipe).
+        const int64_t x0 = snap256(centre.x - 0.5f) - width / 2, y0 = snap256(centre.y - 0.5f) - width / 2;
+        prim.point_box = {ceil256(x0), ceil256(y0), ceil256(x0 + width), ceil256(y0 + width)};
+        step = 256.0f / float(width);
+    } else {
+        const int n = int((width + 127) >> 8);
+        auto first = [n](float c) {
+            int64_t fixed = snap256(c);
+            return int(n & 1 ? (fixed >> 8) - (n - 1) / 2 : ((fixed + 128) >> 8) - n / 2);
+        };
+        const int x0 = first(centre.x), y0 = first(centre.y);
+        prim.point_box = {x0, y0, x0 + n, y0 + n};
+        step = 1.0f / float(n);
+    }
+    // llvmpipe's plane constants, 0.5 - d (centre - 1/2) in double rounded
+    // once. With sprites t runs down from the top (GL's upper-left origin
+    // in a framebuffer object), without them up, as Mesa leaves it.
+    const float t_step = sprite ? -step : step;
+    prim.point_coord_step = {step, t_step};
+    prim.point_coord_origin = {float(0.5 - double(step * (centre.x - 0.5f))),
+                               float(0.5 - double(t_step * (centre.y - 0.5f)))};
 }
 
 int line_pixels(float width) {
@@ -15,15 +47,8 @@ int line_pixels(float width) {
     return std::clamp(int(std::floor(std::min(width, 255.0f) + 0.5f)), 1, 255);
 }
 
-Rect point_rect(const FsPrimitive& prim) {
-    int s = point_pixels(prim.point_size);
-    int x0 = pixel_floor(prim.point_center.x - float(s) * 0.5f + 0.5f);
-    int y0 = pixel_floor(prim.point_center.y - float(s) * 0.5f + 0.5f);
-    return {x0, y0, x0 + s, y0 + s};
-}
-
 void rasterize_point(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor) {
-    Rect r = point_rect(prim);
+    const Rect& r = prim.point_box;
     int bx0 = std::max(r.x0, scissor.x0), by0 = std::max(r.y0, scissor.y0);
     int bx1 = std::min(r.x1, scissor.x1), by1 = std::min(r.y1, scissor.y1);
     if (bx0 >= bx1 || by0 >= by1) return;

@@ -7,17 +7,22 @@
 
 namespace glslrun::raster {
 
-// Point size as GL rasterizes it: rounded to an integer, at least 1.
-int point_pixels(float size);
+// A point's square, as llvmpipe (the reference, tools/glref) rasterizes GL
+// 2.1 §3.3 in 1/256-pixel fixed point: the size, clamped to [1, 4096], and the
+// centre snapped to 1/256 (nearest, ties to even).
+//  - Point sprites: a square of the exact size, centred on the point; a
+//    pixel is in when its centre is, the left and bottom edges included.
+//    gl_PointCoord steps by 1/size per pixel.
+//  - Other points (§3.3.1): the size rounded to a whole n (n + 1/2 rounds
+//    down, as Mesa), the n x n pixels around floor(centre) (n odd) or
+//    floor(centre + 1/2) (n even). gl_PointCoord is undefined; it steps by 1/n.
+// Sets prim.point_box, point_coord_origin and point_coord_step.
+void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool sprite);
 // Line width as GL rasterizes non-antialiased lines: rounded, at least 1 (at most 255).
 int line_pixels(float width);
 
-// The pixels a point covers, before the scissor: a size x size square.
-Rect point_rect(const FsPrimitive& prim);
-
-// A point covers the size x size square whose lower-left pixel is
-// floor(centre - size/2 + 0.5); prim.count must be 1 and prim.point_size
-// already whole (point_pixels). prim must outlive the stage's next flush.
+// A point covers prim.point_box (set_point_square); prim.count must be 1.
+// prim must outlive the stage's next flush.
 void rasterize_point(FragmentStage& stage, const FsPrimitive& prim, const Rect& scissor);
 
 // A non-antialiased line covers the pixels GL 2.1 §3.4.1's diamond-exit rule

@@ -56,9 +56,11 @@ inline void scatter_quad(float* at, size_t stride, QuadF v) {
 
 // Four lanes' RGBA8 pixels as words (R in the lowest byte: memory order on
 // little-endian machines).
-inline QuadI pack_unorm8(QuadF r, QuadF g, QuadF b, QuadF a) {
+inline QuadI pack_unorm8(QuadF r, QuadF g, QuadF b, QuadF a, ColorRounding rounding) {
     static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__);
-    auto steps = [](QuadF v) { return __builtin_convertvector(unorm8_steps(v), QuadI); };
+    auto steps = [rounding](QuadF v) {
+        return rounding == ColorRounding::Gpu ? gpu_unorm8<QuadI>(v) : __builtin_convertvector(unorm8_steps(v), QuadI);
+    };
     return steps(r) | steps(g) << 8 | steps(b) << 16 | steps(a) << 24;
 }
 

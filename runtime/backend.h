@@ -111,10 +111,20 @@ public:
 // declines what it cannot take (Reference, a recursive call graph, calls
 // that expand to too much code, a build without it): the interpreter then serves, with the same bits.
 // *llvm_seconds (may be null) receives LLVM's compile time; `quick_codegen`:
-// ExecOptions::jit_quick_codegen.
+// ExecOptions::jit_quick_codegen; `stop` (may be null): the JIT gives up
+// between its phases once it is set (the interpreter then serves).
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr,
-                                               bool quick_codegen = false);
+                                               bool quick_codegen = false, const std::atomic<bool>* stop = nullptr);
+
+// How the JIT would compile `shader` (runtime/jit/jit.h: plan_compile; not
+// at all without the JIT).
+struct JitPlan {
+    bool take = false;   // whether the JIT compiles it at all
+    bool quick = false;  // without code-generation optimizations (same bits)
+    uint64_t nanos = 0;  // LLVM's expected CPU time
+};
+JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen);
 
 // An executor of `program`'s shader for `stage`, from the code cached on the
 // program (compiled at the first call for its key; thread-safe). The

@@ -1,16 +1,23 @@
 // The compiled shaders of one Program, by specialization key: made at the
-// first draw that needs them and shared by every worker and later draw.
+// first draw that needs them and shared by every worker and later draw; and
+// Backend::Auto's policy, which picks for each stage the backend that costs
+// least over the program's life.
 //
-// Tiering: a draw that asks for the JIT without waiting for it (Backend::Auto)
-// gets the interpreter while LLVM compiles on a background thread, and the
-// JIT's code from the first draw after it is ready; Backend::Jit waits. The
-// images are the same either way (the backends compute the same bits).
+// Auto starts with the interpreter and measures its time. Once a stage has
+// spent about as long interpreting as LLVM would take to compile it
+// (jit::compile_size), its compile is queued on the process's compile
+// thread (runtime/compile_queue.h): a short render never pays for a compile
+// it does not use, and a long one pays at most about twice the ideal. When
+// the code is ready the next draws run it, timed, and the stage keeps
+// whichever backend shaded a lane faster. Backend::Jit compiles at the first
+// draw and waits. The images are the same either way (the backends compute
+// the same bits).
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -18,7 +25,7 @@
 
 namespace glslrun::rt {
 
-class BackendCache {
+class BackendCache : public std::enable_shared_from_this<BackendCache> {
 public:
     struct Key {
         ir::Stage stage;
@@ -36,11 +43,16 @@ public:
     BackendCache() = default;
     BackendCache(const BackendCache&) = delete;
     BackendCache& operator=(const BackendCache&) = delete;
-    ~BackendCache();  // waits for the background compiles
+    ~BackendCache() = default;  // waits for nothing: queued compiles find it gone
 
-    // The code for `key`; for a JIT key with `wait` false, the interpreter's
-    // until the JIT's is ready (compiled in the background meanwhile).
-    const CompiledShader& get(const ir::Shader& shader, const Key& key, bool wait);
+    // The code for `key`, compiled now where it is not yet (a JIT key waits
+    // for LLVM).
+    const CompiledShader& get(const ir::Shader& shader, const Key& key);
+    // Backend::Auto: an executor of `key`'s JIT code where the policy above
+    // has chosen it, else of the interpreter's; `interp` is the same key for
+    // the interpreter.
+    std::unique_ptr<Executor> auto_executor(const ir::Shader& shader, const Key& key, const Key& interp,
+                                            const ExecParams& params);
     // Seconds LLVM spent compiling this program's shaders so far.
     double jit_compile_seconds() const;
     // The specialization policy (ExecOptions::jit_specialize_after): the
@@ -50,12 +62,26 @@ public:
     std::vector<uint32_t> specialization(const ir::Shader& shader, const std::vector<uint32_t>& store, uint64_t use,
                                          uint32_t after);
 
+    // Auto's measurements of one stage's backends, added to by the timed
+    // executors of its draws.
+    struct Meter {
+        std::atomic<uint64_t> nanos[2] = {}, lanes[2] = {};  // by Backend::Interp, Backend::Jit
+        std::atomic<bool> queued{false};  // the JIT's compile is queued or done
+        std::atomic<int> choice{-1};      // the backend kept, once measured; -1 while measuring
+        static constexpr uint64_t kUnknown = ~uint64_t(0);
+        uint64_t expected_nanos = kUnknown;  // LLVM's expected time (0: not taken); under the cache's lock
+    };
+
+    Meter& meter(ir::Stage stage) { return meters_[size_t(stage)]; }
+
 private:
-    const CompiledShader& get_locked(std::unique_lock<std::mutex>& lock, const ir::Shader& shader, const Key& key,
-                                     bool wait);
-    const CompiledShader& compile_now(const ir::Shader& shader, const Key& key);
     // Runs unlocked; the caller stores the code and its LLVM seconds.
-    static std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, const Key& key, double* seconds);
+    static std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, const Key& key, double* seconds,
+                                                   const std::atomic<bool>* stop = nullptr);
+    // Queues `key`'s compile on the compile thread (or compiles it here where
+    // there is none). Called with the lock held.
+    void queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock);
+    const CompiledShader* ready(const Key& key) const;  // with the lock held
     struct Streak {
         bool surveyed = false;
         std::vector<uint32_t> read;  // the word indices the stage reads
@@ -64,12 +90,11 @@ private:
         uint32_t draws = 0;
     };
     Streak streaks_[2];  // by ir::Stage
+    Meter meters_[2];    // by ir::Stage
 
     mutable std::mutex mutex_;
-    std::condition_variable compiled_;
     std::map<Key, std::unique_ptr<CompiledShader>> shaders_;
-    std::map<Key, bool> compiling_;  // keys whose background compile has started
-    std::vector<std::thread> threads_;
+    std::map<Key, bool> queued_;  // keys whose background compile was queued
     double jit_compile_seconds_ = 0;
 };
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/api_checks.h"
 #include "runtime/parallel.h"
 
 namespace glslrun::exec {
@@ -120,6 +121,8 @@ void fill_batch(rt::Executor& interp, const InputSource& src, uint32_t base, int
     }
 }
 
+}  // namespace
+
 std::vector<uint32_t> output_offsets(const ir::Shader& shader, uint32_t* stride) {
     std::vector<uint32_t> offset;
     *stride = 0;
@@ -129,6 +132,8 @@ std::vector<uint32_t> output_offsets(const ir::Shader& shader, uint32_t* stride)
     }
     return offset;
 }
+
+namespace {
 
 // Vertices per job of the workers, and the draw size below which starting
 // threads costs more than it saves.
@@ -194,6 +199,7 @@ Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& a
     auto plan = plan_inputs(vs, attribs, count, current);
     if (!plan) return plan.error();
     out.offset = output_offsets(vs, &out.stride);
+    if (Status st = rt::check_batch_size(count, out.stride, "vertices"); !st) return st;
     // Not cleared: shade_range writes every component of every vertex.
     out.data.resize(size_t(count) * out.stride);
     size_t jobs = (size_t(count) + kVertexJob - 1) / kVertexJob;
@@ -217,9 +223,22 @@ Status shade_vertices(const Program& program, const std::vector<VertexAttrib>& a
 
 namespace glslrun {
 
-Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
-                                               uint32_t count, const GLState* gl) {
-    if (Status st = check_valid(program); !st) return st.error();
+namespace {
+
+// What run_vertices and run_fragments check before they run.
+Status check_run_input(const Program& program, const GLState* gl) {
+    if (Status st = check_valid(program); !st) return st;
+    if (Status st = rt::check_exec_options(program.exec); !st) return st;
+    return gl ? rt::check_gl_enums(*gl) : Status(Ok{});
+}
+
+Result<std::vector<ShaderOutput>> vertices_of(const Program& program, const std::vector<VertexAttrib>& attribs,
+                                              uint32_t count, const GLState* gl) {
+    if (Status st = check_run_input(program, gl); !st) return st.error();
+    uint32_t stride = 0;
+    exec::output_offsets(state_of(program).ir.vertex, &stride);
+    // The shaded vertices, then their copy as ShaderOutputs.
+    if (Status st = rt::check_batch_size(count, 2 * uint64_t(stride), "vertices"); !st) return st.error();
     exec::VertexOutputs shaded;
     if (Status st = exec::shade_vertices(program, attribs, count, gl ? *gl : GLState{}, shaded); !st)
         return st.error();
@@ -237,11 +256,14 @@ Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std
     return outputs;
 }
 
-Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
-                                                uint32_t count, const GLState* gl) {
-    if (Status valid = check_valid(program); !valid) return valid.error();
+Result<std::vector<ShaderOutput>> fragments_of(const Program& program, const std::vector<VertexAttrib>& inputs,
+                                               uint32_t count, const GLState* gl) {
+    if (Status valid = check_run_input(program, gl); !valid) return valid.error();
     const Program::State& st = state_of(program);
     const ir::Shader& fs = st.ir.fragment;
+    uint64_t words = 1;  // "discarded"
+    for (const ir::Binding& b : fs.outputs) words += b.count;
+    if (Status size = rt::check_batch_size(count, words, "fragments"); !size) return size.error();
     const GLState defaults;
     const GLState& state = gl ? *gl : defaults;
     auto plan = exec::plan_inputs(fs, inputs, count, state);
@@ -273,6 +295,18 @@ Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const st
     }
     outputs.push_back(std::move(discarded));
     return outputs;
+}
+
+}  // namespace
+
+Result<std::vector<ShaderOutput>> run_vertices(const Program& program, const std::vector<VertexAttrib>& attribs,
+                                               uint32_t count, const GLState* gl) {
+    return rt::without_throwing("run_vertices()", [&] { return vertices_of(program, attribs, count, gl); });
+}
+
+Result<std::vector<ShaderOutput>> run_fragments(const Program& program, const std::vector<VertexAttrib>& inputs,
+                                                uint32_t count, const GLState* gl) {
+    return rt::without_throwing("run_fragments()", [&] { return fragments_of(program, inputs, count, gl); });
 }
 
 }  // namespace glslrun

@@ -32,6 +32,10 @@ Result<std::vector<std::vector<uint32_t>>> vertex_input_words(const ir::Shader& 
                                                                uint32_t count, const GLState& current,
                                                                uint32_t element);
 
+// The offset of each of `shader`'s outputs in a vertex of VertexOutputs, and
+// in *stride the floats of a vertex.
+std::vector<uint32_t> output_offsets(const ir::Shader& shader, uint32_t* stride);
+
 // An interpreter failure (loop cap) as a user-facing error.
 Error run_error(const Program::State& state, ir::Stage stage, const rt::RunError& error);
 

@@ -1,48 +1,48 @@
 // The per-program cache of fused fragment pipelines (runtime/fragment_pipeline.h).
 #include "runtime/fragment_pipeline.h"
 
-#include <system_error>
-
+#include "runtime/compile_queue.h"
 #ifdef GLSLRUN_HAVE_JIT
 #include "runtime/jit/engine.h"
 #endif
 
 namespace glslrun::rt {
 
-PipelineCache::~PipelineCache() {
-    for (std::thread& t : threads_) t.join();
+void PipelineCache::store(const PipelineKey& key, std::unique_ptr<FragmentPipeline>& code, double seconds) {
+    compile_seconds_ += seconds;
+    if (done_[key]) return;  // compiled twice (Backend::Jit did not wait): draws may hold the first
+    pipelines_[key] = std::move(code);
+    done_[key] = true;
 }
 
 const FragmentPipeline* PipelineCache::get(const PipelineKey& key, const PrimitiveLayout& layout, bool wait) {
 #ifdef GLSLRUN_HAVE_JIT
     if (unfused_.load(std::memory_order_relaxed) < kPipelineAfterFragments) return nullptr;
     std::unique_lock lock(mutex_);
-    auto compile = [this, key, layout] {
+    auto compile_here = [&] {
+        lock.unlock();
         double seconds = 0;
         std::unique_ptr<FragmentPipeline> code = jit::compile_pipeline(key, layout, &seconds);
-        std::lock_guard done(mutex_);
-        pipelines_[key] = std::move(code);
-        done_[key] = true;
-        compile_seconds_ += seconds;
-        compiled_.notify_all();
+        lock.lock();
+        store(key, code, seconds);
     };
     if (auto found = done_.find(key); found == done_.end()) {
         done_[key] = false;
-        if (wait) {
-            lock.unlock();
-            compile();
-            lock.lock();
-        } else {
-            try {
-                threads_.emplace_back(compile);
-            } catch (const std::system_error&) {
-                lock.unlock();
-                compile();  // no thread to be had: compile here
-                lock.lock();
+        std::weak_ptr<PipelineCache> self = weak_from_this();
+        auto job = [self, key, layout] {
+            if (self.expired() || compiles_stopping().load()) return;  // the program is gone, or the process
+            double seconds = 0;
+            std::unique_ptr<FragmentPipeline> code = jit::compile_pipeline(key, layout, &seconds);
+            if (std::shared_ptr<PipelineCache> cache = self.lock()) {
+                std::lock_guard done(cache->mutex_);
+                cache->store(key, code, seconds);
             }
-        }
+        };
+        if (wait || self.expired() || !submit_compile(job)) compile_here();
     }
-    if (wait) compiled_.wait(lock, [&] { return done_[key]; });
+    // Backend::Jit asked after Auto had queued it: compile it here rather
+    // than wait behind other programs' compiles.
+    if (wait && !done_[key]) compile_here();
     return done_[key] ? pipelines_[key].get() : nullptr;
 #else
     (void)key, (void)layout, (void)wait;

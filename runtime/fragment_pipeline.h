@@ -19,12 +19,10 @@
 #pragma once
 #include <array>
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -42,7 +40,7 @@ struct PrimitiveLayout {
     uint32_t ox = 0, oy = 0;  // int32: the planes' origin
     uint32_t front = 0;       // bool
     uint32_t count = 0;       // int32: 1 point, 2 line, 3 triangle
-    uint32_t point_center = 0, point_size = 0;  // two floats, a float
+    uint32_t point_coord_origin = 0, point_coord_step = 0;  // two floats each
 };
 
 // Where a shader input component comes from.
@@ -82,14 +80,15 @@ struct PipelineKey {
     std::vector<PipelineInput> inputs;  // per input register, in the order the fragment stage passes them
     uint32_t color_channels = 0;        // components of the colour output (0: none written)
     bool float_color = false;           // float storage, else RGBA8 (clamped, rounded to n/255)
+    bool gpu_rounding = false;          // RGBA8 bytes as ColorRounding::Gpu rounds them, else Nearest
     bool depth_output = false;          // gl_FragDepth written
     bool depth_test = false, depth_write = false, early_depth = false;
     CompareFunc depth_func = CompareFunc::Less;
     ColorOps color_ops;  // only with RGBA8 storage, colour written and no late depth test
     bool avx2 = false;
     auto tie() const {
-        return std::tie(inputs, color_channels, float_color, depth_output, depth_test, depth_write, early_depth,
-                        depth_func, color_ops, avx2);
+        return std::tie(inputs, color_channels, float_color, gpu_rounding, depth_output, depth_test, depth_write,
+                        early_depth, depth_func, color_ops, avx2);
     }
     bool operator<(const PipelineKey& o) const { return tie() < o.tie(); }
 };
@@ -140,14 +139,14 @@ struct FragmentPipeline {
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
 // The pipelines of one Program, by key, compiled once and shared by its
-// workers and later draws. Tiering as for shaders (runtime/backend_cache.h):
-// without `wait`, null until a background compile is done.
-class PipelineCache {
+// workers and later draws. Without `wait`, null until a compile queued on
+// the process's compile thread (runtime/compile_queue.h) is done.
+class PipelineCache : public std::enable_shared_from_this<PipelineCache> {
 public:
     PipelineCache() = default;
     PipelineCache(const PipelineCache&) = delete;
     PipelineCache& operator=(const PipelineCache&) = delete;
-    ~PipelineCache();  // waits for the background compiles
+    ~PipelineCache() = default;  // waits for nothing: queued compiles find it gone
 
     // Null where the JIT is not built in or declined the key, and until the
     // program has shaded kPipelineAfterFragments fragments without one.
@@ -159,10 +158,10 @@ public:
 
 private:
     mutable std::mutex mutex_;
-    std::condition_variable compiled_;
     std::map<PipelineKey, std::unique_ptr<FragmentPipeline>> pipelines_;
     std::map<PipelineKey, bool> done_;  // compiled (the pipeline may still be null: declined)
-    std::vector<std::thread> threads_;
+    // Stores a compile's result (under the lock); leaves `code` where the key has one.
+    void store(const PipelineKey& key, std::unique_ptr<FragmentPipeline>& code, double seconds);
     double compile_seconds_ = 0;
     std::atomic<uint64_t> unfused_{0};
 };

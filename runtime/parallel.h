@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -87,23 +88,43 @@ private:
 
 // Calls work(k) for k in [0, workers), k = 0 on the calling thread, and
 // returns when all are done. When a thread cannot be started the others do
-// its share, so `work` must take its jobs from a shared JobQueue.
+// its share, so `work` must take its jobs from a shared JobQueue. An
+// exception of any worker (std::bad_alloc) reaches the caller once all are
+// done, instead of std::terminate on the worker's thread.
 template <class Work>
 void run_workers(unsigned workers, Work&& work) {
     using Fn = std::remove_reference_t<Work>;
     struct Call {
         Fn* work;
         unsigned k;
+        std::exception_ptr error;
     };
     std::vector<Call> calls;
     calls.reserve(workers);  // the threads hold pointers into it
-    WorkerThreads threads;   // joined before `calls` goes
-    for (unsigned k = 1; k < workers; ++k) {
-        calls.push_back({&work, k});
-        auto entry = [](void* p) { (*static_cast<Call*>(p)->work)(static_cast<Call*>(p)->k); };
-        if (!threads.start(entry, &calls.back())) break;
+    std::exception_ptr error;
+    {
+        WorkerThreads threads;  // joined at the end of this scope, before `calls` is read
+        for (unsigned k = 1; k < workers; ++k) {
+            calls.push_back({&work, k, nullptr});
+            auto entry = [](void* p) {
+                auto* call = static_cast<Call*>(p);
+                try {
+                    (*call->work)(call->k);
+                } catch (...) {
+                    call->error = std::current_exception();
+                }
+            };
+            if (!threads.start(entry, &calls.back())) break;
+        }
+        try {
+            work(0u);
+        } catch (...) {
+            error = std::current_exception();
+        }
     }
-    work(0u);
+    for (const Call& call : calls)
+        if (!error) error = call.error;
+    if (error) std::rethrow_exception(error);
 }
 
 }  // namespace glslrun::rt

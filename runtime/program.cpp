@@ -100,7 +100,7 @@ Result<const ir::Uniform*> locate(const ir::Program& p, std::string_view name, s
 
 }  // namespace
 
-Status Program::set_uniform(std::string_view name, std::span<const float> values) {
+Status Program::set_uniform(std::string_view name, Span<const float> values) {
     ProgramUse use(*this);
     if (!use.status()) return use.status();
     uint32_t element = 0;
@@ -119,7 +119,7 @@ Status Program::set_uniform(std::string_view name, std::span<const float> values
     return Ok{};
 }
 
-Status Program::set_uniform(std::string_view name, std::span<const int32_t> values) {
+Status Program::set_uniform(std::string_view name, Span<const int32_t> values) {
     ProgramUse use(*this);
     if (!use.status()) return use.status();
     uint32_t element = 0;
@@ -167,6 +167,14 @@ std::vector<UniformInfo> Program::uniforms() const {
     if (!valid()) return out;
     for (const ir::Uniform& u : state_->ir.uniforms)
         out.push_back({u.name, glsl_type_name(u.type), u.array_size, u.builtin, u.read});
+    return out;
+}
+
+std::vector<Program::Input> Program::inputs(Stage stage) const {
+    std::vector<Input> out;
+    if (!valid()) return out;
+    const ir::Shader& shader = stage == Stage::Vertex ? state_->ir.vertex : state_->ir.fragment;
+    for (const ir::Binding& b : shader.inputs) out.push_back({b.name, b.count});
     return out;
 }
 

@@ -7,10 +7,13 @@
 // reaches here as coord = (s/q, t/q), ddx/ddy of those, and no bias. A unit
 // out of range, or no texture bound to the sampler's target on that unit,
 // samples as (0, 0, 0, 1): GL 2.1 §3.8.10's result for an incomplete texture.
+#include <algorithm>
+#include <bit>
 #include <cstring>
+#include <type_traits>
 
 #include "runtime/interp_kernels.h"
-#include "runtime/sampling.h"
+#include "runtime/sampling_batch.h"
 
 namespace glslrun::rt::kernels {
 
@@ -52,6 +55,63 @@ LaneLookup lane_lookup(const ir::TexInfo& info, const Operands<W>& ops, int lane
     return lk;
 }
 
+// The operands as float arrays for sample_batch(): the register block
+// itself in the fp32 modes, a rounded copy of the operands in Reference mode.
+template <class W>
+struct FloatOperands {
+    static constexpr uint32_t kMax = 12;  // 3 + ref + lod + 3 + 3, and a spare
+    alignas(32) float copy[std::is_same_v<FloatOf<W>, float> ? 1 : kMax][kLanes];
+    alignas(32) float zeros[kLanes] = {};
+    const float* base = nullptr;
+
+    FloatOperands(const ir::TexInfo& info, const FloatOf<W>* block) {
+        if constexpr (std::is_same_v<FloatOf<W>, float>) {
+            (void)info;
+            base = block;
+        } else {
+            const uint32_t n = std::min(info.operand_count(), kMax);
+            for (uint32_t k = 0; k < n; ++k)
+                for (int i = 0; i < kLanes; ++i) copy[k][i] = float(block[size_t(k) * kLanes + size_t(i)]);
+            base = copy[0];
+        }
+    }
+    const float* at(uint32_t k) const { return base + size_t(k) * kLanes; }
+    // Component c of the vector operand at `first` with `dims` components.
+    const float* component(uint32_t first, uint32_t dims, uint32_t c) const { return c < dims ? at(first + c) : zeros; }
+
+    BatchLookup lookup(const ir::TexInfo& info) const {
+        BatchLookup lk;
+        const uint32_t dims = info.dims();
+        lk.implicit = info.lod != ir::TexLod::Explicit;
+        lk.bias = info.lod == ir::TexLod::ImplicitBias;
+        for (uint32_t c = 0; c < 3; ++c) {
+            lk.coord[c] = component(0, dims, c);
+            lk.ddx[c] = lk.implicit ? component(info.ddx_at(), dims, c) : zeros;
+            lk.ddy[c] = lk.implicit ? component(info.ddy_at(), dims, c) : zeros;
+        }
+        if (info.shadow) lk.ref = at(info.ref_at());
+        if (info.lod != ir::TexLod::Implicit) lk.lod = at(info.lod_at());
+        return lk;
+    }
+};
+
+// The lanes of `lanes` whose unit is the same as lane `first`'s.
+template <class W>
+LaneMask same_unit(const W* units, LaneMask lanes, int first) {
+    // Usually every lane holds the uniform's one unit: one vectorised test.
+    W differ = 0;
+    for (int i = 0; i < kLanes; ++i) differ |= units[i] ^ units[first];
+    if (!differ) return lanes;
+    LaneMask same = 0;
+    for (int i = 0; i < kLanes; ++i) same |= LaneMask(units[i] == units[first]) << i;
+    return same & lanes;
+}
+
+bool use_avx2() {
+    static const bool avx2 = cpu_has_avx2();  // the CPU and the environment do not change
+    return avx2;
+}
+
 }  // namespace
 
 template <class W>
@@ -59,27 +119,41 @@ void tex(const Step<W>& s, Machine<W>& m) {
     using F = FloatOf<W>;
     const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
     const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
-    const LaneMask active = m.mask.active() & m.lookups;
-    alignas(64) F out[ir::kTexResults][kLanes] = {};
-    // The lanes' texture is almost always one: its completeness is asked once.
-    const Texture* last = nullptr;
-    bool last_complete = false;
+    alignas(64) float out[ir::kTexResults][kLanes];
+    // An incomplete texture samples as (0, 0, 0, 1), as nothing bound (GL
+    // 2.1 §3.8.10), and so do the lanes that skip their lookups.
     for (int i = 0; i < kLanes; ++i) {
-        if (!((active >> i) & 1)) continue;
-        const Texture* texture = bound_texture(m, s.src[0][i], info.target);
-        if (texture && texture != last) {
-            last = texture;
-            last_complete = texture->complete();
+        out[0][i] = out[1][i] = out[2][i] = 0.0f;
+        out[3][i] = 1.0f;
+    }
+    const LaneMask lookups = m.mask.active() & m.lookups;
+    if (m.lookups != kAllLanes)
+        for (int i = 0; i < kLanes; ++i)
+            if (!((m.lookups >> i) & 1)) out[3][i] = 0.0f;  // skipped lookups read 0
+    const FloatOperands<W> floats(info, ops.block);
+    const BatchLookup batch = floats.lookup(info);
+    // The lanes' unit is almost always one: each unit's lanes are sampled together.
+    LaneMask left = lookups;
+    while (left) {
+        const int first = std::countr_zero(left);
+        const LaneMask lanes = same_unit(s.src[0], left, first);
+        left &= ~lanes;
+        const Texture* texture = bound_texture(m, s.src[0][first], info.target);
+        if (!texture || !texture->complete()) continue;
+        if (batch_samples(*texture)) {
+            sample_batch(*texture, batch, lanes, out, use_avx2());
+            continue;
         }
-        // An incomplete texture samples as (0, 0, 0, 1), as nothing bound (GL 2.1 §3.8.10).
-        const bool samples = texture && last_complete;
-        float texel[ir::kTexResults] = {0.0f, 0.0f, 0.0f, 1.0f};
-        if (samples) sample_complete_lane(*texture, lane_lookup(info, ops, i), texel);
-        for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = F(texel[c]);
+        for (int i = 0; i < kLanes; ++i) {
+            if (!((lanes >> i) & 1)) continue;
+            float texel[ir::kTexResults];
+            sample_complete_lane(*texture, lane_lookup(info, ops, i), texel);
+            for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = texel[c];
+        }
     }
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
         W words[kLanes];
-        std::memcpy(words, out[c], sizeof words);
+        for (int i = 0; i < kLanes; ++i) words[i] = std::bit_cast<W>(F(out[c][i]));
         m.write(s.dst + size_t(c) * kLanes, words);
     }
 }

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/api_checks.h"
 #include "runtime/texture_levels.h"
 
 namespace glslrun {
@@ -144,6 +145,7 @@ bool chain_complete(const std::vector<TextureImage>& chain, int base, int q) {
 
 // ------------------------------------------------------------ Texture ---
 Result<Texture> Texture::create(TextureTarget target, std::vector<TextureImage> faces, TextureFormat format) {
+    if (Status st = rt::check_texture_enums(target, format); !st) return st.error();
     const bool cube = target == TextureTarget::Cube;
     const size_t want = cube ? 6 : 1;
     if (faces.size() != want)
@@ -160,15 +162,17 @@ Result<Texture> Texture::create(TextureTarget target, std::vector<TextureImage> 
                                      kFaceNames[f], faces[f].width, faces[f].height, faces[0].width,
                                      faces[0].height));
     }
-    Texture t;
-    t.target_ = target;
-    t.format_ = format;
-    t.levels_.resize(want);
-    for (size_t f = 0; f < want; ++f) {
-        store_image(format, faces[f]);
-        t.levels_[f].push_back(std::move(faces[f]));
-    }
-    return Result<Texture>(std::move(t));
+    return rt::without_throwing("Texture::create", [&] {
+        Texture t;
+        t.target_ = target;
+        t.format_ = format;
+        t.levels_.resize(want);
+        for (size_t f = 0; f < want; ++f) {
+            store_image(format, faces[f]);
+            t.levels_[f].push_back(std::move(faces[f]));
+        }
+        return Result<Texture>(std::move(t));
+    });
 }
 
 Status Texture::set_level(int face, int level, TextureImage image) {
@@ -180,11 +184,13 @@ Status Texture::set_level(int face, int level, TextureImage image) {
                                  target_name(target_)));
     if (std::string why = check_image(target_, image, level); !why.empty())
         return Error(fmt::format("level {}: {}", level, why));
-    store_image(format_, image);
-    std::vector<TextureImage>& chain = levels_[size_t(face)];
-    if (chain.size() <= size_t(level)) chain.resize(size_t(level) + 1);  // the levels between stay undefined
-    chain[size_t(level)] = std::move(image);
-    return Ok{};
+    return rt::without_throwing("Texture::set_level", [&]() -> Status {
+        store_image(format_, image);
+        std::vector<TextureImage>& chain = levels_[size_t(face)];
+        if (chain.size() <= size_t(level)) chain.resize(size_t(level) + 1);  // the levels between stay undefined
+        chain[size_t(level)] = std::move(image);
+        return Ok{};
+    });
 }
 
 // GenerateMipmap (GL 3.0 §3.8.8, GL 2.1's GENERATE_MIPMAP alike): levels
@@ -244,6 +250,7 @@ Status GLState::bind_texture(int unit, std::shared_ptr<const Texture> texture) {
         bound.fill(nullptr);
         return Ok{};
     }
+    if (Status st = rt::check_texture_enums(texture->target(), texture->format()); !st) return st;
     const size_t target = size_t(texture->target());
     bound[target] = std::move(texture);
     return Ok{};

@@ -125,17 +125,22 @@ void image_keys(std::string& out, const ImageError& e) {
 
 }  // namespace
 
-Result<std::vector<std::string>> write_error_images(const ErrorReport& r, const std::string& dir) {
+Result<std::vector<std::string>> write_error_images(const ErrorReport& r, const std::string& dir,
+                                                    const std::function<Status(const std::string&)>& check_path) {
     namespace fs = std::filesystem;
     std::vector<std::string> written;
     auto write = [&](const Image& image, const std::string& name) -> Status {
         std::string path = (fs::path(dir) / name).string();
+        if (check_path)
+            if (Status st = check_path(path); !st) return st;
         if (Status st = write_png(image, path); !st) return st;
         written.push_back(path);
         return Ok{};
     };
     if (Status st = write(r.reference_image, "reference.png"); !st) return st.error();
     if (Status st = write(r.mode_image, fmt::format("actual-{}.png", precision_name(r.mode))); !st) return st.error();
+    if (!r.outputs.empty())
+        if (Status st = write(heat_map_legend_image(), "heat_legend.png"); !st) return st.error();
     for (const ImageError& e : r.outputs) {
         if (Status st = write(heat_map(e), file_stem(e.name) + "_ulp.png"); !st) return st.error();
         if (!e.quantized) continue;
@@ -161,7 +166,7 @@ std::string format_error_table(const ErrorReport& r, const std::vector<std::stri
     if (!files.empty()) {
         out += "\nfiles:";
         for (const std::string& f : files) out += " " + f;
-        out += "\nheat maps (*_ulp.png): " + heat_map_legend() + "\n";
+        out += "\nheat maps (*_ulp.png, their legend in heat_legend.png): " + heat_map_legend() + "\n";
         out += "8-bit differences (*_diff8.png): the reference dimmed, pixels that differ in red\n";
     }
     return out;

@@ -9,6 +9,7 @@
 #include "raster/framebuffer.h"
 #include "raster/png.h"
 #include "glslrun/scene/scene.h"
+#include "scene/text_file.h"
 
 namespace glslrun::scene {
 
@@ -64,12 +65,15 @@ int accumulate(CompareStats& s, std::array<uint64_t, 4>& sums, const uint8_t* re
 
 // ----------------------------------------------------------- public API ---
 Result<Image> read_png(const std::string& path) {
+    // A FIFO would block libpng's fopen for ever.
+    if (Status st = check_regular_file(path, "the image"); !st) return st.error();
     auto read = png::read_rgba8(path, kMaxImageSide);
     if (!read) return read.error();
     return Image{read->width, read->height, std::move(read->rgba)};
 }
 
 Status write_png(const Image& image, const std::string& path) {
+    if (Status st = check_path(path, "output"); !st) return st;
     if (Status st = check_image(image, "output"); !st) return st;
     return png::write_rgba8(path, image.width, image.height, [&](int y, uint8_t*) { return image.pixel(0, y); });
 }

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
 namespace glslrun::scene {
@@ -38,6 +39,18 @@ bool is_integer_type(std::string_view type) {
            type.starts_with("bvec") || type.starts_with("sampler");
 }
 
+// What follows "has no active uniform 'x'": the closest non-built-in name
+// when the user probably misspelt it, else the usual causes.
+std::string no_uniform_hint(const std::vector<const std::vector<UniformInfo>*>& lists, std::string_view name) {
+    std::vector<std::string_view> names;
+    for (const auto* list : lists)
+        for (const UniformInfo& u : *list)
+            if (!u.builtin) names.push_back(u.name);
+    std::string best = detail::closest(name, names);
+    if (!best.empty()) return fmt::format("; did you mean '{}'?", best);
+    return " (is it declared and used by a shader?)";
+}
+
 Error error_at(const SourceLoc& where, std::string message) {
     return Error(std::move(message), where.file, where.line);
 }
@@ -45,8 +58,8 @@ Error error_at(const SourceLoc& where, std::string message) {
 Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const UniformSetting& s) {
     const UniformInfo* info = find_declaration(infos, s.name);
     if (!info)
-        return error_at(s.where, fmt::format("the program has no active uniform '{}' (is it "
-                                             "declared and used by a shader?)", s.name));
+        return error_at(s.where, fmt::format("the program has no active uniform '{}'{}", s.name,
+                                             no_uniform_hint({&infos}, s.name)));
     Status st = Ok{};
     if (is_integer_type(info->type)) {
         if (!s.integral && info->type.starts_with("sampler"))
@@ -120,6 +133,9 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     GLState gl = *state;
     gl.texture_units = bound.texture_units;
     gl.modelview = (pass && pass->view ? *pass->view : scene.view) * object.model;
+    // A pass with a camera of its own keeps its projection; the others draw with the scene's.
+    if (!(pass && pass->own_projection)) gl.projection = scene.projection;
+    gl.lights = eye_space_lights(scene);
     if (object.front_material) gl.front_material = *object.front_material;
     if (object.back_material) gl.back_material = *object.back_material;
     if (object.color) gl.current_color = *object.color;
@@ -159,9 +175,12 @@ Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scen
         for (const UniformSetting& s : settings) {
             bool found = false;
             for (const auto& list : infos) found = found || find_declaration(list, s.name);
-            if (!found)
-                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}' (is it "
-                                                     "declared and used by a shader?)", s.name));
+            if (!found) {
+                std::vector<const std::vector<UniformInfo>*> lists;
+                for (const auto& list : infos) lists.push_back(&list);
+                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}'{}", s.name,
+                                                     no_uniform_hint(lists, s.name)));
+            }
         }
         return Ok{};
     };
@@ -219,6 +238,34 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, GLState& bound
         for (size_t i : pass->objects)
             if (Status st = draw_object(scene.objects[i]); !st) return st.error();
     return total;
+}
+
+// scene.gl's modelview, projection and lights are copies of view, projection
+// and lights (load_scene fills them in); draws take the originals. A copy set
+// to something else would be ignored: refuse it instead.
+Status check_gl_copies(const Scene& scene) {
+    const GLState defaults;
+    auto problem = [](const char* copy, const char* source) {
+        return Error(fmt::format("scene.gl.{} differs from scene.{}, which rendering uses: set scene.{} (and "
+                                 "leave scene.gl.{} at GL's default, or call derive_eye_space_lights())",
+                                 copy, source, source, copy));
+    };
+    if (scene.gl.modelview != defaults.modelview && scene.gl.modelview != scene.view)
+        return problem("modelview", "view");
+    if (scene.gl.projection != defaults.projection && scene.gl.projection != scene.projection)
+        return problem("projection", "projection");
+    std::array<LightState, 8> eye = eye_space_lights(scene);
+    auto same = [](const LightState& a, const LightState& b) {
+        return a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+               a.position == b.position && a.spot_direction == b.spot_direction &&
+               a.spot_exponent == b.spot_exponent && a.spot_cutoff == b.spot_cutoff &&
+               a.constant_attenuation == b.constant_attenuation && a.linear_attenuation == b.linear_attenuation &&
+               a.quadratic_attenuation == b.quadratic_attenuation;
+    };
+    for (size_t i = 0; i < eye.size(); ++i)
+        if (!same(scene.gl.lights[i], defaults.lights[i]) && !same(scene.gl.lights[i], eye[i]))
+            return problem(fmt::format("lights[{}]", i).c_str(), fmt::format("lights[{}]", i).c_str());
+    return Ok{};
 }
 
 // The render targets' framebuffers, as glref's FBOs start: colour (0, 0, 0, 0),
@@ -279,6 +326,7 @@ void flush_clear(Framebuffer& fb, ClearValues& pending) {
 
 Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                               ClearValues& pending) {
+    if (Status st = check_gl_copies(scene); !st) return st.error();
     if (!scene.passes.empty())
         if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
@@ -314,6 +362,8 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
 
 Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                                      const ClearValues& clear) {
+    // Scenes store colours as their precision mode's GL would (Fast: the GPU's rule).
+    fb.rounding = color_rounding_for(programs.of_pass(0).exec.precision);
     ClearValues pending = clear;
     auto result = draw_passes(programs, scene, fb, pending);
     // No object, or an error before the first draw: the clear still happens.

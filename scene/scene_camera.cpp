@@ -291,20 +291,36 @@ std::string size_problem(int64_t width, int64_t height) {
 
 }  // namespace detail
 
-void derive_eye_space_lights(Scene& scene) {
+std::array<LightSetting, 8> default_light_settings() {
+    const GLState defaults;
+    std::array<LightSetting, 8> lights;
+    for (size_t i = 0; i < lights.size(); ++i) lights[i].as_given = defaults.lights[i];
+    return lights;
+}
+
+std::array<LightState, 8> eye_space_lights(const Scene& scene) {
     // glLightfv transforms GL_POSITION by the modelview and GL_SPOT_DIRECTION
     // by its upper 3x3 (GL 2.1 §2.14.1); parameters the file left out keep
     // their eye-space defaults, which no modelview ever transformed.
+    const LightState defaults;
     glm::dmat4 view(scene.view);
+    std::array<LightState, 8> eye;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const LightSetting& l = scene.lights[i];
-        LightState eye = l.as_given;
-        if (l.world_space && l.has_position)
-            eye.position = glm::vec4(view * glm::dvec4(l.as_given.position));
-        if (l.world_space && l.has_spot_direction)
-            eye.spot_direction = glm::vec3(glm::dmat3(view) * glm::dvec3(l.as_given.spot_direction));
-        scene.gl.lights[i] = eye;
+        bool position = l.has_position || l.as_given.position != defaults.position;
+        bool direction = l.has_spot_direction || l.as_given.spot_direction != defaults.spot_direction;
+        eye[i] = l.as_given;
+        if (l.world_space && position) eye[i].position = glm::vec4(view * glm::dvec4(l.as_given.position));
+        if (l.world_space && direction)
+            eye[i].spot_direction = glm::vec3(glm::dmat3(view) * glm::dvec3(l.as_given.spot_direction));
     }
+    return eye;
+}
+
+void derive_eye_space_lights(Scene& scene) {
+    scene.gl.modelview = scene.view;
+    scene.gl.projection = scene.projection;
+    scene.gl.lights = eye_space_lights(scene);
 }
 
 Status resize_scene(Scene& scene, int width, int height) {
@@ -313,7 +329,7 @@ Status resize_scene(Scene& scene, int width, int height) {
     scene.height = height;
     if (scene.camera.kind == Camera::Kind::Perspective && scene.camera.aspect == 0) {
         scene.projection = glm::mat4(detail::projection_of(scene.camera, width, height));
-        scene.gl.projection = scene.projection;
+        derive_eye_space_lights(scene);
         // Every state drawn with the scene's camera: the objects' and the passes' copies.
         for (Object& o : scene.objects)
             if (o.state) o.state->projection = scene.projection;

@@ -77,12 +77,14 @@ int count(const Section& s, std::string_view key, int fallback, int min, int max
     return n ? int(integer(*n, s.name(key), min, max)) : fallback;
 }
 
-Mesh load_obj_mesh(const Section& s, const std::string& scene_dir, const std::string& object) {
+Mesh load_obj_mesh(const Section& s, const std::string& scene_dir, const std::string& object,
+                   std::vector<std::string>& files) {
     const toml::node& n = s.require("file", "the OBJ file, relative to the scene file");
     auto file = n.as_string();
     if (!file) fail(n, fmt::format("'{}' must be a file name (got {})", s.name("file"), describe(n)));
     std::filesystem::path path(file->get());
     if (path.is_relative() && !scene_dir.empty()) path = std::filesystem::path(scene_dir) / path;
+    files.push_back(path.string());
     Result<Mesh> mesh = load_obj(path.string());
     if (mesh) return std::move(*mesh);
     // The scene's line first (which object), then the loader's own diagnostics.
@@ -93,7 +95,7 @@ Mesh load_obj_mesh(const Section& s, const std::string& scene_dir, const std::st
 }
 
 Mesh build_mesh(const Section& s, const MeshKind& kind, const std::string& scene_dir,
-                const std::string& object) {
+                const std::string& object, std::vector<std::string>& files) {
     std::string_view k = kind.name;
     if (k == "teapot") return make_teapot(positive(s, "size", 1.0), count(s, "subdivisions", 10, 1, kMaxTeapotSubdivisions));
     if (k == "quad") return make_lecture_quad();
@@ -105,7 +107,7 @@ Mesh build_mesh(const Section& s, const MeshKind& kind, const std::string& scene
                           count(s, "sides", 16, 3), count(s, "rings", 32, 3));
     if (k == "plane") return make_plane(positive(s, "size", 1.0), count(s, "subdivisions", 1, 1));
     if (k == "arrays") return read_array_mesh(s);
-    return load_obj_mesh(s, scene_dir, object);
+    return load_obj_mesh(s, scene_dir, object, files);
 }
 
 // [objects.material] is glMaterial(GL_FRONT_AND_BACK) for this object, then
@@ -139,7 +141,8 @@ std::string object_name(const Section& s, size_t index) {
     return str->get();
 }
 
-Object read_object(const toml::node& n, size_t index, const std::string& scene_dir, const Scene& scene) {
+Object read_object(const toml::node& n, size_t index, const std::string& scene_dir, const Scene& scene,
+                   std::vector<std::string>& files) {
     std::string what = fmt::format("objects[{}]", index);
     Section s(table(n, what), what);
     s.allow(all_object_keys());
@@ -148,7 +151,7 @@ Object read_object(const toml::node& n, size_t index, const std::string& scene_d
     Object object;
     object.name = object_name(s, index);
     object.where = location(n);
-    object.mesh = build_mesh(s, kind, scene_dir, object.name);
+    object.mesh = build_mesh(s, kind, scene_dir, object.name, files);
     read_vertex_colors(s, object.mesh);
     if (auto t = s.get("transform")) object.model = glm::mat4(transform_list(*t, s.name("transform")));
     if (auto c = s.get("color")) object.color = glm::vec4(color(*c, s.name("color")));
@@ -175,7 +178,9 @@ void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scen
         for (int face = 0; face < t.texture->faces(); ++face)
             for (const TextureImage& level : t.texture->levels(face)) texels += int64_t(level.texels.size());
     for (size_t i = 0; i < list->size(); ++i) {
-        scene.objects.push_back(read_object((*list)[i], i, scene_dir, scene));
+        std::vector<std::string> files;
+        scene.objects.push_back(read_object((*list)[i], i, scene_dir, scene, files));
+        scene.files.insert(scene.files.end(), files.begin(), files.end());
         // glBindTexture before this object's draw: its own texture objects.
         if (const toml::node* t = (*list)[i].as_table()->get("textures"))
             read_texture_units(*t, fmt::format("objects[{}].textures", i), scene_dir, scene,

@@ -59,15 +59,6 @@ void read_animation(const Section& s, Animation& animation) {
 Section section(const toml::node& n, const char* name) { return Section(detail::table(n, name), name); }
 
 // Lights the file leaves out keep GL's eye-space defaults; no transform.
-void init_lights(Scene& scene) {
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-        LightSetting& l = scene.lights[i];
-        l.enabled = false;
-        l.as_given = scene.gl.lights[i];
-        l.has_position = l.has_spot_direction = false;
-    }
-}
-
 Scene build_scene(const toml::table& root, const std::string& path) {
     Section top(root, "");
     top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
@@ -75,7 +66,6 @@ Scene build_scene(const toml::table& root, const std::string& path) {
                "render_targets"});
     Scene scene;
     scene.path = path;
-    init_lights(scene);
     if (const toml::node* n = top.get("output")) read_output(section(*n, "output"), scene);
     if (const toml::node* n = top.get("camera")) detail::read_camera(section(*n, "camera"), scene);
     if (const toml::node* n = top.get("animation")) read_animation(section(*n, "animation"), scene.animation);
@@ -86,8 +76,6 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     if (const toml::node* n = top.get("textures")) detail::read_textures(*n, dir, scene);
     if (const toml::node* n = top.get("uniforms")) detail::read_uniforms(*n, "uniforms", scene.uniforms);
     if (const toml::node* n = top.get("objects")) detail::read_objects(*n, dir, scene);
-    scene.gl.modelview = scene.view;
-    scene.gl.projection = scene.projection;
     derive_eye_space_lights(scene);
     if (const toml::node* n = top.get("objects")) detail::read_object_states(*n, scene);
     if (const toml::node* n = top.get("passes")) detail::read_passes(*n, top.get("objects"), dir, scene);
@@ -114,8 +102,24 @@ Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg)
     if (eq == std::string_view::npos || name.empty() || name.find_first_of("\"\\\n") != std::string_view::npos)
         return Error(fmt::format("--uniform '{}': expected name=value, the value written as in a scene's "
                                  "[uniforms] (3, 0.5, [1, 0, 0], true)", arg));
-    // The value is TOML, read exactly as a scene's [uniforms] entry.
-    std::string text = fmt::format("[uniforms]\n\"{}\" = {}\n", name, arg.substr(eq + 1));
+    // The value is TOML, read exactly as a scene's [uniforms] entry; a bare
+    // list "1,0,0" is what a shell user writes for [1, 0, 0].
+    std::string value(arg.substr(eq + 1));
+    size_t first = value.find_first_not_of(' ');
+    if (value.find(',') != std::string::npos && first != std::string::npos && value[first] != '[')
+        value = "[" + value + "]";
+    std::string text = fmt::format("[uniforms]\n\"{}\" = {}\n", name, value);
+    if (value.find('\n') != std::string::npos) text.clear();  // one value, not more TOML
+    bool syntax_ok = !text.empty();
+    try {
+        if (syntax_ok) (void)toml::parse(std::string_view(text), std::string_view("--uniform"));
+    } catch (const toml::parse_error&) {
+        syntax_ok = false;
+    }
+    // toml++'s own message speaks of TOML's grammar, which the user did not write.
+    if (!syntax_ok)
+        return Error(fmt::format("--uniform '{}': '{}' is not a value: write a number (0.5, 3), a list "
+                                 "(1,0,0 or [1, 0, 0]) or true/false", arg, arg.substr(eq + 1)));
     auto scene = parse_scene(text, "--uniform");
     if (!scene) {
         std::string why = scene.error().diagnostics.empty() ? "invalid" : scene.error().diagnostics[0].message;

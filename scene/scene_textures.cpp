@@ -45,6 +45,7 @@ struct Context {
     TextureTarget target = TextureTarget::Tex2D;
     TextureFormat format = TextureFormat::RGBA8;
     std::string dir;  // the scene file's directory: image paths are relative to it
+    std::vector<std::string>* files = nullptr;  // the image files read are added here
 };
 
 int dimensions(TextureTarget t) {
@@ -157,6 +158,7 @@ TextureImage read_image_file(const toml::node& n, const std::string& what, const
         fail(n, fmt::format("'{}': 3d textures take checkerboard, rgbw or solid, not image files", what));
     std::filesystem::path path(file->get());
     if (path.is_relative() && !c.dir.empty()) path = std::filesystem::path(c.dir) / path;
+    if (c.files) c.files->push_back(path.string());
     Result<TextureImage> image = read_texture_image(path.string(), c.target != TextureTarget::Cube);
     if (!image) {
         // The scene's line first, then what is wrong with the file.
@@ -381,6 +383,7 @@ TextureSetting read_texture(const Section& s, int unit, const std::string& dir, 
         fail(*n, fmt::format("'{}' needs render_target = \"NAME\"", s.name("attachment")));
     s.allow(kTextureKeys);
     Context c = read_context(s, dir);
+    c.files = &scene.files;
     TextureSetting setting;
     setting.unit = unit;
     setting.where = location(s.table());

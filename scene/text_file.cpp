@@ -9,14 +9,28 @@
 
 namespace glslrun::scene {
 
-Result<std::string> read_text_file(const std::string& path, const char* what) {
+Status check_path(const std::string& path, const char* what) {
+    if (path.find('\0') == std::string::npos) return Ok{};
+    return Error(fmt::format("{} path '{}' contains a NUL byte", what,
+                             std::string_view(path).substr(0, path.find('\0'))));
+}
+
+Status check_regular_file(const std::string& path, const char* what) {
     namespace fs = std::filesystem;
+    if (Status st = check_path(path, what); !st) return st;
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (status.type() == fs::file_type::not_found) return Error(fmt::format("cannot open {}: no such file", what), path);
     if (ec) return Error(fmt::format("cannot open {}: {}", what, ec.message()), path);
     if (fs::is_directory(status)) return Error(fmt::format("cannot read {}: it is a directory", what), path);
     if (!fs::is_regular_file(status)) return Error(fmt::format("cannot read {}: not a regular file", what), path);
+    return Ok{};
+}
+
+Result<std::string> read_text_file(const std::string& path, const char* what) {
+    namespace fs = std::filesystem;
+    if (Status st = check_regular_file(path, what); !st) return st.error();
+    std::error_code ec;
     const uintmax_t bytes = fs::file_size(path, ec);
     if (ec) return Error(fmt::format("cannot read {}: {}", what, ec.message()), path);
     if (bytes > uintmax_t(kMaxTextFileBytes))

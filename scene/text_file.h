@@ -15,4 +15,11 @@ constexpr int64_t kMaxTextFileBytes = int64_t(64) << 20;
 // `what` names the file in messages ("shader", "scene file", ...); errors cite the path.
 Result<std::string> read_text_file(const std::string& path, const char* what);
 
+// A path with a NUL byte is refused: the C library would read it only up to
+// the NUL, and open another file than the one named ("a\0b" opens "a").
+Status check_path(const std::string& path, const char* what);
+// check_path, and the path names a regular file (not a FIFO, which would
+// block the open, nor a device or a directory).
+Status check_regular_file(const std::string& path, const char* what);
+
 }  // namespace glslrun::scene

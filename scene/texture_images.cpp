@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/text_file.h"
+
 // Static functions, so another stb_image in the same program cannot clash;
 // only the two formats the scene format documents; no stdio (the file is
 // read here, with our own size limit and error messages). stb's dimension
@@ -31,6 +33,7 @@ namespace glslrun::scene {
 namespace {
 
 Result<std::vector<unsigned char>> read_file(const std::string& path) {
+    if (Status st = check_regular_file(path, "the image"); !st) return st.error();
     std::error_code ec;
     auto bytes = std::filesystem::file_size(path, ec);
     if (ec) return Error(fmt::format("cannot read the image '{}': {}", path, ec.message()));

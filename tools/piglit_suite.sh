@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs glslrun's piglit conformance suite (GLSL 1.10/1.20 execution and compiler
-# tests) against tests/piglit-expectations.txt. Exit status: nonzero on any
-# regression or unexpected pass.
+# tests, and the GLSL 1.10 ones of the extensions glslrun enables) against
+# tests/piglit-expectations.txt. Exit status: nonzero on any regression or
+# unexpected pass.
 #
 #   tools/piglit_suite.sh [--tsv results.tsv] [more glslrun test options]
 #
@@ -30,4 +31,10 @@ exec "$glslrun" test --root "$root" --expect "$repo/tests/piglit-expectations.tx
     generated_tests/spec/glsl-1.10 \
     tests/spec/glsl-1.20 \
     generated_tests/spec/glsl-1.20 \
-    tests/shaders
+    tests/shaders \
+    generated_tests/spec/arb_draw_buffers/preprocessor/enabled-compat.vert \
+    generated_tests/spec/arb_draw_buffers/preprocessor/enabled-compat.frag \
+    generated_tests/spec/arb_draw_buffers/preprocessor/disabled-defined-compat.vert \
+    generated_tests/spec/arb_draw_buffers/preprocessor/disabled-defined-compat.frag \
+    generated_tests/spec/arb_draw_buffers/preprocessor/disabled-undefined-compat.vert \
+    generated_tests/spec/arb_draw_buffers/preprocessor/disabled-undefined-compat.frag

@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -25,6 +24,7 @@
 
 #include <glm/glm.hpp>
 
+#include "glslrun/span.h"
 #include "glslrun/version.h"
 
 namespace glslrun {
@@ -195,33 +195,42 @@ public:
     // values fill consecutive elements from there. A float uniform takes
     // floats, an int/sampler uniform ints; a bool uniform takes either.
     // Unknown names and type or size mismatches are errors.
-    Status set_uniform(std::string_view name, std::span<const float> values);
-    Status set_uniform(std::string_view name, std::span<const int32_t> values);
+    Status set_uniform(std::string_view name, Span<const float> values);
+    Status set_uniform(std::string_view name, Span<const int32_t> values);
     // One value: floating-point types set float (or bool) uniforms, integral
     // types and bool set int, bool and sampler uniforms.
-    template <class T>
-        requires std::is_arithmetic_v<T>
+    template <class T, std::enable_if_t<std::is_arithmetic_v<T>, int> = 0>
     Status set_uniform(std::string_view name, T value) {
         if constexpr (std::is_floating_point_v<T>) {
             float f = float(value);
-            return set_uniform(name, std::span<const float>(&f, 1));
+            return set_uniform(name, Span<const float>(&f, 1));
         } else {
             int32_t i = int32_t(value);
-            return set_uniform(name, std::span<const int32_t>(&i, 1));
+            return set_uniform(name, Span<const int32_t>(&i, 1));
         }
     }
     // glm vectors and matrices (column-major, as glUniformMatrix without transpose).
-    template <glm::length_t L, class T, glm::qualifier Q>
-        requires std::is_same_v<T, float> || std::is_same_v<T, int32_t>
+    template <glm::length_t L, class T, glm::qualifier Q,
+              std::enable_if_t<std::is_same_v<T, float> || std::is_same_v<T, int32_t>, int> = 0>
     Status set_uniform(std::string_view name, const glm::vec<L, T, Q>& v) {
-        return set_uniform(name, std::span<const T>(&v[0], size_t(L)));
+        return set_uniform(name, Span<const T>(&v[0], size_t(L)));
     }
     template <glm::length_t C, glm::length_t R, glm::qualifier Q>
     Status set_uniform(std::string_view name, const glm::mat<C, R, float, Q>& m) {
-        return set_uniform(name, std::span<const float>(&m[0][0], size_t(C) * size_t(R)));
+        return set_uniform(name, Span<const float>(&m[0][0], size_t(C) * size_t(R)));
     }
     bool has_uniform(std::string_view name) const;
     std::vector<UniformInfo> uniforms() const;
+    // The inputs the optimized stage reads, as run_vertices and run_fragments
+    // take them by name: attributes ("gl_Vertex", "weight") or varyings and
+    // fragment built-ins ("v_normal", "gl_FragCoord"), each with its number of
+    // components (a mat4 attribute: 16). An input declared but never read is
+    // not listed: the optimizer removed it.
+    struct Input {
+        std::string name;
+        uint32_t components = 0;
+    };
+    std::vector<Input> inputs(Stage stage) const;
 
     ExecOptions exec;
     // Seconds LLVM has spent compiling this program's shaders (0 without the JIT).
@@ -477,6 +486,21 @@ Status check_framebuffer_size(int width, int height);
 // Readers call pixel(); writers take a typed view of a buffer or a row
 // (uint8_t channels for RGBA8, float for float colour) after checking
 // float_color(). Rows go bottom up (GL's convention), width * 4 channels each.
+// How RGBA8 storage turns a colour channel v (clamped to [0, 1]) into its
+// byte n. GL 2.1 (§2.14.9) leaves the rounding to the implementation.
+//   Nearest: n = v * 255 rounded to nearest, ties to even (Mesa's llvmpipe
+//            and softpipe).
+//   Gpu:     v truncated to 12 fraction bits, then rounded to nearest with
+//            ties down: n = ceil(floor(v * 4096) * 255 / 4096 - 1/2), as
+//            NVIDIA's OpenGL driver stores it (measured on all 2^18 values
+//            of a probe; docs/precision.md, "The GPU's colour conversion").
+enum class ColorRounding : uint8_t { Nearest, Gpu };
+// The rounding that matches a precision mode: Gpu for Fast (the GPU's
+// arithmetic), Nearest otherwise.
+inline ColorRounding color_rounding_for(Precision p) {
+    return p == Precision::Fast ? ColorRounding::Gpu : ColorRounding::Nearest;
+}
+
 class Framebuffer {
 public:
     // color_buffers: 1..kMaxDrawBuffers colour buffers, all of one format.
@@ -488,27 +512,29 @@ public:
     int width = 0, height = 0;
     std::vector<float> depth;  // [0,1]
     std::vector<uint8_t> stencil;  // kStencilBits per pixel
+    // How colours are stored as RGBA8 bytes, by clears, draws and blending
+    // alike; float colour buffers ignore it. The scene renderers set it from
+    // the program's precision (color_rounding_for).
+    ColorRounding rounding = ColorRounding::Nearest;
 
     bool float_color() const { return float_color_; }
     int color_buffers() const { return int(float_color_ ? float_colors_.size() : rgba8_colors_.size()); }
     // Colour buffer `buffer`'s channels (width * height * 4), as T: uint8_t
     // for RGBA8, float for float colour. Empty for the other type or a
     // buffer that does not exist.
-    template <class T>
-        requires std::is_same_v<T, uint8_t> || std::is_same_v<T, float>
-    std::span<T> color_data(int buffer = 0) { return data_of<T>(*this, buffer); }
-    template <class T>
-        requires std::is_same_v<T, uint8_t> || std::is_same_v<T, float>
-    std::span<const T> color_data(int buffer = 0) const { return data_of<const T>(*this, buffer); }
+    template <class T, std::enable_if_t<std::is_same_v<T, uint8_t> || std::is_same_v<T, float>, int> = 0>
+    Span<T> color_data(int buffer = 0) { return data_of<T>(*this, buffer); }
+    template <class T, std::enable_if_t<std::is_same_v<T, uint8_t> || std::is_same_v<T, float>, int> = 0>
+    Span<const T> color_data(int buffer = 0) const { return data_of<const T>(*this, buffer); }
     // Row y of it (0 = bottom): width * 4 channels; null where color_data is empty.
     template <class T>
     T* color_row(int buffer, int y) {
-        std::span<T> all = color_data<T>(buffer);
+        Span<T> all = color_data<T>(buffer);
         return all.empty() ? nullptr : all.data() + size_t(y) * size_t(width) * 4;
     }
     template <class T>
     const T* color_row(int buffer, int y) const {
-        std::span<const T> all = color_data<T>(buffer);
+        Span<const T> all = color_data<T>(buffer);
         return all.empty() ? nullptr : all.data() + size_t(y) * size_t(width) * 4;
     }
 
@@ -520,7 +546,7 @@ public:
 
 private:
     template <class T, class Self>
-    static std::span<T> data_of(Self& self, int buffer) {
+    static Span<T> data_of(Self& self, int buffer) {
         auto& list = [&]() -> auto& {
             if constexpr (std::is_same_v<std::remove_const_t<T>, float>) return self.float_colors_;
             else return self.rgba8_colors_;
@@ -559,7 +585,7 @@ struct DrawStats {
 // Separate Programs may draw at once.
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, Primitive prim,
                        const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices = {});
+                       Span<const uint32_t> indices = {});
 
 // glClear followed by a draw, as one call: from 4 worker threads the tile
 // jobs clear their tiles in cache before rendering them (and the untouched
@@ -573,7 +599,7 @@ struct ClearValues {
 };
 Result<DrawStats> draw(Program& program, const GLState& gl, Framebuffer& fb, const ClearValues& clear,
                        Primitive prim, const std::vector<VertexAttrib>& attribs, uint32_t vertex_count,
-                       std::span<const uint32_t> indices = {});
+                       Span<const uint32_t> indices = {});
 
 // PNG output (RGBA8, top row first as images expect) of one colour buffer.
 Status write_png(const Framebuffer& fb, const std::string& path, int buffer = 0);

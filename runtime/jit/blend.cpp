@@ -3,7 +3,7 @@
 
 namespace glslrun::rt::jit {
 
-std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& o,
+std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& o, bool gpu_rounding,
                                                 const std::array<llvm::Value*, 4>& src,
                                                 const std::array<llvm::Value*, 4>& dst) {
     auto* v4i = llvm::FixedVectorType::get(builder.getInt32Ty(), 4);
@@ -34,11 +34,21 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
     };
     // mul_unorm8's (x * f * 2 + 255) / 510, the product rounded to n/255, as
     // (t + (t >> 8)) >> 8 with t = x * f + 128: equal for every x and f in
-    // [0, 255] (tests/fused/fused_pipeline.cpp checks), and shifts, not a division.
-    auto product = [&](llvm::Value* x, llvm::Value* f) {
+    // [0, 255] (tests/fused/fused_pipeline.cpp checks), and shifts, not a
+    // division. With the GPU's rounding the product stays exact.
+    auto product = [&](llvm::Value* x, llvm::Value* f) -> llvm::Value* {
+        if (gpu_rounding) return builder.CreateMul(x, f);
         llvm::Value* t = builder.CreateAdd(builder.CreateMul(x, f), constant(128));
         return builder.CreateLShr(builder.CreateAdd(t, builder.CreateLShr(t, constant(8))), constant(8));
     };
+    // raster's combine8_gpu: exact products (units of 1/65025), the result
+    // stored by the GPU's rule, floor(c * 4096 / 65025) then (510 t + 4095) >> 13.
+    constexpr uint32_t kOne = 255 * 255;
+    auto stored = [&](llvm::Value* c) {
+        llvm::Value* t = builder.CreateUDiv(builder.CreateMul(c, constant(4096)), constant(kOne));
+        return builder.CreateLShr(builder.CreateAdd(builder.CreateMul(t, constant(510)), constant(4095)), constant(13));
+    };
+    const uint32_t one = gpu_rounding ? kOne : 255;
     std::array<llvm::Value*, 4> out;
     for (size_t k = 0; k < 4; ++k) {
         out[k] = src[k];
@@ -48,12 +58,13 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
             llvm::Value* a = product(src[k], factor(alpha ? o.src_alpha : o.src_rgb, k));
             llvm::Value* b = product(dst[k], factor(alpha ? o.dst_alpha : o.dst_rgb, k));
             switch (eq) {
-            case BlendEquation::Add: out[k] = umin(builder.CreateAdd(a, b), constant(255)); break;
+            case BlendEquation::Add: out[k] = umin(builder.CreateAdd(a, b), constant(one)); break;
             case BlendEquation::Subtract: out[k] = builder.CreateSelect(builder.CreateICmpUGT(a, b), builder.CreateSub(a, b), constant(0)); break;
             case BlendEquation::ReverseSubtract: out[k] = builder.CreateSelect(builder.CreateICmpUGT(b, a), builder.CreateSub(b, a), constant(0)); break;
             case BlendEquation::Min: out[k] = umin(src[k], dst[k]); break;
             case BlendEquation::Max: out[k] = umax(src[k], dst[k]); break;
             }
+            if (gpu_rounding && eq != BlendEquation::Min && eq != BlendEquation::Max) out[k] = stored(out[k]);
         }
         if (!o.mask[k]) out[k] = dst[k];
     }

@@ -12,8 +12,9 @@ namespace glslrun::rt::jit {
 
 // The channels to store (i32 vectors of four lanes, 0 to 255 each) from the
 // fragments' bytes `src` and the buffer's `dst`, channel by channel (RGBA):
-// blended where `ops` blends, then the colour mask.
-std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& ops,
+// blended where `ops` blends, then the colour mask. `gpu_rounding`: as
+// blend_unorm8 with ColorRounding::Gpu (combine8_gpu's exact products).
+std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& ops, bool gpu_rounding,
                                                 const std::array<llvm::Value*, 4>& src,
                                                 const std::array<llvm::Value*, 4>& dst);
 

@@ -10,6 +10,8 @@
 // control.cpp (blocks, masks, control flow), alu.cpp (the instructions),
 // callout.cpp (ops that call the interpreter's kernels).
 #pragma once
+#include <atomic>
+#include <cstdint>
 #include <memory>
 
 #include "runtime/backend.h"
@@ -18,7 +20,23 @@ namespace glslrun::rt::jit {
 
 struct CompileStats {
     double seconds = 0;  // LLVM's CPU time: IR generation, optimization and machine code
+    // In: a background compile gives up (null code) once this is set,
+    // checked between its phases (runtime/compile_queue.h).
+    const std::atomic<bool>* stop = nullptr;
 };
+
+// How the JIT would compile `shader`, from its size with calls written out
+// in place: LLVM's time grows a little faster than linearly with one
+// function's instructions (about 10 LLVM instructions per IR instruction;
+// code generation, register allocation above all, is most of it). Measured
+// on the lecture's programs and tests/compile_cost (docs/limits.md): 0.45 ms
+// of CPU per instruction, twice that per 1000 of them, about half of it
+// without LLVM's code-generation optimizations. A shader whose compile would
+// exceed kCompileBudgetNanos even so stays on the interpreter.
+inline constexpr uint64_t kCompileBudgetNanos = 100'000'000;
+inline constexpr double kNanosPerInstruction = 450'000, kInstructionsDoublingCost = 1000, kQuickCodegenShare = 0.55;
+// `quick_codegen`: ExecOptions::jit_quick_codegen.
+JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen);
 
 // Native code for `shader` in `precision` (Precise or Fast, with Fast's
 // `fast_ops` classes) for the baseline x86-64 ISA or AVX2, with LLVM's

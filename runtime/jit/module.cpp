@@ -5,6 +5,7 @@
 // executor that runs the generated functions over its own register file.
 #include "runtime/jit/jit.h"
 
+#include <algorithm>
 #include <ctime>
 #include <cstdlib>
 #include <mutex>
@@ -58,7 +59,9 @@ constexpr uint64_t kControlFlowNodes = 100;
 // UINT64_MAX for a recursive call graph or past the limit.
 class ExpandedSize {
 public:
-    explicit ExpandedSize(const ir::Shader& s) : shader_(s), size_(s.functions.size(), kUnknown) {}
+    // `control_flow`: the weight of an If or a Loop (an instruction weighs 1).
+    ExpandedSize(const ir::Shader& s, uint64_t control_flow)
+        : shader_(s), control_flow_(control_flow), size_(s.functions.size(), kUnknown) {}
     uint64_t of(const ir::Block& block) {
         uint64_t n = 0;
         for (const ir::Node& node : block) {
@@ -71,8 +74,8 @@ public:
 
 private:
     static constexpr uint64_t kUnknown = UINT64_MAX - 1, kOnPath = UINT64_MAX - 2, kTooLarge = UINT64_MAX;
-    static uint64_t cost(const ir::Node& node) {
-        return node.kind == ir::NodeKind::If || node.kind == ir::NodeKind::Loop ? kControlFlowNodes : 1;
+    uint64_t cost(const ir::Node& node) const {
+        return node.kind == ir::NodeKind::If || node.kind == ir::NodeKind::Loop ? control_flow_ : 1;
     }
     static uint64_t add(uint64_t a, uint64_t b) { return a > kMaxExpandedNodes || b > kMaxExpandedNodes || a + b > kMaxExpandedNodes ? kTooLarge : a + b; }
     uint64_t of_function(uint32_t f) {
@@ -82,16 +85,24 @@ private:
         return size_[f] = of(shader_.functions[f].body);
     }
     const ir::Shader& shader_;
+    uint64_t control_flow_;
     std::vector<uint64_t> size_;
 };
 
-bool jit_takes(const ir::Shader& shader) {
-    ExpandedSize size(shader);
-    const uint64_t body = size.of(shader.body), prologue = size.of(shader.prologue);
-    return body <= kMaxExpandedNodes && prologue <= kMaxExpandedNodes && body + prologue <= kMaxExpandedNodes;
-}
-
 }  // namespace
+
+JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen) {
+    ExpandedSize weighted(shader, kControlFlowNodes), plain(shader, 1);
+    const uint64_t body = weighted.of(shader.body), prologue = weighted.of(shader.prologue);
+    if (body > kMaxExpandedNodes || prologue > kMaxExpandedNodes || body + prologue > kMaxExpandedNodes) return {};
+    const double n = double(plain.of(shader.body) + plain.of(shader.prologue));
+    const double full = n * kNanosPerInstruction * (1 + n / kInstructionsDoublingCost);
+    JitPlan plan;
+    plan.quick = quick_codegen || full > double(kCompileBudgetNanos);
+    plan.nanos = uint64_t(plan.quick ? full * kQuickCodegenShare : full);
+    plan.take = plan.nanos <= kCompileBudgetNanos;
+    return plan;
+}
 
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick) {
     llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
@@ -108,7 +119,9 @@ double thread_cpu_seconds() {
 }
 
 Engine* Engine::of(bool avx2, bool quick) {
-    static Engine engines[4];
+    // Never destroyed: a background compile may still use one while the
+    // process exits (runtime/compile_queue.h).
+    static Engine* engines = new Engine[4];
     static std::once_flag made[4];
     const int which = int(avx2) * 2 + int(quick);
     Engine& e = engines[which];
@@ -267,7 +280,10 @@ std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const
 
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                         bool avx2, bool quick_codegen, CompileStats* stats) {
-    if (precision == Precision::Reference || !jit_takes(shader)) return nullptr;
+    const JitPlan plan = plan_compile(shader, quick_codegen);
+    if (precision == Precision::Reference || !plan.take) return nullptr;
+    quick_codegen = plan.quick;
+    auto stopped = [&] { return stats && stats->stop && stats->stop->load(std::memory_order_relaxed); };
     const double start = thread_cpu_seconds();
     Engine* engine = Engine::of(avx2, quick_codegen);
     if (!engine) return nullptr;
@@ -282,16 +298,18 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
         emitter.define("glslrun_main" + made.suffix, shader.body);
         emitter.define("glslrun_prologue" + made.suffix, shader.prologue);
     }
-    if (llvm::verifyModule(module, &llvm::errs())) return nullptr;
+    if (stopped() || llvm::verifyModule(module, &llvm::errs())) return nullptr;
     // GLSLRUN_JIT_DUMP=1 prints the module before and after optimization (a debugging aid).
     const bool dump = std::getenv("GLSLRUN_JIT_DUMP") != nullptr;
     if (dump) module.print(llvm::errs(), nullptr);
     optimise(module, *engine->machine);
     if (dump) module.print(llvm::errs(), nullptr);
+    if (stopped()) return nullptr;
     if (!code->code.add(*engine, std::move(made))) return nullptr;
     code->main = reinterpret_cast<ShaderFn>(code->code.lookup("glslrun_main"));
+    if (!code->main || stopped()) return nullptr;
     code->prologue = reinterpret_cast<ShaderFn>(code->code.lookup("glslrun_prologue"));
-    if (!code->main || !code->prologue) return nullptr;
+    if (!code->prologue) return nullptr;
     if (stats) stats->seconds = thread_cpu_seconds() - start;
     return code;
 }

@@ -137,6 +137,7 @@ private:
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
+    llvm::Value* stored_byte(llvm::Value* c);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
         target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
@@ -286,12 +287,12 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
     }
     case InputSource::PointCoord: {
         llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
-        llvm::Value* size = splat(load_f(q.prim, layout_.point_size));
-        llvm::Value* centre = splat(load_f(q.prim, layout_.point_center + (in.index == 0 ? 0 : 4)));
-        llvm::Value* pixel = b_.CreateFAdd(b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf()), splat_f(0.5f));
-        llvm::Value* offset = b_.CreateFDiv(b_.CreateFSub(pixel, centre), size);
-        llvm::Value* value =
-            in.index == 0 ? b_.CreateFAdd(splat_f(0.5f), offset) : b_.CreateFSub(splat_f(0.5f), offset);
+        // fma(step, pixel, origin), one rounding (raster/fragments.h).
+        const uint32_t component = in.index == 0 ? 0 : 4;
+        llvm::Value* step = splat(load_f(q.prim, layout_.point_coord_step + component));
+        llvm::Value* origin = splat(load_f(q.prim, layout_.point_coord_origin + component));
+        llvm::Value* pixel = b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf());
+        llvm::Value* value = b_.CreateIntrinsic(llvm::Intrinsic::fma, {vf()}, {step, pixel, origin});
         return b_.CreateSelect(is_point, value, splat_f(0.0f));
     }
     case InputSource::Zero: break;
@@ -587,7 +588,7 @@ void PipelineEmitter::read_modify_write_quad(const Quad& q, const QuadValues& v,
         std::array<llvm::Value*, 4> dst;
         for (unsigned k = 0; k < 4; ++k)
             dst[k] = b_.CreateAnd(b_.CreateLShr(stored, llvm::ConstantInt::get(v4i, 8 * k)), llvm::ConstantInt::get(v4i, 255));
-        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, key_.color_ops, v.rgba, dst)), stored);
+        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, key_.color_ops, key_.gpu_rounding, v.rgba, dst)), stored);
     };
     llvm::Value* x = b_.CreateExtractElement(q.px, uint64_t(0));
     llvm::Value* y = b_.CreateExtractElement(q.py, uint64_t(0));
@@ -638,16 +639,25 @@ PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const st
     }
     for (uint32_t k = 0; k < 4; ++k) {
         llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
-        if (!key_.float_color) {
-            constexpr float kRound = 8388608.0f;
-            c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
-            c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
-            llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
-            c = b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), llvm::FixedVectorType::get(i32_, 4));
-        }
-        v.rgba[k] = c;
+        v.rgba[k] = key_.float_color ? c : stored_byte(c);
     }
     return v;
+}
+
+// A channel's RGBA8 byte as a 32-bit integer: raster::to_unorm8's steps, or
+// raster::gpu_unorm8's with PipelineKey::gpu_rounding.
+llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
+    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
+    c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
+    c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
+    if (key_.gpu_rounding) {
+        llvm::Value* t = b_.CreateFPToSI(b_.CreateFMul(c, splat_f(4096.0f)), v4i);
+        llvm::Value* sum = b_.CreateAdd(b_.CreateMul(t, llvm::ConstantInt::get(v4i, 510)), llvm::ConstantInt::get(v4i, 4095));
+        return b_.CreateAShr(sum, llvm::ConstantInt::get(v4i, 13));
+    }
+    constexpr float kRound = 8388608.0f;
+    llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
+    return b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), v4i);
 }
 
 // outputs(batch, regs, alive, target): FragmentStage::write_outputs on the

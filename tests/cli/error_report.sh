@@ -39,10 +39,14 @@ for mode in reference precise fast; do
     done
     value frag.gl_FragColor.worst_ulp_xy "$out" | grep -Eq '^(none|[0-9]+ [0-9]+)$' || fail "$mode: worst_ulp_xy"
     [ "$(value frag.gl_FragColor.covered_both "$out")" -gt 500 ] || fail "$mode: the teapot covers too few pixels"
-    for f in reference.png actual-$mode.png gl_FragColor_ulp.png gl_FragColor_diff8.png depth_ulp.png; do
+    for f in reference.png actual-$mode.png gl_FragColor_ulp.png gl_FragColor_diff8.png depth_ulp.png \
+             heat_legend.png report.txt report.keys; do
         [ -s "$tmp/$mode/$f" ] || fail "$mode: $f was not written"
     done
     grep -q 'log2 scale' "$out" || fail "$mode: the heat maps' colour scale is not explained"
+    # The table and the key lines in DIR are those printed.
+    grep -q "^mode  *$mode" "$tmp/$mode/report.keys" || fail "$mode: report.keys has no mode line"
+    grep -q "error report: $mode against reference" "$tmp/$mode/report.txt" || fail "$mode: report.txt has no table"
     # The report's images are the PNGs a plain render in that mode writes.
     "$glslrun" "$vs" "$fs" "$scene" --size $size --precision $mode -o "$tmp/plain-$mode.png" >/dev/null ||
         fail "plain render with --precision $mode"

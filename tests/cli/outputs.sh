@@ -57,10 +57,10 @@ cmp -s "$tmp/stdout.png" "$tmp/file.png" || fail "-o - did not write the same PN
 [ -e ./- ] && fail "-o - created a file named '-'"
 if run -o - >/dev/null 2>"$tmp/err"; then fail "-o - with two draw buffers was accepted"; fi
 
-# Output names: only .png.
-for name in x.jpg x.PNGX x; do
+# Output names: .png, .jpg/.jpeg, .bmp and .tga; nothing else.
+for name in x.gif x.PNGX x; do
     if run -o "$tmp/$name" >/dev/null 2>"$tmp/err"; then fail "-o $name was accepted"; fi
-    grep -q "PNG images only" "$tmp/err" || fail "-o $name: unclear error: $(cat "$tmp/err")"
+    grep -q "chosen by the name's ending" "$tmp/err" || fail "-o $name: unclear error: $(cat "$tmp/err")"
     [ -e "$tmp/$name" ] && fail "-o $name wrote a file"
 done
 run -o "$tmp/upper.PNG" >/dev/null || fail "-o upper.PNG was refused"

@@ -93,6 +93,50 @@ TEST_CASE("link error: gl_Position not written") {
     CHECK_THAT(err, Catch::Contains("gl_Position"));
 }
 
+TEST_CASE("GLSL 1.30+ syntax is named with the version it needs and the 1.10/1.20 way") {
+    struct Case { const char* vs; const char* fs; const char* expected; };
+    const Case cases[] = {
+        {"uniform Light {\n vec4 pos;\n};\nvoid main() { gl_Position = pos; }\n", nullptr,
+         "1: error: uniform blocks need GLSL 1.40"},
+        {"layout(std140) uniform Light {\n vec4 pos;\n};\nvoid main() { gl_Position = pos; }\n", nullptr,
+         "1: error: layout qualifiers need GLSL 1.40"},
+        {"in vec3 position;\nvoid main() { gl_Position = vec4(position, 1.0); }\n", nullptr,
+         "1: error: 'in' on a global variable needs GLSL 1.30: in GLSL 1.10/1.20 write 'attribute'"},
+        {nullptr, "out vec4 color;\nvoid main() { color = vec4(1.0); }\n",
+         "1: error: 'out' on a global variable needs GLSL 1.30"},
+        {"\nflat varying vec4 c; // flat\nvoid main() { gl_Position = c; }\n", nullptr,
+         "2: error: interpolation qualifiers ('flat') need GLSL 1.30"},
+        {"void main() { int i = 3;\n switch (i) { default: break; } gl_Position = vec4(1.0); }\n", nullptr,
+         "2: error: switch statements need GLSL 1.30"},
+        {"void main() { int i = 7 % 2; gl_Position = vec4(float(i)); }\n", nullptr, "1: error: the '%' operator needs GLSL 1.30"},
+        {"void main() { int i = 1 << 2; gl_Position = vec4(float(i)); }\n", nullptr, "1: error: bit shifts need GLSL 1.30"},
+        {"void main() { uint u = 1u; gl_Position = vec4(1.0); }\n", nullptr, "1: error: unsigned integers ('uint') need GLSL 1.30"},
+        {nullptr, "uniform sampler2D t;\nvoid main() { gl_FragColor = texture(t, vec2(0.5)); }\n",
+         "2: error: texture() needs GLSL 1.30: in GLSL 1.10/1.20 write texture1D, texture2D"},
+    };
+    for (const Case& c : cases) {
+        std::string err = compile_error(c.vs ? c.vs : kPassVs, c.fs ? c.fs : kColorFs);
+        INFO(err);
+        CHECK_THAT(err, Catch::Contains(c.expected));
+    }
+    // A syntax error that is not about a newer feature keeps glslang's message.
+    CHECK_THAT(compile_error("void main() { gl_Position = vec4(1.0) vec4; }\n", kColorFs), Catch::Contains("syntax error"));
+}
+
+TEST_CASE("link error: a function without a body is named by its GLSL signature") {
+    std::string err = compile_error(kPassVs, "float compute_dotprod(vec3 a);\n"
+                                             "void main() { gl_FragColor = vec4(compute_dotprod(vec3(1.0))); }\n");
+    CHECK_THAT(err, Catch::Contains("found: compute_dotprod(vec3)"));
+    err = compile_error(kPassVs, "#version 120\nstruct S { vec3 p; float w[2]; };\nuniform sampler2DShadow t;\n"
+                                 "float f(S s, mat3 m, mat2x4 n, sampler2DShadow t, float a[3], bvec2 b, ivec4 i, int k);\n"
+                                 "void g();\n"
+                                 "void main() { float a[3]; g(); gl_FragColor = vec4(f(S(vec3(1.0), float[2](1.0, 2.0)), "
+                                 "mat3(1.0), mat2x4(1.0), t, a, bvec2(true), ivec4(0), 1)); }\n", 120);
+    CHECK_THAT(err, Catch::Contains("f(S, mat3, mat2x4, sampler2DShadow, float[3], bvec2, ivec4, int)"));
+    CHECK_THAT(err, Catch::Contains("g()"));
+    CHECK_THAT(err, !Catch::Contains(";"));
+}
+
 TEST_CASE("link error: varying read but not written") {
     std::string err = compile_error("varying vec4 foo;\nvoid main() { gl_Position = ftransform(); }\n",
                                     "varying vec4 foo;\nvoid main() { gl_FragColor = foo; }\n");

@@ -16,6 +16,7 @@
 #include <span>
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "glslrun/glslrun.h"
@@ -132,14 +133,16 @@ struct Programs {
 // Two passes over the geometry: one that lays down depth (GL_LEQUAL), then
 // the state under test.
 Frame render(Program& p, Primitive prim, const Geometry& g, const GLState& second, bool float_color,
-             glm::ivec2 size = {96, 64}) {
+             glm::ivec2 size = {96, 64}, ColorRounding rounding = ColorRounding::Nearest) {
     Frame f{Framebuffer(size.x, size.y, float_color), {}};
+    f.fb.rounding = rounding;
     f.fb.clear_color({0.1f, 0.2f, 0.3f, 1.0f});
     f.fb.clear_depth(0.8f);
     GLState first;
     first.depth_test = true;
     first.depth_func = GLState::DepthFunc::Lequal;
     first.point_size = second.point_size;
+    first.point_sprite = second.point_sprite;
     for (const GLState& gl : {first, second}) {
         auto stats = draw(p, gl, f.fb, prim, {g.pos, g.color}, g.count);
         if (!stats) FAIL(stats.error().str());
@@ -169,9 +172,9 @@ size_t distinct_colors(const Framebuffer& fb) {
 }
 
 void check_fused_matches(Programs& p, Primitive prim, const Geometry& g, const GLState& gl, bool float_color,
-                         glm::ivec2 size = {96, 64}) {
-    Frame oracle = render(p.oracle, prim, g, gl, float_color, size);
-    Frame fused = render(p.fused, prim, g, gl, float_color, size);
+                         glm::ivec2 size = {96, 64}, ColorRounding rounding = ColorRounding::Nearest) {
+    Frame oracle = render(p.oracle, prim, g, gl, float_color, size, rounding);
+    Frame fused = render(p.fused, prim, g, gl, float_color, size, rounding);
     CHECK(oracle.stats.fragments_fused == 0u);
     if (jit_available()) {
         // Every fragment of the JIT's draws took the fused pipeline.
@@ -223,12 +226,17 @@ TEST_CASE("the fused pipeline draws the interpreter's bits: points and lines", "
         Programs p(shader.fs);
         for (Primitive prim : {Primitive::Points, Primitive::Lines, Primitive::LineStrip}) {
             for (GLState::DepthFunc func : {GLState::DepthFunc::Less, GLState::DepthFunc::Always}) {
-                GLState gl;
-                gl.depth_test = true;
-                gl.depth_func = func;
-                gl.point_size = 7.0f;
-                INFO(shader.name << ", primitive " << int(prim) << ", depth func " << int(func));
-                check_fused_matches(p, prim, g, gl, false);
+                // Sprites of a fractional size: gl_PointCoord steps by 1/6.3.
+                for (bool sprite : {false, true}) {
+                    GLState gl;
+                    gl.depth_test = true;
+                    gl.depth_func = func;
+                    gl.point_size = sprite ? 6.3f : 7.0f;
+                    gl.point_sprite = sprite;
+                    INFO(shader.name << ", primitive " << int(prim) << ", depth func " << int(func) << ", sprite " << sprite);
+                    check_fused_matches(p, prim, g, gl, false);
+                    if (prim != Primitive::Points) break;
+                }
             }
         }
     }
@@ -291,6 +299,42 @@ TEST_CASE("the fused pipeline blends and masks the interpreter's bits", "[fused]
         INFO("colour mask " << mask << ", blend " << gl.blend);
         check_fused_matches(p, Primitive::Triangles, small, gl, false);
     }
+}
+
+TEST_CASE("the fused pipeline rounds colours as the C++ path does: ColorRounding::Gpu", "[fused]") {
+    Geometry small = random_geometry(17, 900, 0.08f);
+    Geometry large = random_geometry(18, 30, 0.9f);
+    for (const Shader& shader : kShaders) {
+        Programs p(shader.fs);
+        const BlendEquation kEquations[] = {BlendEquation::Add, BlendEquation::Subtract,
+                                            BlendEquation::ReverseSubtract, BlendEquation::Min, BlendEquation::Max};
+        for (int state = 0; state < 8; ++state) {
+            GLState gl;
+            gl.depth_test = state != 3;
+            gl.depth_func = state == 0 ? GLState::DepthFunc::Less : GLState::DepthFunc::Lequal;
+            gl.blend = state >= 2;
+            BlendState& b = gl.blend_state;
+            b.src_rgb = state % 2 ? BlendFactor::ConstantColor : BlendFactor::SrcAlpha;
+            b.dst_rgb = state % 3 ? BlendFactor::OneMinusSrcAlpha : BlendFactor::DstColor;
+            b.src_alpha = BlendFactor::One, b.dst_alpha = BlendFactor::OneMinusDstAlpha;
+            b.equation_rgb = kEquations[state % 5], b.equation_alpha = kEquations[(state + 1) % 5];
+            gl.blend_state.color = {0.1f, 0.502f, 0.7f, 0.35f};  // bytes that the two roundings store differently
+            gl.color_mask = {true, state != 1, true, true};
+            // Blending and masks with a late depth test (discard, gl_FragDepth) keep the C++ path.
+            const bool late_depth = std::string_view(shader.fs).find("discard") != std::string_view::npos ||
+                                    std::string_view(shader.fs).find("gl_FragDepth") != std::string_view::npos;
+            if (late_depth && gl.depth_test && (gl.blend || state == 1)) continue;
+            INFO(shader.name << ", state " << state);
+            check_fused_matches(p, Primitive::Triangles, small, gl, false, {96, 64}, ColorRounding::Gpu);
+            check_fused_matches(p, Primitive::Triangles, large, gl, false, {93, 61}, ColorRounding::Gpu);
+        }
+    }
+    // The rule reaches the stored bytes (so the comparison above is not of two Nearest images).
+    Programs p(kShaders[0].fs);
+    Geometry g = random_geometry(19, 30, 0.9f);
+    Frame nearest = render(p.fused, Primitive::Triangles, g, GLState{}, false, {96, 64}, ColorRounding::Nearest);
+    Frame gpu = render(p.fused, Primitive::Triangles, g, GLState{}, false, {96, 64}, ColorRounding::Gpu);
+    CHECK_FALSE(same_colors(nearest.fb, gpu.fb));
 }
 
 TEST_CASE("blending with a late depth test or float storage keeps the C++ path", "[fused]") {

@@ -157,7 +157,12 @@ TEST_CASE("runner problems are failures or skips, never crashes", "[piglit][exec
     CHECK(run("garbage").outcome == Outcome::Fail);
     CHECK(run(kUniformColor + "[test]\nuniform vec4 nosuch 1 2 3 4\n").message.rfind("line 11: uniform nosuch", 0) == 0);
     CHECK(run(kUniformColor + "[test]\nprobe rgb 300 0 0 0 0\n").message ==
-          "line 11: probe region (300, 0, 1, 1) is outside the 250x250 window");
+          "line 11: probe region (300, 0) is outside the 250x250 window");
+    // Past int's range: cast to int, the width wrapped negative and no pixel was probed (a pass).
+    CHECK(run(kUniformColor + "[test]\nprobe rect rgb (0, 0, 3e9, 10) (9, 9, 9)\n").message ==
+          "line 11: probe region (0, 0, 3000000000, 10) is outside the 250x250 window");
+    CHECK(run(kUniformColor + "[test]\nrelative probe rect rgb (0, 0, 1e30, 0.5) (9, 9, 9)\n").outcome ==
+          Outcome::Fail);
     CHECK(run(kUniformColor + "[test]\nenable GL_FOG\n").message == "line 11: bad enable/disable enum \"GL_FOG\"");
     CHECK(run(kUniformColor + "[test]\ntexture rgbw 2DArray 0 (8, 8, 2)\n").outcome == Outcome::Skip);
     CHECK(run("[require]\nGLSL >= 1.30\n[test]\n").outcome == Outcome::Skip);

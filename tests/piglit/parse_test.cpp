@@ -112,6 +112,12 @@ TEST_CASE("requirements decide skips", "[piglit][parse]") {
     CHECK(reason("GLSL ES >= 1.00").has_value());
     CHECK(reason("GLSL >= 1.10\nGL_ARB_DRAW_BUFFERS").value() ==
           "extension GL_ARB_DRAW_BUFFERS is not supported");
+    // Extensions glslrun enables (ARB_draw_buffers) run; tests that need them absent skip.
+    CHECK_FALSE(reason("GLSL >= 1.10\nGL_ARB_draw_buffers").has_value());
+    CHECK(reason("GLSL >= 1.10\n!GL_ARB_draw_buffers").value() == "requires GL_ARB_draw_buffers to be absent");
+    CHECK_FALSE(reason("GLSL >= 1.10\n!GL_ARB_texture_rectangle").has_value());
+    CHECK(reason("GLSL >= 1.10\nGL_ARB_draw_buffers\nGL_ARB_texture_rectangle").value() ==
+          "extension GL_ARB_texture_rectangle is not supported");
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_MAX_VARYING_COMPONENTS >= 64").has_value());
     CHECK(reason("GLSL >= 1.10\nGL_MAX_VARYING_COMPONENTS >= 65").has_value());
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_MAX_FRAGMENT_UNIFORM_COMPONENTS >= 4097").has_value());

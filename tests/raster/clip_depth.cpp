@@ -2,6 +2,7 @@
 // framebuffer's quantisation; primitive assembly; line pixels.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <set>
@@ -226,7 +227,32 @@ TEST_CASE("line pixels: GL's diamond-exit rule, as llvmpipe draws it", "[raster]
     for_each_line_pixel({1.25f, 3.5f}, {9.25f, 3.5f}, scissor, collect, 3);  // 3 wide: rows 2..4
     CHECK(px.size() == 24);
     for (auto [x, y] : px) CHECK((y >= 2 && y <= 4));
-    CHECK(point_pixels(0.2f) == 1);
-    CHECK(point_pixels(2.5f) == 3);
-    CHECK(point_pixels(2.4f) == 2);
+}
+
+TEST_CASE("point squares: sprites at their exact size, other points rounded as Mesa", "[raster][points]") {
+    auto square = [](glm::vec2 centre, float size, bool sprite) {
+        FsPrimitive p;
+        set_point_square(p, centre, size, sprite);
+        return p;
+    };
+    auto box = [](const FsPrimitive& p) { return std::array{p.point_box.x0, p.point_box.y0, p.point_box.x1, p.point_box.y1}; };
+    // Without sprites the size is rounded, n + 1/2 down (llvmpipe), at least 1.
+    CHECK(box(square({10.3f, 20.0f}, 2.5f, false)) == std::array{9, 19, 11, 21});   // floor(c + 1/2) - 1
+    CHECK(box(square({10.3f, 20.0f}, 3.5f, false)) == std::array{9, 19, 12, 22});   // floor(c) - 1
+    CHECK(box(square({10.3f, 20.0f}, 2.6f, false)) == std::array{9, 19, 12, 22});
+    CHECK(box(square({10.3f, 20.0f}, 0.2f, false)) == std::array{10, 20, 11, 21});
+    CHECK(box(square({10.3f, 20.0f}, std::nanf(""), false)) == std::array{10, 20, 11, 21});
+    // Sprites: the pixels whose centres lie in [c - s/2, c + s/2), left and
+    // bottom edges in.
+    CHECK(box(square({10.3f, 20.0f}, 2.5f, true)) == std::array{9, 19, 12, 21});     // [9.05, 11.55) x [18.75, 21.25)
+    CHECK(box(square({10.5f, 10.5f}, 2.0f, true)) == std::array{9, 9, 11, 11});      // centres 9.5 in, 11.5 out
+    CHECK(box(square({-3.25f, 5.0f}, 1.5f, true)) == std::array{-4, 4, -3, 6});      // [-4, -2.5) x [4.25, 5.75)
+    // gl_PointCoord: 1/size per pixel, 0.5 at the centre; t from the top with sprites.
+    FsPrimitive p = square({10.5f, 10.5f}, 2.5f, true);
+    CHECK(p.point_coord_step == glm::vec2(0.4f, -0.4f));
+    CHECK(std::fma(p.point_coord_step.x, 10.0f, p.point_coord_origin.x) == Approx(0.5f).margin(1e-6));
+    CHECK(std::fma(p.point_coord_step.y, 10.0f, p.point_coord_origin.y) == Approx(0.5f).margin(1e-6));
+    CHECK(std::fma(p.point_coord_step.x, 11.0f, p.point_coord_origin.x) == Approx(0.9f).margin(1e-6));
+    CHECK(std::fma(p.point_coord_step.y, 11.0f, p.point_coord_origin.y) == Approx(0.1f).margin(1e-6));
+    CHECK(square({10.5f, 10.5f}, 2.5f, false).point_coord_step == glm::vec2(0.5f, 0.5f));
 }

@@ -5,14 +5,46 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstring>
 
 #include "raster/fragment_ops.h"
+#include "raster/quad_lanes.h"
+#include "raster/framebuffer.h"
+#include "tests/raster/alpha_boundaries.h"
 #include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
 
 using namespace glslrun;
 using namespace glslrun::raster;
+
+TEST_CASE("ColorRounding::Gpu stores NVIDIA's byte: 12 fraction bits, then nearest, ties down", "[raster][fragment]") {
+    // The driver's rule as measured (docs/precision.md), in double: every
+    // step of 2^-20 over [0, 1] and just past the ends, scalar and four lanes.
+    auto measured = [](float v) {
+        double c = std::clamp(double(v), 0.0, 1.0);
+        return int(std::ceil(std::floor(c * 4096.0) * 255.0 / 4096.0 - 0.5));
+    };
+    int differ_from_nearest = 0;
+    for (int k = -64; k <= (1 << 20) + 64; k += 1) {
+        const float v = float(k) / float(1 << 20);
+        REQUIRE(int(to_unorm8(v, ColorRounding::Gpu)) == measured(v));
+        differ_from_nearest += to_unorm8(v, ColorRounding::Gpu) != to_unorm8(v);
+        if (k % 4 == 0) {
+            QuadF q{v, v + 0x1p-20f, v + 0x2p-20f, v + 0x3p-20f};
+            QuadI bytes = pack_unorm8(q, q, q, q, ColorRounding::Gpu);
+            for (int lane = 0; lane < 4; ++lane) REQUIRE((bytes[lane] & 255) == measured(q[lane]));
+        }
+    }
+    CHECK(differ_from_nearest > 1000);  // the two rules are not the same
+    CHECK(to_unorm8(0.1f, ColorRounding::Gpu) == 25);  // multi_pass's clear: 25 on the GPU, 26 in Mesa
+    CHECK(to_unorm8(0.1f) == 26);
+    CHECK(to_unorm8(0.5f, ColorRounding::Gpu) == 127);  // 127.5 ties down
+    CHECK(to_unorm8(std::numeric_limits<float>::quiet_NaN(), ColorRounding::Gpu) == 0);
+    CHECK(to_unorm8(std::numeric_limits<float>::infinity(), ColorRounding::Gpu) == 255);
+    CHECK(to_unorm8(-1.0f, ColorRounding::Gpu) == 0);
+}
 
 TEST_CASE("stencil operations follow GL 2.1 section 4.1.5", "[raster][fragment]") {
     CHECK(stencil_op(StencilOp::Keep, 7, 3) == 7);
@@ -166,5 +198,59 @@ TEST_CASE("per-fragment operations give the same image whatever the thread count
         for (int b = 0; b < 2; ++b) CHECK(std::ranges::equal(one.color_data<uint8_t>(b), many.color_data<uint8_t>(b)));
         CHECK(one.depth == many.depth);
         CHECK(one.stencil == many.stencil);
+    }
+}
+
+TEST_CASE("scenes in Fast store colours by the GPU's rule, the other modes by Mesa's", "[raster][fragment]") {
+    auto scene = scene::parse_scene("[output]\nsize = [8, 8]\nclear_color = [0.1, 0.5, 0.0, 1.0]\n", "clear.toml");
+    if (!scene) FAIL(scene.error().str());
+    auto cleared = [&](Precision precision) {
+        auto p = Program::compile({{"vs", "void main() { gl_Position = ftransform(); }"}},
+                                  {{"fs", "void main() { gl_FragColor = vec4(1.0); }"}});
+        REQUIRE(p);
+        p->exec.precision = precision;
+        Framebuffer fb(scene->width, scene->height);
+        REQUIRE(scene::render_scene(*p, *scene, fb));
+        CHECK(fb.rounding == color_rounding_for(precision));
+        return std::array<int, 2>{fb.color_data<uint8_t>()[0], fb.color_data<uint8_t>()[1]};
+    };
+    CHECK(cleared(Precision::Fast) == std::array<int, 2>{25, 127});
+    CHECK(cleared(Precision::Precise) == std::array<int, 2>{26, 128});
+    CHECK(cleared(Precision::Reference) == std::array<int, 2>{26, 128});
+}
+
+TEST_CASE("the alpha test compares the bytes of an RGBA8 buffer, floats of a float buffer", "[raster][fragment]") {
+    using alpha_boundaries::kCases;
+    auto scene = scene::parse_scene(alpha_boundaries::scene(), "alpha.toml");
+    REQUIRE(scene);
+    for (size_t i = 0; i < kCases.size(); ++i) {
+        const auto& c = kCases[i];
+        INFO("case " << i << ": alpha " << c.alpha << " " << c.func << " " << c.ref);
+        REQUIRE(scene->objects[i].state);
+        const GLState& gl = *scene->objects[i].state;
+        REQUIRE(gl.alpha_test);
+        Lanes alpha{};
+        alpha.fill(c.alpha);
+        CHECK(bool(alpha_test(FragmentOps(gl, Framebuffer(4, 4)), alpha, 1) & 1) == c.passes);
+        // A float buffer compares the values themselves (clamped reference).
+        float ref = std::clamp(c.ref, 0.0f, 1.0f);
+        bool float_passes = depth_passes(gl.alpha_func, c.alpha, ref);
+        CHECK(bool(alpha_test(FragmentOps(gl, Framebuffer(4, 4, true)), alpha, 1) & 1) == float_passes);
+    }
+    // Both backends draw it so: the JIT's fused pipeline leaves the alpha test to the C++ path.
+    for (Backend backend : {Backend::Interp, Backend::Jit}) {
+        INFO("backend " << backend_name(backend));
+        auto p = Program::compile({{"vs", kVertex}}, {{"fs", "uniform float alpha;\n"
+                                                               "void main() { gl_FragColor = vec4(gl_Color.rgb, alpha); }\n"}});
+        REQUIRE(p);
+        p->exec.backend = backend;
+        Framebuffer fb(scene->width, scene->height);
+        REQUIRE(scene::render_scene(*p, *scene, fb));
+        for (size_t i = 0; i < kCases.size(); ++i) {
+            auto [x, y] = alpha_boundaries::centre(i);
+            INFO("case " << i);
+            // Drawn where it passes: the clear's black otherwise.
+            CHECK((fb.pixel(x, y).b > 0.0f) == kCases[i].passes);
+        }
     }
 }

@@ -6,6 +6,7 @@
 // scene shows many states side by side. Colours are affine in the vertex
 // position, so that how Mesa splits a quad does not matter.
 #include "tests/reference/helpers.h"
+#include "tests/raster/alpha_boundaries.h"
 
 using namespace glslrun;
 
@@ -234,4 +235,20 @@ TEST_CASE("glslrun matches Mesa on scissor, alpha test, write masks and logic op
 
 TEST_CASE("glslrun matches Mesa on several draw buffers through gl_FragData", "[reference]") {
     reference::compare("fragment-draw-buffers", inline_inputs("draw_buffers", kDrawBuffersScene, kDrawBuffersFragment));
+}
+
+// Each quad is one alpha-test case at a rounding boundary of the RGBA8
+// buffer; one that goes the other way from Mesa is 4% of the image.
+TEST_CASE("glslrun matches Mesa on the alpha test at the RGBA8 rounding boundaries", "[reference]") {
+    const char* fragment = "uniform float alpha;\nvoid main() { gl_FragColor = vec4(gl_Color.rgb, alpha); }\n";
+    auto in = inline_inputs("alpha_boundaries", alpha_boundaries::scene(), fragment);
+    reference::compare("fragment-alpha-boundaries", in);
+    // And each case as the table says GL draws it.
+    auto mesa = glref::render_with_mesa(reference::kDriver, in.vertex, in.fragment, in.scene);
+    REQUIRE(mesa);
+    for (size_t i = 0; i < alpha_boundaries::kCases.size(); ++i) {
+        auto [x, y] = alpha_boundaries::centre(i);
+        INFO("case " << i);
+        CHECK((mesa->image.pixel(x, mesa->image.height - 1 - y)[2] > 0) == alpha_boundaries::kCases[i].passes);
+    }
 }

@@ -1,19 +1,74 @@
 #include "batch_command.h"
 
-#include <unistd.h>
-
 #include <cstdio>
+#include <map>
+#include <memory>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include "glslrun/scene/image_compare.h"
 #include "glslrun/scene/render.h"
+#include "image_output.h"
+#include "output_guard.h"
+#include "progress.h"
 #include "render_command.h"
+#include "runtime/program_state.h"
 #include "scene/text_file.h"
 
 namespace glslrun::cli {
+
+std::optional<std::vector<std::string>> split_job_line(std::string_view line, std::string& why) {
+    std::vector<std::string> fields;
+    std::string field;
+    bool in_field = false;
+    for (size_t i = 0; i < line.size(); ++i) {
+        char c = line[i];
+        if (c == '\0') {
+            why = "a NUL byte in the line (paths cannot hold one)";
+            return std::nullopt;
+        }
+        if (c == ' ' || c == '\t' || c == '\r') {
+            if (in_field) fields.push_back(std::move(field));
+            field.clear();
+            in_field = false;
+        } else if (c == '#' && !in_field) {
+            break;
+        } else if (c == '\'' || c == '"') {
+            size_t end = i + 1;
+            for (; end < line.size() && line[end] != c; ++end) {
+                if (line[end] == '\0') {
+                    why = "a NUL byte in the line (paths cannot hold one)";
+                    return std::nullopt;
+                }
+                if (c == '"' && line[end] == '\\' && end + 1 < line.size() &&
+                    (line[end + 1] == '"' || line[end + 1] == '\\'))
+                    ++end;
+                field += line[end];
+            }
+            if (end == line.size()) {
+                why = fmt::format("the quote {} opened in column {} is not closed", c, i + 1);
+                return std::nullopt;
+            }
+            i = end;
+            in_field = true;
+        } else if (c == '\\' && i + 1 < line.size()) {
+            field += line[++i];
+            if (field.back() == '\0') {
+                why = "a NUL byte in the line (paths cannot hold one)";
+                return std::nullopt;
+            }
+            in_field = true;
+        } else {
+            field += c;
+            in_field = true;
+        }
+    }
+    if (in_field) fields.push_back(std::move(field));
+    return fields;
+}
+
 namespace {
 
 struct Job {
@@ -21,45 +76,75 @@ struct Job {
     std::string vertex, fragment, scene, output;
 };
 
-Result<std::vector<Job>> parse_jobs(const std::string& path, const std::string& text) {
+struct ParsedJobs {
     std::vector<Job> jobs;
+    std::vector<std::string> errors;  // "JOBS:line: error: ..." for malformed lines
+};
+
+ParsedJobs parse_jobs(const std::string& path, const std::string& text) {
+    ParsedJobs out;
     std::istringstream in(text);
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
-        std::istringstream fields(line.substr(0, line.find('#')));
-        Job job{number, {}, {}, {}, {}};
-        std::string extra;
-        if (!(fields >> job.vertex)) continue;  // blank or comment
-        if (!(fields >> job.fragment >> job.scene >> job.output) || fields >> extra)
-            return Error("a job is `VERT FRAG SCENE OUTPUT.png`", path, number);
-        if (Status st = check_png_name(job.output); !st)
-            return Error(st.error().diagnostics.front().message, path, number);
-        jobs.push_back(std::move(job));
+        std::string why;
+        auto fields = split_job_line(line, why);
+        if (fields && fields->empty()) continue;  // blank or comment
+        if (fields && fields->size() != 4)
+            why = fmt::format("a job is `VERT FRAG SCENE OUTPUT` (4 fields, quoted where they hold a blank); "
+                              "this line has {}", fields->size());
+        if (fields && why.empty())
+            if (Status st = check_image_name((*fields)[3]); !st) why = st.error().diagnostics.front().message;
+        if (!why.empty()) {
+            out.errors.push_back(Error(why, path, number).str());
+            continue;
+        }
+        out.jobs.push_back({number, (*fields)[0], (*fields)[1], (*fields)[2], (*fields)[3]});
     }
-    if (jobs.empty()) return Error("no jobs in the file", path);
-    return jobs;
+    return out;
 }
 
-Status run_job(const Job& job, const ExecOptions& exec) {
+// A program compiled once for every job that names the same two files,
+// with the uniform values it had then: each job starts from those, so no
+// job sees another's uniforms.
+struct CachedProgram {
+    Result<Program> program;
+    std::vector<uint32_t> initial_uniforms;
+};
+
+class ProgramCache {
+public:
+    Result<Program*> get(const Job& job) {
+        auto key = std::pair{job.vertex, job.fragment};
+        auto it = cache_.find(key);
+        if (it == cache_.end()) {
+            auto compiled = scene::compile_files({job.vertex}, {job.fragment});
+            std::vector<uint32_t> initial;
+            if (compiled) initial = state_of(*compiled).uniforms;
+            it = cache_.emplace(key, std::make_unique<CachedProgram>(std::move(compiled), std::move(initial))).first;
+        }
+        CachedProgram& c = *it->second;
+        if (!c.program) return c.program.error();
+        state_of(*c.program).uniforms = c.initial_uniforms;
+        return &*c.program;
+    }
+    size_t compiled() const { return cache_.size(); }
+
+private:
+    std::map<std::pair<std::string, std::string>, std::unique_ptr<CachedProgram>> cache_;
+};
+
+Status run_job(const Job& job, const ExecOptions& exec, ProgramCache& programs, const InputFiles& all_inputs) {
     auto scene = scene::load_scene(job.scene);
     if (!scene) return scene.error();
-    auto program = scene::compile_files({job.vertex}, {job.fragment});
+    InputFiles inputs = all_inputs;
+    inputs.add_scene(*scene);
+    if (Status st = inputs.check_output(job.output, "the output"); !st) return st;
+    auto program = programs.get(job);
     if (!program) return program.error();
-    program->exec = exec;
-    auto image = scene::render_image(*program, *scene);
+    (*program)->exec = exec;
+    auto image = scene::render_image(**program, *scene);
     if (!image) return image.error();
-    return scene::write_png(*image, job.output);
-}
-
-// "[#####.....]  12/40 jobs, 1 failed", redrawn in place on a terminal.
-void draw_progress(size_t done, size_t total, size_t failed) {
-    constexpr size_t kWidth = 30;
-    size_t filled = total ? done * kWidth / total : kWidth;
-    std::string bar(filled, '#');
-    bar.resize(kWidth, '.');
-    std::fprintf(stderr, "\r[%s] %zu/%zu jobs%s", bar.c_str(), done, total,
-                 failed ? fmt::format(", {} failed", failed).c_str() : "");
-    std::fflush(stderr);
+    return write_image(*image, job.output);
 }
 
 }  // namespace
@@ -70,25 +155,34 @@ int run_batch_command(const std::string& jobs_path, const ExecOptions& exec) {
         std::fputs(text.error().str().c_str(), stderr);
         return 2;
     }
-    auto jobs = parse_jobs(jobs_path, *text);
-    if (!jobs) {
-        std::fputs(jobs.error().str().c_str(), stderr);
+    ParsedJobs parsed = parse_jobs(jobs_path, *text);
+    for (const std::string& e : parsed.errors) std::fputs(e.c_str(), stderr);
+    if (parsed.jobs.empty() && parsed.errors.empty()) {
+        std::fputs(Error("no jobs in the file", jobs_path).str().c_str(), stderr);
         return 2;
     }
-    const bool terminal = isatty(fileno(stderr));
+    // No job's output may replace the job file or any job's shader or scene.
+    InputFiles inputs;
+    inputs.add(jobs_path);
+    for (const Job& job : parsed.jobs)
+        for (const std::string* p : {&job.vertex, &job.fragment, &job.scene}) inputs.add(*p);
+    ProgramCache programs;
     size_t failed = 0;
-    for (size_t i = 0; i < jobs->size(); ++i) {
-        const Job& job = (*jobs)[i];
-        if (Status st = run_job(job, exec); !st) {
-            ++failed;
-            if (terminal) std::fputc('\n', stderr);
-            std::fprintf(stderr, "%s:%d: error: job failed:\n%s", jobs_path.c_str(), job.line, st.error().str().c_str());
+    {
+        Progress progress("jobs", parsed.jobs.size());
+        for (const Job& job : parsed.jobs) {
+            Status st = run_job(job, exec, programs, inputs);
+            if (!st) {
+                ++failed;
+                progress.print(fmt::format("{}:{}: error: job failed:\n{}", jobs_path, job.line, st.error().str()));
+            }
+            progress.step(!st);
         }
-        if (terminal) draw_progress(i + 1, jobs->size(), failed);
     }
-    if (terminal) std::fputc('\n', stderr);
-    std::printf("%zu jobs, %zu rendered, %zu failed\n", jobs->size(), jobs->size() - failed, failed);
-    return failed ? 1 : 0;
+    std::printf("%zu jobs, %zu rendered, %zu failed, %zu malformed line%s; %zu program%s compiled\n",
+                parsed.jobs.size(), parsed.jobs.size() - failed, failed, parsed.errors.size(),
+                parsed.errors.size() == 1 ? "" : "s", programs.compiled(), programs.compiled() == 1 ? "" : "s");
+    return failed || !parsed.errors.empty() ? 1 : 0;
 }
 
 }  // namespace glslrun::cli

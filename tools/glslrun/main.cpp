@@ -7,7 +7,10 @@
 //   glslrun --compare ref.png image.png       image differences
 //   glslrun batch JOBS                        many renders in one process
 //   glslrun trace --pixel X,Y a.vert a.frag scene.toml   the shader debugger (docs/debugging.md)
+//   glslrun check a.frag ...                  each shader compiled alone: diagnostics only
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <condition_variable>
 #include <cstdio>
 #include <fstream>
@@ -20,12 +23,15 @@
 #include <fmt/ranges.h>
 
 #include "batch_command.h"
+#include "check_command.h"
 #include "command_line.h"
 #include "glslrun/glslrun.h"
 #include "piglit_exec.h"
 #include "piglit_isolate.h"
 #include "piglit_suite.h"
+#include "progress.h"
 #include "render_command.h"
+#include "scene/scene_reader.h"
 #include "scene/text_file.h"
 #include "trace_command.h"
 
@@ -51,6 +57,20 @@ CLI::Validator finite_in(double lo, double hi) {
         fmt::format("NUMBER in [{}, {}]", lo, hi));
 }
 
+// Where the documentation is: installed next to this executable
+// (bin/../share/doc/glslrun), else the source tree it was built from.
+std::string doc_dir() {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        fs::path installed = (exe.parent_path() / GLSLRUN_DOC_FROM_BIN).lexically_normal();
+        if (fs::exists(installed / "README.md", ec)) return installed.string();
+    }
+    if (fs::exists(GLSLRUN_SOURCE_DOCS, ec)) return GLSLRUN_SOURCE_DOCS;
+    return "docs/ in glslrun's source tree (not installed here)";
+}
+
 // ------------------------------------------------------------ glslrun test ---
 struct TestOptions {
     std::vector<std::string> paths;
@@ -59,6 +79,7 @@ struct TestOptions {
     std::string junit, json, shard;
     double time_limit = 120;
     bool no_isolate = false;
+    bool quiet = false, verbose = false;  // per-test lines: none, or passes too (default: the others)
     Precision precision = Precision::Precise;
     Backend backend = Backend::Auto;
 };
@@ -127,9 +148,14 @@ int run_test_command(const TestOptions& o) {
     run_options.time_limit_s = o.time_limit;
     run_options.precision = o.precision;
     run_options.backend = o.backend;
+    // Thousands of passes would bury the few lines that matter: by default
+    // only tests that do not pass get a line; a terminal gets a counter and ETA.
+    std::optional<cli::Progress> progress;
+    progress.emplace("tests", cases.size());
     auto report = [&](size_t i, const pg::TestResult& r) {
-        std::fputs((pg::format_result_line(cases[i].display, r) + "\n").c_str(), stdout);
-        std::fflush(stdout);
+        bool print = o.verbose || (!o.quiet && r.outcome != pg::Outcome::Pass);
+        if (print) progress->print(pg::format_result_line(cases[i].display, r), stdout);
+        progress->step(r.outcome == pg::Outcome::Fail);
         if (tsv) tsv << pg::format_tsv_line(cases[i].display, r) << "\n";
     };
     std::vector<pg::TestResult> results;
@@ -148,6 +174,7 @@ int run_test_command(const TestOptions& o) {
             return pg::run_test_file(cases[i].path, run_options);
         }, o.time_limit * 1.25 + 5, report);
     }
+    progress.reset();  // ends its line before the summary
     bool have_expect = !o.expect.empty();
     auto summary = pg::summarize(cases, results, have_expect ? &expectations : nullptr);
     std::fputs(pg::format_summary(summary, have_expect).c_str(), stdout);
@@ -171,7 +198,8 @@ int test_main(int argc, char** argv) {
     app.add_option("-j,--jobs", o.jobs, "tests run in parallel")->check(CLI::Range(1, 256));
     app.add_option("--tsv", o.tsv, "also write path, result, seconds, message to this TSV file");
     app.add_option("--expect", o.expect,
-                   "expectations list (\"path fail|skip # reason\"); unlisted tests must pass");
+                   "expectations list (\"path fail|skip # reason\"); unlisted tests must pass: an unlisted "
+                   "skip or fail is a regression (exit status 1), a listed test that passes is reported");
     app.add_option("--root", o.root, "print paths relative to this directory (and look them up there)");
     app.add_option("--time-limit", o.time_limit, "seconds per test (default 120)")
         ->check(finite_in(1e-3, 1e6));
@@ -179,12 +207,19 @@ int test_main(int argc, char** argv) {
     app.add_option("--json", o.json, "also write the results as JSON (name, result, time, message per test)");
     app.add_option("--shard", o.shard,
                    "run only shard I of N (0-based, I/N): every N-th test from the I-th, for CI matrices");
+    app.add_flag("-q,--quiet", o.quiet, "print no line per test, only the summary (and the reports asked for)");
+    app.add_flag("-v,--verbose", o.verbose,
+                 "print a line for every test, passes too (default: a line for each test that does not pass)");
     app.add_flag("--no-isolate", o.no_isolate,
                  "run tests in this process (default: one forked process per test, so a crash "
                  "or hang fails only that test)");
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
+    if (o.quiet && o.verbose) {
+        fmt::print(stderr, "error: --quiet and --verbose contradict each other\n");
+        return 2;
+    }
     return run_test_command(o);
 }
 
@@ -193,7 +228,10 @@ int batch_main(int argc, char** argv) {
     CLI::App app{"Renders many (vertex, fragment, scene, output) jobs in one process", "glslrun batch"};
     std::string jobs;
     ExecOptions exec;
-    app.add_option("jobs", jobs, "a file of jobs, one `VERT FRAG SCENE OUTPUT.png` per line ('#' comments)")
+    app.add_option("jobs", jobs,
+                   "a file of jobs, one `VERT FRAG SCENE OUTPUT` per line: fields separated by blanks, quoted "
+                   "as in a shell ('a b.png' or \"a b.png\") where they hold one; '#' starts a comment; the "
+                   "output's format by its name (.png, .jpg, .bmp, .tga)")
         ->required();
     app.add_option("--threads", exec.threads, "worker threads for drawing (default: one per core)")
         ->check(CLI::Range(1, 256));
@@ -205,7 +243,16 @@ int batch_main(int argc, char** argv) {
 // ------------------------------------------------ programs and scenes ---
 int program_cli(int argc, char** argv) {
     CLI::App app{"glslrun: legacy GLSL (1.10/1.20) on the CPU.\n"
-                 "Renders a scene file with a GLSL program, compiles shaders, or compares images.",
+                 "Renders a scene file with a GLSL program, compiles shaders, or compares images.\n"
+                 "Commands (each has its own --help):\n"
+                 "  glslrun [OPTIONS] [a.vert] a.frag [scene.toml]  render a scene; without one, compile only\n"
+                 "  glslrun check [--stage vert|frag] FILE...       compile each shader alone: file:line "
+                 "diagnostics, exit 0 or 1\n"
+                 "  glslrun test [--quiet] [--expect F] PATH...      run piglit .shader_test and glslparsertest "
+                 "files\n"
+                 "  glslrun batch JOBS                              render many jobs in one process\n"
+                 "  glslrun trace --pixel X,Y a.vert a.frag s.toml  the shader debugger: every statement at "
+                 "a pixel",
                  "glslrun"};
     std::vector<std::string> files;
     cli::RenderOptions o;
@@ -213,7 +260,10 @@ int program_cli(int argc, char** argv) {
     app.add_option("files", files,
                    "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
                    "pass-through one is used)");
-    app.add_option("-o,--output", o.output, "the PNG to write (default: <program>-<scene>.png; - for standard output); with several draw buffers, buffer i > 0 goes to NAME.i.png")
+    app.add_option("-o,--output", o.output,
+                   "the image to write, its format by the name: .png (lossless, the default), .jpg, .bmp or .tga "
+                   "(default: <program>-<scene>.png; - for PNG on standard output); with several draw buffers, "
+                   "buffer i > 0 goes to NAME.i.png; never over an input file")
         ->check([](const std::string& path) { return path.empty() ? std::string("the path is empty") : std::string(); });
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     app.add_option("--uniform", o.uniforms,
@@ -257,8 +307,14 @@ int program_cli(int argc, char** argv) {
                    "shader output (ULP, 8-bit) as a table, `key value` lines and heat maps into DIR "
                    "(created if missing)")
         ->type_name("DIR");
+    app.add_option("--stage,-S", o.stage,
+                   "the stage of shader files whose name does not give it (a.glsl): vert or frag")
+        ->check(CLI::IsMember({"vert", "frag"}));
     app.add_option("--compare", o.compare,
                    "compare the rendered image, or the PNG given, with this reference PNG");
+    app.add_option("--background", o.background,
+                   "--compare: the background colour R,G,B,A (0..255); pixels of it in both images are not covered "
+                   "(default: the scene's clear colour, else the reference's corners' colour; none: every pixel)");
     app.add_option("--tolerance", o.tolerance, "--compare: per-channel difference allowed (default 0)")
         ->check(CLI::Range(0, 255));
     app.add_option("--min-fraction", o.min_fraction,
@@ -273,7 +329,9 @@ int program_cli(int argc, char** argv) {
                "  glslrun shaders/minimal.vert shaders/minimal.frag scenes/spot.toml --size 512x512 --bench 100\n"
                "  glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml --precision fast "
                "--error-report err/\n"
-               "Scene files: docs/scene-format.md. Piglit tests: glslrun test --help");
+               "Exit status: 0 done, 1 a shader, scene or image comparison failed, 2 a usage or tool error.\n"
+               "Documentation: " + doc_dir() + " (README.md; scene-format.md for scene files, ci.md for exit "
+               "statuses and CI, debugging.md for trace, limits.md)");
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
     if (files.empty()) {
         std::fputs(app.help().c_str(), stdout);
@@ -282,10 +340,28 @@ int program_cli(int argc, char** argv) {
     return cli::run_render_command(files, o);
 }
 
+// A first argument that is neither an option nor a file, and looks like a
+// command ("trac"): a usage error that names the closest command, rather
+// than "unknown kind of file".
+std::optional<int> unknown_command(std::string_view word) {
+    static const std::vector<std::string_view> kCommands = {"test", "batch", "trace", "check"};
+    if (word.empty() || word[0] == '-' || word.find_first_of("./\\") != std::string_view::npos) return std::nullopt;
+    std::error_code ec;
+    if (std::filesystem::exists(std::string(word), ec)) return std::nullopt;
+    std::string best = scene::detail::closest(word, kCommands);
+    fmt::print(stderr, "glslrun: error: '{}' is neither a command nor a file{}\n", word,
+               best.empty() ? fmt::format("; the commands are {} (glslrun --help)", fmt::join(kCommands, ", "))
+                            : fmt::format("; did you mean 'glslrun {}'?", best));
+    return 2;
+}
+
 int run_command(int argc, char** argv) {
-    if (argc >= 2 && std::string_view(argv[1]) == "test") return test_main(argc - 1, argv + 1);
-    if (argc >= 2 && std::string_view(argv[1]) == "batch") return batch_main(argc - 1, argv + 1);
-    if (argc >= 2 && std::string_view(argv[1]) == "trace") return glslrun::cli::trace_main(argc - 1, argv + 1);
+    std::string_view first = argc >= 2 ? std::string_view(argv[1]) : std::string_view();
+    if (first == "test") return test_main(argc - 1, argv + 1);
+    if (first == "batch") return batch_main(argc - 1, argv + 1);
+    if (first == "trace") return glslrun::cli::trace_main(argc - 1, argv + 1);
+    if (first == "check") return glslrun::cli::check_main(argc - 1, argv + 1);
+    if (auto status = unknown_command(first)) return *status;
     return program_cli(argc, argv);
 }
 

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "glslrun/glslrun.h"
@@ -106,16 +107,23 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
     if (test_.require.glsl_version == 0) return fail("GLSL version requirement missing");
     std::vector<ShaderSource> vs, fs;
     std::vector<std::pair<Stage, ShaderSource>> all;
+    std::vector<const ShaderSection*> sections;
     for (const auto& section : test_.shaders) {
-        std::string text = section.text;
+        // Diagnostics cite the file the text is in, at that file's lines.
+        ShaderSource src;
         if (!section.file.empty()) {
-            auto loaded = scene::read_text_file((std::filesystem::path(dir) / section.file).string(), "shader file");
+            src.name = (std::filesystem::path(dir) / section.file).string();
+            auto loaded = scene::read_text_file(src.name, "shader file");
             if (!loaded) return fail(loaded.error().diagnostics[0].message);
-            text = *loaded;
+            src.text = effective_source(*loaded, test_.require);
+        } else if (options_.file.empty() || section.text == passthrough_vertex_shader()) {
+            src = {section.label, effective_source(section.text, test_.require)};
+        } else {
+            src = {options_.file, source_at_file_lines(section.text, test_.require, section.first_line)};
         }
-        ShaderSource src{section.label, effective_source(text, test_.require)};
         (section.stage == ShaderStage::Vertex ? vs : fs).push_back(src);
         all.emplace_back(to_stage(section.stage), src);
+        sections.push_back(&section);
     }
     CompileOptions copts;
     copts.default_version = test_.require.glsl_version;
@@ -132,9 +140,9 @@ std::optional<TestResult> ShaderTestRun::build_program(const std::string& dir) {
     }
     // Program::compile compiles and links; piglit fails on a compile error but
     // only records a link error (the test may expect it). Tell them apart.
-    for (const auto& [stage, src] : all) {
-        auto st = check_shader(stage, src, test_.require.glsl_version);
-        if (!st) return fail("failed to compile " + src.name + ": " + st.error().str());
+    for (size_t i = 0; i < all.size(); ++i) {
+        auto st = check_shader(all[i].first, all[i].second, test_.require.glsl_version);
+        if (!st) return fail("failed to compile " + sections[i]->label + ": " + st.error().str());
     }
     link_log_ = prog.error().str();
     return std::nullopt;
@@ -286,30 +294,49 @@ std::optional<TestResult> ShaderTestRun::set_uniform(int line, const SetUniform&
     return std::nullopt;
 }
 
-std::optional<TestResult> ShaderTestRun::probe(int line, const Probe& p) {
-    const int W = fb_.width, H = fb_.height;
-    int x = 0, y = 0, w = 1, h = 1;
+namespace {
+
+// The probe's region in pixels, checked while still floating point: a cast
+// of 3e9 (or of NaN) to int is undefined, and x86 turned it into INT_MIN,
+// whose sum with the width wrapped into the window, and a wrong region passed.
+// nullopt when any part lies outside the W x H window.
+std::optional<std::array<int, 4>> probe_region(const Probe& p, int W, int H) {
+    double x = 0, y = 0, w = 1, h = 1;
     if (p.region == Probe::Region::All) {
         w = W;
         h = H;
     } else if (p.relative) {
-        x = int(p.rect[0] * W);
-        y = int(p.rect[1] * H);
+        x = std::trunc(double(p.rect[0]) * W);
+        y = std::trunc(double(p.rect[1]) * H);
         if (p.region == Probe::Region::Rect) {
-            w = int(p.rect[2] * W);
-            h = int(p.rect[3] * H);
+            w = std::trunc(double(p.rect[2]) * W);
+            h = std::trunc(double(p.rect[3]) * H);
         } else {
-            x = std::min(x, W - 1);
-            y = std::min(y, H - 1);
+            x = std::min(x, double(W - 1));
+            y = std::min(y, double(H - 1));
         }
     } else {
-        x = int(p.rect[0]);
-        y = int(p.rect[1]);
-        if (p.region == Probe::Region::Rect) { w = int(p.rect[2]); h = int(p.rect[3]); }
+        x = std::trunc(double(p.rect[0]));
+        y = std::trunc(double(p.rect[1]));
+        if (p.region == Probe::Region::Rect) {
+            w = std::trunc(double(p.rect[2]));
+            h = std::trunc(double(p.rect[3]));
+        }
     }
-    if (x < 0 || y < 0 || x + w > W || y + h > H)
-        return line_fail(line, fmt::format("probe region ({}, {}, {}, {}) is outside the {}x{} window",
-                                           x, y, w, h, W, H));
+    // Written so that NaN fails every comparison.
+    if (!(x >= 0 && y >= 0 && w >= 0 && h >= 0 && x + w <= W && y + h <= H)) return std::nullopt;
+    return std::array<int, 4>{int(x), int(y), int(w), int(h)};
+}
+
+}  // namespace
+
+std::optional<TestResult> ShaderTestRun::probe(int line, const Probe& p) {
+    const int W = fb_.width, H = fb_.height;
+    auto region = probe_region(p, W, H);
+    if (!region)
+        return line_fail(line, fmt::format("probe region ({}) is outside the {}x{} window",
+                                           fmt::join(p.rect.begin(), p.rect.begin() + (p.region == Probe::Region::Rect ? 4 : 2), ", "), W, H));
+    const auto [x, y, w, h] = *region;
     const int n = p.rgba ? 4 : 3;
     for (int j = y; j < y + h; ++j) {
         for (int i = x; i < x + w; ++i) {
@@ -407,8 +434,11 @@ TestResult run_parser_test(const std::string& text, const std::string& ext, cons
     if (t.glsl_es) return skip("GLSL ES is not supported");
     if (t.glsl_version > options.caps.max_glsl_version)
         return skip(fmt::format("requires GLSL {}.{:02}", t.glsl_version / 100, t.glsl_version % 100));
-    for (const auto& e : t.extensions)
-        if (!e.empty() && e[0] != '!') return skip("extension " + e + " is not supported");
+    for (const auto& e : t.extensions) {
+        bool absent = !e.empty() && e[0] == '!';
+        if (options.caps.has_extension(absent ? e.substr(1) : e) == absent)
+            return skip(absent ? "requires " + e.substr(1) + " to be absent" : "extension " + e + " is not supported");
+    }
     Stage stage = ext == ".vert" ? Stage::Vertex : Stage::Fragment;
     ShaderSource src{name, text};
     std::string log;
@@ -435,8 +465,11 @@ TestResult run_test_file(const std::string& path, const RunOptions& options) {
     auto text = scene::read_text_file(path, "test file");
     if (!text) return fail(text.error().diagnostics[0].message);
     std::string ext = extension_of(path);
-    if (ext == ".shader_test")
-        return run_shader_test(*text, std::filesystem::path(path).parent_path().string(), options);
+    if (ext == ".shader_test") {
+        RunOptions named = options;
+        if (named.file.empty()) named.file = path;
+        return run_shader_test(*text, std::filesystem::path(path).parent_path().string(), named);
+    }
     return run_parser_test(*text, ext, std::filesystem::path(path).filename().string(), options);
 }
 

@@ -18,6 +18,9 @@ struct RunOptions {
     // When it becomes true, a running draw stops (ExecOptions::cancel): the
     // wall-clock limit of `glslrun test --no-isolate`.
     const std::atomic<bool>* cancel = nullptr;
+    // The test file's name in compile diagnostics, which cite its own lines;
+    // "" names the section instead ("[fragment shader]:3" within the section).
+    std::string file;
 };
 
 // Dispatches on the extension; never throws for bad input (it becomes a fail).

@@ -427,6 +427,15 @@ std::string effective_source(const std::string& text, const Requirements& requir
     return version + "\n" + text;
 }
 
+std::string source_at_file_lines(const std::string& text, const Requirements& require, int first_line) {
+    std::string source = effective_source(text, require);
+    const bool version_added = source.size() != text.size();
+    const int blank = first_line - 1 - (version_added ? 1 : 0);
+    if (blank <= 0) return source;
+    source.insert(version_added ? source.find('\n') + 1 : 0, size_t(blank), '\n');
+    return source;
+}
+
 // ------------------------------------------------------ requirements ---
 namespace {
 
@@ -462,7 +471,10 @@ std::optional<std::string> skip_reason(const ShaderTest& test, const Capabilitie
     if (req.gl_version > caps.max_gl_version)
         return "requires GL " + std::to_string(req.gl_version / 10) + "." +
                std::to_string(req.gl_version % 10);
-    if (!req.extensions.empty()) return "extension " + req.extensions[0] + " is not supported";
+    for (const auto& e : req.extensions)
+        if (!caps.has_extension(e)) return "extension " + e + " is not supported";
+    for (const auto& e : req.absent_extensions)
+        if (caps.has_extension(e)) return "requires " + e + " to be absent";
     for (const auto& limit : req.limits) {
         auto value = capability(caps, limit.name);
         if (!value) return "unknown limit " + limit.name;

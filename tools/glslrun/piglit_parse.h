@@ -3,6 +3,7 @@
 // processing: no file I/O beyond what the caller passes in, and nothing from
 // the glslrun library, so the parser can be unit-tested on its own.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "frontend/source_rewrite.h"  // kExtraExtensions: a constant, no code
 #include "glslrun/glslrun.h"
 
 namespace glslrun::piglit {
@@ -60,6 +62,11 @@ struct Capabilities {
     long max_vertex_uniform_components = 16384;
     long max_vertex_attribs = 16;
     long max_clip_planes = 6;
+    // The extensions a test may require, or require to be absent (frontend/source_rewrite.h).
+    std::vector<std::string> extensions{frontend::kExtraExtensions.begin(), frontend::kExtraExtensions.end()};
+    bool has_extension(const std::string& name) const {
+        return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
+    }
 };
 
 // ------------------------------------------------------------ commands ---
@@ -162,6 +169,10 @@ std::optional<std::string> skip_reason(const ShaderTest& test, const Capabilitie
 // The text handed to the compiler: piglit prepends "#version N" (from
 // "GLSL >= N") to any shader that does not contain "#version ".
 std::string effective_source(const std::string& text, const Requirements& require);
+// effective_source, with blank lines before the section's text so that the
+// compiler's line numbers are the test file's (the section starts on
+// `first_line`); a #version line added goes first, on line 1.
+std::string source_at_file_lines(const std::string& text, const Requirements& require, int first_line);
 
 // The pass-through vertex shader of [vertex shader passthrough].
 std::string passthrough_vertex_shader();

@@ -2,6 +2,7 @@
 // --stats, and `--compare REF.png` on the result or on a given PNG.
 #include "render_command.h"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
@@ -16,6 +17,9 @@
 
 #include "command_line.h"
 #include "error_report_command.h"
+#include "image_output.h"
+#include "output_guard.h"
+#include "progress.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
 #include "runtime/fragment_pipeline.h"
@@ -41,35 +45,82 @@ int fail(const Error& e, int status = kResultError) {
 
 }  // namespace
 
-Result<Inputs> classify(const std::vector<std::string>& files) {
-    Inputs in;
+namespace {
+
+std::string lower(std::string text) {
+    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+// A shader's stage by its name: .vert/.vs and .frag/.fs, also before .glsl
+// (a.vert.glsl); "" when the name does not say.
+std::string stage_by_name(const std::string& path) {
+    fs::path p(path);
+    std::string ext = lower(p.extension().string());
+    if (ext == ".glsl") ext = lower(p.stem().extension().string());
+    if (ext == ".vert" || ext == ".vs") return "vert";
+    if (ext == ".frag" || ext == ".fs") return "frag";
+    return {};
+}
+
+}  // namespace
+
+// What each file is, by its name; a file of no known kind is a usage error.
+// Shaders get their stage ("vert", "frag"): --stage names it for every
+// shader whose name does not.
+Result<std::vector<std::pair<std::string, std::string>>> sort_files(const std::vector<std::string>& files,
+                                                                      const std::string& stage) {
+    std::vector<std::pair<std::string, std::string>> kinds;
+    int scenes = 0, images = 0;
     for (const std::string& path : files) {
-        std::string ext = fs::path(path).extension().string();
-        bool shader = ext == ".vert" || ext == ".vs" || ext == ".frag" || ext == ".fs";
+        if (Status st = scene::check_path(path, "input"); !st) return st.error();
+        std::string ext = lower(fs::path(path).extension().string());
+        std::string kind = stage_by_name(path);
         if (ext == ".toml") {
-            if (!in.scene.empty()) return Error("only one scene file may be given", path);
-            in.scene = path;
+            if (scenes++) return Error("only one scene file may be given", path);
+            kind = "scene";
         } else if (ext == ".png") {
-            if (!in.image.empty()) return Error("only one image may be given", path);
+            if (images++) return Error("only one image may be given", path);
+            kind = "image";
+        } else if (kind.empty() && !stage.empty()) {
+            kind = stage;
+        } else if (kind.empty() && ext == ".glsl") {
+            return Error("cannot tell the shader's stage from its name: give --stage vert or --stage frag, "
+                         "or name it a.vert.glsl / a.frag.glsl",
+                         path);
+        } else if (kind.empty()) {
+            return Error("unknown kind of file: shaders end in .vert or .frag (or .glsl, with --stage), scenes "
+                         "in .toml, images in .png",
+                         path);
+        }
+        kinds.emplace_back(path, kind);
+    }
+    return kinds;
+}
+
+Result<Inputs> classify(const std::vector<std::string>& files, const std::string& stage) {
+    auto kinds = sort_files(files, stage);
+    if (!kinds) return kinds.error();
+    Inputs in;
+    for (const auto& [path, kind] : *kinds) {
+        if (kind == "scene") {
+            in.scene = path;
+        } else if (kind == "image") {
             in.image = path;
-        } else if (!shader) {
-            return Error("unknown kind of file: shaders end in .vert or .frag, scenes in .toml", path);
         } else {
             auto text = scene::read_text_file(path, "shader");
             if (!text) return text.error();
-            bool vertex = ext == ".vert" || ext == ".vs";
-            (vertex ? in.vertex : in.fragment).push_back({path, *text});
+            (kind == "vert" ? in.vertex : in.fragment).push_back({path, *text});
         }
     }
     return in;
 }
 
-Status check_png_name(const std::string& output) {
-    std::string ext = fs::path(output).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png")
-        return Error(fmt::format("cannot write '{}': glslrun writes PNG images only (a name ending in .png, or - "
-                                 "for standard output)", output));
+Status check_image_name(const std::string& output) {
+    if (!image_format_of(output))
+        return Error(fmt::format("cannot write '{}': glslrun writes PNG (lossless), JPEG, BMP and TGA images, "
+                                 "chosen by the name's ending (.png, .jpg/.jpeg, .bmp, .tga), or - for PNG on "
+                                 "standard output", output));
     return Ok{};
 }
 
@@ -99,7 +150,7 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
                          "--dump-ir or --compare, which print there too");
         return Ok{};
     }
-    return check_png_name(output);
+    return check_image_name(output);
 }
 
 // Frame i's image name: out.png -> out.0000.png, out.0001.png, ...
@@ -110,8 +161,50 @@ std::string frame_path(const std::string& output, int frame) {
 
 Status write_buffers(const Framebuffer& fb, const std::string& output) {
     for (int i = 0; i < fb.color_buffers(); ++i)
-        if (Status st = write_png(fb, scene::color_buffer_path(output, i), i); !st) return st;
+        if (Status st = write_image(fb, i, scene::color_buffer_path(output, i)); !st) return st;
     return Ok{};
+}
+
+// Every file the command reads, so that no output is opened over one.
+InputFiles input_files(const Inputs& in, const scene::Scene* scene, const RenderOptions& o) {
+    InputFiles files;
+    for (const auto* stage : {&in.vertex, &in.fragment})
+        for (const ShaderSource& s : *stage) files.add(s.name);
+    if (!in.image.empty()) files.add(in.image);
+    if (!o.compare.empty()) files.add(o.compare);
+    if (scene) files.add_scene(*scene);
+    return files;
+}
+
+// The images -o names (per frame and colour buffer) and --diff: none may be an input.
+Status check_outputs(const InputFiles& inputs, const std::string& output, int buffers, const RenderOptions& o) {
+    if (!o.diff.empty())
+        if (Status st = inputs.check_output(o.diff, "--diff"); !st) return st;
+    if (output.empty() || output == "-") return Ok{};
+    const int frames = std::max(o.frames, 1);
+    for (int frame = 0; frame < frames; ++frame)
+        for (int i = 0; i < buffers; ++i) {
+            std::string name = scene::color_buffer_path(o.frames > 0 ? frame_path(output, frame) : output, i);
+            if (Status st = inputs.check_output(name, "-o"); !st) return st;
+        }
+    return Ok{};
+}
+
+// Without a vertex shader glslrun links a stand-in for GL's fixed-function
+// vertex stage; an error about the vertex stage or a varying says so.
+Result<Program> compile_program(const Inputs& in) {
+    auto prog = Program::compile(in.vertex, in.fragment);
+    if (prog || !in.vertex.empty()) return prog;
+    Error e = prog.error();
+    for (Diagnostic& d : e.diagnostics)
+        if (d.message.find("vertex") != std::string::npos || d.message.find("varying") != std::string::npos) {
+            d.message += "\n  note: no vertex shader was given, so glslrun linked a stand-in for GL's fixed-function "
+                         "vertex stage (gl_Position = ftransform(), gl_FrontColor = gl_Color, gl_TexCoord[i] = "
+                         "gl_TextureMatrix[i] * gl_MultiTexCoordi, gl_FogFragCoord); a varying of your own needs a "
+                         ".vert file that writes it";
+            break;
+        }
+    return e;
 }
 
 // The built-in uniforms read with their values, one per line (matrices one
@@ -192,21 +285,71 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     fmt::print("textures     {}\n", describe_textures(scene));
 }
 
+// Which pixels --compare counts as covered: those that differ from the
+// background colour in either image. The background is --background's, else
+// the rendered scene's clear colour, else the colour of the reference's four
+// corners where they agree; else every pixel is covered.
+struct Background {
+    std::optional<scene::Rgba8> colour;
+    std::string description;  // "covered: pixels ..."
+};
+
+Result<Background> compare_background(const RenderOptions& o, std::optional<scene::Rgba8> clear,
+                                      const scene::Image& reference) {
+    auto rgba = [](const scene::Rgba8& c) { return fmt::format("{},{},{},{}", c[0], c[1], c[2], c[3]); };
+    if (o.background == "none") return Background{std::nullopt, "all (--background none)"};
+    if (!o.background.empty()) {
+        scene::Rgba8 c{};
+        std::string_view text = o.background;
+        for (size_t i = 0; i < 4; ++i) {
+            size_t comma = i < 3 ? text.find(',') : text.size();
+            if (comma == std::string_view::npos) comma = text.size();
+            auto v = parse_int_pair(fmt::format("{},0", text.substr(0, comma)), ",");
+            if (!v || v->first < 0 || v->first > 255 || (i < 3 && comma == text.size()))
+                return Error(fmt::format("--background '{}' must be R,G,B,A with each in 0..255, or none", o.background));
+            c[i] = uint8_t(v->first);
+            text.remove_prefix(std::min(text.size(), comma + 1));
+        }
+        if (!text.empty())
+            return Error(fmt::format("--background '{}' must be R,G,B,A with each in 0..255, or none", o.background));
+        return Background{c, fmt::format("that differ from --background {} in either image", rgba(c))};
+    }
+    if (clear) return Background{clear, fmt::format("that differ from the scene's clear colour {} in either image",
+                                                    rgba(*clear))};
+    if (reference.width > 0 && reference.height > 0) {
+        const int w = reference.width - 1, h = reference.height - 1;
+        const uint8_t* corner = reference.pixel(0, 0);
+        bool same = true;
+        for (auto [x, y] : {std::pair{w, 0}, std::pair{0, h}, std::pair{w, h}})
+            same = same && std::equal(corner, corner + 4, reference.pixel(x, y));
+        if (same) {
+            scene::Rgba8 c{corner[0], corner[1], corner[2], corner[3]};
+            return Background{c, fmt::format("that differ from {} (the reference's corners) in either image",
+                                             rgba(c))};
+        }
+    }
+    return Background{std::nullopt, "all (the reference's corners differ: give --background R,G,B,A)"};
+}
+
 // Exit status 0: the images agree within the thresholds; 1: they differ
 // (in size too); 2: a file could not be read or written.
-int compare_with(const scene::Image& actual, const RenderOptions& o) {
+int compare_with(const scene::Image& actual, const RenderOptions& o, std::optional<scene::Rgba8> clear) {
     auto reference = scene::read_png(o.compare);
     if (!reference) return fail(reference.error(), kToolError);
     scene::CompareOptions options;
     options.tolerance = o.tolerance;
     options.min_fraction_within = o.min_fraction;
+    auto background = compare_background(o, clear, *reference);
+    if (!background) return fail(background.error(), kToolError);
+    options.clear_color = background->colour;
     auto stats = scene::compare_images(*reference, actual, options);
     if (!stats) return fail(stats.error());
     fmt::print("{}\n", stats->summary());
+    fmt::print("covered: pixels {}\n", background->description);
     if (!o.diff.empty()) {
         auto diff = scene::diff_image(*reference, actual, o.tolerance);
         if (!diff) return fail(diff.error(), kToolError);
-        if (Status st = scene::write_png(*diff, o.diff); !st) return fail(st.error(), kToolError);
+        if (Status st = write_image(*diff, o.diff); !st) return fail(st.error(), kToolError);
     }
     return stats->passed ? 0 : 1;
 }
@@ -280,6 +423,15 @@ std::jthread warm_up_compiler(const Inputs& in) {
 
 }  // namespace
 
+// --size and --uniform, checked before anything is read: a malformed one is a usage error.
+Status check_option_values(const RenderOptions& o) {
+    for (const std::string& arg : o.uniforms)
+        if (auto settings = scene::parse_uniform_override(arg); !settings) return settings.error();
+    if (!o.size.empty())
+        if (auto size = parse_size(o.size); !size) return size.error();
+    return Ok{};
+}
+
 // The scene file, with --size and --uniform applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) {
     auto scene = scene::load_scene(in.scene);
@@ -304,10 +456,14 @@ namespace {
 int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);
     auto scene = load_sized_scene(in, o);
-    if (!scene) return fail(scene.error());
+    if (!scene) return fail(scene.error(), kResultError);
     std::string output = o.output.empty() ? default_output(in) : o.output;
-    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error());
-    if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o);
+    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error(), kToolError);
+    const InputFiles inputs = input_files(in, &*scene, o);
+    if (!o.error_report.empty()) return run_error_report(in.vertex, in.fragment, *scene, o, inputs);
+    bool writes_image = !o.output.empty() || !o.dump_ir;
+    if (Status st = check_outputs(inputs, writes_image ? output : "", scene::color_buffers(*scene), o); !st)
+        return fail(st.error(), kToolError);
     // Allocated before the compile, so that its page faults (2.7 ms at
     // 512x512, perf) overlap the warm-up too.
     auto fb = Framebuffer::create(scene->width, scene->height, false, scene::color_buffers(*scene));
@@ -316,7 +472,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
     if (warm_up.joinable()) warm_up.join();
-    auto prog = Program::compile(in.vertex, in.fragment);
+    auto prog = compile_program(in);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
@@ -334,15 +490,16 @@ int render(const Inputs& in, const RenderOptions& o) {
         if (Status st = bench_frames(*programs, *scene, *fb, o.bench_frames, bench); !st) return fail(st.error());
     start = Clock::now();
     // --dump-ir alone prints the IR: it writes no image unless -o asks for one.
-    if (!o.output.empty() || !o.dump_ir)
-        if (Status st = write_buffers(*fb, output); !st) return fail(st.error());
+    // An image that cannot be written is a tool error (docs/ci.md), standard output full too.
+    if (writes_image)
+        if (Status st = write_buffers(*fb, output); !st) return fail(st.error(), kToolError);
     double output_ms = ms_since(start);
     if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
     if (o.bench_frames > 0) {
         bench.once_s = {{"output", output_ms / 1e3}, {"llvm_compile", prog->jit_compile_seconds()}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);
     }
-    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(*fb), o);
+    if (!o.compare.empty()) return compare_with(scene::read_framebuffer(*fb), o, scene::to_rgba8(scene->clear_color));
     return 0;
 }
 
@@ -357,10 +514,12 @@ bool any_program_has(const scene::ScenePrograms& programs, const std::string& na
 // scene's [animation], or --time-uniform and --fps), into out.0000.png, ...
 int render_frames(const Inputs& in, const RenderOptions& o) {
     auto scene = load_sized_scene(in, o);
-    if (!scene) return fail(scene.error());
+    if (!scene) return fail(scene.error(), kResultError);
     std::string output = o.output.empty() ? default_output(in) : o.output;
-    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error());
-    auto prog = Program::compile(in.vertex, in.fragment);
+    if (Status st = check_output(output, o, scene::color_buffers(*scene)); !st) return fail(st.error(), kToolError);
+    if (Status st = check_outputs(input_files(in, &*scene, o), output, scene::color_buffers(*scene), o); !st)
+        return fail(st.error(), kToolError);
+    auto prog = compile_program(in);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
     prog->exec.precision = o.precision;
@@ -375,49 +534,75 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
     else
         scene->uniforms.push_back({time, {0.0}, false, {"--frames", 0}});
     Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    Progress progress("frames", size_t(o.frames));
     for (int frame = 0; frame < o.frames; ++frame) {
         if (timed) scene->uniforms.back().values = {frame / fps};
         auto stats = scene::render_scene(*programs, *scene, fb);
         if (!stats) return fail(stats.error());
-        if (Status st = write_buffers(fb, frame_path(output, frame)); !st) return fail(st.error());
+        if (Status st = write_buffers(fb, frame_path(output, frame)); !st) return fail(st.error(), kToolError);
+        progress.step();
     }
     return 0;
 }
 
 }  // namespace
 
+// `glslrun --compare REF.png IMAGE.png`: any other file is a usage error.
+int compare_files(const std::vector<std::string>& files, const RenderOptions& o) {
+    if (o.bench_frames > 0 || o.stats || o.frames > 0 || o.dump_ir || !o.output.empty() || !o.error_report.empty())
+        return fail(Error("comparing two images takes only --tolerance, --min-fraction, --background and --diff: "
+                          "-o, --bench, --stats, --frames, --dump-ir and --error-report need shaders and a scene"),
+                    kToolError);
+    for (const std::string& f : files)
+        if (fs::path(f).extension() != ".png" || files.size() != 1)
+            return fail(Error("--compare takes one image besides the reference (`glslrun --compare REF.png "
+                              "IMAGE.png`), or a scene to render: PNG images only",
+                              f),
+                        kToolError);
+    auto image = scene::read_png(files[0]);
+    if (!image) return fail(image.error(), kToolError);
+    Inputs in;
+    in.image = files[0];
+    if (Status st = check_outputs(input_files(in, nullptr, o), "", 1, o); !st) return fail(st.error(), kToolError);
+    return compare_with(*image, o, std::nullopt);
+}
+
 int run_render_command(const std::vector<std::string>& files, const RenderOptions& o) {
-    auto in = classify(files);
+    // Two images: no shader or scene in sight, so no message about them.
+    bool only_images = !files.empty() && std::none_of(files.begin(), files.end(), [](const std::string& f) {
+        std::string ext = lower(fs::path(f).extension().string());
+        return ext == ".toml" || !stage_by_name(f).empty() || ext == ".glsl";
+    });
+    if (!o.compare.empty() && only_images && o.stage.empty()) return compare_files(files, o);
+    if (auto kinds = sort_files(files, o.stage); !kinds) return fail(kinds.error(), kToolError);
+    if (Status st = check_option_values(o); !st) return fail(st.error(), kToolError);
+    auto in = classify(files, o.stage);
     if (!in) return fail(in.error());
     bool has_shaders = !in->vertex.empty() || !in->fragment.empty();
-    if (!in->image.empty()) {
-        if (o.compare.empty() || has_shaders || !in->scene.empty() || o.bench_frames > 0)
-            return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image));
-        auto image = scene::read_png(in->image);
-        if (!image) return fail(image.error(), kToolError);
-        return compare_with(*image, o);
-    }
-    if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"));
+    if (!in->image.empty())
+        return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image), kToolError);
+    if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"), kToolError);
     if (!o.error_report.empty() && in->scene.empty())
-        return fail(Error("--error-report needs a scene file (scene.toml) to render"));
+        return fail(Error("--error-report needs a scene file (scene.toml) to render"), kToolError);
     if (!o.error_report.empty() &&
         (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
         return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "
-                          "--bench, --compare, --stats or --dump-ir"));
+                          "--bench, --compare, --stats or --dump-ir"), kToolError);
     if (o.frames > 0 && (o.bench_frames > 0 || !o.compare.empty() || o.stats || !o.error_report.empty()))
         return fail(Error("--frames writes a sequence of images: it does not combine with --bench, --compare, "
-                          "--stats or --error-report"));
+                          "--stats or --error-report"), kToolError);
     if (o.frames == 0 && (!o.time_uniform.empty() || o.frames_per_second > 0))
-        return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"));
+        return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"), kToolError);
     if (o.time_uniform.starts_with("gl_"))
         return fail(Error(fmt::format("--time-uniform '{}': the time goes to a user uniform, not a built-in one",
-                                      o.time_uniform)));
+                                      o.time_uniform)), kToolError);
     if (o.frames > 0 && !in->scene.empty()) return render_frames(*in, o);
     if (!in->scene.empty()) return render(*in, o);
     if (!o.output.empty() || o.stats || o.bench_frames > 0 || !o.compare.empty())
-        return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"));
+        return fail(Error("rendering needs a scene file (scene.toml); see scenes/ and docs/scene-format.md"),
+                    kToolError);
     // Compile only: diagnostics, and the IR with --dump-ir.
-    auto prog = Program::compile(in->vertex, in->fragment);
+    auto prog = compile_program(*in);
     if (!prog) return fail(prog.error());
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     return 0;

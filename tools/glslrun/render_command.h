@@ -10,6 +10,8 @@ namespace glslrun::cli {
 
 struct RenderOptions {
     std::string output, size, compare, diff;
+    std::string background;    // --compare: R,G,B,A or "none"; "" for the scene's clear colour or the corners'
+    std::string stage;         // --stage vert|frag: the stage of shaders whose name does not say
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
     int tolerance = 0;
     double min_fraction = 1.0;  // --compare passes when this fraction of the covered pixels is within tolerance
@@ -32,13 +34,14 @@ struct Inputs {
     std::vector<ShaderSource> vertex, fragment;
     std::string scene, image;
 };
-Result<Inputs> classify(const std::vector<std::string>& files);
+// `stage` ("vert", "frag" or ""): --stage, for shaders whose name gives none.
+Result<Inputs> classify(const std::vector<std::string>& files, const std::string& stage = "");
 // The scene file, with --size applied; its warnings are printed.
 Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
 
-// An output name ends in .png (any case): PNG data is never written under
-// a misleading name.
-Status check_png_name(const std::string& output);
+// An output name ends in .png, .jpg/.jpeg, .bmp or .tga (any case): the
+// format is the name's; no image is written under a misleading name.
+Status check_image_name(const std::string& output);
 
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for
 // --compare at most one PNG. Returns the process exit status.

@@ -8,6 +8,7 @@
 // (gl_FragDepth's value where the shader writes it). Vertex outputs come from
 // run_vertices() over every object's vertices with the object's state.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,7 +61,10 @@ Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const
 // Writes DIR/reference.png, DIR/<mode>.png and per pixel output
 // DIR/<output>_ulp.png (heat map) and, for the colour, DIR/<output>_diff8.png
 // (scene::diff_image). Returns the paths written. DIR must exist.
-Result<std::vector<std::string>> write_error_images(const ErrorReport& report, const std::string& dir);
+// `check_path`, when given, may refuse a path before it is written.
+Result<std::vector<std::string>> write_error_images(
+    const ErrorReport& report, const std::string& dir,
+    const std::function<Status(const std::string&)>& check_path = {});
 
 // The table for people, and `key value` lines for scripts (bench/precision.py).
 std::string format_error_table(const ErrorReport& report, const std::vector<std::string>& files);

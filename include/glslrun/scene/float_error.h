@@ -99,5 +99,7 @@ Result<ImageError> compare_float_images(const std::string& name, const FloatImag
 // One RGB colour per pixel of error.pixel_ulp on a log2 scale (heat_map_legend() says which).
 Image heat_map(const ImageError& error);
 std::string heat_map_legend();
+// The legend as an image: the ramp with its ULP values and the marker colours, labelled.
+Image heat_map_legend_image();
 
 }  // namespace glslrun::scene

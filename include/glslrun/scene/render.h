@@ -46,7 +46,9 @@ private:
 // Draws every pass's objects into fb as it is, or cleared first to `clear`
 // (by the first draw's tiles: draw() with ClearValues). With passes, the
 // scene's and objects' uniforms are set on each pass's program that declares
-// them; a name that no pass's program declares is an error.
+// them; a name that no pass's program declares is an error. fb.rounding is
+// set from the programs' precision (color_rounding_for: Fast stores colours
+// as the GPU does).
 Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                                      const ClearValues& clear = {});
 // The same, compiling the passes' own programs first.

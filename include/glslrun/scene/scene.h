@@ -6,6 +6,7 @@
 // tools/glref draws the same Scene with Mesa through EGL, so the two images
 // differ only by the pipeline.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -56,8 +57,13 @@ struct LightSetting {
     // Whether the file gave GL_POSITION / GL_SPOT_DIRECTION. GL transforms
     // only what glLightfv sets: a parameter left out keeps its eye-space
     // default ((0,0,1,0), (0,0,-1)), which no modelview ever transformed.
-    bool has_position = true, has_spot_direction = true;
+    // A position or direction that differs from GL's default counts as given
+    // even where the flag was left false (a scene built in code).
+    bool has_position = false, has_spot_direction = false;
 };
+// GL 2.1's lights as a scene without [lights] has them: every light off, light
+// 0 with its white diffuse and specular, nothing given.
+std::array<LightSetting, 8> default_light_settings();
 
 // A [current] attribute value that no array gives: glMultiTexCoord4f
 // ("gl_MultiTexCoord0".."7"), glFogCoordf ("gl_FogCoord") or glVertexAttrib4f
@@ -163,13 +169,18 @@ struct Scene {
     glm::vec4 clear_color{0, 0, 0, 0};  // GL's default
     float clear_depth = 1.0f;
     int clear_stencil = 0;
+    // The one source of the matrices and the lights: every draw takes
+    // modelview = view * model, projection, and the lights transformed to eye
+    // space by `view` (derive_eye_space_lights) from these fields.
     glm::mat4 view{1.0f};        // the camera: modelview before any object transform
     glm::mat4 projection{1.0f};
-    // Everything else of the GL state. Lights are already in eye space
-    // (derived from `lights`), the modelview is the view; per object
-    // render_scene() sets modelview = view * model and the material overrides.
+    std::array<LightSetting, 8> lights = default_light_settings();
+    // Everything else of the GL state. Its modelview, projection and lights
+    // are copies that load_scene fills in for readers; leave them at GL's
+    // defaults in a scene built in code. A copy that differs from both its
+    // default and what the fields above give is refused by render_scene
+    // (it would be ignored), never drawn silently.
     GLState gl;
-    std::array<LightSetting, 8> lights;
     std::vector<TextureSetting> textures;  // by unit, ascending
     std::vector<RenderTarget> targets;     // [render_targets.NAME], in file order
     std::vector<UniformSetting> uniforms;  // for every object
@@ -180,6 +191,10 @@ struct Scene {
     // [[passes]]; empty: one pass of every object with the scene's program and state.
     std::vector<Pass> passes;
     Animation animation;
+    // The image and mesh files the scene read (its textures, OBJ meshes), as
+    // opened; a pass's shader files are its sources' names. The command line
+    // never writes an output over any of them.
+    std::vector<std::string> files;
     // Legal but probably unintended settings, e.g. a texture that GL 2.1's
     // completeness rules make sample as (0, 0, 0, 1). Renderers print them.
     std::vector<Diagnostic> warnings;
@@ -197,8 +212,12 @@ Result<std::vector<UniformSetting>> parse_uniform_override(std::string_view arg)
 // Appends `settings` after the scene's and every object's own uniforms, so they win.
 void override_uniforms(Scene& scene, const std::vector<UniformSetting>& settings);
 
-// Recomputes scene.gl's eye-space lights from scene.lights and scene.view;
-// call it after changing either (load_scene already did).
+// The eye-space lights every draw uses: scene.lights transformed by scene.view
+// as glLightfv after gluLookAt would.
+std::array<LightState, 8> eye_space_lights(const Scene& scene);
+// Sets scene.gl's copies (modelview, projection, lights) from view,
+// projection and lights, for code that reads scene.gl; rendering does not
+// need it (load_scene and resize_scene call it).
 void derive_eye_space_lights(Scene& scene);
 
 // Changes the output size (--size) and keeps a perspective camera's aspect

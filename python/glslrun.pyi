@@ -1,0 +1,107 @@
+# The type stub of `import glslrun` (python/module.cpp, python/module_scene.cpp),
+# installed as glslrun/__init__.pyi with py.typed. CI checks it with
+# mypy.stubtest against the built module and `mypy --strict` over
+# examples/render.py and python/tests/typed_use.py.
+from typing import Any, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+# A number, a sequence of numbers (nested as deep as wanted) or a numpy array.
+_Numbers = Union[float, int, bool, Sequence[Any], npt.NDArray[Any]]
+_Image = npt.NDArray[np.uint8]  # H x W x 4 RGBA8, top row first
+_Outputs = dict[str, npt.NDArray[np.float32]]  # name -> (count, components)
+
+class Error(RuntimeError):
+    # (file, line, message, warning) per diagnostic.
+    diagnostics: list[tuple[str, int, str, bool]]
+
+class Scene:
+    def __init__(self) -> None: ...
+    @staticmethod
+    def load(path: str) -> Scene: ...
+    @staticmethod
+    def parse(toml: str, path: str = "<string>") -> Scene: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def width(self) -> int: ...
+    @property
+    def height(self) -> int: ...
+    @property
+    def objects(self) -> int: ...
+    @property
+    def warnings(self) -> list[str]: ...
+    def resize(self, width: int, height: int) -> None: ...
+    def add_mesh(
+        self,
+        positions: _Numbers,
+        *,
+        normals: _Numbers | None = None,
+        texcoords: _Numbers | None = None,
+        colors: _Numbers | None = None,
+        indices: _Numbers | None = None,
+        primitive: str = "triangles",
+        uniforms: dict[str, _Numbers] | None = None,
+    ) -> int: ...
+    def set_texture(
+        self,
+        unit: int,
+        image: _Numbers,
+        *,
+        linear: bool = True,
+        wrap: str = "repeat",
+        mipmaps: bool = True,
+        top_down: bool = False,
+    ) -> None: ...
+
+class Program:
+    @staticmethod
+    def compile(
+        vertex: Union[str, Sequence[tuple[str, str]]],
+        fragment: Union[str, Sequence[tuple[str, str]]],
+        default_version: int = 110,
+        optimize: bool = True,
+    ) -> Program: ...
+    @staticmethod
+    def from_files(
+        vertex: Union[str, Sequence[str]],
+        fragment: Union[str, Sequence[str]],
+        default_version: int = 110,
+        optimize: bool = True,
+    ) -> Program: ...
+    def set_uniform(self, name: str, value: _Numbers) -> None: ...
+    def has_uniform(self, name: str) -> bool: ...
+    @property
+    def uniforms(self) -> list[dict[str, Any]]: ...
+    threads: int
+    precision: str
+    backend: str
+    max_loop_iterations: int
+    def dump_ir(self) -> str: ...
+    def run_vertices(
+        self, inputs: dict[str, _Numbers], count: int = 0, scene: Scene | None = None, object: int = 0
+    ) -> _Outputs: ...
+    def run_fragments(
+        self, inputs: dict[str, _Numbers], count: int = 0, scene: Scene | None = None, object: int = 0
+    ) -> _Outputs: ...
+    def render(self, scene: Scene, *, uniforms: dict[str, _Numbers] | None = None) -> _Image: ...
+
+def render(
+    vertex: str,
+    fragment: str,
+    scene: str,
+    threads: int = 0,
+    precision: str = "precise",
+    *,
+    uniforms: dict[str, _Numbers] | None = None,
+    backend: str = "auto",
+) -> _Image: ...
+def read_png(path: str) -> _Image: ...
+def write_png(image: _Image, path: str) -> None: ...
+def compare_images(reference: _Image, actual: _Image, tolerance: int = 1) -> dict[str, Any]: ...
+def error_report(
+    vertex: str, fragment: str, scene: str, mode: str = "fast", threads: int = 0
+) -> dict[str, Any]: ...

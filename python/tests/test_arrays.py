@@ -1,0 +1,78 @@
+"""Scenes from numpy arrays (python/module_mesh.cpp): meshes and textures
+without a scene file, checked against the same scene written as TOML."""
+import numpy as np
+import pytest
+
+import glslrun
+
+COLOR_VS = "void main() { gl_FrontColor = gl_Color; gl_Position = gl_Vertex; }\n"
+COLOR_FS = "void main() { gl_FragColor = gl_Color; }\n"
+TEX_VS = "void main() { gl_TexCoord[0] = gl_MultiTexCoord0; gl_Position = gl_Vertex; }\n"
+TEX_FS = "uniform sampler2D t;\nvoid main() { gl_FragColor = texture2D(t, gl_TexCoord[0].st); }\n"
+
+POSITIONS = np.array([[-1, -1, 0], [1, -1, 0], [-1, 1, 0], [1, 1, 0]], np.float32)
+COLORS = np.array([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1], [1, 1, 0, 1]], np.float32)
+
+
+def test_a_mesh_from_arrays_equals_the_same_mesh_from_toml():
+    program = glslrun.Program.compile(COLOR_VS, COLOR_FS)
+    toml = glslrun.Scene.parse("""
+[output]
+size = [16, 16]
+[[objects]]
+mesh = "arrays"
+primitive = "triangle_strip"
+vertices = [[-1, -1, 0], [1, -1, 0], [-1, 1, 0], [1, 1, 0]]
+colors = [[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1], [1, 1, 0, 1]]
+""")
+    scene = glslrun.Scene()
+    scene.resize(16, 16)
+    assert scene.add_mesh(POSITIONS, colors=COLORS, primitive="triangle_strip") == 0
+    expected = program.render(toml)
+    image = program.render(scene)
+    assert image.any()
+    np.testing.assert_array_equal(image, expected)
+    # The same quad as indexed triangles.
+    indexed = glslrun.Scene()
+    indexed.resize(16, 16)
+    indexed.add_mesh(POSITIONS, colors=COLORS, indices=np.array([0, 1, 2, 2, 1, 3]))
+    np.testing.assert_array_equal(program.render(indexed), expected)
+
+
+def test_a_texture_from_an_array_is_upright():
+    program = glslrun.Program.compile(TEX_VS, TEX_FS)
+    scene = glslrun.Scene()
+    scene.resize(8, 8)
+    uv = (POSITIONS[:, :2] + 1) / 2
+    scene.add_mesh(POSITIONS, texcoords=uv, primitive="triangle_strip", uniforms={"t": 0})
+    picture = np.array([[[255, 0, 0, 255], [0, 255, 0, 255]],
+                        [[0, 0, 255, 255], [255, 255, 255, 255]]], np.uint8)  # row 0 is the top
+    scene.set_texture(0, picture, linear=False, mipmaps=False)
+    image = program.render(scene)  # top row first, as the picture
+    assert tuple(image[0, 0]) == (255, 0, 0, 255) and tuple(image[0, 7]) == (0, 255, 0, 255)
+    assert tuple(image[7, 0]) == (0, 0, 255, 255) and tuple(image[7, 7]) == (255, 255, 255, 255)
+    # Floats, with mipmaps (GL's default minifying filter needs them).
+    scene.set_texture(0, picture.astype(np.float32) / 255)
+    assert program.render(scene)[0, 0, 0] > 128
+
+
+def test_array_mistakes_are_errors():
+    scene = glslrun.Scene()
+    with pytest.raises(ValueError, match="positions"):
+        scene.add_mesh(np.ones((4, 5), np.float32))
+    with pytest.raises(ValueError, match="normals must be an array of shape \\(4, 3\\)"):
+        scene.add_mesh(POSITIONS, normals=np.ones((3, 3)))
+    with pytest.raises(ValueError, match="indices\\[1\\] = 4 is not a vertex"):
+        scene.add_mesh(POSITIONS, indices=[0, 4, 1])
+    with pytest.raises(ValueError, match="primitive 'tris'"):
+        scene.add_mesh(POSITIONS, primitive="tris")
+    with pytest.raises(ValueError, match="texture units"):
+        scene.set_texture(16, np.zeros((2, 2, 4), np.uint8))
+    with pytest.raises(TypeError):
+        scene.set_texture(0, np.zeros((2, 2, 2), np.uint8))
+    with pytest.raises(ValueError, match="wrap 'loop'"):
+        scene.set_texture(0, np.zeros((2, 2, 4), np.uint8), wrap="loop")
+    assert scene.objects == 0
+    passes = glslrun.Scene.parse('[[objects]]\nmesh = "quad"\n[[passes]]\nname = "one"\n')
+    with pytest.raises(ValueError, match="passes"):
+        passes.add_mesh(POSITIONS)

@@ -1,0 +1,206 @@
+// The per-program cache of compiled shaders and Backend::Auto's policy
+// (runtime/backend_cache.h).
+#include "runtime/backend_cache.h"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+
+#include "ir/passes.h"
+#include "runtime/compile_queue.h"
+
+namespace glslrun::rt {
+
+namespace {
+
+// A shader's code and the IR it was made from, which the code may refer to
+// (the interpreter's does, where the JIT declines it): a specialized copy,
+// or a background compile's own copy of the program's.
+class OwningShader final : public CompiledShader {
+public:
+    std::shared_ptr<const ir::Shader> shader;
+    std::unique_ptr<CompiledShader> code;
+    std::unique_ptr<Executor> instantiate(const ExecParams& params) const override {
+        return code->instantiate(params);
+    }
+};
+
+// An executor that adds the time its runs take, and the lanes they shade,
+// to a stage's Meter when it goes (at the end of its draw).
+class TimedExecutor final : public Executor {
+public:
+    TimedExecutor(std::unique_ptr<Executor> inner, BackendCache::Meter& meter)
+        : inner_(std::move(inner)), meter_(meter), which_(inner_->backend() == Backend::Jit ? 1 : 0) {}
+    ~TimedExecutor() override {
+        meter_.nanos[which_].fetch_add(nanos_, std::memory_order_relaxed);
+        meter_.lanes[which_].fetch_add(lanes_, std::memory_order_relaxed);
+    }
+    uint32_t* lanes(ir::Reg r) override { return inner_->lanes(r); }
+    bool run(LaneMask live, RunError* error) override {
+        const auto start = std::chrono::steady_clock::now();
+        const bool ok = inner_->run(live, error);
+        nanos_ += uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+        lanes_ += uint64_t(std::popcount(live));
+        return ok;
+    }
+    LaneMask alive() const override { return inner_->alive(); }
+    void skip_lookups(LaneMask lanes) override { inner_->skip_lookups(lanes); }
+    Backend backend() const override { return inner_->backend(); }
+
+private:
+    std::unique_ptr<Executor> inner_;
+    BackendCache::Meter& meter_;
+    int which_;
+    uint64_t nanos_ = 0, lanes_ = 0;
+};
+
+// Auto compares the backends once the JIT's code has run this long: long
+// enough that timer and cache effects are small against it, short enough
+// that a JIT slower than the interpreter costs little.
+constexpr uint64_t kMeasureNanos = 2'000'000;
+
+// LLVM's expected CPU time for `shader`, in nanoseconds; 0 where the JIT
+// does not take it.
+uint64_t expected_compile_nanos(const ir::Shader& shader, bool quick_codegen) {
+    const JitPlan plan = plan_jit(shader, quick_codegen);
+    return plan.take ? std::max<uint64_t>(1, plan.nanos) : 0;
+}
+
+}  // namespace
+
+std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, const Key& key, double* seconds,
+                                                      const std::atomic<bool>* stop) {
+    if (key.specialization.empty())
+        return compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, seconds, key.quick_codegen,
+                              stop);
+    const std::vector<uint32_t> read = ir::uniform_words_read(shader);
+    std::vector<uint32_t> store(read.empty() ? 0 : read.back() + 1);
+    for (size_t i = 0; i < read.size(); ++i) store[read[i]] = key.specialization[i];
+    auto specialized = std::make_unique<ir::Shader>(shader);
+    const uint32_t approximated = key.precision == Precision::Fast ? key.fast_ops : 0;
+    if (!ir::specialize(*specialized, store, approximated).empty()) *specialized = shader;  // a bug: unspecialized
+    auto owner = std::make_unique<OwningShader>();
+    owner->code = compile_shader(*specialized, key.backend, key.precision, key.fast_ops, key.avx2, seconds,
+                                 key.quick_codegen, stop);
+    owner->shader = std::move(specialized);
+    return owner;
+}
+
+const CompiledShader* BackendCache::ready(const Key& key) const {
+    auto found = shaders_.find(key);
+    return found == shaders_.end() ? nullptr : found->second.get();
+}
+
+const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key) {
+    std::lock_guard lock(mutex_);
+    std::unique_ptr<CompiledShader>& slot = shaders_[key];
+    if (!slot) {
+        double seconds = 0;
+        slot = compile(shader, key, &seconds);
+        jit_compile_seconds_ += seconds;
+    }
+    return *slot;
+}
+
+void BackendCache::queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock) {
+    if (queued_[key]) return;
+    queued_[key] = true;
+    std::weak_ptr<BackendCache> self = weak_from_this();
+    auto copy = std::make_shared<const ir::Shader>(shader);
+    auto job = [self, copy, key] {
+        if (self.expired()) return;  // the program is gone
+        double seconds = 0;
+        auto owner = std::make_unique<OwningShader>();
+        owner->code = compile(*copy, key, &seconds, &compiles_stopping());
+        owner->shader = copy;
+        std::shared_ptr<BackendCache> cache = self.lock();
+        if (!cache || compiles_stopping().load()) return;
+        std::lock_guard hold(cache->mutex_);
+        std::unique_ptr<CompiledShader>& slot = cache->shaders_[key];
+        if (!slot) slot = std::move(owner);
+        cache->jit_compile_seconds_ += seconds;
+    };
+    if (!self.expired() && submit_compile(job)) return;
+    lock.unlock();  // no compile thread to be had (or a cache outside a Program): compile here
+    double seconds = 0;
+    std::unique_ptr<CompiledShader> code = compile(shader, key, &seconds);
+    lock.lock();
+    std::unique_ptr<CompiledShader>& slot = shaders_[key];
+    if (!slot) slot = std::move(code);
+    jit_compile_seconds_ += seconds;
+}
+
+std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, const Key& key, const Key& interp,
+                                                      const ExecParams& params) {
+    Meter& meter = meters_[size_t(key.stage)];
+    const int chosen = meter.choice.load(std::memory_order_relaxed);
+    if (chosen == int(Backend::Interp)) return get(shader, interp).instantiate(params);
+    std::unique_lock lock(mutex_);
+    Key plain = key;
+    plain.specialization.clear();
+    const CompiledShader* jit = ready(plain);
+    if (jit && !key.specialization.empty() && chosen == int(Backend::Jit)) {
+        // The JIT won: specialize as ExecOptions::jit_specialize_after asks,
+        // with the unspecialized code meanwhile.
+        if (const CompiledShader* specialized = ready(key)) jit = specialized;
+        else queue(shader, key, lock);
+    }
+    if (jit) {
+        std::unique_ptr<Executor> code = jit->instantiate(params);
+        if (code->backend() != Backend::Jit) {
+            meter.choice.store(int(Backend::Interp));  // the JIT declined the shader
+            return code;
+        }
+        if (chosen == int(Backend::Jit)) return code;
+        const uint64_t jit_nanos = meter.nanos[1].load(), interp_nanos = meter.nanos[0].load();
+        if (jit_nanos < kMeasureNanos) return std::make_unique<TimedExecutor>(std::move(code), meter);
+        // Per lane: jit_nanos / jit_lanes against interp_nanos / interp_lanes.
+        const long double jit_cost = (long double)jit_nanos * (long double)meter.lanes[0].load(),
+                          interp_cost = (long double)interp_nanos * (long double)meter.lanes[1].load();
+        const Backend keep = jit_cost < interp_cost ? Backend::Jit : Backend::Interp;
+        meter.choice.store(int(keep));
+        if (keep == Backend::Jit) return code;
+        lock.unlock();
+        return get(shader, interp).instantiate(params);
+    }
+    if (!meter.queued.load()) {
+        if (meter.expected_nanos == Meter::kUnknown) meter.expected_nanos = expected_compile_nanos(shader, key.quick_codegen);
+        if (meter.expected_nanos == 0) {
+            meter.choice.store(int(Backend::Interp));  // the JIT does not take it
+        } else if (meter.nanos[0].load() >= meter.expected_nanos) {
+            meter.queued.store(true);
+            queue(shader, plain, lock);
+            if (ready(plain)) {  // compiled here, without a thread
+                lock.unlock();
+                return auto_executor(shader, key, interp, params);
+            }
+        }
+    }
+    lock.unlock();
+    return std::make_unique<TimedExecutor>(get(shader, interp).instantiate(params), meter);
+}
+
+std::vector<uint32_t> BackendCache::specialization(const ir::Shader& shader, const std::vector<uint32_t>& store,
+                                                   uint64_t use, uint32_t after) {
+    std::lock_guard lock(mutex_);
+    Streak& streak = streaks_[size_t(shader.stage)];
+    if (!streak.surveyed) streak.read = ir::uniform_words_read(shader), streak.surveyed = true;
+    if (streak.read.empty() || after == 0) return {};
+    std::vector<uint32_t> words;
+    for (uint32_t w : streak.read) words.push_back(w < store.size() ? store[w] : 0);
+    if (words != streak.words) {
+        streak.words = words;
+        streak.draws = 1;
+    } else if (use != streak.last_use) {
+        ++streak.draws;
+    }
+    streak.last_use = use;
+    return streak.draws >= after ? words : std::vector<uint32_t>{};
+}
+
+double BackendCache::jit_compile_seconds() const {
+    std::lock_guard lock(mutex_);
+    return jit_compile_seconds_;
+}
+
+}  // namespace glslrun::rt

@@ -1,0 +1,31 @@
+// The process's background compiles: one queue, run by one thread, for every
+// program's tiered LLVM compiles (runtime/backend_cache.h, the fused
+// pipelines of runtime/fragment_pipeline.h). One thread, not one per
+// program stage: hundreds of live programs then cost one thread's stack and
+// one compile's memory at a time, and compiles take turns on the JIT's
+// engine anyway (runtime/jit/engine.h).
+//
+// Nothing waits for a background compile: a job holds what it compiles and
+// a weak reference to where the code goes, so a program that goes away
+// leaves its queued jobs to find it gone. At exit the queued jobs are
+// dropped, and the one running gives up at its next phase (`stopping`).
+#pragma once
+#include <atomic>
+#include <functional>
+
+namespace glslrun::rt {
+
+// Queues `job` for the compile thread (started at the first call). False
+// where no thread could be started: the caller then compiles itself. A job
+// runs with exceptions caught (an allocation failure leaves its code
+// uncompiled, and the interpreter serves).
+bool submit_compile(std::function<void()> job);
+
+// Set once the process has begun to exit: a compile checks it between its
+// phases and gives up.
+const std::atomic<bool>& compiles_stopping();
+
+// Jobs queued or running (for tests).
+size_t compiles_pending();
+
+}  // namespace glslrun::rt

@@ -1,0 +1,38 @@
+// Texture lookups of a whole batch at once: the `tex` kernel's lanes that
+// read one texture go through each step of the lookup together (coordinates
+// and cube faces, the level of detail, the mipmap levels, the texel indices
+// of each axis), in lane loops that the compiler vectorises, 8 lanes at a
+// time under AVX2. Texels are then fetched and filtered lane by lane, four
+// channels in one register. Every value comes from the same functions as
+// sample_complete_lane()'s (runtime/sampling_rules.h), so both give the same
+// bits; tests/runtime/sampling_batch_test.cpp compares them.
+#pragma once
+#include "runtime/backend.h"
+#include "runtime/sampling.h"
+
+namespace glslrun::rt {
+
+// A `tex` instruction's operands for every lane of a batch, as floats: one
+// array of kLanes per component. Components the lookup does not have point
+// at zeros (the coordinate's unused ones, the derivatives of an explicit
+// LOD); `ref` and `lod` may be null where the lookup has none.
+struct BatchLookup {
+    const float* coord[3] = {};
+    const float* ddx[3] = {};
+    const float* ddy[3] = {};
+    const float* ref = nullptr;
+    const float* lod = nullptr;  // the explicit LOD, or the bias
+    bool implicit = true, bias = false;
+};
+
+// Whether sample_batch() takes lookups of this (complete) texture; the
+// others go through sample_complete_lane(). Decided here only.
+bool batch_samples(const Texture& texture);
+
+// sample_complete_lane() of every lane in `lanes` (a complete texture that
+// batch_samples() takes): lane i's channel c into out[c][i]. The other lanes'
+// entries are left as they are. `avx2`: the AVX2 build of the lane loops
+// (the same bits as the baseline one).
+void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2);
+
+}  // namespace glslrun::rt

@@ -1,0 +1,159 @@
+#!/bin/sh
+# The command line as a new user meets it, and its input hardening: no
+# output over an input, NUL bytes in paths, FIFOs, exit statuses as
+# docs/ci.md states them, CR-only sources, --help, mistyped commands and
+# uniforms, .glsl with --stage, `glslrun check`, image formats,
+# --error-report's files, --compare's coverage, batch's format.
+#
+#   tests/cli/new_user.sh SOURCE_DIR GLSLRUN
+set -u
+src=$1
+glslrun=$2
+. "$src/tests/cli/common.sh"
+
+vs=$src/shaders/minimal.vert
+fs=$src/shaders/minimal.frag
+scene=$src/scenes/spot.toml
+cd "$tmp" || exit 1
+
+# expect STATUS MESSAGE CMD...: the command exits with STATUS and prints MESSAGE on stderr.
+expect() {
+    want=$1 message=$2
+    shift 2
+    timeout 60 "$@" >out.txt 2>err.txt
+    got=$?
+    [ $got = "$want" ] || fail "$*: exit status $got, not $want ($(head -c 300 err.txt))"
+    grep -qF -- "$message" err.txt || fail "$*: no '$message' in: $(head -c 300 err.txt)"
+}
+same() { cmp -s "$1" "$2" || fail "$3"; }
+
+# ---- Inputs are never overwritten: by name, symbolic or hard link.
+cp -r "$src/scenes/textures" . && cp "$src/scenes/textured.toml" .
+cp textures/wood.png wood.orig
+tvs=$src/shaders/textured_pix.vert
+tfs=$src/shaders/textured_pix.frag
+expect 2 "is an input" "$glslrun" "$tvs" "$tfs" textured.toml --size 8x8 -o textures/wood.png
+same textures/wood.png wood.orig "-o over the scene's texture changed it"
+ln -s textures/wood.png wood_link.png
+expect 2 "is an input" "$glslrun" "$tvs" "$tfs" textured.toml --size 8x8 -o wood_link.png
+same textures/wood.png wood.orig "-o over a symbolic link to the texture changed it"
+"$glslrun" "$vs" "$fs" "$scene" --size 8x8 -o ref.png || fail "render ref.png"
+cp ref.png ref.orig
+ln ref.png ref_hard.png
+expect 2 "is an input" "$glslrun" --compare ref.png ref.png --diff ref.png
+expect 2 "is an input" "$glslrun" --compare ref.png ref.png --diff ref_hard.png
+expect 2 "is an input" "$glslrun" "$vs" "$fs" "$scene" --size 8x8 --compare ref.png --diff ref.png
+same ref.png ref.orig "--diff over the reference changed it"
+mkdir rep && cp "$scene" rep_scene.toml && ln rep_scene.toml rep/reference.png
+expect 2 "is an input" "$glslrun" "$vs" "$fs" rep_scene.toml --size 8x8 --error-report rep
+cmp -s rep_scene.toml "$scene" || fail "--error-report wrote over the scene through a hard link"
+
+# ---- NUL bytes in paths, FIFOs, exit statuses.
+printf '%s %s %s a\000b.png\n' "$vs" "$fs" "$scene" > nul.jobs
+expect 1 "nul.jobs:1: error: a NUL byte" "$glslrun" batch nul.jobs
+[ ! -e a ] || fail "a job with a NUL in its output wrote 'a'"
+sed 's|^image = .*|image = "textures/wood.png\\u0000.txt"|' textured.toml > nul_texture.toml
+expect 1 "contains a NUL byte" "$glslrun" "$tvs" "$tfs" nul_texture.toml --size 8x8 -o nul.png
+mkfifo fifo.png
+expect 2 "not a regular file" "$glslrun" --compare ref.png fifo.png
+expect 2 "not a regular file" "$glslrun" --compare fifo.png ref.png
+printf 'not a png' > notpng.txt
+expect 2 "PNG images only" "$glslrun" --compare ref.png notpng.txt
+grep -q "shader" err.txt && fail "--compare of a non-PNG speaks of shaders: $(cat err.txt)"
+if [ -w /dev/full ]; then
+    "$glslrun" "$vs" "$fs" "$scene" --size 8x8 -o - > /dev/full 2>err.txt
+    [ $? = 2 ] || fail "-o - > /dev/full: exit status is not 2 ($(cat err.txt))"
+fi
+expect 2 "--size '300' must be WxH" "$glslrun" "$vs" "$fs" "$scene" --size 300
+
+# ---- Sources: CR-only line ends, #line past INT_MAX.
+printf '#version 110\r// a comment\rvoid main() {\r    gl_FragColor = vec4(1.0);\r}\r' > cr.frag
+"$glslrun" check cr.frag 2>err.txt || fail "a CR-only shader is refused: $(cat err.txt)"
+printf '#version 110\r\rvoid main() {\r    gl_FragColor = vec4(1.0)\r}\r' > cr_bad.frag
+expect 1 "cr_bad.frag:4: error:" "$glslrun" check cr_bad.frag
+printf '#line 4294967295 4294967295\nvoid main() { gl_FragColor = vec4(1.0) }\n' > line.frag
+expect 1 "line.frag: error:" "$glslrun" check line.frag
+grep -q '^-1' err.txt && fail "#line 4294967295: $(cat err.txt)"
+
+# ---- --help, mistyped commands and uniforms, --uniform values.
+"$glslrun" --help > help.txt || fail "--help failed"
+for word in "glslrun trace" "glslrun batch" "glslrun check" "glslrun test" "--quiet" "Exit status" "Documentation: /"; do
+    grep -qF -- "$word" help.txt || fail "--help does not mention '$word'"
+done
+expect 2 "did you mean 'glslrun trace'?" "$glslrun" trac
+expect 2 "did you mean 'glslrun batch'?" "$glslrun" bach
+printf 'uniform vec3 baseColor;\nvoid main() { gl_FragColor = vec4(baseColor, 1.0); }\n' > base.frag
+expect 1 "did you mean 'baseColor'?" "$glslrun" "$vs" base.frag "$scene" --size 8x8 --uniform basecolor=1,0,0 -o u.png
+"$glslrun" "$vs" base.frag "$scene" --size 8x8 --uniform baseColor=1,0,0 -o list.png 2>err.txt ||
+    fail "--uniform baseColor=1,0,0: $(cat err.txt)"
+"$glslrun" "$vs" base.frag "$scene" --size 8x8 --uniform 'baseColor=[1, 0, 0]' -o array.png || fail "[1, 0, 0]"
+same list.png array.png "--uniform 1,0,0 and [1, 0, 0] differ"
+expect 2 "is not a value" "$glslrun" "$vs" base.frag "$scene" --uniform 'baseColor=1,,0'
+grep -qi "toml\|expected" err.txt && fail "--uniform's message is toml++'s: $(cat err.txt)"
+
+# ---- .glsl and --stage, glslrun check, the pass-through vertex shader.
+cp "$fs" plain.glsl
+expect 2 "give --stage vert or --stage frag" "$glslrun" plain.glsl "$scene" -o g.png
+"$glslrun" --stage frag plain.glsl "$scene" --size 8x8 -o g.png || fail "--stage frag plain.glsl"
+"$glslrun" "$fs" "$scene" --size 8x8 -o f.png || fail "minimal.frag alone"
+same g.png f.png "a .glsl fragment shader renders differently"
+cp "$fs" named.frag.glsl
+"$glslrun" check named.frag.glsl || fail "check a.frag.glsl"
+"$glslrun" check -S frag plain.glsl || fail "check -S frag"
+"$glslrun" check "$vs" "$fs" || fail "check of the minimal shaders"
+expect 1 "plain.glsl:" "$glslrun" check -S vert plain.glsl
+printf 'varying vec3 n;\nvoid main() { gl_FragColor = vec4(n, 1.0); }\n' > varying.frag
+expect 1 "no vertex shader was given" "$glslrun" varying.frag
+
+# ---- Image formats by name; PNG stays lossless.
+"$glslrun" "$vs" "$fs" "$scene" --size 16x16 -o out.jpg || fail "-o out.jpg"
+head -c 3 out.jpg | od -An -tx1 | grep -q "ff d8 ff" || fail "out.jpg is not a JPEG"
+"$glslrun" "$vs" "$fs" "$scene" --size 16x16 -o out.bmp && [ "$(head -c 2 out.bmp)" = BM ] || fail "-o out.bmp"
+"$glslrun" "$vs" "$fs" "$scene" --size 16x16 -o out.tga && [ -s out.tga ] || fail "-o out.tga"
+expect 2 "chosen by the name" "$glslrun" "$vs" "$fs" "$scene" -o out.gif
+
+# ---- --error-report writes its table and key lines into DIR, and says so.
+"$glslrun" "$vs" "$fs" "$scene" --size 16x16 --precision fast --error-report er > er.out || fail "--error-report"
+[ -s er/report.txt ] && [ -s er/report.keys ] || fail "--error-report wrote no report.txt or report.keys: $(ls er)"
+grep -q "er/report.txt" er.out || fail "--error-report does not say where the table is"
+
+# ---- --compare's coverage: background pixels are not covered.
+"$glslrun" --compare ref.png ref.png > cmp.txt || fail "--compare of an image with itself"
+grep -q " of 64 covered" cmp.txt && fail "--compare counted every pixel as covered: $(cat cmp.txt)"
+grep -q "^covered: pixels that differ from 0,0,0,255" cmp.txt || fail "--compare: no background line: $(cat cmp.txt)"
+"$glslrun" --compare ref.png ref.png --background none | grep -q " of 64 covered" || fail "--background none"
+expect 2 "--background" "$glslrun" --compare ref.png ref.png --background 1,2,3
+
+# ---- batch: malformed lines, quoted paths, each program compiled once.
+mkdir "with space"
+cat > jobs.txt <<JOBS
+# a comment
+$vs $fs $scene one.png
+$vs $fs
+"$vs" '$fs' "$scene" "with space/two.png"  # quoted
+$vs $fs $scene 'unterminated.png
+$vs $fs $scene three.png
+JOBS
+expect 1 "jobs.txt:3: error: a job is" "$glslrun" batch jobs.txt
+grep -qF "jobs.txt:5: error: the quote ' opened" err.txt || fail "batch: no error for line 5: $(cat err.txt)"
+[ -s one.png ] && [ -s "with space/two.png" ] && [ -s three.png ] || fail "batch did not run the good jobs: $(ls)"
+grep -q "3 jobs, 3 rendered, 0 failed, 2 malformed lines; 1 program compiled" out.txt ||
+    fail "batch summary: $(cat out.txt)"
+# A compiled program is shared, its uniforms are not: each job renders as alone.
+printf '[uniforms]\nbaseColor = [0, 1, 0]\n' > green_uniform.toml
+sed -n '/^\[uniforms\]/q;p' "$scene" > scene_head.toml
+cat scene_head.toml green_uniform.toml > green.toml
+printf '%s %s %s %s\n' "$vs" base.frag green.toml b1.png "$vs" base.frag "$scene" b2.png > uniforms.jobs
+"$glslrun" batch uniforms.jobs > /dev/null 2>err.txt || fail "batch uniforms.jobs: $(cat err.txt)"
+"$glslrun" "$vs" base.frag "$scene" -o b2_alone.png 2>/dev/null || fail "render b2 alone"
+same b2.png b2_alone.png "a batch job saw the previous job's uniform"
+
+# ---- Progress on a terminal (script gives the command one).
+if command -v script > /dev/null; then
+    script -qec "$glslrun $vs $fs $scene --size 8x8 --frames 3 -o fr.png" /dev/null > tty.txt 2>&1
+    grep -q "3/3 frames" tty.txt || fail "--frames shows no progress on a terminal: $(cat tty.txt)"
+    "$glslrun" "$vs" "$fs" "$scene" --size 8x8 --frames 3 -o fr.png 2> notty.txt
+    grep -q "/3 frames" notty.txt && fail "--frames prints progress into a pipe: $(cat notty.txt)"
+fi
+
+finish "new-user CLI: inputs protected, NUL paths, exit statuses, help, check, formats, reports, batch"

@@ -1,0 +1,186 @@
+// Backend::Auto's policy (runtime/backend_cache.h), the process's compile
+// queue (runtime/compile_queue.h) and the JIT's compile-cost bound
+// (runtime/jit/jit.h): a short render compiles nothing, a long one compiles
+// in the background and keeps the faster backend, nothing waits for a
+// compile it will not use, and large programs stay on the interpreter.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <future>
+#include <new>
+#include <sstream>
+#include <thread>
+
+#include "runtime/backend_cache.h"
+#include "runtime/compile_queue.h"
+#include "runtime/interp_kernels.h"
+#include "runtime/program_state.h"
+#include "tests/runtime/ir_builder.h"
+
+using namespace glslrun;
+using namespace glslrun::test;
+
+namespace {
+
+// out = in * 2 + 1
+ir::Shader small_shader() {
+    Builder b;
+    Reg in = b.reg(Kind::F32), two = b.reg(Kind::F32), one = b.reg(Kind::F32), t = b.reg(Kind::F32),
+        out = b.reg(Kind::F32);
+    b.set_konst(two, bits(2.0f));
+    b.set_konst(one, bits(1.0f));
+    b.instr(Op::fmul, Kind::F32, t, {in, two});
+    b.instr(Op::fadd, Kind::F32, out, {t, one});
+    b.sh.inputs = {{"in", Kind::F32, in, 1}};
+    b.sh.outputs = {{"out", Kind::F32, out, 1}};
+    return b.sh;
+}
+
+rt::BackendCache::Key key_for(Backend backend) {
+    return {ir::Stage::Fragment, backend, Precision::Precise, rt::kAllFastOps, rt::cpu_has_avx2(), false};
+}
+
+// Runs one batch on `e` and checks its output lanes.
+void check_runs(rt::Executor& e) {
+    for (int i = 0; i < rt::kLanes; ++i) e.lanes_f(0)[i] = float(i);
+    rt::RunError error;
+    REQUIRE(e.run(rt::kAllLanes, &error));
+    for (int i = 0; i < rt::kLanes; ++i) REQUIRE(e.lanes_f(4)[i] == float(i) * 2 + 1);
+}
+
+void wait_for_queue() {
+    for (int i = 0; i < 20000 && rt::compiles_pending() > 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    REQUIRE(rt::compiles_pending() == 0);
+}
+
+}  // namespace
+
+TEST_CASE("auto: a short render compiles nothing; a long one compiles and keeps the faster", "[runtime][tiering]") {
+    if (!jit_available()) return;
+    const ir::Shader shader = small_shader();
+    const rt::ExecParams params;
+    for (bool jit_faster : {true, false}) {
+        INFO("the JIT measures " << (jit_faster ? "faster" : "slower"));
+        auto cache = std::make_shared<rt::BackendCache>();
+        rt::BackendCache::Meter& meter = cache->meter(ir::Stage::Fragment);
+        const auto jit = key_for(Backend::Jit), interp = key_for(Backend::Interp);
+        {
+            auto e = cache->auto_executor(shader, jit, interp, params);
+            CHECK(e->backend() == Backend::Interp);
+            check_runs(*e);
+        }
+        // One batch is far less than LLVM's time: nothing was queued.
+        CHECK(meter.lanes[0].load() == uint64_t(rt::kLanes));
+        CHECK_FALSE(meter.queued.load());
+        CHECK(cache->jit_compile_seconds() == 0);
+        // Interpreting as long as the compile would take queues it.
+        meter.nanos[0] = 1'000'000'000;
+        CHECK(cache->auto_executor(shader, jit, interp, params)->backend() == Backend::Interp);
+        CHECK(meter.queued.load());
+        wait_for_queue();
+        CHECK(cache->jit_compile_seconds() > 0);
+        // The JIT's code runs, timed, until it has run long enough to compare.
+        {
+            auto e = cache->auto_executor(shader, jit, interp, params);
+            CHECK(e->backend() == Backend::Jit);
+            check_runs(*e);
+        }
+        CHECK(meter.lanes[1].load() == uint64_t(rt::kLanes));
+        CHECK(meter.choice.load() == -1);
+        // Per lane: the interpreter 1e9 ns over 16 lanes; the JIT 1/10 or 10x that.
+        meter.lanes[1] = meter.lanes[0].load();
+        meter.nanos[1] = jit_faster ? 100'000'000 : 10'000'000'000;
+        const Backend kept = jit_faster ? Backend::Jit : Backend::Interp;
+        for (int draw = 0; draw < 3; ++draw) {
+            auto e = cache->auto_executor(shader, jit, interp, params);
+            CHECK(e->backend() == kept);
+            check_runs(*e);
+        }
+        CHECK(meter.choice.load() == int(kept));
+    }
+}
+
+TEST_CASE("a program goes without waiting for its queued compile", "[runtime][tiering]") {
+    if (!jit_available()) return;
+    const ir::Shader shader = small_shader();
+    // Holds the compile thread until released.
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    REQUIRE(rt::submit_compile([released] { released.wait(); }));
+    auto cache = std::make_shared<rt::BackendCache>();
+    cache->meter(ir::Stage::Fragment).nanos[0] = 1'000'000'000;
+    CHECK(cache->auto_executor(shader, key_for(Backend::Jit), key_for(Backend::Interp), {})->backend() ==
+          Backend::Interp);
+    CHECK(rt::compiles_pending() == 2);
+    cache.reset();  // would never return if it waited for the compile behind the held one
+    release.set_value();
+    wait_for_queue();  // the queued compile found the cache gone
+}
+
+TEST_CASE("a job that throws leaves the compile thread running", "[runtime][tiering]") {
+    REQUIRE(rt::submit_compile([] { throw std::bad_alloc(); }));
+    std::promise<void> ran;
+    auto done = ran.get_future();
+    REQUIRE(rt::submit_compile([&ran] { ran.set_value(); }));
+    CHECK(done.wait_for(std::chrono::seconds(60)) == std::future_status::ready);
+    wait_for_queue();
+}
+
+namespace {
+
+// The fragment shader's IR; `vertex` writes its varyings.
+ir::Shader fragment_ir(const std::string& fragment,
+                       const std::string& vertex = "varying float v; void main() { v = 1.0; gl_Position = gl_Vertex; }") {
+    auto program = Program::compile({{"a.vert", vertex}}, {{"a.frag", fragment}});
+    if (!program.ok()) FAIL(program.error().str());
+    return state_of(program.value()).ir.fragment;
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    REQUIRE(!text.str().empty());
+    return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("the JIT's compile-cost bound: large programs stay on the interpreter", "[runtime][tiering]") {
+    if (!jit_available()) return;
+    auto plan_compile = rt::plan_jit;
+    // The lecture's spot light (about 90 ms of LLVM's time measured) is compiled as it was.
+    const ir::Shader spot = fragment_ir(read_file(GLSLRUN_SOURCE_DIR "/shaders/spot_pix_fixed.frag"),
+                                        read_file(GLSLRUN_SOURCE_DIR "/shaders/spot_pix_fixed.vert"));
+    CHECK(plan_compile(spot, false).take);
+    CHECK_FALSE(plan_compile(spot, false).quick);
+    // A ray tracer with structs, inout struct parameters and calls: 2 s of LLVM's time.
+    const ir::Shader raytrace = fragment_ir(read_file(GLSLRUN_SOURCE_DIR "/tests/compile_cost/raytrace.frag"),
+                                            read_file(GLSLRUN_SOURCE_DIR "/tests/compile_cost/raytrace.vert"));
+    CHECK_FALSE(plan_compile(raytrace, false).take);
+    CHECK_FALSE(plan_compile(raytrace, true).take);
+    // 5000 lines of straight-line code.
+    std::string straight = "varying float v;\nvoid main() {\n float x = v;\n";
+    for (int i = 0; i < 5000; ++i) straight += " x = x * 1.0001 + " + std::to_string(i) + ".0;\n";
+    straight += " gl_FragColor = vec4(x);\n}\n";
+    CHECK_FALSE(plan_compile(fragment_ir(straight), false).take);
+    // A call chain 1000 deep.
+    std::string chain = "varying float v;\nfloat f0(float x) { return x * 1.5; }\n";
+    for (int i = 1; i < 1000; ++i)
+        chain += "float f" + std::to_string(i) + "(float x) { return f" + std::to_string(i - 1) + "(x) + 1.0; }\n";
+    chain += "void main() { gl_FragColor = vec4(f999(v)); }\n";
+    const ir::Shader deep = fragment_ir(chain);
+    CHECK_FALSE(plan_compile(deep, false).take);
+    // And the JIT declines them when asked (within the budget, without LLVM).
+    const std::vector<uint32_t> uniforms(1 << 16, 0);  // more than either reads
+    rt::ExecParams params;
+    params.uniforms = uniforms.data();
+    for (const ir::Shader* s : {&raytrace, &deep}) {
+        const auto start = std::chrono::steady_clock::now();
+        CHECK(rt::compile_shader(*s, Backend::Jit, Precision::Precise, rt::kAllFastOps, false)
+                  ->instantiate(params)->backend() == Backend::Interp);
+        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
+    }
+}
