@@ -190,9 +190,25 @@ Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scen
     return Ok{};
 }
 
+// The mesh's arrays, and for each [current] value the mesh has no array of,
+// that value at every vertex: what GL's current attribute gives the shader.
+std::vector<VertexAttrib> attribs_with_current(const Scene& scene, const Mesh& m) {
+    std::vector<VertexAttrib> all = m.attribs;
+    size_t vertices = m.vertex_count;
+    for (const VertexAttrib& a : m.attribs) vertices = std::max(vertices, a.data.size() / std::max(a.components, 1u));
+    for (const CurrentAttribute& c : scene.current_attributes) {
+        if (m.find(c.name)) continue;
+        VertexAttrib a{c.name, 4, {}};
+        a.data.reserve(vertices * 4);
+        for (size_t v = 0; v < vertices; ++v) a.data.insert(a.data.end(), {c.value.x, c.value.y, c.value.z, c.value.w});
+        all.push_back(std::move(a));
+    }
+    return all;
+}
+
 // One pass's draws (the scene's one pass when `pass` is null); the first
 // draw takes `pending` (and empties it).
-Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState& bound, const Pass* pass,
+Result<DrawStats> draw_pass(Program& program, const Scene& scene, GLState& bound, const Pass* pass,
                             Framebuffer& fb, ClearValues& pending) {
     const bool lenient = pass != nullptr;
     if (Status st = apply_uniforms(program, scene.uniforms, lenient); !st) return st.error();
@@ -200,12 +216,17 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, const GLState&
         if (Status st = apply_uniforms(program, pass->uniforms); !st) return st.error();
     DrawStats total;
     auto draw_object = [&](const Object& object) -> Status {
+        // glBindTexture: context state, so it stays for the objects after this one.
+        for (const TextureSetting& t : object.textures)
+            if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st;
         GLState gl = object_gl_state(scene, bound, object, pass);
         if (Status st = apply_uniforms(program, object.uniforms, lenient); !st) return st;
         const Mesh& m = object.mesh;
+        std::vector<VertexAttrib> with_current;
+        if (!scene.current_attributes.empty()) with_current = attribs_with_current(scene, m);
         // The first draw clears, in its tiles on the workers (it clears even when it fails).
-        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive, m.attribs, m.vertex_count,
-                          m.indices);
+        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive,
+                          with_current.empty() ? m.attribs : with_current, m.vertex_count, m.indices);
         if (!stats) return stats.error();
         total += *stats;
         return Ok{};
@@ -265,8 +286,12 @@ Result<std::vector<Framebuffer>> make_targets(const Scene& scene) {
 // What a pass drew into target `index` becomes the texels of the textures
 // that sample it (an FBO's attachment is that texture). Depth is stored as a
 // 24-bit depth buffer stores it (GL_DEPTH24_STENCIL8), as GL would sample it.
-Status refresh_target_textures(const Scene& scene, int index, const Framebuffer& fb, GLState& bound) {
-    for (const TextureSetting& setting : scene.textures) {
+// `live` holds each target texture's current texels (by index into
+// scene.textures); a unit an object has bound another texture to keeps it.
+Status refresh_target_textures(const Scene& scene, int index, const Framebuffer& fb, GLState& bound,
+                               std::vector<std::shared_ptr<const Texture>>& live) {
+    for (size_t i = 0; i < scene.textures.size(); ++i) {
+        const TextureSetting& setting = scene.textures[i];
         if (setting.render_target != index) continue;
         TextureImage image{fb.width, fb.height, 1, {}};
         image.texels.reserve(size_t(fb.width) * size_t(fb.height));
@@ -283,8 +308,10 @@ Status refresh_target_textures(const Scene& scene, int index, const Framebuffer&
         auto texture = Texture::create(TextureTarget::Tex2D, {std::move(image)}, setting.texture->format());
         if (!texture) return texture.error();
         texture->sampler = setting.texture->sampler;
-        if (Status st = bound.bind_texture(setting.unit, std::make_shared<const Texture>(std::move(*texture))); !st)
-            return st;
+        auto made = std::make_shared<const Texture>(std::move(*texture));
+        if (bound.texture_units[size_t(setting.unit)].bound[size_t(TextureTarget::Tex2D)] == live[i])
+            if (Status st = bound.bind_texture(setting.unit, made); !st) return st;
+        live[i] = std::move(made);
     }
     return Ok{};
 }
@@ -309,6 +336,8 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
     if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
     auto targets = make_targets(scene);
     if (!targets) return targets.error();
+    std::vector<std::shared_ptr<const Texture>> live;
+    for (const TextureSetting& t : scene.textures) live.push_back(t.texture);
     DrawStats total;
     for (size_t i = 0; i < scene.passes.size(); ++i) {
         const Pass& pass = scene.passes[i];
@@ -324,7 +353,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (!stats) return stats.error();
         total += *stats;
         if (pass.target >= 0)
-            if (Status st = refresh_target_textures(scene, pass.target, into, *bound); !st) return st.error();
+            if (Status st = refresh_target_textures(scene, pass.target, into, *bound, live); !st) return st.error();
     }
     return total;
 }

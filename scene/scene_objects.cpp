@@ -34,7 +34,7 @@ const std::vector<MeshKind>& mesh_kinds() {
 
 const std::vector<std::string_view> kCommonKeys = {
     "name", "mesh", "transform", "color", "vertex_colors", "material", "front_material",
-    "back_material", "uniforms", "attributes", "state"};
+    "back_material", "uniforms", "attributes", "state", "textures"};
 
 std::vector<std::string_view> all_object_keys() {
     std::vector<std::string_view> keys = kCommonKeys;
@@ -173,10 +173,18 @@ void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scen
         fail(n, fmt::format("the scene has {} objects; a scene may have at most {} (docs/limits.md)", list->size(),
                             kMaxSceneObjects));
     uint64_t vertices = 0;
+    int64_t texels = 0;
+    for (const TextureSetting& t : scene.textures)
+        for (int face = 0; face < t.texture->faces(); ++face)
+            for (const TextureImage& level : t.texture->levels(face)) texels += int64_t(level.texels.size());
     for (size_t i = 0; i < list->size(); ++i) {
         std::vector<std::string> files;
         scene.objects.push_back(read_object((*list)[i], i, scene_dir, scene, files));
         scene.files.insert(scene.files.end(), files.begin(), files.end());
+        // glBindTexture before this object's draw: its own texture objects.
+        if (const toml::node* t = (*list)[i].as_table()->get("textures"))
+            read_texture_units(*t, fmt::format("objects[{}].textures", i), scene_dir, scene,
+                               scene.objects.back().textures, texels);
         vertices += scene.objects.back().mesh.vertex_count;
         if (vertices > kMaxSceneVertices)
             fail((*list)[i], fmt::format("the objects up to objects[{}] have {} vertices in all; a scene may have at "

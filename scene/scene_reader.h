@@ -130,6 +130,10 @@ std::vector<VertexAttrib> read_attributes(const toml::node& n, const std::string
                                           uint32_t vertex_count);
 void read_objects(const toml::node& n, const std::string& scene_dir, Scene& scene);
 void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene);  // scene_textures.cpp
+// `what` = { N = texture table, ... } into `out` (scene.textures or an
+// object's), adding their texels to `texels` (checked against kMaxSceneTexels).
+void read_texture_units(const toml::node& n, const std::string& what, const std::string& scene_dir, Scene& scene,
+                        std::vector<TextureSetting>& out, int64_t& texels);
 // "" when width x height is acceptable, else why not.
 std::string size_problem(int64_t width, int64_t height);
 

@@ -49,11 +49,36 @@ void read_light_model(const Section& s, GLState& gl) {
     s.read("two_side", gl.light_model_two_side);
 }
 
-void read_current(const Section& s, GLState& gl) {
-    s.allow({"color", "secondary_color", "normal"});
+// glVertexAttrib*f / glMultiTexCoord*f: 1..4 numbers, the rest GL's (0, 0, 0, 1).
+CurrentAttribute current_value(const toml::node& n, std::string name, const std::string& what) {
+    std::vector<double> v = n.is_array() ? numbers(n, what, 1, 4) : std::vector<double>{number(n, what)};
+    CurrentAttribute a{std::move(name), {0, 0, 0, 1}, location(n)};
+    for (size_t i = 0; i < v.size(); ++i) a.value[int(i)] = float(v[i]);
+    return a;
+}
+
+void read_current(const Section& s, GLState& gl, Scene& scene) {
+    s.allow({"color", "secondary_color", "normal", "tex_coords", "fog_coord", "attributes"});
     s.read_color("color", gl.current_color);
     s.read_color("secondary_color", gl.current_secondary_color);
     s.read_vec("normal", gl.current_normal);
+    if (const toml::node* n = s.get("tex_coords"))
+        for (auto&& [k, v] : table(*n, s.name("tex_coords"))) {
+            int unit = index_key(k, 8, s.name("tex_coords"), "texture coordinate sets are 0..7 (GL_TEXTURE0..7)");
+            scene.current_attributes.push_back(current_value(v, fmt::format("gl_MultiTexCoord{}", unit),
+                                                             fmt::format("{}.{}", s.name("tex_coords"), unit)));
+        }
+    if (const toml::node* n = s.get("fog_coord"))
+        scene.current_attributes.push_back({"gl_FogCoord", {float(number(*n, s.name("fog_coord"))), 0, 0, 1},
+                                            location(*n)});
+    if (const toml::node* n = s.get("attributes"))
+        for (auto&& [k, v] : table(*n, s.name("attributes"))) {
+            std::string what = fmt::format("{}.{}", s.name("attributes"), k.str());
+            if (k.str().starts_with("gl_"))
+                fail(v, fmt::format("'{}': built-in attributes have keys of their own (color, normal, tex_coords, "
+                                    "...)", what));
+            scene.current_attributes.push_back(current_value(v, std::string(k.str()), what));
+        }
 }
 
 void read_fog(const Section& s, GLState& gl) {
@@ -264,7 +289,7 @@ void read_render_state(const Section& top, Scene& scene) {
     read_material_section(top, "material", scene);
     read_material_section(top, "front_material", scene);
     read_material_section(top, "back_material", scene);
-    section("current", [&](const Section& s) { read_current(s, scene.gl); });
+    section("current", [&](const Section& s) { read_current(s, scene.gl, scene); });
     section("state", [&](const Section& s) { read_state_section(s, scene.view, scene.gl); });
     section("fog", [&](const Section& s) { read_fog(s, scene.gl); });
     if (const toml::node* n = top.get("texture_matrix")) read_texture_matrices(*n, scene.gl);

@@ -409,22 +409,30 @@ int64_t texel_count(const Texture& t) {
 
 }  // namespace
 
-void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene) {
-    const toml::table& units = table(n, "textures");
-    int64_t texels = 0;
+void read_texture_units(const toml::node& n, const std::string& what, const std::string& scene_dir, Scene& scene,
+                        std::vector<TextureSetting>& out, int64_t& texels) {
+    const toml::table& units = table(n, what);
     for (auto&& [k, v] : units) {
-        int unit = index_key(k, kMaxTextureUnits, "textures",
+        int unit = index_key(k, kMaxTextureUnits, what,
                              "texture units are 0..15 ([textures.0] .. [textures.15], GL_TEXTURE0..15)");
-        std::string what = fmt::format("textures.{}", unit);
-        scene.textures.push_back(read_texture(Section(table(v, what), what), unit, scene_dir, scene));
-        texels += texel_count(*scene.textures.back().texture);
+        std::string unit_what = fmt::format("{}.{}", what, unit);
+        Section s(table(v, unit_what), unit_what);
+        if (&out != &scene.textures && s.get("render_target"))
+            fail(*s.get("render_target"), fmt::format("'{}': a render target's texture is bound in [textures.N], "
+                                                      "for the whole scene", s.name("render_target")));
+        out.push_back(read_texture(s, unit, scene_dir, scene));
+        texels += texel_count(*out.back().texture);
         if (texels > kMaxSceneTexels)
             fail(v, fmt::format("the textures up to [{}] hold {} texels in all, mipmaps included; a scene may hold "
                                 "at most {} (docs/limits.md)",
-                                what, texels, kMaxSceneTexels));
+                                unit_what, texels, kMaxSceneTexels));
     }
-    std::sort(scene.textures.begin(), scene.textures.end(),
-              [](const TextureSetting& a, const TextureSetting& b) { return a.unit < b.unit; });
+    std::sort(out.begin(), out.end(), [](const TextureSetting& a, const TextureSetting& b) { return a.unit < b.unit; });
+}
+
+void read_textures(const toml::node& n, const std::string& scene_dir, Scene& scene) {
+    int64_t texels = 0;
+    read_texture_units(n, "textures", scene_dir, scene, scene.textures, texels);
 }
 
 }  // namespace glslrun::scene::detail

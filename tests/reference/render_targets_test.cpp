@@ -43,6 +43,15 @@ void check_same_everywhere(const reference::Inputs& in) {
         }
 }
 
+// An inline scene with one program, compared and checked everywhere.
+void compare_inline(const std::string& name, const char* text, const char* vertex, const char* fragment) {
+    auto scene = scene::parse_scene(text, name + ".toml");
+    if (!scene) FAIL(scene.error().str());
+    reference::Inputs in{{{name + ".vert", vertex}}, {{name + ".frag", fragment}}, std::move(*scene)};
+    reference::compare(name, in);
+    check_same_everywhere(in);
+}
+
 void compare_scene_file(const std::string& name, const std::string& file) {
     auto scene = scene::load_scene(kSourceDir + "/scenes/" + file);
     if (!scene) FAIL(scene.error().str());
@@ -81,14 +90,79 @@ objects = ["cube", "cube"]
 state = { viewport = [60, 40, 36, 24], depth_test = false, blend = true, blend_func = ["one", "one"] }
 )";
 
+// [current]: glMultiTexCoord on a unit the mesh has no array for (the
+// quad's unit 0 array wins over its current value), glFogCoord, and
+// constant generic attributes (glVertexAttrib).
+const char* kCurrentVertex = R"(
+attribute float weight;
+attribute vec2 shift;
+void main() {
+    gl_FrontColor = vec4(gl_MultiTexCoord0.x, gl_MultiTexCoord2.y + 0.25 * gl_MultiTexCoord2.w, weight + gl_FogCoord, 1.0);
+    gl_Position = ftransform() + vec4(shift, 0.0, 0.0);
+}
+)";
+const char* kColorFragment = "void main() { gl_FragColor = gl_Color; }\n";
+const char* kCurrentScene = R"(
+[output]
+size = [64, 64]
+[current]
+tex_coords = { 0 = [0.9, 0.9], 2 = [0.1, 0.3] }
+fog_coord = 0.2
+attributes = { weight = 0.5, shift = [0.25, -0.25] }
+[[objects]]
+mesh = "quad"
+transform = [ { scale = [0.6, 0.6, 1] } ]
+)";
+
+const char* kTexVertex = "void main() { gl_TexCoord[0] = gl_MultiTexCoord0; gl_Position = ftransform(); }\n";
+const char* kTexFragment = R"(
+uniform sampler2D tex;
+uniform sampler2D other;
+void main() { gl_FragColor = texture2D(tex, gl_TexCoord[0].st) * 0.7 + texture2D(other, gl_TexCoord[0].st) * 0.3; }
+)";
+// Textures bound per object: each of the first two quads binds its own to
+// unit 0; the third binds none and samples the second's (GL's binding is
+// context state); unit 1 keeps the scene's texture throughout.
+const char* kObjectTexturesScene = R"(
+[output]
+size = [96, 32]
+[textures.1]
+checkerboard = { size = [8, 8], colors = [[0, 0, 1], [1, 1, 0]] }
+min_filter = "nearest"
+mag_filter = "nearest"
+[uniforms]
+tex = 0
+other = 1
+[[objects]]
+mesh = "quad"
+transform = [ { translate = [-0.66, 0, 0] }, { scale = [0.3, 0.9, 1] } ]
+[objects.textures.0]
+checkerboard = { size = [4, 4], colors = [[1, 0, 0], [1, 1, 1]] }
+min_filter = "nearest"
+mag_filter = "nearest"
+[[objects]]
+mesh = "quad"
+transform = [ { scale = [0.3, 0.9, 1] } ]
+[objects.textures.0]
+rgbw = { size = [2, 2] }
+min_filter = "linear"
+[[objects]]
+mesh = "quad"
+transform = [ { translate = [0.66, 0, 0] }, { scale = [0.3, 0.9, 1] } ]
+)";
+
 }  // namespace
 
+TEST_CASE("glslrun matches Mesa on textures bound per object", "[reference]") {
+    compare_inline("object-textures", kObjectTexturesScene, kTexVertex, kTexFragment);
+}
+
+TEST_CASE("glslrun matches Mesa on current texture coordinates, fog coordinate and generic attributes", "[reference]") {
+    compare_inline("current-attributes", kCurrentScene, kCurrentVertex, kColorFragment);
+}
+
 TEST_CASE("glslrun matches Mesa on viewports, per-pass cameras and clears, and an object drawn twice", "[reference]") {
-    auto scene = scene::parse_scene(kViewportScene, "viewports.toml");
-    if (!scene) FAIL(scene.error().str());
-    reference::Inputs in{{{"color.vert", kColorVertex}}, {{"half.frag", kHalfFragment}}, std::move(*scene)};
-    reference::compare("targets-viewports", in);
-    check_same_everywhere(in);
+    compare_inline("targets-viewports", kViewportScene, kColorVertex, kHalfFragment);
 }
 
 TEST_CASE("glslrun matches Mesa on shadow mapping through a depth render target (PCF)", "[reference]") {

@@ -124,3 +124,45 @@ objects = ["b", "a", "b"]
 )");
     CHECK(s.passes[0].objects == std::vector<size_t>{1, 0, 2, 1});
 }
+
+TEST_CASE("[current] texture coordinates, fog coordinate and generic attributes", "[scene][parse]") {
+    Scene s = parse_ok(R"(
+[current]
+tex_coords = { 3 = [0.5, 0.25] }
+fog_coord = 2
+attributes = { w = 0.5, v = [1, 2, 3] }
+)");
+    REQUIRE(s.current_attributes.size() == 4);
+    CHECK(s.current_attributes[0].name == "gl_MultiTexCoord3");
+    check_vec(s.current_attributes[0].value, {0.5, 0.25, 0, 1});
+    CHECK(s.current_attributes[1].name == "gl_FogCoord");
+    CHECK(s.current_attributes[1].value.x == 2.0f);
+    CHECK(s.current_attributes[2].name == "v");  // toml++ keeps tables sorted by key
+    check_vec(s.current_attributes[2].value, {1, 2, 3, 1});
+    check_vec(s.current_attributes[3].value, {0.5, 0, 0, 1});
+    check_cases({
+        {"[current]\ntex_coords = { 8 = [1] }\n", 2, "0..7"},
+        {"[current]\ntex_coords = { 0 = [1, 2, 3, 4, 5] }\n", 2, "tex_coords.0"},
+        {"[current]\nattributes = { gl_Color = 1 }\n", 2, "keys of their own"},
+        {"[current]\nfog_coord = \"x\"\n", 2, "fog_coord"},
+    });
+}
+
+TEST_CASE("objects bind textures of their own", "[scene][parse]") {
+    Scene s = parse_ok(R"(
+[[objects]]
+mesh = "quad"
+[objects.textures.2]
+solid = { size = [2, 2], color = [1, 0, 0] }
+min_filter = "linear"
+)");
+    REQUIRE(s.objects[0].textures.size() == 1);
+    CHECK(s.objects[0].textures[0].unit == 2);
+    CHECK(s.textures.empty());
+    check_cases({
+        {"[render_targets.a]\nsize = [4, 4]\n[[objects]]\nmesh = \"quad\"\n[objects.textures.0]\n"
+         "render_target = \"a\"\n", 6, "bound in [textures.N]"},
+        {"[[objects]]\nmesh = \"quad\"\n[objects.textures.16]\nsolid = { size = [1, 1], color = [1, 1, 1] }\n", 3,
+         "0..15"},
+    });
+}

@@ -24,6 +24,8 @@ namespace glslrun::glref {
     X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                                    \
     X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                            \
     X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                                  \
+    X(PFNGLFOGCOORDFPROC, FogCoordf)                                                        \
+    X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)                                            \
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                              \
     X(PFNGLCREATESHADERPROC, CreateShader)                                                  \
     X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                  \

@@ -417,10 +417,23 @@ Status bind_arrays(const GLFunctions& gl, GLuint program, const scene::Mesh& m, 
     return Ok{};
 }
 
+// [current]'s other values: glMultiTexCoord4f, glFogCoordf, glVertexAttrib4f
+// (for the attributes the program has; an array, when bound, takes over).
+void set_current_attributes(const GLFunctions& gl, GLuint program, const Scene& s) {
+    for (const scene::CurrentAttribute& a : s.current_attributes) {
+        if (int unit = multi_tex_coord_unit(a.name); unit >= 0)
+            glMultiTexCoord4fv(GLenum(GL_TEXTURE0 + unit), glm::value_ptr(a.value));
+        else if (a.name == "gl_FogCoord")
+            gl.FogCoordf(a.value.x);
+        else if (GLint loc = gl.GetAttribLocation(program, a.name.c_str()); loc >= 0)
+            gl.VertexAttrib4fv(GLuint(loc), glm::value_ptr(a.value));
+    }
+}
+
 // render_scene's per-object state, in the same order: modelview, materials,
 // current attributes, the object's uniforms, then the arrays and the draw.
 Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o,
-                   const scene::Pass* pass, const GLTarget& into) {
+                   const scene::Pass* pass, const GLTarget& into, const TextureBindings& textures) {
     if (Status st = check_mesh(o); !st) return st;
     const GLState* state = o.state ? &*o.state : &s.gl;
     if (pass) {
@@ -439,6 +452,8 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
     // GL sets only rgb; the current secondary alpha stays GL's 1.
     gl.SecondaryColor3fv(glm::value_ptr(s.gl.current_secondary_color));
     glNormal3fv(glm::value_ptr(s.gl.current_normal));
+    set_current_attributes(gl, program, s);
+    bind_object_textures(gl, o, textures.objects[size_t(&o - s.objects.data())]);
     if (Status st = apply_uniforms(gl, program, o.uniforms); !st) return st;
     BoundArrays bound;
     Status st = bind_arrays(gl, program, o.mesh, bound);
@@ -451,17 +466,17 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
 // One pass (the scene's one pass when `pass` is null): glUseProgram, the
 // scene's and the pass's uniforms, then its objects.
 Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, const scene::Pass* pass,
-                 const GLTarget& into) {
+                 const GLTarget& into, const TextureBindings& textures) {
     gl.UseProgram(program);
     if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
     if (pass)
         if (Status st = apply_uniforms(gl, program, pass->uniforms); !st) return st;
     if (!pass)
         for (const scene::Object& o : scene.objects)
-            if (Status st = draw_object(gl, program, scene, o, nullptr, into); !st) return st;
+            if (Status st = draw_object(gl, program, scene, o, nullptr, into, textures); !st) return st;
     if (pass)
         for (size_t i : pass->objects)
-            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass, into); !st) return st;
+            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass, into, textures); !st) return st;
     return Ok{};
 }
 
@@ -472,7 +487,8 @@ Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, cons
 // programs[i] is pass i's (or the one program without passes); targets[0]
 // is the output, targets[1 + t] render target t.
 Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, const Scene& scene,
-                  const std::vector<GLTarget>& targets) {
+                  const std::vector<GLTarget>& targets, const TextureBindings& textures) {
+    restore_bindings(gl, textures);  // objects' glBindTexture calls last into the next frame
     for (size_t t = 1; t < targets.size(); ++t) {
         gl.BindFramebuffer(GL_FRAMEBUFFER, targets[t].fbo);
         clear(gl, targets[t], ClearValues{glm::vec4(0), 1.0f, 0});
@@ -480,14 +496,14 @@ Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, co
     gl.BindFramebuffer(GL_FRAMEBUFFER, targets[0].fbo);
     clear(gl, targets[0], ClearValues{scene.clear_color, scene.clear_depth, scene.clear_stencil});
     if (scene.passes.empty()) {
-        if (Status st = draw_pass(gl, programs[0], scene, nullptr, targets[0]); !st) return st;
+        if (Status st = draw_pass(gl, programs[0], scene, nullptr, targets[0], textures); !st) return st;
     }
     for (size_t i = 0; i < scene.passes.size(); ++i) {
         const scene::Pass& pass = scene.passes[i];
         const GLTarget& into = targets[size_t(pass.target + 1)];
         gl.BindFramebuffer(GL_FRAMEBUFFER, into.fbo);
         clear(gl, into, pass.clear);
-        if (Status st = draw_pass(gl, programs[i], scene, &pass, into); !st) return st;
+        if (Status st = draw_pass(gl, programs[i], scene, &pass, into, textures); !st) return st;
     }
     gl.BindFramebuffer(GL_FRAMEBUFFER, targets[0].fbo);
     glFinish();
@@ -548,11 +564,13 @@ Result<MesaRender> render_with_mesa(const std::string& driver, const std::vector
     if (!made) return made.error();
     std::vector<GLTarget> targets{{GLuint(output), scene.width, scene.height, buffers}};
     targets.insert(targets.end(), made->begin(), made->end());
+    auto textures = upload_object_textures(gl, scene, options.upload_generated_mipmaps);
+    if (!textures) return textures.error();
     std::vector<double> seconds, cpu_seconds;
     for (int frame = 0; frame < std::max(1, options.frames); ++frame) {
         auto start = std::chrono::steady_clock::now();
         double cpu_start = scene::process_cpu_seconds();
-        if (Status st = draw_frame(gl, *programs, scene, targets); !st) return st.error();
+        if (Status st = draw_frame(gl, *programs, scene, targets, *textures); !st) return st.error();
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         cpu_seconds.push_back(scene::process_cpu_seconds() - cpu_start);
     }

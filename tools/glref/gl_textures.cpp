@@ -121,7 +121,7 @@ void tex_parameters(GLenum target, const SamplerState& s) {
     glTexParameteri(target, GL_DEPTH_TEXTURE_MODE, GLint(gl_depth_mode(s.depth_mode)));
 }
 
-Status upload_one(const GLFunctions& gl, const scene::TextureSetting& setting, bool upload_generated_levels) {
+Result<GLuint> upload_one(const GLFunctions& gl, const scene::TextureSetting& setting, bool upload_generated_levels) {
     const Texture& t = *setting.texture;
     GLenum target = gl_target(t.target());
     GLuint id = 0;
@@ -146,8 +146,12 @@ Status upload_one(const GLFunctions& gl, const scene::TextureSetting& setting, b
     if (e != GL_NO_ERROR)
         return Error(fmt::format("Mesa reported {} while creating the texture of unit {}", gl_error_name(e), setting.unit),
                      setting.where.file, setting.where.line);
-    return Ok{};
+    return id;
 }
+
+constexpr GLenum kBindingQueries[] = {GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_2D, GL_TEXTURE_BINDING_3D,
+                                      GL_TEXTURE_BINDING_CUBE_MAP};
+constexpr GLenum kTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
 
 // An empty 2D texture of the target's size, attached to the bound FBO; the
 // unit of a [textures.N] that samples it gets it with the file's sampler state.
@@ -200,9 +204,53 @@ Result<std::vector<GLTarget>> make_render_targets(const GLFunctions& gl, const s
 Status upload_textures(const GLFunctions& gl, const scene::Scene& scene, bool upload_generated_levels) {
     for (const scene::TextureSetting& setting : scene.textures)
         if (setting.render_target < 0)
-            if (Status st = upload_one(gl, setting, upload_generated_levels); !st) return st;
+            if (auto id = upload_one(gl, setting, upload_generated_levels); !id) return id.error();
     gl.ActiveTexture(GL_TEXTURE0);
     return Ok{};
+}
+
+}  // namespace glslrun::glref
+
+namespace glslrun::glref {
+
+Result<TextureBindings> upload_object_textures(const GLFunctions& gl, const scene::Scene& scene,
+                                               bool upload_generated_levels) {
+    TextureBindings b;
+    for (int unit = 0; unit < kMaxTextureUnits; ++unit) {
+        gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        for (size_t t = 0; t < 4; ++t) {
+            GLint id = 0;
+            glGetIntegerv(kBindingQueries[t], &id);
+            b.initial[size_t(unit)][t] = GLuint(id);
+        }
+    }
+    for (const scene::Object& o : scene.objects) {
+        b.objects.emplace_back();
+        for (const scene::TextureSetting& setting : o.textures) {
+            auto id = upload_one(gl, setting, upload_generated_levels);
+            if (!id) return id.error();
+            b.objects.back().push_back(*id);
+        }
+    }
+    restore_bindings(gl, b);  // uploading bound each texture; the scene's bindings come first
+    return b;
+}
+
+void restore_bindings(const GLFunctions& gl, const TextureBindings& b) {
+    for (int unit = 0; unit < kMaxTextureUnits; ++unit) {
+        gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        for (size_t t = 0; t < 4; ++t) glBindTexture(kTargets[t], b.initial[size_t(unit)][t]);
+    }
+    gl.ActiveTexture(GL_TEXTURE0);
+}
+
+void bind_object_textures(const GLFunctions& gl, const scene::Object& o, const std::vector<GLuint>& ids) {
+    for (size_t i = 0; i < o.textures.size(); ++i) {
+        const scene::TextureSetting& setting = o.textures[i];
+        gl.ActiveTexture(GLenum(GL_TEXTURE0 + setting.unit));
+        glBindTexture(kTargets[int(setting.texture->target())], ids[i]);
+    }
+    gl.ActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace glslrun::glref

@@ -3,6 +3,9 @@
 // from the texels of the scene's glslrun::Texture objects, so both renderers
 // sample identical data.
 #pragma once
+#include <array>
+#include <vector>
+
 #include "tools/glref/gl_context.h"
 #include "glslrun/scene/scene.h"
 
@@ -28,5 +31,17 @@ struct GLTarget {
 // GL_DEPTH24_STENCIL8 depth texture. The textures that [textures.N] sample
 // are bound to their units with the file's sampler state.
 Result<std::vector<GLTarget>> make_render_targets(const GLFunctions& gl, const scene::Scene& scene);
+
+// [objects.textures.N]: texture objects of their own, bound before each
+// object's draw. `initial` is every unit's binding once the scene's textures
+// and render targets are made: each frame starts from it.
+struct TextureBindings {
+    std::vector<std::vector<GLuint>> objects;  // per object, per its textures
+    std::array<std::array<GLuint, 4>, kMaxTextureUnits> initial{};  // by unit and TextureTarget
+};
+Result<TextureBindings> upload_object_textures(const GLFunctions& gl, const scene::Scene& scene,
+                                               bool upload_generated_levels);
+void restore_bindings(const GLFunctions& gl, const TextureBindings& b);
+void bind_object_textures(const GLFunctions& gl, const scene::Object& o, const std::vector<GLuint>& ids);
 
 }  // namespace glslrun::glref

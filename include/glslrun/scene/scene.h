@@ -65,18 +65,15 @@ struct LightSetting {
 // 0 with its white diffuse and specular, nothing given.
 std::array<LightSetting, 8> default_light_settings();
 
-struct Object {
-    std::string name;              // for messages; "objects[2]" when unnamed
-    Mesh mesh;
-    glm::mat4 model{1.0f};         // translate/rotate/scale in GL's order of application
-    std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
-    std::optional<MaterialState> front_material, back_material;  // overrides
-    std::vector<UniformSetting> uniforms;
-    // [objects.state]: the scene's GL state with this object's render state
-    // keys on top (lights, materials and textures stay the scene's).
-    std::optional<GLState> state;
+// A [current] attribute value that no array gives: glMultiTexCoord4f
+// ("gl_MultiTexCoord0".."7"), glFogCoordf ("gl_FogCoord") or glVertexAttrib4f
+// (a user attribute's name). Missing components are GL's (0, 0, 0, 1).
+struct CurrentAttribute {
+    std::string name;
+    glm::vec4 value{0, 0, 0, 1};
     SourceLoc where;
 };
+
 
 // One [textures.N] table: a texture object bound to unit N. The texels are
 // final (read, generated, rounded to the internal format) and shared by every
@@ -95,6 +92,22 @@ struct TextureSetting {
     // after every pass into it. attachment: 0..7 colour, -1 depth.
     int render_target = -1;
     int attachment = 0;
+    SourceLoc where;
+};
+
+struct Object {
+    std::string name;              // for messages; "objects[2]" when unnamed
+    Mesh mesh;
+    glm::mat4 model{1.0f};         // translate/rotate/scale in GL's order of application
+    std::optional<glm::vec4> color;  // glColor for gl_Color when the mesh has no colours
+    std::optional<MaterialState> front_material, back_material;  // overrides
+    std::vector<UniformSetting> uniforms;
+    // [objects.textures.N]: glBindTexture on unit N before this object's draw.
+    // Bindings are context state: they stay for the objects drawn after it.
+    std::vector<TextureSetting> textures;
+    // [objects.state]: the scene's GL state with this object's render state
+    // keys on top (lights, materials and textures stay the scene's).
+    std::optional<GLState> state;
     SourceLoc where;
 };
 
@@ -171,6 +184,9 @@ struct Scene {
     std::vector<TextureSetting> textures;  // by unit, ascending
     std::vector<RenderTarget> targets;     // [render_targets.NAME], in file order
     std::vector<UniformSetting> uniforms;  // for every object
+    // [current] tex_coords, fog_coord and attributes: what a draw reads for
+    // those attributes when its mesh has no array of them.
+    std::vector<CurrentAttribute> current_attributes;
     std::vector<Object> objects;
     // [[passes]]; empty: one pass of every object with the scene's program and state.
     std::vector<Pass> passes;
