@@ -269,12 +269,13 @@ Status check_gl_copies(const Scene& scene) {
 }
 
 // The render targets' framebuffers, as glref's FBOs start: colour (0, 0, 0, 0),
-// depth 1, stencil 0.
-Result<std::vector<Framebuffer>> make_targets(const Scene& scene) {
+// depth 1, stencil 0; colours stored as the output's are (`rounding`).
+Result<std::vector<Framebuffer>> make_targets(const Scene& scene, ColorRounding rounding) {
     std::vector<Framebuffer> targets;
     for (const RenderTarget& t : scene.targets) {
         auto fb = Framebuffer::create(t.width, t.height, false, t.color_buffers);
         if (!fb) return fb.error();
+        fb->rounding = rounding;
         fb->clear_color(glm::vec4(0));
         fb->clear_depth(1);
         fb->clear_stencil(0);
@@ -334,7 +335,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
     auto bound = bind_scene_textures(scene);
     if (!bound) return bound.error();
     if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
-    auto targets = make_targets(scene);
+    auto targets = make_targets(scene, fb.rounding);
     if (!targets) return targets.error();
     std::vector<std::shared_ptr<const Texture>> live;
     for (const TextureSetting& t : scene.textures) live.push_back(t.texture);
