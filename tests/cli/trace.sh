@@ -63,6 +63,10 @@ grep -q "^fragment 0 at pixel 128,128: draw 0 (pass 'ambient', program .*/passes
     "$tmp/passes.txt" || fail "trace multi_pass: the ambient pass is not first"
 grep -q "^fragment .*(pass 'light 1', .*: written$" "$tmp/passes.txt" || fail "trace multi_pass: no light 1 fragment"
 grep -q WARNING "$tmp/passes.txt" && fail "trace multi_pass: a replay differs from the render"
+"$glslrun" trace --vertex 0 --draw 2 $mp >"$tmp/passes_vertex.txt" || fail "trace --vertex multi_pass exited with $?"
+grep -q "^vertex 0 of draw 2 (pass 'light 0', program .*/passes/light.vert + .*/passes/light.frag):" \
+    "$tmp/passes_vertex.txt" || fail "trace --vertex: draw 2 is not light 0's"
+grep -q WARNING "$tmp/passes_vertex.txt" && fail "trace --vertex multi_pass: the replay differs from the render"
 "$glslrun" trace --find-nan --colour-range $mp >"$tmp/passes_nan.txt" || fail "--find-nan multi_pass exited with $?"
 grep -q "^no NaN or infinity" "$tmp/passes_nan.txt" || fail "--find-nan multi_pass: $(cat "$tmp/passes_nan.txt")"
 
