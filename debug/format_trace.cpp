@@ -183,11 +183,31 @@ std::string json_values(const Values& v) {
     return out + "]";
 }
 
+// A matrix's rows (",\"rows\":[[...],...]", of each matrix of an array in
+// turn), as the text prints them; nothing for other types.
+std::string json_rows(const Values& v, const std::string& type) {
+    auto [cols, rows] = matrix_shape(type, v.c.size());
+    if (cols == 1) return "";
+    std::string out = ",\"rows\":[";
+    const size_t per_matrix = size_t(cols) * size_t(rows);
+    for (size_t m = 0; m < v.c.size(); m += per_matrix)
+        for (int r = 0; r < rows; ++r) {
+            out += m + size_t(r) ? ",[" : "[";
+            for (int c = 0; c < cols; ++c) {
+                size_t i = m + size_t(c) * size_t(rows) + size_t(r);
+                out += (c ? "," : "") + (i < v.c.size() ? json_number(v, v.c[i]) : std::string("null"));
+            }
+            out += "]";
+        }
+    return out + "]";
+}
+
 std::string json_named(const std::vector<NamedValue>& list) {
     std::string out = "[";
     for (size_t i = 0; i < list.size(); ++i)
-        out += fmt::format("{}{{\"name\":{},\"type\":{},\"value\":{}}}", i ? "," : "", json_string(list[i].name),
-                           json_string(list[i].type), json_values(list[i].value));
+        out += fmt::format("{}{{\"name\":{},\"type\":{},\"value\":{}{}}}", i ? "," : "", json_string(list[i].name),
+                           json_string(list[i].type), json_values(list[i].value),
+                           json_rows(list[i].value, list[i].type));
     return out + "]";
 }
 
@@ -198,7 +218,7 @@ std::string json_step(const TraceStep& s, const InvocationTrace& t, const Source
         out += ",\"where\":" + json_string(s.where) + ",\"text\":" + json_string(std::string(line_text(lines, t, s)));
     if (!s.name.empty()) out += ",\"name\":" + json_string(s.name);
     if (s.kind == TraceStep::Kind::Assign)
-        out += ",\"type\":" + json_string(s.type) + ",\"value\":" + json_values(s.value);
+        out += ",\"type\":" + json_string(s.type) + ",\"value\":" + json_values(s.value) + json_rows(s.value, s.type);
     if (s.kind == TraceStep::Kind::Branch) out += fmt::format(",\"taken\":{}", s.taken);
     if (s.kind == TraceStep::Kind::Loop) out += fmt::format(",\"iteration\":{}", s.iteration);
     return out + "}";

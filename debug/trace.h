@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ir/ir.h"
@@ -77,6 +78,9 @@ std::string binding_type(const ir::Binding& b);
 // "0.5", "vec3(1, 0, 0.25)", "mat2(vec2(1, 0), vec2(0, 1))"; matrices as
 // GLSL's constructor takes them, by columns (for one-line messages).
 std::string format_value(const Values& v, const std::string& type);
+// Columns and rows of a "matN" / "matCxR" type (GLSL stores a matrix's
+// components column by column); {1, count} for anything else.
+std::pair<int, int> matrix_shape(const std::string& type, size_t count);
 // A matrix on several lines, one row per line: how --stats and the trace
 // show matrices. Not a matrix: format_value's one line.
 std::vector<std::string> format_matrix_rows(const Values& v, const std::string& type);

@@ -31,6 +31,10 @@ assert any(s["where"].endswith("spot_pix_oops.frag:31") and s["text"] == "intens
            for s in steps if s["kind"] == "statement"), "no text of line 31"
 
 assert len(t["vertices"]) == 3 and all(v["matches_render"] for v in t["vertices"])
+# A matrix's "value" lists its components column by column (GLSL's order); "rows" as the text prints it.
+mv = [u for u in t["vertices"][0]["trace"]["uniforms"] if u["name"] == "gl_ModelViewMatrix"][0]
+assert mv["rows"] == [[mv["value"][c * 4 + r] for c in range(4)] for r in range(4)], mv
+assert mv["rows"][2][3] == -5, mv["rows"]
 PY
 
 # Each fragment's outcome is the test that stopped it, with the values compared
