@@ -1,5 +1,6 @@
 #include "debug/debugger.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -62,6 +63,7 @@ using Words = std::vector<uint32_t>;
 
 // What a draw used: the replays need the same uniforms, textures and vertices.
 struct DrawSnapshot {
+    size_t pass = 0;
     Words uniforms;
     GLState gl;
     std::vector<VertexAttrib> attribs;
@@ -117,6 +119,7 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
     rt::TracedInterpreter in(shader, draw.uniforms.data(), rt::RunLimits(debug.exec), draw.gl.texture_units.data(),
                              debug.exec.precision, ~0u, recorder);
     fill(in);
+    recorder.trace.files = shader.sources;
     for (const ir::Binding& b : shader.inputs) recorder.trace.inputs.push_back(binding_value(b, in, lane));
     rt::RunError error;
     bool ok = in.run(live, &error);
@@ -130,23 +133,23 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
     return std::move(recorder.trace);
 }
 
-class Probe : public raster::DrawProbe {
+class Probe : public PassProbe {
 public:
-    explicit Probe(const Program& program) : program_(program) {}
     void begin_draw(const raster::ProbeDraw& d) override {
-        draws_.push_back({state_of(program_).uniforms, d.gl, d.attribs, d.vertex_count, d.shaded});
+        draws_.push_back({pass, state_of(*current().program).uniforms, d.gl, d.attribs, d.vertex_count, d.shaded});
     }
     uint32_t draw_index() const { return uint32_t(draws_.size() - 1); }
     const std::vector<DrawSnapshot>& draws() const { return draws_; }
 
 protected:
-    const Program& program_;
     std::vector<DrawSnapshot> draws_;
 };
 
-FragmentTrace describe(const raster::FsPrimitive& p, uint32_t draw, float z) {
+FragmentTrace describe(const raster::FsPrimitive& p, uint32_t draw, const PassProbe::PassPrograms& pass, float z) {
     FragmentTrace f;
     f.draw = draw;
+    f.pass = pass.name;
+    f.program = pass.program_name;
     f.primitive = p.primitive;
     f.vertices = p.vertex_ids;
     f.front = p.front;
@@ -154,15 +157,52 @@ FragmentTrace describe(const raster::FsPrimitive& p, uint32_t draw, float z) {
     return f;
 }
 
+// The tests of lane `lane` as the fragment stage ran them; `alive`: the
+// shader did not discard it. A failed test stops the ones after it.
+FragmentTests tests_of(const GLState& gl, const raster::ProbeTests& t, int lane, bool front, bool alive) {
+    using R = FragmentTests::Result;
+    const size_t i = size_t(lane);
+    const rt::LaneMask bit = rt::LaneMask(1) << lane;
+    bool reached = alive;
+    auto result = [&](bool enabled, rt::LaneMask failed) {
+        if (!enabled) return R::Off;
+        if (!reached) return R::NotReached;
+        if (failed & bit) {
+            reached = false;
+            return R::Failed;
+        }
+        return R::Passed;
+    };
+    FragmentTests f;
+    f.scissor_test = result(gl.scissor_test, 0);
+    f.alpha_test = result(gl.alpha_test, t.alpha_failed);
+    f.stencil_test = result(gl.stencil_test, t.stencil_failed);
+    f.depth_test = result(gl.depth_test, t.depth_failed);
+    f.alpha_func = gl.alpha_func;
+    f.alpha = t.alpha[i];
+    f.alpha_ref = t.alpha_ref;
+    f.alpha_bytes = t.alpha_bytes;
+    const StencilFace& face = gl.stencil[front ? 0 : 1];
+    f.stencil_func = face.func;
+    f.stencil_ref = uint32_t(std::clamp(face.ref, 0, 255));
+    f.stencil_mask = face.value_mask & 255u;
+    f.stored_stencil = t.stored_stencil[i];
+    f.depth_func = gl.depth_func;
+    f.z = t.z[i];
+    f.stored_depth = t.stored_depth[i];
+    return f;
+}
+
 class PixelProbe final : public Probe {
 public:
-    PixelProbe(const Program& program, int x, int y) : Probe(program), x_(x), y_(y) {}
+    PixelProbe(int x, int y) : x_(x), y_(y) {}
     void before_run(const raster::ProbeBatch& b) override {
-        const ir::Shader& fs = state_of(program_).ir.fragment;
+        if (!current().to_output) return;  // a pass drawing into a target: not the image's pixel
+        const ir::Shader& fs = state_of(*current().program).ir.fragment;
         for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1) {
             int lane = std::countr_zero(bits);
             if (b.x[size_t(lane)] != x_ || b.y[size_t(lane)] != y_) continue;
-            Capture c{describe(*b.quad_prim[lane / 4], draw_index(), b.z[size_t(lane)]),
+            Capture c{describe(*b.quad_prim[lane / 4], draw_index(), current(), b.z[size_t(lane)]),
                       lane,
                       b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1,
                       {}};
@@ -175,12 +215,20 @@ public:
             pending_.push_back(std::move(c));
         }
     }
-    void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask written) override {
+    void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask written,
+                     const raster::ProbeTests& tests) override {
         for (Capture& c : pending_) {
             using O = FragmentTrace::Outcome;
+            using R = FragmentTests::Result;
             bool is_alive = (alive >> c.lane) & 1, is_written = (written >> c.lane) & 1;
-            c.info.outcome = !is_alive ? O::Discarded : is_written ? O::Written : O::DepthFailed;
-            c.info.rendered = outputs_of(state_of(program_).ir.fragment.outputs, b.interp, c.lane);
+            c.info.tests = tests_of(draws_.back().gl, tests, c.lane, c.info.front, is_alive);
+            const FragmentTests& t = c.info.tests;
+            c.info.outcome = !is_alive                        ? O::Discarded
+                             : is_written                     ? O::Written
+                             : t.alpha_test == R::Failed      ? O::AlphaFailed
+                             : t.stencil_test == R::Failed    ? O::StencilFailed
+                                                              : O::DepthFailed;
+            c.info.rendered = outputs_of(state_of(*current().program).ir.fragment.outputs, b.interp, c.lane);
             captures_.push_back(std::move(c));
         }
         pending_.clear();
@@ -206,12 +254,13 @@ FragmentTrace replay_fragment(const Program& debug, const DrawSnapshot& draw, Ca
     return f;
 }
 
-Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, const DrawSnapshot& draw,
+Result<VertexTrace> replay_vertex(const PassProbe::PassPrograms& pass, const DrawSnapshot& draw,
                                   uint32_t draw_index, uint32_t vertex, size_t& steps_left) {
+    const Program &program = *pass.program, &debug = *pass.debug;
     const ir::Shader& vs = state_of(debug).ir.vertex;
     auto words = exec::vertex_input_words(vs, draw.attribs, draw.vertex_count, draw.gl, vertex);
     if (!words) return words.error();
-    VertexTrace t{draw_index, vertex, true, {}};
+    VertexTrace t{draw_index, vertex, pass.name, pass.program_name, true, {}};
     t.trace = replay(debug, vs, draw, 1, 0, steps_left, [&](rt::TracedInterpreter& in) {
         for (size_t i = 0; i < vs.inputs.size(); ++i)
             for (uint32_t k = 0; k < vs.inputs[i].count; ++k) in.lanes(vs.inputs[i].first + k)[0] = (*words)[i][k];
@@ -229,6 +278,14 @@ Result<VertexTrace> replay_vertex(const Program& program, const Program& debug, 
     return t;
 }
 
+// Whether the scissor test (GL 2.1 §4.1.2) removes window pixel x,y.
+bool outside_scissor(const GLState& gl, int x, int y) {
+    if (!gl.scissor_test) return false;
+    const auto& box = gl.scissor_box;
+    auto outside = [](int v, int lo, int size) { return v < lo || int64_t(v) >= int64_t(lo) + std::max(size, 0); };
+    return outside(x, box[0], box[2]) || outside(y, box[1], box[3]);
+}
+
 // A replay stops early at debug.exec.cancel, as the render stops at
 // program.exec.cancel; the trace then ends with an error, not with the rest.
 Status check_cancel(const Program& debug) {
@@ -239,15 +296,93 @@ Status check_cancel(const Program& debug) {
 
 }  // namespace
 
-Status render_with_probe(Program& program, const scene::Scene& scene, Framebuffer& fb, raster::DrawProbe& probe) {
-    unsigned threads = program.exec.threads;
-    program.exec.threads = 1;  // one fragment stage, in tile order
-    state_of(program).probe = &probe;
-    auto stats = scene::render_scene(program, scene, fb);
-    state_of(program).probe = nullptr;
-    program.exec.threads = threads;
-    if (!stats) return stats.error();
+namespace {
+
+// The debugging twin of pass `pass`'s own program, with `debug`'s limits.
+Result<std::shared_ptr<Program>> debug_twin(const scene::Pass& pass, const Program& debug) {
+    auto twin = compile_for_debugging(pass.vertex, pass.fragment, debug.exec.precision);
+    if (!twin) {
+        Error e(fmt::format("pass '{}': its debugging program does not compile", pass.name), pass.where.file,
+                pass.where.line);
+        for (const Diagnostic& d : twin.error().diagnostics) e.diagnostics.push_back(d);
+        return e;
+    }
+    twin->exec = debug.exec;
+    return std::make_shared<Program>(std::move(*twin));
+}
+
+std::string sources_name(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment) {
+    std::string name;
+    for (const auto* list : {&vertex, &fragment})
+        for (const ShaderSource& s : *list) name += (name.empty() ? "" : " + ") + s.name;
+    return name;
+}
+
+// The sources' lines, trimmed, by file name.
+void add_lines(std::map<std::string, std::vector<std::string>>& lines, const std::vector<ShaderSource>& sources) {
+    for (const ShaderSource& source : sources) {
+        std::vector<std::string>& out = lines[source.name];
+        out.clear();
+        for (size_t at = 0; at <= source.text.size();) {
+            size_t end = std::min(source.text.find('\n', at), source.text.size());
+            std::string_view line(source.text.data() + at, end - at);
+            size_t first = line.find_first_not_of(" \t\r\f\v"), last = line.find_last_not_of(" \t\r\f\v");
+            out.emplace_back(first == std::string_view::npos ? std::string_view()
+                                                             : line.substr(first, last - first + 1));
+            at = end + 1;
+        }
+    }
+}
+
+// Every pass's program gets the probe, and the probe the passes' programs.
+Status attach_probe(Program& program, const Program& debug, const std::string& program_name,
+                    const scene::Scene& scene, int height, PassProbe& probe) {
+    auto programs = scene::ScenePrograms::compile(program, scene);
+    if (!programs) return programs.error();
+    probe.scene_programs = std::move(*programs);
+    probe.passes.clear();
+    for (size_t i = 0; i < probe.scene_programs->size(); ++i) {
+        PassProbe::PassPrograms p{&probe.scene_programs->of_pass(i), &debug, "", program_name, true, height};
+        if (!scene.passes.empty()) {
+            const scene::Pass& pass = scene.passes[i];
+            p.name = pass.name;
+            p.to_output = pass.target < 0;
+            if (pass.target >= 0) p.height = scene.targets[size_t(pass.target)].height;
+            if (!pass.vertex.empty()) {
+                auto twin = debug_twin(pass, debug);
+                if (!twin) return twin.error();
+                probe.debug_programs.push_back(*twin);
+                p.debug = twin->get();
+                p.program_name = sources_name(pass.vertex, pass.fragment);
+                if (state_of(*p.debug).ir.uniform_words != state_of(*p.program).ir.uniform_words)
+                    return Error(fmt::format("internal error: pass '{}': the debugging program's uniforms differ",
+                                             pass.name));
+            }
+        }
+        state_of(probe.scene_programs->of_pass(i)).probe = &probe;
+        probe.passes.push_back(std::move(p));
+    }
+    probe.pass = 0;
+    probe.scene_programs->before_pass = [&probe](size_t pass) { probe.pass = pass; };
     return Ok{};
+}
+
+}  // namespace
+
+Status render_with_probe(Program& program, const Program& debug, const std::string& program_name,
+                         const scene::Scene& scene, Framebuffer& fb, PassProbe& probe) {
+    unsigned threads = program.exec.threads;
+    program.exec.threads = 1;  // one fragment stage, in tile order (the passes' programs copy it)
+    Status st = attach_probe(program, debug, program_name, scene, fb.height, probe);
+    if (st) {
+        auto stats = scene::render_scene(*probe.scene_programs, scene, fb);
+        if (!stats) st = stats.error();
+    }
+    if (probe.scene_programs)
+        for (size_t i = 0; i < probe.scene_programs->size(); ++i)
+            state_of(probe.scene_programs->of_pass(i)).probe = nullptr;
+    program.exec.threads = threads;
+    return st;
 }
 
 Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
@@ -263,19 +398,30 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
             return Error(fmt::format("pixel {},{} is outside the {}x{} image", out.x, out.y, fb.width, fb.height));
         wy = fb.height - 1 - out.y;  // the framebuffer's row 0 is the bottom
     }
-    PixelProbe probe(program, out.x, wy);
-    if (Status st = render_with_probe(program, scene, fb, probe); !st) return st.error();
+    PixelProbe probe(out.x, wy);
+    std::string name = request.sources.empty() ? "the command line's program" : sources_name(request.sources, {});
+    add_lines(out.source_lines, request.sources);
+    for (const scene::Pass& pass : scene.passes) {
+        add_lines(out.source_lines, pass.vertex);
+        add_lines(out.source_lines, pass.fragment);
+    }
+    if (Status st = render_with_probe(program, debug, name, scene, fb, probe); !st) return st.error();
     const auto& draws = probe.draws();
+    if (request.pixel)
+        for (uint32_t d = 0; d < draws.size(); ++d)
+            if (outside_scissor(draws[d].gl, out.x, wy)) out.scissored.push_back(d);
     std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
     size_t steps_left = InvocationTrace::kMaxTraceSteps;
     for (Capture& c : probe.captures_) {
-        out.fragments.push_back(replay_fragment(debug, draws[c.info.draw], c, steps_left));
+        const DrawSnapshot& draw = draws[c.info.draw];
+        out.fragments.push_back(replay_fragment(*probe.passes[draw.pass].debug, draw, c, steps_left));
         if (Status st = check_cancel(debug); !st) return st.error();
         if (out.fragments.back().outcome == FragmentTrace::Outcome::Written) visible = out.fragments.back();
     }
     if (visible)
         for (uint32_t v : visible->vertices) {
-            auto vt = replay_vertex(program, debug, draws[visible->draw], visible->draw, v, steps_left);
+            const DrawSnapshot& draw = draws[visible->draw];
+            auto vt = replay_vertex(probe.passes[draw.pass], draw, visible->draw, v, steps_left);
             if (!vt) return vt.error();
             if (Status st = check_cancel(debug); !st) return st.error();
             out.vertices.push_back(std::move(*vt));
@@ -283,7 +429,8 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
     if (request.vertex) {
         if (request.draw >= draws.size())
             return Error(fmt::format("draw {} does not exist ({} draws)", request.draw, draws.size()));
-        auto vt = replay_vertex(program, debug, draws[request.draw], request.draw, *request.vertex, steps_left);
+        const DrawSnapshot& draw = draws[request.draw];
+        auto vt = replay_vertex(probe.passes[draw.pass], draw, request.draw, *request.vertex, steps_left);
         if (!vt) return vt.error();
         if (Status st = check_cancel(debug); !st) return st.error();
         out.vertices.push_back(std::move(*vt));

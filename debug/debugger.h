@@ -6,17 +6,17 @@
 // outputs are compared with what the render computed (`matches_render`).
 #pragma once
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "debug/trace.h"
 #include "glslrun/glslrun.h"
+#include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
+#include "raster/probe.h"
 
-namespace glslrun::raster {
-class DrawProbe;
-}
 
 namespace glslrun::debug {
 
@@ -26,13 +26,35 @@ namespace glslrun::debug {
 Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
                                       const std::vector<ShaderSource>& fragment, Precision precision);
 
+// The per-fragment tests after the shader (GL 2.1 §4.1) as one fragment met
+// them, in GL's order, with the values each compared. A fragment that
+// reaches the tests passed the scissor test: the rasterizer makes no
+// fragment outside the scissor box (PixelTrace::scissored lists the draws
+// whose box leaves the pixel out).
+struct FragmentTests {
+    enum class Result : uint8_t { Off, Passed, Failed, NotReached };
+    Result scissor_test = Result::Off, alpha_test = Result::Off, stencil_test = Result::Off,
+           depth_test = Result::Off;
+    CompareFunc alpha_func = CompareFunc::Always, stencil_func = CompareFunc::Always,
+                depth_func = CompareFunc::Less;
+    float alpha = 0, alpha_ref = 0;  // as compared: with RGBA8 storage (`alpha_bytes`), the bytes n of n/255
+    bool alpha_bytes = false;
+    uint32_t stencil_ref = 0, stencil_mask = 255, stored_stencil = 0;  // (ref & mask) func (stored & mask)
+    float z = 0, stored_depth = 0;  // z func stored
+};
+
 struct FragmentTrace {
-    enum class Outcome : uint8_t { Written, DepthFailed, Discarded };
+    // The first test the fragment failed, or Written; a discarded fragment
+    // meets no test.
+    enum class Outcome : uint8_t { Written, DepthFailed, Discarded, AlphaFailed, StencilFailed };
     uint32_t draw = 0, primitive = 0;
+    std::string pass;     // the scene pass's name; empty in a scene without passes
+    std::string program;  // its shaders, "a.vert + a.frag"
     std::array<uint32_t, 3> vertices{};
     bool front = true;
     float depth = 0;  // window z
     Outcome outcome = Outcome::Written;
+    FragmentTests tests;
     bool matches_render = true;        // the replay's outputs equal the render's, bit for bit
     std::vector<NamedValue> rendered;  // the render's outputs (before quantization)
     InvocationTrace trace;
@@ -40,6 +62,7 @@ struct FragmentTrace {
 
 struct VertexTrace {
     uint32_t draw = 0, vertex = 0;
+    std::string pass, program;  // as FragmentTrace's
     bool matches_render = true;
     InvocationTrace trace;
 };
@@ -47,13 +70,19 @@ struct VertexTrace {
 struct PixelTrace {
     int x = 0, y = 0;                      // image coordinates, top-left origin
     std::vector<FragmentTrace> fragments;  // in draw order
+    std::vector<uint32_t> scissored;       // draws whose scissor box leaves the pixel out
     std::vector<VertexTrace> vertices;     // of the fragments' primitives, or --vertex
+    // Every program's source lines by file name (ShaderSource::name): the text of each step's line.
+    std::map<std::string, std::vector<std::string>> source_lines;
 };
 
 struct TraceRequest {
     std::optional<std::pair<int, int>> pixel;  // image coordinates, top-left origin
     std::optional<uint32_t> vertex;            // a vertex of draw `draw`
-    uint32_t draw = 0;
+    uint32_t draw = 0;                         // counted over every pass
+    // The program's shaders: their names name it in passes that use it, and
+    // the trace shows their lines' text.
+    std::vector<ShaderSource> sources;
 };
 
 // Renders the scene into `fb` (one thread, and no early depth test: hidden
@@ -64,6 +93,8 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
 struct NanFinding {
     bool vertex = false;  // in the vertex stage (else a fragment)
     uint32_t draw = 0, primitive = 0, vertex_index = 0;
+    std::string pass;        // the scene pass's name; empty in a scene without passes
+    bool in_target = false;  // the pass draws into a render target: x,y are the target's
     int x = 0, y = 0;  // fragments: image coordinates, top-left origin
     NanEvent event;
 };
@@ -78,8 +109,30 @@ struct NanReport {
 Result<NanReport> find_nan(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
                            bool colour_range);
 
-// Renders the scene on one thread with `probe` watching every draw.
-Status render_with_probe(Program& program, const scene::Scene& scene, Framebuffer& fb, raster::DrawProbe& probe);
+// A probe on every pass's program: render_with_probe() fills `passes` and
+// sets `pass` before each pass draws.
+class PassProbe : public raster::DrawProbe {
+public:
+    struct PassPrograms {
+        const Program* program = nullptr;  // the one that renders
+        const Program* debug = nullptr;    // its twin for replays (compile_for_debugging)
+        std::string name, program_name;    // name: empty in a scene without passes
+        bool to_output = true;             // draws into the output framebuffer (not a target)
+        int height = 0;                    // of the framebuffer it draws into
+    };
+    std::vector<PassPrograms> passes;  // one per pass; one in a scene without passes
+    size_t pass = 0;
+    const PassPrograms& current() const { return passes[pass]; }
+    // The programs compiled for the passes, kept for the replays after the render.
+    std::optional<scene::ScenePrograms> scene_programs;
+    std::vector<std::shared_ptr<Program>> debug_programs;
+};
+
+// Renders the scene on one thread with `probe` watching every draw of every
+// pass. `debug` is `program`'s twin; a pass's own shaders get theirs
+// compiled here. `program_name` names `program` in the pixel history.
+Status render_with_probe(Program& program, const Program& debug, const std::string& program_name,
+                         const scene::Scene& scene, Framebuffer& fb, PassProbe& probe);
 
 std::string format_text(const PixelTrace& t);
 std::string format_json(const PixelTrace& t);

@@ -16,26 +16,28 @@
 namespace glslrun::debug {
 namespace {
 
-class NanProbe final : public raster::DrawProbe {
+// Every pass's draws, in draw order; a pass's own program is replayed on its
+// debugging twin (PassProbe).
+class NanProbe final : public PassProbe {
 public:
-    NanProbe(const Program& program, const Program& debug, int height, bool colour_range)
-        : program_(program), debug_(debug), height_(height), colour_range_(colour_range) {}
+    explicit NanProbe(bool colour_range) : colour_range_(colour_range) {}
 
     void begin_draw(const raster::ProbeDraw& d) override {
         ++draw_;
-        uniforms_ = state_of(program_).uniforms;
+        uniforms_ = state_of(*current().program).uniforms;
         gl_ = d.gl;
         if (!report.nan && !stopped) check_vertices(d);
     }
 
     void before_run(const raster::ProbeBatch& b) override {
         if (report.nan || stopped) return;
-        const ir::Shader& fs = state_of(debug_).ir.fragment;
-        ShaderNames names(fs, state_of(debug_).ir);
+        const Program &program = *current().program, &debug = *current().debug;
+        const ir::Shader& fs = state_of(debug).ir.fragment;
+        ShaderNames names(fs, state_of(debug).ir);
         NanWatch watch(names);
-        rt::TracedInterpreter in(fs, uniforms_.data(), rt::RunLimits(debug_.exec), gl_.texture_units.data(),
-                                 debug_.exec.precision, ~0u, watch);
-        const ir::Shader& rendered = state_of(program_).ir.fragment;
+        rt::TracedInterpreter in(fs, uniforms_.data(), rt::RunLimits(debug.exec), gl_.texture_units.data(),
+                                 debug.exec.precision, ~0u, watch);
+        const ir::Shader& rendered = state_of(program).ir.fragment;
         for (const ir::Binding& to : fs.inputs)
             for (const ir::Binding& from : rendered.inputs)
                 if (from.name == to.name)
@@ -43,16 +45,18 @@ public:
                         std::memcpy(in.lanes(to.first + k), b.interp.lanes(from.first + k), rt::kLanes * 4);
         rt::RunError error;
         if (!in.run(b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1, &error))
-            stopped = exec::run_error(state_of(debug_), ir::Stage::Fragment, error);
+            stopped = exec::run_error(state_of(debug), ir::Stage::Fragment, error);
         if (rt::LaneMask hit = watch.found & b.covered) {
             int lane = std::countr_zero(hit);
             report.nan = fragment_finding(b, lane, std::move(*watch.first[size_t(lane)]));
         }
     }
 
-    void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask) override {
-        if (!colour_range_ || report.out_of_range) return;
-        const ir::Shader& fs = state_of(program_).ir.fragment;
+    void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask,
+                     const raster::ProbeTests&) override {
+        // Colours of the image, not of a render target.
+        if (!colour_range_ || report.out_of_range || !current().to_output) return;
+        const ir::Shader& fs = state_of(*current().program).ir.fragment;
         for (const ir::Binding& out : fs.outputs) {
             if (out.name != "gl_FragColor" && !out.name.starts_with("gl_FragData")) continue;
             for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
@@ -82,20 +86,23 @@ private:
         NanFinding f;
         f.draw = draw_;
         f.primitive = b.quad_prim[lane / 4]->primitive;
+        f.pass = current().name;
+        f.in_target = !current().to_output;
         f.x = b.x[size_t(lane)];
-        f.y = height_ - 1 - b.y[size_t(lane)];
+        f.y = current().height - 1 - b.y[size_t(lane)];
         f.event = std::move(e);
         return f;
     }
 
     // The draw's vertices in batches, as the render shades them.
     void check_vertices(const raster::ProbeDraw& d) {
-        const ir::Shader& vs = state_of(debug_).ir.vertex;
-        ShaderNames names(vs, state_of(debug_).ir);
+        const Program& debug = *current().debug;
+        const ir::Shader& vs = state_of(debug).ir.vertex;
+        ShaderNames names(vs, state_of(debug).ir);
         for (uint32_t base = 0; base < d.vertex_count && !report.nan && !stopped; base += rt::kLanes) {
             NanWatch watch(names);
-            rt::TracedInterpreter in(vs, uniforms_.data(), rt::RunLimits(debug_.exec), gl_.texture_units.data(),
-                                     debug_.exec.precision, ~0u, watch);
+            rt::TracedInterpreter in(vs, uniforms_.data(), rt::RunLimits(debug.exec), gl_.texture_units.data(),
+                                     debug.exec.precision, ~0u, watch);
             int n = int(std::min<uint32_t>(rt::kLanes, d.vertex_count - base));
             for (int lane = 0; lane < n; ++lane) {
                 auto words = exec::vertex_input_words(vs, d.attribs, d.vertex_count, d.gl, base + uint32_t(lane));
@@ -106,12 +113,13 @@ private:
             }
             rt::RunError error;
             if (!in.run(n == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << n) - 1, &error))
-                stopped = exec::run_error(state_of(debug_), ir::Stage::Vertex, error);
+                stopped = exec::run_error(state_of(debug), ir::Stage::Vertex, error);
             if (watch.found) {
                 int lane = std::countr_zero(watch.found);
                 NanFinding f;
                 f.vertex = true;
                 f.draw = draw_;
+                f.pass = current().name;
                 f.vertex_index = base + uint32_t(lane);
                 f.event = std::move(*watch.first[size_t(lane)]);
                 report.nan = std::move(f);
@@ -119,9 +127,6 @@ private:
         }
     }
 
-    const Program& program_;
-    const Program& debug_;
-    int height_;
     bool colour_range_;
     uint32_t draw_ = ~0u;
     std::vector<uint32_t> uniforms_;
@@ -132,8 +137,8 @@ private:
 
 Result<NanReport> find_nan(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
                            bool colour_range) {
-    NanProbe probe(program, debug, fb.height, colour_range);
-    if (Status st = render_with_probe(program, scene, fb, probe); !st) return st.error();
+    NanProbe probe(colour_range);
+    if (Status st = render_with_probe(program, debug, "", scene, fb, probe); !st) return st.error();
     if (probe.stopped && !probe.report.nan) return *probe.stopped;
     return std::move(probe.report);
 }

@@ -15,6 +15,14 @@ std::string type_name(const ir::ValueType& t) {
 
 std::string binding_type(const ir::Binding& b) { return type_name(ir::ValueType{b.kind, 1, uint8_t(b.count), false}); }
 
+// Columns and rows of a "matN" / "matCxR" type; {1, n} otherwise.
+std::pair<int, int> matrix_shape(const std::string& type, size_t count) {
+    int cols = 0, rows = 0;
+    if (std::sscanf(type.c_str(), "mat%dx%d", &cols, &rows) == 2 && cols * rows > 0) return {cols, rows};
+    if (std::sscanf(type.c_str(), "mat%d", &cols) == 1 && cols > 0) return {cols, cols};
+    return {1, int(count)};
+}
+
 namespace {
 
 std::string scalar(const Values& v, double x) {
@@ -29,14 +37,6 @@ std::string scalar(const Values& v, double x) {
     return "?";
 }
 
-// Columns and rows of a "matN" / "matCxR" type; {1, n} otherwise.
-std::pair<int, int> shape(const std::string& type, size_t count) {
-    int cols = 0, rows = 0;
-    if (std::sscanf(type.c_str(), "mat%dx%d", &cols, &rows) == 2 && cols * rows > 0) return {cols, rows};
-    if (std::sscanf(type.c_str(), "mat%d", &cols) == 1 && cols > 0) return {cols, cols};
-    return {1, int(count)};
-}
-
 std::string vector_text(const Values& v, size_t from, size_t n) {
     std::string out;
     for (size_t i = from; i < from + n && i < v.c.size(); ++i) out += (i > from ? ", " : "") + scalar(v, v.c[i]);
@@ -48,7 +48,7 @@ std::string vector_text(const Values& v, size_t from, size_t n) {
 }  // namespace
 
 std::string format_value(const Values& v, const std::string& type) {
-    auto [cols, rows] = shape(type, v.c.size());
+    auto [cols, rows] = matrix_shape(type, v.c.size());
     if (cols == 1) return vector_text(v, 0, v.c.size());
     size_t per_matrix = size_t(cols) * size_t(rows);
     std::string out;
@@ -62,7 +62,7 @@ std::string format_value(const Values& v, const std::string& type) {
 }
 
 std::vector<std::string> format_matrix_rows(const Values& v, const std::string& type) {
-    auto [cols, rows] = shape(type, v.c.size());
+    auto [cols, rows] = matrix_shape(type, v.c.size());
     if (cols == 1) return {format_value(v, type)};
     std::vector<std::string> lines;
     size_t per_matrix = size_t(cols) * size_t(rows);

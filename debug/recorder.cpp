@@ -127,6 +127,8 @@ void LaneRecorder::statement(const ir::SourceLoc& loc) {
     TraceStep s;
     s.kind = TraceStep::Kind::Statement;
     s.where = names_.where(loc);
+    s.source = loc.source;
+    s.line = uint32_t(loc.line);
     add(std::move(s));
 }
 
@@ -158,6 +160,8 @@ void LaneRecorder::branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask t
     TraceStep s;
     s.kind = TraceStep::Kind::Branch;
     s.where = names_.where(n.loc, true);  // the column tells apart the ifs of `a && b` on one line
+    s.source = n.loc.source;
+    s.line = uint32_t(n.loc.line);
     s.taken = on(taken);
     add(std::move(s));
     last_ = n.loc;  // the branch's line is shown: its statements there need no line of their own
@@ -169,6 +173,8 @@ void LaneRecorder::loop_iteration(const ir::Node& n, uint64_t iteration, rt::Lan
     TraceStep s;
     s.kind = TraceStep::Kind::Loop;
     s.where = names_.where(n.loc);
+    s.source = n.loc.source;
+    s.line = uint32_t(n.loc.line);
     s.iteration = iteration;
     add(std::move(s));
     last_ = {};
@@ -181,6 +187,8 @@ void LaneRecorder::jump(const ir::Node& n, rt::LaneMask active) {
     TraceStep s;
     s.kind = n.kind == ir::NodeKind::Call ? TraceStep::Kind::Call : TraceStep::Kind::Jump;
     s.where = names_.where(n.loc);
+    s.source = n.loc.source;
+    s.line = uint32_t(n.loc.line);
     static constexpr const char* kJumps[] = {"", "", "", "break", "continue", "return", "discard"};
     if (n.kind == ir::NodeKind::Call) {
         const auto& fns = names_.shader().functions;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ir/ir.h"
@@ -37,6 +38,7 @@ struct TraceStep {
     Kind kind = Kind::Statement;
     int depth = 0;      // call depth
     std::string where;  // "file:line"
+    uint32_t source = 0, line = 0;  // the same: an index into InvocationTrace::files, and the line
     std::string name;
     std::string type;
     Values value;
@@ -56,6 +58,7 @@ struct NanEvent {
 struct InvocationTrace {
     std::vector<NamedValue> inputs;    // shader inputs (varyings, gl_FragCoord, attributes)
     std::vector<NamedValue> uniforms;  // every uniform read, in first-read order
+    std::vector<std::string> files;  // the shader's source names, for TraceStep::source
     std::vector<TraceStep> steps;
     std::vector<NamedValue> outputs;
     std::optional<NanEvent> first_nan;
@@ -72,9 +75,14 @@ struct InvocationTrace {
 std::string type_name(const ir::ValueType& t);
 // "float", "vec3", "ivec2", "bool" for a binding's registers.
 std::string binding_type(const ir::Binding& b);
-// "0.5", "vec3(1, 0, 0.25)", "mat2(vec2(1, 0), vec2(0, 1))"; matrices as columns.
+// "0.5", "vec3(1, 0, 0.25)", "mat2(vec2(1, 0), vec2(0, 1))"; matrices as
+// GLSL's constructor takes them, by columns (for one-line messages).
 std::string format_value(const Values& v, const std::string& type);
-// The same on several lines, one row of the matrix per line, for --stats.
+// Columns and rows of a "matN" / "matCxR" type (GLSL stores a matrix's
+// components column by column); {1, count} for anything else.
+std::pair<int, int> matrix_shape(const std::string& type, size_t count);
+// A matrix on several lines, one row per line: how --stats and the trace
+// show matrices. Not a matrix: format_value's one line.
 std::vector<std::string> format_matrix_rows(const Values& v, const std::string& type);
 
 }  // namespace glslrun::debug

@@ -169,8 +169,9 @@ size_t pixel_index(const LanePixels& px, int lane, int width) {
 }
 
 // The stencil test and update of one fragment (§4.1.5, §4.1.6); true when
-// it passes both tests.
-bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t& stencil, float z, float& depth) {
+// it passes both tests; `stencil_failed` says which one it failed.
+bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t& stencil, float z, float& depth,
+                       bool& stencil_failed) {
     auto update = [&](StencilOp op) {
         if (!ops.stencil_test) return;
         uint32_t v = stencil_op(op, stencil, face.ref);
@@ -181,6 +182,7 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
         // 8-bit values are exact as floats: the depth test's comparison serves.
         if (!depth_passes(face.func, float(ref & face.value_mask), float(stencil & face.value_mask))) {
             update(face.fail);
+            stencil_failed = true;
             return false;
         }
     }
@@ -296,27 +298,31 @@ Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst, C
     return out;
 }
 
-rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask) {
+rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask, Lanes* compared) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         // §4.1.4 compares in the colour buffer's precision: with RGBA8 storage,
         // the bytes that alpha and the reference would be stored as (llvmpipe
         // too, so that 128/255 passes EQUAL 0.5 and 0.1005 fails GREATER 0.1).
         // Float buffers compare the shader's value as is.
-        bool passes = ops.float_color ? depth_passes(ops.alpha_func, alpha[size_t(lane)], ops.alpha_ref)
-                                      : depth_passes(ops.alpha_func, unorm8_steps(alpha[size_t(lane)]), ops.alpha_ref8);
+        float a = ops.float_color ? alpha[size_t(lane)] : unorm8_steps(alpha[size_t(lane)]);
+        bool passes = depth_passes(ops.alpha_func, a, ops.float_color ? ops.alpha_ref : ops.alpha_ref8);
+        if (compared) (*compared)[size_t(lane)] = a;
         if (!passes) mask &= ~(rt::LaneMask(1) << lane);
     }
     return mask;
 }
 
-rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask) {
+rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask,
+                                rt::LaneMask* stencil_failed) {
     for (rt::LaneMask bits = mask; bits; bits &= bits - 1) {
         int lane = std::countr_zero(bits);
         size_t pixel = pixel_index(px, lane, fb.width);
         const StencilFace& face = ops.stencil[(px.back >> lane) & 1u];
-        if (!stencil_depth_one(ops, face, fb.stencil[pixel], px.z[lane], fb.depth[pixel]))
+        bool stencil_fail = false;
+        if (!stencil_depth_one(ops, face, fb.stencil[pixel], px.z[lane], fb.depth[pixel], stencil_fail))
             mask &= ~(rt::LaneMask(1) << lane);
+        if (stencil_fail && stencil_failed) *stencil_failed |= rt::LaneMask(1) << lane;
     }
     return mask;
 }

@@ -68,12 +68,17 @@ struct LanePixels {
 };
 
 // GL 2.1 §4.1.4: the lanes of `mask` whose alpha passes glAlphaFunc.
-rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask);
+// `compared`, when given, gets the alpha of each lane of `mask` as the test
+// compared it with the reference (ops.alpha_ref or ops.alpha_ref8).
+rt::LaneMask alpha_test(const FragmentOps& ops, const Lanes& alpha, rt::LaneMask mask, Lanes* compared = nullptr);
 
 // §4.1.5 and §4.1.6: the stencil test, then the depth test, of each lane of
 // `mask` in lane order, with their stencil and depth buffer updates; returns
-// the lanes that pass both.
-rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask);
+// the lanes that pass both. `stencil_failed`, when given, gets the lanes
+// that failed the stencil test (the others of `mask` not returned failed
+// the depth test).
+rt::LaneMask stencil_depth_test(const FragmentOps& ops, Framebuffer& fb, const LanePixels& px, rt::LaneMask mask,
+                                rt::LaneMask* stencil_failed = nullptr);
 
 // §4.1.8 to §4.2.2: blending, logic op, colour mask and the store of the
 // lanes of `mask` into colour buffer `buffer` (RGBA8 storage rounds to n/255).

@@ -479,7 +479,8 @@ void FragmentStage::flush() {
         fused_ += uint64_t(std::popcount(covered));
         written_ += uint64_t(std::popcount(written));
     } else if (probe_) [[unlikely]]
-        probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered));
+        probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered),
+                            probe_tests_);
     else
         write_outputs<false>(covered);
     quads_ = 0;
@@ -508,8 +509,14 @@ rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
         load_lanes(in, depth_out_->kind, depth_out_->first, z, quads_ * 4);
         for (float& d : z) d = d > 0.0f ? std::min(d, 1.0f) : 0.0f;  // NaN -> 0
     }
+    if constexpr (kProbed) {
+        probe_tests_ = ProbeTests{};
+        probe_tests_.z = z;
+        probe_tests_.alpha_ref = ops_.float_color ? ops_.alpha_ref : ops_.alpha_ref8;
+        probe_tests_.alpha_bytes = !ops_.float_color;
+    }
     if (ops_.plain) return write_plain<kProbed>(alive, z);
-    rt::LaneMask written = write_with_ops(alive, z);
+    rt::LaneMask written = write_with_ops(alive, z, kProbed ? &probe_tests_ : nullptr);
     return kProbed ? written : 0;
 }
 
@@ -523,7 +530,16 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
     // Quad by quad in lane order: two quads of the batch may cover one pixel.
     for (int base = 0; base < quads_ * 4; base += 4) {
         unsigned mask = unsigned(alive >> base) & 0xFu;
+        if constexpr (kProbed) {
+            for (unsigned bits = late_depth ? mask : 0; bits; bits &= bits - 1) {
+                int lane = base + std::countr_zero(bits);
+                probe_tests_.stored_depth[size_t(lane)] =
+                    fb_.depth[size_t(lane_y_[lane]) * size_t(fb_.width) + size_t(lane_x_[lane])];
+            }
+        }
+        const unsigned tested = mask;
         if (late_depth && mask) mask = depth_test_quad<true>(base, z.data(), mask);
+        if constexpr (kProbed) probe_tests_.depth_failed |= rt::LaneMask(tested & ~mask) << base;
         if (!mask) continue;
         written |= rt::LaneMask(mask) << base;
         if (color_out_[0]) store_color_quad(base, rgba, mask);
@@ -560,8 +576,25 @@ void FragmentStage::store_color_quad(int base, const std::array<Lanes, 4>& rgba,
     }
 }
 
-// The general path; returns the lanes written.
-rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
+// The stencil and depth tests lane by lane, as stencil_depth_test() runs
+// them, recording each lane's stored values before its test, for the probe.
+rt::LaneMask FragmentStage::stencil_depth_probed(const LanePixels& px, rt::LaneMask alive, ProbeTests& tests) {
+    rt::LaneMask passed = 0;
+    for (rt::LaneMask bits = alive; bits; bits &= bits - 1) {
+        int lane = std::countr_zero(bits);
+        size_t pixel = size_t(lane_y_[size_t(lane)]) * size_t(fb_.width) + size_t(lane_x_[size_t(lane)]);
+        tests.stored_depth[size_t(lane)] = fb_.depth[pixel];
+        tests.stored_stencil[size_t(lane)] = fb_.stencil[pixel];
+        rt::LaneMask one = rt::LaneMask(1) << lane, stencil_failed = 0;
+        passed |= stencil_depth_test(ops_, fb_, px, one, &stencil_failed);
+        tests.stencil_failed |= stencil_failed;
+        if (!(passed & one) && !stencil_failed) tests.depth_failed |= one;
+    }
+    return passed;
+}
+
+// The general path; returns the lanes written. `tests`: with a probe.
+rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z, ProbeTests* tests) {
     std::array<Lanes, 4> rgba{};
     rt::LaneMask back = 0;
     for (int q = 0; q < quads_; ++q)
@@ -570,9 +603,12 @@ rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z) {
     if (ops_.alpha_test) {
         // The alpha of colour 0 (GL 2.1 §4.1.4); none written: alpha 0.
         if (color_out_[0]) load_color(0, rgba);
-        alive = alpha_test(ops_, rgba[3], alive);
+        rt::LaneMask tested = alive;
+        alive = alpha_test(ops_, rgba[3], alive, tests ? &tests->alpha : nullptr);
+        if (tests) tests->alpha_failed = tested & ~alive;
     }
-    if (ops_.stencil_test || (ops_.depth_test && !early_depth_)) alive = stencil_depth_test(ops_, fb_, px, alive);
+    if (ops_.stencil_test || (ops_.depth_test && !early_depth_))
+        alive = tests ? stencil_depth_probed(px, alive, *tests) : stencil_depth_test(ops_, fb_, px, alive);
     written_ += uint64_t(std::popcount(alive));
     for (int b = 0; b < gl_.draw_buffers && alive; ++b) {
         if (!color_out_[size_t(b)]) continue;

@@ -120,7 +120,8 @@ private:
     template <bool kProbed>
     rt::LaneMask write_plain(rt::LaneMask alive, const Lanes& z);
     void store_color_quad(int base, const std::array<Lanes, 4>& rgba, unsigned mask);
-    rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z);
+    rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z, ProbeTests* tests);
+    rt::LaneMask stencil_depth_probed(const LanePixels& px, rt::LaneMask alive, ProbeTests& tests);
     void load_color(int buffer, std::array<Lanes, 4>& rgba) const;
     ProbeBatch probe_batch(rt::LaneMask covered);
     const rt::FragmentPipeline* fused_pipeline();
@@ -153,6 +154,7 @@ private:
     std::vector<const uint32_t*> output_regs_;
     std::optional<Error> error_;
     DrawProbe* probe_ = nullptr;
+    ProbeTests probe_tests_;  // the batch's test outcomes, with a probe
     bool skip_helper_lookups_ = false;  // helper lanes skip texture lookups (ir::Shader::helper_lookups_matter)
 };
 

@@ -36,6 +36,23 @@ struct ProbeDraw {
     const exec::VertexOutputs& shaded;  // the vertex shader's outputs of every vertex
 };
 
+// What the per-fragment tests after the shader did to each lane of a batch
+// (GL 2.1 §4.1, in its order), for the debugger's pixel history. A lane
+// fails at most one test: the first it fails; the later ones do not run.
+// The values are those each test compared, read before the lane's own test
+// (an earlier lane of the batch at the same pixel has already written).
+struct ProbeTests {
+    rt::LaneMask alpha_failed = 0, stencil_failed = 0, depth_failed = 0;
+    // The alpha test's operands: colour 0's alpha and the reference, in the
+    // colour buffer's precision (RGBA8, `alpha_bytes`: the bytes n of n/255).
+    std::array<float, rt::kLanes> alpha{};
+    float alpha_ref = 0;
+    bool alpha_bytes = false;
+    std::array<float, rt::kLanes> z{};             // the fragment's depth (gl_FragDepth when written)
+    std::array<float, rt::kLanes> stored_depth{};  // the depth buffer's value
+    std::array<uint8_t, rt::kLanes> stored_stencil{};
+};
+
 class DrawProbe {
 public:
     virtual ~DrawProbe() = default;
@@ -43,10 +60,12 @@ public:
     virtual void begin_draw(const ProbeDraw& draw) = 0;
     // The batch's inputs are filled; the shader has not run.
     virtual void before_run(const ProbeBatch& batch) = 0;
-    // After the depth test and colour writes: `alive` did not discard,
-    // `written` passed the depth test (or there is none) and were written.
-    // With a probe there is no early depth test: every fragment is shaded.
-    virtual void after_write(const ProbeBatch& batch, rt::LaneMask alive, rt::LaneMask written) = 0;
+    // After the tests and colour writes: `alive` did not discard, `written`
+    // passed every test and were written; `tests` says which test stopped
+    // the others. With a probe there is no early depth test: every fragment
+    // is shaded.
+    virtual void after_write(const ProbeBatch& batch, rt::LaneMask alive, rt::LaneMask written,
+                             const ProbeTests& tests) = 0;
 };
 
 }  // namespace glslrun::raster

@@ -349,6 +349,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (pass.clear.depth) clear.depth = pass.clear.depth;
         if (pass.clear.stencil) clear.stencil = pass.clear.stencil;
         Framebuffer& into = pass.target < 0 ? fb : (*targets)[size_t(pass.target)];
+        if (programs.before_pass) programs.before_pass(i);
         auto stats = draw_pass(programs.of_pass(i), scene, *bound, &pass, into, clear);
         if (pass.target >= 0) flush_clear(into, target_clear);
         if (!stats) return stats.error();

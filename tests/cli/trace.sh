@@ -26,8 +26,53 @@ assert f[0]["matches_render"] and f[0]["trace"]["outputs"][0]["name"] == "gl_Fra
 steps = f[0]["trace"]["steps"]
 assert any(s["kind"] == "assign" and s["name"] == "intensity" and s["value"] == [0] for s in steps)
 assert any(s["kind"] == "branch" for s in steps)
+# Each step's line, with its text.
+assert any(s["where"].endswith("spot_pix_oops.frag:31") and s["text"] == "intensity = max(dot(lightDir,n),0.0);"
+           for s in steps if s["kind"] == "statement"), "no text of line 31"
+
 assert len(t["vertices"]) == 3 and all(v["matches_render"] for v in t["vertices"])
+# A matrix's "value" lists its components column by column (GLSL's order); "rows" as the text prints it.
+mv = [u for u in t["vertices"][0]["trace"]["uniforms"] if u["name"] == "gl_ModelViewMatrix"][0]
+assert mv["rows"] == [[mv["value"][c * 4 + r] for c in range(4)] for r in range(4)], mv
+assert mv["rows"][2][3] == -5, mv["rows"]
 PY
+
+# Each fragment's outcome is the test that stopped it, with the values compared
+# (an RGBA8 buffer compares alpha as bytes: 64 of 255 against 128).
+d=$src/tests/scene/data
+"$glslrun" trace --pixel 16,16 --json "$src/shaders/colors.vert" "$d/fragment_tests.frag" "$d/fragment_tests.toml" \
+    >"$tmp/tests.json" || fail "trace fragment_tests exited with $?"
+python3 - "$tmp/tests.json" <<'PY' || fail "trace fragment_tests: wrong outcomes"
+import json, sys
+t = json.load(open(sys.argv[1]))
+f = t["fragments"]
+assert [x["outcome"] for x in f] == ["alpha_failed", "stencil_failed", "written", "depth_failed", "discarded"], f
+a = f[0]["tests"]
+assert a["alpha"]["result"] == "failed" and a["depth"]["result"] == "off", a
+assert (a["alpha"]["alpha"], a["alpha"]["reference"], a["alpha"]["bytes"]) == (64, 128, True), a
+s = f[1]["tests"]["stencil"]
+assert (s["result"], s["func"], s["reference"], s["stored"]) == ("failed", "equal", 1, 0), s
+d = f[3]["tests"]["depth"]
+assert d["result"] == "failed" and d["stored"] == f[2]["depth"] and d["z"] > d["stored"], d
+assert t["scissored"] == [4], t["scissored"]
+assert all(x["matches_render"] for x in f)
+PY
+
+# Every pass's program is probed: the pixel history of a scene whose passes
+# name their own shaders, in draw order, with the pass and program.
+mp="$src/shaders/minimal.vert $src/shaders/minimal.frag $src/scenes/multi_pass.toml"
+"$glslrun" trace --pixel 128,128 $mp >"$tmp/passes.txt" || fail "trace multi_pass exited with $?"
+grep -q "no fragment" "$tmp/passes.txt" && fail "trace multi_pass: no fragment on a lit pixel"
+grep -q "^fragment 0 at pixel 128,128: draw 0 (pass 'ambient', program .*/passes/ambient.vert + .*/passes/ambient.frag)" \
+    "$tmp/passes.txt" || fail "trace multi_pass: the ambient pass is not first"
+grep -q "^fragment .*(pass 'light 1', .*: written$" "$tmp/passes.txt" || fail "trace multi_pass: no light 1 fragment"
+grep -q WARNING "$tmp/passes.txt" && fail "trace multi_pass: a replay differs from the render"
+"$glslrun" trace --vertex 0 --draw 2 $mp >"$tmp/passes_vertex.txt" || fail "trace --vertex multi_pass exited with $?"
+grep -q "^vertex 0 of draw 2 (pass 'light 0', program .*/passes/light.vert + .*/passes/light.frag):" \
+    "$tmp/passes_vertex.txt" || fail "trace --vertex: draw 2 is not light 0's"
+grep -q WARNING "$tmp/passes_vertex.txt" && fail "trace --vertex multi_pass: the replay differs from the render"
+"$glslrun" trace --find-nan --colour-range $mp >"$tmp/passes_nan.txt" || fail "--find-nan multi_pass exited with $?"
+grep -q "^no NaN or infinity" "$tmp/passes_nan.txt" || fail "--find-nan multi_pass: $(cat "$tmp/passes_nan.txt")"
 
 # The replay equals the render whatever the mode, size and program (a loop and calls in multi_light).
 for mode in precise fast reference; do
@@ -46,6 +91,9 @@ grep -q "call light" "$tmp/multi_light-precise.txt" || fail "multi_light: no cal
 "$glslrun" trace --vertex 5 "$vs" "$fs" "$scene" >"$tmp/vertex.txt" || fail "trace --vertex exited with $?"
 grep -q "^vertex 5 of draw 0:" "$tmp/vertex.txt" || fail "trace --vertex: no vertex 5"
 grep -q "gl_Position = vec4(" "$tmp/vertex.txt" || fail "trace --vertex: gl_Position not assigned"
+# A matrix prints as rows under its name, as --stats prints it.
+grep -A4 "gl_ModelViewMatrix =$" "$tmp/vertex.txt" | grep -c "^ *|.* -5 |$" | grep -qx 1 || fail "trace: no modelview matrix rows"
+grep -q "spot_pix_oops.vert:[0-9]*  gl_Position = ftransform();" "$tmp/vertex.txt" || fail "trace: no line text"
 
 "$glslrun" trace --find-nan --size 64x64 "$vs" "$fs" "$scene" >"$tmp/nan.txt" || fail "--find-nan exited with $?"
 grep -q "^no NaN or infinity" "$tmp/nan.txt" || fail "--find-nan found a NaN in the spot light"

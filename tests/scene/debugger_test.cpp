@@ -38,11 +38,12 @@ struct Traced {
     Framebuffer fb{1, 1, true};
 };
 
-Traced trace_pixel(const std::string& program, const std::string& scene_name, int x, int y,
-                   const ShaderSource* fragment_override = nullptr) {
-    std::vector<ShaderSource> vs{shader("shaders/" + program + ".vert")};
-    std::vector<ShaderSource> fs{fragment_override ? *fragment_override : shader("shaders/" + program + ".frag")};
-    auto scene = scene::load_scene(kRoot + "/scenes/" + scene_name);
+// Paths relative to the repository.
+Traced trace_files(const std::string& vertex, const ShaderSource& fragment, const std::string& scene_path, int x,
+                   int y) {
+    std::vector<ShaderSource> vs{shader(vertex)};
+    std::vector<ShaderSource> fs{fragment};
+    auto scene = scene::load_scene(kRoot + "/" + scene_path);
     REQUIRE(scene);
     auto prog = Program::compile(vs, fs);
     REQUIRE(prog);
@@ -52,10 +53,18 @@ Traced trace_pixel(const std::string& program, const std::string& scene_name, in
     t.fb = Framebuffer(scene->width, scene->height, true);  // floats: the values before quantization
     debug::TraceRequest request;
     request.pixel = {x, y};
+    request.sources = {vs[0], fs[0]};
     auto r = debug::trace(*prog, *dbg, *scene, t.fb, request);
     REQUIRE(r);
     t.trace = std::move(*r);
     return t;
+}
+
+Traced trace_pixel(const std::string& program, const std::string& scene_name, int x, int y,
+                   const ShaderSource* fragment_override = nullptr) {
+    return trace_files("shaders/" + program + ".vert",
+                       fragment_override ? *fragment_override : shader("shaders/" + program + ".frag"),
+                       "scenes/" + scene_name, x, y);
 }
 
 void check_golden(const std::string& name, const std::string& actual) {
@@ -204,7 +213,7 @@ TEST_CASE("--find-nan looks at the vertices first, in draw order", "[debug]") {
     CHECK(report->nan->event.op == "flog");
     CHECK_FALSE(report->out_of_range);  // not asked for
     // The quad's vertex with x > 0 and y > 0.
-    auto trace = debug::trace(*prog, *dbg, *scene, fb, debug::TraceRequest{std::nullopt, report->nan->vertex_index, 0});
+    auto trace = debug::trace(*prog, *dbg, *scene, fb, debug::TraceRequest{std::nullopt, report->nan->vertex_index, 0, {}});
     REQUIRE(trace);
     REQUIRE(trace->vertices.size() == 1);
     CHECK(trace->vertices[0].trace.first_nan);
@@ -312,4 +321,83 @@ TEST_CASE("a trace keeps at most kMaxTraceSteps steps over all its invocations",
     CHECK(steps == debug::InvocationTrace::kMaxTraceSteps);
     CHECK(r->fragments.back().trace.steps.empty());
     CHECK_THAT(debug::format_text(*r), Catch::Contains("at most 200000 steps per invocation and 1000000 per trace"));
+}
+
+TEST_CASE("each fragment at a pixel gets the test that stopped it, with the values compared", "[debug]") {
+    // One object per test over pixel 16,16 (tests/scene/data/fragment_tests.toml).
+    Traced t = trace_files("shaders/colors.vert", shader("tests/scene/data/fragment_tests.frag"),
+                           "tests/scene/data/fragment_tests.toml", 16, 16);
+    check_golden("fragment_tests_16_16.txt", debug::format_text(t.trace));
+    using O = debug::FragmentTrace::Outcome;
+    using R = debug::FragmentTests::Result;
+    const auto& f = t.trace.fragments;
+    REQUIRE(f.size() == 5);
+    CHECK(t.trace.scissored == std::vector<uint32_t>{4});  // the scissored object makes no fragment there
+    // The alpha test, not the depth test (which is off), stops the first.
+    CHECK(f[0].outcome == O::AlphaFailed);
+    CHECK(f[0].tests.alpha_test == R::Failed);
+    CHECK(f[0].tests.depth_test == R::Off);
+    CHECK(f[0].tests.alpha == 0.25f);  // a float framebuffer compares the floats
+    CHECK(f[0].tests.alpha_ref == 0.5f);
+    CHECK(f[0].tests.alpha_func == CompareFunc::Greater);
+    CHECK(f[1].outcome == O::StencilFailed);
+    CHECK(f[1].tests.stencil_ref == 1);
+    CHECK(f[1].tests.stored_stencil == 0);
+    CHECK(f[2].outcome == O::Written);
+    CHECK(f[2].tests.stencil_test == R::Passed);
+    CHECK(f[2].tests.depth_test == R::Passed);
+    CHECK(f[2].tests.stored_depth == 1.0f);  // the cleared depth
+    CHECK(f[3].outcome == O::DepthFailed);
+    CHECK(f[3].tests.stored_depth == f[2].tests.z);  // the written fragment's depth
+    CHECK(f[3].tests.z > f[3].tests.stored_depth);
+    CHECK(f[4].outcome == O::Discarded);
+    CHECK(f[4].tests.depth_test == R::Off);
+    CHECK(f[4].trace.discarded);
+    std::string json = debug::format_json(t.trace);
+    CHECK(json.find("\"outcome\":\"alpha_failed\",\"tests\":{\"scissor\":{\"result\":\"off\"},"
+                    "\"alpha\":{\"result\":\"failed\",\"func\":\"greater\",\"alpha\":0.25,\"reference\":0.5,\"bytes\":false}") !=
+          std::string::npos);
+    CHECK(json.find("\"scissored\":[4]") != std::string::npos);
+    // The probed tests (lane by lane, with the stored values noted) leave the image and buffers as a plain render.
+    auto scene = scene::load_scene(kRoot + "/tests/scene/data/fragment_tests.toml");
+    auto prog = Program::compile({shader("shaders/colors.vert")}, {shader("tests/scene/data/fragment_tests.frag")});
+    REQUIRE((scene && prog));
+    Framebuffer plain(t.fb.width, t.fb.height, true);
+    REQUIRE(scene::render_scene(*prog, *scene, plain));
+    CHECK(std::ranges::equal(plain.color_data<float>(), t.fb.color_data<float>()));
+    CHECK(plain.depth == t.fb.depth);
+    CHECK(plain.stencil == t.fb.stencil);
+}
+
+TEST_CASE("the pixel history covers every pass's program, in draw order", "[debug]") {
+    // multi_pass.toml: every pass names its own shaders; the command line's are unused.
+    Traced t = trace_files("shaders/minimal.vert", shader("shaders/minimal.frag"), "scenes/multi_pass.toml", 128, 128);
+    // The passes' shaders are named by their paths: relative to the repository in the expectation.
+    std::string text = debug::format_text(t.trace);
+    for (size_t at; (at = text.find(kRoot + "/")) != std::string::npos;) text.erase(at, kRoot.size() + 1);
+    check_golden("multi_pass_128_128.txt", text);
+    const auto& f = t.trace.fragments;
+    REQUIRE(f.size() >= 3);
+    std::vector<std::string> passes;
+    for (size_t i = 0; i < f.size(); ++i) {
+        CHECK(f[i].matches_render);
+        if (i) CHECK(f[i - 1].draw <= f[i].draw);
+        if (passes.empty() || passes.back() != f[i].pass) passes.push_back(f[i].pass);
+    }
+    CHECK(passes.front() == "ambient");
+    CHECK(std::ranges::find(passes, "light 0") != passes.end());
+    CHECK(f.front().program == kRoot + "/scenes/passes/ambient.vert + " + kRoot + "/scenes/passes/ambient.frag");
+    // The visible fragment's vertices come from its pass's vertex shader.
+    REQUIRE(t.trace.vertices.size() == 3);
+    for (const auto& v : t.trace.vertices) CHECK(v.matches_render);
+    // --find-nan replays the passes' programs too: none computes a NaN.
+    auto scene = scene::load_scene(kRoot + "/scenes/multi_pass.toml");
+    auto prog = Program::compile({shader("shaders/minimal.vert")}, {shader("shaders/minimal.frag")});
+    auto dbg = debug::compile_for_debugging({shader("shaders/minimal.vert")}, {shader("shaders/minimal.frag")},
+                                            Precision::Precise);
+    REQUIRE((scene && prog && dbg));
+    Framebuffer fb(scene->width, scene->height, false);
+    auto report = debug::find_nan(*prog, *dbg, *scene, fb, true);
+    REQUIRE(report);
+    CHECK_FALSE(report->nan);
 }

@@ -69,6 +69,8 @@ int run_trace(const TraceOptions& o) {
     request.vertex = o.vertex;
     request.draw = o.draw;
     request.pixel = pixel;
+    request.sources = in->vertex;
+    request.sources.insert(request.sources.end(), in->fragment.begin(), in->fragment.end());
     auto trace = debug::trace(*program, *debug, *scene, fb, request);
     if (!trace) return fail(trace.error());
     std::string text = o.json ? debug::format_json(*trace) : debug::format_text(*trace);

@@ -1,6 +1,7 @@
 // Draws a Scene with glslrun: per object, modelview = view * model, the
 // material overrides, the current colour and the uniforms, then draw().
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,6 +39,9 @@ public:
     // Pass i's program; with no passes, 0 is `main`.
     Program& of_pass(size_t pass) const { return *by_pass_[pass]; }
     size_t size() const { return by_pass_.size(); }
+    // Called before pass i draws (the shader debugger's pixel history names
+    // each draw's pass); not with a scene without passes.
+    std::function<void(size_t pass)> before_pass;
 private:
     std::vector<std::shared_ptr<Program>> own_;
     std::vector<Program*> by_pass_;
