@@ -10,3 +10,14 @@ finish() {
     [ $failures = 0 ] && echo "$1"
     exit $((failures != 0))
 }
+
+# expect STATUS MESSAGE CMD...: the command exits with STATUS and prints MESSAGE on stderr
+# (out.txt and err.txt in the current directory keep what it printed).
+expect() {
+    want=$1 message=$2
+    shift 2
+    timeout 60 "$@" >out.txt 2>err.txt
+    got=$?
+    [ $got = "$want" ] || fail "$*: exit status $got, not $want ($(head -c 300 err.txt))"
+    grep -qF -- "$message" err.txt || fail "$*: no '$message' in: $(head -c 300 err.txt)"
+}

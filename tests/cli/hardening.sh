@@ -14,15 +14,6 @@ fs=$src/shaders/minimal.frag
 scene=$src/scenes/spot.toml
 cd "$tmp" || exit 1
 
-# expect STATUS MESSAGE CMD...: the command exits with STATUS and prints MESSAGE on stderr.
-expect() {
-    want=$1 message=$2
-    shift 2
-    timeout 60 "$@" >out.txt 2>err.txt
-    got=$?
-    [ $got = "$want" ] || fail "$*: exit status $got, not $want ($(head -c 300 err.txt))"
-    grep -qF -- "$message" err.txt || fail "$*: no '$message' in: $(head -c 300 err.txt)"
-}
 
 sed 's/^size = .*/size = [16384, 16384]/' "$scene" > big.toml
 expect 1 "64M pixels at most" "$glslrun" "$vs" "$fs" big.toml -o big.png
