@@ -128,7 +128,8 @@ void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear
     texture.sampler.min_filter = mipmaps ? (linear ? TextureFilter::LinearMipmapLinear : TextureFilter::NearestMipmapNearest)
                                          : texture.sampler.mag_filter;
     texture.sampler.wrap_s = texture.sampler.wrap_t = parse_wrap(wrap);
-    scene::TextureSetting setting{unit, std::make_shared<const Texture>(std::move(texture)), mipmaps, {"set_texture", 0}};
+    scene::TextureSetting setting{unit, std::make_shared<const Texture>(std::move(texture)), mipmaps, -1, 0,
+                                  {"set_texture", 0}};
     for (scene::TextureSetting& t : s.textures)
         if (t.unit == unit) {
             t = std::move(setting);
