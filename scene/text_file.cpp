@@ -12,7 +12,8 @@
 namespace glslrun::scene {
 
 Status check_path(const std::string& path, const char* what) {
-    if (Status st = rt::check_path(path); !st) return Error(fmt::format("cannot open {}: {}", what, st.error().str()));
+    if (Status st = rt::check_path(path); !st)
+        return Error(fmt::format("cannot open {}: {}", what, st.error().diagnostics.front().message));
     return Ok{};
 }
 

@@ -44,7 +44,7 @@ printf '%s %s %s a\000b.png\n' "$vs" "$fs" "$scene" > nul.jobs
 expect 1 "nul.jobs:1: error: a NUL byte" "$glslrun" batch nul.jobs
 [ ! -e a ] || fail "a job with a NUL in its output wrote 'a'"
 sed 's|^image = .*|image = "textures/wood.png\\u0000.txt"|' textured.toml > nul_texture.toml
-expect 1 "contains a NUL byte" "$glslrun" "$tvs" "$tfs" nul_texture.toml --size 8x8 -o nul.png
+expect 1 "holds a NUL byte" "$glslrun" "$tvs" "$tfs" nul_texture.toml --size 8x8 -o nul.png
 mkfifo fifo.png
 expect 2 "not a regular file" "$glslrun" --compare ref.png fifo.png
 expect 2 "not a regular file" "$glslrun" --compare fifo.png ref.png

@@ -347,7 +347,7 @@ TEST_CASE("bad image files are errors at the scene's line", "[scene][textures]")
     const std::vector<Case> cases = {
         {"image = \"none.png\"", "'textures.0.image': cannot use the image", "cannot open the image: no such file"},
         // A NUL cut the path short at the C library, and quad.png was loaded instead.
-        {"image = \"quad.png\\u0000.txt\"", "cannot use the image", "quad.png' contains a NUL byte"},
+        {"image = \"quad.png\\u0000.txt\"", "cannot use the image", "quad.png' holds a NUL byte"},
         {"image = \"truncated.png\"", "cannot use the image", "cannot decode the image"},
         {"image = \"long_idat.png\"", "cannot use the image", "long_idat.png': Corrupt PNG"},
         {"image = \"chunk.png\"", "cannot use the image", "chunk.png': PNG not supported: unknown PNG chunk type"},
