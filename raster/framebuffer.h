@@ -27,8 +27,6 @@ inline T unorm8_steps(T v) {
     return (c * 255.0f + kRound) - kRound;
 }
 inline uint8_t to_unorm8(float v) { return uint8_t(unorm8_steps(v)); }
-// The value that RGBA8 storage reads back: n / 255.
-inline float quantize_unorm8(float v) { return unorm8_steps(v) / 255.0f; }
 
 // ColorRounding::Gpu's byte of one channel, as an integer of I's lanes (I is
 // int32_t, or a vector of them matching T): v clamped to [0, 1] (NaN -> 0),

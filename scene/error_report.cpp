@@ -81,19 +81,23 @@ Result<Frame> render_frame(Program& prog, const Scene& scene) {
                       (*probe)[p * 4 + k] != other[int(k)];
         f.color.covered[p] = changed;
         if (changed) continue;
-        for (int k = 0; k < 4; ++k) f.color.values[p * 4 + size_t(k)] = raster::quantize_unorm8(scene.clear_color[k]);
+        // The clear as an RGBA8 buffer of the mode's rounding holds it (to_image gives the byte back).
+        const ColorRounding rounding = color_rounding_for(prog.exec.precision);
+        for (int k = 0; k < 4; ++k)
+            f.color.values[p * 4 + size_t(k)] = float(raster::to_unorm8(scene.clear_color[k], rounding)) / 255.0f;
     }
     f.depth = {scene.width, scene.height, 1, std::move(depth), f.color.covered};
     return f;
 }
 
-// An Image (top row first, RGBA8) of a frame's colour plane.
-Image to_image(const FloatImage& color) {
+// An Image (top row first, RGBA8) of a frame's colour plane, its floats
+// stored by `rounding` (as the plain render in that mode stores them).
+Image to_image(const FloatImage& color, ColorRounding rounding) {
     Image image{color.width, color.height, std::vector<uint8_t>(color.values.size())};
     for (int y = 0; y < color.height; ++y)
         for (size_t i = 0; i < size_t(color.width) * 4; ++i)
             image.rgba[size_t(y) * size_t(color.width) * 4 + i] = uint8_t(
-                to_unorm8(color.values[size_t(color.height - 1 - y) * size_t(color.width) * 4 + i]));
+                to_unorm8(color.values[size_t(color.height - 1 - y) * size_t(color.width) * 4 + i], rounding));
     return image;
 }
 
@@ -232,8 +236,8 @@ Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const
         if (!rows) return rows.error();
         report.ablation = std::move(*rows);
     }
-    report.reference_image = to_image(ref_frame->color);
-    report.mode_image = to_image(act_frame->color);
+    report.reference_image = to_image(ref_frame->color, color_rounding_for(Precision::Reference));
+    report.mode_image = to_image(act_frame->color, color_rounding_for(options.mode));
     auto varyings = compare_vertices(*reference, *actual, scene);
     if (!varyings) return varyings.error();
     report.varyings = std::move(*varyings);

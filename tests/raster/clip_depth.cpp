@@ -120,11 +120,11 @@ TEST_CASE("depth functions", "[raster][depth]") {
 }
 
 TEST_CASE("RGBA8 writes clamp and round to n/255; float targets keep values", "[raster][framebuffer]") {
-    CHECK(quantize_unorm8(-0.5f) == 0.0f);
-    CHECK(quantize_unorm8(NAN) == 0.0f);
-    CHECK(quantize_unorm8(2.0f) == 1.0f);
-    CHECK(quantize_unorm8(0.5f) == Approx(128.0f / 255.0f));
-    CHECK(quantize_unorm8(0.1f) == Approx(26.0f / 255.0f));
+    CHECK(to_unorm8(-0.5f) == 0);
+    CHECK(to_unorm8(NAN) == 0);
+    CHECK(to_unorm8(2.0f) == 255);
+    CHECK(to_unorm8(0.5f) == 128);
+    CHECK(to_unorm8(0.1f) == 26);
     Framebuffer fb(4, 3), ffb(4, 3, true);
     write_color(fb, 3, 2, {1.5f, 0.5f, -1.0f, 0.2f});
     write_color(ffb, 3, 2, {1.5f, 0.5f, -1.0f, 0.2f});
