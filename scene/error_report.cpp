@@ -97,7 +97,7 @@ Image to_image(const FloatImage& color, ColorRounding rounding) {
     for (int y = 0; y < color.height; ++y)
         for (size_t i = 0; i < size_t(color.width) * 4; ++i)
             image.rgba[size_t(y) * size_t(color.width) * 4 + i] = uint8_t(
-                to_unorm8(color.values[size_t(color.height - 1 - y) * size_t(color.width) * 4 + i], rounding));
+                raster::to_unorm8(color.values[size_t(color.height - 1 - y) * size_t(color.width) * 4 + i], rounding));
     return image;
 }
 
