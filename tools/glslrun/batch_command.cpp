@@ -120,7 +120,9 @@ public:
             auto compiled = scene::compile_files({job.vertex}, {job.fragment});
             std::vector<uint32_t> initial;
             if (compiled) initial = state_of(*compiled).uniforms;
-            it = cache_.emplace(key, std::make_unique<CachedProgram>(std::move(compiled), std::move(initial))).first;
+            // Braces: clang 14 (the sanitizer build) has no aggregate init from parentheses.
+            auto cached = std::make_unique<CachedProgram>(CachedProgram{std::move(compiled), std::move(initial)});
+            it = cache_.emplace(key, std::move(cached)).first;
         }
         CachedProgram& c = *it->second;
         if (!c.program) return c.program.error();
