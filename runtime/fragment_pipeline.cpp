@@ -2,9 +2,7 @@
 #include "runtime/fragment_pipeline.h"
 
 #include "runtime/compile_queue.h"
-#ifdef GLSLRUN_HAVE_JIT
-#include "runtime/jit/engine.h"
-#endif
+#include "runtime/jit_plugin.h"
 
 namespace glslrun::rt {
 
@@ -16,23 +14,24 @@ void PipelineCache::store(const PipelineKey& key, std::unique_ptr<FragmentPipeli
 }
 
 const FragmentPipeline* PipelineCache::get(const PipelineKey& key, const PrimitiveLayout& layout, bool wait) {
-#ifdef GLSLRUN_HAVE_JIT
     if (unfused_.load(std::memory_order_relaxed) < kPipelineAfterFragments) return nullptr;
+    const JitEntryPoints* jit = jit_plugin();
+    if (!jit) return nullptr;
     std::unique_lock lock(mutex_);
     auto compile_here = [&] {
         lock.unlock();
         double seconds = 0;
-        std::unique_ptr<FragmentPipeline> code = jit::compile_pipeline(key, layout, &seconds);
+        std::unique_ptr<FragmentPipeline> code = jit->compile_pipeline(key, layout, &seconds);
         lock.lock();
         store(key, code, seconds);
     };
     if (auto found = done_.find(key); found == done_.end()) {
         done_[key] = false;
         std::weak_ptr<PipelineCache> self = weak_from_this();
-        auto job = [self, key, layout] {
+        auto job = [self, key, layout, jit] {
             if (self.expired() || compiles_stopping().load()) return;  // the program is gone, or the process
             double seconds = 0;
-            std::unique_ptr<FragmentPipeline> code = jit::compile_pipeline(key, layout, &seconds);
+            std::unique_ptr<FragmentPipeline> code = jit->compile_pipeline(key, layout, &seconds);
             if (std::shared_ptr<PipelineCache> cache = self.lock()) {
                 std::lock_guard done(cache->mutex_);
                 cache->store(key, code, seconds);
@@ -44,10 +43,6 @@ const FragmentPipeline* PipelineCache::get(const PipelineKey& key, const Primiti
     // than wait behind other programs' compiles.
     if (wait && !done_[key]) compile_here();
     return done_[key] ? pipelines_[key].get() : nullptr;
-#else
-    (void)key, (void)layout, (void)wait;
-    return nullptr;
-#endif
 }
 
 double PipelineCache::compile_seconds() const {
