@@ -1,4 +1,4 @@
-// The fused fragment pipeline (runtime/fragment_pipeline.h) against the
+// The fused fragment pipeline (raster/fused/pipeline.h) against the
 // interpreter's per-fragment path, the oracle: colour and depth buffers
 // bit-identical, the same fragment counts, and every fragment of the JIT's
 // draws through the fused pipeline (DrawStats::fragments_fused). Scenes with
@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "glslrun/glslrun.h"
-#include "runtime/fragment_pipeline.h"
+#include "raster/fused/pipeline.h"
 
 using namespace glslrun;
 
@@ -111,9 +111,9 @@ Program compile(Backend backend, const char* fs) {
 }
 
 // A program compiles its pipelines once it has shaded
-// rt::kPipelineAfterFragments fragments: a full-screen quad of that many.
+// raster::fused::kPipelineAfterFragments fragments: a full-screen quad of that many.
 void warm_up(Program& p) {
-    static_assert(rt::kPipelineAfterFragments == 1024 * 1024);
+    static_assert(raster::fused::kPipelineAfterFragments == 1024 * 1024);
     Framebuffer fb(1024, 1024);
     VertexAttrib pos{"gl_Vertex", 4, {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1, -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1}};
     auto stats = draw(p, GLState{}, fb, Primitive::Triangles, {pos}, 6);
@@ -364,7 +364,7 @@ TEST_CASE("blending with a late depth test or float storage keeps the C++ path",
 }
 
 TEST_CASE("the fused blending's product is mul_unorm8's for every pair of bytes", "[fused]") {
-    // runtime/jit/pipeline.cpp rounds a product to n/255 with shifts; raster/fragment_ops.cpp divides.
+    // raster/fused/gen/blend.cpp rounds a product to n/255 with shifts; raster/fragment_ops.cpp divides.
     int differ = 0;
     for (uint32_t x = 0; x < 256; ++x)
         for (uint32_t f = 0; f < 256; ++f) {

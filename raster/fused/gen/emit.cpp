@@ -1,4 +1,4 @@
-// The fused fragment pipeline's code (runtime/fragment_pipeline.h): LLVM IR
+// The fused fragment pipeline's code (raster/fused/pipeline.h): LLVM IR
 // for the early depth test of a quad or of an 8x8 square, the shader inputs
 // of a batch and the per-fragment writes, computing what raster/fragments.cpp's
 // C++ path computes, operation for operation. A quad's four lanes are one
@@ -16,12 +16,29 @@
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Verifier.h>
 
-#include "runtime/jit/blend.h"
+#include "raster/fragments.h"
+#include "raster/fused/gen/blend.h"
 #include "runtime/jit/engine.h"
 
-namespace glslrun::rt::jit {
+namespace glslrun::raster::fused {
 
 namespace {
+
+using rt::jit::Engine;
+using rt::jit::EngineCode;
+
+// Where FsPrimitive's fields are (raster/fragments.h), read as raw bytes.
+static_assert(std::is_standard_layout_v<FsPrimitive> && std::is_standard_layout_v<FsVertex> &&
+              sizeof(Plane) == 3 * sizeof(float) && sizeof(FsPrimitive::front) == 1 &&
+              sizeof(FsPrimitive::ox) == 4 && sizeof(FsPrimitive::count) == 4 &&
+              sizeof(FsVertex::attrs) == sizeof(void*) && sizeof(FsPrimitive::weight) == 9 * sizeof(float));
+constexpr uint64_t kVertices = offsetof(FsPrimitive, v), kVertexSize = sizeof(FsVertex);
+constexpr uint64_t kVertexInvW = offsetof(FsVertex, inv_w), kVertexAttrs = offsetof(FsVertex, attrs);
+constexpr uint64_t kWeights = offsetof(FsPrimitive, weight), kDepth = offsetof(FsPrimitive, z);
+constexpr uint64_t kOx = offsetof(FsPrimitive, ox), kOy = offsetof(FsPrimitive, oy);
+constexpr uint64_t kFront = offsetof(FsPrimitive, front), kCount = offsetof(FsPrimitive, count);
+constexpr uint64_t kPointCoordOrigin = offsetof(FsPrimitive, point_coord_origin);
+constexpr uint64_t kPointCoordStep = offsetof(FsPrimitive, point_coord_step);
 
 // Quad lane i is pixel (x + kDx[i], y + kDy[i]) (runtime/backend.h).
 constexpr int kDx[4] = {0, 1, 0, 1};
@@ -30,17 +47,16 @@ constexpr int kDy[4] = {0, 0, 1, 1};
 // Whether the colour is written a quad at a time (write_rgba8_quad): RGBA8
 // storage and no late depth test. Blending and the colour mask are
 // generated there only.
-bool writes_rgba8_quads(const PipelineKey& key) {
-    return !key.float_color && key.color_channels > 0 && !(key.depth_test && !key.early_depth);
+bool writes_rgba8_quads(const State& s) {
+    return !s.ops.float_color && s.color_channels > 0 && !(s.ops.depth_test && !s.early_depth);
 }
 
 class PipelineEmitter {
 public:
     // The functions are named glslrun_quad_depth, glslrun_inputs and
     // glslrun_outputs, followed by `suffix`.
-    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const PipelineKey& key,
-                    const PrimitiveLayout& layout, std::string suffix)
-        : module_(module), b_(context), key_(key), layout_(layout), suffix_(std::move(suffix)) {
+    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const State& state, std::string suffix)
+        : module_(module), b_(context), key_(state), ops_(state.ops), suffix_(std::move(suffix)) {
         i8_ = b_.getInt8Ty();
         i32_ = b_.getInt32Ty();
         i64_ = b_.getInt64Ty();
@@ -100,15 +116,15 @@ private:
     // The window depth: its plane is not among nan_inputs(), so always strict.
     llvm::Value* quad_depth(const Quad& q) {
         const bool strict = std::exchange(strict_, true);
-        llvm::Value* z = clamp01(plane(q, layout_.depth));
+        llvm::Value* z = clamp01(plane(q, kDepth));
         strict_ = strict;
         return z;
     }
     Weights weights(const Quad& q);
-    llvm::Value* vertex(const Quad& q, int i, uint32_t field) {
-        return at(q.prim, layout_.vertices + uint64_t(i) * layout_.vertex_size + field);
+    llvm::Value* vertex(const Quad& q, int i, uint64_t field) {
+        return at(q.prim, kVertices + uint64_t(i) * kVertexSize + field);
     }
-    llvm::Value* input(const PipelineInput& in, const Quad& q, const Weights& w);
+    llvm::Value* input(const Input& in, const Quad& q, const Weights& w);
     llvm::Value* nan_inputs(const Quad& q);
     std::array<llvm::Value*, 3> attributes(const Quad& q, uint32_t index);  // of vertices 0, 1, 2
     llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
@@ -139,16 +155,16 @@ private:
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
     llvm::Value* stored_byte(llvm::Value* c);
     void load_target(llvm::Value* target) {
-        target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
-        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
-        target_.width = load_i(target, offsetof(PipelineTarget, width));
-        target_.height = load_i(target, offsetof(PipelineTarget, height));
+        target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
+        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(Target, color)));
+        target_.width = load_i(target, offsetof(Target, width));
+        target_.height = load_i(target, offsetof(Target, height));
     }
 
     llvm::Module& module_;
     llvm::IRBuilder<> b_;
-    const PipelineKey& key_;
-    const PrimitiveLayout& layout_;
+    const State& key_;
+    const FragmentState& ops_;
     std::string suffix_;
     llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
     llvm::FixedVectorType* v4f_;
@@ -197,8 +213,8 @@ PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::ArrayRef<ll
     Quad q{prim, nullptr, nullptr, nullptr, nullptr};
     q.px = b_.CreateAdd(per_quad(x), lanes_i(kDx));
     q.py = b_.CreateAdd(per_quad(y), lanes_i(kDy));
-    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, layout_.ox))), vf());
-    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, layout_.oy))), vf());
+    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, kOx))), vf());
+    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, kOy))), vf());
     return q;
 }
 
@@ -220,9 +236,9 @@ llvm::Value* PipelineEmitter::plane(const Quad& q, uint64_t offset) {
 // runs where the plain code would do).
 llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
     std::vector<llvm::Value*> terms;
-    for (uint32_t k = 0; k < 9; ++k) terms.push_back(load_f(q.prim, layout_.weights + 4 * k));
-    for (int i = 0; i < 3; ++i) terms.push_back(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w)));
-    for (const PipelineInput& in : key_.inputs)
+    for (uint32_t k = 0; k < 9; ++k) terms.push_back(load_f(q.prim, kWeights + 4 * k));
+    for (int i = 0; i < 3; ++i) terms.push_back(b_.CreateLoad(f32_, vertex(q, i, kVertexInvW)));
+    for (const Input& in : key_.inputs)
         if (in.source == InputSource::Varying)
             for (llvm::Value* a : attributes(q, in.index)) terms.push_back(a);
     while (terms.size() > 1) {  // a tree of sums: NaN when any term is
@@ -237,7 +253,7 @@ llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
 std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t index) {
     std::array<llvm::Value*, 3> a;
     for (int i = 0; i < 3; ++i)
-        a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs)), uint64_t(index) * 4);
+        a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, kVertexAttrs)), uint64_t(index) * 4);
     return a;
 }
 
@@ -252,8 +268,8 @@ llvm::Value* PipelineEmitter::clamp01(llvm::Value* v) {
 // FragmentStage::compute_weights.
 PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
     llvm::Value* l[3];
-    for (int k = 0; k < 3; ++k) l[k] = plane(q, layout_.weights + 12u * uint32_t(k));
-    auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w))); };
+    for (int k = 0; k < 3; ++k) l[k] = plane(q, kWeights + 12u * uint32_t(k));
+    auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, kVertexInvW))); };
     llvm::Value* w1 = mul(l[1], inv_w_of(1));
     llvm::Value* w2 = mul(l[2], inv_w_of(2));
     llvm::Value* inv_w = add(add(mul(l[0], inv_w_of(0)), w1), w2);
@@ -263,7 +279,7 @@ PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
 }
 
 // One input register's four lanes (FragmentStage::interpolate and builtin_input).
-llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, const Weights& w) {
+llvm::Value* PipelineEmitter::input(const Input& in, const Quad& q, const Weights& w) {
     switch (in.source) {
     case InputSource::Varying: {
         std::array<llvm::Value*, 3> a = attributes(q, in.index);
@@ -279,18 +295,18 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
         default: return w.inv_w;
         }
     case InputSource::FrontFacing: {
-        llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, layout_.front)), b_.getInt8(0));
-        llvm::Value* word = in.is_bool ? b_.CreateZExt(front, i32_)
+        llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, kFront)), b_.getInt8(0));
+        llvm::Value* word = in.kind == ir::Kind::Bool ? b_.CreateZExt(front, i32_)
                                        : b_.CreateSelect(front, llvm::ConstantFP::get(f32_, 1.0),
                                                          llvm::ConstantFP::get(f32_, 0.0));
         return splat(word);
     }
     case InputSource::PointCoord: {
-        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
+        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, kCount), b_.getInt32(1));
         // fma(step, pixel, origin), one rounding (raster/fragments.h).
         const uint32_t component = in.index == 0 ? 0 : 4;
-        llvm::Value* step = splat(load_f(q.prim, layout_.point_coord_step + component));
-        llvm::Value* origin = splat(load_f(q.prim, layout_.point_coord_origin + component));
+        llvm::Value* step = splat(load_f(q.prim, kPointCoordStep + component));
+        llvm::Value* origin = splat(load_f(q.prim, kPointCoordOrigin + component));
         llvm::Value* pixel = b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf());
         llvm::Value* value = b_.CreateIntrinsic(llvm::Intrinsic::fma, {vf()}, {step, pixel, origin});
         return b_.CreateSelect(is_point, value, splat_f(0.0f));
@@ -302,7 +318,7 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
 
 // raster::depth_passes on one lane.
 llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* stored) {
-    switch (key_.depth_func) {
+    switch (ops_.depth_func) {
     case CompareFunc::Never: return b_.getFalse();
     case CompareFunc::Less: return b_.CreateFCmpOLT(incoming, stored);
     case CompareFunc::Equal: return b_.CreateFCmpOEQ(incoming, stored);
@@ -336,7 +352,7 @@ void PipelineEmitter::define_quad_depth() {
             llvm::Value* stored = b_.CreateLoad(f32_, slot);
             llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
             llvm::Value* passes = depth_passes(zi, stored);
-            if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
+            if (ops_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
             llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
             return b_.CreateAnd(mask, b_.CreateNot(failed));
         });
@@ -360,11 +376,11 @@ void PipelineEmitter::define_square_depth() {
                                                       llvm::ArrayRef<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128});
     // The plane's terms as Quad and plane() take them, eight lanes wide.
     llvm::Value* fx = b_.CreateSIToFP(
-        b_.CreateAdd(b_.CreateVectorSplat(8, b_.CreateSub(ox, load_i(prim, layout_.ox))), columns), v8f);
-    llvm::Value* prim_oy = load_i(prim, layout_.oy);
-    llvm::Value* a = b_.CreateVectorSplat(8, load_f(prim, layout_.depth));
-    llvm::Value* b = b_.CreateVectorSplat(8, load_f(prim, layout_.depth + 4));
-    llvm::Value* c = load_f(prim, layout_.depth + 8);
+        b_.CreateAdd(b_.CreateVectorSplat(8, b_.CreateSub(ox, load_i(prim, kOx))), columns), v8f);
+    llvm::Value* prim_oy = load_i(prim, kOy);
+    llvm::Value* a = b_.CreateVectorSplat(8, load_f(prim, kDepth));
+    llvm::Value* b = b_.CreateVectorSplat(8, load_f(prim, kDepth + 4));
+    llvm::Value* c = load_f(prim, kDepth + 8);
     llvm::Value* cax = b_.CreateSelect(is_nan(c), b_.CreateVectorSplat(8, b_.CreateFAdd(c, c)),
                                        b_.CreateFAdd(b_.CreateVectorSplat(8, c), b_.CreateFMul(a, fx)));
     // Every row, empty ones too: a branch per row on its pixels mispredicted
@@ -383,7 +399,7 @@ void PipelineEmitter::define_square_depth() {
         llvm::Value* passes = depth_passes(z, stored);
         if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
         passes = b_.CreateAnd(passes, in);
-        if (key_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
+        if (ops_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
         llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
         passing = b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
     }
@@ -486,7 +502,7 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
         // primitive for all LLVM knows, which would reload its fields.
         Weights w = weights(q);
         std::vector<llvm::Value*> values;
-        for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
+        for (const Input& in : key_.inputs) values.push_back(input(in, q, w));
         for (size_t i = 0; i < values.size(); ++i)
             b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, state.regs[i], b_.CreateShl(index, 2)),
                                   llvm::Align(16));
@@ -505,25 +521,25 @@ void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm
     b_.SetInsertPoint(write);
     llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
                                      b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
-    if (key_.depth_test && !key_.early_depth) {
+    if (ops_.depth_test && !key_.early_depth) {
         llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
         llvm::Value* z = b_.CreateExtractElement(v.z, uint64_t(i));
         llvm::BasicBlock* pass = llvm::BasicBlock::Create(b_.getContext(), "pass", fn_);
         b_.CreateCondBr(depth_passes(z, b_.CreateLoad(f32_, slot)), pass, next);
         b_.SetInsertPoint(pass);
-        if (key_.depth_write) b_.CreateStore(z, slot);
+        if (ops_.depth_write) b_.CreateStore(z, slot);
     }
     b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bit), written_);
     if (key_.color_channels > 0) {
         // One pixel's channels: 4 floats, or 4 bytes.
-        llvm::Type* channel = key_.float_color ? f32_ : i8_;
+        llvm::Type* channel = ops_.float_color ? f32_ : i8_;
         llvm::Value* dst = b_.CreateInBoundsGEP(channel, target_.color, b_.CreateShl(pixel, 2));
         llvm::Value* texel = llvm::PoisonValue::get(llvm::FixedVectorType::get(channel, 4));
         for (unsigned k = 0; k < 4; ++k) {
             llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
-            texel = b_.CreateInsertElement(texel, key_.float_color ? c : b_.CreateTrunc(c, i8_), uint64_t(k));
+            texel = b_.CreateInsertElement(texel, ops_.float_color ? c : b_.CreateTrunc(c, i8_), uint64_t(k));
         }
-        b_.CreateAlignedStore(texel, dst, llvm::Align(key_.float_color ? 4 : 1));
+        b_.CreateAlignedStore(texel, dst, llvm::Align(ops_.float_color ? 4 : 1));
     }
     b_.CreateBr(next);
     b_.SetInsertPoint(next);
@@ -552,7 +568,7 @@ void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm:
     };
     llvm::Value* lower_slot = b_.CreateGEP(i32_, target_.color, pixel);
     llvm::Value* upper_slot = b_.CreateGEP(i32_, target_.color, above);
-    if (key_.color_ops.reads_color()) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
+    if (reads_color(key_)) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
     llvm::Value* words = pack_rgba8(v.rgba);
     llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1});
     llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3, 2, 3});
@@ -588,7 +604,7 @@ void PipelineEmitter::read_modify_write_quad(const Quad& q, const QuadValues& v,
         std::array<llvm::Value*, 4> dst;
         for (unsigned k = 0; k < 4; ++k)
             dst[k] = b_.CreateAnd(b_.CreateLShr(stored, llvm::ConstantInt::get(v4i, 8 * k)), llvm::ConstantInt::get(v4i, 255));
-        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, key_.color_ops, key_.gpu_rounding, v.rgba, dst)), stored);
+        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, ops_, v.rgba, dst)), stored);
     };
     llvm::Value* x = b_.CreateExtractElement(q.px, uint64_t(0));
     llvm::Value* y = b_.CreateExtractElement(q.py, uint64_t(0));
@@ -639,18 +655,18 @@ PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const st
     }
     for (uint32_t k = 0; k < 4; ++k) {
         llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
-        v.rgba[k] = key_.float_color ? c : stored_byte(c);
+        v.rgba[k] = ops_.float_color ? c : stored_byte(c);
     }
     return v;
 }
 
 // A channel's RGBA8 byte as a 32-bit integer: raster::to_unorm8's steps, or
-// raster::gpu_unorm8's with PipelineKey::gpu_rounding.
+// raster::gpu_unorm8's with ColorRounding::Gpu.
 llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
     c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
     c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
-    if (key_.gpu_rounding) {
+    if (ops_.rounding == ColorRounding::Gpu) {
         llvm::Value* t = b_.CreateFPToSI(b_.CreateFMul(c, splat_f(4096.0f)), v4i);
         llvm::Value* sum = b_.CreateAdd(b_.CreateMul(t, llvm::ConstantInt::get(v4i, 510)), llvm::ConstantInt::get(v4i, 4095));
         return b_.CreateAShr(sum, llvm::ConstantInt::get(v4i, 13));
@@ -695,24 +711,23 @@ void PipelineEmitter::define_outputs() {
 }
 
 // The pipeline's code in the process's LLJIT (engine.h), removed with it.
-class CompiledPipeline final : public FragmentPipeline {
+class CompiledPipeline final : public Pipeline {
 public:
     EngineCode code;
 };
 
 }  // namespace
 
-std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
-                                                   double* seconds) {
-    const double start = thread_cpu_seconds();
-    if (key.color_ops.reads_color() && !writes_rgba8_quads(key)) return nullptr;  // not generated
+std::unique_ptr<Pipeline> compile(const State& key, double* seconds) {
+    const double start = rt::jit::thread_cpu_seconds();
+    if (!fusable(key)) return nullptr;
     Engine* engine = Engine::of(key.avx2, false);
     if (!engine) return nullptr;
     auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);
     Engine::NewModule made = engine->new_module("pipeline");
     {
-        PipelineEmitter emitter(*made.context, *made.module, key, layout, made.suffix);
+        PipelineEmitter emitter(*made.context, *made.module, key, made.suffix);
         if (key.early_depth) {
             emitter.define_quad_depth();
             emitter.define_square_depth();
@@ -721,19 +736,18 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
         emitter.define_outputs();
     }
     if (llvm::verifyModule(*made.module, &llvm::errs())) return nullptr;
-    optimise(*made.module, *engine->machine);
+    rt::jit::optimise(*made.module, *engine->machine);
     if (!code->code.add(*engine, std::move(made))) return nullptr;
     if (key.early_depth) {
-        code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(code->code.lookup("glslrun_quad_depth"));
-        code->square_depth =
-            reinterpret_cast<FragmentPipeline::SquareDepthFn>(code->code.lookup("glslrun_square_depth"));
+        code->quad_depth = reinterpret_cast<Pipeline::QuadDepthFn>(code->code.lookup("glslrun_quad_depth"));
+        code->square_depth = reinterpret_cast<Pipeline::SquareDepthFn>(code->code.lookup("glslrun_square_depth"));
     }
-    code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(code->code.lookup("glslrun_inputs"));
-    code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(code->code.lookup("glslrun_outputs"));
+    code->inputs = reinterpret_cast<Pipeline::InputsFn>(code->code.lookup("glslrun_inputs"));
+    code->outputs = reinterpret_cast<Pipeline::OutputsFn>(code->code.lookup("glslrun_outputs"));
     if (!code->inputs || !code->outputs || (key.early_depth && (!code->quad_depth || !code->square_depth)))
         return nullptr;
-    if (seconds) *seconds = thread_cpu_seconds() - start;
+    if (seconds) *seconds = rt::jit::thread_cpu_seconds() - start;
     return code;
 }
 
-}  // namespace glslrun::rt::jit
+}  // namespace glslrun::raster::fused
