@@ -77,11 +77,14 @@ void forget_known_fields(State& s) {
     const State none;
     FragmentState& o = s.ops;
     o = canonical(o);
-    // Blending and the colour mask: into RGBA8 storage with the depth test,
-    // if any, early; nothing is blended or masked without a colour output.
-    const bool late_depth = o.depth_test && !s.early_depth;
-    if (s.color_channels == 0 || (!o.float_color && !late_depth))
-        o.blend = none.ops.blend, o.blend_state = none.ops.blend_state, o.color_mask = none.ops.color_mask;
+    // The alpha test, either storage.
+    o.alpha_test = none.ops.alpha_test, o.alpha_func = none.ops.alpha_func, o.alpha_ref = none.ops.alpha_ref;
+    // The colour mask, either storage; blending and the logic op into RGBA8
+    // (FragmentOps has no logic op with float storage); the depth test early
+    // or late. Nothing is blended or masked without a colour output.
+    o.color_mask = none.ops.color_mask;
+    o.logic_op = none.ops.logic_op, o.logic = none.ops.logic;
+    if (s.color_channels == 0 || !o.float_color) o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
     // The inputs: float registers, gl_FrontFacing's bool, or zeros.
     bool inputs_known = true;
     for (const Input& in : s.inputs)

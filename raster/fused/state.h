@@ -63,10 +63,11 @@ bool only_known_fields(const S& s) {
     return rest == S{};
 }
 
-// With blending or a colour mask, the colour write reads the buffer first.
+// With blending, a logic op or a colour mask, an RGBA8 colour write reads
+// the buffer first.
 inline bool reads_color(const State& s) {
-    return s.color_channels > 0 &&
-           (s.ops.blend || s.ops.color_mask != std::array<bool, 4>{true, true, true, true});
+    return s.color_channels > 0 && (s.ops.blend || s.ops.logic_op ||
+                                    s.ops.color_mask != std::array<bool, 4>{true, true, true, true});
 }
 
 }  // namespace glslrun::raster::fused

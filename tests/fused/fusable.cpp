@@ -47,12 +47,20 @@ const std::vector<Change>& refused_changes() {
         {"GL_COORD_REPLACE", [](fused::State& s) { s.inputs[0].sprite_coord = true; }},
         {"a non-float output", [](fused::State& s) { s.float_outputs = false; }},
         {"the stencil test", [](fused::State& s) { s.ops.stencil_test = true; }},
-        {"the alpha test", [](fused::State& s) { s.ops.alpha_test = true; }},
-        {"a logic op", [](fused::State& s) { s.ops.logic_op = true; }},
         {"two draw buffers", [](fused::State& s) { s.ops.draw_buffers = 2; }},
         {"blending into floats", [](fused::State& s) { s.ops.blend = true, s.ops.float_color = true; }},
+    };
+    return changes;
+}
+
+// Changes that it does implement.
+const std::vector<Change>& generated_changes() {
+    static const std::vector<Change> changes = {
+        {"the alpha test", [](fused::State& s) { s.ops.alpha_test = true, s.ops.alpha_func = CompareFunc::Less; }},
+        {"a logic op", [](fused::State& s) { s.ops.logic_op = true, s.ops.logic = LogicOp::Xor; }},
         {"blending, late depth", [](fused::State& s) { s.ops.blend = true, s.early_depth = false; }},
         {"a colour mask, late depth", [](fused::State& s) { s.ops.color_mask[1] = false, s.early_depth = false; }},
+        {"a colour mask into floats", [](fused::State& s) { s.ops.color_mask[0] = false, s.ops.float_color = true; }},
     };
     return changes;
 }
@@ -77,6 +85,15 @@ TEST_CASE("fusable takes the states the generated code knows", "[fused]") {
     off.ops.stencil[1].func = CompareFunc::Equal;
     off.ops.logic = LogicOp::Xor;
     CHECK(fused::fusable(off));
+}
+
+TEST_CASE("fusable takes each state the generated code implements", "[fused]") {
+    for (const Change& change : generated_changes()) {
+        fused::State s = plain_state();
+        change.apply(s);
+        INFO(change.name);
+        CHECK(fused::fusable(s));
+    }
 }
 
 TEST_CASE("fusable refuses each state the generated code does not implement", "[fused]") {
@@ -107,6 +124,7 @@ TEST_CASE("state_key tells states apart and keeps equal ones together", "[fused]
     nan.ops.alpha_ref = std::nanf("");
     CHECK(fused::state_key(nan) == fused::state_key(fused::State(nan)));
     std::vector<Change> changes = refused_changes();
+    changes.insert(changes.end(), generated_changes().begin(), generated_changes().end());
     changes.push_back({"depth func", [](fused::State& s) { s.ops.depth_func = CompareFunc::Gequal; }});
     changes.push_back({"depth write", [](fused::State& s) { s.ops.depth_write = false; }});
     changes.push_back({"rounding", [](fused::State& s) { s.ops.rounding = ColorRounding::Gpu; }});

@@ -39,6 +39,29 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
         }
         return constant(0);
     };
+    // raster::logic_op (§4.1.10) on bytes; the caller keeps the low 8 bits.
+    auto logic = [&](LogicOp op, llvm::Value* s8, llvm::Value* d8) -> llvm::Value* {
+        auto no = [&](llvm::Value* x) { return builder.CreateNot(x); };
+        switch (op) {
+        case LogicOp::Clear: return constant(0);
+        case LogicOp::And: return builder.CreateAnd(s8, d8);
+        case LogicOp::AndReverse: return builder.CreateAnd(s8, no(d8));
+        case LogicOp::Copy: return s8;
+        case LogicOp::AndInverted: return builder.CreateAnd(no(s8), d8);
+        case LogicOp::Noop: return d8;
+        case LogicOp::Xor: return builder.CreateXor(s8, d8);
+        case LogicOp::Or: return builder.CreateOr(s8, d8);
+        case LogicOp::Nor: return no(builder.CreateOr(s8, d8));
+        case LogicOp::Equiv: return no(builder.CreateXor(s8, d8));
+        case LogicOp::Invert: return no(d8);
+        case LogicOp::OrReverse: return builder.CreateOr(s8, no(d8));
+        case LogicOp::CopyInverted: return no(s8);
+        case LogicOp::OrInverted: return builder.CreateOr(no(s8), d8);
+        case LogicOp::Nand: return no(builder.CreateAnd(s8, d8));
+        case LogicOp::Set: return constant(255);
+        }
+        return s8;
+    };
     // mul_unorm8's (x * f * 2 + 255) / 510, the product rounded to n/255, as
     // (t + (t >> 8)) >> 8 with t = x * f + 128: equal for every x and f in
     // [0, 255] (tests/fused/fused_pipeline.cpp checks), and shifts, not a
@@ -59,7 +82,9 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
     std::array<llvm::Value*, 4> out;
     for (size_t k = 0; k < 4; ++k) {
         out[k] = src[k];
-        if (o.blend) {
+        if (o.logic_op) {
+            out[k] = builder.CreateAnd(logic(o.logic, src[k], dst[k]), constant(255));
+        } else if (o.blend) {
             const bool alpha = k == 3;
             const BlendEquation eq = alpha ? s.equation_alpha : s.equation_rgb;
             llvm::Value* a = product(src[k], factor(alpha ? s.src_alpha : s.src_rgb, k));

@@ -17,6 +17,7 @@
 #include <llvm/IR/Verifier.h>
 
 #include "raster/fragments.h"
+#include "raster/framebuffer.h"
 #include "raster/fused/gen/blend.h"
 #include "runtime/jit/engine.h"
 
@@ -43,13 +44,6 @@ constexpr uint64_t kPointCoordStep = offsetof(FsPrimitive, point_coord_step);
 // Quad lane i is pixel (x + kDx[i], y + kDy[i]) (runtime/backend.h).
 constexpr int kDx[4] = {0, 1, 0, 1};
 constexpr int kDy[4] = {0, 0, 1, 1};
-
-// Whether the colour is written a quad at a time (write_rgba8_quad): RGBA8
-// storage and no late depth test. Blending and the colour mask are
-// generated there only.
-bool writes_rgba8_quads(const State& s) {
-    return !s.ops.float_color && s.color_channels > 0 && !(s.ops.depth_test && !s.early_depth);
-}
 
 class PipelineEmitter {
 public:
@@ -127,7 +121,11 @@ private:
     llvm::Value* input(const Input& in, const Quad& q, const Weights& w);
     llvm::Value* nan_inputs(const Quad& q);
     std::array<llvm::Value*, 3> attributes(const Quad& q, uint32_t index);  // of vertices 0, 1, 2
-    llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
+    llvm::Value* compare(CompareFunc func, llvm::Value* incoming, llvm::Value* stored);
+    llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored) {
+        return compare(ops_.depth_func, incoming, stored);
+    }
+    llvm::Value* depth_test_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     using QuadBody = std::function<void(llvm::Value* index, const Quad& q)>;
     using PairTest = std::function<llvm::Value*(llvm::Value* index, llvm::Value* next)>;
@@ -146,9 +144,11 @@ private:
     struct QuadValues {
         llvm::Value* z;
         std::array<llvm::Value*, 4> rgba;
+        llvm::Value* alpha;  // colour 0's alpha as the shader wrote it (0: not written)
     };
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
-    void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
+    void write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes);
+    llvm::Value* alpha_passes(const QuadValues& v);
     void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes);
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
@@ -316,10 +316,11 @@ llvm::Value* PipelineEmitter::input(const Input& in, const Quad& q, const Weight
     return splat_f(0.0f);
 }
 
-// raster::depth_passes on one lane.
-llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* stored) {
-    switch (ops_.depth_func) {
-    case CompareFunc::Never: return b_.getFalse();
+// raster::depth_passes with `func`, on scalars or vectors.
+llvm::Value* PipelineEmitter::compare(CompareFunc func, llvm::Value* incoming, llvm::Value* stored) {
+    llvm::Type* result = llvm::CmpInst::makeCmpResultType(incoming->getType());
+    switch (func) {
+    case CompareFunc::Never: return llvm::Constant::getNullValue(result);
     case CompareFunc::Less: return b_.CreateFCmpOLT(incoming, stored);
     case CompareFunc::Equal: return b_.CreateFCmpOEQ(incoming, stored);
     case CompareFunc::Lequal: return b_.CreateFCmpOLE(incoming, stored);
@@ -328,7 +329,7 @@ llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* s
     case CompareFunc::Gequal: return b_.CreateFCmpOGE(incoming, stored);
     case CompareFunc::Always: break;
     }
-    return b_.getTrue();
+    return llvm::Constant::getAllOnesValue(result);
 }
 
 llvm::Value* PipelineEmitter::pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width) {
@@ -342,7 +343,12 @@ void PipelineEmitter::define_quad_depth() {
     Quad q = quad(fn_->getArg(0), fn_->getArg(1), fn_->getArg(2));
     llvm::Value* z = quad_depth(q);
     load_target(target);
-    llvm::Value* mask = fn_->getArg(3);
+    b_.CreateRet(depth_test_lanes(q, z, fn_->getArg(3)));
+}
+
+// The depth test (and write) of the lanes of a quad in `mask` (i32, bit i:
+// lane i), in lane order, depths `z`; returns those that pass.
+llvm::Value* PipelineEmitter::depth_test_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask) {
     for (int i = 0; i < 4; ++i) {
         llvm::Value* lane = b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0));
         mask = if_then(lane, mask, [&] {
@@ -357,7 +363,7 @@ void PipelineEmitter::define_quad_depth() {
             return b_.CreateAnd(mask, b_.CreateNot(failed));
         });
     }
-    b_.CreateRet(mask);
+    return mask;
 }
 
 // square_depth(prim, ox, oy, pixels, target): define_quad_depth's test on
@@ -512,46 +518,54 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
     b_.SetInsertPoint(stored);
 }
 
-// One lane's late depth test and writes (FragmentStage::write_plain), if it
-// is alive; `bit` its bit in the batch.
-void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit) {
-    llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
-    llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
-    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bit), b_.getInt64(0)), write, next);
-    b_.SetInsertPoint(write);
-    llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
-                                     b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
-    if (ops_.depth_test && !key_.early_depth) {
-        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
-        llvm::Value* z = b_.CreateExtractElement(v.z, uint64_t(i));
-        llvm::BasicBlock* pass = llvm::BasicBlock::Create(b_.getContext(), "pass", fn_);
-        b_.CreateCondBr(depth_passes(z, b_.CreateLoad(f32_, slot)), pass, next);
-        b_.SetInsertPoint(pass);
-        if (ops_.depth_write) b_.CreateStore(z, slot);
-    }
-    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bit), written_);
-    if (key_.color_channels > 0) {
-        // One pixel's channels: 4 floats, or 4 bytes.
-        llvm::Type* channel = ops_.float_color ? f32_ : i8_;
-        llvm::Value* dst = b_.CreateInBoundsGEP(channel, target_.color, b_.CreateShl(pixel, 2));
-        llvm::Value* texel = llvm::PoisonValue::get(llvm::FixedVectorType::get(channel, 4));
+// The float colour of a quad's lanes in `lanes` (i32, bit i: lane i),
+// the channels of the colour mask (raster's write_float, unblended).
+void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
+    const bool all = ops_.color_mask == std::array<bool, 4>{true, true, true, true};
+    for (int i = 0; i < 4; ++i) {
+        llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(lanes, b_.getInt32(1u << i)), b_.getInt32(0)), write, next);
+        b_.SetInsertPoint(write);
+        llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
+                                         b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
+        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, target_.color, b_.CreateShl(pixel, 2));
+        llvm::Value* texel = llvm::PoisonValue::get(v4f_);
         for (unsigned k = 0; k < 4; ++k) {
             llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
-            texel = b_.CreateInsertElement(texel, ops_.float_color ? c : b_.CreateTrunc(c, i8_), uint64_t(k));
+            texel = b_.CreateInsertElement(texel, c, uint64_t(k));
+            if (!all && ops_.color_mask[k]) b_.CreateStore(c, b_.CreateConstInBoundsGEP1_64(f32_, dst, k));
         }
-        b_.CreateAlignedStore(texel, dst, llvm::Align(ops_.float_color ? 4 : 1));
+        if (all) b_.CreateAlignedStore(texel, dst, llvm::Align(4));
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
     }
-    b_.CreateBr(next);
-    b_.SetInsertPoint(next);
 }
 
-// write_lane() of a quad's live lanes into RGBA8 storage, without a late
-// depth test: the lanes' pixels are distinct, two rows of two, so two
+// The alpha test (raster::alpha_test) of a quad's lanes: a mask (i32, bit
+// i: lane i) of those that pass. RGBA8 storage compares the bytes alpha
+// and the reference would be stored as.
+llvm::Value* PipelineEmitter::alpha_passes(const QuadValues& v) {
+    llvm::Value* a = v.alpha;
+    float ref = ops_.alpha_ref;
+    if (!ops_.float_color) {
+        constexpr float kRound = 8388608.0f;
+        a = b_.CreateSelect(b_.CreateFCmpOGT(a, splat_f(0.0f)), a, splat_f(0.0f));
+        a = b_.CreateSelect(b_.CreateFCmpOLT(a, splat_f(1.0f)), a, splat_f(1.0f));
+        a = b_.CreateFSub(b_.CreateFAdd(b_.CreateFMul(a, splat_f(255.0f)), splat_f(kRound)), splat_f(kRound));
+        ref = unorm8_steps(ref);
+    }
+    llvm::Value* passes = compare(ops_.alpha_func, a, splat_f(ref));
+    return b_.CreateZExt(b_.CreateBitCast(passes, b_.getIntNTy(4)), i32_);
+}
+
+// A quad's live lanes into RGBA8 storage: the lanes' pixels are distinct, two rows of two, so two
 // masked stores of two pixels each write the same bytes. No branch on the
 // lanes: a quad's live lanes vary, and branches on them mispredicted (perf).
+// `lanes`: i32, bit i: lane i.
 void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
-    llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, b_.CreateTrunc(lanes, i32_)),
+    llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, lanes),
                                                      llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{1, 2, 4, 8})),
                                         llvm::Constant::getNullValue(v4i));
     llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(0)),
@@ -655,6 +669,7 @@ PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const st
     }
     for (uint32_t k = 0; k < 4; ++k) {
         llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
+        if (k == 3) v.alpha = c;
         v.rgba[k] = ops_.float_color ? c : stored_byte(c);
     }
     return v;
@@ -676,8 +691,10 @@ llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
     return b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), v4i);
 }
 
-// outputs(batch, regs, alive, target): FragmentStage::write_outputs on the
-// fast path, in lane order.
+// outputs(batch, regs, alive, target): FragmentStage::write_outputs, quad
+// by quad in lane order: the alpha test, the late depth test and write, then
+// the colour write. A quad's depth tests before its colour write: the
+// buffers are apart, and its pixels distinct.
 void PipelineEmitter::define_outputs() {
     begin("glslrun_outputs", i64_, {ptr_, ptr_, i64_, ptr_});
     std::vector<llvm::Value*> regs;
@@ -686,26 +703,31 @@ void PipelineEmitter::define_outputs() {
     load_target(fn_->getArg(3));
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
-    const bool rgba8_only = writes_rgba8_quads(key_);
+    const bool late_depth = ops_.depth_test && !key_.early_depth;
+    const bool rgba8 = !ops_.float_color && key_.color_channels > 0;
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
-        llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
-        if (rgba8_only) {
-            // Every quad, its dead lanes masked: no branch.
-            llvm::Value* lanes = b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), b_.CreateShl(index, 2)), b_.getInt64(0xF));
-            write_rgba8_quad(q, quad_values(q, regs, index), lanes);
-            b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(lanes, b_.CreateShl(index, 2))),
-                           written_);
-            return;
+        llvm::Value* shift = b_.CreateShl(index, 2);
+        llvm::Value* lanes = b_.CreateTrunc(b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), shift), b_.getInt64(0xF)), i32_);
+        // RGBA8 quads without a late depth test: every quad, its dead lanes
+        // masked, no branch; the others only where a lane lives.
+        llvm::BasicBlock* next = nullptr;
+        if (late_depth || !rgba8) {
+            llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
+            next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
+            b_.CreateCondBr(b_.CreateICmpNE(lanes, b_.getInt32(0)), body, next);
+            b_.SetInsertPoint(body);
         }
-        llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
-        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
-        llvm::Value* bits = b_.CreateMul(first, b_.getInt64(0xF));
-        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bits), b_.getInt64(0)), body, next);
-        b_.SetInsertPoint(body);
         QuadValues v = quad_values(q, regs, index);
-        for (int i = 0; i < 4; ++i) write_lane(q, i, v, b_.CreateShl(first, uint64_t(i)));
-        b_.CreateBr(next);
-        b_.SetInsertPoint(next);
+        if (ops_.alpha_test) lanes = b_.CreateAnd(lanes, alpha_passes(v));
+        if (late_depth) lanes = depth_test_lanes(q, v.z, lanes);
+        b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(b_.CreateZExt(lanes, i64_), shift)),
+                       written_);
+        if (rgba8) write_rgba8_quad(q, v, lanes);
+        else if (key_.color_channels > 0) write_float_lanes(q, v, lanes);
+        if (next) {
+            b_.CreateBr(next);
+            b_.SetInsertPoint(next);
+        }
     });
     b_.CreateRet(b_.CreateLoad(i64_, written_));
 }
