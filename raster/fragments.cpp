@@ -170,7 +170,7 @@ fused::State FragmentStage::fused_state() {
         const ir::Binding& b = *p.binding;
         for (uint32_t c = 0; c < b.count; ++c) {
             uint32_t index = p.source == InputPlan::Source::Varying ? p.attr_offset + c : c;
-            state.inputs.push_back({p.source, index, b.kind, p.sprite_coord});
+            state.inputs.push_back({p.source, index, b.kind, p.sprite_coord, uint8_t(c)});
             input_regs_.push_back(interp_->lanes(b.first + c));
         }
     }
@@ -198,6 +198,7 @@ const fused::Pipeline* FragmentStage::fused_pipeline() {
     if (interp_->backend() != Backend::Jit) return nullptr;
     const fused::State state = fused_state();
     target_.depth = fb_.depth.data();
+    target_.stencil = fb_.stencil.data();
     target_.color = ops_.float_color ? static_cast<void*>(fb_.color_data<float>(0).data())
                                      : static_cast<void*>(fb_.color_data<uint8_t>(0).data());
     target_.width = fb_.width;

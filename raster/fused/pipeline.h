@@ -49,6 +49,7 @@ struct QuadBatch {
 // pixel, or 4 floats with FragmentState::float_color).
 struct Target {
     float* depth = nullptr;
+    uint8_t* stencil = nullptr;
     void* color = nullptr;
     int32_t width = 0, height = 0;
 };

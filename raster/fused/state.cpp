@@ -67,7 +67,7 @@ std::string state_key(const State& state) {
     for (bool m : o.color_mask) k.add(m);
     k.add(o.draw_buffers);
     k.add(uint32_t(state.inputs.size()));
-    for (const Input& in : state.inputs) k.add(in.source), k.add(in.index), k.add(in.kind), k.add(in.sprite_coord);
+    for (const Input& in : state.inputs) k.add(in.source), k.add(in.index), k.add(in.kind), k.add(in.sprite_coord), k.add(in.component);
     k.add(state.color_channels), k.add(state.float_outputs), k.add(state.depth_output), k.add(state.early_depth);
     k.add(state.probe), k.add(state.avx2);
     return k.take();
@@ -77,6 +77,8 @@ void forget_known_fields(State& s) {
     const State none;
     FragmentState& o = s.ops;
     o = canonical(o);
+    // The stencil test, both faces, every function and operation.
+    o.stencil_test = none.ops.stencil_test, o.stencil = none.ops.stencil;
     // The alpha test, either storage.
     o.alpha_test = none.ops.alpha_test, o.alpha_func = none.ops.alpha_func, o.alpha_ref = none.ops.alpha_ref;
     // The colour mask, either storage; blending and the logic op into RGBA8
@@ -85,11 +87,12 @@ void forget_known_fields(State& s) {
     o.color_mask = none.ops.color_mask;
     o.logic_op = none.ops.logic_op, o.logic = none.ops.logic;
     if (s.color_channels == 0 || !o.float_color) o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
-    // The inputs: float registers, gl_FrontFacing's bool, or zeros.
+    // The inputs: float registers, gl_FrontFacing's bool, or zeros; point
+    // sprites' coordinates.
     bool inputs_known = true;
     for (const Input& in : s.inputs)
-        inputs_known &= !in.sprite_coord && (in.kind == ir::Kind::F32 || in.source == InputSource::Zero ||
-                                             (in.kind == ir::Kind::Bool && in.source == InputSource::FrontFacing));
+        inputs_known &= in.kind == ir::Kind::F32 || in.source == InputSource::Zero ||
+                        (in.kind == ir::Kind::Bool && in.source == InputSource::FrontFacing);
     if (inputs_known) s.inputs = none.inputs;
     s.color_channels = none.color_channels;
     s.depth_output = none.depth_output;

@@ -25,6 +25,7 @@ struct Input {
     uint32_t index = 0;  // Varying: the attribute; the built-ins: the component
     ir::Kind kind = ir::Kind::F32;  // the register's
     bool sprite_coord = false;  // gl_TexCoord[i] replaced on points (GL_COORD_REPLACE)
+    uint8_t component = 0;      // which of its binding's components (sprite_coord's (s, t, 0, 1))
     bool operator==(const Input&) const = default;
 };
 

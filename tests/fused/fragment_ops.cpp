@@ -135,3 +135,96 @@ TEST_CASE("the fused alpha test and logic op comparisons are not vacuous", "[fus
     CHECK_FALSE(same_colors(plain.fb, xored.fb));
     if (jit_available()) CHECK(xored.stats.fragments_fused == xored.stats.fragments_shaded);
 }
+
+TEST_CASE("the fused stencil test draws the interpreter's bits: every function and operation, two-sided", "[fused]") {
+    const StencilOp kOps[] = {StencilOp::Keep, StencilOp::Zero,     StencilOp::Replace,  StencilOp::Incr,
+                              StencilOp::Decr, StencilOp::Invert,   StencilOp::IncrWrap, StencilOp::DecrWrap};
+    Geometry small = random_geometry(25, 900, 0.08f);
+    for (const Shader* shader : {&early_shader(), &discard_shader()}) {
+        Programs p(shader->fs);
+        for (int state = 0; state < 16; ++state) {
+            // A pass that writes stencil values (overlapping triangles count
+            // up and wrap), then one that tests them and updates them again.
+            GLState mark;
+            mark.stencil_test = true;
+            mark.depth_test = state % 2 == 0;
+            mark.depth_func = GLState::DepthFunc::Less;
+            for (size_t face = 0; face < 2; ++face) {
+                StencilFace& f = mark.stencil[face];
+                f.func = CompareFunc::Always;
+                f.ref = 3 + int(face) * 250;  // 253: IncrWrap wraps soon
+                f.fail = StencilOp::Keep;
+                f.depth_fail = kOps[size_t(state + 3) % 8];
+                f.depth_pass = face == 0 ? StencilOp::IncrWrap : kOps[size_t(state) % 8];
+            }
+            GLState test = mark;
+            test.depth_func = state % 3 == 0 ? GLState::DepthFunc::Lequal : GLState::DepthFunc::Greater;
+            test.depth_mask = state % 4 != 1;
+            for (size_t face = 0; face < 2; ++face) {
+                StencilFace& f = test.stencil[face];
+                f.func = kCompares[size_t(state + int(face) * 3) % 8];
+                f.ref = state % 5 == 0 ? 300 : 2 + state % 3;  // 300: clamped to 255
+                f.value_mask = face == 0 ? 0xFFu : 0x3u;
+                f.write_mask = state % 2 ? 0xFFu : 0xF0u | uint32_t(state);
+                f.fail = kOps[size_t(state + int(face)) % 8];
+                f.depth_fail = kOps[size_t(state + 5) % 8];
+                f.depth_pass = kOps[size_t(state * 3 + int(face)) % 8];
+            }
+            // One face's state for both sides on some: one code path.
+            if (state % 4 == 2) test.stencil[1] = test.stencil[0];
+            test.blend = state % 5 == 1;
+            test.blend_state.src_rgb = BlendFactor::SrcAlpha, test.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+            INFO(shader->name << ", stencil state " << state);
+            check_passes_match(p, small, {mark, test},
+                               state % 3 == 1 ? ColorRounding::Gpu : ColorRounding::Nearest);
+        }
+    }
+}
+
+TEST_CASE("the fused stencil comparison is not vacuous", "[fused]") {
+    Geometry g = random_geometry(25, 900, 0.08f);
+    Programs p(early_shader().fs);
+    GLState mark;
+    mark.stencil_test = true;
+    mark.stencil[0].depth_pass = mark.stencil[1].depth_pass = StencilOp::Incr;
+    GLState test;
+    test.stencil_test = true;
+    test.stencil[0].func = test.stencil[1].func = CompareFunc::Less;
+    test.stencil[0].ref = test.stencil[1].ref = 1;  // where two or more marked
+    Framebuffer fb(96, 64);
+    auto marked = draw(p.fused, mark, fb, Primitive::Triangles, {g.pos, g.color}, g.count);
+    REQUIRE(marked);
+    size_t nonzero = 0;
+    for (uint8_t s : fb.stencil) nonzero += s != 0;
+    CHECK(nonzero > 500u);
+    auto tested = draw(p.fused, test, fb, Primitive::Triangles, {g.pos, g.color}, g.count);
+    REQUIRE(tested);
+    CHECK(tested->fragments_written < tested->fragments_shaded);
+    CHECK(tested->fragments_written > 0u);
+    if (jit_available()) CHECK(tested->fragments_fused == tested->fragments_shaded);
+}
+
+TEST_CASE("the fused point sprites' coordinates draw the interpreter's bits", "[fused]") {
+    // gl_TexCoord[0] replaced on points (GL_COORD_REPLACE), fed by the
+    // vertex shader or by nothing; kept on lines.
+    const char* fs = "void main() { gl_FragColor = gl_TexCoord[0] * vec4(1.0, 1.0, 7.0, 0.5) + gl_TexCoord[1]; }";
+    std::string vs = std::string(kVs);
+    vs.insert(vs.rfind('}'), "    gl_TexCoord[0] = gl_Color.bgra * 1.3 - 0.1;\n    gl_TexCoord[1] = gl_Color * 0.25;\n");
+    Geometry g = random_geometry(26, 240, 0.5f);
+    for (const char* v : {vs.c_str(), kVs}) {
+        Programs p(fs, v);
+        for (Primitive prim : {Primitive::Points, Primitive::Lines}) {
+            for (uint32_t replace : {1u, 3u, 2u}) {
+                GLState gl;
+                gl.depth_test = true;
+                gl.point_size = 6.3f;
+                gl.point_sprite = true;
+                gl.coord_replace = replace;
+                INFO("vertex shader " << (v == kVs ? "without" : "with") << " gl_TexCoord, primitive " << int(prim)
+                                      << ", coord_replace " << replace);
+                check_fused_matches(p, prim, g, gl, false);
+                check_fused_matches(p, prim, g, gl, true);
+            }
+        }
+    }
+}

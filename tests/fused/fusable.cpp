@@ -44,9 +44,7 @@ const std::vector<Change>& refused_changes() {
     static const std::vector<Change> changes = {
         {"the shader debugger", [](fused::State& s) { s.probe = true; }},
         {"an int input", [](fused::State& s) { s.inputs[0].kind = ir::Kind::I32; }},
-        {"GL_COORD_REPLACE", [](fused::State& s) { s.inputs[0].sprite_coord = true; }},
         {"a non-float output", [](fused::State& s) { s.float_outputs = false; }},
-        {"the stencil test", [](fused::State& s) { s.ops.stencil_test = true; }},
         {"two draw buffers", [](fused::State& s) { s.ops.draw_buffers = 2; }},
         {"blending into floats", [](fused::State& s) { s.ops.blend = true, s.ops.float_color = true; }},
     };
@@ -57,6 +55,8 @@ const std::vector<Change>& refused_changes() {
 const std::vector<Change>& generated_changes() {
     static const std::vector<Change> changes = {
         {"the alpha test", [](fused::State& s) { s.ops.alpha_test = true, s.ops.alpha_func = CompareFunc::Less; }},
+        {"the stencil test", [](fused::State& s) { s.ops.stencil_test = true, s.ops.stencil[1].fail = StencilOp::Zero; }},
+        {"GL_COORD_REPLACE", [](fused::State& s) { s.inputs[0].sprite_coord = true, s.inputs[0].component = 1; }},
         {"a logic op", [](fused::State& s) { s.ops.logic_op = true, s.ops.logic = LogicOp::Xor; }},
         {"blending, late depth", [](fused::State& s) { s.ops.blend = true, s.early_depth = false; }},
         {"a colour mask, late depth", [](fused::State& s) { s.ops.color_mask[1] = false, s.early_depth = false; }},

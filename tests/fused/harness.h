@@ -97,8 +97,8 @@ struct Frame {
     DrawStats stats;
 };
 
-inline Program compile(Backend backend, const char* fs) {
-    auto p = Program::compile({{"vs", kVs}}, {{"fs", fs}});
+inline Program compile(Backend backend, const char* fs, const char* vs = kVs) {
+    auto p = Program::compile({{"vs", vs}}, {{"fs", fs}});
     if (!p) FAIL(p.error().str());
     p->exec.backend = backend;
     return std::move(*p);
@@ -119,7 +119,8 @@ inline void warm_up(Program& p) {
 // (warmed up: its draws take the fused pipeline).
 struct Programs {
     Program oracle, fused;
-    explicit Programs(const char* fs) : oracle(compile(Backend::Interp, fs)), fused(compile(Backend::Jit, fs)) {
+    explicit Programs(const char* fs, const char* vs = kVs)
+        : oracle(compile(Backend::Interp, fs, vs)), fused(compile(Backend::Jit, fs, vs)) {
         warm_up(fused);
     }
 };
@@ -137,6 +138,7 @@ inline Frame render(Program& p, Primitive prim, const Geometry& g, const GLState
     first.depth_func = GLState::DepthFunc::Lequal;
     first.point_size = second.point_size;
     first.point_sprite = second.point_sprite;
+    first.coord_replace = second.coord_replace;
     for (const GLState& gl : {first, second}) {
         auto stats = draw(p, gl, f.fb, prim, {g.pos, g.color}, g.count);
         if (!stats) FAIL(stats.error().str());
@@ -179,6 +181,7 @@ inline void check_fused_matches(Programs& p, Primitive prim, const Geometry& g, 
     CHECK(fused.stats.fragments_written == oracle.stats.fragments_written);
     CHECK(same_colors(fused.fb, oracle.fb));
     CHECK(same_bits(std::span<const float>(fused.fb.depth), std::span<const float>(oracle.fb.depth)));
+    CHECK(fused.fb.stencil == oracle.fb.stencil);
 }
 
 inline const GLState::DepthFunc kFuncs[] = {GLState::DepthFunc::Never,   GLState::DepthFunc::Less,
@@ -186,5 +189,31 @@ inline const GLState::DepthFunc kFuncs[] = {GLState::DepthFunc::Never,   GLState
                                      GLState::DepthFunc::Greater, GLState::DepthFunc::Notequal,
                                      GLState::DepthFunc::Gequal,  GLState::DepthFunc::Always};
 
+
+// The passes `states` in order over one framebuffer, on both programs:
+// colour, depth and stencil bit-identical, every fragment of the JIT's
+// draws fused.
+inline void check_passes_match(Programs& p, const Geometry& g, const std::vector<GLState>& states,
+                               ColorRounding rounding = ColorRounding::Nearest, glm::ivec2 size = {93, 61}) {
+    Frame frames[2] = {{Framebuffer(size.x, size.y), {}}, {Framebuffer(size.x, size.y), {}}};
+    for (int i = 0; i < 2; ++i) {
+        Frame& f = frames[i];
+        f.fb.rounding = rounding;
+        f.fb.clear_color({0.1f, 0.2f, 0.3f, 1.0f});
+        f.fb.clear_depth(0.8f);
+        for (const GLState& gl : states) {
+            auto stats = draw(i == 0 ? p.oracle : p.fused, gl, f.fb, Primitive::Triangles, {g.pos, g.color}, g.count);
+            if (!stats) FAIL(stats.error().str());
+            f.stats += *stats;
+        }
+    }
+    const Frame &oracle = frames[0], &fused = frames[1];
+    if (jit_available()) CHECK(fused.stats.fragments_fused == fused.stats.fragments_shaded);
+    CHECK(oracle.stats.fragments_shaded > 200u);
+    CHECK(fused.stats.fragments_written == oracle.stats.fragments_written);
+    CHECK(same_colors(fused.fb, oracle.fb));
+    CHECK(same_bits(std::span<const float>(fused.fb.depth), std::span<const float>(oracle.fb.depth)));
+    CHECK(fused.fb.stencil == oracle.fb.stencil);
+}
 
 }  // namespace fused_test

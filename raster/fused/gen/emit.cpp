@@ -4,6 +4,7 @@
 // C++ path computes, operation for operation. A quad's four lanes are one
 // 4-wide vector; the writes go in lane order, as two quads of a batch may
 // cover the same pixel (a quad's own four pixels are distinct).
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <mutex>
@@ -126,6 +127,9 @@ private:
         return compare(ops_.depth_func, incoming, stored);
     }
     llvm::Value* depth_test_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask);
+    llvm::Value* stencil_depth_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask);
+    llvm::Value* stencil_depth_lane(const StencilFace& face, const Quad& q, int i, llvm::Value* z, llvm::Value* mask);
+    llvm::Value* stencil_op(StencilOp op, llvm::Value* value, int ref);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     using QuadBody = std::function<void(llvm::Value* index, const Quad& q)>;
     using PairTest = std::function<llvm::Value*(llvm::Value* index, llvm::Value* next)>;
@@ -156,6 +160,7 @@ private:
     llvm::Value* stored_byte(llvm::Value* c);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
+        target_.stencil = b_.CreateLoad(ptr_, at(target, offsetof(Target, stencil)));
         target_.color = b_.CreateLoad(ptr_, at(target, offsetof(Target, color)));
         target_.width = load_i(target, offsetof(Target, width));
         target_.height = load_i(target, offsetof(Target, height));
@@ -171,7 +176,7 @@ private:
     // Per function being defined.
     llvm::Function* fn_ = nullptr;
     struct {
-        llvm::Value *depth, *color, *width, *height;
+        llvm::Value *depth, *stencil, *color, *width, *height;
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
@@ -280,6 +285,16 @@ PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
 
 // One input register's four lanes (FragmentStage::interpolate and builtin_input).
 llvm::Value* PipelineEmitter::input(const Input& in, const Quad& q, const Weights& w) {
+    if (in.sprite_coord) {
+        // FragmentStage::replace_sprite_coord: on points, (gl_PointCoord, 0, 1).
+        Input plain = in;
+        plain.sprite_coord = false;
+        llvm::Value* value = input(plain, q, w);
+        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, kCount), b_.getInt32(1));
+        llvm::Value* sprite = in.component < 2 ? input({InputSource::PointCoord, in.component, ir::Kind::F32}, q, w)
+                                               : splat_f(in.component == 3 ? 1.0f : 0.0f);
+        return b_.CreateSelect(is_point, sprite, value);
+    }
     switch (in.source) {
     case InputSource::Varying: {
         std::array<llvm::Value*, 3> a = attributes(q, in.index);
@@ -518,6 +533,99 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
     b_.SetInsertPoint(stored);
 }
 
+// raster::stencil_op on an i32 value (0 to 255).
+llvm::Value* PipelineEmitter::stencil_op(StencilOp op, llvm::Value* v, int ref) {
+    constexpr uint32_t kMax = (1u << kStencilBits) - 1;
+    switch (op) {
+    case StencilOp::Keep: return v;
+    case StencilOp::Zero: return b_.getInt32(0);
+    case StencilOp::Replace: return b_.getInt32(uint32_t(std::clamp(ref, 0, int(kMax))));
+    case StencilOp::Incr: {
+        llvm::Value* up = b_.CreateAdd(v, b_.getInt32(1));
+        return b_.CreateSelect(b_.CreateICmpULT(up, b_.getInt32(kMax)), up, b_.getInt32(kMax));
+    }
+    case StencilOp::Decr:
+        return b_.CreateSelect(b_.CreateICmpUGT(v, b_.getInt32(0)), b_.CreateSub(v, b_.getInt32(1)), b_.getInt32(0));
+    case StencilOp::Invert: return b_.CreateAnd(b_.CreateNot(v), b_.getInt32(kMax));
+    case StencilOp::IncrWrap: return b_.CreateAnd(b_.CreateAdd(v, b_.getInt32(1)), b_.getInt32(kMax));
+    case StencilOp::DecrWrap: return b_.CreateAnd(b_.CreateSub(v, b_.getInt32(1)), b_.getInt32(kMax));
+    }
+    return v;
+}
+
+// The stencil and depth tests of lane i (raster::stencil_depth_test's
+// stencil_depth_one with `face`), if it is in `mask` (i32, bit i: lane i),
+// with their buffer updates; returns `mask` less the lane where it fails.
+llvm::Value* PipelineEmitter::stencil_depth_lane(const StencilFace& face, const Quad& q, int i, llvm::Value* z,
+                                                 llvm::Value* mask) {
+    llvm::Value* lane = b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0));
+    return if_then(lane, mask, [&] {
+        llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
+                                         b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
+        llvm::Value* slot = b_.CreateInBoundsGEP(i8_, target_.stencil, pixel);
+        llvm::Value* stored = b_.CreateZExt(b_.CreateLoad(i8_, slot), i32_);
+        // The new stencil value after `op`, through the write mask.
+        auto updated = [&](StencilOp op) {
+            llvm::Value* v = stencil_op(op, stored, face.ref);
+            return b_.CreateOr(b_.CreateAnd(stored, b_.getInt32(~face.write_mask)),
+                               b_.CreateAnd(v, b_.getInt32(face.write_mask)));
+        };
+        // Bytes compare exactly as floats: raster compares them with depth_passes.
+        const uint32_t ref = uint32_t(std::clamp(face.ref, 0, int((1u << kStencilBits) - 1)));
+        llvm::Value* stencil_passes =
+            compare(face.func, llvm::ConstantFP::get(f32_, float(ref & face.value_mask)),
+                    b_.CreateUIToFP(b_.CreateAnd(stored, b_.getInt32(face.value_mask)), f32_));
+        llvm::Value* depth_passes_here = b_.getTrue();
+        llvm::Value* depth_slot = nullptr;
+        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+        if (ops_.depth_test) {
+            depth_slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
+            depth_passes_here = depth_passes(zi, b_.CreateLoad(f32_, depth_slot));
+        }
+        llvm::Value* value = b_.CreateSelect(stencil_passes,
+                                             b_.CreateSelect(depth_passes_here, updated(face.depth_pass),
+                                                             updated(face.depth_fail)),
+                                             updated(face.fail));
+        b_.CreateStore(b_.CreateTrunc(value, i8_), slot);
+        llvm::Value* passes = b_.CreateAnd(stencil_passes, depth_passes_here);
+        if (ops_.depth_test && ops_.depth_write) {
+            llvm::Value* old = b_.CreateLoad(f32_, depth_slot);
+            b_.CreateStore(b_.CreateSelect(passes, zi, old), depth_slot);
+        }
+        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+        return b_.CreateAnd(mask, b_.CreateNot(failed));
+    });
+}
+
+// The stencil and depth tests of a quad's lanes in lane order, with the
+// front or back face's state as its primitive faces.
+llvm::Value* PipelineEmitter::stencil_depth_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask) {
+    auto lanes = [&](const StencilFace& face) {
+        llvm::Value* m = mask;
+        for (int i = 0; i < 4; ++i) m = stencil_depth_lane(face, q, i, z, m);
+        return m;
+    };
+    if (ops_.stencil[0] == ops_.stencil[1]) return lanes(ops_.stencil[0]);
+    llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, kFront)), b_.getInt8(0));
+    llvm::BasicBlock* back_block = llvm::BasicBlock::Create(b_.getContext(), "back_face", fn_);
+    llvm::BasicBlock* front_block = llvm::BasicBlock::Create(b_.getContext(), "front_face", fn_);
+    llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "stencil_tested", fn_);
+    b_.CreateCondBr(front, front_block, back_block);
+    b_.SetInsertPoint(front_block);
+    llvm::Value* front_mask = lanes(ops_.stencil[0]);
+    llvm::BasicBlock* front_end = b_.GetInsertBlock();
+    b_.CreateBr(tested);
+    b_.SetInsertPoint(back_block);
+    llvm::Value* back_mask = lanes(ops_.stencil[1]);
+    llvm::BasicBlock* back_end = b_.GetInsertBlock();
+    b_.CreateBr(tested);
+    b_.SetInsertPoint(tested);
+    llvm::PHINode* merged = b_.CreatePHI(i32_, 2);
+    merged->addIncoming(front_mask, front_end);
+    merged->addIncoming(back_mask, back_end);
+    return merged;
+}
+
 // The float colour of a quad's lanes in `lanes` (i32, bit i: lane i),
 // the channels of the colour mask (raster's write_float, unblended).
 void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
@@ -719,7 +827,8 @@ void PipelineEmitter::define_outputs() {
         }
         QuadValues v = quad_values(q, regs, index);
         if (ops_.alpha_test) lanes = b_.CreateAnd(lanes, alpha_passes(v));
-        if (late_depth) lanes = depth_test_lanes(q, v.z, lanes);
+        if (ops_.stencil_test) lanes = stencil_depth_lanes(q, v.z, lanes);
+        else if (late_depth) lanes = depth_test_lanes(q, v.z, lanes);
         b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(b_.CreateZExt(lanes, i64_), shift)),
                        written_);
         if (rgba8) write_rgba8_quad(q, v, lanes);
