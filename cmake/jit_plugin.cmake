@@ -1,5 +1,5 @@
 # The JIT plugin (runtime/jit_plugin.h says why there is one):
-# runtime/jit/*.cpp and libLLVM in libglslrun-jit.so, which the library
+# runtime/jit/*.cpp, raster/fused/gen/*.cpp and libLLVM in libglslrun-jit.so, which the library
 # loads at its first compile. What the JIT's own code needs of the rest of
 # the library (the opcode table, the budgets, the sampler's kernel) the
 # linker takes from the static library into the plugin; those copies stay
@@ -21,7 +21,9 @@ if(NOT GLSLRUN_JIT)
   return()
 endif()
 
-file(GLOB GLSLRUN_JIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/runtime/jit/*.cpp)
+# The fused fragment functions' emitter (raster/fused/gen/) is LLVM code too.
+file(GLOB GLSLRUN_JIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/runtime/jit/*.cpp
+  ${PROJECT_SOURCE_DIR}/raster/fused/gen/*.cpp)
 add_library(glslrun_jit MODULE ${GLSLRUN_JIT_SOURCES})
 set_target_properties(glslrun_jit PROPERTIES OUTPUT_NAME glslrun-jit PREFIX lib
   LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR} POSITION_INDEPENDENT_CODE ON)

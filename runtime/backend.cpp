@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include "ir/passes.h"
+#include "raster/fused/pipeline.h"
 #include "runtime/backend_cache.h"
-#include "runtime/fragment_pipeline.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/interpreter.h"
 #include "runtime/program_state.h"

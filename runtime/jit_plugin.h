@@ -3,7 +3,7 @@
 // relocations and its static constructors) cost every process 14 ms of CPU
 // before it drew anything, half the README demo's time, even when
 // `--backend auto` then ran the interpreter alone. Only the JIT's three entry
-// points cross this seam; the plan (how much a compile would cost) is the
+// points cross this seam (a shader's code, a fused pipeline's); the plan (how much a compile would cost) is the
 // host's own (runtime/jit_plan.cpp), so Auto decides without loading LLVM.
 //
 // Where the plugin is looked for, in order, from the directory D of the
@@ -21,22 +21,22 @@
 
 #include "runtime/backend.h"
 
-namespace glslrun::rt {
+namespace glslrun::raster::fused {
+struct Pipeline;
+struct State;
+}  // namespace glslrun::raster::fused
 
-struct FragmentPipeline;
-struct PipelineKey;
-struct PrimitiveLayout;
+namespace glslrun::rt {
 
 namespace jit {
 struct CompileStats;
 }
 
 struct JitEntryPoints {
-    // runtime/jit/jit.h's compile and engine.h's compile_pipeline.
+    // runtime/jit/jit.h's compile and raster/fused/pipeline.h's.
     std::unique_ptr<CompiledShader> (*compile)(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                                bool avx2, bool quick_codegen, jit::CompileStats* stats);
-    std::unique_ptr<FragmentPipeline> (*compile_pipeline)(const PipelineKey& key, const PrimitiveLayout& layout,
-                                                          double* seconds);
+    std::unique_ptr<raster::fused::Pipeline> (*compile_pipeline)(const raster::fused::State& state, double* seconds);
 };
 
 // The plugin's entry points, loaded at the first call (thread-safe; the
