@@ -68,6 +68,73 @@ std::string tests_text(const FragmentTests& t) {
 
 std::string json_number(const Values& v, double x);
 
+const char* factor_name(BlendFactor f) {
+    static constexpr const char* kNames[] = {
+        "zero", "one", "src_color", "one_minus_src_color", "dst_color", "one_minus_dst_color", "src_alpha",
+        "one_minus_src_alpha", "dst_alpha", "one_minus_dst_alpha", "constant_color", "one_minus_constant_color",
+        "constant_alpha", "one_minus_constant_alpha", "src_alpha_saturate"};
+    return kNames[size_t(f)];
+}
+
+const char* equation_name(BlendEquation e) {
+    static constexpr const char* kNames[] = {"func_add", "func_subtract", "func_reverse_subtract", "min", "max"};
+    return kNames[size_t(e)];
+}
+
+const char* logic_name(LogicOp op) {
+    static constexpr const char* kNames[] = {"clear", "and", "and_reverse", "copy", "and_inverted", "noop",
+                                             "xor", "or", "nor", "equiv", "invert", "or_reverse",
+                                             "copy_inverted", "or_inverted", "nand", "set"};
+    return kNames[size_t(op)];
+}
+
+// "rgba", with a masked channel as '-'.
+std::string mask_text(const std::array<bool, 4>& mask) {
+    std::string out = "rgba";
+    for (size_t k = 0; k < 4; ++k)
+        if (!mask[k]) out[k] = '-';
+    return out;
+}
+
+// A colour as stored: "rgba8(204, 51, 0, 255)" (the bytes n of n/255) or "vec4(...)".
+std::string stored_color(const std::array<float, 4>& c, bool bytes) {
+    if (bytes) return fmt::format("rgba8({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
+    return fmt::format("vec4({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
+}
+
+// "colour 0 rgba8(...), depth 1, stencil 0".
+std::string pixel_text(const PixelValues& p) {
+    std::string out;
+    for (size_t b = 0; b < p.color.size(); ++b) out += fmt::format("colour {} {}, ", b, stored_color(p.color[b], p.bytes));
+    return out + fmt::format("depth {}, stencil {}", p.depth, p.stencil);
+}
+
+// "buffers 0; blend (src_alpha, one_minus_src_alpha) func_add; logic op off; mask rgba".
+std::string writes_text(const ColorWrites& w, bool bytes) {
+    std::string blend = "off";
+    if (w.blend) {
+        const BlendState& b = w.blend_state;
+        blend = fmt::format("(src {}, dst {}) {}", factor_name(b.src_rgb), factor_name(b.dst_rgb),
+                            equation_name(b.equation_rgb));
+        if (b.src_alpha != b.src_rgb || b.dst_alpha != b.dst_rgb || b.equation_alpha != b.equation_rgb)
+            blend += fmt::format(", alpha (src {}, dst {}) {}", factor_name(b.src_alpha), factor_name(b.dst_alpha),
+                                 equation_name(b.equation_alpha));
+        auto constant = [](BlendFactor f) { return f >= BlendFactor::ConstantColor && f <= BlendFactor::OneMinusConstantAlpha; };
+        if (constant(b.src_rgb) || constant(b.dst_rgb) || constant(b.src_alpha) || constant(b.dst_alpha))
+            blend += fmt::format(", constant vec4({}, {}, {}, {})", b.color[0], b.color[1], b.color[2], b.color[3]);
+    }
+    std::string logic = !w.logic_op ? "off" : bytes ? logic_name(w.logic) : "ignored (float buffers)";
+    return fmt::format("buffers {}; blend {}; logic op {}; mask {}",
+                       w.buffers.empty() ? std::string("none") : fmt::format("{}", fmt::join(w.buffers, ", ")), blend,
+                       logic, mask_text(w.mask));
+}
+
+// The framebuffer at the pixel before and after a fragment, and what its draw does with colour.
+std::string framebuffer_text(const FragmentTrace& f) {
+    return fmt::format("  before: {}\n  writes: {}\n  after:  {}\n", pixel_text(f.before),
+                       writes_text(f.writes, f.before.bytes), pixel_text(f.after));
+}
+
 std::string tests_json(const FragmentTests& t) {
     auto num = [](float x) { return json_number(Values{}, double(x)); };
     return fmt::format(
@@ -253,6 +320,7 @@ std::string format_text(const PixelTrace& t) {
                            f.vertices[1], f.vertices[2], f.front ? "front" : "back", f.depth,
                            outcome_text(f.outcome));
         out += tests_text(f.tests);
+        out += framebuffer_text(f);
         text_invocation(out, f.trace, t.source_lines);
         if (!f.matches_render) out += "  WARNING: the replay's outputs differ from the render's\n";
     }
