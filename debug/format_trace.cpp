@@ -1,4 +1,4 @@
-// The trace and the NaN report as text (glslrun trace) and JSON (--json).
+// The trace and the NaN report as text (glslrun trace); format_json.cpp writes the JSON.
 #include <cmath>
 #include <map>
 #include <string_view>
@@ -6,10 +6,60 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "debug/debugger.h"
+#include "debug/format_common.h"
+
+namespace glslrun::debug::detail {
+
+const char* outcome_key(FragmentTrace::Outcome o) {
+    static constexpr const char* kKeys[] = {"written", "depth_failed", "discarded", "alpha_failed", "stencil_failed"};
+    return kKeys[size_t(o)];
+}
+
+const char* func_name(CompareFunc f) {
+    static constexpr const char* kNames[] = {"never",   "less",     "equal",  "lequal",
+                                             "greater", "notequal", "gequal", "always"};
+    return kNames[size_t(f)];
+}
+
+const char* result_key(FragmentTests::Result r) {
+    static constexpr const char* kKeys[] = {"off", "passed", "failed", "not_reached"};
+    return kKeys[size_t(r)];
+}
+
+const char* factor_name(BlendFactor f) {
+    static constexpr const char* kNames[] = {
+        "zero", "one", "src_color", "one_minus_src_color", "dst_color", "one_minus_dst_color", "src_alpha",
+        "one_minus_src_alpha", "dst_alpha", "one_minus_dst_alpha", "constant_color", "one_minus_constant_color",
+        "constant_alpha", "one_minus_constant_alpha", "src_alpha_saturate"};
+    return kNames[size_t(f)];
+}
+
+const char* equation_name(BlendEquation e) {
+    static constexpr const char* kNames[] = {"func_add", "func_subtract", "func_reverse_subtract", "min", "max"};
+    return kNames[size_t(e)];
+}
+
+const char* logic_name(LogicOp op) {
+    static constexpr const char* kNames[] = {"clear", "and", "and_reverse", "copy", "and_inverted", "noop",
+                                             "xor", "or", "nor", "equiv", "invert", "or_reverse",
+                                             "copy_inverted", "or_inverted", "nand", "set"};
+    return kNames[size_t(op)];
+}
+
+// The trimmed text of a step's line; empty when its source is unknown.
+std::string_view line_text(const SourceLines& lines, const InvocationTrace& t, const TraceStep& s) {
+    if (s.source >= t.files.size() || s.line == 0) return {};
+    auto file = lines.find(t.files[s.source]);
+    if (file == lines.end() || s.line > file->second.size()) return {};
+    return file->second[s.line - 1];
+}
+
+}  // namespace glslrun::debug::detail
 
 namespace glslrun::debug {
 namespace {
+
+using namespace detail;
 
 const char* outcome_text(FragmentTrace::Outcome o) {
     switch (o) {
@@ -27,21 +77,6 @@ const char* outcome_text(FragmentTrace::Outcome o) {
     return "?";
 }
 
-const char* outcome_key(FragmentTrace::Outcome o) {
-    static constexpr const char* kKeys[] = {"written", "depth_failed", "discarded", "alpha_failed", "stencil_failed"};
-    return kKeys[size_t(o)];
-}
-
-const char* func_name(CompareFunc f) {
-    static constexpr const char* kNames[] = {"never",   "less",     "equal",  "lequal",
-                                             "greater", "notequal", "gequal", "always"};
-    return kNames[size_t(f)];
-}
-
-const char* result_key(FragmentTests::Result r) {
-    static constexpr const char* kKeys[] = {"off", "passed", "failed", "not_reached"};
-    return kKeys[size_t(r)];
-}
 
 // "alpha 0.25 greater 0.5 (reference): fails", "depth off", "stencil not reached".
 std::string test_text(const char* name, FragmentTests::Result r, const std::string& comparison) {
@@ -66,27 +101,7 @@ std::string tests_text(const FragmentTests& t) {
                   fmt::format("{} {} {} (stored)", t.z, func_name(t.depth_func), t.stored_depth)));
 }
 
-std::string json_number(const Values& v, double x);
 
-const char* factor_name(BlendFactor f) {
-    static constexpr const char* kNames[] = {
-        "zero", "one", "src_color", "one_minus_src_color", "dst_color", "one_minus_dst_color", "src_alpha",
-        "one_minus_src_alpha", "dst_alpha", "one_minus_dst_alpha", "constant_color", "one_minus_constant_color",
-        "constant_alpha", "one_minus_constant_alpha", "src_alpha_saturate"};
-    return kNames[size_t(f)];
-}
-
-const char* equation_name(BlendEquation e) {
-    static constexpr const char* kNames[] = {"func_add", "func_subtract", "func_reverse_subtract", "min", "max"};
-    return kNames[size_t(e)];
-}
-
-const char* logic_name(LogicOp op) {
-    static constexpr const char* kNames[] = {"clear", "and", "and_reverse", "copy", "and_inverted", "noop",
-                                             "xor", "or", "nor", "equiv", "invert", "or_reverse",
-                                             "copy_inverted", "or_inverted", "nand", "set"};
-    return kNames[size_t(op)];
-}
 
 // "rgba", with a masked channel as '-'.
 std::string mask_text(const std::array<bool, 4>& mask) {
@@ -135,18 +150,6 @@ std::string framebuffer_text(const FragmentTrace& f) {
                        writes_text(f.writes, f.before.bytes), pixel_text(f.after));
 }
 
-std::string tests_json(const FragmentTests& t) {
-    auto num = [](float x) { return json_number(Values{}, double(x)); };
-    return fmt::format(
-        "{{\"scissor\":{{\"result\":\"{}\"}},"
-        "\"alpha\":{{\"result\":\"{}\",\"func\":\"{}\",\"alpha\":{},\"reference\":{},\"bytes\":{}}},"
-        "\"stencil\":{{\"result\":\"{}\",\"func\":\"{}\",\"reference\":{},\"mask\":{},\"stored\":{}}},"
-        "\"depth\":{{\"result\":\"{}\",\"func\":\"{}\",\"z\":{},\"stored\":{}}}}}",
-        result_key(t.scissor_test), result_key(t.alpha_test), func_name(t.alpha_func), num(t.alpha),
-        num(t.alpha_ref), t.alpha_bytes, result_key(t.stencil_test), func_name(t.stencil_func), t.stencil_ref,
-        t.stencil_mask,
-        t.stored_stencil, result_key(t.depth_test), func_name(t.depth_func), num(t.z), num(t.stored_depth));
-}
 
 // " (pass 'light', program a.vert + a.frag)"; nothing in a scene without passes.
 std::string pass_text(const std::string& pass, const std::string& program) {
@@ -170,15 +173,6 @@ void text_values(std::string& out, const char* title, const std::vector<NamedVal
     for (const NamedValue& v : list) text_value(out, "    ", v.name, v.value, v.type);
 }
 
-using SourceLines = std::map<std::string, std::vector<std::string>>;
-
-// The trimmed text of a step's line; empty when its source is unknown.
-std::string_view line_text(const SourceLines& lines, const InvocationTrace& t, const TraceStep& s) {
-    if (s.source >= t.files.size() || s.line == 0) return {};
-    auto file = lines.find(t.files[s.source]);
-    if (file == lines.end() || s.line > file->second.size()) return {};
-    return file->second[s.line - 1];
-}
 
 // "file:line  text": the line's text after its place.
 std::string where_text(const SourceLines& lines, const InvocationTrace& t, const TraceStep& s) {
@@ -224,86 +218,6 @@ void text_invocation(std::string& out, const InvocationTrace& t, const SourceLin
     text_values(out, "outputs", t.outputs);
 }
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20)
-            out += fmt::format("\\u{:04x}", int(c));
-        else
-            out += c;
-    }
-    return out + "\"";
-}
-
-// JSON has no NaN or infinity: those are strings.
-std::string json_number(const Values& v, double x) {
-    if (std::isnan(x)) return "\"NaN\"";
-    if (std::isinf(x)) return x > 0 ? "\"Infinity\"" : "\"-Infinity\"";
-    if (v.kind == ir::Kind::Bool) return x != 0 ? "true" : "false";
-    return v.kind == ir::Kind::F32 && !v.wide ? fmt::format("{}", float(x)) : fmt::format("{}", x);
-}
-
-std::string json_values(const Values& v) {
-    std::string out = "[";
-    for (size_t i = 0; i < v.c.size(); ++i) out += (i ? "," : "") + json_number(v, v.c[i]);
-    return out + "]";
-}
-
-// A matrix's rows (",\"rows\":[[...],...]", of each matrix of an array in
-// turn), as the text prints them; nothing for other types.
-std::string json_rows(const Values& v, const std::string& type) {
-    auto [cols, rows] = matrix_shape(type, v.c.size());
-    if (cols == 1) return "";
-    std::string out = ",\"rows\":[";
-    const size_t per_matrix = size_t(cols) * size_t(rows);
-    for (size_t m = 0; m < v.c.size(); m += per_matrix)
-        for (int r = 0; r < rows; ++r) {
-            out += m + size_t(r) ? ",[" : "[";
-            for (int c = 0; c < cols; ++c) {
-                size_t i = m + size_t(c) * size_t(rows) + size_t(r);
-                out += (c ? "," : "") + (i < v.c.size() ? json_number(v, v.c[i]) : std::string("null"));
-            }
-            out += "]";
-        }
-    return out + "]";
-}
-
-std::string json_named(const std::vector<NamedValue>& list) {
-    std::string out = "[";
-    for (size_t i = 0; i < list.size(); ++i)
-        out += fmt::format("{}{{\"name\":{},\"type\":{},\"value\":{}{}}}", i ? "," : "", json_string(list[i].name),
-                           json_string(list[i].type), json_values(list[i].value),
-                           json_rows(list[i].value, list[i].type));
-    return out + "]";
-}
-
-std::string json_step(const TraceStep& s, const InvocationTrace& t, const SourceLines& lines) {
-    static constexpr const char* kKinds[] = {"statement", "assign", "branch", "loop", "jump", "call"};
-    std::string out = fmt::format("{{\"kind\":\"{}\",\"depth\":{}", kKinds[size_t(s.kind)], s.depth);
-    if (!s.where.empty())
-        out += ",\"where\":" + json_string(s.where) + ",\"text\":" + json_string(std::string(line_text(lines, t, s)));
-    if (!s.name.empty()) out += ",\"name\":" + json_string(s.name);
-    if (s.kind == TraceStep::Kind::Assign)
-        out += ",\"type\":" + json_string(s.type) + ",\"value\":" + json_values(s.value) + json_rows(s.value, s.type);
-    if (s.kind == TraceStep::Kind::Branch) out += fmt::format(",\"taken\":{}", s.taken);
-    if (s.kind == TraceStep::Kind::Loop) out += fmt::format(",\"iteration\":{}", s.iteration);
-    return out + "}";
-}
-
-std::string json_invocation(const InvocationTrace& t, const SourceLines& lines) {
-    std::string steps = "[";
-    for (size_t i = 0; i < t.steps.size(); ++i) steps += (i ? ",\n" : "\n") + json_step(t.steps[i], t, lines);
-    std::string nan = "null";
-    if (t.first_nan)
-        nan = fmt::format("{{\"where\":{},\"op\":{},\"result\":{}}}", json_string(t.first_nan->where),
-                          json_string(t.first_nan->op), json_values(t.first_nan->result));
-    return fmt::format(
-        "{{\"inputs\":{},\"uniforms\":{},\"steps\":{}],\"outputs\":{},\"discarded\":{},"
-        "\"truncated\":{},\"stopped\":{},\"first_nan\":{}}}",
-        json_named(t.inputs), json_named(t.uniforms), steps, json_named(t.outputs), t.discarded, t.truncated,
-        t.stopped.empty() ? "null" : json_string(t.stopped), nan);
-}
 
 }  // namespace
 
@@ -332,28 +246,6 @@ std::string format_text(const PixelTrace& t) {
     return out;
 }
 
-std::string format_json(const PixelTrace& t) {
-    std::string fragments = "[";
-    for (size_t i = 0; i < t.fragments.size(); ++i) {
-        const FragmentTrace& f = t.fragments[i];
-        fragments += fmt::format(
-            "{}{{\"draw\":{},\"pass\":{},\"program\":{},\"primitive\":{},\"vertices\":[{},{},{}],\"front\":{},\"depth\":{},"
-            "\"outcome\":\"{}\",\"tests\":{},\"matches_render\":{},\"rendered\":{},\"trace\":{}}}",
-            i ? ",\n" : "\n", f.draw, f.pass.empty() ? "null" : json_string(f.pass), json_string(f.program),
-            f.primitive, f.vertices[0], f.vertices[1], f.vertices[2], f.front, f.depth,
-            outcome_key(f.outcome), tests_json(f.tests), f.matches_render, json_named(f.rendered),
-            json_invocation(f.trace, t.source_lines));
-    }
-    std::string vertices = "[";
-    for (size_t i = 0; i < t.vertices.size(); ++i)
-        vertices += fmt::format("{}{{\"draw\":{},\"pass\":{},\"program\":{},\"vertex\":{},\"matches_render\":{},\"trace\":{}}}",
-                                i ? ",\n" : "\n", t.vertices[i].draw,
-                                t.vertices[i].pass.empty() ? "null" : json_string(t.vertices[i].pass),
-                                json_string(t.vertices[i].program), t.vertices[i].vertex, t.vertices[i].matches_render,
-                                json_invocation(t.vertices[i].trace, t.source_lines));
-    return fmt::format("{{\"pixel\":[{},{}],\"scissored\":[{}],\"fragments\":{}],\"vertices\":{}]}}\n", t.x, t.y,
-                       fmt::join(t.scissored, ","), fragments, vertices);
-}
 
 std::string format_text(const NanReport& r) {
     auto finding = [](const char* what, const NanFinding& f) {
