@@ -117,7 +117,8 @@ template <class Fill>
 InvocationTrace replay(const Program& debug, const ir::Shader& shader, const DrawSnapshot& draw, rt::LaneMask live,
                        int lane, size_t& steps_left, Fill&& fill) {
     ShaderNames names(shader, state_of(debug).ir);
-    LaneRecorder recorder(names, draw.uniforms.data(), lane, std::min(InvocationTrace::kMaxSteps, steps_left));
+    LaneRecorder recorder(names, draw.uniforms.data(), lane, std::min(InvocationTrace::kMaxSteps, steps_left),
+                          draw.gl.texture_units.data());
     rt::TracedInterpreter in(shader, draw.uniforms.data(), rt::RunLimits(debug.exec), draw.gl.texture_units.data(),
                              debug.exec.precision, ~0u, recorder);
     fill(in);

@@ -21,8 +21,11 @@ Json number(double x, ir::Kind kind = ir::Kind::F32, bool wide = false) {
     if (std::isinf(x)) return x > 0 ? "Infinity" : "-Infinity";
     if (kind == ir::Kind::Bool) return x != 0;
     if (kind == ir::Kind::I32) return int64_t(x);
-    if (wide) return x;
-    return std::strtod(fmt::format("{}", float(x)).c_str(), nullptr);
+    const double shortest = wide ? x : std::strtod(fmt::format("{}", float(x)).c_str(), nullptr);
+    // Whole numbers as integers ("1", not "1.0"), as the values print in the text; -0 stays a float.
+    if (shortest == std::trunc(shortest) && std::fabs(shortest) < 0x1p53 && !(shortest == 0 && std::signbit(shortest)))
+        return int64_t(shortest);
+    return shortest;
 }
 
 Json values(const Values& v) {
@@ -60,8 +63,45 @@ Json named(const std::vector<NamedValue>& list) {
     return out;
 }
 
+Json vec4(const glm::vec4& v) { return {number(v[0]), number(v[1]), number(v[2]), number(v[3])}; }
+
+// A texture lookup: its operands, what the sampler computed (lod, lambda,
+// levels, texels) and its result.
+Json lookup(const TextureLookup& t) {
+    static constexpr const char* kTargets[] = {"1D", "2D", "3D", "cube"};
+    static constexpr const char* kLods[] = {"explicit", "implicit", "bias"};
+    const rt::LookupDetails& d = t.details;
+    Json coord = Json::array(), levels = Json::array(), texels = Json::array();
+    for (float c : t.coord) coord.push_back(number(c));
+    for (const rt::LookupLevel& l : d.levels)
+        levels.push_back({{"level", l.level}, {"size", {l.width, l.height, l.depth}}, {"linear", l.linear}});
+    for (const rt::LookupTexel& x : d.texels)
+        texels.push_back({{"level", x.level}, {"texel", {x.i, x.j, x.k}}, {"value", vec4(x.value)}});
+    Json j = {{"unit", t.unit},
+              {"samplers", t.samplers},
+              {"target", kTargets[size_t(t.info.target)]},
+              {"shadow", t.info.shadow},
+              {"lod_kind", kLods[size_t(t.info.lod)]},
+              {"coord", std::move(coord)},
+              {"ref", t.info.shadow ? number(t.ref) : Json(nullptr)},
+              {"lod", t.info.lod == ir::TexLod::Implicit ? Json(nullptr) : number(t.lod)},
+              {"complete", d.complete}};
+    if (d.complete) {
+        j["face"] = d.face >= 0 ? Json(d.face) : Json(nullptr);
+        j["face_coord"] = d.face >= 0 ? Json{number(d.face_coord.x), number(d.face_coord.y)} : Json(nullptr);
+        j["lod_implicit"] = t.info.lod == ir::TexLod::Explicit ? Json(nullptr) : number(d.lod_implicit);
+        j["lod_used"] = d.lod_used;
+        j["lambda"] = number(d.lambda);
+        j["magnified"] = d.magnified;
+        j["levels"] = std::move(levels);
+        j["texels"] = std::move(texels);
+    }
+    j["result"] = vec4({t.result[0], t.result[1], t.result[2], t.result[3]});
+    return j;
+}
+
 Json step(const TraceStep& s, const InvocationTrace& t, const SourceLines& lines) {
-    static constexpr const char* kKinds[] = {"statement", "assign", "branch", "loop", "jump", "call"};
+    static constexpr const char* kKinds[] = {"statement", "assign", "branch", "loop", "jump", "call", "lookup"};
     Json j = {{"kind", kKinds[size_t(s.kind)]}, {"depth", s.depth}};
     if (!s.where.empty()) {
         j["where"] = s.where;
@@ -75,6 +115,7 @@ Json step(const TraceStep& s, const InvocationTrace& t, const SourceLines& lines
     }
     if (s.kind == TraceStep::Kind::Branch) j["taken"] = s.taken;
     if (s.kind == TraceStep::Kind::Loop) j["iteration"] = s.iteration;
+    if (s.kind == TraceStep::Kind::Lookup && s.lookup < t.lookups.size()) j["lookup"] = lookup(t.lookups[s.lookup]);
     return j;
 }
 

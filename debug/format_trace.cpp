@@ -180,6 +180,59 @@ std::string where_text(const SourceLines& lines, const InvocationTrace& t, const
     return text.empty() ? s.where : fmt::format("{}  {}", s.where, text);
 }
 
+const char* target_name(ir::TexTarget t) {
+    static constexpr const char* kNames[] = {"1D", "2D", "3D", "cube"};
+    return kNames[size_t(t)];
+}
+
+std::string vec_text(const glm::vec4& v) { return fmt::format("vec4({}, {}, {}, {})", v[0], v[1], v[2], v[3]); }
+
+// "level 1 (64x64, linear): texel (15, 47) = vec4(...), ..." per level sampled.
+void text_levels(std::string& out, const std::string& pad, const rt::LookupDetails& d) {
+    for (const rt::LookupLevel& l : d.levels) {
+        std::string size = l.depth > 1 ? fmt::format("{}x{}x{}", l.width, l.height, l.depth)
+                                       : fmt::format("{}x{}", l.width, l.height);
+        out += fmt::format("{}level {} ({}, {}):", pad, l.level, size, l.linear ? "linear" : "nearest");
+        const char* sep = " ";
+        for (const rt::LookupTexel& x : d.texels) {
+            if (x.level != l.level) continue;
+            std::string at = x.i < 0 || x.j < 0 || x.k < 0 ? std::string("border")
+                             : l.depth > 1                   ? fmt::format("({}, {}, {})", x.i, x.j, x.k)
+                             : l.height > 1                  ? fmt::format("({}, {})", x.i, x.j)
+                                                             : fmt::format("({})", x.i);
+            out += fmt::format("{}texel {} = {}", sep, at, vec_text(x.value));
+            sep = ", ";
+        }
+        out += "\n";
+    }
+}
+
+// A texture lookup's operands, level of detail, levels and texels, and result.
+void text_lookup(std::string& out, const std::string& pad, const TextureLookup& t) {
+    const rt::LookupDetails& d = t.details;
+    std::string samplers = t.samplers.empty() ? "" : fmt::format(" ({})", fmt::join(t.samplers, ", "));
+    out += fmt::format("{}texture lookup: unit {}{}, {}{}, coord ({})", pad, t.unit, samplers,
+                       target_name(t.info.target), t.info.shadow ? " shadow" : "", fmt::join(t.coord, ", "));
+    if (t.info.shadow) out += fmt::format(", ref {}", t.ref);
+    if (!d.complete) {
+        out += ": no complete texture bound, (0, 0, 0, 1)\n";
+        return;
+    }
+    if (d.face >= 0) {
+        static constexpr const char* kFaces[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        out += fmt::format(", face {} at ({}, {})", kFaces[d.face], d.face_coord.x, d.face_coord.y);
+    }
+    if (t.info.lod == ir::TexLod::Explicit) out += fmt::format("; lod {} (explicit)", t.lod);
+    else {
+        out += fmt::format("; lod {} (from the derivatives{})", d.lod_implicit,
+                           d.lod_used ? "" : ", not needed: no mipmaps, one filter");
+        if (t.info.lod == ir::TexLod::ImplicitBias) out += fmt::format(", bias {}", t.lod);
+    }
+    out += fmt::format(", lambda {}: {}\n", d.lambda, d.magnified ? "magnified" : "minified");
+    text_levels(out, pad + "  ", d);
+    out += fmt::format("{}  => {}\n", pad, vec_text({t.result[0], t.result[1], t.result[2], t.result[3]}));
+}
+
 void text_invocation(std::string& out, const InvocationTrace& t, const SourceLines& lines) {
     text_values(out, "inputs", t.inputs);
     text_values(out, "uniforms read", t.uniforms);
@@ -205,6 +258,9 @@ void text_invocation(std::string& out, const InvocationTrace& t, const SourceLin
                 break;
             case TraceStep::Kind::Call:
                 out += fmt::format("{}{}  => call {}\n", pad, where_text(lines, t, s), s.name);
+                break;
+            case TraceStep::Kind::Lookup:
+                if (s.lookup < t.lookups.size()) text_lookup(out, pad + "    ", t.lookups[s.lookup]);
                 break;
         }
     }
