@@ -229,7 +229,9 @@ PixelValues pixel_values(const raster::ProbePixel& p, bool bytes) {
 // the shader inputs of its batch, for a replay.
 class PixelProbe final : public Probe {
 public:
-    PixelProbe(const std::vector<std::pair<int, int>>& window_pixels, bool keep_inputs) : keep_inputs_(keep_inputs) {
+    // `target`: the render target whose pixels these are; empty: the output framebuffer's.
+    PixelProbe(const std::vector<std::pair<int, int>>& window_pixels, bool keep_inputs, std::string target = {})
+        : keep_inputs_(keep_inputs), target_(std::move(target)) {
         for (size_t i = 0; i < window_pixels.size(); ++i)
             pixels_.emplace(key(window_pixels[i].first, window_pixels[i].second), int(i));
     }
@@ -240,13 +242,13 @@ public:
     }
     rt::LaneMask watched(const raster::ProbeBatch& b) override {
         rt::LaneMask lanes = 0;
-        if (!current().to_output) return 0;  // a pass drawing into a target: not the image's pixels
+        if (current().target != target_) return 0;  // a pass drawing into another framebuffer
         for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1)
             if (pixel_of(b, std::countr_zero(bits)) >= 0) lanes |= rt::LaneMask(1) << std::countr_zero(bits);
         return lanes;
     }
     void before_run(const raster::ProbeBatch& b) override {
-        if (!current().to_output) return;
+        if (current().target != target_) return;
         const ir::Shader& fs = state_of(*current().program).ir.fragment;
         for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1) {
             int lane = std::countr_zero(bits), pixel = pixel_of(b, lane);
@@ -294,6 +296,7 @@ private:
     static uint64_t key(int x, int y) { return uint64_t(uint32_t(x)) << 32 | uint32_t(y); }
     std::unordered_map<uint64_t, int> pixels_;  // window pixel -> its index
     bool keep_inputs_;
+    std::string target_;
     std::vector<Capture> pending_;
 };
 
@@ -404,7 +407,10 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
             const scene::Pass& pass = scene.passes[i];
             p.name = pass.name;
             p.to_output = pass.target < 0;
-            if (pass.target >= 0) p.height = scene.targets[size_t(pass.target)].height;
+            if (pass.target >= 0) {
+                p.height = scene.targets[size_t(pass.target)].height;
+                p.target = scene.targets[size_t(pass.target)].name;
+            }
             if (!pass.vertex.empty()) {
                 auto twin = debug_twin(pass, debug);
                 if (!twin) return twin.error();
@@ -464,15 +470,29 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
     if (state_of(debug).ir.uniform_words != state_of(program).ir.uniform_words)
         return Error("internal error: the debugging program's uniforms differ from the program's");
     PixelTrace out;
+    out.target = request.target;
+    int width = fb.width, height = fb.height;
+    std::string framebuffer = "image";
+    if (!request.target.empty()) {
+        auto t = std::ranges::find(scene.targets, request.target, &scene::RenderTarget::name);
+        if (t == scene.targets.end()) {
+            std::string names;
+            for (const scene::RenderTarget& rt : scene.targets) names += (names.empty() ? "" : ", ") + rt.name;
+            return Error(fmt::format("the scene has no render target '{}' ({})", request.target,
+                                     names.empty() ? "it has none" : "it has " + names));
+        }
+        width = t->width, height = t->height;
+        framebuffer = fmt::format("render target '{}'", t->name);
+    }
     int wy = -1;
     if (request.pixel) {
         out.x = request.pixel->first;
         out.y = request.pixel->second;
-        if (out.x < 0 || out.y < 0 || out.x >= fb.width || out.y >= fb.height)
-            return Error(fmt::format("pixel {},{} is outside the {}x{} image", out.x, out.y, fb.width, fb.height));
-        wy = fb.height - 1 - out.y;  // the framebuffer's row 0 is the bottom
+        if (out.x < 0 || out.y < 0 || out.x >= width || out.y >= height)
+            return Error(fmt::format("pixel {},{} is outside the {}x{} {}", out.x, out.y, width, height, framebuffer));
+        wy = height - 1 - out.y;  // the framebuffer's row 0 is the bottom
     }
-    PixelProbe probe({{out.x, wy}}, true);
+    PixelProbe probe({{out.x, wy}}, true, request.target);
     std::string name = request.sources.empty() ? "the command line's program" : sources_name(request.sources, {});
     add_lines(out.source_lines, request.sources);
     for (const scene::Pass& pass : scene.passes) {
@@ -483,7 +503,8 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
     const auto& draws = probe.draws();
     if (request.pixel)
         for (uint32_t d = 0; d < draws.size(); ++d)
-            if (outside_scissor(draws[d].gl, out.x, wy)) out.scissored.push_back(d);
+            if (probe.passes[draws[d].pass].target == request.target && outside_scissor(draws[d].gl, out.x, wy))
+                out.scissored.push_back(d);
     std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
     size_t steps_left = InvocationTrace::kMaxTraceSteps;
     for (Capture& c : probe.captures_) {

@@ -94,6 +94,7 @@ struct VertexTrace {
 
 struct PixelTrace {
     int x = 0, y = 0;                      // image coordinates, top-left origin
+    std::string target;                    // the render target traced (TraceRequest::target); empty: the image
     std::vector<FragmentTrace> fragments;  // in draw order
     std::vector<uint32_t> scissored;       // draws whose scissor box leaves the pixel out
     std::vector<VertexTrace> vertices;     // of the fragments' primitives, or --vertex
@@ -118,6 +119,9 @@ struct TraceRequest {
     // The program's shaders: their names name it in passes that use it, and
     // the trace shows their lines' text.
     std::vector<ShaderSource> sources;
+    // The framebuffer of `pixel`: a render target's name (its fragments, of
+    // the passes that draw into it), or empty: the output image's.
+    std::string target;
 };
 
 // Renders the scene into `fb` (one thread, and no early depth test: hidden
@@ -154,6 +158,7 @@ public:
         std::string name, program_name;    // name: empty in a scene without passes
         bool to_output = true;             // draws into the output framebuffer (not a target)
         int height = 0;                    // of the framebuffer it draws into
+        std::string target;                // the render target's name; empty: the output framebuffer
     };
     std::vector<PassPrograms> passes;  // one per pass; one in a scene without passes
     size_t pass = 0;

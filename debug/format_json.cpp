@@ -198,6 +198,7 @@ std::string format_json(const PixelTrace& t) {
                             {"matches_render", v.matches_render},
                             {"trace", invocation(v.trace, t.source_lines)}});
     Json out = {{"pixel", {t.x, t.y}},
+                {"target", t.target.empty() ? Json(nullptr) : Json(t.target)},
                 {"scissored", t.scissored},
                 {"fragments", std::move(fragments)},
                 {"vertices", std::move(vertices)}};

@@ -282,11 +282,14 @@ std::string format_text(const PixelTrace& t) {
     for (uint32_t d : t.scissored)
         out += fmt::format("draw {}: the pixel is outside its scissor box: the scissor test removes its fragments here\n",
                            d);
-    if (t.fragments.empty() && t.vertices.empty()) return out + fmt::format("pixel {},{}: no fragment\n", t.x, t.y);
+    // "pixel 12,34", or "render target 'image' pixel 12,34".
+    const std::string pixel = t.target.empty() ? fmt::format("pixel {},{}", t.x, t.y)
+                                               : fmt::format("render target '{}' pixel {},{}", t.target, t.x, t.y);
+    if (t.fragments.empty() && t.vertices.empty()) return out + pixel + ": no fragment\n";
     for (size_t i = 0; i < t.fragments.size(); ++i) {
         const FragmentTrace& f = t.fragments[i];
-        out += fmt::format("fragment {} at pixel {},{}: draw {}{}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
-                           i, t.x, t.y, f.draw, pass_text(f.pass, f.program), f.primitive, f.vertices[0],
+        out += fmt::format("fragment {} at {}: draw {}{}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
+                           i, pixel, f.draw, pass_text(f.pass, f.program), f.primitive, f.vertices[0],
                            f.vertices[1], f.vertices[2], f.front ? "front" : "back", f.depth,
                            outcome_text(f.outcome));
         out += tests_text(f.tests);

@@ -498,3 +498,45 @@ TEST_CASE("the pixel history shows every colour buffer before and after blending
                                      "\"mask\":[true,true,true,true]}"));
     CHECK_THAT(json, Catch::Contains("\"logic_op\":\"xor\""));
 }
+
+// --target: the pixel history of a render target, of the passes that draw
+// into it. The blur's vertical pass samples target 'half': the texels its
+// lookup fetched are that target's pixels as its last fragment left them.
+TEST_CASE("the pixel history of a render target gives the texels a later pass samples", "[debug]") {
+    std::vector<ShaderSource> vs{shader("shaders/minimal.vert")}, fs{shader("shaders/minimal.frag")};
+    auto scene = scene::load_scene(kRoot + "/scenes/blur.toml");
+    auto prog = Program::compile(vs, fs);
+    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
+    REQUIRE((scene && prog && dbg));
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    debug::TraceRequest request;
+    request.pixel = {64, 64};
+    auto image = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE(image);
+    REQUIRE(image->fragments.size() == 1);
+    REQUIRE_FALSE(image->fragments[0].trace.lookups.empty());
+    const debug::TextureLookup& lookup = image->fragments[0].trace.lookups[0];
+    REQUIRE(lookup.samplers == std::vector<std::string>{"image"});
+    REQUIRE(lookup.details.texels.size() == 4);
+    for (const rt::LookupTexel& texel : lookup.details.texels) {
+        request.target = "half";
+        request.pixel = {texel.i, 127 - texel.j};  // texture rows go bottom up, image rows top down
+        auto half = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE(half);
+        REQUIRE_FALSE(half->fragments.empty());
+        for (const debug::FragmentTrace& f : half->fragments) CHECK(f.pass == "horizontal");
+        const debug::PixelValues& after = half->fragments.back().after;
+        for (int k = 0; k < 4; ++k) CHECK(after.color[0][size_t(k)] / 255.0f == texel.value[k]);
+        CHECK_THAT(debug::format_text(*half), Catch::Contains("fragment 0 at render target 'half' pixel "));
+        CHECK_THAT(debug::format_json(*half), Catch::Contains("\"target\":\"half\""));
+    }
+    request.target = "nope";
+    auto missing = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE_FALSE(missing);
+    CHECK_THAT(missing.error().str(), Catch::Contains("the scene has no render target 'nope' (it has half, image)"));
+    request.target = "half";
+    request.pixel = {128, 0};
+    auto outside = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE_FALSE(outside);
+    CHECK_THAT(outside.error().str(), Catch::Contains("pixel 128,0 is outside the 128x128 render target 'half'"));
+}
