@@ -81,6 +81,8 @@ grep -q "^fragment 0 at render target 'image' pixel 64,64: draw 0 (pass 'scene',
 grep -q "^  after:  colour 0 rgba8(" "$tmp/target.txt" || fail "trace --target: no framebuffer after the fragment"
 "$glslrun" trace --pixel 64,64 --target nope $blur 2>"$tmp/target_err.txt" && fail "trace --target nope succeeded"
 grep -q "no render target 'nope' (it has half, image)" "$tmp/target_err.txt" || fail "trace --target nope: $(cat "$tmp/target_err.txt")"
+"$glslrun" trace --target image $blur 2>"$tmp/target_err.txt" && fail "trace --target without --pixel succeeded"
+grep -q "render target of --pixel X,Y, which is missing" "$tmp/target_err.txt" || fail "trace --target alone: $(cat "$tmp/target_err.txt")"
 
 # The replay equals the render whatever the mode, size and program (a loop and calls in multi_light).
 for mode in precise fast reference; do

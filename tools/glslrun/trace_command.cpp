@@ -41,6 +41,8 @@ int run_trace(const TraceOptions& o) {
     if (!in) return fail(in.error());
     if (in->scene.empty() || (in->vertex.empty() && in->fragment.empty()))
         return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"), kToolError);
+    if (!o.target.empty() && o.pixel.empty())
+        return fail(Error("--target NAME names the render target of --pixel X,Y, which is missing"), kToolError);
     if (o.pixel.empty() && !o.vertex && !o.find_nan)
         return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"), kToolError);
     std::optional<std::pair<int, int>> pixel;
