@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -77,6 +78,7 @@ struct Capture {
     int lane = 0;
     rt::LaneMask live = 0;
     std::vector<std::pair<std::string, Words>> inputs;  // optimized input bindings: kLanes words per component
+    int pixel = 0;  // which of the probe's pixels
 };
 
 // One lane of a binding's registers, as the interpreter's callers see them (32-bit words).
@@ -115,7 +117,8 @@ template <class Fill>
 InvocationTrace replay(const Program& debug, const ir::Shader& shader, const DrawSnapshot& draw, rt::LaneMask live,
                        int lane, size_t& steps_left, Fill&& fill) {
     ShaderNames names(shader, state_of(debug).ir);
-    LaneRecorder recorder(names, draw.uniforms.data(), lane, std::min(InvocationTrace::kMaxSteps, steps_left));
+    LaneRecorder recorder(names, draw.uniforms.data(), lane, std::min(InvocationTrace::kMaxSteps, steps_left),
+                          draw.gl.texture_units.data());
     rt::TracedInterpreter in(shader, draw.uniforms.data(), rt::RunLimits(debug.exec), draw.gl.texture_units.data(),
                              debug.exec.precision, ~0u, recorder);
     fill(in);
@@ -193,20 +196,69 @@ FragmentTests tests_of(const GLState& gl, const raster::ProbeTests& t, int lane,
     return f;
 }
 
+// The colour operations of a draw of `fs` under `gl`.
+ColorWrites color_writes(const GLState& gl, const ir::Shader& fs) {
+    ColorWrites w;
+    bool frag_color = false;
+    for (const ir::Binding& b : fs.outputs) frag_color |= b.name == "gl_FragColor";
+    for (int i = 0; i < gl.draw_buffers && i < kMaxDrawBuffers; ++i) {
+        const std::string element = fmt::format("gl_FragData[{}]", i);
+        bool written = frag_color;
+        for (const ir::Binding& b : fs.outputs) written |= b.name == element;
+        if (written) w.buffers.push_back(i);
+    }
+    w.blend = gl.blend;
+    w.blend_state = gl.blend_state;
+    w.logic_op = gl.color_logic_op;
+    w.logic = gl.logic_op;
+    w.mask = gl.color_mask;
+    return w;
+}
+
+PixelValues pixel_values(const raster::ProbePixel& p, bool bytes) {
+    PixelValues v;
+    v.bytes = bytes;
+    v.color.assign(p.color.begin(), p.color.begin() + std::clamp(p.buffers, 0, kMaxDrawBuffers));
+    v.depth = p.depth;
+    v.stencil = p.stencil;
+    return v;
+}
+
+// Captures every fragment at some window pixels of the output framebuffer,
+// with the framebuffer there before and after each; `keep_inputs`: with
+// the shader inputs of its batch, for a replay.
 class PixelProbe final : public Probe {
 public:
-    PixelProbe(int x, int y) : x_(x), y_(y) {}
+    // `target`: the render target whose pixels these are; empty: the output framebuffer's.
+    PixelProbe(const std::vector<std::pair<int, int>>& window_pixels, bool keep_inputs, std::string target = {})
+        : keep_inputs_(keep_inputs), target_(std::move(target)) {
+        for (size_t i = 0; i < window_pixels.size(); ++i)
+            pixels_.emplace(key(window_pixels[i].first, window_pixels[i].second), int(i));
+    }
+    // The index into the pixels of lane `lane`'s, or -1.
+    int pixel_of(const raster::ProbeBatch& b, int lane) const {
+        auto found = pixels_.find(key(b.x[size_t(lane)], b.y[size_t(lane)]));
+        return found == pixels_.end() ? -1 : found->second;
+    }
+    rt::LaneMask watched(const raster::ProbeBatch& b) override {
+        rt::LaneMask lanes = 0;
+        if (current().target != target_) return 0;  // a pass drawing into another framebuffer
+        for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1)
+            if (pixel_of(b, std::countr_zero(bits)) >= 0) lanes |= rt::LaneMask(1) << std::countr_zero(bits);
+        return lanes;
+    }
     void before_run(const raster::ProbeBatch& b) override {
-        if (!current().to_output) return;  // a pass drawing into a target: not the image's pixel
+        if (current().target != target_) return;
         const ir::Shader& fs = state_of(*current().program).ir.fragment;
         for (rt::LaneMask bits = b.covered; bits; bits &= bits - 1) {
-            int lane = std::countr_zero(bits);
-            if (b.x[size_t(lane)] != x_ || b.y[size_t(lane)] != y_) continue;
+            int lane = std::countr_zero(bits), pixel = pixel_of(b, lane);
+            if (pixel < 0) continue;
             Capture c{describe(*b.quad_prim[lane / 4], draw_index(), current(), b.z[size_t(lane)]),
                       lane,
                       b.lanes == 64 ? ~rt::LaneMask(0) : (rt::LaneMask(1) << b.lanes) - 1,
-                      {}};
-            for (const ir::Binding& in : fs.inputs) {
+                      {},
+                      pixel};
+            for (const ir::Binding& in : keep_inputs_ ? fs.inputs : std::vector<ir::Binding>{}) {
                 Words w;
                 for (uint32_t k = 0; k < in.count; ++k)
                     w.insert(w.end(), b.interp.lanes(in.first + k), b.interp.lanes(in.first + k) + rt::kLanes);
@@ -217,18 +269,23 @@ public:
     }
     void after_write(const raster::ProbeBatch& b, rt::LaneMask alive, rt::LaneMask written,
                      const raster::ProbeTests& tests) override {
+        const ir::Shader& fs = state_of(*current().program).ir.fragment;
         for (Capture& c : pending_) {
             using O = FragmentTrace::Outcome;
             using R = FragmentTests::Result;
             bool is_alive = (alive >> c.lane) & 1, is_written = (written >> c.lane) & 1;
-            c.info.tests = tests_of(draws_.back().gl, tests, c.lane, c.info.front, is_alive);
+            const GLState& gl = draws_.back().gl;
+            c.info.tests = tests_of(gl, tests, c.lane, c.info.front, is_alive);
             const FragmentTests& t = c.info.tests;
             c.info.outcome = !is_alive                        ? O::Discarded
                              : is_written                     ? O::Written
                              : t.alpha_test == R::Failed      ? O::AlphaFailed
                              : t.stencil_test == R::Failed    ? O::StencilFailed
                                                               : O::DepthFailed;
-            c.info.rendered = outputs_of(state_of(*current().program).ir.fragment.outputs, b.interp, c.lane);
+            c.info.rendered = outputs_of(fs.outputs, b.interp, c.lane);
+            c.info.before = pixel_values(tests.before[size_t(c.lane)], tests.alpha_bytes);
+            c.info.after = pixel_values(tests.after[size_t(c.lane)], tests.alpha_bytes);
+            c.info.writes = color_writes(gl, fs);
             captures_.push_back(std::move(c));
         }
         pending_.clear();
@@ -236,7 +293,10 @@ public:
     std::vector<Capture> captures_;
 
 private:
-    int x_, y_;
+    static uint64_t key(int x, int y) { return uint64_t(uint32_t(x)) << 32 | uint32_t(y); }
+    std::unordered_map<uint64_t, int> pixels_;  // window pixel -> its index
+    bool keep_inputs_;
+    std::string target_;
     std::vector<Capture> pending_;
 };
 
@@ -347,7 +407,10 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
             const scene::Pass& pass = scene.passes[i];
             p.name = pass.name;
             p.to_output = pass.target < 0;
-            if (pass.target >= 0) p.height = scene.targets[size_t(pass.target)].height;
+            if (pass.target >= 0) {
+                p.height = scene.targets[size_t(pass.target)].height;
+                p.target = scene.targets[size_t(pass.target)].name;
+            }
             if (!pass.vertex.empty()) {
                 auto twin = debug_twin(pass, debug);
                 if (!twin) return twin.error();
@@ -385,20 +448,51 @@ Status render_with_probe(Program& program, const Program& debug, const std::stri
     return st;
 }
 
+Result<std::vector<PixelHistory>> pixel_history(Program& program, const Program& debug, const scene::Scene& scene,
+                                                Framebuffer& fb, const std::vector<std::pair<int, int>>& pixels) {
+    std::vector<PixelHistory> out;
+    std::vector<std::pair<int, int>> window;
+    for (auto [x, y] : pixels) {
+        if (x < 0 || y < 0 || x >= fb.width || y >= fb.height)
+            return Error(fmt::format("pixel {},{} is outside the {}x{} image", x, y, fb.width, fb.height));
+        out.push_back({x, y, {}});
+        window.emplace_back(x, fb.height - 1 - y);  // the framebuffer's row 0 is the bottom
+    }
+    PixelProbe probe(window, false);
+    if (Status st = render_with_probe(program, debug, "the command line's program", scene, fb, probe); !st)
+        return st.error();
+    for (Capture& c : probe.captures_) out[size_t(c.pixel)].fragments.push_back(std::move(c.info));
+    return out;
+}
+
 Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Scene& scene, Framebuffer& fb,
                          const TraceRequest& request) {
     if (state_of(debug).ir.uniform_words != state_of(program).ir.uniform_words)
         return Error("internal error: the debugging program's uniforms differ from the program's");
     PixelTrace out;
+    out.target = request.target;
+    int width = fb.width, height = fb.height;
+    std::string framebuffer = "image";
+    if (!request.target.empty()) {
+        auto t = std::ranges::find(scene.targets, request.target, &scene::RenderTarget::name);
+        if (t == scene.targets.end()) {
+            std::string names;
+            for (const scene::RenderTarget& rt : scene.targets) names += (names.empty() ? "" : ", ") + rt.name;
+            return Error(fmt::format("the scene has no render target '{}' ({})", request.target,
+                                     names.empty() ? "it has none" : "it has " + names));
+        }
+        width = t->width, height = t->height;
+        framebuffer = fmt::format("render target '{}'", t->name);
+    }
     int wy = -1;
     if (request.pixel) {
         out.x = request.pixel->first;
         out.y = request.pixel->second;
-        if (out.x < 0 || out.y < 0 || out.x >= fb.width || out.y >= fb.height)
-            return Error(fmt::format("pixel {},{} is outside the {}x{} image", out.x, out.y, fb.width, fb.height));
-        wy = fb.height - 1 - out.y;  // the framebuffer's row 0 is the bottom
+        if (out.x < 0 || out.y < 0 || out.x >= width || out.y >= height)
+            return Error(fmt::format("pixel {},{} is outside the {}x{} {}", out.x, out.y, width, height, framebuffer));
+        wy = height - 1 - out.y;  // the framebuffer's row 0 is the bottom
     }
-    PixelProbe probe(out.x, wy);
+    PixelProbe probe({{out.x, wy}}, true, request.target);
     std::string name = request.sources.empty() ? "the command line's program" : sources_name(request.sources, {});
     add_lines(out.source_lines, request.sources);
     for (const scene::Pass& pass : scene.passes) {
@@ -409,7 +503,8 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
     const auto& draws = probe.draws();
     if (request.pixel)
         for (uint32_t d = 0; d < draws.size(); ++d)
-            if (outside_scissor(draws[d].gl, out.x, wy)) out.scissored.push_back(d);
+            if (probe.passes[draws[d].pass].target == request.target && outside_scissor(draws[d].gl, out.x, wy))
+                out.scissored.push_back(d);
     std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
     size_t steps_left = InvocationTrace::kMaxTraceSteps;
     for (Capture& c : probe.captures_) {

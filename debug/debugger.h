@@ -43,6 +43,26 @@ struct FragmentTests {
     float z = 0, stored_depth = 0;  // z func stored
 };
 
+// The framebuffer at the traced pixel (raster::ProbePixel), as stored.
+struct PixelValues {
+    bool bytes = true;  // RGBA8 colour buffers: each channel is the byte n of n/255; else floats
+    std::vector<std::array<float, 4>> color;  // per colour buffer of the framebuffer
+    float depth = 1;
+    uint32_t stencil = 0;
+};
+
+// What a draw does with a fragment's colour after the tests (GL 2.1 §4.1.8
+// to §4.2.2): the buffers written, blending, logic op (RGBA8 buffers only)
+// and the colour mask.
+struct ColorWrites {
+    std::vector<int> buffers;  // glDrawBuffers' buffers the shader writes (gl_FragColor: all of them)
+    bool blend = false;
+    BlendState blend_state;
+    bool logic_op = false;
+    LogicOp logic = LogicOp::Copy;
+    std::array<bool, 4> mask{true, true, true, true};
+};
+
 struct FragmentTrace {
     // The first test the fragment failed, or Written; a discarded fragment
     // meets no test.
@@ -55,6 +75,11 @@ struct FragmentTrace {
     float depth = 0;  // window z
     Outcome outcome = Outcome::Written;
     FragmentTests tests;
+    // The pixel just before and just after this fragment's tests and writes,
+    // as the render stored it: `after` of the last fragment is the image's
+    // pixel unless a later clear changed it.
+    PixelValues before, after;
+    ColorWrites writes;
     bool matches_render = true;        // the replay's outputs equal the render's, bit for bit
     std::vector<NamedValue> rendered;  // the render's outputs (before quantization)
     InvocationTrace trace;
@@ -69,12 +94,23 @@ struct VertexTrace {
 
 struct PixelTrace {
     int x = 0, y = 0;                      // image coordinates, top-left origin
+    std::string target;                    // the render target traced (TraceRequest::target); empty: the image
     std::vector<FragmentTrace> fragments;  // in draw order
     std::vector<uint32_t> scissored;       // draws whose scissor box leaves the pixel out
     std::vector<VertexTrace> vertices;     // of the fragments' primitives, or --vertex
     // Every program's source lines by file name (ShaderSource::name): the text of each step's line.
     std::map<std::string, std::vector<std::string>> source_lines;
 };
+
+// Every fragment at each of `pixels` (image coordinates, top-left origin)
+// without the replays: per pixel, in draw order, its header, tests, the
+// framebuffer before and after it, and the render's outputs.
+struct PixelHistory {
+    int x = 0, y = 0;
+    std::vector<FragmentTrace> fragments;  // `trace` empty
+};
+Result<std::vector<PixelHistory>> pixel_history(Program& program, const Program& debug, const scene::Scene& scene,
+                                                Framebuffer& fb, const std::vector<std::pair<int, int>>& pixels);
 
 struct TraceRequest {
     std::optional<std::pair<int, int>> pixel;  // image coordinates, top-left origin
@@ -83,6 +119,9 @@ struct TraceRequest {
     // The program's shaders: their names name it in passes that use it, and
     // the trace shows their lines' text.
     std::vector<ShaderSource> sources;
+    // The framebuffer of `pixel`: a render target's name (its fragments, of
+    // the passes that draw into it), or empty: the output image's.
+    std::string target;
 };
 
 // Renders the scene into `fb` (one thread, and no early depth test: hidden
@@ -119,6 +158,7 @@ public:
         std::string name, program_name;    // name: empty in a scene without passes
         bool to_output = true;             // draws into the output framebuffer (not a target)
         int height = 0;                    // of the framebuffer it draws into
+        std::string target;                // the render target's name; empty: the output framebuffer
     };
     std::vector<PassPrograms> passes;  // one per pass; one in a scene without passes
     size_t pass = 0;

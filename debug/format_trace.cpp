@@ -1,4 +1,4 @@
-// The trace and the NaN report as text (glslrun trace) and JSON (--json).
+// The trace and the NaN report as text (glslrun trace); format_json.cpp writes the JSON.
 #include <cmath>
 #include <map>
 #include <string_view>
@@ -6,10 +6,60 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "debug/debugger.h"
+#include "debug/format_common.h"
+
+namespace glslrun::debug::detail {
+
+const char* outcome_key(FragmentTrace::Outcome o) {
+    static constexpr const char* kKeys[] = {"written", "depth_failed", "discarded", "alpha_failed", "stencil_failed"};
+    return kKeys[size_t(o)];
+}
+
+const char* func_name(CompareFunc f) {
+    static constexpr const char* kNames[] = {"never",   "less",     "equal",  "lequal",
+                                             "greater", "notequal", "gequal", "always"};
+    return kNames[size_t(f)];
+}
+
+const char* result_key(FragmentTests::Result r) {
+    static constexpr const char* kKeys[] = {"off", "passed", "failed", "not_reached"};
+    return kKeys[size_t(r)];
+}
+
+const char* factor_name(BlendFactor f) {
+    static constexpr const char* kNames[] = {
+        "zero", "one", "src_color", "one_minus_src_color", "dst_color", "one_minus_dst_color", "src_alpha",
+        "one_minus_src_alpha", "dst_alpha", "one_minus_dst_alpha", "constant_color", "one_minus_constant_color",
+        "constant_alpha", "one_minus_constant_alpha", "src_alpha_saturate"};
+    return kNames[size_t(f)];
+}
+
+const char* equation_name(BlendEquation e) {
+    static constexpr const char* kNames[] = {"func_add", "func_subtract", "func_reverse_subtract", "min", "max"};
+    return kNames[size_t(e)];
+}
+
+const char* logic_name(LogicOp op) {
+    static constexpr const char* kNames[] = {"clear", "and", "and_reverse", "copy", "and_inverted", "noop",
+                                             "xor", "or", "nor", "equiv", "invert", "or_reverse",
+                                             "copy_inverted", "or_inverted", "nand", "set"};
+    return kNames[size_t(op)];
+}
+
+// The trimmed text of a step's line; empty when its source is unknown.
+std::string_view line_text(const SourceLines& lines, const InvocationTrace& t, const TraceStep& s) {
+    if (s.source >= t.files.size() || s.line == 0) return {};
+    auto file = lines.find(t.files[s.source]);
+    if (file == lines.end() || s.line > file->second.size()) return {};
+    return file->second[s.line - 1];
+}
+
+}  // namespace glslrun::debug::detail
 
 namespace glslrun::debug {
 namespace {
+
+using namespace detail;
 
 const char* outcome_text(FragmentTrace::Outcome o) {
     switch (o) {
@@ -27,21 +77,6 @@ const char* outcome_text(FragmentTrace::Outcome o) {
     return "?";
 }
 
-const char* outcome_key(FragmentTrace::Outcome o) {
-    static constexpr const char* kKeys[] = {"written", "depth_failed", "discarded", "alpha_failed", "stencil_failed"};
-    return kKeys[size_t(o)];
-}
-
-const char* func_name(CompareFunc f) {
-    static constexpr const char* kNames[] = {"never",   "less",     "equal",  "lequal",
-                                             "greater", "notequal", "gequal", "always"};
-    return kNames[size_t(f)];
-}
-
-const char* result_key(FragmentTests::Result r) {
-    static constexpr const char* kKeys[] = {"off", "passed", "failed", "not_reached"};
-    return kKeys[size_t(r)];
-}
 
 // "alpha 0.25 greater 0.5 (reference): fails", "depth off", "stencil not reached".
 std::string test_text(const char* name, FragmentTests::Result r, const std::string& comparison) {
@@ -66,20 +101,55 @@ std::string tests_text(const FragmentTests& t) {
                   fmt::format("{} {} {} (stored)", t.z, func_name(t.depth_func), t.stored_depth)));
 }
 
-std::string json_number(const Values& v, double x);
 
-std::string tests_json(const FragmentTests& t) {
-    auto num = [](float x) { return json_number(Values{}, double(x)); };
-    return fmt::format(
-        "{{\"scissor\":{{\"result\":\"{}\"}},"
-        "\"alpha\":{{\"result\":\"{}\",\"func\":\"{}\",\"alpha\":{},\"reference\":{},\"bytes\":{}}},"
-        "\"stencil\":{{\"result\":\"{}\",\"func\":\"{}\",\"reference\":{},\"mask\":{},\"stored\":{}}},"
-        "\"depth\":{{\"result\":\"{}\",\"func\":\"{}\",\"z\":{},\"stored\":{}}}}}",
-        result_key(t.scissor_test), result_key(t.alpha_test), func_name(t.alpha_func), num(t.alpha),
-        num(t.alpha_ref), t.alpha_bytes, result_key(t.stencil_test), func_name(t.stencil_func), t.stencil_ref,
-        t.stencil_mask,
-        t.stored_stencil, result_key(t.depth_test), func_name(t.depth_func), num(t.z), num(t.stored_depth));
+
+// "rgba", with a masked channel as '-'.
+std::string mask_text(const std::array<bool, 4>& mask) {
+    std::string out = "rgba";
+    for (size_t k = 0; k < 4; ++k)
+        if (!mask[k]) out[k] = '-';
+    return out;
 }
+
+// A colour as stored: "rgba8(204, 51, 0, 255)" (the bytes n of n/255) or "vec4(...)".
+std::string stored_color(const std::array<float, 4>& c, bool bytes) {
+    if (bytes) return fmt::format("rgba8({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
+    return fmt::format("vec4({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
+}
+
+// "colour 0 rgba8(...), depth 1, stencil 0".
+std::string pixel_text(const PixelValues& p) {
+    std::string out;
+    for (size_t b = 0; b < p.color.size(); ++b) out += fmt::format("colour {} {}, ", b, stored_color(p.color[b], p.bytes));
+    return out + fmt::format("depth {}, stencil {}", p.depth, p.stencil);
+}
+
+// "buffers 0; blend (src_alpha, one_minus_src_alpha) func_add; logic op off; mask rgba".
+std::string writes_text(const ColorWrites& w, bool bytes) {
+    std::string blend = "off";
+    if (w.blend) {
+        const BlendState& b = w.blend_state;
+        blend = fmt::format("(src {}, dst {}) {}", factor_name(b.src_rgb), factor_name(b.dst_rgb),
+                            equation_name(b.equation_rgb));
+        if (b.src_alpha != b.src_rgb || b.dst_alpha != b.dst_rgb || b.equation_alpha != b.equation_rgb)
+            blend += fmt::format(", alpha (src {}, dst {}) {}", factor_name(b.src_alpha), factor_name(b.dst_alpha),
+                                 equation_name(b.equation_alpha));
+        auto constant = [](BlendFactor f) { return f >= BlendFactor::ConstantColor && f <= BlendFactor::OneMinusConstantAlpha; };
+        if (constant(b.src_rgb) || constant(b.dst_rgb) || constant(b.src_alpha) || constant(b.dst_alpha))
+            blend += fmt::format(", constant vec4({}, {}, {}, {})", b.color[0], b.color[1], b.color[2], b.color[3]);
+    }
+    std::string logic = !w.logic_op ? "off" : bytes ? logic_name(w.logic) : "ignored (float buffers)";
+    return fmt::format("buffers {}; blend {}; logic op {}; mask {}",
+                       w.buffers.empty() ? std::string("none") : fmt::format("{}", fmt::join(w.buffers, ", ")), blend,
+                       logic, mask_text(w.mask));
+}
+
+// The framebuffer at the pixel before and after a fragment, and what its draw does with colour.
+std::string framebuffer_text(const FragmentTrace& f) {
+    return fmt::format("  before: {}\n  writes: {}\n  after:  {}\n", pixel_text(f.before),
+                       writes_text(f.writes, f.before.bytes), pixel_text(f.after));
+}
+
 
 // " (pass 'light', program a.vert + a.frag)"; nothing in a scene without passes.
 std::string pass_text(const std::string& pass, const std::string& program) {
@@ -103,20 +173,64 @@ void text_values(std::string& out, const char* title, const std::vector<NamedVal
     for (const NamedValue& v : list) text_value(out, "    ", v.name, v.value, v.type);
 }
 
-using SourceLines = std::map<std::string, std::vector<std::string>>;
-
-// The trimmed text of a step's line; empty when its source is unknown.
-std::string_view line_text(const SourceLines& lines, const InvocationTrace& t, const TraceStep& s) {
-    if (s.source >= t.files.size() || s.line == 0) return {};
-    auto file = lines.find(t.files[s.source]);
-    if (file == lines.end() || s.line > file->second.size()) return {};
-    return file->second[s.line - 1];
-}
 
 // "file:line  text": the line's text after its place.
 std::string where_text(const SourceLines& lines, const InvocationTrace& t, const TraceStep& s) {
     std::string_view text = line_text(lines, t, s);
     return text.empty() ? s.where : fmt::format("{}  {}", s.where, text);
+}
+
+const char* target_name(ir::TexTarget t) {
+    static constexpr const char* kNames[] = {"1D", "2D", "3D", "cube"};
+    return kNames[size_t(t)];
+}
+
+std::string vec_text(const glm::vec4& v) { return fmt::format("vec4({}, {}, {}, {})", v[0], v[1], v[2], v[3]); }
+
+// "level 1 (64x64, linear): texel (15, 47) = vec4(...), ..." per level sampled.
+void text_levels(std::string& out, const std::string& pad, const rt::LookupDetails& d) {
+    for (const rt::LookupLevel& l : d.levels) {
+        std::string size = l.depth > 1 ? fmt::format("{}x{}x{}", l.width, l.height, l.depth)
+                                       : fmt::format("{}x{}", l.width, l.height);
+        out += fmt::format("{}level {} ({}, {}):", pad, l.level, size, l.linear ? "linear" : "nearest");
+        const char* sep = " ";
+        for (const rt::LookupTexel& x : d.texels) {
+            if (x.level != l.level) continue;
+            std::string at = x.i < 0 || x.j < 0 || x.k < 0 ? std::string("border")
+                             : l.depth > 1                   ? fmt::format("({}, {}, {})", x.i, x.j, x.k)
+                             : l.height > 1                  ? fmt::format("({}, {})", x.i, x.j)
+                                                             : fmt::format("({})", x.i);
+            out += fmt::format("{}texel {} = {}", sep, at, vec_text(x.value));
+            sep = ", ";
+        }
+        out += "\n";
+    }
+}
+
+// A texture lookup's operands, level of detail, levels and texels, and result.
+void text_lookup(std::string& out, const std::string& pad, const TextureLookup& t) {
+    const rt::LookupDetails& d = t.details;
+    std::string samplers = t.samplers.empty() ? "" : fmt::format(" ({})", fmt::join(t.samplers, ", "));
+    out += fmt::format("{}texture lookup: unit {}{}, {}{}, coord ({})", pad, t.unit, samplers,
+                       target_name(t.info.target), t.info.shadow ? " shadow" : "", fmt::join(t.coord, ", "));
+    if (t.info.shadow) out += fmt::format(", ref {}", t.ref);
+    if (!d.complete) {
+        out += ": no complete texture bound, (0, 0, 0, 1)\n";
+        return;
+    }
+    if (d.face >= 0) {
+        static constexpr const char* kFaces[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        out += fmt::format(", face {} at ({}, {})", kFaces[d.face], d.face_coord.x, d.face_coord.y);
+    }
+    if (t.info.lod == ir::TexLod::Explicit) out += fmt::format("; lod {} (explicit)", t.lod);
+    else {
+        out += fmt::format("; lod {} (from the derivatives{})", d.lod_implicit,
+                           d.lod_used ? "" : ", not needed: no mipmaps, one filter");
+        if (t.info.lod == ir::TexLod::ImplicitBias) out += fmt::format(", bias {}", t.lod);
+    }
+    out += fmt::format(", lambda {}: {}\n", d.lambda, d.magnified ? "magnified" : "minified");
+    text_levels(out, pad + "  ", d);
+    out += fmt::format("{}  => {}\n", pad, vec_text({t.result[0], t.result[1], t.result[2], t.result[3]}));
 }
 
 void text_invocation(std::string& out, const InvocationTrace& t, const SourceLines& lines) {
@@ -145,6 +259,9 @@ void text_invocation(std::string& out, const InvocationTrace& t, const SourceLin
             case TraceStep::Kind::Call:
                 out += fmt::format("{}{}  => call {}\n", pad, where_text(lines, t, s), s.name);
                 break;
+            case TraceStep::Kind::Lookup:
+                if (s.lookup < t.lookups.size()) text_lookup(out, pad + "    ", t.lookups[s.lookup]);
+                break;
         }
     }
     if (!t.stopped.empty()) out += fmt::format("    ... (stopped: {})\n", t.stopped);
@@ -157,86 +274,6 @@ void text_invocation(std::string& out, const InvocationTrace& t, const SourceLin
     text_values(out, "outputs", t.outputs);
 }
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20)
-            out += fmt::format("\\u{:04x}", int(c));
-        else
-            out += c;
-    }
-    return out + "\"";
-}
-
-// JSON has no NaN or infinity: those are strings.
-std::string json_number(const Values& v, double x) {
-    if (std::isnan(x)) return "\"NaN\"";
-    if (std::isinf(x)) return x > 0 ? "\"Infinity\"" : "\"-Infinity\"";
-    if (v.kind == ir::Kind::Bool) return x != 0 ? "true" : "false";
-    return v.kind == ir::Kind::F32 && !v.wide ? fmt::format("{}", float(x)) : fmt::format("{}", x);
-}
-
-std::string json_values(const Values& v) {
-    std::string out = "[";
-    for (size_t i = 0; i < v.c.size(); ++i) out += (i ? "," : "") + json_number(v, v.c[i]);
-    return out + "]";
-}
-
-// A matrix's rows (",\"rows\":[[...],...]", of each matrix of an array in
-// turn), as the text prints them; nothing for other types.
-std::string json_rows(const Values& v, const std::string& type) {
-    auto [cols, rows] = matrix_shape(type, v.c.size());
-    if (cols == 1) return "";
-    std::string out = ",\"rows\":[";
-    const size_t per_matrix = size_t(cols) * size_t(rows);
-    for (size_t m = 0; m < v.c.size(); m += per_matrix)
-        for (int r = 0; r < rows; ++r) {
-            out += m + size_t(r) ? ",[" : "[";
-            for (int c = 0; c < cols; ++c) {
-                size_t i = m + size_t(c) * size_t(rows) + size_t(r);
-                out += (c ? "," : "") + (i < v.c.size() ? json_number(v, v.c[i]) : std::string("null"));
-            }
-            out += "]";
-        }
-    return out + "]";
-}
-
-std::string json_named(const std::vector<NamedValue>& list) {
-    std::string out = "[";
-    for (size_t i = 0; i < list.size(); ++i)
-        out += fmt::format("{}{{\"name\":{},\"type\":{},\"value\":{}{}}}", i ? "," : "", json_string(list[i].name),
-                           json_string(list[i].type), json_values(list[i].value),
-                           json_rows(list[i].value, list[i].type));
-    return out + "]";
-}
-
-std::string json_step(const TraceStep& s, const InvocationTrace& t, const SourceLines& lines) {
-    static constexpr const char* kKinds[] = {"statement", "assign", "branch", "loop", "jump", "call"};
-    std::string out = fmt::format("{{\"kind\":\"{}\",\"depth\":{}", kKinds[size_t(s.kind)], s.depth);
-    if (!s.where.empty())
-        out += ",\"where\":" + json_string(s.where) + ",\"text\":" + json_string(std::string(line_text(lines, t, s)));
-    if (!s.name.empty()) out += ",\"name\":" + json_string(s.name);
-    if (s.kind == TraceStep::Kind::Assign)
-        out += ",\"type\":" + json_string(s.type) + ",\"value\":" + json_values(s.value) + json_rows(s.value, s.type);
-    if (s.kind == TraceStep::Kind::Branch) out += fmt::format(",\"taken\":{}", s.taken);
-    if (s.kind == TraceStep::Kind::Loop) out += fmt::format(",\"iteration\":{}", s.iteration);
-    return out + "}";
-}
-
-std::string json_invocation(const InvocationTrace& t, const SourceLines& lines) {
-    std::string steps = "[";
-    for (size_t i = 0; i < t.steps.size(); ++i) steps += (i ? ",\n" : "\n") + json_step(t.steps[i], t, lines);
-    std::string nan = "null";
-    if (t.first_nan)
-        nan = fmt::format("{{\"where\":{},\"op\":{},\"result\":{}}}", json_string(t.first_nan->where),
-                          json_string(t.first_nan->op), json_values(t.first_nan->result));
-    return fmt::format(
-        "{{\"inputs\":{},\"uniforms\":{},\"steps\":{}],\"outputs\":{},\"discarded\":{},"
-        "\"truncated\":{},\"stopped\":{},\"first_nan\":{}}}",
-        json_named(t.inputs), json_named(t.uniforms), steps, json_named(t.outputs), t.discarded, t.truncated,
-        t.stopped.empty() ? "null" : json_string(t.stopped), nan);
-}
 
 }  // namespace
 
@@ -245,14 +282,18 @@ std::string format_text(const PixelTrace& t) {
     for (uint32_t d : t.scissored)
         out += fmt::format("draw {}: the pixel is outside its scissor box: the scissor test removes its fragments here\n",
                            d);
-    if (t.fragments.empty() && t.vertices.empty()) return out + fmt::format("pixel {},{}: no fragment\n", t.x, t.y);
+    // "pixel 12,34", or "render target 'image' pixel 12,34".
+    const std::string pixel = t.target.empty() ? fmt::format("pixel {},{}", t.x, t.y)
+                                               : fmt::format("render target '{}' pixel {},{}", t.target, t.x, t.y);
+    if (t.fragments.empty() && t.vertices.empty()) return out + pixel + ": no fragment\n";
     for (size_t i = 0; i < t.fragments.size(); ++i) {
         const FragmentTrace& f = t.fragments[i];
-        out += fmt::format("fragment {} at pixel {},{}: draw {}{}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
-                           i, t.x, t.y, f.draw, pass_text(f.pass, f.program), f.primitive, f.vertices[0],
+        out += fmt::format("fragment {} at {}: draw {}{}, primitive {} (vertices {}, {}, {}), {}, depth {}: {}\n",
+                           i, pixel, f.draw, pass_text(f.pass, f.program), f.primitive, f.vertices[0],
                            f.vertices[1], f.vertices[2], f.front ? "front" : "back", f.depth,
                            outcome_text(f.outcome));
         out += tests_text(f.tests);
+        out += framebuffer_text(f);
         text_invocation(out, f.trace, t.source_lines);
         if (!f.matches_render) out += "  WARNING: the replay's outputs differ from the render's\n";
     }
@@ -264,28 +305,6 @@ std::string format_text(const PixelTrace& t) {
     return out;
 }
 
-std::string format_json(const PixelTrace& t) {
-    std::string fragments = "[";
-    for (size_t i = 0; i < t.fragments.size(); ++i) {
-        const FragmentTrace& f = t.fragments[i];
-        fragments += fmt::format(
-            "{}{{\"draw\":{},\"pass\":{},\"program\":{},\"primitive\":{},\"vertices\":[{},{},{}],\"front\":{},\"depth\":{},"
-            "\"outcome\":\"{}\",\"tests\":{},\"matches_render\":{},\"rendered\":{},\"trace\":{}}}",
-            i ? ",\n" : "\n", f.draw, f.pass.empty() ? "null" : json_string(f.pass), json_string(f.program),
-            f.primitive, f.vertices[0], f.vertices[1], f.vertices[2], f.front, f.depth,
-            outcome_key(f.outcome), tests_json(f.tests), f.matches_render, json_named(f.rendered),
-            json_invocation(f.trace, t.source_lines));
-    }
-    std::string vertices = "[";
-    for (size_t i = 0; i < t.vertices.size(); ++i)
-        vertices += fmt::format("{}{{\"draw\":{},\"pass\":{},\"program\":{},\"vertex\":{},\"matches_render\":{},\"trace\":{}}}",
-                                i ? ",\n" : "\n", t.vertices[i].draw,
-                                t.vertices[i].pass.empty() ? "null" : json_string(t.vertices[i].pass),
-                                json_string(t.vertices[i].program), t.vertices[i].vertex, t.vertices[i].matches_render,
-                                json_invocation(t.vertices[i].trace, t.source_lines));
-    return fmt::format("{{\"pixel\":[{},{}],\"scissored\":[{}],\"fragments\":{}],\"vertices\":{}]}}\n", t.x, t.y,
-                       fmt::join(t.scissored, ","), fragments, vertices);
-}
 
 std::string format_text(const NanReport& r) {
     auto finding = [](const char* what, const NanFinding& f) {

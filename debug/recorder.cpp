@@ -84,8 +84,54 @@ void NanWatch::instr(const ir::Node& n, rt::LaneMask active, const rt::LaneReade
     }
 }
 
-LaneRecorder::LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane, size_t max_steps)
-    : names_(names), uniforms_(uniforms), lane_(lane), max_steps_(max_steps) {}
+LaneRecorder::LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane, size_t max_steps,
+                           const GLState::TextureUnit* textures)
+    : names_(names), uniforms_(uniforms), lane_(lane), max_steps_(max_steps), textures_(textures) {}
+
+// A `tex` instruction of the lane, after it ran: its operands (the block
+// ir::TexInfo lays out), the sampler's steps again with an observer, and
+// the result the shader got.
+void LaneRecorder::lookup(const ir::Node& n, const rt::LaneReader& regs) {
+    const ir::Instr& in = n.instr;
+    TextureLookup t;
+    t.info = ir::TexInfo::decode(in.imm[2]);
+    t.unit = regs.read(in.src[0], lane_).i;
+    for (const ir::Uniform& u : names_.program().uniforms)
+        if (u.type.is_sampler)
+            for (uint32_t e = 0; e < u.array_size; ++e)
+                if (int32_t(uniforms_[u.slot + e]) == t.unit)
+                    t.samplers.push_back(u.is_array ? fmt::format("{}[{}]", u.name, e) : u.name);
+    auto operand = [&](uint32_t k) { return float(regs.read(ir::Reg(in.imm[0] + k), lane_).f); };
+    auto vec = [&](uint32_t first) {
+        const uint32_t dims = t.info.dims();
+        return glm::vec3(operand(first), dims > 1 ? operand(first + 1) : 0.0f, dims > 2 ? operand(first + 2) : 0.0f);
+    };
+    rt::LaneLookup lk;  // as the `tex` kernel decodes it (runtime/tex_kernel.cpp)
+    lk.coord = vec(0);
+    for (uint32_t c = 0; c < t.info.dims(); ++c) t.coord.push_back(lk.coord[int(c)]);
+    if (t.info.shadow) t.ref = lk.ref = operand(t.info.ref_at());
+    lk.implicit = t.info.lod != ir::TexLod::Explicit;
+    lk.bias = t.info.lod == ir::TexLod::ImplicitBias;
+    if (t.info.lod != ir::TexLod::Implicit) t.lod = lk.lod = operand(t.info.lod_at());
+    if (lk.implicit) {
+        lk.ddx = vec(t.info.ddx_at());
+        lk.ddy = vec(t.info.ddy_at());
+    }
+    const Texture* texture = textures_ && t.unit >= 0 && t.unit < kMaxTextureUnits
+                                 ? textures_[t.unit].bound[size_t(t.info.target)].get()
+                                 : nullptr;
+    t.details = rt::explain_lookup(texture, lk);
+    for (uint32_t c = 0; c < ir::kTexResults; ++c) t.result[c] = float(regs.read(in.dst + c, lane_).f);
+    TraceStep s;
+    s.kind = TraceStep::Kind::Lookup;
+    s.where = names_.where(n.loc);
+    s.source = n.loc.source;
+    s.line = uint32_t(n.loc.line);
+    s.lookup = uint32_t(trace.lookups.size());
+    if (trace.steps.size() >= max_steps_) return add(std::move(s));  // marks the trace truncated
+    trace.lookups.push_back(std::move(t));
+    add(std::move(s));
+}
 
 void LaneRecorder::add(TraceStep step) {
     if (trace.steps.size() >= max_steps_) {
@@ -93,7 +139,8 @@ void LaneRecorder::add(TraceStep step) {
         return;
     }
     // "file:21" then "file:21  if: ..." says the same twice.
-    if (step.kind != TraceStep::Kind::Statement && step.kind != TraceStep::Kind::Assign && !trace.steps.empty() &&
+    if (step.kind != TraceStep::Kind::Statement && step.kind != TraceStep::Kind::Assign &&
+        step.kind != TraceStep::Kind::Lookup && !trace.steps.empty() &&
         trace.steps.back().kind == TraceStep::Kind::Statement &&
         (step.where == trace.steps.back().where || step.where.starts_with(trace.steps.back().where + ":")))
         trace.steps.pop_back();
@@ -148,6 +195,7 @@ void LaneRecorder::instr(const ir::Node& n, rt::LaneMask active, const rt::LaneR
         if (u >= 0 && std::find(uniforms_read_.begin(), uniforms_read_.end(), u) == uniforms_read_.end())
             uniforms_read_.push_back(u);
     }
+    if (in.op == ir::Op::tex) lookup(n, regs);
     ir::Reg written = in.op == ir::Op::store_ind ? in.imm[0] : in.dst;
     if (const ir::Variable* var = names_.variable(written))
         if (std::find(dirty_.begin(), dirty_.end(), var) == dirty_.end()) dirty_.push_back(var);

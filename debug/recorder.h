@@ -43,8 +43,9 @@ class LaneRecorder final : public rt::TraceHook {
 public:
     // `uniforms`: the store the run reads (for the values of the uniforms read);
     // at most `max_steps` steps are kept.
+    // `textures`: the units the run samples (the lookups' details).
     LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane,
-                 size_t max_steps = InvocationTrace::kMaxSteps);
+                 size_t max_steps = InvocationTrace::kMaxSteps, const GLState::TextureUnit* textures = nullptr);
     void instr(const ir::Node& n, rt::LaneMask active, const rt::LaneReader& regs) override;
     void branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask taken) override;
     void loop_iteration(const ir::Node& n, uint64_t iteration, rt::LaneMask active) override;
@@ -59,11 +60,13 @@ private:
     void add(TraceStep step);
     void flush_assignments();
     void statement(const ir::SourceLoc& loc);
+    void lookup(const ir::Node& n, const rt::LaneReader& regs);
 
     const ShaderNames& names_;
     const uint32_t* uniforms_;
     int lane_;
     size_t max_steps_;
+    const GLState::TextureUnit* textures_;
     int depth_ = 0;
     ir::SourceLoc last_{};
     std::vector<const ir::Variable*> dirty_;

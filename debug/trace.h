@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ir/ir.h"
+#include "runtime/sampling.h"
 
 namespace glslrun::debug {
 
@@ -34,6 +35,7 @@ struct TraceStep {
         Loop,       // a loop at `where` starts iteration `iteration` (0, 1, ...)
         Jump,       // `name`: break, continue, return or discard
         Call,       // `name`: a call of that function starts; depth + 1 until it returns
+        Lookup,     // a texture lookup at `where`: InvocationTrace::lookups[lookup]
     };
     Kind kind = Kind::Statement;
     int depth = 0;      // call depth
@@ -44,6 +46,20 @@ struct TraceStep {
     Values value;
     bool taken = false;
     uint64_t iteration = 0;
+    uint32_t lookup = 0;
+};
+
+// A texture lookup of the traced lane, as the sampler made it.
+struct TextureLookup {
+    int unit = 0;
+    std::vector<std::string> samplers;  // the sampler uniforms that hold this unit
+    ir::TexInfo info;                   // target, shadow, and how the LOD comes
+    // The operands: the coordinates (projective lookups divided by q
+    // already), the depth reference, and the explicit LOD or the bias.
+    std::vector<float> coord;
+    float ref = 0, lod = 0;
+    rt::LookupDetails details;  // what the sampler computed and fetched
+    std::array<float, 4> result{};  // the lookup's value in the shader's registers
 };
 
 // The first NaN or infinity of an invocation: the instruction that made it.
@@ -60,6 +76,7 @@ struct InvocationTrace {
     std::vector<NamedValue> uniforms;  // every uniform read, in first-read order
     std::vector<std::string> files;  // the shader's source names, for TraceStep::source
     std::vector<TraceStep> steps;
+    std::vector<TextureLookup> lookups;  // of the Lookup steps
     std::vector<NamedValue> outputs;
     std::optional<NanEvent> first_nan;
     bool discarded = false;

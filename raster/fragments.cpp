@@ -152,6 +152,7 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     // The shader debugger sees every fragment shaded: the late test gives the
     // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
+    if (probe_) probe_tests_ = std::make_unique<ProbeTests>();
     early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
     // The debugger shows every lane's values, helpers' lookups too.
     skip_helper_lookups_ = !fs.helper_lookups_matter && !probe_;
@@ -440,7 +441,7 @@ void FragmentStage::flush() {
         written_ += uint64_t(std::popcount(written));
     } else if (probe_) [[unlikely]]
         probe_->after_write(probe_batch(covered), interp_->alive() & covered, write_outputs<true>(covered),
-                            probe_tests_);
+                            *probe_tests_);
     else
         write_outputs<false>(covered);
     quads_ = 0;
@@ -470,14 +471,47 @@ rt::LaneMask FragmentStage::write_outputs(rt::LaneMask covered) {
         for (float& d : z) d = d > 0.0f ? std::min(d, 1.0f) : 0.0f;  // NaN -> 0
     }
     if constexpr (kProbed) {
-        probe_tests_ = ProbeTests{};
-        probe_tests_.z = z;
-        probe_tests_.alpha_ref = ops_.float_color ? ops_.alpha_ref : ops_.alpha_ref8;
-        probe_tests_.alpha_bytes = !ops_.float_color;
+        ProbeTests& t = *probe_tests_;
+        t = ProbeTests{};
+        t.z = z;
+        t.alpha_ref = ops_.float_color ? ops_.alpha_ref : ops_.alpha_ref8;
+        t.alpha_bytes = !ops_.float_color;
+        return write_watched(covered, alive, z);
     }
-    if (ops_.plain) return write_plain<kProbed>(alive, z);
-    rt::LaneMask written = write_with_ops(alive, z, kProbed ? &probe_tests_ : nullptr);
-    return kProbed ? written : 0;
+    if (ops_.plain) return write_plain<false>(alive, z);
+    write_with_ops(alive, z, nullptr);
+    return 0;
+}
+
+// The pixel of lane `lane` as the framebuffer holds it now.
+void FragmentStage::snapshot(int lane, ProbePixel& p) const {
+    const size_t pixel = size_t(lane_y_[size_t(lane)]) * size_t(fb_.width) + size_t(lane_x_[size_t(lane)]);
+    p.buffers = std::min(fb_.color_buffers(), kMaxDrawBuffers);
+    for (int b = 0; b < p.buffers; ++b)
+        for (size_t k = 0; k < 4; ++k)
+            p.color[size_t(b)][k] = fb_.float_color() ? fb_.color_data<float>(b)[pixel * 4 + k]
+                                                      : float(fb_.color_data<uint8_t>(b)[pixel * 4 + k]);
+    p.depth = pixel < fb_.depth.size() ? fb_.depth[pixel] : 0.0f;
+    p.stencil = pixel < fb_.stencil.size() ? fb_.stencil[pixel] : uint8_t(0);
+}
+
+// With a probe: the lanes it watches one at a time, each between snapshots
+// of its pixel, after the others (which touch other pixels only: the same
+// image). Returns the lanes written.
+rt::LaneMask FragmentStage::write_watched(rt::LaneMask covered, rt::LaneMask alive, const Lanes& z) {
+    ProbeTests& t = *probe_tests_;
+    auto write = [&](rt::LaneMask lanes) {
+        return ops_.plain ? write_plain<true>(lanes, z) : write_with_ops(lanes, z, &t);
+    };
+    t.watched = probe_->watched(probe_batch(covered)) & covered;
+    rt::LaneMask written = write(alive & ~t.watched);
+    for (rt::LaneMask bits = t.watched; bits; bits &= bits - 1) {
+        const int lane = std::countr_zero(bits);
+        snapshot(lane, t.before[size_t(lane)]);
+        if (alive & (rt::LaneMask(1) << lane)) written |= write(alive & (rt::LaneMask(1) << lane));
+        snapshot(lane, t.after[size_t(lane)]);
+    }
+    return written;
 }
 
 // The fast path: at most a depth test with writes, and plain stores into one buffer.
@@ -493,13 +527,13 @@ rt::LaneMask FragmentStage::write_plain(rt::LaneMask alive, const Lanes& z) {
         if constexpr (kProbed) {
             for (unsigned bits = late_depth ? mask : 0; bits; bits &= bits - 1) {
                 int lane = base + std::countr_zero(bits);
-                probe_tests_.stored_depth[size_t(lane)] =
+                probe_tests_->stored_depth[size_t(lane)] =
                     fb_.depth[size_t(lane_y_[lane]) * size_t(fb_.width) + size_t(lane_x_[lane])];
             }
         }
         const unsigned tested = mask;
         if (late_depth && mask) mask = depth_test_quad<true>(base, z.data(), mask);
-        if constexpr (kProbed) probe_tests_.depth_failed |= rt::LaneMask(tested & ~mask) << base;
+        if constexpr (kProbed) probe_tests_->depth_failed |= rt::LaneMask(tested & ~mask) << base;
         if (!mask) continue;
         written |= rt::LaneMask(mask) << base;
         if (color_out_[0]) store_color_quad(base, rgba, mask);
@@ -565,7 +599,7 @@ rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z, P
         if (color_out_[0]) load_color(0, rgba);
         rt::LaneMask tested = alive;
         alive = alpha_test(ops_, rgba[3], alive, tests ? &tests->alpha : nullptr);
-        if (tests) tests->alpha_failed = tested & ~alive;
+        if (tests) tests->alpha_failed |= tested & ~alive;
     }
     if (ops_.stencil_test || (ops_.depth_test && !early_depth_))
         alive = tests ? stencil_depth_probed(px, alive, *tests) : stencil_depth_test(ops_, fb_, px, alive);

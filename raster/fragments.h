@@ -119,6 +119,8 @@ private:
     rt::LaneMask write_outputs(rt::LaneMask covered);
     template <bool kProbed>
     rt::LaneMask write_plain(rt::LaneMask alive, const Lanes& z);
+    rt::LaneMask write_watched(rt::LaneMask covered, rt::LaneMask alive, const Lanes& z);
+    void snapshot(int lane, ProbePixel& pixel) const;
     void store_color_quad(int base, const std::array<Lanes, 4>& rgba, unsigned mask);
     rt::LaneMask write_with_ops(rt::LaneMask alive, const Lanes& z, ProbeTests* tests);
     rt::LaneMask stencil_depth_probed(const LanePixels& px, rt::LaneMask alive, ProbeTests& tests);
@@ -155,7 +157,7 @@ private:
     std::vector<const uint32_t*> output_regs_;
     std::optional<Error> error_;
     DrawProbe* probe_ = nullptr;
-    ProbeTests probe_tests_;  // the batch's test outcomes, with a probe
+    std::unique_ptr<ProbeTests> probe_tests_;  // the batch's test outcomes, with a probe only
     bool skip_helper_lookups_ = false;  // helper lanes skip texture lookups (ir::Shader::helper_lookups_matter)
 };
 

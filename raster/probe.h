@@ -36,6 +36,16 @@ struct ProbeDraw {
     const exec::VertexOutputs& shaded;  // the vertex shader's outputs of every vertex
 };
 
+// The framebuffer at one pixel, as stored: an RGBA8 channel as its byte n
+// (exact in a float), a float buffer's channel as its float; `buffers` of
+// the framebuffer's colour buffers.
+struct ProbePixel {
+    std::array<std::array<float, 4>, kMaxDrawBuffers> color{};
+    int buffers = 0;
+    float depth = 0;
+    uint8_t stencil = 0;
+};
+
 // What the per-fragment tests after the shader did to each lane of a batch
 // (GL 2.1 §4.1, in its order), for the debugger's pixel history. A lane
 // fails at most one test: the first it fails; the later ones do not run.
@@ -51,6 +61,12 @@ struct ProbeTests {
     std::array<float, rt::kLanes> z{};             // the fragment's depth (gl_FragDepth when written)
     std::array<float, rt::kLanes> stored_depth{};  // the depth buffer's value
     std::array<uint8_t, rt::kLanes> stored_stencil{};
+    // The lanes whose pixel the probe watches (DrawProbe::watched), and
+    // their pixel just before and just after the lane's tests and writes
+    // (an earlier lane of the batch at that pixel included). A discarded
+    // lane's are equal.
+    rt::LaneMask watched = 0;
+    std::array<ProbePixel, rt::kLanes> before{}, after{};
 };
 
 class DrawProbe {
@@ -60,6 +76,13 @@ public:
     virtual void begin_draw(const ProbeDraw& draw) = 0;
     // The batch's inputs are filled; the shader has not run.
     virtual void before_run(const ProbeBatch& batch) = 0;
+    // Among the batch's covered lanes (before_run's), those whose pixel's
+    // framebuffer values the probe wants before and after each fragment
+    // (ProbeTests::before, after). It must name every covered lane at a
+    // pixel or none: the stage runs the watched lanes' operations one lane
+    // at a time after the others', which touch other pixels only, so the
+    // image stays the same.
+    virtual rt::LaneMask watched(const ProbeBatch&) { return 0; }
     // After the tests and colour writes: `alive` did not discard, `written`
     // passed every test and were written; `tests` says which test stopped
     // the others. With a probe there is no early depth test: every fragment

@@ -26,4 +26,45 @@ void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, floa
     for (int c = 0; c < 4; ++c) rgba[c] = canonical_nan(v[c]);
 }
 
+namespace {
+
+// Notes sampling_rules.h's steps into LookupDetails.
+struct Recorder {
+    LookupDetails& out;
+    int current = 0;  // the level being sampled
+    void filter(float lambda, bool magnified) {
+        out.lambda = lambda;
+        out.magnified = magnified;
+    }
+    void level(int l, const TextureImage& image, bool linear) {
+        current = l;
+        out.levels.push_back({l, image.width, image.height, image.depth, linear});
+    }
+    void texel(int i, int j, int k, Texel value) {
+        const glm::vec4 v = vec_of(value);
+        out.texels.push_back({current, i, j, k, v});
+    }
+};
+
+}  // namespace
+
+LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup) {
+    LookupDetails d;
+    if (!texture || !texture->complete()) return d;
+    d.complete = true;
+    if (texture->target() == TextureTarget::Cube) {
+        d.face = cube_face(lookup.coord);
+        d.face_coord = cube_coord(kCubeFaces[d.face], lookup.coord);
+    }
+    // As sample_complete_lane(): the implicit LOD only where it matters.
+    d.lod_implicit = lookup.implicit ? lod_of(*texture, lookup.coord, lookup.ddx, lookup.ddy)
+                                     : std::numeric_limits<float>::quiet_NaN();
+    d.lod_used = !lookup.implicit || sampling::lod_matters(texture->sampler);
+    float lod = lookup.lod;
+    if (lookup.implicit && d.lod_used) lod = lookup.bias ? d.lod_implicit + lookup.lod : d.lod_implicit;
+    const glm::vec4 v = sample_complete(*texture, lookup.coord, lookup.ref, lod, Recorder{d});
+    for (int c = 0; c < 4; ++c) d.result[c] = canonical_nan(v[c]);
+    return d;
+}
+
 }  // namespace glslrun::rt

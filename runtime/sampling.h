@@ -6,6 +6,7 @@
 // together (sampling_batch.h), or one by one with sample_complete_lane().
 #pragma once
 #include <array>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -44,5 +45,35 @@ struct LaneLookup {
 // One call does all: called one by one, the helpers' small vectors went
 // back through memory and the loads stalled on the stores (perf).
 void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, float* rgba);
+
+// One lookup as the sampler made it, for the shader debugger's trace: the
+// same rules as sample_complete_lane() (sampling_rules.h) with an observer
+// on their steps, so the result has the same bits.
+struct LookupTexel {
+    int level = 0;
+    int i = 0, j = 0, k = 0;  // texel coordinates in the level; -1: the border
+    glm::vec4 value{0.0f};     // as filtered: a depth texture's comparison result when compare is on
+};
+struct LookupLevel {
+    int level = 0, width = 0, height = 0, depth = 0;
+    bool linear = false;  // LINEAR within the level, else NEAREST
+};
+struct LookupDetails {
+    bool complete = false;  // incomplete (or nothing bound): (0, 0, 0, 1), nothing sampled
+    int face = -1;          // cube maps: the face (0..5: +X, -X, +Y, -Y, +Z, -Z)
+    glm::vec3 face_coord{0.0f};  // cube maps: (s, t) on the face
+    // lambda_base of §3.8.8 from the derivatives (implicit LOD: NaN where
+    // the lookup has an explicit one), and lambda after the shader's bias
+    // (or the explicit LOD), the texture's bias and the LOD clamps, as the
+    // filter used it. Where neither mipmaps nor a mag/min switch make the
+    // LOD matter the sampler skips computing it: `lod_used` false, and
+    // lambda is then only the biases'.
+    float lod_implicit = 0.0f, lambda = 0.0f;
+    bool lod_used = true, magnified = false;
+    std::vector<LookupLevel> levels;
+    std::vector<LookupTexel> texels;
+    glm::vec4 result{0.0f, 0.0f, 0.0f, 1.0f};
+};
+LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup);
 
 }  // namespace glslrun::rt

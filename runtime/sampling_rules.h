@@ -277,29 +277,50 @@ inline Texel mix(Texel x, Texel y, float a) { return glm::mix(x, y, a); }
     return {unorm(b.r), unorm(b.g), unorm(b.b), unorm(b.a)};
 }
 
+// What the steps below tell an observer (the shader debugger's texture
+// lookups: rt::explain_lookup): the lambda and the filter chosen, each level
+// sampled, and each texel fetched with the value it gave (the border's
+// included, after the depth comparison). The samplers use NoObserver, whose
+// empty calls compile to nothing.
+struct NoObserver {
+    void filter(float /*lambda*/, bool /*magnified*/) {}
+    void level(int /*level*/, const TextureImage& /*image*/, bool /*linear*/) {}
+    void texel(int /*i*/, int /*j*/, int /*k*/, Texel /*value*/) {}
+};
+
 // Texel (i, j, k) of `image`; any index kBorder means the border colour.
-[[gnu::always_inline]] inline Texel fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k) {
-    if (i < 0 || j < 0 || k < 0) return texel_of(border_texel(lk));
+template <class Obs = NoObserver>
+[[gnu::always_inline]] inline Texel fetch(const Lookup& lk, const TextureImage& image, int i, int j, int k,
+                                          Obs&& obs = Obs{}) {
+    if (i < 0 || j < 0 || k < 0) {
+        const Texel border = texel_of(border_texel(lk));
+        obs.texel(i, j, k, border);
+        return border;
+    }
     const size_t at = size_t(i) + size_t(image.width) * (size_t(j) + size_t(image.height) * size_t(k));
     const glm::vec4& texel = image.texels[at];
-    return lk.compare ? splat_texel(compare_depth(lk.st->compare_func, lk.ref, texel.r)) : texel_of(texel);
+    const Texel value = lk.compare ? splat_texel(compare_depth(lk.st->compare_func, lk.ref, texel.r)) : texel_of(texel);
+    obs.texel(i, j, k, value);
+    return value;
 }
 
-[[gnu::always_inline]] inline Texel sample_nearest(const Lookup& lk, const TextureImage& image) {
+template <class Obs = NoObserver>
+[[gnu::always_inline]] inline Texel sample_nearest(const Lookup& lk, const TextureImage& image, Obs&& obs = Obs{}) {
     const int i = nearest_index(lk.st->wrap_s, lk.str.x, image.width);
     const int j = lk.dims > 1 ? nearest_index(lk.st->wrap_t, lk.str.y, image.height) : 0;
     const int k = lk.dims > 2 ? nearest_index(lk.st->wrap_r, lk.str.z, image.depth) : 0;
-    return fetch(lk, image, i, j, k);
+    return fetch(lk, image, i, j, k, obs);
 }
 
 // §3.8.8: the (bi/tri)linear blend of the 2, 4 or 8 texels around u.
-[[gnu::always_inline]] inline Texel sample_linear(const Lookup& lk, const TextureImage& image) {
+template <class Obs = NoObserver>
+[[gnu::always_inline]] inline Texel sample_linear(const Lookup& lk, const TextureImage& image, Obs&& obs = Obs{}) {
     const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
-    if (lk.dims == 1) return mix(fetch(lk, image, x.i0, 0, 0), fetch(lk, image, x.i1, 0, 0), x.a);
+    if (lk.dims == 1) return mix(fetch(lk, image, x.i0, 0, 0, obs), fetch(lk, image, x.i1, 0, 0, obs), x.a);
     const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
     auto plane = [&](int k) {
-        const Texel row0 = mix(fetch(lk, image, x.i0, y.i0, k), fetch(lk, image, x.i1, y.i0, k), x.a);
-        const Texel row1 = mix(fetch(lk, image, x.i0, y.i1, k), fetch(lk, image, x.i1, y.i1, k), x.a);
+        const Texel row0 = mix(fetch(lk, image, x.i0, y.i0, k, obs), fetch(lk, image, x.i1, y.i0, k, obs), x.a);
+        const Texel row1 = mix(fetch(lk, image, x.i0, y.i1, k, obs), fetch(lk, image, x.i1, y.i1, k, obs), x.a);
         return mix(row0, row1, y.a);
     };
     if (lk.dims == 2) return plane(0);
@@ -308,9 +329,11 @@ inline Texel mix(Texel x, Texel y, float a) { return glm::mix(x, y, a); }
 }
 
 // `level` is within [level_base, q], which completeness guarantees exist.
-[[gnu::always_inline]] inline Texel sample_level(const Lookup& lk, int level, bool linear) {
+template <class Obs = NoObserver>
+[[gnu::always_inline]] inline Texel sample_level(const Lookup& lk, int level, bool linear, Obs&& obs = Obs{}) {
     const TextureImage& image = lk.texture->levels(lk.face)[size_t(level)];
-    return linear ? sample_linear(lk, image) : sample_nearest(lk, image);
+    obs.level(level, image, linear);
+    return linear ? sample_linear(lk, image, obs) : sample_nearest(lk, image, obs);
 }
 
 // ------------------------------------------------- level of detail ---
@@ -344,22 +367,26 @@ inline float mag_threshold(const SamplerState& st) {
     return st.mag_filter == TextureFilter::Linear && nearest_mipmap ? 0.5f : 0.0f;
 }
 
-[[gnu::always_inline]] inline Texel filter(const Lookup& lk, float lambda) {
+template <class Obs = NoObserver>
+[[gnu::always_inline]] inline Texel filter(const Lookup& lk, float lambda, Obs&& obs = Obs{}) {
     const SamplerState& st = *lk.st;
     const int base = st.base_level;
     // §3.8.9: lambda <= c magnifies: the mag filter on level_base.
-    if (lambda <= mag_threshold(st)) return sample_level(lk, base, linear_within_level(st.mag_filter));
+    const bool magnified = lambda <= mag_threshold(st);
+    obs.filter(lambda, magnified);
+    if (magnified) return sample_level(lk, base, linear_within_level(st.mag_filter), obs);
     const bool linear = linear_within_level(st.min_filter);
-    if (!is_mipmap_filter(st.min_filter)) return sample_level(lk, base, linear);
+    if (!is_mipmap_filter(st.min_filter)) return sample_level(lk, base, linear, obs);
     const int q = last_mip_level(lk.texture->levels(lk.face)[size_t(base)], st);
     if (st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest)
-        return sample_level(lk, nearest_mip_level(lambda, base, q), linear);
+        return sample_level(lk, nearest_mip_level(lambda, base, q), linear, obs);
     // §3.8.8, *_MIPMAP_LINEAR: levels d1 = floor(level_base + lambda)
     // and d1 + 1 blended by frac(lambda); both are q from level_base + lambda >= q on.
-    if (float(base) + lambda >= float(q)) return sample_level(lk, q, linear);
+    if (float(base) + lambda >= float(q)) return sample_level(lk, q, linear, obs);
     const float whole = floor_f(lambda);
     const int d1 = base + int(whole);
-    return mix(sample_level(lk, d1, linear), sample_level(lk, d1 + 1, linear), lambda - whole);
+    const Texel first = sample_level(lk, d1, linear, obs);
+    return mix(first, sample_level(lk, d1 + 1, linear, obs), lambda - whole);
 }
 
 // §3.8.14 DEPTH_TEXTURE_MODE: how a depth (or comparison result) becomes RGBA.
@@ -429,11 +456,12 @@ inline bool lod_matters(const SamplerState& st) {
     return is_mipmap_filter(st.min_filter) || linear_within_level(st.min_filter) != linear_within_level(st.mag_filter);
 }
 
+template <class Obs = NoObserver>
 [[gnu::always_inline]] inline glm::vec4 sample_complete(const Texture& texture, const glm::vec3& coord, float ref,
-                                                         float lod) {
+                                                         float lod, Obs&& obs = Obs{}) {
     const SamplerState& st = texture.sampler;
     const Lookup lk = make_lookup(texture, coord, ref);
-    const glm::vec4 v = vec_of(filter(lk, clamp_lambda(lod + st.lod_bias, st)));
+    const glm::vec4 v = vec_of(filter(lk, clamp_lambda(lod + st.lod_bias, st), obs));
     return texture.depth() ? expand_depth(st.depth_mode, v.r) : v;
 }
 

@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
-          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
+          libtinyobjloader-dev nlohmann-json3-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
           help2man  # the man page, from glslrun --help
           ccache)  # the builds below (and CI's variants) reuse each other's object files

@@ -73,6 +73,16 @@ grep -q "^vertex 0 of draw 2 (pass 'light 0', program .*/passes/light.vert + .*/
 grep -q WARNING "$tmp/passes_vertex.txt" && fail "trace --vertex multi_pass: the replay differs from the render"
 "$glslrun" trace --find-nan --colour-range $mp >"$tmp/passes_nan.txt" || fail "--find-nan multi_pass exited with $?"
 grep -q "^no NaN or infinity" "$tmp/passes_nan.txt" || fail "--find-nan multi_pass: $(cat "$tmp/passes_nan.txt")"
+# --target: a render target's pixel history; a name the scene lacks is refused with the names it has.
+blur="$src/shaders/minimal.vert $src/shaders/minimal.frag $src/scenes/blur.toml"
+"$glslrun" trace --pixel 64,64 --target image $blur >"$tmp/target.txt" || fail "trace --target exited with $?"
+grep -q "^fragment 0 at render target 'image' pixel 64,64: draw 0 (pass 'scene', " "$tmp/target.txt" ||
+    fail "trace --target image: not the scene pass's fragment"
+grep -q "^  after:  colour 0 rgba8(" "$tmp/target.txt" || fail "trace --target: no framebuffer after the fragment"
+"$glslrun" trace --pixel 64,64 --target nope $blur 2>"$tmp/target_err.txt" && fail "trace --target nope succeeded"
+grep -q "no render target 'nope' (it has half, image)" "$tmp/target_err.txt" || fail "trace --target nope: $(cat "$tmp/target_err.txt")"
+"$glslrun" trace --target image $blur 2>"$tmp/target_err.txt" && fail "trace --target without --pixel succeeded"
+grep -q "render target of --pixel X,Y, which is missing" "$tmp/target_err.txt" || fail "trace --target alone: $(cat "$tmp/target_err.txt")"
 
 # The replay equals the render whatever the mode, size and program (a loop and calls in multi_light).
 for mode in precise fast reference; do

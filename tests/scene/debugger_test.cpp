@@ -104,9 +104,11 @@ TEST_CASE("golden traces of the lecture's spot programs", "[debug]") {
     };
     // 240,172: inside the cone, facing away from the light (docs/debugging.md);
     // 256,256: lit, with a hidden back face behind it; multi_light: a loop
-    // over three lights calling a function.
+    // over three lights calling a function; textured and cube_map: texture
+    // lookups with their levels and texels.
     for (Case c : {Case{"spot_pix_oops", "spot.toml", 240, 172}, Case{"spot_pix_fixed", "spot.toml", 240, 172},
-                   Case{"spot_pix_fixed", "spot.toml", 256, 256}, Case{"multi_light", "multi_light.toml", 230, 200}}) {
+                   Case{"spot_pix_fixed", "spot.toml", 256, 256}, Case{"multi_light", "multi_light.toml", 230, 200},
+                   Case{"textured_pix", "textured.toml", 256, 256}, Case{"cube_reflect", "cube_map.toml", 256, 256}}) {
         Traced t = trace_pixel(c.program, c.scene, c.x, c.y);
         check_golden(fmt::format("{}_{}_{}.txt", c.program, c.x, c.y), debug::format_text(t.trace));
         check_matches_pixel(t);
@@ -400,4 +402,141 @@ TEST_CASE("the pixel history covers every pass's program, in draw order", "[debu
     auto report = debug::find_nan(*prog, *dbg, *scene, fb, true);
     REQUIRE(report);
     CHECK_FALSE(report->nan);
+}
+
+// The trace's texture lookups come from the sampler itself (rt::explain_lookup,
+// an observer on its steps): the result it explains is the value the shader
+// got, bit for bit, with the levels and texels it took.
+TEST_CASE("texture lookups in the trace: operands, lod, levels, texels and the sampler's result", "[debug]") {
+    struct Case {
+        const char *vertex, *fragment, *scene;
+        int x, y;
+    };
+    int lookups = 0, cube = 0, shadow = 0;
+    for (Case c : {Case{"shaders/textured_pix.vert", "shaders/textured_pix.frag", "scenes/textured.toml", 256, 256},
+                   Case{"shaders/cube_reflect.vert", "shaders/cube_reflect.frag", "scenes/cube_map.toml", 256, 256},
+                   Case{"shaders/minimal.vert", "shaders/minimal.frag", "scenes/shadow_map.toml", 128, 100},
+                   Case{"shaders/minimal.vert", "shaders/minimal.frag", "scenes/blur.toml", 64, 64}}) {
+        INFO(c.scene);
+        Traced t = trace_files(c.vertex, shader(c.fragment), c.scene, c.x, c.y);
+        for (const debug::FragmentTrace& f : t.trace.fragments) {
+            CHECK(f.matches_render);
+            size_t steps = 0;
+            for (const debug::TraceStep& s : f.trace.steps) steps += s.kind == debug::TraceStep::Kind::Lookup;
+            CHECK(steps == f.trace.lookups.size());
+            for (const debug::TextureLookup& l : f.trace.lookups) {
+                ++lookups;
+                REQUIRE(l.details.complete);
+                for (int k = 0; k < 4; ++k)
+                    CHECK(std::bit_cast<uint32_t>(l.details.result[k]) == std::bit_cast<uint32_t>(l.result[size_t(k)]));
+                REQUIRE_FALSE(l.details.levels.empty());
+                CHECK_FALSE(l.details.texels.empty());
+                CHECK(l.coord.size() == l.info.dims());
+                cube += l.details.face >= 0;
+                shadow += l.info.shadow;
+                // One texel of one level, NEAREST, no depth comparison: the result is that texel.
+                if (l.details.texels.size() == 1 && !l.info.shadow)
+                    CHECK(l.details.texels[0].value == l.details.result);
+                // LINEAR in 2D reads four texels of each level sampled.
+                for (const rt::LookupLevel& level : l.details.levels)
+                    if (level.linear && l.info.dims() == 2)
+                        CHECK(std::ranges::count_if(l.details.texels, [&](const rt::LookupTexel& x) {
+                                  return x.level == level.level;
+                              }) == 4);
+            }
+        }
+    }
+    CHECK(lookups > 10);
+    CHECK(cube > 0);
+    CHECK(shadow > 0);
+    Traced t = trace_pixel("textured_pix", "textured.toml", 256, 256);
+    std::string json = debug::format_json(t.trace);
+    CHECK_THAT(json, Catch::Contains("\"kind\":\"lookup\""));
+    CHECK_THAT(json, Catch::Contains("\"lookup\":{\"unit\":0,\"samplers\":[\"tex\"],\"target\":\"2D\""));
+}
+
+// The pixel history's framebuffer before and after each fragment, with two
+// RGBA8 colour buffers: a plain write, blending, a colour mask and a logic
+// op, one object each over pixel 16,16 (tests/scene/data/color_writes.toml).
+TEST_CASE("the pixel history shows every colour buffer before and after blending, mask and logic op", "[debug]") {
+    std::vector<ShaderSource> vs{shader("shaders/colors.vert")}, fs{shader("tests/scene/data/color_writes.frag")};
+    auto scene = scene::load_scene(kRoot + "/tests/scene/data/color_writes.toml");
+    auto prog = Program::compile(vs, fs);
+    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
+    REQUIRE((scene && prog && dbg));
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    debug::TraceRequest request;
+    request.pixel = {16, 16};
+    request.sources = {vs[0], fs[0]};
+    auto t = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE(t);
+    check_golden("color_writes_16_16.txt", debug::format_text(*t));
+    const auto& f = t->fragments;
+    REQUIRE(f.size() == 4);
+    using Rgba = std::array<float, 4>;
+    CHECK(f[0].before.color == std::vector<Rgba>{{0, 0, 0, 255}, {0, 0, 0, 255}});  // the clear
+    CHECK(f[0].after.color == std::vector<Rgba>{{204, 51, 102, 255}, {255, 102, 51, 204}});
+    // src_alpha, one_minus_src_alpha in 8-bit steps; buffer 1's source alpha is 0: unchanged.
+    CHECK(f[1].writes.blend);
+    CHECK(f[1].after.color == std::vector<Rgba>{{102, 153, 51, 191}, {255, 102, 51, 204}});
+    // Only red and alpha written.
+    CHECK(f[2].writes.mask == std::array<bool, 4>{true, false, false, true});
+    CHECK(f[2].after.color == std::vector<Rgba>{{0, 153, 51, 64}, {64, 102, 51, 0}});
+    // xor with 255 inverts the bytes.
+    CHECK(f[3].after.color == std::vector<Rgba>{{255, 102, 204, 191}, {191, 153, 204, 255}});
+    for (size_t i = 0; i < f.size(); ++i) {
+        CHECK(f[i].writes.buffers == std::vector<int>{0, 1});
+        if (i) CHECK(f[i].before.color == f[i - 1].after.color);
+    }
+    // The last fragment's after is the image.
+    const size_t at = size_t(scene->height - 1 - 16) * size_t(scene->width) + 16;
+    for (int b = 0; b < 2; ++b)
+        for (size_t k = 0; k < 4; ++k) CHECK(f[3].after.color[size_t(b)][k] == float(fb.color_data<uint8_t>(b)[at * 4 + k]));
+    std::string json = debug::format_json(*t);
+    CHECK_THAT(json, Catch::Contains("\"before\":{\"format\":\"rgba8\",\"color\":[[0,0,0,255],[0,0,0,255]],\"depth\":1,"
+                                     "\"stencil\":0},\"writes\":{\"buffers\":[0,1],\"blend\":null,\"logic_op\":null,"
+                                     "\"mask\":[true,true,true,true]}"));
+    CHECK_THAT(json, Catch::Contains("\"logic_op\":\"xor\""));
+}
+
+// --target: the pixel history of a render target, of the passes that draw
+// into it. The blur's vertical pass samples target 'half': the texels its
+// lookup fetched are that target's pixels as its last fragment left them.
+TEST_CASE("the pixel history of a render target gives the texels a later pass samples", "[debug]") {
+    std::vector<ShaderSource> vs{shader("shaders/minimal.vert")}, fs{shader("shaders/minimal.frag")};
+    auto scene = scene::load_scene(kRoot + "/scenes/blur.toml");
+    auto prog = Program::compile(vs, fs);
+    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
+    REQUIRE((scene && prog && dbg));
+    Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
+    debug::TraceRequest request;
+    request.pixel = {64, 64};
+    auto image = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE(image);
+    REQUIRE(image->fragments.size() == 1);
+    REQUIRE_FALSE(image->fragments[0].trace.lookups.empty());
+    const debug::TextureLookup& lookup = image->fragments[0].trace.lookups[0];
+    REQUIRE(lookup.samplers == std::vector<std::string>{"image"});
+    REQUIRE(lookup.details.texels.size() == 4);
+    for (const rt::LookupTexel& texel : lookup.details.texels) {
+        request.target = "half";
+        request.pixel = {texel.i, 127 - texel.j};  // texture rows go bottom up, image rows top down
+        auto half = debug::trace(*prog, *dbg, *scene, fb, request);
+        REQUIRE(half);
+        REQUIRE_FALSE(half->fragments.empty());
+        for (const debug::FragmentTrace& f : half->fragments) CHECK(f.pass == "horizontal");
+        const debug::PixelValues& after = half->fragments.back().after;
+        for (int k = 0; k < 4; ++k) CHECK(after.color[0][size_t(k)] / 255.0f == texel.value[k]);
+        CHECK_THAT(debug::format_text(*half), Catch::Contains("fragment 0 at render target 'half' pixel "));
+        CHECK_THAT(debug::format_json(*half), Catch::Contains("\"target\":\"half\""));
+    }
+    request.target = "nope";
+    auto missing = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE_FALSE(missing);
+    CHECK_THAT(missing.error().str(), Catch::Contains("the scene has no render target 'nope' (it has half, image)"));
+    request.target = "half";
+    request.pixel = {128, 0};
+    auto outside = debug::trace(*prog, *dbg, *scene, fb, request);
+    REQUIRE_FALSE(outside);
+    CHECK_THAT(outside.error().str(), Catch::Contains("pixel 128,0 is outside the 128x128 render target 'half'"));
 }

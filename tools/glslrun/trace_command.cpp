@@ -1,5 +1,5 @@
 // `glslrun trace`: the shader debugger (debug/debugger.h, docs/debugging.md).
-//   glslrun trace --pixel X,Y a.vert a.frag scene.toml [--json]
+//   glslrun trace --pixel X,Y [--target NAME] a.vert a.frag scene.toml [--json]
 //   glslrun trace --vertex N [--draw D] a.vert a.frag scene.toml
 //   glslrun trace --find-nan [--colour-range] a.vert a.frag scene.toml
 #include "trace_command.h"
@@ -29,7 +29,7 @@ Result<std::pair<int, int>> parse_pixel(const std::string& text) {
 
 struct TraceOptions {
     std::vector<std::string> files;
-    std::string pixel, size;
+    std::string pixel, size, target;
     std::optional<uint32_t> vertex;
     uint32_t draw = 0;
     bool json = false, find_nan = false, colour_range = false;
@@ -41,6 +41,8 @@ int run_trace(const TraceOptions& o) {
     if (!in) return fail(in.error());
     if (in->scene.empty() || (in->vertex.empty() && in->fragment.empty()))
         return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"), kToolError);
+    if (!o.target.empty() && o.pixel.empty())
+        return fail(Error("--target NAME names the render target of --pixel X,Y, which is missing"), kToolError);
     if (o.pixel.empty() && !o.vertex && !o.find_nan)
         return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"), kToolError);
     std::optional<std::pair<int, int>> pixel;
@@ -69,6 +71,7 @@ int run_trace(const TraceOptions& o) {
     request.vertex = o.vertex;
     request.draw = o.draw;
     request.pixel = pixel;
+    request.target = o.target;
     request.sources = in->vertex;
     request.sources.insert(request.sources.end(), in->fragment.begin(), in->fragment.end());
     auto trace = debug::trace(*program, *debug, *scene, fb, request);
@@ -86,6 +89,8 @@ int trace_main(int argc, char** argv) {
     app.add_option("files", o.files, "shader.vert shader.frag scene.toml")->required();
     app.add_option("--pixel", o.pixel, "trace every fragment at X,Y (image coordinates, top-left origin)")
         ->type_name("X,Y");
+    app.add_option("--target", o.target, "--pixel in this render target of the scene, not in the image")
+        ->type_name("NAME");
     app.add_option("--vertex", o.vertex, "trace vertex N (of draw --draw)")->type_name("N");
     app.add_option("--draw", o.draw, "the draw (scene object, from 0) of --vertex");
     app.add_flag("--json", o.json, "print the trace as JSON");

@@ -1,0 +1,4 @@
+void main() {
+    gl_FragData[0] = gl_Color;
+    gl_FragData[1] = gl_Color.abgr;
+}
