@@ -156,7 +156,13 @@ def test_http(src, glslrun, out):
     check(digest(files) == before, "the user's files changed")
     server.stop(signal.SIGINT)
     # A port in use is a clear error.
-    other = Server(glslrun, files, out)
+    # A comment in Latin-1 (not UTF-8) is shown with U+FFFD, not an error.
+    latin1 = os.path.join(out, "latin1.frag")
+    with open(latin1, "wb") as f:
+        f.write(b"// ilumina\xe7\xe3o\n" + open(files[1], "rb").read())
+    other = Server(glslrun, [files[0], latin1, files[2]], out)
+    check("\ufffd" in other.json("GET", "/api/files")["files"][1]["text"], "the Latin-1 comment")
+    check(other.json("POST", "/api/render", b"")["ok"], "the Latin-1 shader did not render")
     res = subprocess.run([glslrun, "serve", "--port", str(other.port), *files], capture_output=True, text=True,
                          timeout=30)
     check(res.returncode == 2 and "cannot listen" in res.stderr, f"a port in use: {res.returncode} {res.stderr}")

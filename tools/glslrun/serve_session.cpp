@@ -26,7 +26,10 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-std::string error_json(const Error& e) { return json{{"error", e.str()}}.dump(); }
+// Invalid UTF-8 (a Latin-1 comment) becomes U+FFFD rather than an exception.
+std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+std::string error_json(const Error& e) { return dump(json{{"error", e.str()}}); }
 
 const char* stage_kind(bool vertex) { return vertex ? "vert" : "frag"; }
 
@@ -50,9 +53,8 @@ std::string ServeSession::files_json() const {
     json files = json::array();
     for (size_t i = 0; i < files_.size(); ++i)
         files.push_back({{"index", i}, {"name", files_[i].name}, {"kind", files_[i].kind}, {"text", files_[i].text}});
-    return json{{"files", files}, {"precision", precision_name(options_.precision)},
-                {"time_limit", options_.time_limit}}
-        .dump();
+    return dump(json{{"files", files}, {"precision", precision_name(options_.precision)},
+                     {"time_limit", options_.time_limit}});
 }
 
 bool ServeSession::set_text(size_t index, std::string text) {
@@ -101,7 +103,7 @@ json diagnostics_json(const std::vector<Diagnostic>& diagnostics, const auto& fi
 
 std::string ServeSession::render_json() {
     auto failed = [&](const Error& e) {
-        return json{{"ok", false}, {"diagnostics", diagnostics_json(e.diagnostics, files_)}}.dump();
+        return dump(json{{"ok", false}, {"diagnostics", diagnostics_json(e.diagnostics, files_)}});
     };
     auto scene = parse_scene_text();
     if (!scene) return failed(scene.error());
@@ -124,13 +126,12 @@ std::string ServeSession::render_json() {
     if (Status st = scene::write_png(scene::read_framebuffer(*fb), path); !st) return failed(st.error());
     if (!image_png_.empty()) fs::remove(image_png_);
     image_png_ = path;
-    return json{{"ok", true},
-                {"generation", generation_},
-                {"width", scene->width},
-                {"height", scene->height},
-                {"stats", format_stats(*prog, *scene, *stats, compile_ms, ms_since(start))},
-                {"diagnostics", diagnostics_json(scene->warnings, files_)}}
-        .dump();
+    return dump(json{{"ok", true},
+                     {"generation", generation_},
+                     {"width", scene->width},
+                     {"height", scene->height},
+                     {"stats", format_stats(*prog, *scene, *stats, compile_ms, ms_since(start))},
+                     {"diagnostics", diagnostics_json(scene->warnings, files_)}});
 }
 
 // The scene and the program with its debugging twin, under the time limit
@@ -186,7 +187,7 @@ std::string ServeSession::findings_json() {
     json findings = json::array();
     if (report->nan) findings.push_back(finding_json("nan", *report->nan));
     if (report->out_of_range) findings.push_back(finding_json("colour_range", *report->out_of_range));
-    return json{{"findings", findings}, {"summary", debug::format_text(*report)}}.dump();
+    return dump(json{{"findings", findings}, {"summary", debug::format_text(*report)}});
 }
 
 std::string ServeSession::heat_json() {
@@ -202,11 +203,10 @@ std::string ServeSession::heat_json() {
     if (Status st = scene::write_png(scene::heat_map(report->outputs[0]), path); !st) return error_json(st.error());
     if (!heat_png_.empty()) fs::remove(heat_png_);
     heat_png_ = path;
-    return json{{"ok", true},
-                {"output", report->outputs[0].name},
-                {"table", scene::format_error_table(*report, {})},
-                {"legend", scene::heat_map_legend()}}
-        .dump();
+    return dump(json{{"ok", true},
+                     {"output", report->outputs[0].name},
+                     {"table", scene::format_error_table(*report, {})},
+                     {"legend", scene::heat_map_legend()}});
 }
 
 std::string serve_page_dir() {
