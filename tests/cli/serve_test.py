@@ -3,13 +3,16 @@
 
   serve_test.py http    SOURCE_DIR GLSLRUN OUT_DIR   the server over HTTP: what it serves and refuses
   serve_test.py browser SOURCE_DIR GLSLRUN OUT_DIR   the page in headless chromium, driven by selenium
+  serve_test.py docs    SOURCE_DIR GLSLRUN OUT_DIR   docs/debugging.md's screenshots of the "Ooops" walk-through
 
 `browser` saves a screenshot of each step in OUT_DIR (step1-loaded.png, ...).
 It is skipped (status 77) only when chromium or chromedriver is missing.
 """
+import atexit
 import hashlib
 import http.client
 import json
+import math
 import os
 import re
 import shutil
@@ -21,6 +24,15 @@ import time
 import urllib.request
 
 SKIP = 77
+RUNNING = []  # servers not stopped yet: killed at exit, so that a failed check leaves none behind
+
+
+@atexit.register
+def kill_running():
+    for proc in RUNNING:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
 
 
 def fail(message):
@@ -36,11 +48,12 @@ def check(condition, message):
 class Server:
     """glslrun serve on a free port, with a TMPDIR of its own (its scratch directory goes there)."""
 
-    def __init__(self, glslrun, files, out_dir, *options):
+    def __init__(self, glslrun, files, out_dir, *options, cwd=None):
         self.tmp = tempfile.mkdtemp(prefix="tmp-", dir=out_dir)
         env = dict(os.environ, TMPDIR=self.tmp)
         self.proc = subprocess.Popen([glslrun, "serve", "--port", "0", *options, *files], env=env,
-                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd)
+        RUNNING.append(self.proc)
         line = self.proc.stdout.readline()
         m = re.match(r"glslrun serve: http://127\.0\.0\.1:(\d+)/ \(Ctrl-C stops\)$", line.strip())
         if not m:
@@ -78,6 +91,7 @@ class Server:
         except subprocess.TimeoutExpired:
             self.proc.kill()
             fail(f"serve did not stop on signal {sig}")
+        RUNNING.remove(self.proc)
         check(status == 0, f"serve exited with {status} on signal {sig}: {self.proc.stderr.read()}")
         left = os.listdir(self.tmp)
         check(not left, f"the scratch directory was left behind: {left}")
@@ -130,10 +144,16 @@ def test_http(src, glslrun, out):
     check(not r["ok"] and any(d["index"] == 2 and d["line"] > 0 for d in r["diagnostics"]), f"bad scene: {r}")
     r = server.json("POST", "/api/files/2", scene.encode())
     # A shader that never ends is stopped by the time limit, and the server answers on.
-    endless = frag.replace("gl_FragColor = color;", "float k = 0.0; while (k >= 0.0) k += 1.0; gl_FragColor = color;")
+    # A loop under the per-batch cap, over minutes of work in all: the time limit (2 s) ends it.
+    endless = frag.replace("gl_FragColor = color;", "float k = 0.0; for (int i = 0; i < 3000000; ++i) "
+                           "k += sin(k); gl_FragColor = color + k;")
     start = time.monotonic()
     r = server.json("POST", "/api/files/1", endless.encode())
-    check(not r["ok"] and time.monotonic() - start < 30, f"endless loop: {r}")
+    check(not r["ok"] and "time limit" in r["diagnostics"][0]["message"] and time.monotonic() - start < 30,
+          f"endless loop: {r}")
+    start = time.monotonic()
+    h = server.json("GET", "/api/heat")
+    check("time limit" in h.get("error", "") and time.monotonic() - start < 30, f"endless loop's heat map: {h}")
     r = server.json("POST", "/api/files/1", frag.encode())
     check(r["ok"], f"after the endless loop: {r}")
     check(server.request("POST", "/api/files/9", b"x")[0] == 404, "an edit of file 9 was accepted")
@@ -166,14 +186,14 @@ def test_http(src, glslrun, out):
     res = subprocess.run([glslrun, "serve", "--port", str(other.port), *files], capture_output=True, text=True,
                          timeout=30)
     check(res.returncode == 2 and "cannot listen" in res.stderr, f"a port in use: {res.returncode} {res.stderr}")
-    other.stop()
+    other.stop(signal.SIGHUP)
     res = subprocess.run([glslrun, "serve", files[0]], capture_output=True, text=True, timeout=30)
     check(res.returncode == 2 and "serve needs" in res.stderr, f"no scene: {res.returncode} {res.stderr}")
     print("serve over HTTP: page files only, Host/Origin checked, errors at their lines, time limit, clean stop")
 
 
 # ---------------------------------------------------------------- browser ---
-def browser_driver():
+def browser_driver(size="1600,1000"):
     chromium = shutil.which("chromium")
     chromedriver = shutil.which("chromedriver")
     if not chromium or not chromedriver:
@@ -185,7 +205,7 @@ def browser_driver():
     options = webdriver.ChromeOptions()
     options.binary_location = chromium
     for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1600,1000", "--force-device-scale-factor=1"]:
+                f"--window-size={size}", "--force-device-scale-factor=1"]:
         options.add_argument(arg)
     return webdriver.Chrome(service=Service(chromedriver), options=options)
 
@@ -205,8 +225,31 @@ def rendered(driver, generation):
         " && document.getElementById('image').complete", generation)
 
 
-def test_browser(src, glslrun, out):
+def click_pixel(driver, x, y):
+    """Clicks image pixel x,y where the page shows it, and waits for its trace."""
     from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    image = driver.find_element(By.ID, "image")
+    w, h = image.size["width"], image.size["height"]
+    scale = w / driver.execute_script("return arguments[0].naturalWidth", image)
+    driver.execute_script("document.getElementById('trace').dataset.state = ''")
+    # Offsets from the element's centre, in whole CSS pixels: the pixel's middle, rounded down.
+    ActionChains(driver).move_to_element_with_offset(image, math.floor((x + 0.5) * scale - w // 2),
+                                                     math.floor((y + 0.5) * scale - h // 2)).click().perform()
+    wait_for(driver, lambda d: d.find_element(By.ID, "trace").get_attribute("data-state") == "done", "the trace")
+    info = driver.find_element(By.ID, "pixel-info").text
+    check(info.startswith(f"pixel {x},{y}"), f"clicked {info!r}, not pixel {x},{y}")
+
+
+def trace_row(driver, line):
+    """The first traced fragment's listing row of `line`: (row, source text, values)."""
+    from selenium.webdriver.common.by import By
+    row = driver.find_element(By.CSS_SELECTOR, f"details[open] table.listing tr[data-line='{line}']")
+    cells = row.find_elements(By.TAG_NAME, "td")
+    return row, cells[1].text, cells[2].text
+
+
+def test_browser(src, glslrun, out):
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
     files = spot_files(src)
@@ -221,19 +264,12 @@ def test_browser(src, glslrun, out):
         generation = int(driver.execute_script("return document.body.dataset.generation"))
         driver.save_screenshot(f"{out}/step1-loaded.png")
         # Click the lit pixel 256,256 (the spot's centre) where the image is shown.
-        image = driver.find_element(By.ID, "image")
-        w, h = image.size["width"], image.size["height"]
-        scale = w / 512
-        ActionChains(driver).move_to_element_with_offset(image, int((256.5 * scale) - w / 2),
-                                                         int((256.5 * scale) - h / 2)).click().perform()
-        wait_for(driver, lambda d: d.find_element(By.ID, "trace").get_attribute("data-state") == "done", "the trace")
-        info = driver.find_element(By.ID, "pixel-info").text
-        check(info.startswith("pixel 256,256"), f"clicked {info!r}, not pixel 256,256")
-        row = driver.find_element(By.CSS_SELECTOR, "details[open] table.listing tr[data-line='24']")
-        cells = row.find_elements(By.TAG_NAME, "td")
+        click_pixel(driver, 256, 256)
+        row, source, values = trace_row(driver, 24)
         check("ran" in row.get_attribute("class"), "line 24 is not marked as run")
-        check("spotAtt = pow(spotDot, gl_LightSource[0].spotExponent);" in cells[1].text, f"line 24: {cells[1].text}")
-        check(re.match(r"spotAtt = 0\.\d+", cells[2].text), f"line 24's value: {cells[2].text!r}")
+        check("spotAtt = pow(spotDot, gl_LightSource[0].spotExponent);" in source, f"line 24: {source}")
+        check(re.match(r"spotAtt = 0\.\d+", values), f"line 24's value: {values!r}")
+        check(trace_row(driver, 21)[2] == "=> if: false, else-branch", "line 21's decision (file:line:column) is not shown")
         driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", row)
         driver.save_screenshot(f"{out}/step2-trace.png")
         # Delete the ';' that ends line 24, typing into the editor.
@@ -272,12 +308,50 @@ def test_browser(src, glslrun, out):
           f"{elapsed:.1f} s; screenshots in {out}")
 
 
+# ------------------------------------------------------------------- docs ---
+def make_docs(src, glslrun, out):
+    """docs/serve_oops.png and docs/serve_fixed.png: the lecture's "Ooops" at pixel 240,172, and the fix typed in."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+    files = ["shaders/spot_pix_oops.vert", "shaders/spot_pix_oops.frag", "scenes/spot.toml"]
+    driver = browser_driver("1600,900")
+    server = Server(glslrun, files, out, cwd=src)
+    try:
+        driver.get(server.url)
+        wait_for(driver, lambda d: rendered(d, 0), "the first image")
+        click_pixel(driver, 240, 172)
+        row, source, values = trace_row(driver, 32)
+        check(source.strip().startswith("color = (ambient + diffuse*intensity) * att;"), source)
+        check(trace_row(driver, 31)[2] == "intensity = 0", "intensity is not 0 on line 31")
+        driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", row)
+        driver.save_screenshot(f"{out}/serve_oops.png")
+        generation = int(driver.execute_script("return document.body.dataset.generation"))
+        text = driver.find_element(By.ID, "text")
+        text.click()
+        driver.execute_script("const t = arguments[0], old = 'color = (ambient + diffuse*intensity) * att;',"
+                              "at = t.value.indexOf(old); t.focus(); t.setSelectionRange(at, at + old.length);"
+                              "t.scrollTop = 20 * 17;", text)
+        text.send_keys("color = (diffuse*intensity)*att;\n    if ((intensity > 0.0) && (spotAtt != 0.0))\n"
+                       "        color += ambient;")
+        wait_for(driver, lambda d: rendered(d, generation), "the fixed image")
+        click_pixel(driver, 240, 172)
+        row, source, values = trace_row(driver, 33)
+        check(values == "=> if: false, else-branch\n=> if: false, else-branch", f"line 33: {values!r}")
+        driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", row)
+        driver.save_screenshot(f"{out}/serve_fixed.png")
+    finally:
+        driver.quit()
+    server.stop()
+    print(f"wrote {out}/serve_oops.png and {out}/serve_fixed.png")
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 5 or sys.argv[1] not in ("http", "browser"):
+    if len(sys.argv) != 5 or sys.argv[1] not in ("http", "browser", "docs"):
         print(__doc__, file=sys.stderr)
         sys.exit(2)
     mode, source, binary, OUT = sys.argv[1:]
     OUT = os.path.abspath(OUT)
-    shutil.rmtree(OUT, ignore_errors=True)  # no screenshot of an earlier run
-    os.makedirs(OUT)
-    (test_http if mode == "http" else test_browser)(source, os.path.abspath(binary), OUT)
+    if mode != "docs":
+        shutil.rmtree(OUT, ignore_errors=True)  # no screenshot of an earlier run
+    os.makedirs(OUT, exist_ok=True)
+    {"http": test_http, "browser": test_browser, "docs": make_docs}[mode](source, os.path.abspath(binary), OUT)

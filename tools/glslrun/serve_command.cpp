@@ -166,7 +166,7 @@ void add_routes(httplib::Server& server, ServeSession& session, std::mutex& mute
     });
 }
 
-// Ctrl-C and SIGTERM stop the server: both are blocked in every thread
+// Ctrl-C, SIGTERM and SIGHUP stop the server: they are blocked in every thread
 // (the server's threads inherit the mask) and one thread waits for them.
 class SignalStop {
 public:
@@ -174,6 +174,7 @@ public:
         sigemptyset(&set_);
         sigaddset(&set_, SIGINT);
         sigaddset(&set_, SIGTERM);
+        sigaddset(&set_, SIGHUP);  // the terminal closed
         pthread_sigmask(SIG_BLOCK, &set_, nullptr);
         thread_ = std::thread([this, &server] {
             int signal = 0;

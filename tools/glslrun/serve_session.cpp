@@ -196,6 +196,7 @@ std::string ServeSession::heat_json() {
     scene::ErrorReportOptions options;
     options.mode = options_.precision;
     options.threads = options_.threads;
+    options.time_limit = options_.time_limit;
     auto report = scene::measure_error(sources("vert"), sources("frag"), *scene, options);
     if (!report) return error_json(report.error());
     if (report->outputs.empty()) return error_json(Error("the program writes no colour to measure"));

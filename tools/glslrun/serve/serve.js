@@ -9,6 +9,7 @@ const $ = (id) => document.getElementById(id);
 const state = { files: [], current: 0, diagnostics: [], generation: 0, pixel: null, timer: null, edits: 0 };
 const FINDING_COLOURS = { nan: "#ff00ff", colour_range: "#ff9800", undefined: "#00e5ff" };
 const PALETTE = ["#76ff03", "#ffea00", "#ff1744"];
+const MAX_NOTES = 24;  // values shown beside one line of the trace
 
 function setStatus(text, kind) {
   const s = $("status");
@@ -248,14 +249,18 @@ function namedValues(title, list) {
 
 // "file:line[:column]" -> [file, line]
 function splitWhere(where) {
-  const m = /^(.*):(\d+)(?::\d+)?$/.exec(where || "");
+  const m = /^(.*?):(\d+)(?::\d+)?$/.exec(where || "");  // the line, not a column
   return m ? [m[1], Number(m[2])] : [where, 0];
 }
 
 // What a step adds to its line: `name = value`, a decision, or its fields.
 function stepNote(s) {
   if (s.kind === "assign") return `${s.name} = ${formatValue(s)}`;
-  if (s.kind === "branch") return `=> ${s.taken ? "true" : "false"}`;
+  // As the text trace words them.
+  if (s.kind === "branch") return `=> if: ${s.taken ? "true, then-branch" : "false, else-branch"}`;
+  if (s.kind === "loop") return `=> loop iteration ${s.iteration}`;
+  if (s.kind === "jump") return `=> ${s.name}`;
+  if (s.kind === "call") return `=> call ${s.name}`;
   const rest = Object.entries(s).filter(([k]) => !["kind", "depth", "where", "text"].includes(k));
   return `=> ${s.kind}${rest.length ? " " + rest.map(([k, v]) => `${k}=${JSON.stringify(v)}`).join(" ") : ""}`;
 }
@@ -273,6 +278,11 @@ function listing(trace) {
     if (!lines.has(line)) lines.set(line, { text: s.text || "", notes: [] });
     if (s.kind !== "statement") lines.get(line).notes.push(stepNote(s));
   }
+  // A loop's lines: the first notes and a count of the rest, not thousands.
+  for (const lines of byFile.values())
+    for (const entry of lines.values())
+      if (entry.notes.length > MAX_NOTES)
+        entry.notes.splice(MAX_NOTES, entry.notes.length, `... ${entry.notes.length - MAX_NOTES} more`);
   const nanLine = trace.first_nan ? splitWhere(trace.first_nan.where) : null;
   const out = el("div", {});
   for (const [file, lines] of byFile) {
