@@ -187,6 +187,11 @@ def test_http(src, glslrun, out):
                          timeout=30)
     check(res.returncode == 2 and "cannot listen" in res.stderr, f"a port in use: {res.returncode} {res.stderr}")
     other.stop(signal.SIGHUP)
+    # Without a vertex shader, as `glslrun` renders: the stand-in's note on a varying it does not write.
+    alone = Server(glslrun, files[1:], out)
+    r = alone.json("POST", "/api/render", b"")
+    check(not r["ok"] and "stand-in" in r["diagnostics"][0]["message"], f"no vertex shader: {r}")
+    alone.stop()
     res = subprocess.run([glslrun, "serve", files[0]], capture_output=True, text=True, timeout=30)
     check(res.returncode == 2 and "serve needs" in res.stderr, f"no scene: {res.returncode} {res.stderr}")
     print("serve over HTTP: page files only, Host/Origin checked, errors at their lines, time limit, clean stop")

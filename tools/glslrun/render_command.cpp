@@ -190,6 +190,8 @@ Status check_outputs(const InputFiles& inputs, const std::string& output, int bu
     return Ok{};
 }
 
+}  // namespace
+
 // Without a vertex shader glslrun links a stand-in for GL's fixed-function
 // vertex stage; an error about the vertex stage or a varying says so.
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
@@ -208,6 +210,8 @@ Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
         }
     return e;
 }
+
+namespace {
 
 // The built-in uniforms read with their values, one per line (matrices one
 // row per line), wrapped to `width` columns.

@@ -108,7 +108,10 @@ std::string ServeSession::render_json() {
     auto scene = parse_scene_text();
     if (!scene) return failed(scene.error());
     auto start = Clock::now();
-    auto prog = Program::compile(sources("vert"), sources("frag"));
+    Inputs in;
+    in.vertex = sources("vert");
+    in.fragment = sources("frag");
+    auto prog = compile_program(in, RenderOptions{});  // as `glslrun` compiles: its notes too
     if (!prog) return failed(prog.error());
     prog->exec.threads = options_.threads;
     prog->exec.precision = options_.precision;
