@@ -302,6 +302,12 @@ def test_browser(src, glslrun, out):
         driver.find_element(By.ID, "show-findings").click()
         wait_for(driver, lambda d: d.find_elements(By.CSS_SELECTOR, "#findings .finding"), "the findings")
         driver.save_screenshot(f"{out}/step5-findings.png")
+        # The heat map of the error against reference, over the image.
+        driver.find_element(By.ID, "show-heat").click()
+        wait_for(driver, lambda d: d.execute_script("const h = document.getElementById('heat');"
+                                                    "return !h.hidden && h.complete && h.naturalWidth === 512"),
+                 "the heat map")
+        driver.save_screenshot(f"{out}/step6-heat.png")
         elapsed = time.monotonic() - start
         errors = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
         check(not errors, f"the page logged errors: {errors}")
@@ -309,7 +315,7 @@ def test_browser(src, glslrun, out):
         driver.quit()
     server.stop()
     check(digest(files) == before, "the user's files changed")
-    print(f"serve in chromium: loaded, traced 256,256 (line 24), error at line 24, fixed, findings; "
+    print(f"serve in chromium: loaded, traced 256,256 (line 24), error at line 24, fixed, findings, heat map; "
           f"{elapsed:.1f} s; screenshots in {out}")
 
 

@@ -115,7 +115,7 @@ function onEdit() {
   drawGutter();
   clearTimeout(state.timer);
   const index = state.current;
-  state.timer = setTimeout(() => sendEdit(index), 300);
+  state.timer = setTimeout(reported(() => sendEdit(index)), 300);
 }
 
 async function sendEdit(index) {
@@ -148,7 +148,7 @@ function showRender(r) {
     document.body.dataset.renderOk = "true";
     document.body.dataset.generation = String(r.generation);
     sizeOverlay();
-    refreshOverlays();
+    reported(refreshOverlays)();
   };
   image.src = `/api/image.png?g=${r.generation}`;
 }
@@ -384,6 +384,11 @@ function readPixel([x, y]) {
   return Array.from(g.getImageData(x, y, 1, 1).data);
 }
 
+// A failed request (the server stopped, say) on the status line, not lost.
+function reported(handler) {
+  return (...args) => handler(...args).catch((e) => setStatus(String(e), "error"));
+}
+
 // ------------------------------------------------------------------ start ---
 async function start() {
   const r = await getJson("/api/files");
@@ -393,9 +398,9 @@ async function start() {
   showFile(frag >= 0 ? frag : 0);
   $("text").addEventListener("input", onEdit);
   $("text").addEventListener("scroll", syncScroll);
-  $("view").addEventListener("click", tracePixel);
-  $("show-findings").addEventListener("change", refreshOverlays);
-  $("show-heat").addEventListener("change", refreshOverlays);
+  $("view").addEventListener("click", reported(tracePixel));
+  $("show-findings").addEventListener("change", reported(refreshOverlays));
+  $("show-heat").addEventListener("change", reported(refreshOverlays));
   window.addEventListener("resize", () => { sizeOverlay(); drawOverlay(); });
   showRender(await getJson("/api/render", { method: "POST" }));
 }
