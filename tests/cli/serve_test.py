@@ -277,6 +277,18 @@ def test_browser(src, glslrun, out):
         check(trace_row(driver, 21)[2] == "=> if: false, else-branch", "line 21's decision (file:line:column) is not shown")
         driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", row)
         driver.save_screenshot(f"{out}/step2-trace.png")
+        # Fields the page does not know (a newer trace's) are shown, not dropped: the same trace with two added.
+        shown = driver.execute_async_script("""
+            const done = arguments[arguments.length - 1];
+            fetch('/api/trace?x=256&y=256').then((r) => r.json()).then((t) => {
+              t.fragments[0].colour_after = [1, 0.5, 0, 1];
+              t.fragments[0].trace.steps.find((s) => s.kind === 'assign').lookup = {lod: 1.5};
+              showTrace(t);
+              done([document.querySelector("details[open] .extra[data-key='colour_after']")?.textContent,
+                    document.querySelector("details[open] table.listing tr[data-line='11'] td.values")?.textContent]);
+            });""")
+        check(shown[0] and "colour_after" in shown[0] and "0.5" in shown[0], f"an unknown fragment field: {shown}")
+        check(shown[1] and 'lookup: {"lod":1.5}' in shown[1], f"an unknown step field: {shown}")
         # Delete the ';' that ends line 24, typing into the editor.
         text = driver.find_element(By.ID, "text")
         text.click()

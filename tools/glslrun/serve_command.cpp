@@ -12,9 +12,11 @@
 // removed at exit; every render, trace and search has a time limit.
 #include "serve_command.h"
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -228,12 +230,16 @@ int run_serve(const ServeArgs& a) {
         setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
     });
     add_routes(server, session, mutex, *page);
+    // A browser's idle connection holds a worker until this passes, and the stop waits for it.
+    server.set_keep_alive_timeout(1);
     int port = a.options.port;
+    errno = 0;
     if (port == 0) port = server.bind_to_any_port(a.options.host);
     else if (!server.bind_to_port(a.options.host, port)) port = -1;
     if (port <= 0)
-        return fail(Error(fmt::format("cannot listen on {}:{} (in use? --port 0 picks a free port)",
-                                      a.options.host, a.options.port)), kToolError);
+        return fail(Error(fmt::format("cannot listen on {}:{}: {} (--port 0 picks a free port)", a.options.host,
+                                      a.options.port, errno ? std::strerror(errno) : "bind failed")),
+                    kToolError);
     server.set_pre_routing_handler([port](const httplib::Request& req, httplib::Response& res) {
         if (from_this_page(req, port)) return httplib::Server::HandlerResponse::Unhandled;
         res.status = 403;

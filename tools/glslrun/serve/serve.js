@@ -253,16 +253,19 @@ function splitWhere(where) {
   return m ? [m[1], Number(m[2])] : [where, 0];
 }
 
-// What a step adds to its line: `name = value`, a decision, or its fields.
+// What a step adds to its line: `name = value`, a decision, as the text
+// trace words them; then any field this page does not know, as it is.
+const STEP_KNOWN = ["kind", "depth", "where", "text", "name", "type", "value", "rows", "taken", "iteration"];
 function stepNote(s) {
-  if (s.kind === "assign") return `${s.name} = ${formatValue(s)}`;
-  // As the text trace words them.
-  if (s.kind === "branch") return `=> if: ${s.taken ? "true, then-branch" : "false, else-branch"}`;
-  if (s.kind === "loop") return `=> loop iteration ${s.iteration}`;
-  if (s.kind === "jump") return `=> ${s.name}`;
-  if (s.kind === "call") return `=> call ${s.name}`;
-  const rest = Object.entries(s).filter(([k]) => !["kind", "depth", "where", "text"].includes(k));
-  return `=> ${s.kind}${rest.length ? " " + rest.map(([k, v]) => `${k}=${JSON.stringify(v)}`).join(" ") : ""}`;
+  let note;
+  if (s.kind === "assign") note = `${s.name} = ${formatValue(s)}`;
+  else if (s.kind === "branch") note = `=> if: ${s.taken ? "true, then-branch" : "false, else-branch"}`;
+  else if (s.kind === "loop") note = `=> loop iteration ${s.iteration}`;
+  else if (s.kind === "jump") note = `=> ${s.name}`;
+  else if (s.kind === "call") note = `=> call ${s.name}`;
+  else note = `=> ${s.kind}${s.name ? " " + s.name : ""}`;
+  const rest = Object.entries(s).filter(([k]) => !STEP_KNOWN.includes(k));
+  return note + rest.map(([k, v]) => `\n    ${k}: ${JSON.stringify(v)}`).join("");
 }
 
 // Each file the steps ran in, whole, with the values beside the lines that ran.
