@@ -310,6 +310,12 @@ def test_browser(src, glslrun, out):
         check(not driver.find_element(By.ID, "no-image").is_displayed(), "the image is still marked stale")
         check(server.request("GET", "/api/image.png")[1] == first_png, "the fixed image differs from the first")
         driver.save_screenshot(f"{out}/step4-fixed.png")
+        # Tab indents in the editor rather than moving the focus away.
+        generation = int(driver.execute_script("return document.body.dataset.generation"))
+        text.send_keys(Keys.TAB)
+        check(driver.execute_script("return document.activeElement.id") == "text", "Tab left the editor")
+        check("spotExponent);    \n" in text.get_attribute("value"), "Tab did not insert four spaces")
+        wait_for(driver, lambda d: rendered(d, generation), "the image after the Tab")
         # The findings overlay: the first colour outside [0, 1] is marked.
         driver.find_element(By.ID, "show-findings").click()
         wait_for(driver, lambda d: d.find_elements(By.CSS_SELECTOR, "#findings .finding"), "the findings")

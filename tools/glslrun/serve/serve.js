@@ -118,6 +118,13 @@ function onEdit() {
   state.timer = setTimeout(reported(() => sendEdit(index)), 300);
 }
 
+// Tab indents (four spaces, as the lecture's sources) instead of leaving the editor.
+function indentOnTab(event) {
+  if (event.key !== "Tab" || event.shiftKey || event.ctrlKey || event.altKey) return;
+  event.preventDefault();
+  document.execCommand("insertText", false, "    ");  // keeps the browser's undo; fires "input"
+}
+
 async function sendEdit(index) {
   const edit = ++state.edits;
   setStatus("rendering", "busy");
@@ -400,6 +407,7 @@ async function start() {
   const frag = state.files.findIndex((f) => f.kind === "frag");
   showFile(frag >= 0 ? frag : 0);
   $("text").addEventListener("input", onEdit);
+  $("text").addEventListener("keydown", indentOnTab);
   $("text").addEventListener("scroll", syncScroll);
   $("view").addEventListener("click", reported(tracePixel));
   $("show-findings").addEventListener("change", reported(refreshOverlays));
