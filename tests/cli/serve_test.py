@@ -277,6 +277,11 @@ def test_browser(src, glslrun, out):
         check(trace_row(driver, 21)[2] == "=> if: false, else-branch", "line 21's decision (file:line:column) is not shown")
         driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", row)
         driver.save_screenshot(f"{out}/step2-trace.png")
+        # A click on a line of the trace selects that line in the editor.
+        row.click()
+        selected = driver.execute_script("const t = document.getElementById('text');"
+                                         "return t.value.slice(t.selectionStart, t.selectionEnd)")
+        check(selected.strip() == "spotAtt = pow(spotDot, gl_LightSource[0].spotExponent);", f"selected {selected!r}")
         # Fields the page does not know (a newer trace's) are shown, not dropped: the same trace with two added.
         shown = driver.execute_async_script("""
             const done = arguments[arguments.length - 1];
@@ -299,6 +304,10 @@ def test_browser(src, glslrun, out):
                  "the compile error")
         marked = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#gutter div.error")]
         check(marked == ["24"], f"lines marked as errors: {marked}")
+        # The margin's line 24 is beside the text's line 24 (the mark drawn over the text), scrolled as it is.
+        tops = driver.execute_script("return [document.getElementById('line-24').getBoundingClientRect().top,"
+                                     "document.querySelector('#marks div.error').getBoundingClientRect().top]")
+        check(abs(tops[0] - tops[1]) < 2, f"the margin is not beside the text: line 24 at {tops[0]}, its mark at {tops[1]}")
         messages = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#diagnostics li.error")]
         check(any(":24: error:" in m and "spot_pix_fixed.frag" in m for m in messages), f"diagnostics: {messages}")
         check(driver.find_element(By.ID, "no-image").is_displayed(), "the stale image is not marked")

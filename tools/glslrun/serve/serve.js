@@ -304,8 +304,9 @@ function listing(trace) {
     for (const n of numbers) {
       const ran = lines.get(n);
       const cls = (ran ? "ran" : "") + (nanLine && nanLine[0] === file && nanLine[1] === n ? " nan" : "");
-      table.append(el("tr", { class: cls, "data-line": n }, el("td", { class: "n" }, n),
-                      el("td", { class: "src" }, texts ? texts[n - 1] : ran.text),
+      const index = state.files.indexOf(source);  // a click shows the line in the editor
+      table.append(el("tr", { class: cls, "data-line": n, onclick: () => goToLine(index, n) },
+                      el("td", { class: "n" }, n), el("td", { class: "src" }, texts ? texts[n - 1] : ran.text),
                       el("td", { class: "values" }, ran ? ran.notes.join("\n") : "")));
     }
     out.append(el("div", { class: "kv" }, file), table);
