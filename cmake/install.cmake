@@ -1,7 +1,7 @@
 # `cmake --install build` (default prefix /usr/local), stripped unless
 # GLSLRUN_INSTALL_DEBUG (cmake/install_strip.cmake), in three components
 # (`cmake --install build --component NAME`):
-#   runtime      the glslrun command, its man page and bash/zsh completion,
+#   runtime      the glslrun command, its man page and bash/zsh completion, the page of glslrun serve,
 #                libglslrun.so.0, the licence
 #   development  the public headers, the static libraries, the libglslrun.so
 #                link, the CMake package (find_package(glslrun)) and the
@@ -30,6 +30,8 @@ install(DIRECTORY include/glslrun DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPON
 install(FILES ${PROJECT_BINARY_DIR}/include/glslrun/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/glslrun
   COMPONENT development)
 install(FILES LICENSE docs/licenses.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+# The page of `glslrun serve`.
+install(DIRECTORY tools/glslrun/serve/ DESTINATION ${CMAKE_INSTALL_DATADIR}/glslrun/serve COMPONENT runtime)
 install(FILES tools/completion/glslrun.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
   RENAME glslrun COMPONENT runtime)
 install(FILES tools/completion/_glslrun DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/site-functions COMPONENT runtime)

@@ -4,7 +4,7 @@
 #   cmake -DGLSLRUN=path/to/glslrun -DHELP2MAN=help2man -DOUTPUT=glslrun.1 -P man_page.cmake
 set(include_file ${OUTPUT}.include)
 set(text "[NAME]\nglslrun \\- legacy GLSL (1.10/1.20) on the CPU: render scenes, run piglit tests, trace shaders\n\n[COMMANDS]\n")
-foreach(command test batch trace)
+foreach(command test batch trace serve)
   execute_process(COMMAND ${GLSLRUN} ${command} --help OUTPUT_VARIABLE help ERROR_VARIABLE help
                   RESULT_VARIABLE result)
   if(result)

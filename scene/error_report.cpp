@@ -27,11 +27,12 @@ struct Frame {
 };
 
 Result<Program> compile_for(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
-                            Precision precision, unsigned threads) {
+                            Precision precision, const ErrorReportOptions& options) {
     auto prog = Program::compile(vertex, fragment);
     if (!prog) return prog.error();
     prog->exec.precision = precision;
-    prog->exec.threads = threads;
+    prog->exec.threads = options.threads;
+    prog->exec.set_time_limit(options.time_limit);
     return prog;
 }
 
@@ -205,9 +206,9 @@ Result<std::vector<AblationRow>> ablate(Program& fast, const Scene& scene, const
 
 Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
                                   const Scene& scene, const ErrorReportOptions& options) {
-    auto reference = compile_for(vertex, fragment, Precision::Reference, options.threads);
+    auto reference = compile_for(vertex, fragment, Precision::Reference, options);
     if (!reference) return reference.error();
-    auto actual = compile_for(vertex, fragment, options.mode, options.threads);
+    auto actual = compile_for(vertex, fragment, options.mode, options);
     if (!actual) return actual.error();
     ErrorReport report;
     report.mode = options.mode;

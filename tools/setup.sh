@@ -13,9 +13,11 @@ packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools
           libtinyobjloader-dev nlohmann-json3-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
           help2man  # the man page, from glslrun --help
+          libcpp-httplib-dev nlohmann-json3-dev  # glslrun serve: its HTTP server and JSON
           ccache)  # the builds below (and CI's variants) reuse each other's object files
 [ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev  # clang: the sanitizer and fuzzer build
                                   python3-hypothesis)  # the Python module's fuzz run (python/tests/test_fuzz.py)
+[ "$mode" = test ] && packages+=(chromium chromium-driver python3-selenium)  # glslrun serve's page in a browser (tests/cli/serve_test.py)
 [ "$mode" = test ] && packages+=(zsh  # tests/package/consumer.sh tries the zsh completion
                                   python3-build python3-venv python3-mypy)  # the wheel, venv and type stub (tests/package/wheel.sh)
 missing=()

@@ -85,5 +85,11 @@ expect_error "needs a scene" "$vs" "$fs" --error-report "$tmp/x"
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" --bench 2
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" -o "$tmp/x.png"
 expect_error "does not combine" "$vs" "$fs" "$scene" --size 8x8 --error-report "$tmp/x" --stats
+# --time-limit bounds the report's renders (reference is the slow one): a shader that loops
+# for minutes ends with the time limit's error.
+sed 's/gl_FragColor = color;/float k = 0.0; for (int i = 0; i < 3000000; ++i) k += sin(k); gl_FragColor = color + k;/' \
+    "$fs" > "$tmp/slow.frag"
+grep -q 3000000 "$tmp/slow.frag" || fail "the slow shader was not made"
+expect_error "time limit" "$vs" "$tmp/slow.frag" "$scene" --error-report "$tmp/slow" --time-limit 1
 
 finish "error report: all checks passed"

@@ -37,6 +37,7 @@ has "$out/runtime/lib/libglslrun.so.0"
 has "$out/runtime/share/man/man1/glslrun.1"
 has "$out/runtime/share/doc/glslrun/LICENSE"
 has "$out/runtime/share/bash-completion/completions/glslrun"
+has "$out/runtime/share/glslrun/serve/index.html"
 lacks "$out/runtime/include"
 lacks "$out/runtime/lib/libglslrun.a"
 has "$out/development/include/glslrun/glslrun.h"
@@ -53,7 +54,7 @@ echo "components runtime, development, python: as documented"
 # The man page (help2man over the built command's --help) names every
 # subcommand and the options of the help it came from.
 man_page=$stage/share/man/man1/glslrun.1
-for command in test trace batch; do
+for command in test trace batch serve; do
     grep -q "glslrun $command" "$man_page" || { echo "the man page lacks glslrun $command" >&2; exit 1; }
 done
 sed 's/\\-/-/g' "$man_page" > "$out/man.txt"  # roff's \- is a plain hyphen
@@ -69,6 +70,7 @@ bash -c '
     complete_line x "$2" --precision f | grep -qx "fast"
     complete_line x "$2" tr | grep -qw "trace"
     complete_line x "$2" test --jun | grep -qx -- "--junit"
+    complete_line x "$2" serve --po | grep -qx -- "--port"
 ' sh "$stage/share/bash-completion/completions/glslrun" "$stage/bin/glslrun"
 # zsh completion, where zsh is installed (tools/setup.sh test installs it):
 # compadd and _files stand in for the completion system's, printing what they get.
@@ -82,6 +84,7 @@ if command -v zsh > /dev/null; then
             try "$1" "$2" --precision f | grep -qw fast &&
             try "$1" "$2" tr | grep -qw trace &&
             try "$1" "$2" test --jun | tr " " "\n" | grep -qx -- --junit &&
+            try "$1" "$2" serve --po | tr " " "\n" | grep -qx -- --port &&
             try "$1" "$2" a.vert sc | grep -qx _files
         }
         try_all "$1" "$2"

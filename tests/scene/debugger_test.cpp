@@ -215,7 +215,7 @@ TEST_CASE("--find-nan looks at the vertices first, in draw order", "[debug]") {
     CHECK(report->nan->event.op == "flog");
     CHECK_FALSE(report->out_of_range);  // not asked for
     // The quad's vertex with x > 0 and y > 0.
-    auto trace = debug::trace(*prog, *dbg, *scene, fb, debug::TraceRequest{std::nullopt, report->nan->vertex_index, 0, {}});
+    auto trace = debug::trace(*prog, *dbg, *scene, fb, debug::TraceRequest{std::nullopt, report->nan->vertex_index, 0, {}, {}});
     REQUIRE(trace);
     REQUIRE(trace->vertices.size() == 1);
     CHECK(trace->vertices[0].trace.first_nan);

@@ -3,7 +3,7 @@
 _glslrun() {
     local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD - 1]} sub="" i
     for ((i = 1; i < COMP_CWORD; i++)); do
-        case ${COMP_WORDS[i]} in test | batch | trace) sub=${COMP_WORDS[i]}; break ;; esac
+        case ${COMP_WORDS[i]} in test | batch | trace | check | serve) sub=${COMP_WORDS[i]}; break ;; esac
     done
     COMPREPLY=()
     case $prev in
@@ -26,7 +26,7 @@ _glslrun() {
     mapfile -t COMPREPLY < <(compgen -f -- "$cur")
     if [[ -z $sub && $COMP_CWORD -eq 1 ]]; then
         local commands
-        mapfile -t commands < <(compgen -W "test batch trace" -- "$cur")
+        mapfile -t commands < <(compgen -W "test batch trace check serve" -- "$cur")
         COMPREPLY+=("${commands[@]}")
     fi
 }

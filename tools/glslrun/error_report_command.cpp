@@ -45,6 +45,7 @@ int run_error_report(const std::vector<ShaderSource>& vertex, const std::vector<
     scene::ErrorReportOptions options;
     options.mode = o.precision;
     options.threads = o.threads;
+    options.time_limit = o.time_limit;  // --time-limit: for the report's renders together
     auto report = scene::measure_error(vertex, fragment, scene, options);
     if (!report) return fail(report.error());
     auto files = scene::write_error_images(*report, o.error_report, [&](const std::string& path) {

@@ -8,6 +8,7 @@
 //   glslrun batch JOBS                        many renders in one process
 //   glslrun trace --pixel X,Y a.vert a.frag scene.toml   the shader debugger (docs/debugging.md)
 //   glslrun check a.frag ...                  each shader compiled alone: diagnostics only
+//   glslrun serve a.vert a.frag scene.toml    the debugger as a local web page
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -34,7 +35,9 @@
 #include "render_command.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
+#include "serve_command.h"
 #include "trace_command.h"
+#include "watchdog.h"
 
 namespace {
 
@@ -86,23 +89,7 @@ struct TestOptions {
     Backend backend = Backend::Auto;
 };
 
-// Sets its flag once `seconds` have passed, unless it is destroyed first:
-// the wall-clock limit of a test run in this process (--no-isolate).
-class Watchdog {
-public:
-    explicit Watchdog(double seconds)
-        : thread_([this, seconds](std::stop_token stop) {
-              std::mutex m;
-              std::unique_lock lock(m);
-              std::condition_variable_any cv;
-              cv.wait_for(lock, stop, std::chrono::duration<double>(seconds), [] { return false; });
-              if (!stop.stop_requested()) fired_ = true;
-          }) {}
-    const std::atomic<bool>* flag() const { return &fired_; }
-private:
-    std::atomic<bool> fired_{false};
-    std::jthread thread_;  // last: it stops and joins before fired_ goes
-};
+using cli::Watchdog;
 
 bool write_report(const std::string& path, const std::string& text, const char* what) {
     if (path.empty()) return true;
@@ -264,7 +251,9 @@ int program_cli(int argc, char** argv) {
                  "files\n"
                  "  glslrun batch JOBS                              render many jobs in one process\n"
                  "  glslrun trace --pixel X,Y a.vert a.frag s.toml  the shader debugger: every statement at "
-                 "a pixel",
+                 "a pixel\n"
+                 "  glslrun serve [--port N] a.vert a.frag s.toml   the debugger as a web page on 127.0.0.1: edit, "
+                 "click a pixel",
                  "glslrun"};
     std::vector<std::string> files;
     cli::RenderOptions o;
@@ -362,7 +351,7 @@ int program_cli(int argc, char** argv) {
 // command ("trac"): a usage error that names the closest command, rather
 // than "unknown kind of file".
 std::optional<int> unknown_command(std::string_view word) {
-    static const std::vector<std::string_view> kCommands = {"test", "batch", "trace", "check"};
+    static const std::vector<std::string_view> kCommands = {"test", "batch", "trace", "check", "serve"};
     if (word.empty() || word[0] == '-' || word.find_first_of("./\\") != std::string_view::npos) return std::nullopt;
     std::error_code ec;
     if (std::filesystem::exists(std::string(word), ec)) return std::nullopt;
@@ -379,6 +368,7 @@ int run_command(int argc, char** argv) {
     if (first == "batch") return batch_main(argc - 1, argv + 1);
     if (first == "trace") return glslrun::cli::trace_main(argc - 1, argv + 1);
     if (first == "check") return glslrun::cli::check_main(argc - 1, argv + 1);
+    if (first == "serve") return glslrun::cli::serve_main(argc - 1, argv + 1);
     if (auto status = unknown_command(first)) return *status;
     return program_cli(argc, argv);
 }

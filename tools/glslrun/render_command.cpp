@@ -190,6 +190,8 @@ Status check_outputs(const InputFiles& inputs, const std::string& output, int bu
     return Ok{};
 }
 
+}  // namespace
+
 // Without a vertex shader glslrun links a stand-in for GL's fixed-function
 // vertex stage; an error about the vertex stage or a varying says so.
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
@@ -208,6 +210,8 @@ Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
         }
     return e;
 }
+
+namespace {
 
 // The built-in uniforms read with their values, one per line (matrices one
 // row per line), wrapped to `width` columns.
@@ -266,27 +270,34 @@ std::string describe_textures(const scene::Scene& scene) {
     return out.empty() ? "none" : out;
 }
 
-void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats& s, double compile_ms,
-                 double output_ms) {
-    fmt::print("scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
+}  // namespace
+
+std::string format_stats(const Program& prog, const scene::Scene& scene, const DrawStats& s, double compile_ms,
+                         double output_ms) {
+    std::string text;
+    auto out = std::back_inserter(text);
+    fmt::format_to(out, "scene        {} ({}x{}, {} object{})\n", scene.path, scene.width, scene.height,
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
-    fmt::print("precision    {}\n", precision_name(prog.exec.precision));
+    fmt::format_to(out, "precision    {}\n", precision_name(prog.exec.precision));
     const Backend backend = effective_backend(prog.exec.backend, prog.exec.precision);
-    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms\n", backend_name(backend),
+    fmt::format_to(out, "backend      {}{}, LLVM compile so far {:.2f} ms\n", backend_name(backend),
                backend == Backend::Jit && prog.exec.backend == Backend::Auto
                    ? " (auto: the interpreter until compiled)" : "",
                prog.jit_compile_seconds() * 1e3);
-    fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
+    fmt::format_to(out, "vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     // The fused pipeline's fragments, and its share of LLVM's time above.
-    fmt::print("fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
+    fmt::format_to(out, "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
                s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
-    fmt::print("instructions {} (ExecOptions::max_draw_instructions bounds each draw)\n", s.instructions);
-    fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
+    fmt::format_to(out, "instructions {} (ExecOptions::max_draw_instructions bounds each draw)\n", s.instructions);
+    fmt::format_to(out, "time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
-    fmt::print("built-in uniforms read   {}", builtin_values(prog, terminal_width()));
-    fmt::print("built-in attributes read {}\n", join_builtin_attributes(prog));
-    fmt::print("textures     {}\n", describe_textures(scene));
+    fmt::format_to(out, "built-in uniforms read   {}", builtin_values(prog, terminal_width()));
+    fmt::format_to(out, "built-in attributes read {}\n", join_builtin_attributes(prog));
+    fmt::format_to(out, "textures     {}\n", describe_textures(scene));
+    return text;
 }
+
+namespace {
 
 // Which pixels --compare counts as covered: those that differ from the
 // background colour in either image. The background is --background's, else
@@ -498,7 +509,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (writes_image)
         if (Status st = write_buffers(*fb, output); !st) return fail(st.error(), kToolError);
     double output_ms = ms_since(start);
-    if (o.stats) print_stats(*prog, *scene, *stats, compile_ms, output_ms);
+    if (o.stats) std::fputs(format_stats(*prog, *scene, *stats, compile_ms, output_ms).c_str(), stdout);
     if (o.bench_frames > 0) {
         bench.once_s = {{"output", output_ms / 1e3}, {"llvm_compile", prog->jit_compile_seconds()}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);

@@ -45,6 +45,14 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
 // format is the name's; no image is written under a misleading name.
 Status check_image_name(const std::string& output);
 
+// The program of `in`'s shaders with o.defines; without a vertex shader, an
+// error about a varying notes the fixed-function stand-in that was linked.
+Result<Program> compile_program(const Inputs& in, const RenderOptions& o);
+
+// What --stats prints: counts, time per stage, the built-in state read (matrices as rows), the textures.
+std::string format_stats(const Program& prog, const scene::Scene& scene, const DrawStats& stats, double compile_ms,
+                         double output_ms);
+
 // `files`: shaders (.vert/.frag), at most one scene (.toml), and for
 // --compare at most one PNG. Returns the process exit status.
 int run_render_command(const std::vector<std::string>& files, const RenderOptions& options);

@@ -51,6 +51,9 @@ struct ErrorReport {
 struct ErrorReportOptions {
     Precision mode = Precision::Precise;
     unsigned threads = 0;  // ExecOptions::threads; the images do not depend on it
+    // Seconds for every render of the report together (ExecOptions::set_time_limit, from the
+    // compile on); past it the report is an Error. 0: none.
+    double time_limit = 0;
 };
 
 // Compiles the program once per mode and renders `scene` in both; in Fast,
