@@ -127,7 +127,8 @@ std::string ServeSession::render_json() {
     start = Clock::now();
     std::string path = scratch_path("image");
     if (Status st = scene::write_png(scene::read_framebuffer(*fb), path); !st) return failed(st.error());
-    if (!image_png_.empty()) fs::remove(image_png_);
+    std::error_code ec;  // an old image that cannot be removed goes with the scratch directory
+    if (!image_png_.empty()) fs::remove(image_png_, ec);
     image_png_ = path;
     return dump(json{{"ok", true},
                      {"generation", generation_},
@@ -205,7 +206,8 @@ std::string ServeSession::heat_json() {
     if (report->outputs.empty()) return error_json(Error("the program writes no colour to measure"));
     std::string path = scratch_path("heat");
     if (Status st = scene::write_png(scene::heat_map(report->outputs[0]), path); !st) return error_json(st.error());
-    if (!heat_png_.empty()) fs::remove(heat_png_);
+    std::error_code ec;
+    if (!heat_png_.empty()) fs::remove(heat_png_, ec);
     heat_png_ = path;
     return dump(json{{"ok", true},
                      {"output", report->outputs[0].name},
