@@ -396,6 +396,41 @@ bool one_image(const Texture& texture) {
     return texture.target() != TextureTarget::Cube && !lod_matters(texture.sampler);
 }
 
+// fetch() of every lane's texel (nx, ny, nz) where none is the border's,
+// into l.rgba: skipped lanes read in-range texels too, selected away later.
+// A comparison reads the depths alone and compares them in a lane loop, the
+// function chosen once.
+void nearest_in_image(const TextureImage& image, const Lookup& proto, int dims, const int* nx, const int* ny,
+                      const int* nz, Lanes& l) {
+    alignas(32) int at[kLanes];
+    const int w = image.width, h = image.height;  // w * h * d below 2^24 (limits.md): no overflow
+    for (int i = 0; i < kLanes; ++i) at[i] = ((dims > 2 ? nz[i] : 0) * h + (dims > 1 ? ny[i] : 0)) * w + nx[i];
+    const glm::vec4* texels = image.texels.data();
+    if (!proto.compare) {
+        for (int i = 0; i < kLanes; ++i) put(l.rgba, i, texel_of(texels[at[i]]));
+        return;
+    }
+    alignas(32) float depth[kLanes];
+    for (int i = 0; i < kLanes; ++i) depth[i] = texels[at[i]].r;
+    float* __restrict result = l.rgba[0];
+    const float* __restrict ref = l.ref;
+    const auto compare = [&](auto func) {
+        for (int i = 0; i < kLanes; ++i) result[i] = compare_depth(func(), ref[i], depth[i]);
+    };
+    switch (proto.st->compare_func) {
+    case CompareFunc::Never: compare([] { return CompareFunc::Never; }); break;
+    case CompareFunc::Less: compare([] { return CompareFunc::Less; }); break;
+    case CompareFunc::Equal: compare([] { return CompareFunc::Equal; }); break;
+    case CompareFunc::Lequal: compare([] { return CompareFunc::Lequal; }); break;
+    case CompareFunc::Greater: compare([] { return CompareFunc::Greater; }); break;
+    case CompareFunc::Notequal: compare([] { return CompareFunc::Notequal; }); break;
+    case CompareFunc::Gequal: compare([] { return CompareFunc::Gequal; }); break;
+    case CompareFunc::Always: compare([] { return CompareFunc::Always; }); break;
+    }
+    for (int c = 1; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) l.rgba[c][i] = result[i];  // fetch()'s splat
+}
+
 // The lookups of a one_image() texture into l.rgba (the lanes whose
 // `active` is 0 too: they are selected away). The sizes are the image's,
 // not the lanes', and nothing per lane decides a level or a filter.
@@ -414,6 +449,11 @@ void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* 
         axis_indices(st.wrap_s, false, lk.coord[0], w, nx, nullptr, nullptr);
         if (dims > 1) axis_indices(st.wrap_t, false, lk.coord[1], h, ny, nullptr, nullptr);
         if (dims > 2) axis_indices(st.wrap_r, false, lk.coord[2], d, nz, nullptr, nullptr);
+        // NEAREST meets the border under CLAMP_TO_BORDER only (CLAMP clamps to the edge texels).
+        const bool border = st.wrap_s == TextureWrap::ClampToBorder ||
+                            (dims > 1 && st.wrap_t == TextureWrap::ClampToBorder) ||
+                            (dims > 2 && st.wrap_r == TextureWrap::ClampToBorder);
+        if (!border) return nearest_in_image(image, proto, dims, nx, ny, nz, l);
         for (int i = 0; i < kLanes; ++i) {
             proto.ref = l.ref[i];
             if (!active[i]) put(l.rgba, i, splat_texel(0.0f));  // defined, for the loops that select it away

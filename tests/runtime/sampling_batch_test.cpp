@@ -182,10 +182,12 @@ TEST_CASE("batched sampling equals per-lane sampling: depth textures and compare
                 depth.sampler.compare = compare;
                 depth.sampler.compare_func = func;
                 depth.sampler.depth_mode = mode;
-                for (TextureFilter min : {TextureFilter::Linear, TextureFilter::LinearMipmapLinear,
-                                          TextureFilter::NearestMipmapNearest})
+                for (TextureFilter min : {TextureFilter::Nearest, TextureFilter::Linear,
+                                          TextureFilter::LinearMipmapLinear, TextureFilter::NearestMipmapNearest})
                     for (TextureWrap wrap : kWraps) {
                         depth.sampler.min_filter = min;
+                        // NEAREST for both: every lane one image, compared texel by texel.
+                        depth.sampler.mag_filter = min == TextureFilter::Nearest ? min : TextureFilter::Linear;
                         depth.sampler.wrap_s = depth.sampler.wrap_t = wrap;
                         for (ir::TexLod lod : kLods) check_batch(rng, depth, true, lod);
                     }
