@@ -147,32 +147,32 @@ void repeat_lanes(const int* __restrict raw, N n, int offset, int* __restrict ou
 }
 
 // NEAREST's index on one axis for every lane: nearest_index<kWrap>().
-template <TextureWrap kWrap, class N>
+template <TextureWrap kWrap, bool kRound, class N>
 void nearest_lanes(const float* __restrict s, N n, int* __restrict out) {
     if constexpr (kWrap == TextureWrap::Repeat) {
         alignas(32) int raw[kLanes];
-        for (int i = 0; i < kLanes; ++i) raw[i] = floor_int((s[i] - floor_f(s[i])) * float(n[i]));
+        for (int i = 0; i < kLanes; ++i) raw[i] = floor_int<kRound>((s[i] - floor_t<kRound>(s[i])) * float(n[i]));
         repeat_lanes(raw, n, 0, out);
     } else {
-        for (int i = 0; i < kLanes; ++i) out[i] = nearest_index<kWrap>(s[i], n[i]);
+        for (int i = 0; i < kLanes; ++i) out[i] = nearest_index<kWrap, kRound>(s[i], n[i]);
     }
 }
 
 // LINEAR's two indices and weight on one axis for every lane: linear_axis<kWrap>().
-template <TextureWrap kWrap, class N>
+template <TextureWrap kWrap, bool kRound, class N>
 void linear_lanes(const float* __restrict s, N n, int* __restrict i0, int* __restrict i1, float* __restrict a) {
     if constexpr (kWrap == TextureWrap::Repeat) {
         alignas(32) int raw[kLanes];
         for (int i = 0; i < kLanes; ++i) {
-            const float u = repeat_position(s[i], float(n[i]));
-            raw[i] = floor_int(u);
-            a[i] = u - floor_f(u);
+            const float u = repeat_position<kRound>(s[i], float(n[i]));
+            raw[i] = floor_int<kRound>(u);
+            a[i] = u - floor_t<kRound>(u);
         }
         repeat_lanes(raw, n, 0, i0);
         repeat_lanes(raw, n, 1, i1);
     } else {
         for (int i = 0; i < kLanes; ++i) {
-            const LinearAxis axis = linear_axis<kWrap>(s[i], n[i]);
+            const LinearAxis axis = linear_axis<kWrap, kRound>(s[i], n[i]);
             i0[i] = axis.i0;
             i1[i] = axis.i1;
             a[i] = axis.a;
@@ -180,11 +180,12 @@ void linear_lanes(const float* __restrict s, N n, int* __restrict i0, int* __res
     }
 }
 
-template <class N>
+// `kRound`: floor_t()'s roundps, in the AVX2 build only (the same bits).
+template <bool kRound = false, class N>
 void axis_indices(TextureWrap wrap, bool linear, const float* s, N n, int* i0, int* i1, float* a) {
     with_wrap(wrap, [&]<TextureWrap kWrap>() {
-        if (linear) linear_lanes<kWrap>(s, n, i0, i1, a);
-        else nearest_lanes<kWrap>(s, n, i0);
+        if (linear) linear_lanes<kWrap, kRound>(s, n, i0, i1, a);
+        else nearest_lanes<kWrap, kRound>(s, n, i0);
     });
 }
 
@@ -446,9 +447,9 @@ void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* 
     Lookup proto{&texture, &st, 0, dims, glm::vec3(0.0f), texture.depth() && st.compare, 0.0f};
     if (!linear) {
         alignas(32) int nx[kLanes], ny[kLanes], nz[kLanes];
-        axis_indices(st.wrap_s, false, lk.coord[0], w, nx, nullptr, nullptr);
-        if (dims > 1) axis_indices(st.wrap_t, false, lk.coord[1], h, ny, nullptr, nullptr);
-        if (dims > 2) axis_indices(st.wrap_r, false, lk.coord[2], d, nz, nullptr, nullptr);
+        axis_indices<kAvx2>(st.wrap_s, false, lk.coord[0], w, nx, nullptr, nullptr);
+        if (dims > 1) axis_indices<kAvx2>(st.wrap_t, false, lk.coord[1], h, ny, nullptr, nullptr);
+        if (dims > 2) axis_indices<kAvx2>(st.wrap_r, false, lk.coord[2], d, nz, nullptr, nullptr);
         // NEAREST meets the border under CLAMP_TO_BORDER only (CLAMP clamps to the edge texels).
         const bool border = st.wrap_s == TextureWrap::ClampToBorder ||
                             (dims > 1 && st.wrap_t == TextureWrap::ClampToBorder) ||
@@ -461,9 +462,9 @@ void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* 
         }
         return;
     }
-    axis_indices(st.wrap_s, true, lk.coord[0], w, l.x0, l.x1, l.ax);
-    if (dims > 1) axis_indices(st.wrap_t, true, lk.coord[1], h, l.y0, l.y1, l.ay);
-    if (dims > 2) axis_indices(st.wrap_r, true, lk.coord[2], d, l.z0, l.z1, l.az);
+    axis_indices<kAvx2>(st.wrap_s, true, lk.coord[0], w, l.x0, l.x1, l.ax);
+    if (dims > 1) axis_indices<kAvx2>(st.wrap_t, true, lk.coord[1], h, l.y0, l.y1, l.ay);
+    if (dims > 2) axis_indices<kAvx2>(st.wrap_r, true, lk.coord[2], d, l.z0, l.z1, l.az);
     const bool border = may_border(st.wrap_s) || (dims > 1 && may_border(st.wrap_t)) ||
                         (dims > 2 && may_border(st.wrap_r));
 #if defined(__SSE2__)
