@@ -27,8 +27,8 @@ struct Lanes {
     const TextureImage* image[kLanes];  // null where the lane is skipped
     const TextureImage* sized[kLanes];  // the image whose size the lane's indices use: never null
     alignas(32) int width[kLanes], height[kLanes];
-    alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes];
-    alignas(32) float ax[kLanes], ay[kLanes];
+    alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes], z0[kLanes], z1[kLanes];
+    alignas(32) float ax[kLanes], ay[kLanes], az[kLanes];
     alignas(32) float rgba[4][kLanes], second[4][kLanes];  // results, channel by channel
 };
 
@@ -119,11 +119,23 @@ void choose_levels(const Texture& texture, Lanes& l) {
     }
 }
 
+// The image size on one axis: per lane (each lane's level), or one for
+// every lane (one image): the index loops below take either.
+struct LaneSizes {
+    const int* __restrict n;
+    int operator[](int i) const { return n[i]; }
+};
+struct OneSize {
+    int n;
+    int operator[](int) const { return n; }
+};
+
 // REPEAT's indices for every lane from the unwrapped ones (`raw`, and
 // raw + 1 where `second`): repeat_near() in a vectorised loop, then
 // repeat_index() where some lane is far out (NaN or huge coordinates).
 // Separate loops: together, the vectoriser refused them.
-void repeat_lanes(const int* __restrict raw, const int* __restrict n, int offset, int* __restrict out) {
+template <class N>
+void repeat_lanes(const int* __restrict raw, N n, int offset, int* __restrict out) {
     int far = 0;
     for (int i = 0; i < kLanes; ++i) {
         const int r = raw[i] + offset;
@@ -135,33 +147,32 @@ void repeat_lanes(const int* __restrict raw, const int* __restrict n, int offset
 }
 
 // NEAREST's index on one axis for every lane: nearest_index<kWrap>().
-template <TextureWrap kWrap>
-void nearest_lanes(const float* __restrict s, const int* __restrict n, int* __restrict out) {
+template <TextureWrap kWrap, bool kRound, class N>
+void nearest_lanes(const float* __restrict s, N n, int* __restrict out) {
     if constexpr (kWrap == TextureWrap::Repeat) {
         alignas(32) int raw[kLanes];
-        for (int i = 0; i < kLanes; ++i) raw[i] = floor_int((s[i] - floor_f(s[i])) * float(n[i]));
+        for (int i = 0; i < kLanes; ++i) raw[i] = floor_int<kRound>((s[i] - floor_t<kRound>(s[i])) * float(n[i]));
         repeat_lanes(raw, n, 0, out);
     } else {
-        for (int i = 0; i < kLanes; ++i) out[i] = nearest_index<kWrap>(s[i], n[i]);
+        for (int i = 0; i < kLanes; ++i) out[i] = nearest_index<kWrap, kRound>(s[i], n[i]);
     }
 }
 
 // LINEAR's two indices and weight on one axis for every lane: linear_axis<kWrap>().
-template <TextureWrap kWrap>
-void linear_lanes(const float* __restrict s, const int* __restrict n, int* __restrict i0, int* __restrict i1,
-                  float* __restrict a) {
+template <TextureWrap kWrap, bool kRound, class N>
+void linear_lanes(const float* __restrict s, N n, int* __restrict i0, int* __restrict i1, float* __restrict a) {
     if constexpr (kWrap == TextureWrap::Repeat) {
         alignas(32) int raw[kLanes];
         for (int i = 0; i < kLanes; ++i) {
-            const float u = repeat_position(s[i], float(n[i]));
-            raw[i] = floor_int(u);
-            a[i] = u - floor_f(u);
+            const float u = repeat_position<kRound>(s[i], float(n[i]));
+            raw[i] = floor_int<kRound>(u);
+            a[i] = u - floor_t<kRound>(u);
         }
         repeat_lanes(raw, n, 0, i0);
         repeat_lanes(raw, n, 1, i1);
     } else {
         for (int i = 0; i < kLanes; ++i) {
-            const LinearAxis axis = linear_axis<kWrap>(s[i], n[i]);
+            const LinearAxis axis = linear_axis<kWrap, kRound>(s[i], n[i]);
             i0[i] = axis.i0;
             i1[i] = axis.i1;
             a[i] = axis.a;
@@ -169,10 +180,12 @@ void linear_lanes(const float* __restrict s, const int* __restrict n, int* __res
     }
 }
 
-void axis_indices(TextureWrap wrap, bool linear, const float* s, const int* n, int* i0, int* i1, float* a) {
+// `kRound`: floor_t()'s roundps, in the AVX2 build only (the same bits).
+template <bool kRound = false, class N>
+void axis_indices(TextureWrap wrap, bool linear, const float* s, N n, int* i0, int* i1, float* a) {
     with_wrap(wrap, [&]<TextureWrap kWrap>() {
-        if (linear) linear_lanes<kWrap>(s, n, i0, i1, a);
-        else nearest_lanes<kWrap>(s, n, i0);
+        if (linear) linear_lanes<kWrap, kRound>(s, n, i0, i1, a);
+        else nearest_lanes<kWrap, kRound>(s, n, i0);
     });
 }
 
@@ -186,34 +199,126 @@ inline void put(float (*out)[kLanes], int i, Texel t) {
 bool may_border(TextureWrap wrap) { return wrap == TextureWrap::Clamp || wrap == TextureWrap::ClampToBorder; }
 
 #if defined(__SSE2__)
-// sample_linear()'s bilinear blend for the four lanes from g, channel by
-// channel: the same products and sums as mix() of four-channel texels, with
-// the lanes side by side. `at[k]`: the offsets of corner k, (x0, y0), (x1, y0),
-// (x0, y1), (x1, y1), in texels; none is the border's. Skipped lanes read
-// texels of the image their indices were computed for.
-void bilinear4(const Lanes& l, const int (*at)[kLanes], int g, float (*out)[kLanes]) {
+// The texels of lanes g..g+3 at offsets at[g..g+3], transposed into
+// channels: ch[c] holds channel c of the four lanes. `src(i)`: lane i's texels.
+template <class Src>
+[[gnu::always_inline]] inline void load4(Src src, const int* at, int g, __m128* ch) {
+    __m128 t0 = _mm_loadu_ps(&src(g)[at[g]].x);
+    __m128 t1 = _mm_loadu_ps(&src(g + 1)[at[g + 1]].x);
+    __m128 t2 = _mm_loadu_ps(&src(g + 2)[at[g + 2]].x);
+    __m128 t3 = _mm_loadu_ps(&src(g + 3)[at[g + 3]].x);
+    _MM_TRANSPOSE4_PS(t0, t1, t2, t3);
+    ch[0] = t0;
+    ch[1] = t1;
+    ch[2] = t2;
+    ch[3] = t3;
+}
+
+// mix() of four lanes side by side: x * (1 - a) + y * a, as Texel's mix().
+inline __m128 mix4(__m128 x, __m128 y, __m128 a, __m128 b) { return _mm_add_ps(_mm_mul_ps(x, b), _mm_mul_ps(y, a)); }
+
+// sample_linear()'s bilinear blend of the plane whose corners' offsets
+// start at at[0] (corners (x0, y0), (x1, y0), (x0, y1), (x1, y1)) for the
+// four lanes from g, channel by channel: the same products and sums as
+// mix() of four-channel texels, with the lanes side by side. None is the
+// border's. Skipped lanes read texels of the image their indices were
+// computed for.
+template <class Src>
+[[gnu::always_inline]] inline void plane4(Src src, const int (*at)[kLanes], const float* ax, const float* ay, int g,
+                                          __m128* plane) {
     __m128 corner[4][4];  // [corner][channel]
-    for (int k = 0; k < 4; ++k) {
-        __m128 t0 = _mm_loadu_ps(&l.sized[g]->texels[size_t(at[k][g])].x);
-        __m128 t1 = _mm_loadu_ps(&l.sized[g + 1]->texels[size_t(at[k][g + 1])].x);
-        __m128 t2 = _mm_loadu_ps(&l.sized[g + 2]->texels[size_t(at[k][g + 2])].x);
-        __m128 t3 = _mm_loadu_ps(&l.sized[g + 3]->texels[size_t(at[k][g + 3])].x);
-        _MM_TRANSPOSE4_PS(t0, t1, t2, t3);
-        corner[k][0] = t0;
-        corner[k][1] = t1;
-        corner[k][2] = t2;
-        corner[k][3] = t3;
-    }
+    for (int k = 0; k < 4; ++k) load4(src, at[k], g, corner[k]);
     const __m128 one = _mm_set1_ps(1.0f);
-    const __m128 ax = _mm_loadu_ps(&l.ax[g]), ay = _mm_loadu_ps(&l.ay[g]);
-    const __m128 bx = _mm_sub_ps(one, ax), by = _mm_sub_ps(one, ay);
-    for (int c = 0; c < 4; ++c) {
-        const __m128 row0 = _mm_add_ps(_mm_mul_ps(corner[0][c], bx), _mm_mul_ps(corner[1][c], ax));
-        const __m128 row1 = _mm_add_ps(_mm_mul_ps(corner[2][c], bx), _mm_mul_ps(corner[3][c], ax));
-        _mm_storeu_ps(&out[c][g], _mm_add_ps(_mm_mul_ps(row0, by), _mm_mul_ps(row1, ay)));
-    }
+    const __m128 a = _mm_loadu_ps(&ax[g]), b = _mm_loadu_ps(&ay[g]);
+    const __m128 ia = _mm_sub_ps(one, a), ib = _mm_sub_ps(one, b);
+    for (int c = 0; c < 4; ++c)
+        plane[c] = mix4(mix4(corner[0][c], corner[1][c], a, ia), mix4(corner[2][c], corner[3][c], a, ia), b, ib);
+}
+
+template <class Src>
+[[gnu::always_inline]] inline void bilinear4(Src src, const int (*at)[kLanes], const float* ax, const float* ay, int g,
+                                             float (*out)[kLanes]) {
+    __m128 plane[4];
+    plane4(src, at, ax, ay, g, plane);
+    for (int c = 0; c < 4; ++c) _mm_storeu_ps(&out[c][g], plane[c]);
+}
+
+// The trilinear blend: the planes at z0 (at[0..3]) and z1 (at[4..7]) mixed by az.
+template <class Src>
+[[gnu::always_inline]] inline void trilinear4(Src src, const int (*at)[kLanes], const float* ax, const float* ay,
+                                              const float* az, int g, float (*out)[kLanes]) {
+    __m128 near[4], far[4];
+    plane4(src, at, ax, ay, g, near);
+    plane4(src, at + 4, ax, ay, g, far);
+    const __m128 a = _mm_loadu_ps(&az[g]), ia = _mm_sub_ps(_mm_set1_ps(1.0f), a);
+    for (int c = 0; c < 4; ++c) _mm_storeu_ps(&out[c][g], mix4(near[c], far[c], a, ia));
 }
 #endif
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// The blends of bilinear4()/trilinear4() eight lanes at a time for the
+// AVX2 build: lanes g..g+3 in the low halves of the registers, g+4..g+7 in
+// the high ones, transposed within each half; the same products and sums
+// per lane, so the same bits. Only one image (every lane's texels).
+#define GLSLRUN_AVX2 __attribute__((target("avx2")))
+GLSLRUN_AVX2 [[gnu::always_inline]] inline void load8(const glm::vec4* texels, const int* at, int g, __m256* ch) {
+    __m256 r[4];
+    for (int j = 0; j < 4; ++j)
+        r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&texels[at[g + j]].x)),
+                                    _mm_loadu_ps(&texels[at[g + 4 + j]].x), 1);
+    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+    ch[0] = _mm256_shuffle_ps(t0, t2, 0x44);
+    ch[1] = _mm256_shuffle_ps(t0, t2, 0xee);
+    ch[2] = _mm256_shuffle_ps(t1, t3, 0x44);
+    ch[3] = _mm256_shuffle_ps(t1, t3, 0xee);
+}
+
+GLSLRUN_AVX2 [[gnu::always_inline]] inline __m256 mix8(__m256 x, __m256 y, __m256 a, __m256 b) {
+    return _mm256_add_ps(_mm256_mul_ps(x, b), _mm256_mul_ps(y, a));
+}
+
+GLSLRUN_AVX2 [[gnu::always_inline]] inline void plane8(const glm::vec4* texels, const int (*at)[kLanes],
+                                                       const float* ax, const float* ay, int g, __m256* plane) {
+    __m256 corner[4][4];
+    for (int k = 0; k < 4; ++k) load8(texels, at[k], g, corner[k]);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 a = _mm256_loadu_ps(&ax[g]), b = _mm256_loadu_ps(&ay[g]);
+    const __m256 ia = _mm256_sub_ps(one, a), ib = _mm256_sub_ps(one, b);
+    for (int c = 0; c < 4; ++c)
+        plane[c] = mix8(mix8(corner[0][c], corner[1][c], a, ia), mix8(corner[2][c], corner[3][c], a, ia), b, ib);
+}
+
+// `az` null: bilinear (corners at[0..3]); else trilinear (at[4..7] the plane at z1).
+GLSLRUN_AVX2 void blend8(const glm::vec4* texels, const int (*at)[kLanes], const float* ax, const float* ay,
+                         const float* az, int g, float (*out)[kLanes]) {
+    __m256 near[4];
+    plane8(texels, at, ax, ay, g, near);
+    if (!az) {
+        for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], near[c]);
+        return;
+    }
+    __m256 far[4];
+    plane8(texels, at + 4, ax, ay, g, far);
+    const __m256 a = _mm256_loadu_ps(&az[g]), ia = _mm256_sub_ps(_mm256_set1_ps(1.0f), a);
+    for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], mix8(near[c], far[c], a, ia));
+}
+#undef GLSLRUN_AVX2
+#endif
+
+// Lane i's linear lookup of `image` (dims 1 to 3) from the indices and
+// weights in l, lane by lane: sample_linear()'s arithmetic.
+[[gnu::always_inline]] inline Texel linear_lane(const Lookup& lk, const TextureImage& image, const Lanes& l, int i,
+                                                int dims) {
+    if (dims == 1) return mix(fetch(lk, image, l.x0[i], 0, 0), fetch(lk, image, l.x1[i], 0, 0), l.ax[i]);
+    auto plane = [&](int k) {
+        const Texel row0 = mix(fetch(lk, image, l.x0[i], l.y0[i], k), fetch(lk, image, l.x1[i], l.y0[i], k), l.ax[i]);
+        const Texel row1 = mix(fetch(lk, image, l.x0[i], l.y1[i], k), fetch(lk, image, l.x1[i], l.y1[i], k), l.ax[i]);
+        return mix(row0, row1, l.ay[i]);
+    };
+    if (dims == 2) return plane(0);
+    return mix(plane(l.z0[i]), plane(l.z1[i]), l.az[i]);
+}
 
 // One level per lane (`level`; lanes whose `take` is 0 are skipped) into
 // out[c][i]: sample_level()'s filtering. Four lanes at a time where all
@@ -238,12 +343,12 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
     const SamplerState& st = texture.sampler;
     alignas(32) int nx[kLanes], ny[kLanes];
     if (any_nearest) {
-        axis_indices(st.wrap_s, false, l.s, l.width, nx, nullptr, nullptr);
-        if (dims2) axis_indices(st.wrap_t, false, l.t, l.height, ny, nullptr, nullptr);
+        axis_indices(st.wrap_s, false, l.s, LaneSizes{l.width}, nx, nullptr, nullptr);
+        if (dims2) axis_indices(st.wrap_t, false, l.t, LaneSizes{l.height}, ny, nullptr, nullptr);
     }
     if (any_linear) {
-        axis_indices(st.wrap_s, true, l.s, l.width, l.x0, l.x1, l.ax);
-        if (dims2) axis_indices(st.wrap_t, true, l.t, l.height, l.y0, l.y1, l.ay);
+        axis_indices(st.wrap_s, true, l.s, LaneSizes{l.width}, l.x0, l.x1, l.ax);
+        if (dims2) axis_indices(st.wrap_t, true, l.t, LaneSizes{l.height}, l.y0, l.y1, l.ay);
     }
 #if defined(__SSE2__)
     const bool four = any_linear && dims2 && !proto.compare && !may_border(st.wrap_s) && !may_border(st.wrap_t);
@@ -266,7 +371,8 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
         const auto blends = [&](int i) { return (take[i] ^ 1) | l.linear[i]; };
         if (four && (blends(g) & blends(g + 1) & blends(g + 2) & blends(g + 3)) &&
             (take[g] | take[g + 1] | take[g + 2] | take[g + 3])) {
-            bilinear4(l, at, g, out);
+            const auto src = [&](int i) { return l.sized[i]->texels.data(); };
+            bilinear4(src, at, l.ax, l.ay, g, out);
             continue;
         }
 #endif
@@ -277,58 +383,188 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
             }
             const TextureImage& image = *l.image[i];
             lk.ref = l.ref[i];
-            if (!l.linear[i]) {
-                put(out, i, fetch(lk, image, nx[i], dims2 ? ny[i] : 0, 0));
-            } else if (!dims2) {
-                put(out, i, mix(fetch(lk, image, l.x0[i], 0, 0), fetch(lk, image, l.x1[i], 0, 0), l.ax[i]));
-            } else {
-                const Texel row0 =
-                    mix(fetch(lk, image, l.x0[i], l.y0[i], 0), fetch(lk, image, l.x1[i], l.y0[i], 0), l.ax[i]);
-                const Texel row1 =
-                    mix(fetch(lk, image, l.x0[i], l.y1[i], 0), fetch(lk, image, l.x1[i], l.y1[i], 0), l.ax[i]);
-                put(out, i, mix(row0, row1, l.ay[i]));
-            }
+            if (!l.linear[i]) put(out, i, fetch(lk, image, nx[i], dims2 ? ny[i] : 0, 0));
+            else put(out, i, linear_lane(lk, image, l, i, dims2 ? 2 : 1));
         }
     }
 }
 
-[[gnu::always_inline]] inline void run(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
-                                       float (*out)[kLanes]) {
-    Lanes l;
+// Whether every lane of a lookup reads one image with one filter: not a
+// cube map (a face per lane), and no level-of-detail decision (no mipmaps,
+// one filter within a level for both sides of §3.8.9): filter() then samples
+// level_base with that filter whatever lambda is.
+bool one_image(const Texture& texture) {
+    return texture.target() != TextureTarget::Cube && !lod_matters(texture.sampler);
+}
+
+// fetch() of every lane's texel (nx, ny, nz) where none is the border's,
+// into l.rgba: skipped lanes read in-range texels too, selected away later.
+// A comparison reads the depths alone and compares them in a lane loop, the
+// function chosen once.
+void nearest_in_image(const TextureImage& image, const Lookup& proto, int dims, const int* nx, const int* ny,
+                      const int* nz, Lanes& l) {
+    alignas(32) int at[kLanes];
+    const int w = image.width, h = image.height;  // w * h * d below 2^24 (limits.md): no overflow
+    for (int i = 0; i < kLanes; ++i) at[i] = ((dims > 2 ? nz[i] : 0) * h + (dims > 1 ? ny[i] : 0)) * w + nx[i];
+    const glm::vec4* texels = image.texels.data();
+    if (!proto.compare) {
+        for (int i = 0; i < kLanes; ++i) put(l.rgba, i, texel_of(texels[at[i]]));
+        return;
+    }
+    alignas(32) float depth[kLanes];
+    for (int i = 0; i < kLanes; ++i) depth[i] = texels[at[i]].r;
+    float* __restrict result = l.rgba[0];
+    const float* __restrict ref = l.ref;
+    const auto compare = [&](auto func) {
+        for (int i = 0; i < kLanes; ++i) result[i] = compare_depth(func(), ref[i], depth[i]);
+    };
+    switch (proto.st->compare_func) {
+    case CompareFunc::Never: compare([] { return CompareFunc::Never; }); break;
+    case CompareFunc::Less: compare([] { return CompareFunc::Less; }); break;
+    case CompareFunc::Equal: compare([] { return CompareFunc::Equal; }); break;
+    case CompareFunc::Lequal: compare([] { return CompareFunc::Lequal; }); break;
+    case CompareFunc::Greater: compare([] { return CompareFunc::Greater; }); break;
+    case CompareFunc::Notequal: compare([] { return CompareFunc::Notequal; }); break;
+    case CompareFunc::Gequal: compare([] { return CompareFunc::Gequal; }); break;
+    case CompareFunc::Always: compare([] { return CompareFunc::Always; }); break;
+    }
+    for (int c = 1; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) l.rgba[c][i] = result[i];  // fetch()'s splat
+}
+
+// The lookups of a one_image() texture into l.rgba (the lanes whose
+// `active` is 0 too: they are selected away). The sizes are the image's,
+// not the lanes', and nothing per lane decides a level or a filter.
+// Linear blends without the border or a comparison go four lanes at a
+// time; the others lane by lane.
+template <bool kAvx2>
+void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* active, Lanes& l) {
+    const SamplerState& st = texture.sampler;
+    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
+    const int dims = texture_dims(texture.target());
+    const bool linear = linear_within_level(st.mag_filter);  // the min filter's too (one_image)
+    const OneSize w{image.width}, h{image.height}, d{image.depth};
+    Lookup proto{&texture, &st, 0, dims, glm::vec3(0.0f), texture.depth() && st.compare, 0.0f};
+    if (!linear) {
+        alignas(32) int nx[kLanes], ny[kLanes], nz[kLanes];
+        axis_indices<kAvx2>(st.wrap_s, false, lk.coord[0], w, nx, nullptr, nullptr);
+        if (dims > 1) axis_indices<kAvx2>(st.wrap_t, false, lk.coord[1], h, ny, nullptr, nullptr);
+        if (dims > 2) axis_indices<kAvx2>(st.wrap_r, false, lk.coord[2], d, nz, nullptr, nullptr);
+        // NEAREST meets the border under CLAMP_TO_BORDER only (CLAMP clamps to the edge texels).
+        const bool border = st.wrap_s == TextureWrap::ClampToBorder ||
+                            (dims > 1 && st.wrap_t == TextureWrap::ClampToBorder) ||
+                            (dims > 2 && st.wrap_r == TextureWrap::ClampToBorder);
+        if (!border) return nearest_in_image(image, proto, dims, nx, ny, nz, l);
+        for (int i = 0; i < kLanes; ++i) {
+            proto.ref = l.ref[i];
+            if (!active[i]) put(l.rgba, i, splat_texel(0.0f));  // defined, for the loops that select it away
+            else put(l.rgba, i, fetch(proto, image, nx[i], dims > 1 ? ny[i] : 0, dims > 2 ? nz[i] : 0));
+        }
+        return;
+    }
+    axis_indices<kAvx2>(st.wrap_s, true, lk.coord[0], w, l.x0, l.x1, l.ax);
+    if (dims > 1) axis_indices<kAvx2>(st.wrap_t, true, lk.coord[1], h, l.y0, l.y1, l.ay);
+    if (dims > 2) axis_indices<kAvx2>(st.wrap_r, true, lk.coord[2], d, l.z0, l.z1, l.az);
+    const bool border = may_border(st.wrap_s) || (dims > 1 && may_border(st.wrap_t)) ||
+                        (dims > 2 && may_border(st.wrap_r));
+#if defined(__SSE2__)
+    if (dims > 1 && !border && !proto.compare) {
+        // Every index is in the image: corner k's offsets, x0/x1 by bit 0, y0/y1 by bit 1, z0/z1 by bit 2.
+        alignas(32) int at[8][kLanes];
+        const int wi = w.n, hi = h.n;  // w * h * d below 2^24 (limits.md): no overflow
+        for (int i = 0; i < kLanes; ++i) {
+            const int z0 = dims > 2 ? l.z0[i] * hi : 0;
+            const int r00 = (z0 + l.y0[i]) * wi, r01 = (z0 + l.y1[i]) * wi;
+            at[0][i] = r00 + l.x0[i];
+            at[1][i] = r00 + l.x1[i];
+            at[2][i] = r01 + l.x0[i];
+            at[3][i] = r01 + l.x1[i];
+        }
+        if (dims > 2)
+            for (int i = 0; i < kLanes; ++i) {
+                const int z1 = l.z1[i] * hi;
+                const int r10 = (z1 + l.y0[i]) * wi, r11 = (z1 + l.y1[i]) * wi;
+                at[4][i] = r10 + l.x0[i];
+                at[5][i] = r10 + l.x1[i];
+                at[6][i] = r11 + l.x0[i];
+                at[7][i] = r11 + l.x1[i];
+            }
+        const glm::vec4* texels = image.texels.data();
+        static_assert(kLanes % 8 == 0, "the blends take lanes 4 or 8 at a time");
+        const int step = kAvx2 ? 8 : 4;
+        for (int g = 0; g < kLanes; g += step) {
+            int any = 0;
+            for (int i = g; i < g + step; ++i) any |= active[i];
+            if (!any) {
+                for (int i = g; i < g + step; ++i) put(l.rgba, i, splat_texel(0.0f));  // selected away
+                continue;
+            }
+#if defined(__x86_64__) && defined(__GNUC__)
+            if constexpr (kAvx2) {
+                blend8(texels, at, l.ax, l.ay, dims > 2 ? l.az : nullptr, g, l.rgba);
+                continue;
+            }
+#endif
+            const auto src = [texels](int) { return texels; };
+            if (dims == 2) bilinear4(src, at, l.ax, l.ay, g, l.rgba);
+            else trilinear4(src, at, l.ax, l.ay, l.az, g, l.rgba);
+        }
+        return;
+    }
+#endif
+    for (int i = 0; i < kLanes; ++i) {
+        proto.ref = l.ref[i];
+        if (!active[i]) put(l.rgba, i, splat_texel(0.0f));
+        else put(l.rgba, i, linear_lane(proto, image, l, i, dims));
+    }
+}
+
+// Lanes of several levels or faces: each lane's level(s) from its lambda
+// (filter()'s decisions), sampled level by level, then mixed.
+void sample_levels_of_lanes(const Texture& texture, const BatchLookup& lk, const int* active, Lanes& l) {
     if (texture.target() == TextureTarget::Cube) cube_coords(lk, l);
     else plain_coords(lk, l);
     lambdas(texture, lk, l);
     choose_levels(texture, l);
-    if (lk.ref)
-        for (int i = 0; i < kLanes; ++i) l.ref[i] = unorm(lk.ref[i]);
-    else
-        for (int i = 0; i < kLanes; ++i) l.ref[i] = 0.0f;  // unorm(0)
-    alignas(32) int active[kLanes], second[kLanes];
+    alignas(32) int second[kLanes];
     int two = 0;
-    for (int base = 0; base < kLanes; base += 32) {  // bit tests against a table: the loop vectorises
-        const uint32_t bits = uint32_t(lanes >> base);
-        for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
-    }
     for (int i = 0; i < kLanes; ++i) {
         second[i] = active[i] & int(l.level[1][i] >= 0);
         two |= second[i];
     }
-
     // make_lookup()'s state of every lane; the face and (s, t) are the lanes'.
     const SamplerState& st = texture.sampler;
     const Lookup proto{&texture, &st, 0, texture_dims(texture.target()), glm::vec3(0.0f),
                        texture.depth() && st.compare, 0.0f};
     sample_levels(texture, proto, l, l.level[0], active, l.rgba);
-    if (two) {
-        sample_levels(texture, proto, l, l.level[1], second, l.second);
-        // filter()'s mix() of the two levels, channel by channel.
-        for (int c = 0; c < 4; ++c)
-            for (int i = 0; i < kLanes; ++i) {
-                const float w = l.mip_weight[i];
-                const float blend = l.rgba[c][i] * (1.0f - w) + l.second[c][i] * w;
-                l.rgba[c][i] = second[i] ? blend : l.rgba[c][i];
-            }
+    if (!two) return;
+    sample_levels(texture, proto, l, l.level[1], second, l.second);
+    // filter()'s mix() of the two levels, channel by channel.
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) {
+            const float w = l.mip_weight[i];
+            const float blend = l.rgba[c][i] * (1.0f - w) + l.second[c][i] * w;
+            l.rgba[c][i] = second[i] ? blend : l.rgba[c][i];
+        }
+}
+
+// `kAvx2`: the AVX2 build (run_avx2), which blends eight lanes at a time.
+template <bool kAvx2>
+[[gnu::always_inline]] inline void run(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
+                                       float (*out)[kLanes]) {
+    Lanes l;
+    if (lk.ref)
+        for (int i = 0; i < kLanes; ++i) l.ref[i] = unorm(lk.ref[i]);
+    else
+        for (int i = 0; i < kLanes; ++i) l.ref[i] = 0.0f;  // unorm(0)
+    alignas(32) int active[kLanes];
+    for (int base = 0; base < kLanes; base += 32) {  // bit tests against a table: the loop vectorises
+        const uint32_t bits = uint32_t(lanes >> base);
+        for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
     }
+    if (one_image(texture)) sample_one_image<kAvx2>(texture, lk, active, l);
+    else sample_levels_of_lanes(texture, lk, active, l);
+    const SamplerState& st = texture.sampler;
     if (texture.depth())
         for (int i = 0; i < kLanes; ++i)
             if (active[i]) put(l.rgba, i, texel_of(expand_depth(st.depth_mode, l.rgba[0][i])));
@@ -337,7 +573,7 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
 }
 
 void run_baseline(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
-    run(texture, lk, lanes, out);
+    run<false>(texture, lk, lanes, out);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -345,15 +581,15 @@ void run_baseline(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
 // interpreter's kernels are (runtime/interp_kernels.h).
 __attribute__((target("avx2"), flatten)) void run_avx2(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
                                                        float (*out)[kLanes]) {
-    run(texture, lk, lanes, out);
+    run<true>(texture, lk, lanes, out);
 }
 #endif
 
 }  // namespace
 
 bool batch_samples(const Texture& texture) {
-    // 3D textures (a third axis and eight texels) keep the per-lane path.
-    return texture.target() != TextureTarget::Tex3D;
+    // 3D textures whose lanes choose their own levels keep the per-lane path.
+    return texture.target() != TextureTarget::Tex3D || one_image(texture);
 }
 
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2) {

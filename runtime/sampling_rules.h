@@ -59,9 +59,19 @@ inline float floor_f(float x) {
     return small ? floored : x;
 }
 
+// floor_f() where the caller is compiled for SSE4.1 or later (`kRound`: the
+// batched sampler's AVX2 build): roundps, and + 0 makes floor(-0) = -0 the
+// +0 that floor_f() gives; every other value (NaN included) is floor_f()'s.
+template <bool kRound>
+[[gnu::always_inline]] inline float floor_t(float x) {
+    if constexpr (kRound) return __builtin_floorf(x) + 0.0f;
+    else return floor_f(x);
+}
+
 // floor() as an int for any float: NaN and huge magnitudes saturate, so the
 // wraps below always reduce it to an index in range.
-inline int floor_int(float x) { return int(floor_f(clamp_or_low(x, -kIndexLimit, kIndexLimit))); }
+template <bool kRound = false>
+inline int floor_int(float x) { return int(floor_t<kRound>(clamp_or_low(x, -kIndexLimit, kIndexLimit))); }
 
 // i mod n in [0, n). The wraps' indices lie within a size of the image
 // except where the coordinate was huge or NaN: no division for those (two
@@ -79,8 +89,9 @@ inline int border_or_index(int i, int n) { return i >= 0 && i < n ? i : kBorder;
 
 // §3.8.7 MIRRORED_REPEAT: mirror(f) = frac(f) where floor(f) is even,
 // 1 - frac(f) where it is odd; the result is then clamped as CLAMP_TO_EDGE.
+template <bool kRound = false>
 inline float mirror(float s) {
-    const float fl = floor_f(s);
+    const float fl = floor_t<kRound>(s);
     const float f = s - fl;
     // Floats from 2^24 on are all even; NaN counts as even (and stays NaN).
     const float in_range = std::fabs(fl) < 16777216.0f ? fl : 0.0f;
@@ -93,14 +104,14 @@ inline float mirror(float s) {
 // CLAMP and CLAMP_TO_EDGE both end in [0, size-1] (CLAMP reaches the border
 // only when filtering linearly); CLAMP_TO_BORDER's s in [-1/2N, 1+1/2N] makes
 // -1 or N, the border.
-template <TextureWrap kWrap>
+template <TextureWrap kWrap, bool kRound = false>
 [[gnu::always_inline]] inline int nearest_index(float s, int n) {
     switch (kWrap) {
-    case TextureWrap::Repeat: return repeat_index(floor_int((s - floor_f(s)) * float(n)), n);
-    case TextureWrap::MirroredRepeat: s = mirror(s); [[fallthrough]];
+    case TextureWrap::Repeat: return repeat_index(floor_int<kRound>((s - floor_t<kRound>(s)) * float(n)), n);
+    case TextureWrap::MirroredRepeat: s = mirror<kRound>(s); [[fallthrough]];
     case TextureWrap::ClampToEdge:
-    case TextureWrap::Clamp: return std::clamp(floor_int(s * float(n)), 0, n - 1);
-    case TextureWrap::ClampToBorder: return border_or_index(floor_int(s * float(n)), n);
+    case TextureWrap::Clamp: return std::clamp(floor_int<kRound>(s * float(n)), 0, n - 1);
+    case TextureWrap::ClampToBorder: return border_or_index(floor_int<kRound>(s * float(n)), n);
     }
     return 0;
 }
@@ -135,20 +146,21 @@ struct LinearAxis {
 // CLAMP_TO_EDGE (and the mirrored coordinate) keeps u in [1/2, size - 1/2],
 // so only texels of the image take part.
 // REPEAT's u for LINEAR: the fraction of s in texels, less half a texel.
-inline float repeat_position(float s, float size) { return (s - floor_f(s)) * size - 0.5f; }
+template <bool kRound = false>
+inline float repeat_position(float s, float size) { return (s - floor_t<kRound>(s)) * size - 0.5f; }
 
-template <TextureWrap kWrap>
+template <TextureWrap kWrap, bool kRound = false>
 [[gnu::always_inline]] inline LinearAxis linear_axis(float s, int n) {
     const float size = float(n);
     float u = 0.0f;
     bool edge = false;
     switch (kWrap) {
     case TextureWrap::Repeat: {
-        u = repeat_position(s, size);
-        const int i0 = floor_int(u);
-        return {repeat_index(i0, n), repeat_index(i0 + 1, n), u - floor_f(u)};
+        u = repeat_position<kRound>(s, size);
+        const int i0 = floor_int<kRound>(u);
+        return {repeat_index(i0, n), repeat_index(i0 + 1, n), u - floor_t<kRound>(u)};
     }
-    case TextureWrap::MirroredRepeat: s = mirror(s); [[fallthrough]];
+    case TextureWrap::MirroredRepeat: s = mirror<kRound>(s); [[fallthrough]];
     case TextureWrap::ClampToEdge:
         u = clamp_or_low(s * size, 0.5f, size - 0.5f) - 0.5f;
         edge = true;
@@ -156,8 +168,8 @@ template <TextureWrap kWrap>
     case TextureWrap::Clamp: u = clamp_or_low(s, 0.0f, 1.0f) * size - 0.5f; break;
     case TextureWrap::ClampToBorder: u = clamp_or_low(s * size, -0.5f, size + 0.5f) - 0.5f; break;
     }
-    const int i0 = floor_int(u);
-    const float a = u - floor_f(u);
+    const int i0 = floor_int<kRound>(u);
+    const float a = u - floor_t<kRound>(u);
     // At u = size - 1/2 the edge modes' i1 is past the image with weight 0: keep it on the last texel.
     if (edge) return {std::min(i0, n - 1), std::min(i0 + 1, n - 1), a};
     return {border_or_index(i0, n), border_or_index(i0 + 1, n), a};
