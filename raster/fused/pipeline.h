@@ -50,7 +50,7 @@ struct QuadBatch {
 struct Target {
     float* depth = nullptr;
     uint8_t* stencil = nullptr;
-    void* color = nullptr;
+    std::array<void*, kMaxDrawBuffers> color{};  // by draw buffer
     int32_t width = 0, height = 0;
 };
 
@@ -66,8 +66,8 @@ struct Pipeline {
     // Writes the inputs: regs[i] is the register of State::inputs[i].
     using InputsFn = void (*)(const QuadBatch* batch, uint32_t* const* regs);
     // The per-fragment operations of the lanes of `alive` in lane order;
-    // regs: the colour output's registers (color_channels of them), then
-    // gl_FragDepth's. Returns the lanes written.
+    // regs: colour buffer 0's output's registers (color_channels of them),
+    // gl_FragDepth's, then those of buffers 1 and up (State::more_channels). Returns the lanes written.
     using OutputsFn = LaneMask (*)(const QuadBatch* batch, const uint32_t* const* regs, LaneMask alive,
                                    const Target* t);
     virtual ~Pipeline() = default;

@@ -16,7 +16,7 @@ GLSLRUN_FUSED_SIZE(FragmentState, 96);
 GLSLRUN_FUSED_SIZE(StencilFace, 20);
 GLSLRUN_FUSED_SIZE(BlendState, 24);
 GLSLRUN_FUSED_SIZE(Input, 12);
-GLSLRUN_FUSED_SIZE(State, 136);
+GLSLRUN_FUSED_SIZE(State, 144);
 #undef GLSLRUN_FUSED_SIZE
 
 class KeyBytes {
@@ -68,7 +68,9 @@ std::string state_key(const State& state) {
     k.add(o.draw_buffers);
     k.add(uint32_t(state.inputs.size()));
     for (const Input& in : state.inputs) k.add(in.source), k.add(in.index), k.add(in.kind), k.add(in.sprite_coord), k.add(in.component);
-    k.add(state.color_channels), k.add(state.float_outputs), k.add(state.depth_output), k.add(state.early_depth);
+    k.add(state.color_channels);
+    for (uint8_t c : state.more_channels) k.add(c);
+    k.add(state.float_outputs), k.add(state.depth_output), k.add(state.early_depth);
     k.add(state.probe), k.add(state.avx2);
     return k.take();
 }
@@ -86,7 +88,7 @@ void forget_known_fields(State& s) {
     // or late. Nothing is blended or masked without a colour output.
     o.color_mask = none.ops.color_mask;
     o.logic_op = none.ops.logic_op, o.logic = none.ops.logic;
-    if (s.color_channels == 0 || !o.float_color) o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
+    if (!writes_color(s) || !o.float_color) o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
     // The inputs: float registers, gl_FrontFacing's bool, or zeros; point
     // sprites' coordinates.
     bool inputs_known = true;
@@ -95,6 +97,9 @@ void forget_known_fields(State& s) {
                         (in.kind == ir::Kind::Bool && in.source == InputSource::FrontFacing);
     if (inputs_known) s.inputs = none.inputs;
     s.color_channels = none.color_channels;
+    // Several draw buffers, each with the same operations.
+    o.draw_buffers = none.ops.draw_buffers;
+    s.more_channels = none.more_channels;
     s.depth_output = none.depth_output;
     s.early_depth = none.early_depth;
     s.avx2 = none.avx2;

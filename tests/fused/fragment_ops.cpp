@@ -228,3 +228,55 @@ TEST_CASE("the fused point sprites' coordinates draw the interpreter's bits", "[
         }
     }
 }
+
+TEST_CASE("the fused pipeline writes several draw buffers as the interpreter does", "[fused]") {
+    // gl_FragData[i] to buffer i (one left unwritten), and gl_FragColor to all.
+    const char* kData = R"(
+void main() {
+    gl_FragData[0] = gl_Color * 1.4 - 0.2;
+    gl_FragData[2] = vec4(fract(gl_FragCoord.xy * 0.031), gl_Color.a, 1.0 - gl_Color.r);
+    if (gl_Color.g < 0.1) discard;
+})";
+    Geometry small = random_geometry(27, 900, 0.08f);
+    for (const char* fs : {kData, kShaders[0].fs}) {
+        Programs p(fs);
+        for (int state = 0; state < 8; ++state) {
+            GLState gl;
+            gl.draw_buffers = 3;
+            gl.depth_test = state % 4 != 3;
+            gl.depth_func = GLState::DepthFunc::Lequal;
+            gl.blend = state % 2 == 1;
+            gl.blend_state.src_rgb = BlendFactor::SrcAlpha, gl.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+            gl.color_mask = {true, state != 2, true, state % 3 != 0};
+            gl.alpha_test = state == 4;
+            gl.alpha_func = CompareFunc::Gequal;
+            gl.alpha_ref = 0.3f;
+            gl.color_logic_op = state == 6;
+            gl.logic_op = LogicOp::Xor;
+            for (bool float_color : {false, true}) {
+                if (float_color && gl.blend) continue;  // not generated: the C++ path
+                const ColorRounding rounding = state % 3 == 1 ? ColorRounding::Gpu : ColorRounding::Nearest;
+                Frame frames[2] = {{Framebuffer(93, 61, float_color, 3), {}}, {Framebuffer(93, 61, float_color, 3), {}}};
+                for (int i = 0; i < 2; ++i) {
+                    frames[i].fb.rounding = rounding;
+                    frames[i].fb.clear_color({0.1f, 0.2f, 0.3f, 0.6f});
+                    auto stats = draw(i == 0 ? p.oracle : p.fused, gl, frames[i].fb, Primitive::Triangles,
+                                      {small.pos, small.color}, small.count);
+                    REQUIRE(stats);
+                    frames[i].stats = *stats;
+                }
+                INFO((fs == kData ? "gl_FragData" : "gl_FragColor") << ", state " << state << ", "
+                                                                     << (float_color ? "float" : "RGBA8"));
+                const Frame &oracle = frames[0], &fused = frames[1];
+                if (jit_available()) CHECK(fused.stats.fragments_fused == fused.stats.fragments_shaded);
+                CHECK(fused.stats.fragments_written == oracle.stats.fragments_written);
+                for (int b = 0; b < 3; ++b) {
+                    INFO("buffer " << b);
+                    if (float_color) CHECK(same_bits<float>(fused.fb.color_data<float>(b), oracle.fb.color_data<float>(b)));
+                    else CHECK(same_bits<uint8_t>(fused.fb.color_data<uint8_t>(b), oracle.fb.color_data<uint8_t>(b)));
+                }
+                CHECK(same_bits(std::span<const float>(fused.fb.depth), std::span<const float>(oracle.fb.depth)));
+            }
+        }
+    }
+}

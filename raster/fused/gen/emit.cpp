@@ -151,9 +151,11 @@ private:
         llvm::Value* alpha;  // colour 0's alpha as the shader wrote it (0: not written)
     };
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
-    void write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes);
+    void write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer);
     llvm::Value* alpha_passes(const QuadValues& v);
-    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes);
+    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer);
+    std::array<llvm::Value*, 4> color_values(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels,
+                                             llvm::Value* index);
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
@@ -161,7 +163,8 @@ private:
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
         target_.stencil = b_.CreateLoad(ptr_, at(target, offsetof(Target, stencil)));
-        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(Target, color)));
+        for (size_t b = 0; b < target_.color.size(); ++b)
+            target_.color[b] = b_.CreateLoad(ptr_, at(target, offsetof(Target, color) + b * sizeof(void*)));
         target_.width = load_i(target, offsetof(Target, width));
         target_.height = load_i(target, offsetof(Target, height));
     }
@@ -176,7 +179,8 @@ private:
     // Per function being defined.
     llvm::Function* fn_ = nullptr;
     struct {
-        llvm::Value *depth, *stencil, *color, *width, *height;
+        llvm::Value *depth, *stencil, *width, *height;
+        std::array<llvm::Value*, kMaxDrawBuffers> color;
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
@@ -628,7 +632,8 @@ llvm::Value* PipelineEmitter::stencil_depth_lanes(const Quad& q, llvm::Value* z,
 
 // The float colour of a quad's lanes in `lanes` (i32, bit i: lane i),
 // the channels of the colour mask (raster's write_float, unblended).
-void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
+void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes,
+                                        llvm::Value* buffer) {
     const bool all = ops_.color_mask == std::array<bool, 4>{true, true, true, true};
     for (int i = 0; i < 4; ++i) {
         llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
@@ -637,7 +642,7 @@ void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm
         b_.SetInsertPoint(write);
         llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
                                          b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
-        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, target_.color, b_.CreateShl(pixel, 2));
+        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, buffer, b_.CreateShl(pixel, 2));
         llvm::Value* texel = llvm::PoisonValue::get(v4f_);
         for (unsigned k = 0; k < 4; ++k) {
             llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
@@ -671,7 +676,7 @@ llvm::Value* PipelineEmitter::alpha_passes(const QuadValues& v) {
 // masked stores of two pixels each write the same bytes. No branch on the
 // lanes: a quad's live lanes vary, and branches on them mispredicted (perf).
 // `lanes`: i32, bit i: lane i.
-void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
+void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
     llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, lanes),
                                                      llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{1, 2, 4, 8})),
@@ -688,8 +693,8 @@ void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm:
         for (unsigned i = 0; i < 4; ++i) mask = b_.CreateInsertElement(mask, i == 0 ? lo : i == 1 ? hi : off, uint64_t(i));
         return mask;
     };
-    llvm::Value* lower_slot = b_.CreateGEP(i32_, target_.color, pixel);
-    llvm::Value* upper_slot = b_.CreateGEP(i32_, target_.color, above);
+    llvm::Value* lower_slot = b_.CreateGEP(i32_, buffer, pixel);
+    llvm::Value* upper_slot = b_.CreateGEP(i32_, buffer, above);
     if (reads_color(key_)) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
     llvm::Value* words = pack_rgba8(v.rgba);
     llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1});
@@ -775,12 +780,24 @@ PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const st
     } else {
         v.z = quad_depth(q);
     }
-    for (uint32_t k = 0; k < 4; ++k) {
-        llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
-        if (k == 3) v.alpha = c;
-        v.rgba[k] = ops_.float_color ? c : stored_byte(c);
-    }
+    v.rgba = color_values(regs, 0, key_.color_channels, index);
+    v.alpha = key_.color_channels > 3 ? lanes(3) : splat_f(0.0f);
     return v;
+}
+
+// The colour of a quad as stored, from the `channels` registers of `regs`
+// from `first` on (missing channels 0).
+std::array<llvm::Value*, 4> PipelineEmitter::color_values(const std::vector<llvm::Value*>& regs, size_t first,
+                                                          uint32_t channels, llvm::Value* index) {
+    std::array<llvm::Value*, 4> rgba;
+    for (uint32_t k = 0; k < 4; ++k) {
+        llvm::Value* c = splat_f(0.0f);
+        if (k < channels)
+            c = b_.CreateAlignedLoad(v4f_, b_.CreateInBoundsGEP(i32_, regs[first + k], b_.CreateShl(index, 2)),
+                                     llvm::Align(16));
+        rgba[k] = ops_.float_color ? c : stored_byte(c);
+    }
+    return rgba;
 }
 
 // A channel's RGBA8 byte as a 32-bit integer: raster::to_unorm8's steps, or
@@ -806,13 +823,14 @@ llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
 void PipelineEmitter::define_outputs() {
     begin("glslrun_outputs", i64_, {ptr_, ptr_, i64_, ptr_});
     std::vector<llvm::Value*> regs;
-    for (uint32_t i = 0; i < key_.color_channels + (key_.depth_output ? 1 : 0); ++i)
-        regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), uint64_t(i) * 8)));
+    uint32_t reg_count = key_.color_channels + (key_.depth_output ? 1 : 0);
+    for (uint8_t c : key_.more_channels) reg_count += c;
+    for (uint32_t i = 0; i < reg_count; ++i) regs.push_back(b_.CreateLoad(ptr_, at(fn_->getArg(1), uint64_t(i) * 8)));
     load_target(fn_->getArg(3));
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
     const bool late_depth = ops_.depth_test && !key_.early_depth;
-    const bool rgba8 = !ops_.float_color && key_.color_channels > 0;
+    const bool rgba8 = !ops_.float_color && writes_color(key_);
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
         llvm::Value* shift = b_.CreateShl(index, 2);
         llvm::Value* lanes = b_.CreateTrunc(b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), shift), b_.getInt64(0xF)), i32_);
@@ -831,8 +849,16 @@ void PipelineEmitter::define_outputs() {
         else if (late_depth) lanes = depth_test_lanes(q, v.z, lanes);
         b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(b_.CreateZExt(lanes, i64_), shift)),
                        written_);
-        if (rgba8) write_rgba8_quad(q, v, lanes);
-        else if (key_.color_channels > 0) write_float_lanes(q, v, lanes);
+        // Each colour buffer in turn (raster::write_color's order).
+        size_t first = key_.color_channels + (key_.depth_output ? 1 : 0);
+        for (size_t b = 0; b < key_.more_channels.size(); ++b) {
+            const uint32_t channels = b == 0 ? key_.color_channels : key_.more_channels[b];
+            if (channels == 0) continue;
+            QuadValues colour = v;
+            if (b > 0) colour.rgba = color_values(regs, first, channels, index), first += channels;
+            if (rgba8) write_rgba8_quad(q, colour, lanes, target_.color[b]);
+            else write_float_lanes(q, colour, lanes, target_.color[b]);
+        }
         if (next) {
             b_.CreateBr(next);
             b_.SetInsertPoint(next);
