@@ -23,7 +23,7 @@ class KeyBytes {
 public:
     template <class T>
     void add(const T& v) {
-        static_assert(std::is_trivially_copyable_v<T> && std::has_unique_object_representations_v<T> ||
+        static_assert((std::is_trivially_copyable_v<T> && std::has_unique_object_representations_v<T>) ||
                       std::is_floating_point_v<T>);
         bytes_.append(reinterpret_cast<const char*>(&v), sizeof v);
     }
@@ -83,12 +83,11 @@ void forget_known_fields(State& s) {
     o.stencil_test = none.ops.stencil_test, o.stencil = none.ops.stencil;
     // The alpha test, either storage.
     o.alpha_test = none.ops.alpha_test, o.alpha_func = none.ops.alpha_func, o.alpha_ref = none.ops.alpha_ref;
-    // The colour mask, either storage; blending and the logic op into RGBA8
-    // (FragmentOps has no logic op with float storage); the depth test early
-    // or late. Nothing is blended or masked without a colour output.
+    // The colour mask and blending, either storage; the logic op (RGBA8:
+    // FragmentOps has none with float storage); the depth test early or late.
     o.color_mask = none.ops.color_mask;
     o.logic_op = none.ops.logic_op, o.logic = none.ops.logic;
-    if (!writes_color(s) || !o.float_color) o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
+    o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
     // The inputs: float registers, gl_FrontFacing's bool, or zeros; point
     // sprites' coordinates.
     bool inputs_known = true;

@@ -93,8 +93,7 @@ TEST_CASE("the fused blending and colour masks with a late depth test draw the i
                 INFO(shader->name << ", state " << state << ", rounding " << int(rounding));
                 check_fused_matches(p, Primitive::Triangles, small, gl, false, {93, 61}, rounding);
             }
-            // Float storage: the colour mask is generated, blending is not (the C++ path draws).
-            if (!gl.blend) check_fused_matches(p, Primitive::Triangles, small, gl, true);
+            check_fused_matches(p, Primitive::Triangles, small, gl, true);
         }
     }
 }
@@ -254,7 +253,6 @@ void main() {
             gl.color_logic_op = state == 6;
             gl.logic_op = LogicOp::Xor;
             for (bool float_color : {false, true}) {
-                if (float_color && gl.blend) continue;  // not generated: the C++ path
                 const ColorRounding rounding = state % 3 == 1 ? ColorRounding::Gpu : ColorRounding::Nearest;
                 Frame frames[2] = {{Framebuffer(93, 61, float_color, 3), {}}, {Framebuffer(93, 61, float_color, 3), {}}};
                 for (int i = 0; i < 2; ++i) {
@@ -277,6 +275,40 @@ void main() {
                 }
                 CHECK(same_bits(std::span<const float>(fused.fb.depth), std::span<const float>(oracle.fb.depth)));
             }
+        }
+    }
+}
+
+TEST_CASE("the fused blending into float storage draws the interpreter's bits, NaNs included", "[fused]") {
+    const BlendFactor kFactors[] = {
+        BlendFactor::Zero,          BlendFactor::One,              BlendFactor::SrcColor,
+        BlendFactor::OneMinusSrcColor, BlendFactor::DstColor,      BlendFactor::OneMinusDstColor,
+        BlendFactor::SrcAlpha,      BlendFactor::OneMinusSrcAlpha, BlendFactor::DstAlpha,
+        BlendFactor::OneMinusDstAlpha, BlendFactor::ConstantColor, BlendFactor::OneMinusConstantColor,
+        BlendFactor::ConstantAlpha, BlendFactor::OneMinusConstantAlpha, BlendFactor::SrcAlphaSaturate};
+    const BlendEquation kEquations[] = {BlendEquation::Add, BlendEquation::Subtract, BlendEquation::ReverseSubtract,
+                                        BlendEquation::Min, BlendEquation::Max};
+    Geometry small = random_geometry(28, 900, 0.08f);
+    // Colours out of [0, 1], NaNs of both signs (two NaN operands: the first one's), late depth.
+    for (const Shader* shader : {&early_shader(), &kShaders[5], &depth_shader()}) {
+        Programs p(shader->fs);
+        const size_t n = std::size(kFactors);
+        for (size_t i = 0; i < n; ++i) {
+            GLState gl;
+            gl.depth_test = i % 3 != 0;
+            gl.depth_func = GLState::DepthFunc::Lequal;
+            gl.blend = true;
+            BlendState& b = gl.blend_state;
+            b.src_rgb = kFactors[i];
+            b.dst_rgb = kFactors[(i * 7 + 3) % n];
+            b.src_alpha = kFactors[(i * 4 + 1) % n];
+            b.dst_alpha = kFactors[n - 1 - i];
+            b.equation_rgb = kEquations[i % 5];
+            b.equation_alpha = kEquations[(i + 2) % 5];
+            b.color = {0.2f, 1.3f, 0.55f, 0.7f - 0.05f * float(i)};
+            gl.color_mask = {true, i % 4 != 1, true, i % 3 != 2};
+            INFO(shader->name << ", blend " << i);
+            check_fused_matches(p, Primitive::Triangles, small, gl, true, {93, 61});
         }
     }
 }

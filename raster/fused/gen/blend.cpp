@@ -103,4 +103,55 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
     return out;
 }
 
+std::array<llvm::Value*, 4> emit_blend_float(llvm::IRBuilder<>& b, const FragmentState& o,
+                                             const std::array<llvm::Value*, 4>& src,
+                                             const std::array<llvm::Value*, 4>& dst) {
+    const BlendState& s = o.blend_state;
+    auto constant = [&](float v) { return llvm::ConstantFP::get(b.getFloatTy(), v); };
+    // ir::a_nan_first(a, r), as raster's combine() names NaNs.
+    auto nan_first = [&](llvm::Value* a, llvm::Value* r) { return b.CreateSelect(b.CreateFCmpUNO(a, a), b.CreateFAdd(a, a), r); };
+    auto inv = [&](llvm::Value* x) { return b.CreateFSub(constant(1.0f), x); };
+    auto min = [&](llvm::Value* x, llvm::Value* y) { return b.CreateSelect(b.CreateFCmpOLT(y, x), y, x); };  // std::min
+    auto max = [&](llvm::Value* x, llvm::Value* y) { return b.CreateSelect(b.CreateFCmpOLT(x, y), y, x); };  // std::max
+    // raster's factor() for channel k (3: alpha).
+    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
+        const float c = s.color[int(k)], ca = s.color.a;
+        switch (f) {
+        case BlendFactor::Zero: return constant(0.0f);
+        case BlendFactor::One: return constant(1.0f);
+        case BlendFactor::SrcColor: return src[k];
+        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
+        case BlendFactor::DstColor: return dst[k];
+        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
+        case BlendFactor::SrcAlpha: return src[3];
+        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
+        case BlendFactor::DstAlpha: return dst[3];
+        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
+        case BlendFactor::ConstantColor: return constant(c);
+        case BlendFactor::OneMinusConstantColor: return constant(1.0f - c);
+        case BlendFactor::ConstantAlpha: return constant(ca);
+        case BlendFactor::OneMinusConstantAlpha: return constant(1.0f - ca);
+        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(1.0f) : min(src[3], inv(dst[3]));
+        }
+        return constant(0.0f);
+    };
+    std::array<llvm::Value*, 4> out;
+    for (size_t k = 0; k < 4; ++k) {
+        const bool alpha = k == 3;
+        const BlendEquation eq = alpha ? s.equation_alpha : s.equation_rgb;
+        llvm::Value* a = src[k];
+        a = nan_first(a, b.CreateFMul(a, factor(alpha ? s.src_alpha : s.src_rgb, k)));
+        llvm::Value* d = dst[k];
+        d = nan_first(d, b.CreateFMul(d, factor(alpha ? s.dst_alpha : s.dst_rgb, k)));
+        switch (eq) {
+        case BlendEquation::Add: out[k] = nan_first(a, b.CreateFAdd(a, d)); break;
+        case BlendEquation::Subtract: out[k] = nan_first(a, b.CreateFSub(a, d)); break;
+        case BlendEquation::ReverseSubtract: out[k] = nan_first(d, b.CreateFSub(d, a)); break;
+        case BlendEquation::Min: out[k] = min(src[k], dst[k]); break;
+        case BlendEquation::Max: out[k] = max(src[k], dst[k]); break;
+        }
+    }
+    return out;
+}
+
 }  // namespace glslrun::raster::fused

@@ -630,8 +630,9 @@ llvm::Value* PipelineEmitter::stencil_depth_lanes(const Quad& q, llvm::Value* z,
     return merged;
 }
 
-// The float colour of a quad's lanes in `lanes` (i32, bit i: lane i),
-// the channels of the colour mask (raster's write_float, unblended).
+// The float colour of a quad's lanes in `lanes` (i32, bit i: lane i):
+// blended where the draw blends, the channels of the colour mask (raster's
+// write_float).
 void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes,
                                         llvm::Value* buffer) {
     const bool all = ops_.color_mask == std::array<bool, 4>{true, true, true, true};
@@ -643,13 +644,21 @@ void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm
         llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
                                          b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
         llvm::Value* dst = b_.CreateInBoundsGEP(f32_, buffer, b_.CreateShl(pixel, 2));
-        llvm::Value* texel = llvm::PoisonValue::get(v4f_);
-        for (unsigned k = 0; k < 4; ++k) {
-            llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
-            texel = b_.CreateInsertElement(texel, c, uint64_t(k));
-            if (!all && ops_.color_mask[k]) b_.CreateStore(c, b_.CreateConstInBoundsGEP1_64(f32_, dst, k));
+        std::array<llvm::Value*, 4> out;
+        for (unsigned k = 0; k < 4; ++k) out[k] = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
+        if (ops_.blend) {
+            std::array<llvm::Value*, 4> stored;
+            for (unsigned k = 0; k < 4; ++k) stored[k] = b_.CreateLoad(f32_, b_.CreateConstInBoundsGEP1_64(f32_, dst, k));
+            out = emit_blend_float(b_, ops_, out, stored);
         }
-        if (all) b_.CreateAlignedStore(texel, dst, llvm::Align(4));
+        if (all) {
+            llvm::Value* texel = llvm::PoisonValue::get(v4f_);
+            for (unsigned k = 0; k < 4; ++k) texel = b_.CreateInsertElement(texel, out[k], uint64_t(k));
+            b_.CreateAlignedStore(texel, dst, llvm::Align(4));
+        } else {
+            for (unsigned k = 0; k < 4; ++k)
+                if (ops_.color_mask[k]) b_.CreateStore(out[k], b_.CreateConstInBoundsGEP1_64(f32_, dst, k));
+        }
         b_.CreateBr(next);
         b_.SetInsertPoint(next);
     }
