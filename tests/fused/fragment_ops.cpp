@@ -72,8 +72,7 @@ TEST_CASE("the fused logic op draws the interpreter's bits", "[fused]") {
 TEST_CASE("the fused blending and colour masks with a late depth test draw the interpreter's bits", "[fused]") {
     const BlendFactor kFactors[] = {BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha, BlendFactor::One,
                                     BlendFactor::DstColor, BlendFactor::ConstantAlpha,    BlendFactor::SrcAlphaSaturate};
-    const BlendEquation kEquations[] = {BlendEquation::Add, BlendEquation::Subtract, BlendEquation::ReverseSubtract,
-                                        BlendEquation::Min, BlendEquation::Max};
+    const auto& kEquations = kAllEquations;
     Geometry small = random_geometry(23, 900, 0.08f);
     for (const Shader* shader : {&discard_shader(), &depth_shader()}) {
         Programs p(shader->fs);
@@ -280,14 +279,8 @@ void main() {
 }
 
 TEST_CASE("the fused blending into float storage draws the interpreter's bits, NaNs included", "[fused]") {
-    const BlendFactor kFactors[] = {
-        BlendFactor::Zero,          BlendFactor::One,              BlendFactor::SrcColor,
-        BlendFactor::OneMinusSrcColor, BlendFactor::DstColor,      BlendFactor::OneMinusDstColor,
-        BlendFactor::SrcAlpha,      BlendFactor::OneMinusSrcAlpha, BlendFactor::DstAlpha,
-        BlendFactor::OneMinusDstAlpha, BlendFactor::ConstantColor, BlendFactor::OneMinusConstantColor,
-        BlendFactor::ConstantAlpha, BlendFactor::OneMinusConstantAlpha, BlendFactor::SrcAlphaSaturate};
-    const BlendEquation kEquations[] = {BlendEquation::Add, BlendEquation::Subtract, BlendEquation::ReverseSubtract,
-                                        BlendEquation::Min, BlendEquation::Max};
+    const auto& kFactors = kAllFactors;
+    const auto& kEquations = kAllEquations;
     Geometry small = random_geometry(28, 900, 0.08f);
     // Colours out of [0, 1], NaNs of both signs (two NaN operands: the first one's), late depth.
     for (const Shader* shader : {&early_shader(), &kShaders[5], &depth_shader()}) {

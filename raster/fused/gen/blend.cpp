@@ -1,9 +1,47 @@
 // Blending and the colour mask as generated vector code (raster/fused/gen/blend.h).
 #include "raster/fused/gen/blend.h"
 
+#include <functional>
+
 #include "raster/framebuffer.h"
 
 namespace glslrun::raster::fused {
+
+namespace {
+
+// How a blend factor is made in one arithmetic (8-bit fixed point or
+// float): 0, 1, 1 - x, the blend colour's channel k and 1 minus it, min.
+struct FactorTerms {
+    llvm::Value *zero, *one;
+    std::function<llvm::Value*(llvm::Value*)> inv;
+    std::function<llvm::Value*(size_t)> color, inv_color;
+    std::function<llvm::Value*(llvm::Value*, llvm::Value*)> min;
+};
+
+// GL 2.1 Table 4.1's factor `f` for channel k (3: alpha).
+llvm::Value* factor_of(BlendFactor f, size_t k, const std::array<llvm::Value*, 4>& src,
+                       const std::array<llvm::Value*, 4>& dst, const FactorTerms& t) {
+    switch (f) {
+    case BlendFactor::Zero: return t.zero;
+    case BlendFactor::One: return t.one;
+    case BlendFactor::SrcColor: return src[k];
+    case BlendFactor::OneMinusSrcColor: return t.inv(src[k]);
+    case BlendFactor::DstColor: return dst[k];
+    case BlendFactor::OneMinusDstColor: return t.inv(dst[k]);
+    case BlendFactor::SrcAlpha: return src[3];
+    case BlendFactor::OneMinusSrcAlpha: return t.inv(src[3]);
+    case BlendFactor::DstAlpha: return dst[3];
+    case BlendFactor::OneMinusDstAlpha: return t.inv(dst[3]);
+    case BlendFactor::ConstantColor: return t.color(k);
+    case BlendFactor::OneMinusConstantColor: return t.inv_color(k);
+    case BlendFactor::ConstantAlpha: return t.color(3);
+    case BlendFactor::OneMinusConstantAlpha: return t.inv_color(3);
+    case BlendFactor::SrcAlphaSaturate: return k == 3 ? t.one : t.min(src[3], t.inv(dst[3]));
+    }
+    return t.zero;
+}
+
+}  // namespace
 
 std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const FragmentState& o,
                                                 const std::array<llvm::Value*, 4>& src,
@@ -19,26 +57,9 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
     auto umin = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpULT(x, y), x, y); };
     auto umax = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpUGT(x, y), x, y); };
     // Table 4.1's factor for channel k (3: alpha) in 8-bit fixed point.
-    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
-        switch (f) {
-        case BlendFactor::Zero: return constant(0);
-        case BlendFactor::One: return constant(255);
-        case BlendFactor::SrcColor: return src[k];
-        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
-        case BlendFactor::DstColor: return dst[k];
-        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
-        case BlendFactor::SrcAlpha: return src[3];
-        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
-        case BlendFactor::DstAlpha: return dst[3];
-        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
-        case BlendFactor::ConstantColor: return constant(constant8[k]);
-        case BlendFactor::OneMinusConstantColor: return constant(255u - constant8[k]);
-        case BlendFactor::ConstantAlpha: return constant(constant8[3]);
-        case BlendFactor::OneMinusConstantAlpha: return constant(255u - constant8[3]);
-        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(255) : umin(src[3], inv(dst[3]));
-        }
-        return constant(0);
-    };
+    const FactorTerms terms{constant(0), constant(255), inv, [&](size_t k) { return constant(constant8[k]); },
+                            [&](size_t k) { return constant(255u - constant8[k]); }, umin};
+    auto factor = [&](BlendFactor f, size_t k) { return factor_of(f, k, src, dst, terms); };
     // raster::logic_op (§4.1.10) on bytes; the caller keeps the low 8 bits.
     auto logic = [&](LogicOp op, llvm::Value* s8, llvm::Value* d8) -> llvm::Value* {
         auto no = [&](llvm::Value* x) { return builder.CreateNot(x); };
@@ -114,27 +135,9 @@ std::array<llvm::Value*, 4> emit_blend_float(llvm::IRBuilder<>& b, const Fragmen
     auto min = [&](llvm::Value* x, llvm::Value* y) { return b.CreateSelect(b.CreateFCmpOLT(y, x), y, x); };  // std::min
     auto max = [&](llvm::Value* x, llvm::Value* y) { return b.CreateSelect(b.CreateFCmpOLT(x, y), y, x); };  // std::max
     // raster's factor() for channel k (3: alpha).
-    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
-        const float c = s.color[int(k)], ca = s.color.a;
-        switch (f) {
-        case BlendFactor::Zero: return constant(0.0f);
-        case BlendFactor::One: return constant(1.0f);
-        case BlendFactor::SrcColor: return src[k];
-        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
-        case BlendFactor::DstColor: return dst[k];
-        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
-        case BlendFactor::SrcAlpha: return src[3];
-        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
-        case BlendFactor::DstAlpha: return dst[3];
-        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
-        case BlendFactor::ConstantColor: return constant(c);
-        case BlendFactor::OneMinusConstantColor: return constant(1.0f - c);
-        case BlendFactor::ConstantAlpha: return constant(ca);
-        case BlendFactor::OneMinusConstantAlpha: return constant(1.0f - ca);
-        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(1.0f) : min(src[3], inv(dst[3]));
-        }
-        return constant(0.0f);
-    };
+    const FactorTerms terms{constant(0.0f), constant(1.0f), inv, [&](size_t k) { return constant(s.color[int(k)]); },
+                            [&](size_t k) { return constant(1.0f - s.color[int(k)]); }, min};
+    auto factor = [&](BlendFactor f, size_t k) { return factor_of(f, k, src, dst, terms); };
     std::array<llvm::Value*, 4> out;
     for (size_t k = 0; k < 4; ++k) {
         const bool alpha = k == 3;
