@@ -7,7 +7,7 @@
 // depth test, the depth write, the colour conversion and the colour write
 // in lane order. The shader body between them is the program's compiled
 // shader (runtime/backend.h), run by the fragment stage's executor.
-// The emitter is raster/fused/gen/emit.cpp.
+// The emitter is raster/fused/gen/.
 //
 // Why three functions and not one: the shader runs with denormals flushed
 // (ir::FlushDenormals) and the plumbing around it, like the C++ path it
@@ -113,9 +113,9 @@ private:
     std::atomic<uint64_t> unfused_{0};
 };
 
-// The generated functions of `state`, which must be fusable(); null where
-// LLVM failed or the JIT is not built in. *seconds (may be null): LLVM's
-// time (thread CPU). (raster/fused/gen/emit.cpp)
+// The generated functions of `state`; null where it is not fusable() or
+// LLVM failed. *seconds (may be null): LLVM's time (thread CPU). Built with
+// the JIT only (raster/fused/gen/emit.cpp).
 std::unique_ptr<Pipeline> compile(const State& state, double* seconds);
 
 }  // namespace glslrun::raster::fused
