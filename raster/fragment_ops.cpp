@@ -5,6 +5,7 @@
 #include <bit>
 #include <utility>
 
+#include "ir/scalar_ops.h"
 #include "raster/framebuffer.h"
 
 namespace glslrun::raster {
@@ -38,11 +39,16 @@ glm::vec4 factor(BlendFactor f, glm::vec4 src, glm::vec4 dst, glm::vec4 constant
     return glm::vec4(0.0f);
 }
 
+// Each product and sum names its first operand's NaN where that is one
+// (ir::a_nan_first): with two NaNs, which one x86 returns follows the
+// compiler's operand order, and the fused pipeline's generated blending
+// (raster/fused/gen/blend.cpp) must give the same bits.
 float combine(BlendEquation eq, float s, float sf, float d, float df) {
+    const float a = ir::a_nan_first(s, s * sf), b = ir::a_nan_first(d, d * df);
     switch (eq) {
-    case BlendEquation::Add: return s * sf + d * df;
-    case BlendEquation::Subtract: return s * sf - d * df;
-    case BlendEquation::ReverseSubtract: return d * df - s * sf;
+    case BlendEquation::Add: return ir::a_nan_first(a, a + b);
+    case BlendEquation::Subtract: return ir::a_nan_first(a, a - b);
+    case BlendEquation::ReverseSubtract: return ir::a_nan_first(b, b - a);
     case BlendEquation::Min: return std::min(s, d);  // factors unused (§4.1.8)
     case BlendEquation::Max: return std::max(s, d);
     }

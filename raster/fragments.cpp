@@ -185,6 +185,14 @@ fused::State FragmentStage::fused_state() {
         state.depth_output = true;
         output_regs_.push_back(interp_->lanes(depth_out_->first));
     }
+    for (int b = 1; b < ops_.draw_buffers; ++b) {
+        const ir::Binding* color = color_out_[size_t(b)];
+        if (!color) continue;
+        state.float_outputs &= color->kind == ir::Kind::F32;
+        state.more_channels[size_t(b)] = uint8_t(std::min<uint32_t>(4, color->count));
+        for (uint32_t k = 0; k < state.more_channels[size_t(b)]; ++k)
+            output_regs_.push_back(interp_->lanes(color->first + k));
+    }
     state.early_depth = early_depth_;
     state.avx2 = rt::cpu_has_avx2();
     return state;
@@ -200,8 +208,9 @@ const fused::Pipeline* FragmentStage::fused_pipeline() {
     const fused::State state = fused_state();
     target_.depth = fb_.depth.data();
     target_.stencil = fb_.stencil.data();
-    target_.color = ops_.float_color ? static_cast<void*>(fb_.color_data<float>(0).data())
-                                     : static_cast<void*>(fb_.color_data<uint8_t>(0).data());
+    for (int b = 0; b < ops_.draw_buffers; ++b)
+        target_.color[size_t(b)] = ops_.float_color ? static_cast<void*>(fb_.color_data<float>(b).data())
+                                                    : static_cast<void*>(fb_.color_data<uint8_t>(b).data());
     target_.width = fb_.width;
     target_.height = fb_.height;
     return state_of(program_).pipelines->get(state, program_.exec.backend == Backend::Jit);

@@ -7,7 +7,7 @@
 // depth test, the depth write, the colour conversion and the colour write
 // in lane order. The shader body between them is the program's compiled
 // shader (runtime/backend.h), run by the fragment stage's executor.
-// The emitter is raster/fused/gen/emit.cpp.
+// The emitter is raster/fused/gen/.
 //
 // Why three functions and not one: the shader runs with denormals flushed
 // (ir::FlushDenormals) and the plumbing around it, like the C++ path it
@@ -50,7 +50,7 @@ struct QuadBatch {
 struct Target {
     float* depth = nullptr;
     uint8_t* stencil = nullptr;
-    void* color = nullptr;
+    std::array<void*, kMaxDrawBuffers> color{};  // by draw buffer
     int32_t width = 0, height = 0;
 };
 
@@ -66,8 +66,8 @@ struct Pipeline {
     // Writes the inputs: regs[i] is the register of State::inputs[i].
     using InputsFn = void (*)(const QuadBatch* batch, uint32_t* const* regs);
     // The per-fragment operations of the lanes of `alive` in lane order;
-    // regs: the colour output's registers (color_channels of them), then
-    // gl_FragDepth's. Returns the lanes written.
+    // regs: colour buffer 0's output's registers (color_channels of them),
+    // gl_FragDepth's, then those of buffers 1 and up (State::more_channels). Returns the lanes written.
     using OutputsFn = LaneMask (*)(const QuadBatch* batch, const uint32_t* const* regs, LaneMask alive,
                                    const Target* t);
     virtual ~Pipeline() = default;
@@ -113,10 +113,10 @@ private:
     std::atomic<uint64_t> unfused_{0};
 };
 
-// The generated functions of `state`, which must be fusable(); null where
-// LLVM failed or the JIT is not built in. *seconds (may be null): LLVM's
-// time (thread CPU). (raster/fused/gen/emit.cpp, in the JIT plugin: Cache::get
-// calls it through rt::jit_plugin().)
+// The generated functions of `state`; null where it is not fusable() or
+// LLVM failed. *seconds (may be null): LLVM's time (thread CPU).
+// (raster/fused/gen/, in the JIT plugin: Cache::get calls it through
+// rt::jit_plugin().)
 std::unique_ptr<Pipeline> compile(const State& state, double* seconds);
 
 }  // namespace glslrun::raster::fused

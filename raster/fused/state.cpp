@@ -16,14 +16,14 @@ GLSLRUN_FUSED_SIZE(FragmentState, 96);
 GLSLRUN_FUSED_SIZE(StencilFace, 20);
 GLSLRUN_FUSED_SIZE(BlendState, 24);
 GLSLRUN_FUSED_SIZE(Input, 12);
-GLSLRUN_FUSED_SIZE(State, 136);
+GLSLRUN_FUSED_SIZE(State, 144);
 #undef GLSLRUN_FUSED_SIZE
 
 class KeyBytes {
 public:
     template <class T>
     void add(const T& v) {
-        static_assert(std::is_trivially_copyable_v<T> && std::has_unique_object_representations_v<T> ||
+        static_assert((std::is_trivially_copyable_v<T> && std::has_unique_object_representations_v<T>) ||
                       std::is_floating_point_v<T>);
         bytes_.append(reinterpret_cast<const char*>(&v), sizeof v);
     }
@@ -68,7 +68,9 @@ std::string state_key(const State& state) {
     k.add(o.draw_buffers);
     k.add(uint32_t(state.inputs.size()));
     for (const Input& in : state.inputs) k.add(in.source), k.add(in.index), k.add(in.kind), k.add(in.sprite_coord), k.add(in.component);
-    k.add(state.color_channels), k.add(state.float_outputs), k.add(state.depth_output), k.add(state.early_depth);
+    k.add(state.color_channels);
+    for (uint8_t c : state.more_channels) k.add(c);
+    k.add(state.float_outputs), k.add(state.depth_output), k.add(state.early_depth);
     k.add(state.probe), k.add(state.avx2);
     return k.take();
 }
@@ -81,12 +83,11 @@ void forget_known_fields(State& s) {
     o.stencil_test = none.ops.stencil_test, o.stencil = none.ops.stencil;
     // The alpha test, either storage.
     o.alpha_test = none.ops.alpha_test, o.alpha_func = none.ops.alpha_func, o.alpha_ref = none.ops.alpha_ref;
-    // The colour mask, either storage; blending and the logic op into RGBA8
-    // (FragmentOps has no logic op with float storage); the depth test early
-    // or late. Nothing is blended or masked without a colour output.
+    // The colour mask and blending, either storage; the logic op (RGBA8:
+    // FragmentOps has none with float storage); the depth test early or late.
     o.color_mask = none.ops.color_mask;
     o.logic_op = none.ops.logic_op, o.logic = none.ops.logic;
-    if (s.color_channels == 0 || !o.float_color) o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
+    o.blend = none.ops.blend, o.blend_state = none.ops.blend_state;
     // The inputs: float registers, gl_FrontFacing's bool, or zeros; point
     // sprites' coordinates.
     bool inputs_known = true;
@@ -95,6 +96,9 @@ void forget_known_fields(State& s) {
                         (in.kind == ir::Kind::Bool && in.source == InputSource::FrontFacing);
     if (inputs_known) s.inputs = none.inputs;
     s.color_channels = none.color_channels;
+    // Several draw buffers, each with the same operations.
+    o.draw_buffers = none.ops.draw_buffers;
+    s.more_channels = none.more_channels;
     s.depth_output = none.depth_output;
     s.early_depth = none.early_depth;
     s.avx2 = none.avx2;

@@ -8,6 +8,7 @@
 // teaches the generated path is refused, not ignored (as llvmpipe's
 // fragment shader variants key on the whole state).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -32,7 +33,10 @@ struct Input {
 struct State {
     FragmentState ops;           // the draw's per-fragment operations
     std::vector<Input> inputs;   // per input register, in the order the fragment stage passes them
-    uint32_t color_channels = 0;  // components of colour output 0 (0: none written)
+    uint32_t color_channels = 0;  // components of colour buffer 0's output (0: none written)
+    // Buffers 1 and up of several draw buffers (FragmentState::draw_buffers):
+    // their outputs' components ([0] unused; 0: not written).
+    std::array<uint8_t, kMaxDrawBuffers> more_channels{};
     bool float_outputs = true;   // the colour and depth outputs are float registers
     bool depth_output = false;   // gl_FragDepth written
     bool early_depth = false;    // the depth test runs before the shader (FragmentStage)
@@ -67,8 +71,14 @@ bool only_known_fields(const S& s) {
 // With blending, a logic op or a colour mask, an RGBA8 colour write reads
 // the buffer first.
 inline bool reads_color(const State& s) {
-    return s.color_channels > 0 && (s.ops.blend || s.ops.logic_op ||
-                                    s.ops.color_mask != std::array<bool, 4>{true, true, true, true});
+    return s.ops.blend || s.ops.logic_op || s.ops.color_mask != std::array<bool, 4>{true, true, true, true};
+}
+
+// Whether any colour buffer is written.
+inline bool writes_color(const State& s) {
+    bool any = s.color_channels > 0;
+    for (uint8_t c : s.more_channels) any |= c > 0;
+    return any;
 }
 
 }  // namespace glslrun::raster::fused

@@ -72,8 +72,7 @@ TEST_CASE("the fused logic op draws the interpreter's bits", "[fused]") {
 TEST_CASE("the fused blending and colour masks with a late depth test draw the interpreter's bits", "[fused]") {
     const BlendFactor kFactors[] = {BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha, BlendFactor::One,
                                     BlendFactor::DstColor, BlendFactor::ConstantAlpha,    BlendFactor::SrcAlphaSaturate};
-    const BlendEquation kEquations[] = {BlendEquation::Add, BlendEquation::Subtract, BlendEquation::ReverseSubtract,
-                                        BlendEquation::Min, BlendEquation::Max};
+    const auto& kEquations = kAllEquations;
     Geometry small = random_geometry(23, 900, 0.08f);
     for (const Shader* shader : {&discard_shader(), &depth_shader()}) {
         Programs p(shader->fs);
@@ -93,8 +92,7 @@ TEST_CASE("the fused blending and colour masks with a late depth test draw the i
                 INFO(shader->name << ", state " << state << ", rounding " << int(rounding));
                 check_fused_matches(p, Primitive::Triangles, small, gl, false, {93, 61}, rounding);
             }
-            // Float storage: the colour mask is generated, blending is not (the C++ path draws).
-            if (!gl.blend) check_fused_matches(p, Primitive::Triangles, small, gl, true);
+            check_fused_matches(p, Primitive::Triangles, small, gl, true);
         }
     }
 }
@@ -225,6 +223,85 @@ TEST_CASE("the fused point sprites' coordinates draw the interpreter's bits", "[
                 check_fused_matches(p, prim, g, gl, false);
                 check_fused_matches(p, prim, g, gl, true);
             }
+        }
+    }
+}
+
+TEST_CASE("the fused pipeline writes several draw buffers as the interpreter does", "[fused]") {
+    // gl_FragData[i] to buffer i (one left unwritten), and gl_FragColor to all.
+    const char* kData = R"(
+void main() {
+    gl_FragData[0] = gl_Color * 1.4 - 0.2;
+    gl_FragData[2] = vec4(fract(gl_FragCoord.xy * 0.031), gl_Color.a, 1.0 - gl_Color.r);
+    if (gl_Color.g < 0.1) discard;
+})";
+    Geometry small = random_geometry(27, 900, 0.08f);
+    for (const char* fs : {kData, kShaders[0].fs}) {
+        Programs p(fs);
+        for (int state = 0; state < 8; ++state) {
+            GLState gl;
+            gl.draw_buffers = 3;
+            gl.depth_test = state % 4 != 3;
+            gl.depth_func = GLState::DepthFunc::Lequal;
+            gl.blend = state % 2 == 1;
+            gl.blend_state.src_rgb = BlendFactor::SrcAlpha, gl.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+            gl.color_mask = {true, state != 2, true, state % 3 != 0};
+            gl.alpha_test = state == 4;
+            gl.alpha_func = CompareFunc::Gequal;
+            gl.alpha_ref = 0.3f;
+            gl.color_logic_op = state == 6;
+            gl.logic_op = LogicOp::Xor;
+            for (bool float_color : {false, true}) {
+                const ColorRounding rounding = state % 3 == 1 ? ColorRounding::Gpu : ColorRounding::Nearest;
+                Frame frames[2] = {{Framebuffer(93, 61, float_color, 3), {}}, {Framebuffer(93, 61, float_color, 3), {}}};
+                for (int i = 0; i < 2; ++i) {
+                    frames[i].fb.rounding = rounding;
+                    frames[i].fb.clear_color({0.1f, 0.2f, 0.3f, 0.6f});
+                    auto stats = draw(i == 0 ? p.oracle : p.fused, gl, frames[i].fb, Primitive::Triangles,
+                                      {small.pos, small.color}, small.count);
+                    REQUIRE(stats);
+                    frames[i].stats = *stats;
+                }
+                INFO((fs == kData ? "gl_FragData" : "gl_FragColor") << ", state " << state << ", "
+                                                                     << (float_color ? "float" : "RGBA8"));
+                const Frame &oracle = frames[0], &fused = frames[1];
+                if (jit_available()) CHECK(fused.stats.fragments_fused == fused.stats.fragments_shaded);
+                CHECK(fused.stats.fragments_written == oracle.stats.fragments_written);
+                for (int b = 0; b < 3; ++b) {
+                    INFO("buffer " << b);
+                    if (float_color) CHECK(same_bits<float>(fused.fb.color_data<float>(b), oracle.fb.color_data<float>(b)));
+                    else CHECK(same_bits<uint8_t>(fused.fb.color_data<uint8_t>(b), oracle.fb.color_data<uint8_t>(b)));
+                }
+                CHECK(same_bits(std::span<const float>(fused.fb.depth), std::span<const float>(oracle.fb.depth)));
+            }
+        }
+    }
+}
+
+TEST_CASE("the fused blending into float storage draws the interpreter's bits, NaNs included", "[fused]") {
+    const auto& kFactors = kAllFactors;
+    const auto& kEquations = kAllEquations;
+    Geometry small = random_geometry(28, 900, 0.08f);
+    // Colours out of [0, 1], NaNs of both signs (two NaN operands: the first one's), late depth.
+    for (const Shader* shader : {&early_shader(), &kShaders[5], &depth_shader()}) {
+        Programs p(shader->fs);
+        const size_t n = std::size(kFactors);
+        for (size_t i = 0; i < n; ++i) {
+            GLState gl;
+            gl.depth_test = i % 3 != 0;
+            gl.depth_func = GLState::DepthFunc::Lequal;
+            gl.blend = true;
+            BlendState& b = gl.blend_state;
+            b.src_rgb = kFactors[i];
+            b.dst_rgb = kFactors[(i * 7 + 3) % n];
+            b.src_alpha = kFactors[(i * 4 + 1) % n];
+            b.dst_alpha = kFactors[n - 1 - i];
+            b.equation_rgb = kEquations[i % 5];
+            b.equation_alpha = kEquations[(i + 2) % 5];
+            b.color = {0.2f, 1.3f, 0.55f, 0.7f - 0.05f * float(i)};
+            gl.color_mask = {true, i % 4 != 1, true, i % 3 != 2};
+            INFO(shader->name << ", blend " << i);
+            check_fused_matches(p, Primitive::Triangles, small, gl, true, {93, 61});
         }
     }
 }

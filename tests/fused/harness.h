@@ -184,6 +184,16 @@ inline void check_fused_matches(Programs& p, Primitive prim, const Geometry& g, 
     CHECK(fused.fb.stencil == oracle.fb.stencil);
 }
 
+// Every blend factor and equation.
+inline const BlendFactor kAllFactors[] = {
+    BlendFactor::Zero,          BlendFactor::One,              BlendFactor::SrcColor,
+    BlendFactor::OneMinusSrcColor, BlendFactor::DstColor,      BlendFactor::OneMinusDstColor,
+    BlendFactor::SrcAlpha,      BlendFactor::OneMinusSrcAlpha, BlendFactor::DstAlpha,
+    BlendFactor::OneMinusDstAlpha, BlendFactor::ConstantColor, BlendFactor::OneMinusConstantColor,
+    BlendFactor::ConstantAlpha, BlendFactor::OneMinusConstantAlpha, BlendFactor::SrcAlphaSaturate};
+inline const BlendEquation kAllEquations[] = {BlendEquation::Add, BlendEquation::Subtract,
+                                              BlendEquation::ReverseSubtract, BlendEquation::Min, BlendEquation::Max};
+
 inline const GLState::DepthFunc kFuncs[] = {GLState::DepthFunc::Never,   GLState::DepthFunc::Less,
                                      GLState::DepthFunc::Equal,   GLState::DepthFunc::Lequal,
                                      GLState::DepthFunc::Greater, GLState::DepthFunc::Notequal,

@@ -1,9 +1,47 @@
 // Blending and the colour mask as generated vector code (raster/fused/gen/blend.h).
 #include "raster/fused/gen/blend.h"
 
+#include <functional>
+
 #include "raster/framebuffer.h"
 
 namespace glslrun::raster::fused {
+
+namespace {
+
+// How a blend factor is made in one arithmetic (8-bit fixed point or
+// float): 0, 1, 1 - x, the blend colour's channel k and 1 minus it, min.
+struct FactorTerms {
+    llvm::Value *zero, *one;
+    std::function<llvm::Value*(llvm::Value*)> inv;
+    std::function<llvm::Value*(size_t)> color, inv_color;
+    std::function<llvm::Value*(llvm::Value*, llvm::Value*)> min;
+};
+
+// GL 2.1 Table 4.1's factor `f` for channel k (3: alpha).
+llvm::Value* factor_of(BlendFactor f, size_t k, const std::array<llvm::Value*, 4>& src,
+                       const std::array<llvm::Value*, 4>& dst, const FactorTerms& t) {
+    switch (f) {
+    case BlendFactor::Zero: return t.zero;
+    case BlendFactor::One: return t.one;
+    case BlendFactor::SrcColor: return src[k];
+    case BlendFactor::OneMinusSrcColor: return t.inv(src[k]);
+    case BlendFactor::DstColor: return dst[k];
+    case BlendFactor::OneMinusDstColor: return t.inv(dst[k]);
+    case BlendFactor::SrcAlpha: return src[3];
+    case BlendFactor::OneMinusSrcAlpha: return t.inv(src[3]);
+    case BlendFactor::DstAlpha: return dst[3];
+    case BlendFactor::OneMinusDstAlpha: return t.inv(dst[3]);
+    case BlendFactor::ConstantColor: return t.color(k);
+    case BlendFactor::OneMinusConstantColor: return t.inv_color(k);
+    case BlendFactor::ConstantAlpha: return t.color(3);
+    case BlendFactor::OneMinusConstantAlpha: return t.inv_color(3);
+    case BlendFactor::SrcAlphaSaturate: return k == 3 ? t.one : t.min(src[3], t.inv(dst[3]));
+    }
+    return t.zero;
+}
+
+}  // namespace
 
 std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const FragmentState& o,
                                                 const std::array<llvm::Value*, 4>& src,
@@ -19,26 +57,9 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
     auto umin = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpULT(x, y), x, y); };
     auto umax = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpUGT(x, y), x, y); };
     // Table 4.1's factor for channel k (3: alpha) in 8-bit fixed point.
-    auto factor = [&](BlendFactor f, size_t k) -> llvm::Value* {
-        switch (f) {
-        case BlendFactor::Zero: return constant(0);
-        case BlendFactor::One: return constant(255);
-        case BlendFactor::SrcColor: return src[k];
-        case BlendFactor::OneMinusSrcColor: return inv(src[k]);
-        case BlendFactor::DstColor: return dst[k];
-        case BlendFactor::OneMinusDstColor: return inv(dst[k]);
-        case BlendFactor::SrcAlpha: return src[3];
-        case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
-        case BlendFactor::DstAlpha: return dst[3];
-        case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
-        case BlendFactor::ConstantColor: return constant(constant8[k]);
-        case BlendFactor::OneMinusConstantColor: return constant(255u - constant8[k]);
-        case BlendFactor::ConstantAlpha: return constant(constant8[3]);
-        case BlendFactor::OneMinusConstantAlpha: return constant(255u - constant8[3]);
-        case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(255) : umin(src[3], inv(dst[3]));
-        }
-        return constant(0);
-    };
+    const FactorTerms terms{constant(0), constant(255), inv, [&](size_t k) { return constant(constant8[k]); },
+                            [&](size_t k) { return constant(255u - constant8[k]); }, umin};
+    auto factor = [&](BlendFactor f, size_t k) { return factor_of(f, k, src, dst, terms); };
     // raster::logic_op (§4.1.10) on bytes; the caller keeps the low 8 bits.
     auto logic = [&](LogicOp op, llvm::Value* s8, llvm::Value* d8) -> llvm::Value* {
         auto no = [&](llvm::Value* x) { return builder.CreateNot(x); };
@@ -99,6 +120,39 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
             if (gpu_rounding && eq != BlendEquation::Min && eq != BlendEquation::Max) out[k] = stored(out[k]);
         }
         if (!o.color_mask[k]) out[k] = dst[k];
+    }
+    return out;
+}
+
+std::array<llvm::Value*, 4> emit_blend_float(llvm::IRBuilder<>& b, const FragmentState& o,
+                                             const std::array<llvm::Value*, 4>& src,
+                                             const std::array<llvm::Value*, 4>& dst) {
+    const BlendState& s = o.blend_state;
+    auto constant = [&](float v) { return llvm::ConstantFP::get(b.getFloatTy(), v); };
+    // ir::a_nan_first(a, r), as raster's combine() names NaNs.
+    auto nan_first = [&](llvm::Value* a, llvm::Value* r) { return b.CreateSelect(b.CreateFCmpUNO(a, a), b.CreateFAdd(a, a), r); };
+    auto inv = [&](llvm::Value* x) { return b.CreateFSub(constant(1.0f), x); };
+    auto min = [&](llvm::Value* x, llvm::Value* y) { return b.CreateSelect(b.CreateFCmpOLT(y, x), y, x); };  // std::min
+    auto max = [&](llvm::Value* x, llvm::Value* y) { return b.CreateSelect(b.CreateFCmpOLT(x, y), y, x); };  // std::max
+    // raster's factor() for channel k (3: alpha).
+    const FactorTerms terms{constant(0.0f), constant(1.0f), inv, [&](size_t k) { return constant(s.color[int(k)]); },
+                            [&](size_t k) { return constant(1.0f - s.color[int(k)]); }, min};
+    auto factor = [&](BlendFactor f, size_t k) { return factor_of(f, k, src, dst, terms); };
+    std::array<llvm::Value*, 4> out;
+    for (size_t k = 0; k < 4; ++k) {
+        const bool alpha = k == 3;
+        const BlendEquation eq = alpha ? s.equation_alpha : s.equation_rgb;
+        llvm::Value* a = src[k];
+        a = nan_first(a, b.CreateFMul(a, factor(alpha ? s.src_alpha : s.src_rgb, k)));
+        llvm::Value* d = dst[k];
+        d = nan_first(d, b.CreateFMul(d, factor(alpha ? s.dst_alpha : s.dst_rgb, k)));
+        switch (eq) {
+        case BlendEquation::Add: out[k] = nan_first(a, b.CreateFAdd(a, d)); break;
+        case BlendEquation::Subtract: out[k] = nan_first(a, b.CreateFSub(a, d)); break;
+        case BlendEquation::ReverseSubtract: out[k] = nan_first(d, b.CreateFSub(d, a)); break;
+        case BlendEquation::Min: out[k] = min(src[k], dst[k]); break;
+        case BlendEquation::Max: out[k] = max(src[k], dst[k]); break;
+        }
     }
     return out;
 }

@@ -19,4 +19,10 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
                                                 const std::array<llvm::Value*, 4>& src,
                                                 const std::array<llvm::Value*, 4>& dst);
 
+// One pixel's float blend (raster::blend, into float storage) of the
+// fragment's channels `src` and the buffer's `dst` (floats), by `ops`.
+std::array<llvm::Value*, 4> emit_blend_float(llvm::IRBuilder<>& builder, const FragmentState& ops,
+                                             const std::array<llvm::Value*, 4>& src,
+                                             const std::array<llvm::Value*, 4>& dst);
+
 }  // namespace glslrun::raster::fused
