@@ -132,7 +132,7 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
         recorder.trace.truncated = true;
         recorder.trace.stopped = error.message;
     }
-    steps_left -= std::min(steps_left, recorder.trace.steps.size());
+    steps_left -= std::min(steps_left, recorder.cost());
     return std::move(recorder.trace);
 }
 
