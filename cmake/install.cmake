@@ -23,6 +23,9 @@ install(TARGETS glslrun_lib glslrun_shared glslrun_scene EXPORT glslrunTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 glslrun_strip_static_on_install(development
   ${CMAKE_INSTALL_LIBDIR}/$<TARGET_FILE_NAME:glslrun_lib> ${CMAKE_INSTALL_LIBDIR}/$<TARGET_FILE_NAME:glslrun_scene>)
+if(TARGET glslrun_jit)
+  install(TARGETS glslrun_jit LIBRARY DESTINATION ${glslrun_jit_install_dir} COMPONENT runtime)
+endif()
 install(DIRECTORY include/glslrun DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT development)
 install(FILES ${PROJECT_BINARY_DIR}/include/glslrun/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/glslrun
   COMPONENT development)

@@ -35,16 +35,6 @@ std::string Error::str() const {
     return s;
 }
 
-Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
-    CompileOptions options;
-    options.default_version = default_version;
-    return frontend::check_shader(stage, source, options);
-}
-
-Status check_shader(Stage stage, const ShaderSource& source, const CompileOptions& options) {
-    return frontend::check_shader(stage, source, options);
-}
-
 namespace frontend {
 
 static std::string trim(const std::string& s) {

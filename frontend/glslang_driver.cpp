@@ -401,3 +401,19 @@ Status check_shader(Stage stage, const ShaderSource& source_in, const CompileOpt
 }
 
 }  // namespace glslrun::frontend
+
+namespace glslrun {
+
+// The public entry points, here beside the frontend's (not with the
+// diagnostics' formatting, which the JIT plugin links without glslang).
+Status check_shader(Stage stage, const ShaderSource& source, int default_version) {
+    CompileOptions options;
+    options.default_version = default_version;
+    return frontend::check_shader(stage, source, options);
+}
+
+Status check_shader(Stage stage, const ShaderSource& source, const CompileOptions& options) {
+    return frontend::check_shader(stage, source, options);
+}
+
+}  // namespace glslrun

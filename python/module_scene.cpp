@@ -283,6 +283,10 @@ void bind_scene(py::module_& m) {
           py::arg("mode") = "fast", py::arg("threads") = 0,
           "The scene in `mode` against Reference (glslrun --error-report): the report's keys as a dict, with "
           "'notes', 'reference_image' and 'mode_image'.");
+    m.def("jit_available", &jit_available,
+          "Whether the JIT can run here: LLVM's native code, in the plugin libglslrun-jit.so beside this "
+          "module, loaded by this call or the first compile. Without it every backend runs the interpreter, "
+          "which computes the same bits.");
 }
 
 }  // namespace glslrun::python

@@ -197,18 +197,29 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
 
 }  // namespace
 
-FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb)
-    : alpha_test(gl.alpha_test), alpha_func(gl.alpha_func), alpha_ref(std::clamp(gl.alpha_ref, 0.0f, 1.0f)),
-      alpha_ref8(unorm8_steps(alpha_ref)),
-      stencil_test(gl.stencil_test), stencil(gl.stencil), depth_test(gl.depth_test), depth_write(gl.depth_mask),
-      depth_func(gl.depth_func), blend(gl.blend), logic_op(gl.color_logic_op && !fb.float_color()),
-      float_color(fb.float_color()), rounding(fb.rounding), blend_state(gl.blend_state), logic(gl.logic_op),
-      color_mask(gl.color_mask) {
+FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb) {
+    alpha_test = gl.alpha_test;
+    alpha_func = gl.alpha_func;
+    alpha_ref = std::clamp(gl.alpha_ref, 0.0f, 1.0f);
+    alpha_ref8 = unorm8_steps(alpha_ref);
+    stencil_test = gl.stencil_test;
+    stencil = gl.stencil;
+    depth_test = gl.depth_test;
+    depth_write = gl.depth_mask;
+    depth_func = gl.depth_func;
+    blend = gl.blend;
+    logic_op = gl.color_logic_op && !fb.float_color();
+    float_color = fb.float_color();
+    rounding = fb.rounding;
+    blend_state = gl.blend_state;
+    logic = gl.logic_op;
+    color_mask = gl.color_mask;
+    draw_buffers = gl.draw_buffers;
     blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
     resolved_blend = resolve_blend(blend_state, rounding);
     for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
     bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
-    plain = !alpha_test && !stencil_test && !blend && !logic_op && all_channels && gl.draw_buffers == 1 &&
+    plain = !alpha_test && !stencil_test && !blend && !logic_op && all_channels && draw_buffers == 1 &&
             (depth_write || !depth_test);
 }
 

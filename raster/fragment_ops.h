@@ -13,6 +13,19 @@
 #include "glslrun/glslrun.h"
 #include "runtime/interpreter.h"
 
+namespace glslrun {
+// Field by field (FragmentState's comparison).
+inline bool operator==(const StencilFace& a, const StencilFace& b) {
+    return a.func == b.func && a.ref == b.ref && a.value_mask == b.value_mask && a.write_mask == b.write_mask &&
+           a.fail == b.fail && a.depth_fail == b.depth_fail && a.depth_pass == b.depth_pass;
+}
+inline bool operator==(const BlendState& a, const BlendState& b) {
+    return a.src_rgb == b.src_rgb && a.dst_rgb == b.dst_rgb && a.src_alpha == b.src_alpha &&
+           a.dst_alpha == b.dst_alpha && a.equation_rgb == b.equation_rgb && a.equation_alpha == b.equation_alpha &&
+           a.color == b.color;
+}
+}  // namespace glslrun
+
 namespace glslrun::raster {
 
 using Lanes = std::array<float, rt::kLanes>;
@@ -37,26 +50,35 @@ struct ResolvedBlend {
 };
 ResolvedBlend resolve_blend(const BlendState& s, ColorRounding rounding = ColorRounding::Nearest);
 
-// The state of the operations, resolved once per draw from GLState.
-struct FragmentOps {
-    FragmentOps(const GLState& gl, const Framebuffer& fb);
-    // Only the depth test (or none) and plain colour stores into one buffer:
-    // the fragment stage's fast path, which needs none of the functions below.
-    bool plain = true;
+// The per-fragment state of a draw as the operations read it (GL's values
+// clamped and masked), compared whole: the fused pipeline's key
+// (raster/fused/state.h) holds all of it, so that a field added here is
+// refused by the generated path (fused::fusable) until that path takes it.
+struct FragmentState {
     bool alpha_test = false;
     CompareFunc alpha_func = CompareFunc::Always;
     float alpha_ref = 0;     // clamped to [0, 1]; compared as is with float buffers
-    float alpha_ref8 = 0;    // the byte RGBA8 storage would make of it, as a float
     bool stencil_test = false;
     std::array<StencilFace, 2> stencil;  // front, back
     bool depth_test = false, depth_write = true;
     CompareFunc depth_func = CompareFunc::Less;
     bool blend = false, logic_op = false, float_color = false;
     ColorRounding rounding = ColorRounding::Nearest;  // the framebuffer's, for RGBA8 stores
-    BlendState blend_state;
-    ResolvedBlend resolved_blend;
+    BlendState blend_state;  // its colour clamped to [0, 1]
     LogicOp logic = LogicOp::Copy;
     std::array<bool, 4> color_mask{true, true, true, true};
+    int draw_buffers = 1;  // colour buffers written (gl_FragData[i] to buffer i)
+    bool operator==(const FragmentState&) const = default;
+};
+
+// The state of the operations, resolved once per draw from GLState.
+struct FragmentOps : FragmentState {
+    FragmentOps(const GLState& gl, const Framebuffer& fb);
+    // Only the depth test (or none) and plain colour stores into one buffer:
+    // the fragment stage's fast path, which needs none of the functions below.
+    bool plain = true;
+    float alpha_ref8 = 0;    // the byte RGBA8 storage would make of alpha_ref, as a float
+    ResolvedBlend resolved_blend;
 };
 
 // Where the lanes of a batch are: window position, depth, facing.

@@ -16,7 +16,8 @@
 namespace glslrun::raster {
 
 struct FragmentStage::InputPlan {
-    enum class Source { Varying, FragCoord, FrontFacing, PointCoord, Zero } source = Source::Zero;
+    using Source = fused::InputSource;
+    Source source = Source::Zero;
     const ir::Binding* binding = nullptr;
     uint32_t attr_offset = 0;  // Varying: where in the attribute vector
     bool sprite_coord = false;  // gl_TexCoord[i] of a unit with GL_COORD_REPLACE (point sprites)
@@ -41,7 +42,7 @@ Plane to_plane(double a, double b, double c) { return {float(a), float(b), float
 
 // a + b and a * b naming a's NaN (quieted) when a is one (ir::a_nan_first),
 // whatever order the compiler gives the operands: the fused pipeline
-// (runtime/jit/pipeline.cpp) computes the same expressions with the same rule.
+// (raster/fused/gen/emit.cpp) computes the same expressions with the same rule.
 QuadF add(QuadF a, QuadF b) { return ir::a_nan_first(a, a + b); }
 QuadF mul(QuadF a, QuadF b) { return ir::a_nan_first(a, a * b); }
 QuadF splat(float v) { return QuadF{} + v; }
@@ -67,25 +68,6 @@ void load_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes)
         return;
     }
     for (int lane = 0; lane < lanes; ++lane) v[size_t(lane)] = exec::lane_as_float(in, kind, r, lane);
-}
-
-// Where the fused pipeline finds FsPrimitive's fields.
-rt::PrimitiveLayout primitive_layout() {
-    static_assert(std::is_standard_layout_v<FsPrimitive> && sizeof(Plane) == 3 * sizeof(float));
-    rt::PrimitiveLayout l;
-    l.vertices = offsetof(FsPrimitive, v);
-    l.vertex_size = sizeof(FsVertex);
-    l.vertex_inv_w = offsetof(FsVertex, inv_w);
-    l.vertex_attrs = offsetof(FsVertex, attrs);
-    l.weights = offsetof(FsPrimitive, weight);
-    l.depth = offsetof(FsPrimitive, z);
-    l.ox = offsetof(FsPrimitive, ox);
-    l.oy = offsetof(FsPrimitive, oy);
-    l.front = offsetof(FsPrimitive, front);
-    l.count = offsetof(FsPrimitive, count);
-    l.point_coord_origin = offsetof(FsPrimitive, point_coord_origin);
-    l.point_coord_step = offsetof(FsPrimitive, point_coord_step);
-    return l;
 }
 
 }  // namespace
@@ -177,74 +159,52 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
     pipeline_ = fused_pipeline();
 }
 
-namespace {
-
-// The fused pipeline's blending and colour mask (rt::ColorOps) of `o`.
-rt::ColorOps color_ops_of(const FragmentOps& o) {
-    rt::ColorOps c;
-    c.mask = o.color_mask;
-    if (!o.blend) return c;
-    const BlendState& s = o.blend_state;
-    c.blend = true;
-    c.src_rgb = s.src_rgb, c.dst_rgb = s.dst_rgb, c.src_alpha = s.src_alpha, c.dst_alpha = s.dst_alpha;
-    c.equation_rgb = s.equation_rgb, c.equation_alpha = s.equation_alpha;
-    for (size_t k = 0; k < 4; ++k) c.constant[k] = uint8_t(o.resolved_blend.constant8[k]);
-    return c;
-}
-
-}  // namespace
-
-// The fused pipeline where the shader runs JIT-compiled and the draw's
-// state is one it takes: the depth test (any function, either mask) and
-// stores into one colour buffer, with blending and the colour mask where
-// that buffer is RGBA8 and the depth test early; no shader debugger, no
-// GL_COORD_REPLACE. Null otherwise,
-// until the program has shaded enough fragments to pay for it
-// (rt::kPipelineAfterFragments), and under Backend::Auto until its
-// background compile is done.
-const rt::FragmentPipeline* FragmentStage::fused_pipeline() {
-    const FragmentOps& o = ops_;
-    if (interp_->backend() != Backend::Jit || probe_ || o.alpha_test || o.stencil_test || o.logic_op ||
-        gl_.draw_buffers != 1)
-        return nullptr;
-    rt::PipelineKey key;
+// The fused path's state: the draw's per-fragment operations, the shader's
+// inputs and outputs (with the registers the functions fill and read).
+fused::State FragmentStage::fused_state() {
+    fused::State state;
+    state.ops = ops_;
+    state.probe = probe_ != nullptr;
+    input_regs_.clear();
+    output_regs_.clear();
     for (const InputPlan& p : inputs_) {
         const ir::Binding& b = *p.binding;
-        if (p.sprite_coord) return nullptr;  // GL_COORD_REPLACE: not in the generated code yet
-        const bool is_bool = b.kind == ir::Kind::Bool && p.source == InputPlan::Source::FrontFacing;
-        if (b.kind != ir::Kind::F32 && !is_bool && p.source != InputPlan::Source::Zero) return nullptr;
         for (uint32_t c = 0; c < b.count; ++c) {
             uint32_t index = p.source == InputPlan::Source::Varying ? p.attr_offset + c : c;
-            key.inputs.push_back({rt::InputSource(p.source), index, is_bool});
+            state.inputs.push_back({p.source, index, b.kind, p.sprite_coord, uint8_t(c)});
             input_regs_.push_back(interp_->lanes(b.first + c));
         }
     }
     if (const ir::Binding* color = color_out_[0]) {
-        if (color->kind != ir::Kind::F32) return nullptr;
-        key.color_channels = std::min<uint32_t>(4, color->count);
-        for (uint32_t k = 0; k < key.color_channels; ++k) output_regs_.push_back(interp_->lanes(color->first + k));
+        state.float_outputs &= color->kind == ir::Kind::F32;
+        state.color_channels = std::min<uint32_t>(4, color->count);
+        for (uint32_t k = 0; k < state.color_channels; ++k) output_regs_.push_back(interp_->lanes(color->first + k));
     }
     if (depth_out_) {
-        if (depth_out_->kind != ir::Kind::F32) return nullptr;
-        key.depth_output = true;
+        state.float_outputs &= depth_out_->kind == ir::Kind::F32;
+        state.depth_output = true;
         output_regs_.push_back(interp_->lanes(depth_out_->first));
     }
-    key.float_color = fb_.float_color();
-    key.gpu_rounding = !key.float_color && fb_.rounding == ColorRounding::Gpu;
-    key.depth_test = o.depth_test;
-    key.depth_write = o.depth_write;
-    key.depth_func = o.depth_func;
-    key.early_depth = early_depth_;
-    // Without a colour output nothing is blended or masked.
-    if (color_out_[0]) key.color_ops = color_ops_of(o);
-    if (key.color_ops.reads_color() && (key.float_color || (o.depth_test && !early_depth_))) return nullptr;
-    key.avx2 = rt::cpu_has_avx2();
+    state.early_depth = early_depth_;
+    state.avx2 = rt::cpu_has_avx2();
+    return state;
+}
+
+// The fused pipeline where the shader runs JIT-compiled and
+// fused::fusable() takes the draw's state. Null otherwise, until the
+// program has shaded enough fragments to pay for it
+// (fused::kPipelineAfterFragments), and under Backend::Auto until its
+// background compile is done.
+const fused::Pipeline* FragmentStage::fused_pipeline() {
+    if (interp_->backend() != Backend::Jit) return nullptr;
+    const fused::State state = fused_state();
     target_.depth = fb_.depth.data();
-    target_.color = key.float_color ? static_cast<void*>(fb_.color_data<float>(0).data())
-                                    : static_cast<void*>(fb_.color_data<uint8_t>(0).data());
+    target_.stencil = fb_.stencil.data();
+    target_.color = ops_.float_color ? static_cast<void*>(fb_.color_data<float>(0).data())
+                                     : static_cast<void*>(fb_.color_data<uint8_t>(0).data());
     target_.width = fb_.width;
     target_.height = fb_.height;
-    return state_of(program_).pipelines->get(key, primitive_layout(), program_.exec.backend == Backend::Jit);
+    return state_of(program_).pipelines->get(state, program_.exec.backend == Backend::Jit);
 }
 
 void FragmentStage::prefetch(const Rect& r) const {
@@ -396,13 +356,13 @@ void FragmentStage::interpolate(uint32_t attr, const Weights& w, float* v) const
 
 // Component c of gl_FragCoord, gl_FrontFacing or gl_PointCoord (0 for inputs
 // no varying feeds).
-void FragmentStage::builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const {
+void FragmentStage::builtin_input(fused::InputSource source, uint32_t c, const Weights& w, Lanes& v) const {
     using Source = InputPlan::Source;
     for (int q = 0; q < quads_; ++q) {
         const FsPrimitive& prim = *quad_prim_[size_t(q)];
         for (int lane = q * 4; lane < q * 4 + 4; ++lane) {
             float fx = float(lane_x_[lane]) + 0.5f, fy = float(lane_y_[lane]) + 0.5f, value = 0;
-            switch (Source(source)) {
+            switch (source) {
             case Source::FragCoord: {
                 const float coord[4] = {fx, fy, lane_z_[lane], w.inv_w[lane]};
                 value = c < 4 ? coord[c] : 0.0f;
@@ -425,7 +385,7 @@ void FragmentStage::builtin_input(int source, uint32_t c, const Weights& w, Lane
 // (gl_PointCoord, 0, 1); other primitives keep their values.
 void FragmentStage::replace_sprite_coord(uint32_t c, const Weights& w, Lanes& v) const {
     Lanes coord{};
-    if (c < 2) builtin_input(int(InputPlan::Source::PointCoord), c, w, coord);
+    if (c < 2) builtin_input(InputPlan::Source::PointCoord, c, w, coord);
     for (int q = 0; q < quads_; ++q) {
         if (quad_prim_[size_t(q)]->count != 1) continue;
         for (int lane = q * 4; lane < q * 4 + 4; ++lane) v[size_t(lane)] = c < 2 ? coord[size_t(lane)] : c == 3 ? 1.0f : 0.0f;
@@ -443,7 +403,7 @@ void FragmentStage::fill_inputs(const Weights& w) {
                 continue;
             }
             if (p.source == InputPlan::Source::Varying) interpolate(p.attr_offset + c, w, v.data());
-            else builtin_input(int(p.source), c, w, v);
+            else builtin_input(p.source, c, w, v);
             if (p.sprite_coord) replace_sprite_coord(c, w, v);
             store_lanes(*interp_, b.kind, b.first + c, v, quads_ * 4);
         }
@@ -644,7 +604,7 @@ rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z, P
     if (ops_.stencil_test || (ops_.depth_test && !early_depth_))
         alive = tests ? stencil_depth_probed(px, alive, *tests) : stencil_depth_test(ops_, fb_, px, alive);
     written_ += uint64_t(std::popcount(alive));
-    for (int b = 0; b < gl_.draw_buffers && alive; ++b) {
+    for (int b = 0; b < ops_.draw_buffers && alive; ++b) {
         if (!color_out_[size_t(b)]) continue;
         load_color(b, rgba);
         write_color(ops_, fb_, b, px, rgba, alive);

@@ -16,7 +16,7 @@
 #include "raster/quad_lanes.h"
 #include "raster/triangle.h"
 #include "runtime/backend.h"
-#include "runtime/fragment_pipeline.h"
+#include "raster/fused/pipeline.h"
 
 namespace glslrun::raster {
 
@@ -102,7 +102,7 @@ public:
     // Fragment counts of this stage so far.
     uint64_t fragments_shaded() const { return shaded_; }
     uint64_t fragments_written() const { return written_; }
-    // Of the fragments shaded, those the fused pipeline (runtime/fragment_pipeline.h) handled.
+    // Of the fragments shaded, those the fused pipeline (raster/fused/pipeline.h) handled.
     uint64_t fragments_fused() const { return fused_; }
 
 private:
@@ -112,7 +112,7 @@ private:
     unsigned depth_test_quad(int base, const float* z_lanes, unsigned mask);
     void compute_weights(Weights& w) const;
     void interpolate(uint32_t attr, const Weights& w, float* v) const;
-    void builtin_input(int source, uint32_t c, const Weights& w, Lanes& v) const;
+    void builtin_input(fused::InputSource source, uint32_t c, const Weights& w, Lanes& v) const;
     void replace_sprite_coord(uint32_t c, const Weights& w, Lanes& v) const;
     void fill_inputs(const Weights& w);
     template <bool kProbed>
@@ -126,7 +126,8 @@ private:
     rt::LaneMask stencil_depth_probed(const LanePixels& px, rt::LaneMask alive, ProbeTests& tests);
     void load_color(int buffer, std::array<Lanes, 4>& rgba) const;
     ProbeBatch probe_batch(rt::LaneMask covered);
-    const rt::FragmentPipeline* fused_pipeline();
+    fused::State fused_state();
+    const fused::Pipeline* fused_pipeline();
 
     const Program& program_;
     const GLState& gl_;
@@ -149,9 +150,9 @@ private:
     uint64_t shaded_ = 0, written_ = 0, fused_ = 0;
     // The fused path: the JIT's pipeline for this draw's state, or null (the
     // C++ path above); its batch, buffers and the registers it fills and reads.
-    const rt::FragmentPipeline* pipeline_ = nullptr;
-    rt::QuadBatch batch_;
-    rt::PipelineTarget target_;
+    const fused::Pipeline* pipeline_ = nullptr;
+    fused::QuadBatch batch_;
+    fused::Target target_;
     std::vector<uint32_t*> input_regs_;
     std::vector<const uint32_t*> output_regs_;
     std::optional<Error> error_;

@@ -4,28 +4,24 @@
 #include <fmt/format.h>
 
 #include "ir/passes.h"
+#include "raster/fused/pipeline.h"
 #include "runtime/backend_cache.h"
-#include "runtime/fragment_pipeline.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/interpreter.h"
 #include "runtime/program_state.h"
-#ifdef GLSLRUN_HAVE_JIT
 #include "runtime/jit/jit.h"
-#endif
+#include "runtime/jit_plugin.h"
 
 namespace glslrun {
 
-bool jit_available() {
-#ifdef GLSLRUN_HAVE_JIT
-    return true;
-#else
-    return false;
-#endif
-}
+bool jit_available() { return rt::jit_plugin() != nullptr; }
 
 Backend effective_backend(Backend requested, Precision precision) {
-    if (precision == Precision::Reference || !jit_available()) return Backend::Interp;
-    return requested == Backend::Interp ? Backend::Interp : Backend::Jit;
+    if (precision == Precision::Reference || requested == Backend::Interp) return Backend::Interp;
+    // Auto must not load the plugin before it compiles anything: its file's presence is enough here
+    // (a plugin that then fails to load leaves the interpreter running, the same bits).
+    const bool jit = requested == Backend::Jit ? jit_available() : rt::jit_plugin_present();
+    return jit ? Backend::Jit : Backend::Interp;
 }
 
 double Program::jit_compile_seconds() const {
@@ -36,16 +32,6 @@ double Program::jit_compile_seconds() const {
 }  // namespace glslrun
 
 namespace glslrun::rt {
-
-std::string RunLimits::loop_cap_message() const {
-    return fmt::format("loop exceeded {} iterations", max_loop_iterations);
-}
-
-std::string RunLimits::instructions_message() const {
-    return fmt::format("the shader executed more than {} instructions in one batch (calls that multiply, or a loop "
-                       "too long)",
-                       max_instructions);
-}
 
 namespace {
 
@@ -68,27 +54,20 @@ std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds,
                                                bool quick_codegen, const std::atomic<bool>* stop) {
     if (llvm_seconds) *llvm_seconds = 0;
-#ifdef GLSLRUN_HAVE_JIT
-    if (backend == Backend::Jit) {
+    const JitEntryPoints* jit = backend == Backend::Jit ? jit_plugin() : nullptr;
+    if (jit) {
         jit::CompileStats stats;
         stats.stop = stop;
-        std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
+        std::unique_ptr<CompiledShader> code = jit->compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
         if (llvm_seconds) *llvm_seconds = stats.seconds;
         if (code) return code;
     }
-#else
-    (void)backend, (void)precision, (void)fast_ops, (void)avx2, (void)quick_codegen, (void)stop;
-#endif
     return std::make_unique<InterpretedShader>(shader);
 }
 
 JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen) {
-#ifdef GLSLRUN_HAVE_JIT
+    if (!jit_plugin_present()) return {};
     return jit::plan_compile(shader, quick_codegen);
-#else
-    (void)shader, (void)quick_codegen;
-    return {};
-#endif
 }
 
 std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,

@@ -17,6 +17,16 @@ void ExecOptions::set_time_limit(double seconds) {
 
 namespace glslrun::rt {
 
+std::string RunLimits::loop_cap_message() const {
+    return fmt::format("loop exceeded {} iterations", max_loop_iterations);
+}
+
+std::string RunLimits::instructions_message() const {
+    return fmt::format("the shader executed more than {} instructions in one batch (calls that multiply, or a loop "
+                       "too long)",
+                       max_instructions);
+}
+
 DrawBudget::DrawBudget(const ExecOptions& exec)
     : max_(exec.max_draw_instructions), cancel_(exec.cancel), deadline_(exec.deadline) {}
 

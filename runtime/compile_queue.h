@@ -1,6 +1,6 @@
 // The process's background compiles: one queue, run by one thread, for every
 // program's tiered LLVM compiles (runtime/backend_cache.h, the fused
-// pipelines of runtime/fragment_pipeline.h). One thread, not one per
+// pipelines of raster/fused/pipeline.h). One thread, not one per
 // program stage: hundreds of live programs then cost one thread's stack and
 // one compile's memory at a time, and compiles take turns on the JIT's
 // engine anyway (runtime/jit/engine.h).

@@ -8,15 +8,15 @@
 
 #include "frontend/compile.h"
 #include "ir/passes.h"
+#include "raster/fused/pipeline.h"
 #include "runtime/backend_cache.h"
-#include "runtime/fragment_pipeline.h"
 #include "runtime/program_state.h"
 
 namespace glslrun {
 
 Program::Program() : state_(std::make_unique<State>()) {
     state_->backends = std::make_shared<rt::BackendCache>();
-    state_->pipelines = std::make_shared<rt::PipelineCache>();
+    state_->pipelines = std::make_shared<raster::fused::Cache>();
 }
 Program::Program(Program&&) noexcept = default;
 Program& Program::operator=(Program&&) noexcept = default;

@@ -13,7 +13,8 @@
 
 namespace glslrun {
 namespace raster { class DrawProbe; }
-namespace rt { class BackendCache; class PipelineCache; }
+namespace rt { class BackendCache; }
+namespace raster::fused { class Cache; }
 
 struct Program::State {
     ir::Program ir;
@@ -36,8 +37,8 @@ struct Program::State {
     // The shaders compiled by the backends (runtime/backend_cache.h), made
     // with the State; shared_ptr for the same reason as draw_scratch.
     std::shared_ptr<rt::BackendCache> backends;
-    // The fused fragment pipelines (runtime/fragment_pipeline.h), by draw state.
-    std::shared_ptr<rt::PipelineCache> pipelines;
+    // The fused fragment pipelines (raster/fused/pipeline.h), by draw state.
+    std::shared_ptr<raster::fused::Cache> pipelines;
 };
 
 inline Program::State& state_of(Program& program) { return *program.state_; }

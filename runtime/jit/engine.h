@@ -1,5 +1,5 @@
 // What module.cpp's LLVM set-up offers the JIT's other code generators
-// (pipeline.cpp): the same target, the same optimization pipeline, hence
+// (raster/fused/gen/emit.cpp): the same target, the same optimization pipeline, hence
 // the same rules for bits (no FMA contraction, no InstCombine).
 #pragma once
 #include <cstdint>
@@ -12,7 +12,7 @@
 #include <llvm/IR/Module.h>
 #include <llvm/Target/TargetMachine.h>
 
-#include "runtime/fragment_pipeline.h"
+#include "runtime/backend.h"
 
 namespace glslrun::rt::jit {
 
@@ -76,10 +76,5 @@ double thread_cpu_seconds();
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick);
 // The JIT's short function pass pipeline (module.cpp says why it is short).
 void optimise(llvm::Module& module, llvm::TargetMachine& machine);
-
-// pipeline.cpp: the fused fragment pipeline's functions for `key`; null
-// where LLVM failed. *seconds (may be null): LLVM's time (thread CPU).
-std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
-                                                   double* seconds);
 
 }  // namespace glslrun::rt::jit

@@ -8,7 +8,10 @@
 // Files: jit.h (this), context.h (what generated code and its call-outs
 // share), module.cpp (LLVM set-up, compiling, the executor), codegen.h and
 // control.cpp (blocks, masks, control flow), alu.cpp (the instructions),
-// callout.cpp (ops that call the interpreter's kernels).
+// callout.cpp (ops that call the interpreter's kernels), entry.cpp (the
+// plugin's exported entry points: runtime/jit/ is libglslrun-jit.so, see
+// runtime/jit_plugin.h). plan_compile is defined in the library itself
+// (runtime/jit_plan.cpp), which plans without loading LLVM.
 #pragma once
 #include <atomic>
 #include <cstdint>

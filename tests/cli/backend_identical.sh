@@ -34,7 +34,7 @@ while read -r shader scene; do
     done
 done < "$tmp/cases"
 # The fused fragment pipeline: a program takes it once it has shaded 2^20
-# fragments (runtime/fragment_pipeline.h), so several frames of three scenes,
+# fragments (raster/fused/pipeline.h), so several frames of three scenes,
 # the last of which it must have drawn (multi_pass: its light passes blend).
 for case in "spot_pix_fixed spot 1920x1080 6" "colors quad 1024x1024 8" "minimal multi_pass 1280x720 3"; do
     set -- $case

@@ -21,7 +21,7 @@ log "built $(basename "$wheel")"
 "$python" - "$wheel" <<'PY'
 import sys, zipfile
 names = zipfile.ZipFile(sys.argv[1]).namelist()
-for want in ("glslrun/__init__.pyi", "glslrun/py.typed", ".dist-info/LICENSE", ".dist-info/RECORD"):
+for want in ("glslrun/__init__.pyi", "glslrun/py.typed", "glslrun/libglslrun-jit.so", ".dist-info/LICENSE", ".dist-info/RECORD"):
     assert any(n.endswith(want) for n in names), (want, names)
 assert any(n.startswith("glslrun/__init__.cpython") and n.endswith(".so") for n in names), names
 PY
@@ -38,6 +38,7 @@ assert os.path.realpath(glslrun.__file__).startswith(venv), glslrun.__file__
 image = glslrun.render(f"{src}/shaders/minimal.vert", f"{src}/shaders/minimal.frag", f"{src}/scenes/quad.toml")
 assert image.shape == (512, 512, 4) and image.dtype.name == "uint8" and image.any(), image.shape
 assert "override" in glslrun.Program.render.__doc__
+assert glslrun.jit_available(), "the wheel's JIT plugin did not load"
 print("  import glslrun from", os.path.dirname(glslrun.__file__), "-> render", image.shape)
 PY
 }

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "glslrun/glslrun.h"
-#include "runtime/fragment_pipeline.h"
+#include "raster/fused/pipeline.h"
 #include "runtime/program_state.h"
 
 using namespace glslrun;
@@ -83,7 +83,7 @@ TEST_CASE("helper lanes skip their lookups only where no one reads them: the sam
         Program& p = *compiled;
         p.exec.backend = backend;
         REQUIRE(p.set_uniform("t", std::array{0}).ok());
-        if (backend == Backend::Jit) {  // warmed up past rt::kPipelineAfterFragments: the fused pipeline
+        if (backend == Backend::Jit) {  // warmed up past raster::fused::kPipelineAfterFragments: the fused pipeline
             Framebuffer big(1024, 1024);
             VertexAttrib quad{"gl_Vertex", 4, {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1, -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1}};
             VertexAttrib uv{"gl_MultiTexCoord0", 4, std::vector<float>(24, 0.5f)};

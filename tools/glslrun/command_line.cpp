@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "runtime/jit_plugin.h"
+
 namespace glslrun::cli {
 
 void add_precision_option(CLI::App& app, Precision& precision) {
@@ -28,7 +30,7 @@ void add_backend_option(CLI::App& app, Backend& backend) {
         ->check([](const std::string& name) {
             auto parsed = parse_backend(name);
             if (!parsed) return parsed.error().diagnostics.front().message;
-            if (*parsed == Backend::Jit && !jit_available()) return std::string("this glslrun was built without the JIT");
+            if (*parsed == Backend::Jit && !jit_available()) return rt::jit_plugin_error();
             return std::string();
         });
 }

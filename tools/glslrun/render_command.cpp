@@ -22,7 +22,7 @@
 #include "progress.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
-#include "runtime/fragment_pipeline.h"
+#include "raster/fused/pipeline.h"
 #include "runtime/program_state.h"
 #include "scene/bench_report.h"
 #include "glslrun/scene/image_compare.h"

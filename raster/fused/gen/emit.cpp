@@ -1,9 +1,10 @@
-// The fused fragment pipeline's code (runtime/fragment_pipeline.h): LLVM IR
+// The fused fragment pipeline's code (raster/fused/pipeline.h): LLVM IR
 // for the early depth test of a quad or of an 8x8 square, the shader inputs
 // of a batch and the per-fragment writes, computing what raster/fragments.cpp's
 // C++ path computes, operation for operation. A quad's four lanes are one
 // 4-wide vector; the writes go in lane order, as two quads of a batch may
 // cover the same pixel (a quad's own four pixels are distinct).
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <mutex>
@@ -16,31 +17,41 @@
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Verifier.h>
 
-#include "runtime/jit/blend.h"
+#include "raster/fragments.h"
+#include "raster/framebuffer.h"
+#include "raster/fused/gen/blend.h"
 #include "runtime/jit/engine.h"
 
-namespace glslrun::rt::jit {
+namespace glslrun::raster::fused {
 
 namespace {
+
+using rt::jit::Engine;
+using rt::jit::EngineCode;
+
+// Where FsPrimitive's fields are (raster/fragments.h), read as raw bytes.
+static_assert(std::is_standard_layout_v<FsPrimitive> && std::is_standard_layout_v<FsVertex> &&
+              sizeof(Plane) == 3 * sizeof(float) && sizeof(FsPrimitive::front) == 1 &&
+              sizeof(FsPrimitive::ox) == 4 && sizeof(FsPrimitive::count) == 4 &&
+              sizeof(FsVertex::attrs) == sizeof(void*) && sizeof(FsPrimitive::weight) == 9 * sizeof(float));
+constexpr uint64_t kVertices = offsetof(FsPrimitive, v), kVertexSize = sizeof(FsVertex);
+constexpr uint64_t kVertexInvW = offsetof(FsVertex, inv_w), kVertexAttrs = offsetof(FsVertex, attrs);
+constexpr uint64_t kWeights = offsetof(FsPrimitive, weight), kDepth = offsetof(FsPrimitive, z);
+constexpr uint64_t kOx = offsetof(FsPrimitive, ox), kOy = offsetof(FsPrimitive, oy);
+constexpr uint64_t kFront = offsetof(FsPrimitive, front), kCount = offsetof(FsPrimitive, count);
+constexpr uint64_t kPointCoordOrigin = offsetof(FsPrimitive, point_coord_origin);
+constexpr uint64_t kPointCoordStep = offsetof(FsPrimitive, point_coord_step);
 
 // Quad lane i is pixel (x + kDx[i], y + kDy[i]) (runtime/backend.h).
 constexpr int kDx[4] = {0, 1, 0, 1};
 constexpr int kDy[4] = {0, 0, 1, 1};
 
-// Whether the colour is written a quad at a time (write_rgba8_quad): RGBA8
-// storage and no late depth test. Blending and the colour mask are
-// generated there only.
-bool writes_rgba8_quads(const PipelineKey& key) {
-    return !key.float_color && key.color_channels > 0 && !(key.depth_test && !key.early_depth);
-}
-
 class PipelineEmitter {
 public:
     // The functions are named glslrun_quad_depth, glslrun_inputs and
     // glslrun_outputs, followed by `suffix`.
-    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const PipelineKey& key,
-                    const PrimitiveLayout& layout, std::string suffix)
-        : module_(module), b_(context), key_(key), layout_(layout), suffix_(std::move(suffix)) {
+    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const State& state, std::string suffix)
+        : module_(module), b_(context), key_(state), ops_(state.ops), suffix_(std::move(suffix)) {
         i8_ = b_.getInt8Ty();
         i32_ = b_.getInt32Ty();
         i64_ = b_.getInt64Ty();
@@ -100,18 +111,25 @@ private:
     // The window depth: its plane is not among nan_inputs(), so always strict.
     llvm::Value* quad_depth(const Quad& q) {
         const bool strict = std::exchange(strict_, true);
-        llvm::Value* z = clamp01(plane(q, layout_.depth));
+        llvm::Value* z = clamp01(plane(q, kDepth));
         strict_ = strict;
         return z;
     }
     Weights weights(const Quad& q);
-    llvm::Value* vertex(const Quad& q, int i, uint32_t field) {
-        return at(q.prim, layout_.vertices + uint64_t(i) * layout_.vertex_size + field);
+    llvm::Value* vertex(const Quad& q, int i, uint64_t field) {
+        return at(q.prim, kVertices + uint64_t(i) * kVertexSize + field);
     }
-    llvm::Value* input(const PipelineInput& in, const Quad& q, const Weights& w);
+    llvm::Value* input(const Input& in, const Quad& q, const Weights& w);
     llvm::Value* nan_inputs(const Quad& q);
     std::array<llvm::Value*, 3> attributes(const Quad& q, uint32_t index);  // of vertices 0, 1, 2
-    llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored);
+    llvm::Value* compare(CompareFunc func, llvm::Value* incoming, llvm::Value* stored);
+    llvm::Value* depth_passes(llvm::Value* incoming, llvm::Value* stored) {
+        return compare(ops_.depth_func, incoming, stored);
+    }
+    llvm::Value* depth_test_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask);
+    llvm::Value* stencil_depth_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask);
+    llvm::Value* stencil_depth_lane(const StencilFace& face, const Quad& q, int i, llvm::Value* z, llvm::Value* mask);
+    llvm::Value* stencil_op(StencilOp op, llvm::Value* value, int ref);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     using QuadBody = std::function<void(llvm::Value* index, const Quad& q)>;
     using PairTest = std::function<llvm::Value*(llvm::Value* index, llvm::Value* next)>;
@@ -130,32 +148,35 @@ private:
     struct QuadValues {
         llvm::Value* z;
         std::array<llvm::Value*, 4> rgba;
+        llvm::Value* alpha;  // colour 0's alpha as the shader wrote it (0: not written)
     };
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
-    void write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit);
+    void write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes);
+    llvm::Value* alpha_passes(const QuadValues& v);
     void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes);
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
     llvm::Value* stored_byte(llvm::Value* c);
     void load_target(llvm::Value* target) {
-        target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, depth)));
-        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(PipelineTarget, color)));
-        target_.width = load_i(target, offsetof(PipelineTarget, width));
-        target_.height = load_i(target, offsetof(PipelineTarget, height));
+        target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
+        target_.stencil = b_.CreateLoad(ptr_, at(target, offsetof(Target, stencil)));
+        target_.color = b_.CreateLoad(ptr_, at(target, offsetof(Target, color)));
+        target_.width = load_i(target, offsetof(Target, width));
+        target_.height = load_i(target, offsetof(Target, height));
     }
 
     llvm::Module& module_;
     llvm::IRBuilder<> b_;
-    const PipelineKey& key_;
-    const PrimitiveLayout& layout_;
+    const State& key_;
+    const FragmentState& ops_;
     std::string suffix_;
     llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
     llvm::FixedVectorType* v4f_;
     // Per function being defined.
     llvm::Function* fn_ = nullptr;
     struct {
-        llvm::Value *depth, *color, *width, *height;
+        llvm::Value *depth, *stencil, *color, *width, *height;
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
@@ -197,8 +218,8 @@ PipelineEmitter::Quad PipelineEmitter::quad(llvm::Value* prim, llvm::ArrayRef<ll
     Quad q{prim, nullptr, nullptr, nullptr, nullptr};
     q.px = b_.CreateAdd(per_quad(x), lanes_i(kDx));
     q.py = b_.CreateAdd(per_quad(y), lanes_i(kDy));
-    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, layout_.ox))), vf());
-    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, layout_.oy))), vf());
+    q.fx = b_.CreateSIToFP(b_.CreateSub(q.px, splat(load_i(prim, kOx))), vf());
+    q.fy = b_.CreateSIToFP(b_.CreateSub(q.py, splat(load_i(prim, kOy))), vf());
     return q;
 }
 
@@ -220,9 +241,9 @@ llvm::Value* PipelineEmitter::plane(const Quad& q, uint64_t offset) {
 // runs where the plain code would do).
 llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
     std::vector<llvm::Value*> terms;
-    for (uint32_t k = 0; k < 9; ++k) terms.push_back(load_f(q.prim, layout_.weights + 4 * k));
-    for (int i = 0; i < 3; ++i) terms.push_back(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w)));
-    for (const PipelineInput& in : key_.inputs)
+    for (uint32_t k = 0; k < 9; ++k) terms.push_back(load_f(q.prim, kWeights + 4 * k));
+    for (int i = 0; i < 3; ++i) terms.push_back(b_.CreateLoad(f32_, vertex(q, i, kVertexInvW)));
+    for (const Input& in : key_.inputs)
         if (in.source == InputSource::Varying)
             for (llvm::Value* a : attributes(q, in.index)) terms.push_back(a);
     while (terms.size() > 1) {  // a tree of sums: NaN when any term is
@@ -237,7 +258,7 @@ llvm::Value* PipelineEmitter::nan_inputs(const Quad& q) {
 std::array<llvm::Value*, 3> PipelineEmitter::attributes(const Quad& q, uint32_t index) {
     std::array<llvm::Value*, 3> a;
     for (int i = 0; i < 3; ++i)
-        a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, layout_.vertex_attrs)), uint64_t(index) * 4);
+        a[size_t(i)] = load_f(b_.CreateLoad(ptr_, vertex(q, i, kVertexAttrs)), uint64_t(index) * 4);
     return a;
 }
 
@@ -252,8 +273,8 @@ llvm::Value* PipelineEmitter::clamp01(llvm::Value* v) {
 // FragmentStage::compute_weights.
 PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
     llvm::Value* l[3];
-    for (int k = 0; k < 3; ++k) l[k] = plane(q, layout_.weights + 12u * uint32_t(k));
-    auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, layout_.vertex_inv_w))); };
+    for (int k = 0; k < 3; ++k) l[k] = plane(q, kWeights + 12u * uint32_t(k));
+    auto inv_w_of = [&](int i) { return splat(b_.CreateLoad(f32_, vertex(q, i, kVertexInvW))); };
     llvm::Value* w1 = mul(l[1], inv_w_of(1));
     llvm::Value* w2 = mul(l[2], inv_w_of(2));
     llvm::Value* inv_w = add(add(mul(l[0], inv_w_of(0)), w1), w2);
@@ -263,7 +284,17 @@ PipelineEmitter::Weights PipelineEmitter::weights(const Quad& q) {
 }
 
 // One input register's four lanes (FragmentStage::interpolate and builtin_input).
-llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, const Weights& w) {
+llvm::Value* PipelineEmitter::input(const Input& in, const Quad& q, const Weights& w) {
+    if (in.sprite_coord) {
+        // FragmentStage::replace_sprite_coord: on points, (gl_PointCoord, 0, 1).
+        Input plain = in;
+        plain.sprite_coord = false;
+        llvm::Value* value = input(plain, q, w);
+        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, kCount), b_.getInt32(1));
+        llvm::Value* sprite = in.component < 2 ? input({InputSource::PointCoord, in.component, ir::Kind::F32}, q, w)
+                                               : splat_f(in.component == 3 ? 1.0f : 0.0f);
+        return b_.CreateSelect(is_point, sprite, value);
+    }
     switch (in.source) {
     case InputSource::Varying: {
         std::array<llvm::Value*, 3> a = attributes(q, in.index);
@@ -279,18 +310,18 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
         default: return w.inv_w;
         }
     case InputSource::FrontFacing: {
-        llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, layout_.front)), b_.getInt8(0));
-        llvm::Value* word = in.is_bool ? b_.CreateZExt(front, i32_)
+        llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, kFront)), b_.getInt8(0));
+        llvm::Value* word = in.kind == ir::Kind::Bool ? b_.CreateZExt(front, i32_)
                                        : b_.CreateSelect(front, llvm::ConstantFP::get(f32_, 1.0),
                                                          llvm::ConstantFP::get(f32_, 0.0));
         return splat(word);
     }
     case InputSource::PointCoord: {
-        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, layout_.count), b_.getInt32(1));
+        llvm::Value* is_point = b_.CreateICmpEQ(load_i(q.prim, kCount), b_.getInt32(1));
         // fma(step, pixel, origin), one rounding (raster/fragments.h).
         const uint32_t component = in.index == 0 ? 0 : 4;
-        llvm::Value* step = splat(load_f(q.prim, layout_.point_coord_step + component));
-        llvm::Value* origin = splat(load_f(q.prim, layout_.point_coord_origin + component));
+        llvm::Value* step = splat(load_f(q.prim, kPointCoordStep + component));
+        llvm::Value* origin = splat(load_f(q.prim, kPointCoordOrigin + component));
         llvm::Value* pixel = b_.CreateSIToFP(in.index == 0 ? q.px : q.py, vf());
         llvm::Value* value = b_.CreateIntrinsic(llvm::Intrinsic::fma, {vf()}, {step, pixel, origin});
         return b_.CreateSelect(is_point, value, splat_f(0.0f));
@@ -300,10 +331,11 @@ llvm::Value* PipelineEmitter::input(const PipelineInput& in, const Quad& q, cons
     return splat_f(0.0f);
 }
 
-// raster::depth_passes on one lane.
-llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* stored) {
-    switch (key_.depth_func) {
-    case CompareFunc::Never: return b_.getFalse();
+// raster::depth_passes with `func`, on scalars or vectors.
+llvm::Value* PipelineEmitter::compare(CompareFunc func, llvm::Value* incoming, llvm::Value* stored) {
+    llvm::Type* result = llvm::CmpInst::makeCmpResultType(incoming->getType());
+    switch (func) {
+    case CompareFunc::Never: return llvm::Constant::getNullValue(result);
     case CompareFunc::Less: return b_.CreateFCmpOLT(incoming, stored);
     case CompareFunc::Equal: return b_.CreateFCmpOEQ(incoming, stored);
     case CompareFunc::Lequal: return b_.CreateFCmpOLE(incoming, stored);
@@ -312,7 +344,7 @@ llvm::Value* PipelineEmitter::depth_passes(llvm::Value* incoming, llvm::Value* s
     case CompareFunc::Gequal: return b_.CreateFCmpOGE(incoming, stored);
     case CompareFunc::Always: break;
     }
-    return b_.getTrue();
+    return llvm::Constant::getAllOnesValue(result);
 }
 
 llvm::Value* PipelineEmitter::pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width) {
@@ -326,7 +358,12 @@ void PipelineEmitter::define_quad_depth() {
     Quad q = quad(fn_->getArg(0), fn_->getArg(1), fn_->getArg(2));
     llvm::Value* z = quad_depth(q);
     load_target(target);
-    llvm::Value* mask = fn_->getArg(3);
+    b_.CreateRet(depth_test_lanes(q, z, fn_->getArg(3)));
+}
+
+// The depth test (and write) of the lanes of a quad in `mask` (i32, bit i:
+// lane i), in lane order, depths `z`; returns those that pass.
+llvm::Value* PipelineEmitter::depth_test_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask) {
     for (int i = 0; i < 4; ++i) {
         llvm::Value* lane = b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0));
         mask = if_then(lane, mask, [&] {
@@ -336,12 +373,12 @@ void PipelineEmitter::define_quad_depth() {
             llvm::Value* stored = b_.CreateLoad(f32_, slot);
             llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
             llvm::Value* passes = depth_passes(zi, stored);
-            if (key_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
+            if (ops_.depth_write) b_.CreateStore(b_.CreateSelect(passes, zi, stored), slot);
             llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
             return b_.CreateAnd(mask, b_.CreateNot(failed));
         });
     }
-    b_.CreateRet(mask);
+    return mask;
 }
 
 // square_depth(prim, ox, oy, pixels, target): define_quad_depth's test on
@@ -360,11 +397,11 @@ void PipelineEmitter::define_square_depth() {
                                                       llvm::ArrayRef<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128});
     // The plane's terms as Quad and plane() take them, eight lanes wide.
     llvm::Value* fx = b_.CreateSIToFP(
-        b_.CreateAdd(b_.CreateVectorSplat(8, b_.CreateSub(ox, load_i(prim, layout_.ox))), columns), v8f);
-    llvm::Value* prim_oy = load_i(prim, layout_.oy);
-    llvm::Value* a = b_.CreateVectorSplat(8, load_f(prim, layout_.depth));
-    llvm::Value* b = b_.CreateVectorSplat(8, load_f(prim, layout_.depth + 4));
-    llvm::Value* c = load_f(prim, layout_.depth + 8);
+        b_.CreateAdd(b_.CreateVectorSplat(8, b_.CreateSub(ox, load_i(prim, kOx))), columns), v8f);
+    llvm::Value* prim_oy = load_i(prim, kOy);
+    llvm::Value* a = b_.CreateVectorSplat(8, load_f(prim, kDepth));
+    llvm::Value* b = b_.CreateVectorSplat(8, load_f(prim, kDepth + 4));
+    llvm::Value* c = load_f(prim, kDepth + 8);
     llvm::Value* cax = b_.CreateSelect(is_nan(c), b_.CreateVectorSplat(8, b_.CreateFAdd(c, c)),
                                        b_.CreateFAdd(b_.CreateVectorSplat(8, c), b_.CreateFMul(a, fx)));
     // Every row, empty ones too: a branch per row on its pixels mispredicted
@@ -383,7 +420,7 @@ void PipelineEmitter::define_square_depth() {
         llvm::Value* passes = depth_passes(z, stored);
         if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
         passes = b_.CreateAnd(passes, in);
-        if (key_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
+        if (ops_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
         llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
         passing = b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
     }
@@ -486,7 +523,7 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
         // primitive for all LLVM knows, which would reload its fields.
         Weights w = weights(q);
         std::vector<llvm::Value*> values;
-        for (const PipelineInput& in : key_.inputs) values.push_back(input(in, q, w));
+        for (const Input& in : key_.inputs) values.push_back(input(in, q, w));
         for (size_t i = 0; i < values.size(); ++i)
             b_.CreateAlignedStore(values[i], b_.CreateInBoundsGEP(i32_, state.regs[i], b_.CreateShl(index, 2)),
                                   llvm::Align(16));
@@ -496,46 +533,147 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
     b_.SetInsertPoint(stored);
 }
 
-// One lane's late depth test and writes (FragmentStage::write_plain), if it
-// is alive; `bit` its bit in the batch.
-void PipelineEmitter::write_lane(const Quad& q, int i, const QuadValues& v, llvm::Value* bit) {
-    llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
-    llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
-    b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bit), b_.getInt64(0)), write, next);
-    b_.SetInsertPoint(write);
-    llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
-                                     b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
-    if (key_.depth_test && !key_.early_depth) {
-        llvm::Value* slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
-        llvm::Value* z = b_.CreateExtractElement(v.z, uint64_t(i));
-        llvm::BasicBlock* pass = llvm::BasicBlock::Create(b_.getContext(), "pass", fn_);
-        b_.CreateCondBr(depth_passes(z, b_.CreateLoad(f32_, slot)), pass, next);
-        b_.SetInsertPoint(pass);
-        if (key_.depth_write) b_.CreateStore(z, slot);
+// raster::stencil_op on an i32 value (0 to 255).
+llvm::Value* PipelineEmitter::stencil_op(StencilOp op, llvm::Value* v, int ref) {
+    constexpr uint32_t kMax = (1u << kStencilBits) - 1;
+    switch (op) {
+    case StencilOp::Keep: return v;
+    case StencilOp::Zero: return b_.getInt32(0);
+    case StencilOp::Replace: return b_.getInt32(uint32_t(std::clamp(ref, 0, int(kMax))));
+    case StencilOp::Incr: {
+        llvm::Value* up = b_.CreateAdd(v, b_.getInt32(1));
+        return b_.CreateSelect(b_.CreateICmpULT(up, b_.getInt32(kMax)), up, b_.getInt32(kMax));
     }
-    b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), bit), written_);
-    if (key_.color_channels > 0) {
-        // One pixel's channels: 4 floats, or 4 bytes.
-        llvm::Type* channel = key_.float_color ? f32_ : i8_;
-        llvm::Value* dst = b_.CreateInBoundsGEP(channel, target_.color, b_.CreateShl(pixel, 2));
-        llvm::Value* texel = llvm::PoisonValue::get(llvm::FixedVectorType::get(channel, 4));
-        for (unsigned k = 0; k < 4; ++k) {
-            llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
-            texel = b_.CreateInsertElement(texel, key_.float_color ? c : b_.CreateTrunc(c, i8_), uint64_t(k));
-        }
-        b_.CreateAlignedStore(texel, dst, llvm::Align(key_.float_color ? 4 : 1));
+    case StencilOp::Decr:
+        return b_.CreateSelect(b_.CreateICmpUGT(v, b_.getInt32(0)), b_.CreateSub(v, b_.getInt32(1)), b_.getInt32(0));
+    case StencilOp::Invert: return b_.CreateAnd(b_.CreateNot(v), b_.getInt32(kMax));
+    case StencilOp::IncrWrap: return b_.CreateAnd(b_.CreateAdd(v, b_.getInt32(1)), b_.getInt32(kMax));
+    case StencilOp::DecrWrap: return b_.CreateAnd(b_.CreateSub(v, b_.getInt32(1)), b_.getInt32(kMax));
     }
-    b_.CreateBr(next);
-    b_.SetInsertPoint(next);
+    return v;
 }
 
-// write_lane() of a quad's live lanes into RGBA8 storage, without a late
-// depth test: the lanes' pixels are distinct, two rows of two, so two
+// The stencil and depth tests of lane i (raster::stencil_depth_test's
+// stencil_depth_one with `face`), if it is in `mask` (i32, bit i: lane i),
+// with their buffer updates; returns `mask` less the lane where it fails.
+llvm::Value* PipelineEmitter::stencil_depth_lane(const StencilFace& face, const Quad& q, int i, llvm::Value* z,
+                                                 llvm::Value* mask) {
+    llvm::Value* lane = b_.CreateICmpNE(b_.CreateAnd(mask, b_.getInt32(1u << i)), b_.getInt32(0));
+    return if_then(lane, mask, [&] {
+        llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
+                                         b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
+        llvm::Value* slot = b_.CreateInBoundsGEP(i8_, target_.stencil, pixel);
+        llvm::Value* stored = b_.CreateZExt(b_.CreateLoad(i8_, slot), i32_);
+        // The new stencil value after `op`, through the write mask.
+        auto updated = [&](StencilOp op) {
+            llvm::Value* v = stencil_op(op, stored, face.ref);
+            return b_.CreateOr(b_.CreateAnd(stored, b_.getInt32(~face.write_mask)),
+                               b_.CreateAnd(v, b_.getInt32(face.write_mask)));
+        };
+        // Bytes compare exactly as floats: raster compares them with depth_passes.
+        const uint32_t ref = uint32_t(std::clamp(face.ref, 0, int((1u << kStencilBits) - 1)));
+        llvm::Value* stencil_passes =
+            compare(face.func, llvm::ConstantFP::get(f32_, float(ref & face.value_mask)),
+                    b_.CreateUIToFP(b_.CreateAnd(stored, b_.getInt32(face.value_mask)), f32_));
+        llvm::Value* depth_passes_here = b_.getTrue();
+        llvm::Value* depth_slot = nullptr;
+        llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
+        if (ops_.depth_test) {
+            depth_slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
+            depth_passes_here = depth_passes(zi, b_.CreateLoad(f32_, depth_slot));
+        }
+        llvm::Value* value = b_.CreateSelect(stencil_passes,
+                                             b_.CreateSelect(depth_passes_here, updated(face.depth_pass),
+                                                             updated(face.depth_fail)),
+                                             updated(face.fail));
+        b_.CreateStore(b_.CreateTrunc(value, i8_), slot);
+        llvm::Value* passes = b_.CreateAnd(stencil_passes, depth_passes_here);
+        if (ops_.depth_test && ops_.depth_write) {
+            llvm::Value* old = b_.CreateLoad(f32_, depth_slot);
+            b_.CreateStore(b_.CreateSelect(passes, zi, old), depth_slot);
+        }
+        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+        return b_.CreateAnd(mask, b_.CreateNot(failed));
+    });
+}
+
+// The stencil and depth tests of a quad's lanes in lane order, with the
+// front or back face's state as its primitive faces.
+llvm::Value* PipelineEmitter::stencil_depth_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask) {
+    auto lanes = [&](const StencilFace& face) {
+        llvm::Value* m = mask;
+        for (int i = 0; i < 4; ++i) m = stencil_depth_lane(face, q, i, z, m);
+        return m;
+    };
+    if (ops_.stencil[0] == ops_.stencil[1]) return lanes(ops_.stencil[0]);
+    llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(q.prim, kFront)), b_.getInt8(0));
+    llvm::BasicBlock* back_block = llvm::BasicBlock::Create(b_.getContext(), "back_face", fn_);
+    llvm::BasicBlock* front_block = llvm::BasicBlock::Create(b_.getContext(), "front_face", fn_);
+    llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "stencil_tested", fn_);
+    b_.CreateCondBr(front, front_block, back_block);
+    b_.SetInsertPoint(front_block);
+    llvm::Value* front_mask = lanes(ops_.stencil[0]);
+    llvm::BasicBlock* front_end = b_.GetInsertBlock();
+    b_.CreateBr(tested);
+    b_.SetInsertPoint(back_block);
+    llvm::Value* back_mask = lanes(ops_.stencil[1]);
+    llvm::BasicBlock* back_end = b_.GetInsertBlock();
+    b_.CreateBr(tested);
+    b_.SetInsertPoint(tested);
+    llvm::PHINode* merged = b_.CreatePHI(i32_, 2);
+    merged->addIncoming(front_mask, front_end);
+    merged->addIncoming(back_mask, back_end);
+    return merged;
+}
+
+// The float colour of a quad's lanes in `lanes` (i32, bit i: lane i),
+// the channels of the colour mask (raster's write_float, unblended).
+void PipelineEmitter::write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
+    const bool all = ops_.color_mask == std::array<bool, 4>{true, true, true, true};
+    for (int i = 0; i < 4; ++i) {
+        llvm::BasicBlock* write = llvm::BasicBlock::Create(b_.getContext(), "write", fn_);
+        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next", fn_);
+        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(lanes, b_.getInt32(1u << i)), b_.getInt32(0)), write, next);
+        b_.SetInsertPoint(write);
+        llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(i)),
+                                         b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
+        llvm::Value* dst = b_.CreateInBoundsGEP(f32_, target_.color, b_.CreateShl(pixel, 2));
+        llvm::Value* texel = llvm::PoisonValue::get(v4f_);
+        for (unsigned k = 0; k < 4; ++k) {
+            llvm::Value* c = b_.CreateExtractElement(v.rgba[k], uint64_t(i));
+            texel = b_.CreateInsertElement(texel, c, uint64_t(k));
+            if (!all && ops_.color_mask[k]) b_.CreateStore(c, b_.CreateConstInBoundsGEP1_64(f32_, dst, k));
+        }
+        if (all) b_.CreateAlignedStore(texel, dst, llvm::Align(4));
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+    }
+}
+
+// The alpha test (raster::alpha_test) of a quad's lanes: a mask (i32, bit
+// i: lane i) of those that pass. RGBA8 storage compares the bytes alpha
+// and the reference would be stored as.
+llvm::Value* PipelineEmitter::alpha_passes(const QuadValues& v) {
+    llvm::Value* a = v.alpha;
+    float ref = ops_.alpha_ref;
+    if (!ops_.float_color) {
+        constexpr float kRound = 8388608.0f;
+        a = b_.CreateSelect(b_.CreateFCmpOGT(a, splat_f(0.0f)), a, splat_f(0.0f));
+        a = b_.CreateSelect(b_.CreateFCmpOLT(a, splat_f(1.0f)), a, splat_f(1.0f));
+        a = b_.CreateFSub(b_.CreateFAdd(b_.CreateFMul(a, splat_f(255.0f)), splat_f(kRound)), splat_f(kRound));
+        ref = unorm8_steps(ref);
+    }
+    llvm::Value* passes = compare(ops_.alpha_func, a, splat_f(ref));
+    return b_.CreateZExt(b_.CreateBitCast(passes, b_.getIntNTy(4)), i32_);
+}
+
+// A quad's live lanes into RGBA8 storage: the lanes' pixels are distinct, two rows of two, so two
 // masked stores of two pixels each write the same bytes. No branch on the
 // lanes: a quad's live lanes vary, and branches on them mispredicted (perf).
+// `lanes`: i32, bit i: lane i.
 void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
-    llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, b_.CreateTrunc(lanes, i32_)),
+    llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, lanes),
                                                      llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{1, 2, 4, 8})),
                                         llvm::Constant::getNullValue(v4i));
     llvm::Value* pixel = pixel_index(b_.CreateExtractElement(q.px, uint64_t(0)),
@@ -552,7 +690,7 @@ void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm:
     };
     llvm::Value* lower_slot = b_.CreateGEP(i32_, target_.color, pixel);
     llvm::Value* upper_slot = b_.CreateGEP(i32_, target_.color, above);
-    if (key_.color_ops.reads_color()) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
+    if (reads_color(key_)) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
     llvm::Value* words = pack_rgba8(v.rgba);
     llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1});
     llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3, 2, 3});
@@ -588,7 +726,7 @@ void PipelineEmitter::read_modify_write_quad(const Quad& q, const QuadValues& v,
         std::array<llvm::Value*, 4> dst;
         for (unsigned k = 0; k < 4; ++k)
             dst[k] = b_.CreateAnd(b_.CreateLShr(stored, llvm::ConstantInt::get(v4i, 8 * k)), llvm::ConstantInt::get(v4i, 255));
-        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, key_.color_ops, key_.gpu_rounding, v.rgba, dst)), stored);
+        return b_.CreateSelect(live, pack_rgba8(emit_blend_and_mask(b_, ops_, v.rgba, dst)), stored);
     };
     llvm::Value* x = b_.CreateExtractElement(q.px, uint64_t(0));
     llvm::Value* y = b_.CreateExtractElement(q.py, uint64_t(0));
@@ -639,18 +777,19 @@ PipelineEmitter::QuadValues PipelineEmitter::quad_values(const Quad& q, const st
     }
     for (uint32_t k = 0; k < 4; ++k) {
         llvm::Value* c = k < key_.color_channels ? lanes(k) : splat_f(0.0f);
-        v.rgba[k] = key_.float_color ? c : stored_byte(c);
+        if (k == 3) v.alpha = c;
+        v.rgba[k] = ops_.float_color ? c : stored_byte(c);
     }
     return v;
 }
 
 // A channel's RGBA8 byte as a 32-bit integer: raster::to_unorm8's steps, or
-// raster::gpu_unorm8's with PipelineKey::gpu_rounding.
+// raster::gpu_unorm8's with ColorRounding::Gpu.
 llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
     c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
     c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
-    if (key_.gpu_rounding) {
+    if (ops_.rounding == ColorRounding::Gpu) {
         llvm::Value* t = b_.CreateFPToSI(b_.CreateFMul(c, splat_f(4096.0f)), v4i);
         llvm::Value* sum = b_.CreateAdd(b_.CreateMul(t, llvm::ConstantInt::get(v4i, 510)), llvm::ConstantInt::get(v4i, 4095));
         return b_.CreateAShr(sum, llvm::ConstantInt::get(v4i, 13));
@@ -660,8 +799,10 @@ llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
     return b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), v4i);
 }
 
-// outputs(batch, regs, alive, target): FragmentStage::write_outputs on the
-// fast path, in lane order.
+// outputs(batch, regs, alive, target): FragmentStage::write_outputs, quad
+// by quad in lane order: the alpha test, the late depth test and write, then
+// the colour write. A quad's depth tests before its colour write: the
+// buffers are apart, and its pixels distinct.
 void PipelineEmitter::define_outputs() {
     begin("glslrun_outputs", i64_, {ptr_, ptr_, i64_, ptr_});
     std::vector<llvm::Value*> regs;
@@ -670,49 +811,54 @@ void PipelineEmitter::define_outputs() {
     load_target(fn_->getArg(3));
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
-    const bool rgba8_only = writes_rgba8_quads(key_);
+    const bool late_depth = ops_.depth_test && !key_.early_depth;
+    const bool rgba8 = !ops_.float_color && key_.color_channels > 0;
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
-        llvm::Value* first = b_.CreateShl(b_.getInt64(1), b_.CreateShl(index, 2));
-        if (rgba8_only) {
-            // Every quad, its dead lanes masked: no branch.
-            llvm::Value* lanes = b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), b_.CreateShl(index, 2)), b_.getInt64(0xF));
-            write_rgba8_quad(q, quad_values(q, regs, index), lanes);
-            b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(lanes, b_.CreateShl(index, 2))),
-                           written_);
-            return;
+        llvm::Value* shift = b_.CreateShl(index, 2);
+        llvm::Value* lanes = b_.CreateTrunc(b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), shift), b_.getInt64(0xF)), i32_);
+        // RGBA8 quads without a late depth test: every quad, its dead lanes
+        // masked, no branch; the others only where a lane lives.
+        llvm::BasicBlock* next = nullptr;
+        if (late_depth || !rgba8) {
+            llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
+            next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
+            b_.CreateCondBr(b_.CreateICmpNE(lanes, b_.getInt32(0)), body, next);
+            b_.SetInsertPoint(body);
         }
-        llvm::BasicBlock* body = llvm::BasicBlock::Create(b_.getContext(), "alive", fn_);
-        llvm::BasicBlock* next = llvm::BasicBlock::Create(b_.getContext(), "next_quad", fn_);
-        llvm::Value* bits = b_.CreateMul(first, b_.getInt64(0xF));
-        b_.CreateCondBr(b_.CreateICmpNE(b_.CreateAnd(fn_->getArg(2), bits), b_.getInt64(0)), body, next);
-        b_.SetInsertPoint(body);
         QuadValues v = quad_values(q, regs, index);
-        for (int i = 0; i < 4; ++i) write_lane(q, i, v, b_.CreateShl(first, uint64_t(i)));
-        b_.CreateBr(next);
-        b_.SetInsertPoint(next);
+        if (ops_.alpha_test) lanes = b_.CreateAnd(lanes, alpha_passes(v));
+        if (ops_.stencil_test) lanes = stencil_depth_lanes(q, v.z, lanes);
+        else if (late_depth) lanes = depth_test_lanes(q, v.z, lanes);
+        b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(b_.CreateZExt(lanes, i64_), shift)),
+                       written_);
+        if (rgba8) write_rgba8_quad(q, v, lanes);
+        else if (key_.color_channels > 0) write_float_lanes(q, v, lanes);
+        if (next) {
+            b_.CreateBr(next);
+            b_.SetInsertPoint(next);
+        }
     });
     b_.CreateRet(b_.CreateLoad(i64_, written_));
 }
 
 // The pipeline's code in the process's LLJIT (engine.h), removed with it.
-class CompiledPipeline final : public FragmentPipeline {
+class CompiledPipeline final : public Pipeline {
 public:
     EngineCode code;
 };
 
 }  // namespace
 
-std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const PrimitiveLayout& layout,
-                                                   double* seconds) {
-    const double start = thread_cpu_seconds();
-    if (key.color_ops.reads_color() && !writes_rgba8_quads(key)) return nullptr;  // not generated
+std::unique_ptr<Pipeline> compile(const State& key, double* seconds) {
+    const double start = rt::jit::thread_cpu_seconds();
+    if (!fusable(key)) return nullptr;
     Engine* engine = Engine::of(key.avx2, false);
     if (!engine) return nullptr;
     auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);
     Engine::NewModule made = engine->new_module("pipeline");
     {
-        PipelineEmitter emitter(*made.context, *made.module, key, layout, made.suffix);
+        PipelineEmitter emitter(*made.context, *made.module, key, made.suffix);
         if (key.early_depth) {
             emitter.define_quad_depth();
             emitter.define_square_depth();
@@ -721,19 +867,18 @@ std::unique_ptr<FragmentPipeline> compile_pipeline(const PipelineKey& key, const
         emitter.define_outputs();
     }
     if (llvm::verifyModule(*made.module, &llvm::errs())) return nullptr;
-    optimise(*made.module, *engine->machine);
+    rt::jit::optimise(*made.module, *engine->machine);
     if (!code->code.add(*engine, std::move(made))) return nullptr;
     if (key.early_depth) {
-        code->quad_depth = reinterpret_cast<FragmentPipeline::QuadDepthFn>(code->code.lookup("glslrun_quad_depth"));
-        code->square_depth =
-            reinterpret_cast<FragmentPipeline::SquareDepthFn>(code->code.lookup("glslrun_square_depth"));
+        code->quad_depth = reinterpret_cast<Pipeline::QuadDepthFn>(code->code.lookup("glslrun_quad_depth"));
+        code->square_depth = reinterpret_cast<Pipeline::SquareDepthFn>(code->code.lookup("glslrun_square_depth"));
     }
-    code->inputs = reinterpret_cast<FragmentPipeline::InputsFn>(code->code.lookup("glslrun_inputs"));
-    code->outputs = reinterpret_cast<FragmentPipeline::OutputsFn>(code->code.lookup("glslrun_outputs"));
+    code->inputs = reinterpret_cast<Pipeline::InputsFn>(code->code.lookup("glslrun_inputs"));
+    code->outputs = reinterpret_cast<Pipeline::OutputsFn>(code->code.lookup("glslrun_outputs"));
     if (!code->inputs || !code->outputs || (key.early_depth && (!code->quad_depth || !code->square_depth)))
         return nullptr;
-    if (seconds) *seconds = thread_cpu_seconds() - start;
+    if (seconds) *seconds = rt::jit::thread_cpu_seconds() - start;
     return code;
 }
 
-}  // namespace glslrun::rt::jit
+}  // namespace glslrun::raster::fused

@@ -1,12 +1,19 @@
-// Blending and the colour mask as generated vector code (runtime/jit/blend.h).
-#include "runtime/jit/blend.h"
+// Blending and the colour mask as generated vector code (raster/fused/gen/blend.h).
+#include "raster/fused/gen/blend.h"
 
-namespace glslrun::rt::jit {
+#include "raster/framebuffer.h"
 
-std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const ColorOps& o, bool gpu_rounding,
+namespace glslrun::raster::fused {
+
+std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, const FragmentState& o,
                                                 const std::array<llvm::Value*, 4>& src,
                                                 const std::array<llvm::Value*, 4>& dst) {
     auto* v4i = llvm::FixedVectorType::get(builder.getInt32Ty(), 4);
+    const bool gpu_rounding = o.rounding == ColorRounding::Gpu;
+    const BlendState& s = o.blend_state;
+    // The blend colour as the bytes resolve_blend makes of it.
+    std::array<uint32_t, 4> constant8;
+    for (size_t k = 0; k < 4; ++k) constant8[k] = to_unorm8(s.color[int(k)], o.rounding);
     auto constant = [&](uint32_t c) { return llvm::ConstantInt::get(v4i, c); };
     auto inv = [&](llvm::Value* x) { return builder.CreateSub(constant(255), x); };
     auto umin = [&](llvm::Value* x, llvm::Value* y) { return builder.CreateSelect(builder.CreateICmpULT(x, y), x, y); };
@@ -24,13 +31,36 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
         case BlendFactor::OneMinusSrcAlpha: return inv(src[3]);
         case BlendFactor::DstAlpha: return dst[3];
         case BlendFactor::OneMinusDstAlpha: return inv(dst[3]);
-        case BlendFactor::ConstantColor: return constant(o.constant[k]);
-        case BlendFactor::OneMinusConstantColor: return constant(255u - o.constant[k]);
-        case BlendFactor::ConstantAlpha: return constant(o.constant[3]);
-        case BlendFactor::OneMinusConstantAlpha: return constant(255u - o.constant[3]);
+        case BlendFactor::ConstantColor: return constant(constant8[k]);
+        case BlendFactor::OneMinusConstantColor: return constant(255u - constant8[k]);
+        case BlendFactor::ConstantAlpha: return constant(constant8[3]);
+        case BlendFactor::OneMinusConstantAlpha: return constant(255u - constant8[3]);
         case BlendFactor::SrcAlphaSaturate: return k == 3 ? constant(255) : umin(src[3], inv(dst[3]));
         }
         return constant(0);
+    };
+    // raster::logic_op (§4.1.10) on bytes; the caller keeps the low 8 bits.
+    auto logic = [&](LogicOp op, llvm::Value* s8, llvm::Value* d8) -> llvm::Value* {
+        auto no = [&](llvm::Value* x) { return builder.CreateNot(x); };
+        switch (op) {
+        case LogicOp::Clear: return constant(0);
+        case LogicOp::And: return builder.CreateAnd(s8, d8);
+        case LogicOp::AndReverse: return builder.CreateAnd(s8, no(d8));
+        case LogicOp::Copy: return s8;
+        case LogicOp::AndInverted: return builder.CreateAnd(no(s8), d8);
+        case LogicOp::Noop: return d8;
+        case LogicOp::Xor: return builder.CreateXor(s8, d8);
+        case LogicOp::Or: return builder.CreateOr(s8, d8);
+        case LogicOp::Nor: return no(builder.CreateOr(s8, d8));
+        case LogicOp::Equiv: return no(builder.CreateXor(s8, d8));
+        case LogicOp::Invert: return no(d8);
+        case LogicOp::OrReverse: return builder.CreateOr(s8, no(d8));
+        case LogicOp::CopyInverted: return no(s8);
+        case LogicOp::OrInverted: return builder.CreateOr(no(s8), d8);
+        case LogicOp::Nand: return no(builder.CreateAnd(s8, d8));
+        case LogicOp::Set: return constant(255);
+        }
+        return s8;
     };
     // mul_unorm8's (x * f * 2 + 255) / 510, the product rounded to n/255, as
     // (t + (t >> 8)) >> 8 with t = x * f + 128: equal for every x and f in
@@ -52,11 +82,13 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
     std::array<llvm::Value*, 4> out;
     for (size_t k = 0; k < 4; ++k) {
         out[k] = src[k];
-        if (o.blend) {
+        if (o.logic_op) {
+            out[k] = builder.CreateAnd(logic(o.logic, src[k], dst[k]), constant(255));
+        } else if (o.blend) {
             const bool alpha = k == 3;
-            const BlendEquation eq = alpha ? o.equation_alpha : o.equation_rgb;
-            llvm::Value* a = product(src[k], factor(alpha ? o.src_alpha : o.src_rgb, k));
-            llvm::Value* b = product(dst[k], factor(alpha ? o.dst_alpha : o.dst_rgb, k));
+            const BlendEquation eq = alpha ? s.equation_alpha : s.equation_rgb;
+            llvm::Value* a = product(src[k], factor(alpha ? s.src_alpha : s.src_rgb, k));
+            llvm::Value* b = product(dst[k], factor(alpha ? s.dst_alpha : s.dst_rgb, k));
             switch (eq) {
             case BlendEquation::Add: out[k] = umin(builder.CreateAdd(a, b), constant(one)); break;
             case BlendEquation::Subtract: out[k] = builder.CreateSelect(builder.CreateICmpUGT(a, b), builder.CreateSub(a, b), constant(0)); break;
@@ -66,9 +98,9 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
             }
             if (gpu_rounding && eq != BlendEquation::Min && eq != BlendEquation::Max) out[k] = stored(out[k]);
         }
-        if (!o.mask[k]) out[k] = dst[k];
+        if (!o.color_mask[k]) out[k] = dst[k];
     }
     return out;
 }
 
-}  // namespace glslrun::rt::jit
+}  // namespace glslrun::raster::fused

@@ -1,0 +1,122 @@
+// The fused fragment pipeline: per (program, fragment draw state), native
+// code made by the JIT for the per-lane work around the fragment shader, as
+// llvmpipe's fragment functions do it: depth from the plane equation and the
+// early depth test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
+// (perspective-correct interpolation from the plane equations,
+// gl_FragCoord, gl_FrontFacing, gl_PointCoord); after the shader, the late
+// depth test, the depth write, the colour conversion and the colour write
+// in lane order. The shader body between them is the program's compiled
+// shader (runtime/backend.h), run by the fragment stage's executor.
+// The emitter is raster/fused/gen/emit.cpp.
+//
+// Why three functions and not one: the shader runs with denormals flushed
+// (ir::FlushDenormals) and the plumbing around it, like the C++ path it
+// replaces (raster/fragments.cpp), does not; the MXCSR switch stays in C++.
+//
+// The generated code computes the C++ path's bits: the same float operations
+// in the same order, no FMA, the same clamps and NaN handling. It reads
+// raster's own types (FsPrimitive, FragmentState) where offsetof puts them;
+// runtime/jit/ is the LLVM toolkit it is built with. Which states it takes
+// is decided in one place, fusable() (raster/fused/state.h).
+#pragma once
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "glslrun/glslrun.h"
+#include "raster/fused/state.h"
+#include "runtime/backend.h"
+
+namespace glslrun::raster::fused {
+
+using rt::kLanes;
+using rt::LaneMask;
+
+// The queued quads of a batch: quad q is lanes 4q..4q+3 at (x[q], y[q]) of
+// primitive prim[q].
+struct QuadBatch {
+    const void* prim[kLanes / 4];
+    int32_t x[kLanes / 4], y[kLanes / 4];
+    int32_t quads = 0;
+};
+
+// The buffers written, rows bottom up: depth, and colour 0 (RGBA: 4 bytes a
+// pixel, or 4 floats with FragmentState::float_color).
+struct Target {
+    float* depth = nullptr;
+    uint8_t* stencil = nullptr;
+    void* color = nullptr;
+    int32_t width = 0, height = 0;
+};
+
+// The fragment functions of one State.
+struct Pipeline {
+    // The early depth test (and write) of one quad's lanes in `mask`; returns those that pass.
+    using QuadDepthFn = uint32_t (*)(const void* prim, int32_t x, int32_t y, uint32_t mask, const Target* t);
+    // The same test on the pixels of the 8x8 square at (ox, oy) in `pixels`
+    // (bit j * 8 + i: pixel (ox + i, oy + j)), which must lie in the buffer;
+    // returns those that pass.
+    using SquareDepthFn = uint64_t (*)(const void* prim, int32_t ox, int32_t oy, uint64_t pixels,
+                                       const Target* t);
+    // Writes the inputs: regs[i] is the register of State::inputs[i].
+    using InputsFn = void (*)(const QuadBatch* batch, uint32_t* const* regs);
+    // The per-fragment operations of the lanes of `alive` in lane order;
+    // regs: the colour output's registers (color_channels of them), then
+    // gl_FragDepth's. Returns the lanes written.
+    using OutputsFn = LaneMask (*)(const QuadBatch* batch, const uint32_t* const* regs, LaneMask alive,
+                                   const Target* t);
+    virtual ~Pipeline() = default;
+    QuadDepthFn quad_depth = nullptr;  // null unless State::early_depth
+    SquareDepthFn square_depth = nullptr;  // null unless State::early_depth
+    InputsFn inputs = nullptr;
+    OutputsFn outputs = nullptr;
+};
+
+// A program's draws take the fused pipeline once it has shaded this many
+// fragments without it: a pipeline costs 8 to 15 ms of LLVM's time (thread
+// CPU, docs/performance.md), which it saves back over about a million
+// fragments (the 1080p spot frame: 400,000 fragments, 2 ms saved). Piglit's
+// programs, which draw a few small rectangles each, never compile one.
+inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
+
+// The pipelines of one Program, by key, compiled once and shared by its
+// workers and later draws. Without `wait`, null until a compile queued on
+// the process's compile thread (runtime/compile_queue.h) is done.
+class Cache : public std::enable_shared_from_this<Cache> {
+public:
+    Cache() = default;
+    Cache(const Cache&) = delete;
+    Cache& operator=(const Cache&) = delete;
+    ~Cache() = default;  // waits for nothing: queued compiles find it gone
+
+    // Null where the JIT is not built in or declined the key, and until the
+    // program has shaded kPipelineAfterFragments fragments without one.
+    const Pipeline* get(const State& state, bool wait);
+    // Counts fragments the program shaded without a pipeline.
+    void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
+    // Seconds LLVM spent on this program's pipelines so far.
+    double compile_seconds() const;
+
+private:
+    mutable std::mutex mutex_;
+    // By state_key().
+    std::map<std::string, std::unique_ptr<Pipeline>> pipelines_;
+    std::map<std::string, bool> done_;  // compiled (the pipeline may still be null: declined)
+    // Stores a compile's result (under the lock); leaves `code` where the key has one.
+    void store(const std::string& key, std::unique_ptr<Pipeline>& code, double seconds);
+    double compile_seconds_ = 0;
+    std::atomic<uint64_t> unfused_{0};
+};
+
+// The generated functions of `state`, which must be fusable(); null where
+// LLVM failed or the JIT is not built in. *seconds (may be null): LLVM's
+// time (thread CPU). (raster/fused/gen/emit.cpp, in the JIT plugin: Cache::get
+// calls it through rt::jit_plugin().)
+std::unique_ptr<Pipeline> compile(const State& state, double* seconds);
+
+}  // namespace glslrun::raster::fused
