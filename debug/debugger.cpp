@@ -402,7 +402,7 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
     probe.scene_programs = std::move(*programs);
     probe.passes.clear();
     for (size_t i = 0; i < probe.scene_programs->size(); ++i) {
-        PassProbe::PassPrograms p{&probe.scene_programs->of_pass(i), &debug, "", program_name, true, height};
+        PassProbe::PassPrograms p{&probe.scene_programs->of_pass(i), &debug, "", program_name, true, height, ""};
         if (!scene.passes.empty()) {
             const scene::Pass& pass = scene.passes[i];
             p.name = pass.name;

@@ -18,7 +18,7 @@
 #include "debug/debugger.h"
 #include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
-#include "runtime/fragment_pipeline.h"
+#include "raster/fused/pipeline.h"
 #include "runtime/program_state.h"
 
 using namespace glslrun;
@@ -59,14 +59,14 @@ Program compile(const Case& c, Backend backend, Precision precision) {
 
 // The scene rendered as glslrun renders it, on two threads; on the JIT with
 // the fused pipeline wherever the draw state allows it (its programs count
-// as warmed up: rt::kPipelineAfterFragments).
+// as warmed up: raster::fused::kPipelineAfterFragments).
 Framebuffer render(Program& program, const scene::Scene& scene, Backend backend, uint64_t& fused) {
     program.exec.threads = 2;
     auto programs = scene::ScenePrograms::compile(program, scene);
     REQUIRE(programs);
     if (backend == Backend::Jit)
         for (size_t i = 0; i < programs->size(); ++i)
-            state_of(programs->of_pass(i)).pipelines->count_unfused(rt::kPipelineAfterFragments);
+            state_of(programs->of_pass(i)).pipelines->count_unfused(raster::fused::kPipelineAfterFragments);
     Framebuffer fb(scene.width, scene.height, false, scene::color_buffers(scene));
     auto stats = scene::render_scene(*programs, scene, fb);
     REQUIRE(stats);
