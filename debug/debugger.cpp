@@ -132,7 +132,7 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
         recorder.trace.truncated = true;
         recorder.trace.stopped = error.message;
     }
-    steps_left -= std::min(steps_left, recorder.trace.steps.size());
+    steps_left -= std::min(steps_left, recorder.cost());
     return std::move(recorder.trace);
 }
 
@@ -402,7 +402,7 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
     probe.scene_programs = std::move(*programs);
     probe.passes.clear();
     for (size_t i = 0; i < probe.scene_programs->size(); ++i) {
-        PassProbe::PassPrograms p{&probe.scene_programs->of_pass(i), &debug, "", program_name, true, height};
+        PassProbe::PassPrograms p{&probe.scene_programs->of_pass(i), &debug, "", program_name, true, height, ""};
         if (!scene.passes.empty()) {
             const scene::Pass& pass = scene.passes[i];
             p.name = pass.name;

@@ -128,13 +128,14 @@ void LaneRecorder::lookup(const ir::Node& n, const rt::LaneReader& regs) {
     s.source = n.loc.source;
     s.line = uint32_t(n.loc.line);
     s.lookup = uint32_t(trace.lookups.size());
-    if (trace.steps.size() >= max_steps_) return add(std::move(s));  // marks the trace truncated
+    if (cost() >= max_steps_) return add(std::move(s));  // marks the trace truncated
     trace.lookups.push_back(std::move(t));
     add(std::move(s));
+    extra_ += kLookupExtra;
 }
 
 void LaneRecorder::add(TraceStep step) {
-    if (trace.steps.size() >= max_steps_) {
+    if (cost() >= max_steps_) {
         trace.truncated = true;
         return;
     }

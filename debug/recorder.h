@@ -53,6 +53,10 @@ public:
     void leave(const ir::Node& n) override;
     // Ends the trace: the last assignments, the uniforms read.
     void finish(const rt::LaneReader* regs);
+    // The steps recorded, a texture lookup counting as 1 + kLookupExtra
+    // (its texels take about three steps' memory): what the step limits count.
+    size_t cost() const { return trace.steps.size() + extra_; }
+    static constexpr size_t kLookupExtra = 2;
     InvocationTrace trace;
 
 private:
@@ -67,6 +71,7 @@ private:
     int lane_;
     size_t max_steps_;
     const GLState::TextureUnit* textures_;
+    size_t extra_ = 0;
     int depth_ = 0;
     ir::SourceLoc last_{};
     std::vector<const ir::Variable*> dirty_;

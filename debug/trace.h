@@ -83,6 +83,7 @@ struct InvocationTrace {
     bool truncated = false;  // more steps than recorded (kMaxSteps, kMaxTraceSteps), or the run stopped early
     std::string stopped;     // why the run stopped early (a limit of debug.exec, its cancel flag), if it did
     static constexpr size_t kMaxSteps = 200000;
+    // A texture lookup counts as three steps (LaneRecorder::cost).
     // All invocations of one trace together (a step takes about 225 bytes):
     // 20 fragments at a pixel, each a long loop, took 900 MB without it.
     static constexpr size_t kMaxTraceSteps = 1000000;

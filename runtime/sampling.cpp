@@ -2,6 +2,9 @@
 // at a time; the rules themselves are in sampling_rules.h.
 #include "runtime/sampling.h"
 
+#include <algorithm>
+#include <tuple>
+
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt {
@@ -63,6 +66,14 @@ LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup) {
     float lod = lookup.lod;
     if (lookup.implicit && d.lod_used) lod = lookup.bias ? d.lod_implicit + lookup.lod : d.lod_implicit;
     const glm::vec4 v = sample_complete(*texture, lookup.coord, lookup.ref, lod, Recorder{d});
+    // The filters fetch in the order the compiler evaluates their operands
+    // (GCC and clang differ): each level's texels are listed sorted instead.
+    std::stable_sort(d.texels.begin(), d.texels.end(), [&](const LookupTexel& a, const LookupTexel& b) {
+        auto level_at = [&](int level) {
+            return std::find_if(d.levels.begin(), d.levels.end(), [&](const LookupLevel& l) { return l.level == level; });
+        };
+        return std::tuple(level_at(a.level), a.k, a.j, a.i) < std::tuple(level_at(b.level), b.k, b.j, b.i);
+    });
     for (int c = 0; c < 4; ++c) d.result[c] = canonical_nan(v[c]);
     return d;
 }

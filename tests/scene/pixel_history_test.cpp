@@ -1,6 +1,7 @@
 // The pixel history (debug::pixel_history): on every scene in scenes/, the
 // last fragment's "after" at 20 random covered pixels is the rendered pixel,
-// bit for bit (colour, depth and stencil), on both backends; the JIT's
+// bit for bit (colour, depth and stencil), on both backends (and Fast's GPU
+// rounding on the JIT); the JIT's
 // reference render takes the fused fragment pipeline where the draw's state
 // allows it, while the history's render runs the C++ per-fragment path with
 // the probe.
@@ -47,11 +48,12 @@ constexpr Case kCases[] = {
     {"textured_pix", "textured"},       {"two_side", "two_side"},
 };
 
-Program compile(const Case& c, Backend backend) {
+Program compile(const Case& c, Backend backend, Precision precision) {
     auto p = Program::compile({shader(fmt::format("shaders/{}.vert", c.program))},
                               {shader(fmt::format("shaders/{}.frag", c.program))});
     REQUIRE(p);
     p->exec.backend = backend;
+    p->exec.precision = precision;
     return std::move(*p);
 }
 
@@ -76,12 +78,16 @@ Framebuffer render(Program& program, const scene::Scene& scene, Backend backend,
 
 TEST_CASE("the pixel history's last 'after' is the rendered pixel on every scene, both backends", "[debug][history]") {
     uint64_t fused = 0;
-    for (Backend backend : {Backend::Interp, Backend::Jit})
+    // Fast stores RGBA8 with the GPU's rounding (ColorRounding::Gpu): on the JIT too.
+    const std::pair<Backend, Precision> kRuns[] = {
+        {Backend::Interp, Precision::Precise}, {Backend::Jit, Precision::Precise}, {Backend::Jit, Precision::Fast}};
+    for (auto [backend, precision] : kRuns)
         for (const Case& c : kCases) {
-            INFO(c.program << " on " << c.scene << ", backend " << backend_name(backend));
+            INFO(c.program << " on " << c.scene << ", backend " << backend_name(backend) << ", precision "
+                           << int(precision));
             auto scene = scene::load_scene(kRoot + "/scenes/" + c.scene + ".toml");
             REQUIRE(scene);
-            Program program = compile(c, backend);
+            Program program = compile(c, backend, precision);
             const Framebuffer expected = render(program, *scene, backend, fused);
             // 400 random pixels, fixed seed; the first 20 covered ones count.
             std::mt19937 random(20261128);
