@@ -332,6 +332,7 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
     UniformTable uniforms;
     StageLowering vlow(ir::Stage::Vertex, uniforms, diags, units[0].first_file());
     StageLowering flow(ir::Stage::Fragment, uniforms, diags, units[1].first_file());
+    vlow.check_undefined = flow.check_undefined = options.check_undefined;
     for (int stage = 0; stage < 2; ++stage)
         for (const ShaderSource& source : units[stage].sources)
             (stage == 0 ? vlow : flow).shader.sources.push_back(source.name.empty() ? "(fixed function)" : source.name);

@@ -13,6 +13,7 @@
 
 #include "glslrun/glslrun.h"
 #include "ir/ir.h"
+#include "ir/undefined.h"
 
 namespace glslrun::frontend {
 
@@ -95,6 +96,9 @@ public:
     std::map<std::string, InterfaceVar> interface;        // referenced in code, by GLSL name
     std::map<std::string, std::string> declared_varyings;  // user varyings declared: name -> signature
     std::set<std::string> referenced;                       // every global name used in code
+    // CompileOptions::check_undefined: a check_undef before every built-in
+    // call and operator that GLSL leaves undefined for some operands.
+    bool check_undefined = false;
 
 private:
     // --- lower_shader.cpp: variables, functions, bindings
@@ -144,6 +148,12 @@ private:
     Value matrix_times_vector(const Value& m, int cols, int rows, const Value& v);
     Value vector_times_matrix(const Value& v, const Value& m, int cols, int rows);
     Value matrix_times_matrix(const Value& a, int acols, int arows, const Value& b, int bcols);
+
+    // --- lower_checks.cpp: check_undef instructions (ir/undefined.h), when check_undefined is set
+    void check_op(ir::UndefOp op, const std::vector<Value>& operands, uint32_t length = 0);
+    void check_arith(gl::TOperator op, const Value& a, const Value& b);
+    void check_builtin(gl::TOperator op, const std::vector<Value>& args);
+    void check_index(ir::Reg index, uint32_t length);
 
     // --- lower_texture.cpp
     Value texture(gl::TIntermAggregate* n);

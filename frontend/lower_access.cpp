@@ -131,6 +131,7 @@ Access StageLowering::access(gl::TIntermTyped* n) {
         // map i through a table of the swizzle's component offsets.
         Value idx = expr(b->getRight());
         if (idx.regs.size() != 1 || kind(idx.regs[0]) != Kind::I32) return materialize(fail(n, "array index is not an int"));
+        check_index(idx.regs[0], count);
         uint32_t lo = *std::min_element(a.comps.begin(), a.comps.end());
         uint32_t hi = *std::max_element(a.comps.begin(), a.comps.end());
         Reg table = new_range(std::vector<Kind>(count, Kind::I32));
@@ -158,6 +159,7 @@ Access StageLowering::access(gl::TIntermTyped* n) {
     }
     Value idx = expr(b->getRight());
     if (idx.regs.size() != 1 || kind(idx.regs[0]) != Kind::I32) return materialize(fail(n, "array index is not an int"));
+    check_index(idx.regs[0], count);
     a.comps = first;
     index_dynamic(a, idx.regs[0], count, elem);
     return a;

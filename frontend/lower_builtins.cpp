@@ -86,6 +86,7 @@ Value StageLowering::builtin_unary(gl::TIntermUnary* n, const Value& a) {
         return out;
     };
     bool is_int = !a.regs.empty() && kind(a.regs[0]) == Kind::I32;
+    if (check_undefined) check_builtin(n->getOp(), {a});
     switch (n->getOp()) {
     case gl::EOpRadians: return scaled(kPi / 180.0f);
     case gl::EOpDegrees: return scaled(180.0f / kPi);
@@ -155,6 +156,7 @@ Value StageLowering::builtin_aggregate(gl::TIntermAggregate* n, const std::vecto
     auto arg = [&](size_t i) -> const Value& { return args[i]; };
     bool is_int = !args.empty() && !args[0].regs.empty() && kind(args[0].regs[0]) == Kind::I32;
     const gl::TIntermSequence& seq = n->getSequence();
+    if (check_undefined) check_builtin(n->getOp(), args);
     switch (n->getOp()) {
     case gl::EOpAtan: return componentwise(Op::fatan2, arg(0), arg(1));
     case gl::EOpPow: return componentwise(Op::fpow, arg(0), arg(1));

@@ -132,6 +132,7 @@ static Op pick(Kind k, Op f, Op i) { return k == Kind::I32 ? i : f; }
 Value StageLowering::arith(gl::TOperator op, const gl::TType& lt, const Value& a, const gl::TType& rt,
                            const Value& b, const gl::TType& result) {
     Kind k = a.regs.empty() ? Kind::F32 : kind(a.regs[0]);
+    if (check_undefined) check_arith(op, a, b);
     switch (op) {
     case gl::EOpAdd: return componentwise(pick(k, Op::fadd, Op::iadd), a, b);
     case gl::EOpSub: return componentwise(pick(k, Op::fsub, Op::isub), a, b);
@@ -167,6 +168,7 @@ Value StageLowering::increment(gl::TIntermUnary* n) {
         Kind k = kind(r);
         Reg one = k == Kind::I32 ? konst_i(1) : konst_f(1.0f);
         Op o = k == Kind::I32 ? (inc ? Op::iadd : Op::isub) : (inc ? Op::fadd : Op::fsub);
+        if (check_undefined && k == Kind::I32) check_op(inc ? ir::UndefOp::IntAdd : ir::UndefOp::IntSub, {Value{{r}}, Value{{one}}});
         updated.regs.push_back(alu(o, k, r, one));
     }
     write(place, updated, n);
@@ -188,6 +190,7 @@ Value StageLowering::unary(gl::TIntermUnary* n) {
     Value out;
     switch (op) {
     case gl::EOpNegative:
+        if (check_undefined) check_arith(op, a, a);
         for (Reg r : a.regs) out.regs.push_back(alu(k == Kind::I32 ? Op::ineg : Op::fneg, k, r));
         return out;
     case gl::EOpLogicalNot:

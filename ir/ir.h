@@ -147,6 +147,14 @@ struct Variable {
     uint32_t count = 0;
 };
 
+// Where a check_undef instruction came from (ir/undefined.h): its UndefOp
+// and the source position of the call or operator it checks.
+struct UndefSite {
+    uint8_t op = 0;  // ir::UndefOp
+    SourceLoc loc;
+    uint32_t length = 0;  // UndefOp::Index: the array's length
+};
+
 struct Shader {
     Stage stage = Stage::Vertex;
     std::vector<Kind> regs;  // kind of every register; size = register count
@@ -165,6 +173,7 @@ struct Shader {
     bool helper_lookups_matter = true;
     std::vector<std::string> sources;   // names of the stage's sources (SourceLoc::source)
     std::vector<Variable> variables;    // until regalloc
+    std::vector<UndefSite> undef_sites;  // check_undef's imm[1]; empty unless checking
 };
 
 // Base type of a uniform leaf (GL's glGetActiveUniform view).

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "ir/passes.h"
+#include "ir/undefined.h"
 
 namespace glslrun::ir {
 namespace {
@@ -40,6 +41,10 @@ std::string instr_text(const Instr& in) {
     case Op::store_ind:
         return s + fmt::format(":{} %{}[{} of {}, stride {}] = {}", kind_name(in.type), in.imm[0],
                                reg_name(in.src[0]), in.imm[1], in.imm[2], reg_name(in.src[1]));
+    case Op::check_undef:
+        return s + fmt::format(":{} {} ({}, {}, {}) site {}", kind_name(in.type),
+                               undef_info(UndefOp(in.imm[0] % uint32_t(UndefOp::Count_))).name, reg_name(in.src[0]),
+                               reg_name(in.src[1]), reg_name(in.src[2]), in.imm[1]);
     case Op::tex: {
         static const char* const targets[] = {"1d", "2d", "3d", "cube"};
         static const char* const lods[] = {"lod", "implicit", "bias"};

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "ir/passes.h"
+#include "ir/undefined.h"
 
 namespace glslrun::ir {
 namespace {
@@ -50,6 +51,7 @@ struct Verifier {
         }
         for (int i = info.arity; i < 3; ++i)
             if (in.src[i] != kNoReg) return fail(n, fmt::format("{}: extra operand {}", info.name, i));
+        if (in.op == Op::check_undef) return check_undef(n);
         if (in.op == Op::store_ind) {
             if (in.dst != kNoReg) return fail(n, "store_ind has a destination");
             if (shader.regs[in.src[0]] != Kind::I32) return fail(n, "store_ind index is not i32");
@@ -91,6 +93,17 @@ struct Verifier {
         case Op::tex: return tex(n);
         default: break;
         }
+        return true;
+    }
+
+    bool check_undef(const Node& n) {
+        const Instr& in = n.instr;
+        if (in.dst != kNoReg) return fail(n, "check_undef has a destination");
+        if (in.imm[0] >= uint32_t(UndefOp::Count_)) return fail(n, "check_undef: bad UndefOp");
+        if (in.imm[1] >= shader.undef_sites.size()) return fail(n, "check_undef: no such site");
+        if (in.type != Kind::F32 && in.type != Kind::I32) return fail(n, "check_undef: operands are not f32 or i32");
+        for (Reg r : in.src)
+            if (shader.regs[r] != in.type) return fail(n, "check_undef: operand kind differs from its type");
         return true;
     }
 

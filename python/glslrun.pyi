@@ -109,3 +109,6 @@ def compare_images(reference: _Image, actual: _Image, tolerance: int = 1) -> dic
 def error_report(
     vertex: str, fragment: str, scene: str, mode: str = "fast", threads: int = 0
 ) -> dict[str, Any]: ...
+def check_undefined(
+    vertex: str, fragment: str, scene: str, precision: str = "precise", *, backend: str = "auto"
+) -> list[dict[str, Any]]: ...

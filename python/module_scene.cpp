@@ -202,6 +202,36 @@ py::dict error_report(const std::string& vertex, const std::string& fragment, co
     return out;
 }
 
+// check_undefined() (glslrun/scene/undefined.h): one dict per finding.
+py::list check_undefined(const std::string& vertex, const std::string& fragment, const std::string& scene_path,
+                         const std::string& precision, const std::string& backend) {
+    ExecOptions exec = exec_options(1, precision, backend);
+    auto scene = take(scene::load_scene(scene_path));
+    auto vertex_sources = take(scene::read_shader_files({vertex}));
+    auto fragment_sources = take(scene::read_shader_files({fragment}));
+    scene::UndefinedReport report;
+    {
+        py::gil_scoped_release release;
+        report = take(scene::check_undefined(vertex_sources, fragment_sources, scene, exec));
+    }
+    py::list out;
+    for (const scene::UndefinedFinding& f : report.findings) {
+        const scene::UndefinedInvocation& i = f.first;
+        py::dict first(py::arg("stage") = i.vertex ? "vertex" : "fragment", py::arg("draw") = i.draw,
+                       py::arg("pass") = i.pass, py::arg("program") = i.program, py::arg("operands") = i.operands);
+        if (i.vertex) first["vertex"] = i.vertex_index;
+        else first["pixel"] = py::make_tuple(i.x, i.y);
+        out.append(py::dict(py::arg("op") = f.op, py::arg("condition") = f.condition,
+                            py::arg("stage") = f.vertex ? "vertex" : "fragment", py::arg("file") = f.file,
+                            py::arg("line") = f.line, py::arg("column") = f.column, py::arg("text") = f.line_text,
+                            py::arg("count") = f.count, py::arg("first") = first,
+                            py::arg("reference") = f.mode_values[0], py::arg("precise") = f.mode_values[1],
+                            py::arg("fast") = f.mode_values[2], py::arg("value_note") = f.value_note,
+                            py::arg("gpu") = f.gpu));
+    }
+    return out;
+}
+
 py::dict compare(const py::object& reference, const py::object& actual, int tolerance) {
     scene::CompareOptions options;
     options.tolerance = tolerance;
@@ -287,6 +317,14 @@ void bind_scene(py::module_& m) {
           "Whether the JIT can run here: LLVM's native code, in the plugin libglslrun-jit.so beside this "
           "module, loaded by this call or the first compile. Without it every backend runs the interpreter, "
           "which computes the same bits.");
+    m.def("check_undefined", &check_undefined, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),
+          py::arg("precision") = "precise", py::kw_only(), py::arg("backend") = "auto",
+          "The operations GLSL 1.10/1.20 leaves undefined that rendering the scene computes (glslrun "
+          "--check-undefined, docs/debugging.md): one dict per source position and op, with 'op', 'condition', "
+          "'stage', 'file', 'line', 'column', 'text' (the line), 'count' (invocations), 'first' (the first "
+          "invocation: 'stage', 'draw', 'pass', 'program', 'operands' and 'pixel' or 'vertex'), what each "
+          "precision mode returns for its operands ('reference', 'precise', 'fast', 'value_note') and what "
+          "NVIDIA's GPU returned for such operands ('gpu', measured; '' where not measured).");
 }
 
 }  // namespace glslrun::python

@@ -80,13 +80,23 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
     if (budget) params.limits.cancel = nullptr;  // the budget polls it
     BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
                           params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
-    if (key.backend != Backend::Jit) return st.backends->get(shader, key).instantiate(params);
-    key.specialization = st.backends->specialization(shader, st.uniforms, st.uses, program.exec.jit_specialize_after);
-    if (program.exec.backend == Backend::Jit) return st.backends->get(shader, key).instantiate(params);
-    BackendCache::Key interp = key;
-    interp.backend = Backend::Interp;
-    interp.specialization.clear();
-    return st.backends->auto_executor(shader, key, interp, params);
+    std::unique_ptr<Executor> executor;
+    if (key.backend != Backend::Jit) {
+        executor = st.backends->get(shader, key).instantiate(params);
+    } else {
+        key.specialization =
+            st.backends->specialization(shader, st.uniforms, st.uses, program.exec.jit_specialize_after);
+        if (program.exec.backend == Backend::Jit) {
+            executor = st.backends->get(shader, key).instantiate(params);
+        } else {
+            BackendCache::Key interp = key;
+            interp.backend = Backend::Interp;
+            interp.specialization.clear();
+            executor = st.backends->auto_executor(shader, key, interp, params);
+        }
+    }
+    if (st.undef) executor->watch_undefined(st.undef);
+    return executor;
 }
 
 }  // namespace glslrun::rt

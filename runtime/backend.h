@@ -17,6 +17,8 @@
 
 namespace glslrun::rt {
 
+class UndefSink;
+
 // Compile-time batch width (8..64). Fragment batches hold kLanes/4 2x2 quads:
 // lanes 4q+0..3 are (x,y) (x+1,y) (x,y+1) (x+1,y+1).
 // GLSLRUN_LANES exists so that a test can build other widths and check that
@@ -102,6 +104,9 @@ public:
     virtual void skip_lookups(LaneMask lanes) = 0;
     // "interp" or "jit": which backend this is.
     virtual Backend backend() const = 0;
+    // The following runs' check_undef instructions report to `sink`
+    // (runtime/undef_sink.h; null: to no one).
+    virtual void watch_undefined(UndefSink* sink) = 0;
 };
 
 // A shader compiled for one specialization key, shared by the workers.

@@ -46,6 +46,7 @@ public:
     LaneMask alive() const override { return inner_->alive(); }
     void skip_lookups(LaneMask lanes) override { inner_->skip_lookups(lanes); }
     Backend backend() const override { return inner_->backend(); }
+    void watch_undefined(UndefSink* sink) override { inner_->watch_undefined(sink); }
 
 private:
     std::unique_ptr<Executor> inner_;

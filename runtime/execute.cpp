@@ -10,6 +10,7 @@
 
 #include "runtime/api_checks.h"
 #include "runtime/parallel.h"
+#include "runtime/undef_sink.h"
 
 namespace glslrun::exec {
 
@@ -149,6 +150,8 @@ std::optional<Error> shade_range(rt::Executor& interp, const Program::State& st,
     for (uint32_t base = begin; base < end; base += rt::kLanes) {
         int n = int(std::min<uint32_t>(rt::kLanes, end - base));
         for (const InputSource& src : plan) fill_batch(interp, src, base, n);
+        if (st.undef) [[unlikely]]
+            st.undef->vertex_batch(base);
         rt::LaneMask live = n == rt::kLanes ? rt::kAllLanes : (rt::LaneMask(1) << n) - 1;
         rt::RunError error;
         if (!interp.run(live, &error)) return run_error(st, ir::Stage::Vertex, error);

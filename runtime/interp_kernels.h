@@ -18,6 +18,7 @@ namespace glslrun::rt {
 
 template <class W>
 struct Step;
+class UndefSink;
 
 // Bit i of a 32-lane mask word: testing against a table (not shifting by the
 // lane index) lets the blend vectorize without AVX2's variable shifts.
@@ -58,6 +59,8 @@ struct Machine {
     // The lanes whose texture lookups are run; the others read 0
     // (Executor::skip_lookups).
     LaneMask lookups = kAllLanes;
+    // Where check_undef reports (Executor::watch_undefined); null: nowhere.
+    UndefSink* undef = nullptr;
 
     // Masked register write: inactive lanes keep their old value.
     void write(W* __restrict dst, const W* __restrict value) {
@@ -280,6 +283,14 @@ void ddy(const Step<W>& s, Machine<W>& m) {
     std::memcpy(words, out, sizeof words);
     m.write(s.dst, words);
 }
+
+// GLSL's undefined operations (ir/undefined.h): the active lanes whose
+// operands make the op undefined go to the sink, with every lane's operands.
+// Out of line (runtime/undef_kernel.cpp): only checking programs have it.
+template <class W>
+void check_undef(const Step<W>& s, Machine<W>& m);
+extern template void check_undef<uint32_t>(const Step<uint32_t>&, Machine<uint32_t>&);
+extern template void check_undef<uint64_t>(const Step<uint64_t>&, Machine<uint64_t>&);
 
 // Texture lookups (runtime/tex_kernel.cpp): src[1] points at the operand
 // block (the compiler resolves imm[0]), dst at the first of four results.

@@ -320,6 +320,7 @@ public:
     virtual bool run(LaneMask live, RunError* error) = 0;
     virtual LaneMask alive() const = 0;
     virtual void skip_lookups(LaneMask lanes) = 0;
+    virtual void watch_undefined(UndefSink* sink) = 0;
 };
 
 namespace {
@@ -339,6 +340,7 @@ public:
     }
     LaneMask alive() const override { return core_.machine.mask.alive(); }
     void skip_lookups(LaneMask lanes) override { core_.machine.lookups = ~lanes; }
+    void watch_undefined(UndefSink* sink) override { core_.machine.undef = sink; }
 
 private:
     Core<uint32_t, kTraced> core_;
@@ -378,6 +380,7 @@ public:
     }
     LaneMask alive() const override { return core_.machine.mask.alive(); }
     void skip_lookups(LaneMask lanes) override { core_.machine.lookups = ~lanes; }
+    void watch_undefined(UndefSink* sink) override { core_.machine.undef = sink; }
 
 private:
     Core<uint64_t, kTraced> core_;
@@ -404,6 +407,8 @@ bool Interpreter::run(LaneMask live, RunError* error) { return engine_->run(live
 LaneMask Interpreter::alive() const { return engine_->alive(); }
 
 void Interpreter::skip_lookups(LaneMask lanes) { engine_->skip_lookups(lanes); }
+
+void Interpreter::watch_undefined(UndefSink* sink) { engine_->watch_undefined(sink); }
 
 }  // namespace glslrun::rt
 

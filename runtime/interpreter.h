@@ -42,6 +42,7 @@ public:
     LaneMask alive() const override;
     void skip_lookups(LaneMask lanes) override;
     Backend backend() const override { return Backend::Interp; }
+    void watch_undefined(UndefSink* sink) override;
 
 private:
     std::unique_ptr<Engine> engine_;

@@ -13,7 +13,7 @@
 
 namespace glslrun {
 namespace raster { class DrawProbe; }
-namespace rt { class BackendCache; }
+namespace rt { class BackendCache; class UndefSink; }
 namespace raster::fused { class Cache; }
 
 struct Program::State {
@@ -34,6 +34,9 @@ struct Program::State {
     uint64_t uses = 0;
     // The shader debugger's observer of draws (raster/probe.h); null when not debugging.
     raster::DrawProbe* probe = nullptr;
+    // Where check_undef instructions report (runtime/undef_sink.h); null when
+    // not checking (the program then has none).
+    rt::UndefSink* undef = nullptr;
     // The shaders compiled by the backends (runtime/backend_cache.h), made
     // with the State; shared_ptr for the same reason as draw_scratch.
     std::shared_ptr<rt::BackendCache> backends;

@@ -142,7 +142,7 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     return gl;
 }
 
-Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
+Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, const CompileOptions& options) {
     ScenePrograms programs;
     if (scene.passes.empty()) programs.by_pass_.push_back(&main);
     for (const Pass& pass : scene.passes) {
@@ -150,7 +150,7 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) 
             programs.by_pass_.push_back(&main);
             continue;
         }
-        auto program = Program::compile(pass.vertex, pass.fragment);
+        auto program = Program::compile(pass.vertex, pass.fragment, options);
         if (!program) {
             Error e(fmt::format("pass '{}': its program does not compile", pass.name), pass.where.file,
                     pass.where.line);

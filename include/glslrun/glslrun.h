@@ -107,6 +107,12 @@ struct CompileOptions {
     // "NAME=VALUE" becomes `#define NAME VALUE` ahead of every source, line
     // numbers unchanged. NAME must be an identifier (not GL_ or __ reserved).
     std::vector<std::string> defines;
+    // Compiles in checks of the operations whose result GLSL 1.10/1.20 leaves
+    // undefined (pow of x < 0, division by zero, an array index out of
+    // range, ...; docs/debugging.md). They report only to the shader
+    // debugger (`glslrun --check-undefined`, check_undefined() in
+    // glslrun/undefined.h); images do not change. Off: no check is compiled.
+    bool check_undefined = false;
 };
 
 // How shaders evaluate floating point (docs/precision.md).

@@ -12,6 +12,7 @@
 // - scene/texture_images.h: texture images from files and patterns.
 // - scene/image_compare.h: RGBA8 images, PNG reading and writing, comparison.
 // - scene/error_report.h: one precision mode measured against Reference.
+// - scene/undefined.h: the operations GLSL leaves undefined that a render computes.
 #pragma once
 #include "glslrun/glslrun.h"
 #include "glslrun/scene/error_report.h"
@@ -20,3 +21,4 @@
 #include "glslrun/scene/render.h"
 #include "glslrun/scene/scene.h"
 #include "glslrun/scene/texture_images.h"
+#include "glslrun/scene/undefined.h"

@@ -243,3 +243,19 @@ def test_example_script(tmp_path):
     subprocess.run([sys.executable, path("examples", "render.py"), *SPOT, str(out)], check=True,
                    capture_output=True, env=dict(os.environ))
     np.testing.assert_array_equal(decode_png(out.read_bytes()), glslrun.render(*SPOT))
+
+
+def test_check_undefined_as_dicts():
+    # pow(t, 2.0) with t = x - 4 < 0 in the 8x8 image's left half (tests/undefined/pow.frag).
+    findings = glslrun.check_undefined(path("tests", "undefined", "quad.vert"), path("tests", "undefined", "pow.frag"),
+                                       path("tests", "undefined", "undefined.toml"), backend="interp")
+    assert len(findings) == 1
+    f = findings[0]
+    assert (f["op"], f["stage"], f["line"], f["text"], f["count"]) == ("pow", "fragment", 5, "r = pow(t, 2.0);", 32)
+    assert f["file"].endswith("pow.frag")
+    assert f["first"]["pixel"] == (0, 7) and f["first"]["operands"] == [-4.0, 2.0]
+    assert (f["reference"], f["precise"]) == (16.0, 16.0) and f["fast"] != f["fast"]  # Fast: NaN
+    assert "NaN" in f["gpu"] and "measured" in f["gpu"]
+    clean = glslrun.check_undefined(path("tests", "undefined", "quad.vert"), path("tests", "undefined", "none.frag"),
+                                    path("tests", "undefined", "undefined.toml"))
+    assert clean == []

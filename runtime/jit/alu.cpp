@@ -23,7 +23,7 @@ namespace {
 using ir::Op;
 
 // Ops with a kernel too long to write out here: the generated code calls it.
-bool calls_kernel(Op op) { return op == Op::tex; }
+bool calls_kernel(Op op) { return op == Op::tex || op == Op::check_undef; }
 
 WriteMode write_mode(Op op) {
     switch (op) {

@@ -288,6 +288,10 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
+    app.add_flag("--check-undefined", o.check_undefined,
+                 "render on one thread with checks of the operations GLSL leaves undefined (pow of x < 0, "
+                 "division by zero, an array index out of range, ...) and print each one found: file:line, "
+                 "how often, the first invocation, what each precision mode and a GPU return");
     app.add_option("--threads", o.threads, "worker threads for drawing (default: one per core); images do not depend on it")
         ->check(CLI::Range(1, 256));
     app.add_option("--time-limit", o.time_limit,

@@ -27,6 +27,7 @@
 #include "scene/bench_report.h"
 #include "glslrun/scene/image_compare.h"
 #include "glslrun/scene/render.h"
+#include "glslrun/scene/undefined.h"
 #include "scene/text_file.h"
 
 namespace glslrun::cli {
@@ -467,6 +468,25 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) 
 
 namespace {
 
+// --check-undefined: the scene rendered once with the checks
+// (glslrun/scene/undefined.h), its image written where `output` is given,
+// and the findings printed.
+int run_check_undefined(const Inputs& in, const RenderOptions& o, const scene::Scene& scene, Framebuffer& fb,
+                        const std::string& output) {
+    ExecOptions exec;
+    exec.precision = o.precision;
+    exec.backend = o.backend;
+    exec.set_time_limit(o.time_limit);
+    CompileOptions compile;
+    compile.defines = o.defines;
+    auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec, fb, compile);
+    if (!report) return fail(report.error());
+    if (!output.empty())
+        if (Status st = write_buffers(fb, output); !st) return fail(st.error(), kToolError);
+    std::fputs(scene::format_undefined(*report).c_str(), stdout);
+    return 0;
+}
+
 int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);
     auto scene = load_sized_scene(in, o);
@@ -486,6 +506,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     // tables is part of the compile a user waits for.
     auto start = Clock::now();
     if (warm_up.joinable()) warm_up.join();
+    if (o.check_undefined) return run_check_undefined(in, o, *scene, *fb, writes_image ? output : "");
     auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
     prog->exec.threads = o.threads;
@@ -609,6 +630,11 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (o.frames > 0 && (o.bench_frames > 0 || !o.compare.empty() || o.stats || !o.error_report.empty()))
         return fail(Error("--frames writes a sequence of images: it does not combine with --bench, --compare, "
                           "--stats or --error-report"), kToolError);
+    if (o.check_undefined && (o.frames > 0 || o.bench_frames > 0 || !o.compare.empty() || o.stats || o.dump_ir ||
+                              !o.error_report.empty() || in->scene.empty()))
+        return fail(Error("--check-undefined renders the scene once with checks (shaders and a scene file): it does "
+                          "not combine with --frames, --bench, --compare, --stats, --dump-ir or --error-report"),
+                    kToolError);
     if (o.frames == 0 && (!o.time_uniform.empty() || o.frames_per_second > 0))
         return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"), kToolError);
     if (o.time_uniform.starts_with("gl_"))

@@ -29,6 +29,7 @@ struct RenderOptions {
     Backend backend = Backend::Auto;           // --backend
     uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
     double time_limit = 0;  // --time-limit SECONDS: the draws' deadline (ExecOptions::deadline); 0: none
+    bool check_undefined = false;  // --check-undefined: report GLSL's undefined operations
 };
 
 // The files on the command line, sorted by their extensions.

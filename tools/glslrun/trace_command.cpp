@@ -12,6 +12,7 @@
 #include "command_line.h"
 #include "debug/debugger.h"
 #include "glslrun/scene/render.h"
+#include "glslrun/scene/undefined.h"
 #include "render_command.h"
 
 namespace glslrun::cli {
@@ -32,9 +33,19 @@ struct TraceOptions {
     std::string pixel, size, target;
     std::optional<uint32_t> vertex;
     uint32_t draw = 0;
-    bool json = false, find_nan = false, colour_range = false;
+    bool json = false, find_nan = false, colour_range = false, check_undefined = false;
     Precision precision = Precision::Precise;
 };
+
+// --check-undefined: as `glslrun --check-undefined` (glslrun/scene/undefined.h).
+int check_undefined(const Inputs& in, const scene::Scene& scene, Precision precision) {
+    ExecOptions exec;
+    exec.precision = precision;
+    auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec);
+    if (!report) return fail(report.error());
+    std::fputs(scene::format_undefined(*report).c_str(), stdout);
+    return 0;
+}
 
 int run_trace(const TraceOptions& o) {
     auto in = classify(o.files);
@@ -43,8 +54,8 @@ int run_trace(const TraceOptions& o) {
         return fail(Error("trace needs shaders (.vert, .frag) and a scene file (.toml)"), kToolError);
     if (!o.target.empty() && o.pixel.empty())
         return fail(Error("--target NAME names the render target of --pixel X,Y, which is missing"), kToolError);
-    if (o.pixel.empty() && !o.vertex && !o.find_nan)
-        return fail(Error("trace needs --pixel X,Y, --vertex N or --find-nan"), kToolError);
+    if (o.pixel.empty() && !o.vertex && !o.find_nan && !o.check_undefined)
+        return fail(Error("trace needs --pixel X,Y, --vertex N, --find-nan or --check-undefined"), kToolError);
     std::optional<std::pair<int, int>> pixel;
     if (!o.pixel.empty()) {
         auto parsed = parse_pixel(o.pixel);
@@ -55,6 +66,7 @@ int run_trace(const TraceOptions& o) {
     render.size = o.size;
     auto scene = load_sized_scene(*in, render);
     if (!scene) return fail(scene.error());
+    if (o.check_undefined) return check_undefined(*in, *scene, o.precision);
     auto program = Program::compile(in->vertex, in->fragment);
     if (!program) return fail(program.error());
     program->exec.precision = o.precision;
@@ -96,6 +108,9 @@ int trace_main(int argc, char** argv) {
     app.add_flag("--json", o.json, "print the trace as JSON");
     app.add_flag("--find-nan", o.find_nan,
                  "report the first invocation (draw and tile order) computing a NaN or infinity");
+    app.add_flag("--check-undefined", o.check_undefined,
+                 "report the operations GLSL leaves undefined (pow of x < 0, division by zero, ...) that the "
+                 "render computes, per source line, with the first invocation");
     app.add_flag("--colour-range", o.colour_range, "--find-nan: also the first colour output outside [0,1]");
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     add_precision_option(app, o.precision);

@@ -31,11 +31,11 @@ Result<GLState> bind_scene_textures(const Scene& scene);
 GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object, const Pass* pass = nullptr);
 
 // The programs a scene draws with, one per pass: a pass that names its own
-// shaders gets them compiled (with `main`'s ExecOptions); the others, and a
-// scene without passes, use `main`. `main` must outlive this.
+// shaders gets them compiled (with `options`, and `main`'s ExecOptions); the
+// others, and a scene without passes, use `main`. `main` must outlive this.
 class ScenePrograms {
 public:
-    static Result<ScenePrograms> compile(Program& main, const Scene& scene);
+    static Result<ScenePrograms> compile(Program& main, const Scene& scene, const CompileOptions& options = {});
     // Pass i's program; with no passes, 0 is `main`.
     Program& of_pass(size_t pass) const { return *by_pass_[pass]; }
     size_t size() const { return by_pass_.size(); }

@@ -1,0 +1,7 @@
+// --check-undefined: asin outside [-1, 1]: x = 0, 1, 7, 24 pixels (tests/cli/check_undefined.sh; t = x - 4, u = y)
+uniform int zi;
+void main() {
+    float t = floor(gl_FragCoord.x) - 4.0, u = floor(gl_FragCoord.y); int x = int(t) + 4; float r = 0.0; int ri = 0;
+    r = asin(t * 0.5);
+    gl_FragColor = vec4(r, float(ri), 0.0, 1.0);
+}

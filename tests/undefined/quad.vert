@@ -1,0 +1,2 @@
+// The tests' full-screen quad (the quad mesh has corners at +-1).
+void main() { gl_Position = vec4(gl_Vertex.xy, 0.0, 1.0); }

@@ -1,0 +1,2 @@
+varying float s;
+void main() { gl_FragColor = vec4(s); }
