@@ -80,6 +80,8 @@ class Program:
     precision: str
     backend: str
     max_loop_iterations: int
+    max_draw_instructions: int
+    max_render_instructions: int
     def dump_ir(self) -> str: ...
     def run_vertices(
         self, inputs: dict[str, _Numbers], count: int = 0, scene: Scene | None = None, object: int = 0

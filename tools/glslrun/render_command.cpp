@@ -3,6 +3,7 @@
 #include "render_command.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
@@ -280,7 +281,8 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
     // The fused pipeline's fragments, and its share of LLVM's time above.
     fmt::print("fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
                s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
-    fmt::print("instructions {} (ExecOptions::max_draw_instructions bounds each draw)\n", s.instructions);
+    fmt::print("instructions {} (ExecOptions::max_draw_instructions bounds each draw, --max-instructions the render)\n",
+               s.instructions);
     fmt::print("time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
     fmt::print("built-in uniforms read   {}", builtin_values(prog, terminal_width()));
@@ -456,6 +458,15 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o) 
 
 namespace {
 
+void set_exec_options(Program& prog, const RenderOptions& o) {
+    prog.exec.threads = o.threads;
+    prog.exec.precision = o.precision;
+    prog.exec.backend = o.backend;
+    prog.exec.jit_specialize_after = o.specialize_after;
+    prog.exec.max_render_instructions = o.max_instructions;
+    prog.exec.set_time_limit(o.time_limit);
+}
+
 int render(const Inputs& in, const RenderOptions& o) {
     std::jthread warm_up = warm_up_compiler(in);
     auto scene = load_sized_scene(in, o);
@@ -477,11 +488,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (warm_up.joinable()) warm_up.join();
     auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
-    prog->exec.threads = o.threads;
-    prog->exec.precision = o.precision;
-    prog->exec.backend = o.backend;
-    prog->exec.jit_specialize_after = o.specialize_after;
-    prog->exec.set_time_limit(o.time_limit);  // before the passes' programs copy it
+    set_exec_options(*prog, o);  // before the passes' programs copy them
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     double compile_ms = ms_since(start);
@@ -525,9 +532,10 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
         return fail(st.error(), kToolError);
     auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
-    prog->exec.threads = o.threads;
-    prog->exec.precision = o.precision;
-    prog->exec.set_time_limit(o.time_limit);
+    set_exec_options(*prog, o);
+    // Every frame's draws count toward one render's instructions, as the time limit covers them all.
+    std::atomic<uint64_t> instructions{0};
+    prog->exec.render_instructions = &instructions;
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     const std::string time = o.time_uniform.empty() ? scene->animation.time_uniform : o.time_uniform;
