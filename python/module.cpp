@@ -309,4 +309,5 @@ PYBIND11_MODULE(glslrun, m) {
     bind_program(m);
     bind_scene(m);
     bind_mesh(m);
+    bind_state(m);
 }
