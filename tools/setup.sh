@@ -12,10 +12,12 @@ packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
           libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
+          nlohmann-json3-dev libpugixml-dev  # glslrun test's JSON and JUnit reports
           help2man  # the man page, from glslrun --help
           ccache)  # the builds below (and CI's variants) reuse each other's object files
 [ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev  # clang: the sanitizer and fuzzer build
-                                  python3-hypothesis)  # the Python module's fuzz run (python/tests/test_fuzz.py)
+                                  python3-hypothesis  # the Python module's fuzz run (python/tests/test_fuzz.py)
+                                  python3-jsonschema)  # the JSON reports against docs/schema (tests/cli/json_schema.py)
 [ "$mode" = test ] && packages+=(zsh  # tests/package/consumer.sh tries the zsh completion
                                   python3-build python3-venv python3-mypy)  # the wheel, venv and type stub (tests/package/wheel.sh)
 missing=()
