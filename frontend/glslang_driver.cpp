@@ -177,6 +177,7 @@ bool parse_units(StageUnits& st, int default_version, const std::string& defines
         ok = ok && unit.ok;
         st.shaders.push_back(std::move(unit.shader));
     }
+    if (ok) check_call_chain(stage_totals, diags);
     return ok;
 }
 

@@ -27,12 +27,29 @@ constexpr uint64_t kMaxStageComponents = uint64_t(1) << 20;
 // called from main spent 0.7 s of CPU there).
 constexpr uint64_t kMaxStageCalls = 4096;
 
+// Calls nested in one another from main, the longest chain of the stage's
+// call graph: shaders nest a handful. The JIT's LLVM spent minutes on a
+// chain 1000 deep, and the interpreter's call stack stops at 1024 at run
+// time; refused at compile time instead, at the call that crosses it.
+constexpr uint64_t kMaxCallChain = 256;
+
+// One call in the source: the caller and callee (glslang's mangled names)
+// and where it is.
+struct CallSite {
+    std::string caller, callee, file;
+    int line = 0;
+};
+
 // What the units of one stage hold together, accumulated unit by unit.
 struct StageTotals {
     uint64_t components = 0, calls = 0;
+    std::vector<CallSite> call_sites;  // one per distinct caller and callee pair
 };
 
 void check_size_limits(glslang::TIntermediate& unit, const std::string& file, StageTotals& stage,
                        std::vector<Diagnostic>& out);
+// After every unit of the stage: the longest call chain from main against
+// kMaxCallChain (a cycle, which glslang's link refuses, is not followed).
+void check_call_chain(const StageTotals& stage, std::vector<Diagnostic>& out);
 
 }  // namespace glslrun::frontend

@@ -13,6 +13,9 @@ __version__: str
 _Numbers = Union[float, int, bool, Sequence[Any], npt.NDArray[Any]]
 _Image = npt.NDArray[np.uint8]  # H x W x 4 RGBA8, top row first
 _Outputs = dict[str, npt.NDArray[np.float32]]  # name -> (count, components)
+# A value of a scene file's key (docs/scene-format.md): number, bool, string,
+# list, numpy array or table.
+_SceneValue = Union[float, int, bool, str, Sequence[Any], dict[str, Any], npt.NDArray[Any]]
 
 class Error(RuntimeError):
     # (file, line, message, warning) per diagnostic.
@@ -56,6 +59,15 @@ class Scene:
         mipmaps: bool = True,
         top_down: bool = False,
     ) -> None: ...
+    # The GL state of the scene file's sections, keyword by keyword.
+    def set_state(self, **kwargs: _SceneValue) -> None: ...
+    def set_camera(self, **kwargs: _SceneValue) -> None: ...
+    def set_light(self, light: int, **kwargs: _SceneValue) -> None: ...
+    def set_light_model(self, **kwargs: _SceneValue) -> None: ...
+    def set_material(self, face: str = "front_and_back", **kwargs: _SceneValue) -> None: ...
+    def set_fog(self, **kwargs: _SceneValue) -> None: ...
+    def set_current(self, **kwargs: _SceneValue) -> None: ...
+    def set_texture_matrix(self, unit: int, **kwargs: _SceneValue) -> None: ...
 
 class Program:
     @staticmethod
@@ -80,6 +92,8 @@ class Program:
     precision: str
     backend: str
     max_loop_iterations: int
+    max_draw_instructions: int
+    max_render_instructions: int
     def dump_ir(self) -> str: ...
     def run_vertices(
         self, inputs: dict[str, _Numbers], count: int = 0, scene: Scene | None = None, object: int = 0

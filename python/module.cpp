@@ -246,6 +246,16 @@ void bind_program(py::module_& m) {
             "max_loop_iterations", [](const PyProgram& p) { return p.exec.max_loop_iterations; },
             [](PyProgram& p, uint64_t n) { p.exec.max_loop_iterations = n; },
             "The iterations one loop may run before the run stops with an error.")
+        .def_property(
+            "max_draw_instructions", [](const PyProgram& p) { return p.exec.max_draw_instructions; },
+            [](PyProgram& p, uint64_t n) { p.exec.max_draw_instructions = n; },
+            "The shader instructions one draw or run_* call may execute, all its batches together, before it "
+            "stops with glslrun.Error (default 2^32).")
+        .def_property(
+            "max_render_instructions", [](const PyProgram& p) { return p.exec.max_render_instructions; },
+            [](PyProgram& p, uint64_t n) { p.exec.max_render_instructions = n; },
+            "The shader instructions one render() may execute, all its passes and draws together, before it "
+            "stops with glslrun.Error (default 2^36, about 7 minutes of one core).")
         .def("dump_ir", &Program::dump_ir, "The intermediate representation of both stages, as glslrun --dump-ir prints it.")
         .def(
             "run_vertices",
@@ -299,4 +309,5 @@ PYBIND11_MODULE(glslrun, m) {
     bind_program(m);
     bind_scene(m);
     bind_mesh(m);
+    bind_state(m);
 }

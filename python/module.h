@@ -57,6 +57,7 @@ py::array_t<uint8_t> to_array(const scene::Image& image);
 scene::Image to_image(const py::object& image);
 
 void bind_scene(py::module_& m);
-void bind_mesh(py::module_& m);  // after bind_scene
+void bind_mesh(py::module_& m);   // after bind_scene
+void bind_state(py::module_& m);  // after bind_scene
 
 }  // namespace glslrun::python

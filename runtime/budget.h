@@ -19,21 +19,32 @@ namespace glslrun::rt {
 // depends on its total alone, which its batches fix, not on the threads.
 class DrawBudget {
 public:
-    enum class Stop : uint8_t { None, Instructions, Cancelled, TimeLimit };
+    enum class Stop : uint8_t { None, Instructions, RenderInstructions, Cancelled, TimeLimit };
+    // The draw's limit is the smaller of its own budget and what is left of
+    // its render's (ExecOptions::render_instructions); the destructor adds
+    // the draw's instructions to the render's count.
     explicit DrawBudget(const ExecOptions& exec);
+    ~DrawBudget();
+    DrawBudget(const DrawBudget&) = delete;
+    DrawBudget& operator=(const DrawBudget&) = delete;
     // Adds instructions charged; says whether the draw must stop: past its
     // instructions, cancelled or past the deadline (both polled here).
     Stop add(uint64_t instructions);
     // After the workers, with every share reported: the total's verdict.
-    Stop over() const { return used() > max_ ? Stop::Instructions : Stop::None; }
+    Stop over() const { return used() > max_ ? past_max() : Stop::None; }
     uint64_t used() const { return used_.load(std::memory_order_relaxed); }
     std::string message(Stop stop) const;
     static constexpr const char* kTimeLimitMessage =
         "the time limit ran out (ExecOptions::deadline): the draw stopped unfinished";
 
 private:
+    Stop past_max() const { return render_binds_ ? Stop::RenderInstructions : Stop::Instructions; }
+
     std::atomic<uint64_t> used_{0};
     uint64_t max_;
+    uint64_t render_max_;
+    std::atomic<uint64_t>* render_;
+    bool render_binds_ = false;  // what is left of the render's budget is below the draw's
     const std::atomic<bool>* cancel_;
     std::chrono::steady_clock::time_point deadline_;
 };

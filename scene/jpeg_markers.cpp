@@ -54,6 +54,7 @@ Status check_jpeg_work(const std::string& path, const std::vector<unsigned char>
     auto corrupt = [&](const char* why) { return Error(fmt::format("the JPEG '{}' is corrupt: {}", path, why)); };
     Frame frame;
     size_t scans = 0, entropy_bytes = 0;
+    uint64_t block_visits = 0;  // blocks of each scan's components, summed over the scans
     std::vector<int> dc_first;  // the components a progressive DC-first scan codes
     size_t pos = 2;             // after SOI
     while (pos + 1 < d.size()) {
@@ -77,8 +78,18 @@ Status check_jpeg_work(const std::string& path, const std::vector<unsigned char>
             return Error(fmt::format("the JPEG '{}' has more than {} scans: its decoding would take minutes, not "
                                      "its size (progressive files have about 10)",
                                      path, kMaxJpegScans));
-        // Ss = 0 and Ah = 0: a DC scan's first pass, which codes every block of its components.
         const size_t ns = length > 2 ? body[0] : 0;
+        // The decoder visits every block of each of the scan's components, coded or not.
+        for (size_t i = 0; i < ns && 1 + 2 * i < length - 2; ++i)
+            for (const Component& c : frame.components)
+                if (c.id == body[1 + 2 * i]) block_visits += blocks_of(frame, c);
+        if (block_visits > kMaxJpegBlockVisits)
+            return Error(fmt::format("the JPEG '{}' asks its decoder for more than {} block decodes ({} scans of "
+                                     "{}x{} pixels so far), glslrun's limit (docs/limits.md): its decoding would "
+                                     "take seconds, not its size (a progressive file of the largest texture "
+                                     "needs about 4M)",
+                                     path, kMaxJpegBlockVisits, scans, frame.width, frame.height));
+        // Ss = 0 and Ah = 0: a DC scan's first pass, which codes every block of its components.
         if (length >= 6 + 2 * ns && body[1 + 2 * ns] == 0 && body[3 + 2 * ns] >> 4 == 0)
             for (size_t i = 0; i < ns; ++i) dc_first.push_back(body[1 + 2 * i]);
         // The entropy-coded data runs to the next marker that is not a byte

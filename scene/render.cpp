@@ -1,6 +1,7 @@
 #include "glslrun/scene/render.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -325,8 +326,33 @@ void flush_clear(Framebuffer& fb, ClearValues& pending) {
     pending = {};
 }
 
+// One render's instruction count (ExecOptions::render_instructions) on
+// every pass's program for the render's draws, unless the caller already
+// counts several renders as one (glslrun --frames).
+class RenderCount {
+public:
+    explicit RenderCount(const ScenePrograms& programs) {
+        for (size_t i = 0; i < programs.size(); ++i) {
+            Program& p = programs.of_pass(i);
+            if (p.exec.render_instructions) continue;  // the caller's, or ours through an earlier pass
+            p.exec.render_instructions = &count_;
+            counted_.push_back(&p);
+        }
+    }
+    ~RenderCount() {
+        for (Program* p : counted_) p->exec.render_instructions = nullptr;
+    }
+    RenderCount(const RenderCount&) = delete;
+    RenderCount& operator=(const RenderCount&) = delete;
+
+private:
+    std::atomic<uint64_t> count_{0};
+    std::vector<Program*> counted_;
+};
+
 Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
                               ClearValues& pending) {
+    RenderCount count(programs);
     if (Status st = check_gl_copies(scene); !st) return st.error();
     if (!scene.passes.empty())
         if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();

@@ -2,12 +2,14 @@
 // The sections are read in dependency order, not file order: the size before
 // the camera (aspect), the camera before clip planes and lights (view), the
 // scene's materials before the objects' overrides.
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <new>
 #include <sstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -99,6 +101,44 @@ Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
         return f.error;
     } catch (const std::bad_alloc&) {
         return Error("out of memory parsing the scene", path);
+    }
+}
+
+Status update_scene_state(Scene& scene, std::string_view toml_text, const std::string& what) {
+    static const std::vector<std::string_view> kStateSections = {
+        "light_model", "material", "front_material", "back_material", "current", "state", "fog", "texture_matrix"};
+    // What the sections write, restored when one fails: no half-set state.
+    auto saved = std::tuple(scene.camera, scene.view, scene.projection, scene.lights, scene.gl,
+                            scene.current_attributes);
+    auto restore = [&] {
+        std::tie(scene.camera, scene.view, scene.projection, scene.lights, scene.gl, scene.current_attributes) =
+            std::move(saved);
+    };
+    try {
+        toml::table root = toml::parse(toml_text, what);
+        Section top(root, "");
+        std::vector<std::string_view> allowed = kStateSections;
+        allowed.insert(allowed.end(), {"camera", "lights"});
+        top.allow(allowed);
+        const bool own_states = !scene.passes.empty() ||
+                                std::any_of(scene.objects.begin(), scene.objects.end(),
+                                            [](const Object& o) { return o.state.has_value(); });
+        for (std::string_view key : kStateSections)
+            if (own_states && top.get(key))
+                detail::fail(*top.get(key),
+                             fmt::format("[{}]: the scene's {} state of their own from its file, which this "
+                                         "would not reach: set it in the file",
+                                         key, scene.passes.empty() ? "objects have" : "passes have"));
+        if (const toml::node* n = top.get("camera")) detail::read_camera(section(*n, "camera"), scene);
+        if (const toml::node* n = top.get("lights")) detail::read_lights(*n, scene);
+        detail::read_render_state(top, scene);
+        derive_eye_space_lights(scene);
+        return Ok{};
+    } catch (const toml::parse_error& e) {
+        return Error(std::string(e.description()), what, int(e.source().begin.line));
+    } catch (const detail::SceneFailure& f) {
+        restore();
+        return f.error;
     }
 }
 

@@ -10,13 +10,15 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config glslang-dev glslang-tools libglm-dev
           libfmt-dev catch2 libpng-dev libcli11-dev libtomlplusplus-dev libstb-dev
-          libtinyobjloader-dev nlohmann-json3-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
+          libtinyobjloader-dev libegl-dev libgl-dev libgl1-mesa-dri libgles-dev llvm-15-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
+          nlohmann-json3-dev libpugixml-dev  # JSON (trace, serve, reports) and JUnit XML
           help2man  # the man page, from glslrun --help
-          libcpp-httplib-dev nlohmann-json3-dev  # glslrun serve: its HTTP server and JSON
+          libcpp-httplib-dev  # glslrun serve's HTTP server
           ccache)  # the builds below (and CI's variants) reuse each other's object files
 [ "$mode" = test ] && packages+=(piglit clang libclang-rt-14-dev  # clang: the sanitizer and fuzzer build
-                                  python3-hypothesis)  # the Python module's fuzz run (python/tests/test_fuzz.py)
+                                  python3-hypothesis  # the Python module's fuzz run (python/tests/test_fuzz.py)
+                                  python3-jsonschema)  # the JSON reports against docs/schema (tests/cli/json_schema.py)
 [ "$mode" = test ] && packages+=(chromium chromium-driver python3-selenium)  # glslrun serve's page in a browser (tests/cli/serve_test.py)
 [ "$mode" = test ] && packages+=(zsh  # tests/package/consumer.sh tries the zsh completion
                                   python3-build python3-venv python3-mypy)  # the wheel, venv and type stub (tests/package/wheel.sh)

@@ -161,6 +161,20 @@ struct ExecOptions {
     // scene at 1080p. Whether a draw passes depends on its total only,
     // never on the thread count.
     uint64_t max_draw_instructions = uint64_t(1) << 32;
+    // Instructions of one render as a whole: every draw of a scene render
+    // (all its passes and objects), and of every frame of glslrun --frames;
+    // past it the draw that crosses it stops with a clear error. The budget
+    // per draw alone let a scene of many draws, or many frames, each just
+    // under it run for hours. 2^36: 16 draws at their budget, about 7
+    // minutes of one core on the JIT. Whether a render passes depends on
+    // its draws' totals only, never on the thread count.
+    uint64_t max_render_instructions = uint64_t(1) << 36;
+    // The render's count so far, which every draw adds its instructions to:
+    // render_scene points it at its own counter for its draws when it is
+    // null (a caller that renders several frames as one render points it
+    // at one counter for all of them). Null outside a render: draw() and
+    // run_* calls then have only their own budget.
+    std::atomic<uint64_t>* render_instructions = nullptr;
     // When *cancel becomes true, a running draw or run_* call stops with an
     // error: a watchdog's flag (glslrun test --no-isolate), Ctrl-C in
     // Python. Polled every 2^16 instructions.

@@ -1,6 +1,8 @@
 """The Python module under abuse: arguments past every limit come back as
 glslrun.Error or ValueError, never as a crash, MemoryError or a hang."""
 import os
+import sys
+import time
 
 import numpy as np
 import pytest
@@ -127,6 +129,26 @@ except KeyboardInterrupt:
     assert elapsed < 3, f"{elapsed:.2f} s from SIGINT to exit"
 
 
+def test_a_render_of_many_draws_stops_at_its_instruction_budget():
+    # Eight draws, each well within the draw's budget: together past the render's.
+    objects = '[[objects]]\nmesh = "quad"\n' * 8
+    scene = glslrun.Scene.parse("[output]\nsize = [64, 64]\n" + objects)
+    p = glslrun.Program.compile(VS, "uniform int n; void main() { float s = 0.0; "
+                                "for (int i = 0; i < n; ++i) s += float(i); gl_FragColor = vec4(s); }")
+    p.set_uniform("n", 4000)
+    assert p.max_draw_instructions == 2**32 and p.max_render_instructions == 2**36
+    p.render(scene)
+    p.max_draw_instructions = 2**23  # each draw takes 4.2M
+    p.max_render_instructions = 2**23
+    with pytest.raises(glslrun.Error, match="the render executed more than 8388608 instructions, its draws together"):
+        p.render(scene)
+    p.max_render_instructions = 2**36
+    p.render(scene)
+    p.max_draw_instructions = 2**16
+    with pytest.raises(glslrun.Error, match="the draw executed more than 65536 instructions"):
+        p.render(scene)
+
+
 def test_a_scene_past_16_mib_is_refused_before_it_is_parsed(tmp_path):
     # 56 MB of numbers, under the 64 MiB text limit, needed 2.4 GB of TOML tree.
     text = "[output]\nsize = [4, 4]\n[uniforms]\nbig = [" + "0," * (8 << 20) + "0]\n"
@@ -144,11 +166,32 @@ def texture_scene(image):
                                '[[objects]]\nmesh = "quad"\n', os.path.join(SOURCE, "scenes", "inline.toml"))
 
 
-def test_jpeg_decoding_is_bounded_by_its_scans_and_its_data():
+def test_jpeg_decoding_is_bounded_by_its_scans_and_its_data(tmp_path):
     texture_scene("jpeg_progressive.jpg")  # 10 scans: read as before
     # The same file with one scan repeated 3000 times (100,000 took 110 s in stb_image).
     with pytest.raises(glslrun.Error, match="more than 500 scans"):
         texture_scene("jpeg_3000_scans.jpg")
+    # The reproducer itself: one scan repeated 100,000 times (1.4 MB) ends at the scan limit, at once.
+    sys.path.insert(0, os.path.join(SOURCE, "tests", "hardening"))
+    import jpeg_scans
+    base = jpeg_scans.progressive(16)
+    path = tmp_path / "scans.jpg"
+    path.write_bytes(jpeg_scans.repeat_scan(base, 1, 100_000))
+    start = time.monotonic()
+    with pytest.raises(glslrun.Error, match="more than 500 scans"):
+        texture_scene(str(path))
+    assert time.monotonic() - start < 2
+    # Under the scan limit, the work: the largest texture's progressive file (6 scans of grey, 1.5M
+    # block visits) decodes; the same with its last scan (a refinement) 70 times, 68 KB,
+    # asks for 19.7M, past 2^24.
+    big = jpeg_scans.progressive(4096, grey=True)
+    path.write_bytes(big)
+    assert texture_scene(str(path)).width == 4
+    path.write_bytes(jpeg_scans.repeat_scan(big, 5, 70))
+    start = time.monotonic()
+    with pytest.raises(glslrun.Error, match="more than 16777216 block decodes"):
+        texture_scene(str(path))
+    assert time.monotonic() - start < 2
     # An 8x8 baseline JPEG whose header says 4000x4000: decoded as 16M grey texels before.
     with pytest.raises(glslrun.Error, match="header lies about the size"):
         texture_scene("jpeg_lying_size.jpg")

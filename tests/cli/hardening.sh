@@ -42,6 +42,24 @@ expect 2 "--size '4294967360x64' must be WxH" "$glslrun" "$vs" "$fs" "$scene" --
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "a PNG was written: $(ls)"
 "$glslrun" --dump-ir "$vs" "$fs" "$scene" > ir.txt || fail "--dump-ir with a scene failed"
 [ -z "$(ls ./*.png 2>/dev/null | grep -v huge.png)" ] || fail "--dump-ir with a scene wrote a PNG: $(ls)"
+# A call chain 1000 deep: minutes in LLVM, then "call depth exceeded (recursion?)" at run time.
+{ echo 'uniform float u; float f0(float x) { return x * 1.5; }'
+  for i in $(seq 1 999); do echo "float f$i(float x) { return f$((i - 1))(x) + 1.0; }"; done
+  echo 'void main() { gl_FragColor = vec4(f999(u)); }'; } > chain.frag
+expect 1 "chain.frag:745: error: 'f743' : calls nest 1000 deep from main, more than glslrun's limit of 256" \
+    "$glslrun" "$vs" chain.frag
+# A render's draws and frames together stop at --max-instructions: each frame's
+# draws are within their own budget, the frames together are not.
+printf 'uniform int n; void main() { float s = 0.0; for (int i = 0; i < n; ++i) s += float(i);\n gl_FragColor = vec4(s); }\n' > loop.frag
+"$glslrun" "$vs" loop.frag "$scene" --size 32x32 --uniform n=500 --stats -o one.png > stats.txt || fail "loop.frag: $(cat stats.txt)"
+per_frame=$(sed -n 's/^instructions \([0-9]*\).*/\1/p' stats.txt)
+[ "${per_frame:-0}" -gt 10000 ] || fail "--stats printed no instruction count: $(cat stats.txt)"
+expect 1 "the render executed more than $((3 * per_frame + 10)) instructions, its draws together" \
+    "$glslrun" "$vs" loop.frag "$scene" --size 32x32 --uniform n=500 --frames 5 --max-instructions $((3 * per_frame + 10)) -o f.png
+[ -e f.0002.png ] && [ ! -e f.0003.png ] || fail "--frames past --max-instructions: frames 0..2 should be written: $(ls)"
+"$glslrun" "$vs" loop.frag "$scene" --size 32x32 --uniform n=500 --frames 3 --max-instructions $((3 * per_frame)) -o g.png \
+    2> /dev/null || fail "three frames within --max-instructions failed"
+expect 2 "--max-instructions" "$glslrun" "$vs" loop.frag "$scene" --max-instructions 0
 
 # Output cut short by a full disk is an error, not a success.
 if [ -w /dev/full ]; then

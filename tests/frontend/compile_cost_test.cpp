@@ -127,6 +127,40 @@ TEST_CASE("compile cost: more distinct calls than the stage's limit are refused 
           std::string::npos);
 }
 
+namespace {
+
+// f0 calls nothing, f<k> calls f<k-1>, main calls f<n-1>: calls nest n deep.
+std::string call_chain(int n) {
+    std::string fs = "uniform float u;\nfloat f0(float x) { return x * 1.5; }\n";
+    for (int k = 1; k < n; ++k)
+        fs += "float f" + std::to_string(k) + "(float x) { return f" + std::to_string(k - 1) + "(x) + 1.0; }\n";
+    return fs + "void main() {\n    gl_FragColor = vec4(f" + std::to_string(n - 1) + "(u));\n}\n";
+}
+
+}  // namespace
+
+TEST_CASE("compile cost: a call chain deeper than the limit is refused at compile time, at the call that crosses it") {
+    // 1000 deep: minutes in LLVM, then "call depth exceeded (recursion?)" from the interpreter at run time.
+    double start = cpu_seconds();
+    std::string e = compile_error(kPassVs, call_chain(1000));
+    INFO(e.substr(0, 300));
+    // main (line 1002) calls f999, ..., f744 (line 746) calls f743: the 257th call.
+    CHECK(e.find("t.frag:746: error: 'f743' : calls nest 1000 deep from main, more than glslrun's limit of 256") !=
+          std::string::npos);
+    CHECK(cpu_seconds() - start < 5);
+    // At the limit: compiles and runs.
+    compile_ok(kPassVs, call_chain(256));
+    CHECK(compile_error(kPassVs, call_chain(257)).find("calls nest 257 deep") != std::string::npos);
+    // A function called along two paths counts by its longest.
+    std::string diamond = call_chain(255);
+    diamond.insert(diamond.find("void main"), "float g(float x) { return f254(x) + f3(x); }\n");
+    diamond.replace(diamond.find("vec4(f254(u))"), 13, "vec4(g(u) + f1(u))");
+    compile_ok(kPassVs, diamond);  // 256 deep: main -> g -> f254 -> ... -> f0
+    diamond.replace(diamond.find("f254(x) + f3(x)"), 15, "f3(x) + h(x)");
+    diamond.insert(diamond.find("float g("), "float h(float x) { return f254(x); }\n");
+    CHECK(compile_error(kPassVs, diamond).find("'f0' : calls nest 257 deep") != std::string::npos);
+}
+
 TEST_CASE("compile cost: 24000 ifs whose condition folds to a constant are spliced in linear time") {
     // fold replaced each such If by its taken branch in place, moving the
     // rest of the block every time: quadratic (16000 took 4.7 s of CPU).

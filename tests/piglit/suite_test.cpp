@@ -104,8 +104,9 @@ TEST_CASE("result lines and TSV", "[piglit][suite]") {
     CHECK(format_result_line("x.frag", {Outcome::Fail, "\nline 3: first\nsecond"}) == "fail  x.frag: line 3: first");
     CHECK(format_result_line("y.vert", {Outcome::Skip, "GLSL ES"}) == "skip  y.vert: GLSL ES");
     CHECK(format_result_line("z.vert", {Outcome::Fail, ""}) == "fail  z.vert");
-    TestResult r{Outcome::Fail, "a\tb\nc", 0.25};
-    CHECK(format_tsv_line("p", r) == "p\tfail\t0.2500\ta b c");
+    TestResult r{Outcome::Fail, "a\tb\nc\\d\r", 0.25};
+    // Escaped as docs/ci.md says: the message reads back whole.
+    CHECK(format_tsv_line("p\tq", r) == "p\\tq\tfail\t0.2500\ta\\tb\\nc\\\\d\\r");
 }
 
 TEST_CASE("parallel runs report in input order with every result", "[piglit][suite]") {

@@ -299,6 +299,12 @@ int program_cli(int argc, char** argv) {
                    "(no image is written); default: none")
         ->type_name("SECONDS")
         ->check(finite_in(1e-3, 1e9));
+    app.add_option("--max-instructions", o.max_instructions,
+                   "stop a render whose shaders execute more than N instructions, all its draws and frames "
+                   "together, with an error and exit status 1 (default 2^36, about 7 minutes of one core; "
+                   "--stats prints a render's count)")
+        ->type_name("N")
+        ->check(CLI::Range(uint64_t(1), UINT64_MAX));
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
     app.add_option("--specialize-after", o.specialize_after,

@@ -1,7 +1,13 @@
-// Splitting a suite into shards, and its results as JUnit XML and JSON for CI.
+// Splitting a suite into shards, and its results as JUnit XML (pugixml) and
+// JSON (nlohmann-json) for CI.
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <sstream>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
 
 #include "piglit_suite.h"
 
@@ -28,66 +34,70 @@ std::optional<std::pair<int, int>> parse_shard(std::string_view text) {
 
 namespace {
 
-std::string xml_escaped(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default:
-            // XML 1.0 has no other control characters; a test's message may hold any byte.
-            if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += '?';
-            else out += c;
-        }
-    }
-    return out;
+using Json = nlohmann::ordered_json;
+
+// Text as XML 1.0 may hold it: invalid UTF-8 becomes U+FFFD (nlohmann's
+// replacing dump), and the control characters XML has no way to write,
+// even as character references, become '?'.
+std::string xml_text(const std::string& s) {
+    std::string valid = Json::parse(Json(s).dump(-1, ' ', false, Json::error_handler_t::replace)).get<std::string>();
+    for (char& c : valid)
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') c = '?';
+    return valid;
 }
 
-std::string json_escaped(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += {'\\', c};
-        else if (c == '\n') out += "\\n";
-        else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int(c));
-        else out += c;
-    }
-    return out;
-}
+std::string seconds(double s) { return fmt::format("{:.4f}", s); }
 
 }  // namespace
 
+// pugixml writes the document and escapes the attributes.
 std::string format_junit(const std::vector<TestCase>& cases, const std::vector<TestResult>& results) {
+    const size_t n = std::min(cases.size(), results.size());
     int failures = 0, skipped = 0;
     double total = 0;
-    std::string body;
-    for (size_t i = 0; i < cases.size() && i < results.size(); ++i) {
-        const TestResult& r = results[i];
-        total += r.seconds;
-        body += fmt::format("  <testcase classname=\"glslrun\" name=\"{}\" time=\"{:.4f}\"", xml_escaped(cases[i].display),
-                            r.seconds);
-        if (r.outcome == Outcome::Pass) {
-            body += "/>\n";
-            continue;
-        }
-        bool fail = r.outcome == Outcome::Fail;
-        (fail ? failures : skipped)++;
-        body += fmt::format(">\n    <{} message=\"{}\"/>\n  </testcase>\n", fail ? "failure" : "skipped",
-                            xml_escaped(r.message));
+    for (size_t i = 0; i < n; ++i) {
+        total += results[i].seconds;
+        failures += results[i].outcome == Outcome::Fail;
+        skipped += results[i].outcome == Outcome::Skip;
     }
-    return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                       "<testsuite name=\"glslrun test\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.4f}\">\n"
-                       "{}</testsuite>\n",
-                       cases.size(), failures, skipped, total, body);
+    pugi::xml_document doc;
+    pugi::xml_node declaration = doc.append_child(pugi::node_declaration);
+    declaration.append_attribute("version") = "1.0";
+    declaration.append_attribute("encoding") = "UTF-8";
+    pugi::xml_node suite = doc.append_child("testsuite");
+    suite.append_attribute("name") = "glslrun test";
+    suite.append_attribute("tests") = static_cast<unsigned long long>(cases.size());
+    suite.append_attribute("failures") = failures;
+    suite.append_attribute("skipped") = skipped;
+    suite.append_attribute("time") = seconds(total).c_str();
+    for (size_t i = 0; i < n; ++i) {
+        const TestResult& r = results[i];
+        pugi::xml_node test = suite.append_child("testcase");
+        test.append_attribute("classname") = "glslrun";
+        test.append_attribute("name") = xml_text(cases[i].display).c_str();
+        test.append_attribute("time") = seconds(r.seconds).c_str();
+        if (r.outcome == Outcome::Pass) continue;
+        pugi::xml_node why = test.append_child(r.outcome == Outcome::Fail ? "failure" : "skipped");
+        why.append_attribute("message") = xml_text(r.message).c_str();
+    }
+    std::ostringstream out;
+    doc.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
+    return out.str();
 }
 
+// A JSON array written by nlohmann-json, one test's object a line (a shell
+// script can grep it); invalid UTF-8 in a name or message becomes U+FFFD.
+// docs/schema/glslrun.schema.json ("test_report") describes it.
 std::string format_json(const std::vector<TestCase>& cases, const std::vector<TestResult>& results) {
     std::string out = "[\n";
-    for (size_t i = 0; i < cases.size() && i < results.size(); ++i)
-        out += fmt::format("  {{\"name\": \"{}\", \"result\": \"{}\", \"time\": {:.4f}, \"message\": \"{}\"}}{}\n",
-                           json_escaped(cases[i].display), outcome_name(results[i].outcome), results[i].seconds,
-                           json_escaped(results[i].message), i + 1 < cases.size() ? "," : "");
+    const size_t n = std::min(cases.size(), results.size());
+    for (size_t i = 0; i < n; ++i) {
+        Json test = {{"name", cases[i].display},
+                     {"result", outcome_name(results[i].outcome)},
+                     {"time", std::round(results[i].seconds * 1e4) / 1e4},
+                     {"message", results[i].message}};
+        out += "  " + test.dump(-1, ' ', false, Json::error_handler_t::replace) + (i + 1 < n ? ",\n" : "\n");
+    }
     return out + "]\n";
 }
 

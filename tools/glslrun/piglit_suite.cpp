@@ -165,10 +165,27 @@ std::string format_result_line(const std::string& display, const TestResult& r) 
     return line;
 }
 
+// A TSV field as docs/ci.md states it: backslash, tab, newline and carriage
+// return written as \\, \t, \n and \r (PostgreSQL's text format), so any
+// message reads back as it was.
+std::string tsv_field(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+        case '\\': out += "\\\\"; break;
+        case '\t': out += "\\t"; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
 std::string format_tsv_line(const std::string& display, const TestResult& r) {
     char secs[32];
     std::snprintf(secs, sizeof secs, "%.4f", r.seconds);
-    return one_line(display) + "\t" + outcome_name(r.outcome) + "\t" + secs + "\t" + one_line(r.message);
+    return tsv_field(display) + "\t" + outcome_name(r.outcome) + "\t" + secs + "\t" + tsv_field(r.message);
 }
 
 // -------------------------------------------------------- expectations ---

@@ -3,6 +3,7 @@
 #include "render_command.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
@@ -289,7 +290,8 @@ std::string format_stats(const Program& prog, const scene::Scene& scene, const D
     // The fused pipeline's fragments, and its share of LLVM's time above.
     fmt::format_to(out, "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
                s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
-    fmt::format_to(out, "instructions {} (ExecOptions::max_draw_instructions bounds each draw)\n", s.instructions);
+    fmt::format_to(out, "instructions {} (ExecOptions::max_draw_instructions bounds each draw, --max-instructions the render)\n",
+                   s.instructions);
     fmt::format_to(out, "time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);
     fmt::format_to(out, "built-in uniforms read   {}", builtin_values(prog, terminal_width()));
@@ -477,6 +479,8 @@ int run_check_undefined(const Inputs& in, const RenderOptions& o, const scene::S
     exec.precision = o.precision;
     exec.backend = o.backend;
     exec.set_time_limit(o.time_limit);
+    exec.max_render_instructions = o.max_instructions;
+    exec.threads = o.threads;
     CompileOptions compile;
     compile.defines = o.defines;
     auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec, fb, compile);
@@ -485,6 +489,15 @@ int run_check_undefined(const Inputs& in, const RenderOptions& o, const scene::S
         if (Status st = write_buffers(fb, output); !st) return fail(st.error(), kToolError);
     std::fputs(scene::format_undefined(*report).c_str(), stdout);
     return 0;
+}
+
+void set_exec_options(Program& prog, const RenderOptions& o) {
+    prog.exec.threads = o.threads;
+    prog.exec.precision = o.precision;
+    prog.exec.backend = o.backend;
+    prog.exec.jit_specialize_after = o.specialize_after;
+    prog.exec.max_render_instructions = o.max_instructions;
+    prog.exec.set_time_limit(o.time_limit);
 }
 
 int render(const Inputs& in, const RenderOptions& o) {
@@ -509,11 +522,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (o.check_undefined) return run_check_undefined(in, o, *scene, *fb, writes_image ? output : "");
     auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
-    prog->exec.threads = o.threads;
-    prog->exec.precision = o.precision;
-    prog->exec.backend = o.backend;
-    prog->exec.jit_specialize_after = o.specialize_after;
-    prog->exec.set_time_limit(o.time_limit);  // before the passes' programs copy it
+    set_exec_options(*prog, o);  // before the passes' programs copy them
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     double compile_ms = ms_since(start);
@@ -557,9 +566,10 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
         return fail(st.error(), kToolError);
     auto prog = compile_program(in, o);
     if (!prog) return fail(prog.error());
-    prog->exec.threads = o.threads;
-    prog->exec.precision = o.precision;
-    prog->exec.set_time_limit(o.time_limit);
+    set_exec_options(*prog, o);
+    // Every frame's draws count toward one render's instructions, as the time limit covers them all.
+    std::atomic<uint64_t> instructions{0};
+    prog->exec.render_instructions = &instructions;
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
     const std::string time = o.time_uniform.empty() ? scene->animation.time_uniform : o.time_uniform;

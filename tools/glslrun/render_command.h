@@ -30,6 +30,9 @@ struct RenderOptions {
     uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
     double time_limit = 0;  // --time-limit SECONDS: the draws' deadline (ExecOptions::deadline); 0: none
     bool check_undefined = false;  // --check-undefined: report GLSL's undefined operations
+    // --max-instructions N: the render's instruction budget, all its draws
+    // and frames together (ExecOptions::max_render_instructions).
+    uint64_t max_instructions = ExecOptions{}.max_render_instructions;
 };
 
 // The files on the command line, sorted by their extensions.

@@ -220,6 +220,17 @@ std::array<LightState, 8> eye_space_lights(const Scene& scene);
 // need it (load_scene and resize_scene call it).
 void derive_eye_space_lights(Scene& scene);
 
+// Sets GL state on a scene as a scene file's sections set it, on top of
+// what the scene holds: `toml_text` holds any of [camera], [lights.N],
+// [light_model], [material], [front_material], [back_material], [current],
+// [state], [fog] and [texture_matrix.N] (docs/scene-format.md), read and
+// checked exactly as in a file; errors name `what` and the line. scene.gl's
+// eye-space copies are derived again. The camera and lights reach every
+// draw; the other sections change the scene's own state, so a scene whose
+// [[passes]] or objects have state of their own refuses them (those draws
+// would not see it). Python's Scene.set_state & co.
+Status update_scene_state(Scene& scene, std::string_view toml_text, const std::string& what);
+
 // Changes the output size (--size) and keeps a perspective camera's aspect
 // ratio equal to width/height when the file gave no explicit aspect.
 Status resize_scene(Scene& scene, int width, int height);
