@@ -28,6 +28,11 @@ Backend effective_backend(Backend requested, Precision precision) {
     return requested == Backend::Interp ? Backend::Interp : Backend::Jit;
 }
 
+Program::JitCompiles Program::jit_compiles() const {
+    if (!valid()) return {};
+    return state_->backends->jit_compiles();
+}
+
 double Program::jit_compile_seconds() const {
     if (!valid()) return 0;  // moved from: nothing compiled
     return state_->backends->jit_compile_seconds() + state_->pipelines->compile_seconds();
@@ -66,19 +71,25 @@ private:
 
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds,
-                                               bool quick_codegen, const std::atomic<bool>* stop) {
+                                               bool quick_codegen, const std::atomic<bool>* stop,
+                                               CodeCacheUse cache) {
     if (llvm_seconds) *llvm_seconds = 0;
+    if (cache.loaded) *cache.loaded = false;
 #ifdef GLSLRUN_HAVE_JIT
     if (backend == Backend::Jit) {
         jit::CompileStats stats;
         stats.stop = stop;
+        stats.cache = cache.config;
+        stats.only_load = cache.only_load;
         std::unique_ptr<CompiledShader> code = jit::compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
         if (llvm_seconds) *llvm_seconds = stats.seconds;
+        if (cache.loaded) *cache.loaded = stats.loaded;
         if (code) return code;
     }
 #else
     (void)backend, (void)precision, (void)fast_ops, (void)avx2, (void)quick_codegen, (void)stop;
 #endif
+    if (cache.only_load) return nullptr;
     return std::make_unique<InterpretedShader>(shader);
 }
 
@@ -103,11 +114,12 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
                           params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
     if (key.backend != Backend::Jit) return st.backends->get(shader, key).instantiate(params);
     key.specialization = st.backends->specialization(shader, st.uniforms, st.uses, program.exec.jit_specialize_after);
-    if (program.exec.backend == Backend::Jit) return st.backends->get(shader, key).instantiate(params);
+    const CodeCacheConfig cache = code_cache_config(program.exec);
+    if (program.exec.backend == Backend::Jit) return st.backends->get(shader, key, &cache).instantiate(params);
     BackendCache::Key interp = key;
     interp.backend = Backend::Interp;
     interp.specialization.clear();
-    return st.backends->auto_executor(shader, key, interp, params);
+    return st.backends->auto_executor(shader, key, interp, params, &cache);
 }
 
 }  // namespace glslrun::rt
