@@ -272,14 +272,13 @@ void print_stats(const Program& prog, const scene::Scene& scene, const DrawStats
                scene.objects.size(), scene.objects.size() == 1 ? "" : "s");
     fmt::print("precision    {}\n", precision_name(prog.exec.precision));
     const Backend backend = effective_backend(prog.exec.backend, prog.exec.precision);
-    const Program::JitCompiles compiles = prog.jit_compiles();
-    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms: {} shader{} compiled, {} loaded from the code "
-               "cache\n",
-               backend_name(backend),
+    fmt::print("backend      {}{}, LLVM compile so far {:.2f} ms\n", backend_name(backend),
                backend == Backend::Jit && prog.exec.backend == Backend::Auto
                    ? " (auto: the interpreter until compiled)" : "",
-               prog.jit_compile_seconds() * 1e3, compiles.compiled, compiles.compiled == 1 ? "" : "s",
-               compiles.loaded);
+               prog.jit_compile_seconds() * 1e3);
+    const Program::JitCompiles compiles = prog.jit_compiles();
+    fmt::print("JIT code     {} shader{} compiled, {} loaded from the code cache\n", compiles.compiled,
+               compiles.compiled == 1 ? "" : "s", compiles.loaded);
     fmt::print("vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     // The fused pipeline's fragments, and its share of LLVM's time above.
     fmt::print("fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
