@@ -91,6 +91,10 @@ class Program:
     threads: int
     precision: str
     backend: str
+    cache_dir: str
+    cache: bool
+    @property
+    def jit_compiles(self) -> dict[str, int]: ...
     max_loop_iterations: int
     max_draw_instructions: int
     max_render_instructions: int
@@ -115,6 +119,8 @@ def render(
     uniforms: dict[str, _Numbers] | None = None,
     backend: str = "auto",
     time_limit: float = 0.0,
+    cache_dir: str = "",
+    cache: bool = True,
 ) -> _Image: ...
 def jit_available() -> bool: ...
 def read_png(path: str) -> _Image: ...

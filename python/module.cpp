@@ -243,6 +243,26 @@ void bind_program(py::module_& m) {
             "Who runs the shaders: \"auto\" (the default: the LLVM JIT where built in), \"jit\" or \"interp\"; "
             "both give the same bits.")
         .def_property(
+            "cache_dir", [](const PyProgram& p) { return p.exec.code_cache_dir; },
+            [](PyProgram& p, const std::string& dir) { p.exec.code_cache_dir = dir; },
+            "The JIT's code cache directory: compiled code kept there is loaded by later programs and runs "
+            "instead of compiling (\"\": $GLSLRUN_CACHE_DIR, else $XDG_CACHE_HOME/glslrun, else "
+            "~/.cache/glslrun).")
+        .def_property(
+            "cache", [](const PyProgram& p) { return p.exec.code_cache; },
+            [](PyProgram& p, bool on) { p.exec.code_cache = on; },
+            "Whether the JIT uses its code cache (False, or GLSLRUN_NO_CACHE=1: never read nor written).")
+        .def_property_readonly(
+            "jit_compiles",
+            [](const PyProgram& p) {
+                const Program::JitCompiles c = p.jit_compiles();
+                py::dict d;
+                d["compiled"] = c.compiled;
+                d["loaded"] = c.loaded;
+                return d;
+            },
+            "The shaders the JIT compiled so far ('compiled') and loaded from the code cache ('loaded').")
+        .def_property(
             "max_loop_iterations", [](const PyProgram& p) { return p.exec.max_loop_iterations; },
             [](PyProgram& p, uint64_t n) { p.exec.max_loop_iterations = n; },
             "The iterations one loop may run before the run stops with an error.")

@@ -112,6 +112,14 @@ void run_interruptibly(ExecOptions& exec, double time_limit, const std::function
 
 namespace {
 
+// An unwritable code cache directory is a warning (compiled code is not kept), never an error.
+void warn_about_code_cache(const ExecOptions& exec) {
+    if (exec.backend == Backend::Interp) return;
+    const CodeCacheStatus status = code_cache_status(exec);
+    if (!status.warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, status.warning.c_str(), 1) < 0)
+        throw py::error_already_set();  // warnings made errors
+}
+
 ExecOptions exec_options(unsigned threads, const std::string& precision, const std::string& backend) {
     ExecOptions o;
     o.threads = threads;
@@ -283,8 +291,11 @@ void bind_scene(py::module_& m) {
         "render",
         [](const std::string& vertex, const std::string& fragment, const std::string& scene_path, unsigned threads,
            const std::string& precision, const py::object& uniforms, const std::string& backend,
-           double time_limit) {
+           double time_limit, const std::string& cache_dir, bool cache) {
             ExecOptions exec = exec_options(threads, precision, backend);
+            exec.code_cache_dir = cache_dir;
+            exec.code_cache = cache;
+            warn_about_code_cache(exec);
             scene::Scene scene = take(scene::load_scene(scene_path));
             scene::override_uniforms(scene, uniform_settings(uniforms, "uniforms"));
             Program program = take(scene::compile_files({vertex}, {fragment}));
@@ -295,11 +306,12 @@ void bind_scene(py::module_& m) {
         },
         py::arg("vertex"), py::arg("fragment"), py::arg("scene"), py::arg("threads") = 0,
         py::arg("precision") = "precise", py::kw_only(), py::arg("uniforms") = py::none(), py::arg("backend") = "auto",
-        py::arg("time_limit") = 0.0,
+        py::arg("time_limit") = 0.0, py::arg("cache_dir") = "", py::arg("cache") = true,
         "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.\n\n"
         "`uniforms` ({name: value}) overrides the scene's [uniforms], as the command line's --uniform does; "
         "`backend` is \"auto\", \"jit\" or \"interp\" (the same bits); time_limit and Ctrl-C as for "
-        "Program.render.");
+        "Program.render. `cache_dir` and `cache`: the JIT's code cache, as Program.cache_dir and Program.cache "
+        "(a directory that cannot be written is a RuntimeWarning).");
     m.def(
         "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"),
         "A PNG as an H x W x 4 uint8 array, top row first.");
@@ -307,6 +319,7 @@ void bind_scene(py::module_& m) {
         "write_png",
         [](const py::object& image, const std::string& path) { check(scene::write_png(to_image(image), path)); },
         py::arg("image"), py::arg("path"), "Writes an H x W x 4 uint8 array as an RGBA8 PNG (lossless).");
+    m.def("jit_available", &jit_available, "Whether this glslrun was built with the LLVM JIT (backend \"jit\").");
     m.def("compare_images", &compare, py::arg("reference"), py::arg("actual"), py::arg("tolerance") = 1,
           "Per-channel differences of two H x W x 4 uint8 images (as glslrun --compare).");
     m.def("error_report", &error_report, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),

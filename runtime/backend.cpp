@@ -24,6 +24,11 @@ Backend effective_backend(Backend requested, Precision precision) {
     return jit ? Backend::Jit : Backend::Interp;
 }
 
+Program::JitCompiles Program::jit_compiles() const {
+    if (!valid()) return {};
+    return state_->backends->jit_compiles();
+}
+
 double Program::jit_compile_seconds() const {
     if (!valid()) return 0;  // moved from: nothing compiled
     return state_->backends->jit_compile_seconds() + state_->pipelines->compile_seconds();
@@ -52,16 +57,22 @@ private:
 
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds,
-                                               bool quick_codegen, const std::atomic<bool>* stop) {
+                                               bool quick_codegen, const std::atomic<bool>* stop,
+                                               CodeCacheUse cache) {
     if (llvm_seconds) *llvm_seconds = 0;
+    if (cache.loaded) *cache.loaded = false;
     const JitEntryPoints* jit = backend == Backend::Jit ? jit_plugin() : nullptr;
     if (jit) {
         jit::CompileStats stats;
         stats.stop = stop;
+        stats.cache = cache.config;
+        stats.only_load = cache.only_load;
         std::unique_ptr<CompiledShader> code = jit->compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
         if (llvm_seconds) *llvm_seconds = stats.seconds;
+        if (cache.loaded) *cache.loaded = stats.loaded;
         if (code) return code;
     }
+    if (cache.only_load) return nullptr;
     return std::make_unique<InterpretedShader>(shader);
 }
 
@@ -86,13 +97,14 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
     } else {
         key.specialization =
             st.backends->specialization(shader, st.uniforms, st.uses, program.exec.jit_specialize_after);
+        const CodeCacheConfig cache = code_cache_config(program.exec);
         if (program.exec.backend == Backend::Jit) {
-            executor = st.backends->get(shader, key).instantiate(params);
+            executor = st.backends->get(shader, key, &cache).instantiate(params);
         } else {
             BackendCache::Key interp = key;
             interp.backend = Backend::Interp;
             interp.specialization.clear();
-            executor = st.backends->auto_executor(shader, key, interp, params);
+            executor = st.backends->auto_executor(shader, key, interp, params, &cache);
         }
     }
     if (st.undef) executor->watch_undefined(st.undef);

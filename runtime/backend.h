@@ -116,16 +116,30 @@ public:
     virtual std::unique_ptr<Executor> instantiate(const ExecParams& params) const = 0;
 };
 
+struct CodeCacheConfig;  // runtime/code_cache.h
+
+// How a JIT compile uses the code cache (runtime/code_cache.h). `config`
+// null or without a directory: not at all. `only_load`: the cached code or
+// nothing (null), never an LLVM compile. *loaded (may be null): whether the
+// code came from the cache.
+struct CodeCacheUse {
+    const CodeCacheConfig* config = nullptr;
+    bool only_load = false;
+    bool* loaded = nullptr;
+};
+
 // `shader` compiled by `backend` (Interp or Jit) for `precision`,
 // `fast_ops` and the vector ISA (`avx2`, else baseline x86-64). The JIT
 // declines what it cannot take (Reference, a recursive call graph, calls
 // that expand to too much code, a build without it): the interpreter then serves, with the same bits.
 // *llvm_seconds (may be null) receives LLVM's compile time; `quick_codegen`:
 // ExecOptions::jit_quick_codegen; `stop` (may be null): the JIT gives up
-// between its phases once it is set (the interpreter then serves).
+// between its phases once it is set (the interpreter then serves); `cache`:
+// the code cache, and with only_load, null where it has no code.
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr,
-                                               bool quick_codegen = false, const std::atomic<bool>* stop = nullptr);
+                                               bool quick_codegen = false, const std::atomic<bool>* stop = nullptr,
+                                               CodeCacheUse cache = {});
 
 // How the JIT would compile `shader` (runtime/jit/jit.h: plan_compile; not
 // at all without the JIT).

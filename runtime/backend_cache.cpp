@@ -8,6 +8,7 @@
 
 #include "ir/passes.h"
 #include "runtime/compile_queue.h"
+#include "runtime/jit_plugin.h"
 
 namespace glslrun::rt {
 
@@ -69,11 +70,12 @@ uint64_t expected_compile_nanos(const ir::Shader& shader, bool quick_codegen) {
 
 }  // namespace
 
-std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, const Key& key, double* seconds,
-                                                      const std::atomic<bool>* stop) {
+std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, const Key& key, Made* made,
+                                                      const std::atomic<bool>* stop, CodeCacheUse cache) {
+    cache.loaded = &made->loaded;
     if (key.specialization.empty())
-        return compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, seconds, key.quick_codegen,
-                              stop);
+        return compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &made->seconds,
+                              key.quick_codegen, stop, cache);
     const std::vector<uint32_t> read = ir::uniform_words_read(shader);
     std::vector<uint32_t> store(read.empty() ? 0 : read.back() + 1);
     for (size_t i = 0; i < read.size(); ++i) store[read[i]] = key.specialization[i];
@@ -81,10 +83,17 @@ std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, 
     const uint32_t approximated = key.precision == Precision::Fast ? key.fast_ops : 0;
     if (!ir::specialize(*specialized, store, approximated).empty()) *specialized = shader;  // a bug: unspecialized
     auto owner = std::make_unique<OwningShader>();
-    owner->code = compile_shader(*specialized, key.backend, key.precision, key.fast_ops, key.avx2, seconds,
-                                 key.quick_codegen, stop);
+    owner->code = compile_shader(*specialized, key.backend, key.precision, key.fast_ops, key.avx2, &made->seconds,
+                                 key.quick_codegen, stop, cache);
+    if (!owner->code) return nullptr;  // only_load, and not in the cache
     owner->shader = std::move(specialized);
     return owner;
+}
+
+void BackendCache::count(const Made& made) {
+    jit_compile_seconds_ += made.seconds;
+    if (made.loaded) ++compiles_.loaded;
+    else if (made.seconds > 0) ++compiles_.compiled;
 }
 
 const CompiledShader* BackendCache::ready(const Key& key) const {
@@ -92,59 +101,81 @@ const CompiledShader* BackendCache::ready(const Key& key) const {
     return found == shaders_.end() ? nullptr : found->second.get();
 }
 
-const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key) {
+const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache) {
     std::lock_guard lock(mutex_);
     std::unique_ptr<CompiledShader>& slot = shaders_[key];
     if (!slot) {
-        double seconds = 0;
-        slot = compile(shader, key, &seconds);
-        jit_compile_seconds_ += seconds;
+        Made made;
+        slot = compile(shader, key, &made, nullptr, {cache});
+        count(made);
     }
     return *slot;
 }
 
-void BackendCache::queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock) {
+void BackendCache::queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock,
+                         const CodeCacheConfig* cache) {
     if (queued_[key]) return;
     queued_[key] = true;
     std::weak_ptr<BackendCache> self = weak_from_this();
     auto copy = std::make_shared<const ir::Shader>(shader);
-    auto job = [self, copy, key] {
+    auto config = std::make_shared<const CodeCacheConfig>(cache ? *cache : CodeCacheConfig{});
+    auto job = [self, copy, key, config] {
         if (self.expired()) return;  // the program is gone
-        double seconds = 0;
+        Made made;
         auto owner = std::make_unique<OwningShader>();
-        owner->code = compile(*copy, key, &seconds, &compiles_stopping());
+        owner->code = compile(*copy, key, &made, &compiles_stopping(), {config.get()});
         owner->shader = copy;
         std::shared_ptr<BackendCache> cache = self.lock();
         if (!cache || compiles_stopping().load()) return;
         std::lock_guard hold(cache->mutex_);
         std::unique_ptr<CompiledShader>& slot = cache->shaders_[key];
         if (!slot) slot = std::move(owner);
-        cache->jit_compile_seconds_ += seconds;
+        cache->count(made);
     };
     if (!self.expired() && submit_compile(job)) return;
     lock.unlock();  // no compile thread to be had (or a cache outside a Program): compile here
-    double seconds = 0;
-    std::unique_ptr<CompiledShader> code = compile(shader, key, &seconds);
+    Made made;
+    std::unique_ptr<CompiledShader> code = compile(shader, key, &made, nullptr, {cache});
     lock.lock();
     std::unique_ptr<CompiledShader>& slot = shaders_[key];
     if (!slot) slot = std::move(code);
-    jit_compile_seconds_ += seconds;
+    count(made);
+}
+
+// The stage's JIT code from the code cache, at its first draw: where there
+// is some, the JIT serves from the start (no interpreted warm-up, no compile).
+// Only once the JIT's plugin is loaded: loading LLVM costs more than a short
+// render interprets; a longer one loads it when its compile is due, and
+// then finds its code in the cache.
+bool BackendCache::probe(const ir::Shader& shader, const Key& plain, const CodeCacheConfig* cache) {
+    Meter& meter = meters_[size_t(plain.stage)];
+    if (meter.probed || !cache || cache->dir.empty() || !jit_plugin_loaded()) return false;
+    meter.probed = true;
+    Made made;
+    std::unique_ptr<CompiledShader> code = compile(shader, plain, &made, nullptr, {cache, true});
+    count(made);
+    if (!code || !made.loaded) return false;
+    shaders_[plain] = std::move(code);
+    queued_[plain] = true;
+    meter.queued.store(true);
+    return true;
 }
 
 std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, const Key& key, const Key& interp,
-                                                      const ExecParams& params) {
+                                                      const ExecParams& params, const CodeCacheConfig* cache) {
     Meter& meter = meters_[size_t(key.stage)];
     const int chosen = meter.choice.load(std::memory_order_relaxed);
     if (chosen == int(Backend::Interp)) return get(shader, interp).instantiate(params);
     std::unique_lock lock(mutex_);
     Key plain = key;
     plain.specialization.clear();
+    if (!meter.queued.load()) probe(shader, plain, cache);
     const CompiledShader* jit = ready(plain);
     if (jit && !key.specialization.empty() && chosen == int(Backend::Jit)) {
         // The JIT won: specialize as ExecOptions::jit_specialize_after asks,
         // with the unspecialized code meanwhile.
         if (const CompiledShader* specialized = ready(key)) jit = specialized;
-        else queue(shader, key, lock);
+        else queue(shader, key, lock, cache);
     }
     if (jit) {
         std::unique_ptr<Executor> code = jit->instantiate(params);
@@ -155,6 +186,12 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
         if (chosen == int(Backend::Jit)) return code;
         const uint64_t jit_nanos = meter.nanos[1].load(), interp_nanos = meter.nanos[0].load();
         if (jit_nanos < kMeasureNanos) return std::make_unique<TimedExecutor>(std::move(code), meter);
+        if (interp_nanos < kMeasureNanos) {
+            // Code from the cache (or a tiny stage's) ran before the
+            // interpreter had run as long: time the interpreter too.
+            lock.unlock();
+            return std::make_unique<TimedExecutor>(get(shader, interp).instantiate(params), meter);
+        }
         // Per lane: jit_nanos / jit_lanes against interp_nanos / interp_lanes.
         const long double jit_cost = (long double)jit_nanos * (long double)meter.lanes[0].load(),
                           interp_cost = (long double)interp_nanos * (long double)meter.lanes[1].load();
@@ -170,10 +207,10 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
             meter.choice.store(int(Backend::Interp));  // the JIT does not take it
         } else if (meter.nanos[0].load() >= meter.expected_nanos) {
             meter.queued.store(true);
-            queue(shader, plain, lock);
+            queue(shader, plain, lock, cache);
             if (ready(plain)) {  // compiled here, without a thread
                 lock.unlock();
-                return auto_executor(shader, key, interp, params);
+                return auto_executor(shader, key, interp, params, cache);
             }
         }
     }
@@ -202,6 +239,11 @@ std::vector<uint32_t> BackendCache::specialization(const ir::Shader& shader, con
 double BackendCache::jit_compile_seconds() const {
     std::lock_guard lock(mutex_);
     return jit_compile_seconds_;
+}
+
+Program::JitCompiles BackendCache::jit_compiles() const {
+    std::lock_guard lock(mutex_);
+    return compiles_;
 }
 
 }  // namespace glslrun::rt

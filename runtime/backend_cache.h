@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "runtime/backend.h"
+#include "runtime/code_cache.h"
 
 namespace glslrun::rt {
 
@@ -46,15 +47,18 @@ public:
     ~BackendCache() = default;  // waits for nothing: queued compiles find it gone
 
     // The code for `key`, compiled now where it is not yet (a JIT key waits
-    // for LLVM).
-    const CompiledShader& get(const ir::Shader& shader, const Key& key);
+    // for LLVM, or loads the code from `cache`, which may be null).
+    const CompiledShader& get(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache = nullptr);
     // Backend::Auto: an executor of `key`'s JIT code where the policy above
     // has chosen it, else of the interpreter's; `interp` is the same key for
-    // the interpreter.
+    // the interpreter. Where `cache` (may be null) holds the stage's code,
+    // the JIT serves from the first draw.
     std::unique_ptr<Executor> auto_executor(const ir::Shader& shader, const Key& key, const Key& interp,
-                                            const ExecParams& params);
+                                            const ExecParams& params, const CodeCacheConfig* cache = nullptr);
     // Seconds LLVM spent compiling this program's shaders so far.
     double jit_compile_seconds() const;
+    // Its shaders compiled by LLVM so far, and loaded from the code cache.
+    Program::JitCompiles jit_compiles() const;
     // The specialization policy (ExecOptions::jit_specialize_after): the
     // words of `store` that `shader` reads once the draws numbered `use`
     // (Program::State::uses) have seen them unchanged `after` times in a
@@ -67,6 +71,7 @@ public:
     struct Meter {
         std::atomic<uint64_t> nanos[2] = {}, lanes[2] = {};  // by Backend::Interp, Backend::Jit
         std::atomic<bool> queued{false};  // the JIT's compile is queued or done
+        bool probed = false;  // the code cache was asked for the stage's code (under the cache's lock)
         std::atomic<int> choice{-1};      // the backend kept, once measured; -1 while measuring
         static constexpr uint64_t kUnknown = ~uint64_t(0);
         uint64_t expected_nanos = kUnknown;  // LLVM's expected time (0: not taken); under the cache's lock
@@ -75,12 +80,22 @@ public:
     Meter& meter(ir::Stage stage) { return meters_[size_t(stage)]; }
 
 private:
-    // Runs unlocked; the caller stores the code and its LLVM seconds.
-    static std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, const Key& key, double* seconds,
-                                                   const std::atomic<bool>* stop = nullptr);
+    // What a compile made besides its code.
+    struct Made {
+        double seconds = 0;   // LLVM's
+        bool loaded = false;  // from the code cache
+    };
+    // Runs unlocked; the caller stores the code and count()s what it made.
+    static std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, const Key& key, Made* made,
+                                                   const std::atomic<bool>* stop = nullptr, CodeCacheUse cache = {});
+    void count(const Made& made);  // with the lock held
+    // Backend::Auto's first draw of a stage: its code from `cache` (with the
+    // lock held); false where it has none.
+    bool probe(const ir::Shader& shader, const Key& plain, const CodeCacheConfig* cache);
     // Queues `key`'s compile on the compile thread (or compiles it here where
     // there is none). Called with the lock held.
-    void queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock);
+    void queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock,
+               const CodeCacheConfig* cache);
     const CompiledShader* ready(const Key& key) const;  // with the lock held
     struct Streak {
         bool surveyed = false;
@@ -96,6 +111,7 @@ private:
     std::map<Key, std::unique_ptr<CompiledShader>> shaders_;
     std::map<Key, bool> queued_;  // keys whose background compile was queued
     double jit_compile_seconds_ = 0;
+    Program::JitCompiles compiles_;
 };
 
 }  // namespace glslrun::rt

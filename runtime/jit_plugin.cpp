@@ -74,8 +74,18 @@ Loaded load() {
     return {points, {}};
 }
 
+// Set once the plugin has loaded: the one fact about it that changes.
+std::atomic<bool>& loaded_flag() {
+    static std::atomic<bool> flag{false};
+    return flag;
+}
+
 const Loaded& loaded() {
-    static const Loaded once = load();  // thread-safe; the plugin stays for the process
+    static const Loaded once = [] {  // thread-safe; the plugin stays for the process
+        Loaded l = load();
+        loaded_flag().store(l.entry != nullptr);
+        return l;
+    }();
     return once;
 }
 #endif
@@ -95,6 +105,14 @@ std::string jit_plugin_error() {
     return loaded().error;
 #else
     return "this glslrun was built without the JIT";
+#endif
+}
+
+bool jit_plugin_loaded() {
+#ifdef GLSLRUN_HAVE_JIT
+    return loaded_flag().load();
+#else
+    return false;
 #endif
 }
 

@@ -48,6 +48,11 @@ std::string jit_plugin_error();
 // Whether a plugin file is there, without loading it: what Backend::Auto
 // needs to know before its first draw.
 bool jit_plugin_present();
+// Whether the plugin is loaded already (by a compile, or jit_available()),
+// without loading it: Backend::Auto asks the code cache at a stage's first
+// draw only then, since loading LLVM (14 ms of CPU) costs a short render
+// more than interpreting it.
+bool jit_plugin_loaded();
 
 }  // namespace glslrun::rt
 

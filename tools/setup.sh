@@ -49,10 +49,17 @@ demo)
 test)
     # The IR verifier after every pass, in every run below (ctest sets it for its tests too).
     export GLSLRUN_VERIFY=1
+    # The JIT's code cache of every run below: a directory of this run's own,
+    # never the user's (ctest gives each of its tests one of its own).
+    GLSLRUN_CACHE_DIR=$(mktemp -d "${TMPDIR:-/tmp}/glslrun-ci-cache.XXXXXX")
+    export GLSLRUN_CACHE_DIR
+    trap 'rm -rf "$GLSLRUN_CACHE_DIR"' EXIT
     (cd build && ctest --output-on-failure -j "$(nproc)")
     # Under the JIT (built in here): --backend auto would run most tests' few
     # draws on the interpreter while LLVM compiles (ctest runs the language
     # suite on both backends, and backend_identical compares their images).
+    GLSLRUN=build/glslrun bash tools/piglit_suite.sh --backend jit
+    # Again, every program's code now loaded from the code cache: the same results.
     GLSLRUN=build/glslrun bash tools/piglit_suite.sh --backend jit
     GLSLRUN=build/glslrun bash tools/piglit_suite.sh --backend interp
     # Images must not depend on the interpreter's batch width: build glslrun

@@ -206,7 +206,31 @@ struct ExecOptions {
     // Backend::Auto draws with the unspecialized code while the specialized
     // one compiles; Backend::Jit waits for it.
     uint32_t jit_specialize_after = 0;
+    // The JIT's code cache on disk (docs/performance.md, "The code cache"):
+    // machine code compiled once is stored there and loaded by later
+    // programs and processes instead of compiling again (same bits). False,
+    // or GLSLRUN_NO_CACHE=1 in the environment: neither read nor written.
+    bool code_cache = true;
+    // Its directory; empty: $GLSLRUN_CACHE_DIR, else $XDG_CACHE_HOME/glslrun,
+    // else ~/.cache/glslrun. One that cannot be written is only read.
+    std::string code_cache_dir;
+    // Its size cap in bytes (docs/limits.md); 0: $GLSLRUN_CACHE_MAX_SIZE
+    // (bytes, or with a K, M or G suffix), else 256 MiB.
+    uint64_t code_cache_max_bytes = 0;
 };
+
+// The code cache that `options` use (ExecOptions::code_cache*).
+struct CodeCacheStatus {
+    bool enabled = false;  // a directory is set and the JIT is built in
+    std::string dir;
+    uint64_t max_bytes = 0;
+    // Empty, or why the cache is not fully usable (a directory that cannot
+    // be written: compiled code is then not stored; a bad
+    // GLSLRUN_CACHE_MAX_SIZE): a warning to show, never an error.
+    std::string warning;
+};
+// Creates the directory where it is missing.
+CodeCacheStatus code_cache_status(const ExecOptions& options);
 
 enum class Stage { Vertex, Fragment };
 
@@ -278,6 +302,13 @@ public:
     ExecOptions exec;
     // Seconds LLVM has spent compiling this program's shaders (0 without the JIT).
     double jit_compile_seconds() const;
+    // The program's shaders the JIT compiled with LLVM so far, and those whose
+    // code it loaded from the code cache instead (ExecOptions::code_cache).
+    struct JitCompiles {
+        uint32_t compiled = 0;
+        uint32_t loaded = 0;
+    };
+    JitCompiles jit_compiles() const;
     std::string dump_ir() const;  // the IR printer's text for both stages
 
     struct State;  // the IR and the uniform store: runtime/program_state.h

@@ -259,3 +259,28 @@ def test_check_undefined_as_dicts():
     clean = glslrun.check_undefined(path("tests", "undefined", "quad.vert"), path("tests", "undefined", "none.frag"),
                                     path("tests", "undefined", "undefined.toml"))
     assert clean == []
+
+
+def test_code_cache(tmp_path):
+    """The JIT's code cache: a second program compiles nothing and renders the same bits;
+    an unwritable directory is a RuntimeWarning, not an error."""
+    if not glslrun.jit_available():
+        pytest.skip("built without the JIT")
+    scene = glslrun.Scene.parse("[output]\nsize = [32, 32]\n[[objects]]\nmesh = \"quad\"\n",
+                                path("scenes", "inline.toml"))
+    images, counts = [], []
+    for _ in range(2):
+        program = glslrun.Program.from_files(path("shaders", "colors.vert"), path("shaders", "colors.frag"))
+        program.backend = "jit"
+        program.cache_dir = str(tmp_path / "cache")
+        assert program.cache
+        images.append(program.render(scene))
+        counts.append(program.jit_compiles)
+    assert counts[0]["compiled"] > 0 and counts[0]["loaded"] == 0
+    assert counts[1] == {"compiled": 0, "loaded": counts[0]["compiled"]}
+    np.testing.assert_array_equal(images[0], images[1])
+    blocker = tmp_path / "file"
+    blocker.write_text("not a directory")
+    with pytest.warns(RuntimeWarning, match="cannot be written"):
+        image = glslrun.render(*SPOT, backend="jit", cache_dir=str(blocker / "cache"))
+    np.testing.assert_array_equal(image, glslrun.render(*SPOT, backend="interp", cache=False))

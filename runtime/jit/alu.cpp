@@ -344,8 +344,8 @@ void Emitter::emit_call_out(const ir::Instr& in) {
     ir::flow::for_each_read(node, sync);
     ir::flow::for_each_write(in, sync);
     auto* type = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, ptr_, i64_, i64_}, false);
-    auto* callee = llvm::ConstantExpr::getIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&run_call_out)), ptr_);
-    b_.CreateCall(type, callee, {ctx_arg_, regs_, b_.getInt64(call_outs_.size() - 1), load_mask(exec_)});
+    llvm::FunctionCallee callee = module_.getOrInsertFunction(kRunCallOutSymbol, type);
+    b_.CreateCall(callee, {ctx_arg_, regs_, b_.getInt64(call_outs_.size() - 1), load_mask(exec_)});
     for (ir::Reg r : synced)
         b_.CreateStore(b_.CreateAlignedLoad(vi32_, file_ptr(r), llvm::Align(kRegAlign)), locals_[r]);
 }

@@ -64,6 +64,13 @@ using ShaderFn = int32_t (*)(Context* ctx, uint32_t* regs, const uint32_t* unifo
 // (register reg_count is the zero register).
 Step<uint32_t> call_out_step(const CallOut& call, uint32_t* regs, uint32_t reg_count);
 
+// The names by which generated code calls run_call_out and charge_slowly
+// (defined in each Engine's LLJIT): never their addresses, which differ from
+// process to process, so that the code cache's machine code can be loaded
+// by another process.
+inline constexpr const char* kRunCallOutSymbol = "glslrun_run_call_out";
+inline constexpr const char* kChargeSlowlySymbol = "glslrun_charge_slowly";
+
 // Runs the `index`-th call-out's kernel on the lanes in `exec` (a plain C++
 // function whose address the generated code holds). `regs`, the register
 // file that the call-out's Step points into, is passed so that LLVM knows

@@ -147,8 +147,8 @@ void Emitter::charge(uint64_t instructions) {
     b_.CreateCondBr(b_.CreateICmpUGT(b_.getInt64(instructions), credit), slow, charged);
     b_.SetInsertPoint(slow);
     auto* type = llvm::FunctionType::get(i32_, {ptr_, i64_, i64_}, false);
-    auto* callee = llvm::ConstantExpr::getIntToPtr(b_.getInt64(reinterpret_cast<uint64_t>(&charge_slowly)), ptr_);
-    llvm::Value* failure = b_.CreateCall(type, callee, {ctx_arg_, credit, b_.getInt64(instructions)});
+    llvm::FunctionCallee callee = module_.getOrInsertFunction(kChargeSlowlySymbol, type);
+    llvm::Value* failure = b_.CreateCall(callee, {ctx_arg_, credit, b_.getInt64(instructions)});
     b_.CreateStore(failure, budget_failure_);
     b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCreditOffset)), credit_);
     b_.CreateCondBr(b_.CreateICmpNE(failure, b_.getInt32(0)), over_budget_, charged);

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <string>
 
+#include <llvm/ExecutionEngine/ObjectCache.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/IR/Module.h>
@@ -25,9 +26,15 @@ namespace glslrun::rt::jit {
 // concurrent use; tiering compiles in the background anyway.
 struct Engine {
     std::mutex lock;
-    std::unique_ptr<llvm::TargetMachine> machine;  // for the optimization passes
+    std::unique_ptr<llvm::TargetMachine> machine;  // for the optimization passes and code generation
     std::unique_ptr<llvm::orc::LLJIT> jit;
     uint64_t modules = 0;  // names them apart
+    // What every code cache key of this engine's code holds
+    // (runtime/code_cache.h): glslrun's build ID, LLVM's version, the
+    // target, its CPU features and code-generation level, the batch width.
+    // Empty where the binary has no build ID: no cache then, since code
+    // from another build of the same version could be loaded.
+    std::string cache_salt;
 
     // Null where LLVM could not make it. `quick`: ExecOptions::jit_quick_codegen.
     static Engine* of(bool avx2, bool quick);
@@ -45,7 +52,9 @@ private:
     void make(llvm::orc::JITTargetMachineBuilder target);
 };
 
-// One module's code in an Engine's LLJIT; the code goes when this does.
+// One module's code in an Engine's LLJIT, in a JITDylib of its own (so
+// that code loaded from the code cache, whose names were chosen by another
+// process, meets no other module's names); the code goes when this does.
 // Its destructor takes the engine's lock, so an owner is made before the
 // lock is taken and never destroyed under it.
 class EngineCode {
@@ -57,14 +66,25 @@ public:
     // Adds `made` (verified and optimised) to `engine`'s LLJIT, under its
     // lock; false where LLVM failed.
     bool add(Engine& engine, Engine::NewModule made);
-    // The address of the module's function `name`; null where absent.
+    // Adds machine code (compile_object's, or the code cache's) whose
+    // functions' names have no suffix, under the lock; false where LLVM
+    // refused it.
+    bool add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> object);
+    // The address of the module's function `name`; null where absent (or
+    // where its object could not be linked).
     void* lookup(const std::string& name) const;
 
 private:
+    void open(Engine& engine);
     Engine* engine_ = nullptr;
-    llvm::orc::ResourceTrackerSP tracker_;
+    llvm::orc::JITDylib* dylib_ = nullptr;
     std::string suffix_;
 };
+
+// `module`'s machine code for `engine`'s target, under its lock; null where
+// LLVM failed. `cache` (may be null): LLVM's object cache, told of the code
+// (runtime/jit/cached_shader.cpp stores it on disk).
+std::unique_ptr<llvm::MemoryBuffer> compile_object(Engine& engine, llvm::Module& module, llvm::ObjectCache* cache);
 
 // LLVM's native target, registered once per process.
 void initialise_llvm();

@@ -26,6 +26,11 @@ struct CompileStats {
     // In: a background compile gives up (null code) once this is set,
     // checked between its phases (runtime/compile_queue.h).
     const std::atomic<bool>* stop = nullptr;
+    // In: the code cache (may be null), read before any LLVM work and
+    // written after a compile; `only_load`: null code rather than a compile.
+    const CodeCacheConfig* cache = nullptr;
+    bool only_load = false;
+    bool loaded = false;  // out: the code came from the cache
 };
 
 // How the JIT would compile `shader`, from its size with calls written out

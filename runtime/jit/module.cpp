@@ -27,7 +27,12 @@
 #include <llvm/Support/Host.h>
 #include <llvm/Support/TargetSelect.h>
 
+#include <fmt/format.h>
+#include <llvm/Config/llvm-config.h>
+#include <llvm/ExecutionEngine/Orc/CompileUtils.h>
+
 #include "runtime/aligned_words.h"
+#include "runtime/jit/cached_shader.h"
 #include "runtime/jit/codegen.h"
 #include "runtime/jit/engine.h"
 
@@ -76,26 +81,49 @@ Engine::NewModule Engine::new_module(const char* name) {
 }
 
 EngineCode::~EngineCode() {
-    if (!tracker_) return;
+    if (!dylib_) return;
     std::lock_guard hold(engine_->lock);
-    llvm::consumeError(tracker_->remove());
+    llvm::consumeError(engine_->jit->getExecutionSession().removeJITDylib(*dylib_));
+}
+
+// A JITDylib of this code's own, which finds the call-outs and the process's
+// symbols (libm's) in the engine's main one.
+void EngineCode::open(Engine& engine) {
+    engine_ = &engine;
+    dylib_ = &engine.jit->getExecutionSession().createBareJITDylib("code_" + std::to_string(engine.modules++));
+    dylib_->addToLinkOrder(engine.jit->getMainJITDylib());
 }
 
 bool EngineCode::add(Engine& engine, Engine::NewModule made) {
-    engine_ = &engine;
+    open(engine);
     suffix_ = std::move(made.suffix);
-    tracker_ = engine.jit->getMainJITDylib().createResourceTracker();
-    auto err = engine.jit->addIRModule(tracker_, llvm::orc::ThreadSafeModule(std::move(made.module),
-                                                                             std::move(made.context)));
+    auto err = engine.jit->addIRModule(*dylib_, llvm::orc::ThreadSafeModule(std::move(made.module),
+                                                                            std::move(made.context)));
+    if (!err) return true;
+    llvm::consumeError(std::move(err));
+    return false;
+}
+
+bool EngineCode::add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> object) {
+    open(engine);
+    auto err = engine.jit->addObjectFile(*dylib_, std::move(object));
     if (!err) return true;
     llvm::consumeError(std::move(err));
     return false;
 }
 
 void* EngineCode::lookup(const std::string& name) const {
-    auto symbol = engine_->jit->lookup(name + suffix_);
+    auto symbol = engine_->jit->lookup(*dylib_, name + suffix_);
     if (symbol) return symbol->toPtr<void*>();
     llvm::consumeError(symbol.takeError());
+    return nullptr;
+}
+
+std::unique_ptr<llvm::MemoryBuffer> compile_object(Engine& engine, llvm::Module& module, llvm::ObjectCache* cache) {
+    llvm::orc::SimpleCompiler compiler(*engine.machine, cache);
+    auto object = compiler(module);
+    if (object) return std::move(*object);
+    llvm::consumeError(object.takeError());
     return nullptr;
 }
 
@@ -116,9 +144,25 @@ void Engine::make(llvm::orc::JITTargetMachineBuilder target) {
         return;
     }
     (*built)->getMainJITDylib().addGenerator(std::move(*process));
+    const llvm::JITSymbolFlags callable = llvm::JITSymbolFlags::Exported | llvm::JITSymbolFlags::Callable;
+    auto defined = (*built)->getMainJITDylib().define(llvm::orc::absoluteSymbols(
+        {{(*built)->mangleAndIntern(kRunCallOutSymbol),
+          llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(&run_call_out), callable)},
+         {(*built)->mangleAndIntern(kChargeSlowlySymbol),
+          llvm::JITEvaluatedSymbol(llvm::pointerToJITTargetAddress(&charge_slowly), callable)}}));
+    if (defined) {
+        llvm::consumeError(std::move(defined));
+        return;
+    }
     if (std::getenv("GLSLRUN_JIT_PERF"))
         if (auto* rtdyld = llvm::dyn_cast<llvm::orc::RTDyldObjectLinkingLayer>(&(*built)->getObjLinkingLayer()))
             rtdyld->registerJITEventListener(*llvm::JITEventListener::createPerfJITEventListener());
+    const std::string build = glslrun_build_id();
+    if (!build.empty())
+        cache_salt = fmt::format("glslrun {} build {} llvm {} target {} cpu {} features {} opt {} lanes {}",
+                                 GLSLRUN_VERSION_STRING, build, LLVM_VERSION_STRING, (*tm)->getTargetTriple().str(),
+                                 (*tm)->getTargetCPU().str(), (*tm)->getTargetFeatureString().str(),
+                                 int((*tm)->getOptLevel()), kLanes);
     machine = std::move(*tm);
     jit = std::move(*built);
 }
@@ -221,6 +265,30 @@ std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const
     return std::make_unique<JitExecutor>(*this, params);
 }
 
+// Links `object` into `code` and finds its two functions; false where LLVM refused it.
+bool link(Engine& engine, JitShader& code, std::unique_ptr<llvm::MemoryBuffer> object) {
+    if (!object || !code.code.add_object(engine, std::move(object))) return false;
+    code.main = reinterpret_cast<ShaderFn>(code.code.lookup("glslrun_main"));
+    code.prologue = reinterpret_cast<ShaderFn>(code.code.lookup("glslrun_prologue"));
+    return code.main && code.prologue;
+}
+
+// `shader`'s code from the code cache; null where it has none (or none
+// that links: it is then compiled and stored anew).
+std::unique_ptr<JitShader> load(Engine& engine, const DiskCache& disk, const CodeKey& key, const ir::Shader& shader,
+                                Precision precision, uint32_t fast_ops, bool avx2) {
+    std::optional<std::string> payload = disk.load(key);
+    if (!payload) return nullptr;
+    std::optional<CachedShader> cached = parse_cached_shader(*payload, precision, fast_ops, avx2);
+    if (!cached) return nullptr;
+    auto code = std::make_unique<JitShader>();  // before the lock: its destructor takes it
+    std::lock_guard hold(engine.lock);
+    code->reg_count = uint32_t(shader.regs.size());
+    code->call_outs = std::move(cached->call_outs);
+    if (link(engine, *code, std::move(cached->object))) return code;
+    return nullptr;
+}
+
 }  // namespace
 
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
@@ -232,16 +300,29 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     const double start = thread_cpu_seconds();
     Engine* engine = Engine::of(avx2, quick_codegen);
     if (!engine) return nullptr;
+    std::optional<DiskCache> disk;
+    std::optional<CodeKey> key;
+    if (stats && stats->cache && !stats->cache->dir.empty()) key = shader_key(*engine, shader, precision, fast_ops);
+    if (key) {
+        disk.emplace(*stats->cache);
+        if (auto loaded = load(*engine, *disk, *key, shader, precision, fast_ops, avx2)) {
+            stats->loaded = true;
+            stats->seconds = thread_cpu_seconds() - start;
+            return loaded;
+        }
+    }
+    if (stats && stats->only_load) return nullptr;
     auto code = std::make_unique<JitShader>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);
     code->reg_count = uint32_t(shader.regs.size());
 
+    // Its own names, without a suffix: the code lives in a JITDylib of its own (EngineCode).
     Engine::NewModule made = engine->new_module("shader");
     llvm::Module& module = *made.module;
     {
         Emitter emitter(*made.context, module, shader, precision, fast_ops, avx2, code->call_outs);
-        emitter.define("glslrun_main" + made.suffix, shader.body);
-        emitter.define("glslrun_prologue" + made.suffix, shader.prologue);
+        emitter.define("glslrun_main", shader.body);
+        emitter.define("glslrun_prologue", shader.prologue);
     }
     if (stopped() || llvm::verifyModule(module, &llvm::errs())) return nullptr;
     // GLSLRUN_JIT_DUMP=1 prints the module before and after optimization (a debugging aid).
@@ -250,11 +331,10 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     optimise(module, *engine->machine);
     if (dump) module.print(llvm::errs(), nullptr);
     if (stopped()) return nullptr;
-    if (!code->code.add(*engine, std::move(made))) return nullptr;
-    code->main = reinterpret_cast<ShaderFn>(code->code.lookup("glslrun_main"));
-    if (!code->main || stopped()) return nullptr;
-    code->prologue = reinterpret_cast<ShaderFn>(code->code.lookup("glslrun_prologue"));
-    if (!code->prologue) return nullptr;
+    std::optional<ShaderCacheWriter> writer;
+    if (key) writer.emplace(*disk, *key, code->call_outs);
+    if (!link(*engine, *code, compile_object(*engine, module, writer ? &*writer : nullptr)) || stopped())
+        return nullptr;
     if (stats) stats->seconds = thread_cpu_seconds() - start;
     return code;
 }

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -33,6 +35,24 @@ void add_backend_option(CLI::App& app, Backend& backend) {
             if (*parsed == Backend::Jit && !jit_available()) return rt::jit_plugin_error();
             return std::string();
         });
+}
+
+void add_code_cache_options(CLI::App& app) {
+    app.add_option_function<std::string>(
+           "--cache-dir", [](const std::string& dir) { ::setenv("GLSLRUN_CACHE_DIR", dir.c_str(), 1); },
+           "the JIT's code cache: compiled code is kept there and loaded by later runs instead of compiling "
+           "(default: $GLSLRUN_CACHE_DIR, else $XDG_CACHE_HOME/glslrun, else ~/.cache/glslrun)")
+        ->type_name("DIR")
+        ->check([](const std::string& dir) { return dir.empty() ? std::string("the path is empty") : std::string(); });
+    app.add_flag_callback(
+        "--no-cache", [] { ::setenv("GLSLRUN_NO_CACHE", "1", 1); },
+        "neither read nor write the JIT's code cache (as GLSLRUN_NO_CACHE=1)");
+}
+
+void warn_about_code_cache(Backend backend) {
+    if (backend == Backend::Interp) return;
+    const CodeCacheStatus status = code_cache_status(ExecOptions{});
+    if (!status.warning.empty()) std::fprintf(stderr, "glslrun: warning: %s\n", status.warning.c_str());
 }
 
 void add_define_option(CLI::App& app, std::vector<std::string>& defines) {

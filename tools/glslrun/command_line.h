@@ -38,5 +38,13 @@ void add_precision_option(CLI::App& app, Precision& precision);
 // --backend NAME, for rendering and `glslrun test`; a bad name, or jit in a
 // build without it, is a usage error.
 void add_backend_option(CLI::App& app, Backend& backend);
+// --cache-dir DIR and --no-cache: the JIT's code cache (ExecOptions::code_cache).
+// They set GLSLRUN_CACHE_DIR and GLSLRUN_NO_CACHE for this process as the
+// command line is parsed (before any thread starts), so that every program
+// it compiles, in the forked children of `glslrun test` too, uses them.
+void add_code_cache_options(CLI::App& app);
+// Prints code_cache_status()'s warning (an unwritable cache directory, ...)
+// once, where `backend` may use the JIT; never an error.
+void warn_about_code_cache(Backend backend);
 
 }  // namespace glslrun::cli

@@ -214,7 +214,9 @@ int test_main(int argc, char** argv) {
                  "or hang fails only that test)");
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
+    cli::add_code_cache_options(app);
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
+    cli::warn_about_code_cache(o.backend);
     if (o.quiet && o.verbose) {
         fmt::print(stderr, "error: --quiet and --verbose contradict each other\n");
         return 2;
@@ -235,7 +237,10 @@ int batch_main(int argc, char** argv) {
     app.add_option("--threads", exec.threads, "worker threads for drawing (default: one per core)")
         ->check(CLI::Range(1, 256));
     add_precision_option(app, exec.precision);
+    add_backend_option(app, exec.backend);
+    cli::add_code_cache_options(app);
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
+    cli::warn_about_code_cache(exec.backend);
     return cli::run_batch_command(jobs, exec);
 }
 
@@ -307,6 +312,7 @@ int program_cli(int argc, char** argv) {
         ->check(CLI::Range(uint64_t(1), UINT64_MAX));
     add_precision_option(app, o.precision);
     add_backend_option(app, o.backend);
+    cli::add_code_cache_options(app);
     app.add_option("--specialize-after", o.specialize_after,
                    "the JIT compiles a stage's uniforms in as constants once this many draws in a row had the "
                    "same values (default 0: never); the images do not change")
@@ -354,6 +360,7 @@ int program_cli(int argc, char** argv) {
         std::fputs(app.help().c_str(), stdout);
         return 2;
     }
+    cli::warn_about_code_cache(o.backend);
     return cli::run_render_command(files, o);
 }
 

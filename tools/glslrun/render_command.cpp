@@ -286,6 +286,9 @@ std::string format_stats(const Program& prog, const scene::Scene& scene, const D
                backend == Backend::Jit && prog.exec.backend == Backend::Auto
                    ? " (auto: the interpreter until compiled)" : "",
                prog.jit_compile_seconds() * 1e3);
+    const Program::JitCompiles compiles = prog.jit_compiles();
+    fmt::format_to(out, "JIT code     {} shader{} compiled, {} loaded from the code cache\n", compiles.compiled,
+               compiles.compiled == 1 ? "" : "s", compiles.loaded);
     fmt::format_to(out, "vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     // The fused pipeline's fragments, and its share of LLVM's time above.
     fmt::format_to(out, "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,

@@ -114,7 +114,9 @@ int trace_main(int argc, char** argv) {
     app.add_flag("--colour-range", o.colour_range, "--find-nan: also the first colour output outside [0,1]");
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
     add_precision_option(app, o.precision);
+    add_code_cache_options(app);
     if (int status = parse_command_line(app, argc, argv); status >= 0) return status;
+    warn_about_code_cache(Backend::Auto);
     return run_trace(o);
 }
 

@@ -1,0 +1,66 @@
+#!/bin/sh
+# The JIT's code cache from the command line: a second render of the same
+# program compiles nothing (--stats counts) and writes the same PNG as the
+# first, the interpreter's and an uncached render; --no-cache and
+# GLSLRUN_NO_CACHE write nothing; GLSLRUN_CACHE_DIR and --cache-dir choose
+# the directory; an unwritable one is a warning, not an error; damaged
+# entries are compiled and written again.
+#   tests/cli/code_cache.sh SOURCE_DIR GLSLRUN
+set -u
+src=$1
+glslrun=$2
+. "$src/tests/cli/common.sh"
+cd "$tmp" || exit 2
+spot="$src/shaders/spot_pix_fixed.vert $src/shaders/spot_pix_fixed.frag $src/scenes/spot.toml --size 64x64"
+entries() { find "$1" -type f 2>/dev/null | wc -l; }
+# render NAME [BACKEND] ARGS...: the PNG to NAME.png, --stats to NAME.txt (BACKEND: jit unless given)
+render() {
+    name=$1
+    shift
+    backend=jit
+    case "${1:-}" in auto | interp) backend=$1; shift ;; esac
+    # shellcheck disable=SC2086
+    "$glslrun" $spot --backend $backend --stats -o "$name.png" "$@" >"$name.txt" 2>"$name.err" ||
+        fail "render $name failed: $(head -c 300 "$name.err")"
+}
+unset GLSLRUN_NO_CACHE
+export GLSLRUN_CACHE_DIR="$tmp/env-cache"
+
+render cold --cache-dir "$tmp/cache"
+grep -q "2 shaders compiled, 0 loaded from the code cache" cold.txt || fail "cold: $(grep backend cold.txt)"
+[ "$(entries "$tmp/cache")" = 2 ] || fail "cold: $(entries "$tmp/cache") entries, not 2"
+render warm --cache-dir "$tmp/cache"
+grep -q "0 shaders compiled, 2 loaded from the code cache" warm.txt || fail "warm: $(grep backend warm.txt)"
+# A one-frame render under auto never loads the JIT (runtime/jit_plugin.h), warm cache or not.
+render auto auto --cache-dir "$tmp/cache"
+grep -q "0 shaders compiled, 0 loaded" auto.txt || fail "auto, one frame, warm cache: $(grep backend auto.txt)"
+render uncached --no-cache
+grep -q "2 shaders compiled, 0 loaded" uncached.txt || fail "--no-cache: $(grep backend uncached.txt)"
+render interp interp
+for name in warm auto uncached interp; do
+    cmp -s cold.png $name.png || fail "the $name image differs from the first render's"
+done
+
+# The environment: GLSLRUN_CACHE_DIR, and GLSLRUN_NO_CACHE over it.
+[ "$(entries "$tmp/env-cache")" = 0 ] || fail "--no-cache or --cache-dir wrote to GLSLRUN_CACHE_DIR"
+render env
+[ "$(entries "$tmp/env-cache")" = 2 ] || fail "GLSLRUN_CACHE_DIR: $(entries "$tmp/env-cache") entries, not 2"
+GLSLRUN_NO_CACHE=1 render env_off --cache-dir "$tmp/off-cache"
+[ "$(entries "$tmp/off-cache")" = 0 ] || fail "GLSLRUN_NO_CACHE=1 still wrote a cache"
+grep -q "2 shaders compiled" env_off.txt || fail "GLSLRUN_NO_CACHE=1: $(grep backend env_off.txt)"
+
+# A directory that cannot be made: a warning, the image all the same.
+echo x >blocker
+render blocked --cache-dir "$tmp/blocker/cache"
+grep -q "warning: the code cache directory .* cannot be written" blocked.err ||
+    fail "no warning for an unwritable cache: $(head -c 300 blocked.err)"
+cmp -s cold.png blocked.png || fail "the image with an unwritable cache differs"
+
+# A damaged entry: compiled again and written again, the same image.
+for f in $(find "$tmp/cache" -type f); do printf 'garbage' >"$f"; done
+render damaged --cache-dir "$tmp/cache"
+grep -q "2 shaders compiled, 0 loaded" damaged.txt || fail "damaged entries: $(grep backend damaged.txt)"
+cmp -s cold.png damaged.png || fail "the image after damaged entries differs"
+render repaired --cache-dir "$tmp/cache"
+grep -q "0 shaders compiled, 2 loaded" repaired.txt || fail "rewritten entries: $(grep backend repaired.txt)"
+finish "code cache: a second run compiles nothing, the same images, unwritable and damaged caches handled"
