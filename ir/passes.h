@@ -23,6 +23,10 @@ bool helper_lookups_matter(const Shader& shader);
 std::string print(const Shader& shader);
 std::string print(const Program& program);
 
+// CompileOptions::check_undefined, before optimize(): check_undef before the
+// reads of variables that may be read before any write (ir/unwritten_reads.cpp).
+void check_unwritten_reads(Shader& shader);
+
 // ir/inline.cpp: replaces Call nodes by Scope nodes holding a renamed copy of
 // the callee while the shader grows by less than `budget` nodes; the calls
 // beyond the budget stay real calls.

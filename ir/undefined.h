@@ -1,7 +1,8 @@
 // GLSL 1.10/1.20's undefined operations, as `check_undef` instructions test
 // them (ir/opcodes.def). The frontend emits one before each built-in call or
 // operator whose result the spec leaves undefined for some operands, when
-// CompileOptions::check_undefined asks for it (frontend/lower_checks.cpp);
+// CompileOptions::check_undefined asks for it (frontend/lower_checks.cpp;
+// reads of variables never written: ir/unwritten_reads.cpp);
 // without it the IR holds none, so checking costs nothing when it is off.
 // Both backends run the same kernel (runtime/interp_kernels.h; the JIT calls
 // it out), so their findings agree.
@@ -37,6 +38,8 @@ enum class UndefOp : uint8_t {
     IntSub,         // x - y, int
     IntMul,         // x * y, int
     IntNeg,         // -x, int: x = -2^31
+    Unwritten,      // a read of a variable no write has reached (the operand: its shadow, 0 or 1;
+                    // ir/unwritten_reads.cpp)
     Count_,
 };
 
@@ -66,6 +69,7 @@ inline const UndefInfo& undef_info(UndefOp op) {
         {"int subtraction", "int x - y past 32 bits", 2},
         {"int multiplication", "int x * y past 32 bits", 2},
         {"int negation", "-x with x = -2147483648", 1},
+        {"unwritten variable", "a read of a variable that no write has reached", 0},
     };
     static_assert(sizeof(kInfo) / sizeof(kInfo[0]) == size_t(UndefOp::Count_));
     return kInfo[size_t(op)];
@@ -94,6 +98,7 @@ inline bool undefined_for(UndefOp op, double a, double b, double c, uint32_t len
     case UndefOp::IntSub: return outside(a - b);
     case UndefOp::IntMul: return outside(a * b);  // rounding is monotonic and 2^31 is a double
     case UndefOp::IntNeg: return a == kMin;
+    case UndefOp::Unwritten: return a == 0;
     case UndefOp::Count_: break;
     }
     return false;

@@ -70,6 +70,7 @@ Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
     st.ir = std::move(lowered.value());
     ir::PassOptions passes{options.optimize, options.inline_budget, verify_requested(options)};
     for (ir::Shader* shader : {&st.ir.vertex, &st.ir.fragment}) {
+        if (options.check_undefined) ir::check_unwritten_reads(*shader);
         std::string problem = ir::optimize(*shader, passes);
         if (!problem.empty()) return Error("internal error: " + problem);
     }

@@ -107,6 +107,10 @@ std::array<double, 3> values(UndefOp op, uint32_t length, const std::vector<doub
     case UndefOp::IntSub: return same(int_op<Op::isub>(int32_t(a), int32_t(b)));
     case UndefOp::IntMul: return same(int_op<Op::imul>(int32_t(a), int32_t(b)));
     case UndefOp::IntNeg: return same(int_op<Op::isub>(0, int32_t(a)));
+    case UndefOp::Unwritten:
+        *note = "glslrun reads what the register holds: 0 in a program's first batch, else what an earlier "
+                "invocation or instruction left there";
+        return same(NAN);
     case UndefOp::Index:
         *note = fmt::format("the element read or written: the index clamped to 0..{}", length - 1);
         return same(a < 0 ? 0 : std::min(a, double(length) - 1));
@@ -145,6 +149,8 @@ std::string gpu_result(UndefOp op, const std::vector<double>& x) {
     case UndefOp::IntMul: return fmt::format("{} (wrapped)", int_op<Op::imul>(int32_t(a), int32_t(b)));
     case UndefOp::IntNeg: return fmt::format("{} (wrapped)", int_op<Op::isub>(0, int32_t(a)));
     case UndefOp::Index: return "0 when reading a local float array (not clamped)";
+    case UndefOp::Unwritten:
+        return "the one value the shader could have written (1.0 for `float v; if (z > 1.0) v = 1.0;` read with z = 0)";
     case UndefOp::Count_: break;
     }
     return "";
@@ -190,7 +196,7 @@ std::string block(const UndefinedFinding& f) {
     s += fmt::format("  {} invocation{}; the first: {}\n", f.count, f.count == 1 ? "" : "s", where(f.first));
     std::string operands;
     for (double v : f.first.operands) operands += (operands.empty() ? "" : ", ") + number(v);
-    s += fmt::format("  operands: {}\n", operands);
+    if (!operands.empty()) s += fmt::format("  operands: {}\n", operands);
     s += fmt::format("  glslrun returns: reference {}, precise {}, fast {}{}\n", number(f.mode_values[0]),
                      number(f.mode_values[1]), number(f.mode_values[2]),
                      f.value_note.empty() ? "" : " (" + f.value_note + ")");

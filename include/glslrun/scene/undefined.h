@@ -1,6 +1,6 @@
 // GLSL's undefined operations, found at run time (`glslrun --check-undefined`,
 // docs/debugging.md): pow of x < 0, log of x <= 0, division by zero, an array
-// index out of range, int overflow, ... The scene is rendered with the
+// index out of range, int overflow, a read of a variable never written, ... The scene is rendered with the
 // programs compiled with CompileOptions::check_undefined; every operation
 // that GLSL 1.10/1.20 leaves undefined for the operands it gets is counted per
 // source position, with the first invocation (draw and tile order) that
