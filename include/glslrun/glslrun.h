@@ -107,6 +107,13 @@ struct CompileOptions {
     // "NAME=VALUE" becomes `#define NAME VALUE` ahead of every source, line
     // numbers unchanged. NAME must be an identifier (not GL_ or __ reserved).
     std::vector<std::string> defines;
+    // Directories for `#include "name"` and `#include <name>` (a shader
+    // with `#extension GL_GOOGLE_include_directive : require`, as
+    // glslangValidator's -I): a name is looked up beside the file that
+    // includes it (ShaderSource::name's directory), then in these in order.
+    // Errors in an included file name it and its line; included files
+    // count toward the stage's 1 MiB of source and nest at most 32 deep.
+    std::vector<std::string> include_dirs;
 };
 
 // How shaders evaluate floating point (docs/precision.md).
