@@ -19,6 +19,7 @@
 #include "frontend/diagnostics.h"
 #include "frontend/fold_workaround.h"
 #include "frontend/glslang_fold.h"
+#include "frontend/includer.h"
 #include "frontend/int_builtins.h"
 #include "frontend/language_version.h"
 #include "frontend/link.h"
@@ -106,7 +107,7 @@ struct ParsedUnit {
 // One unit as one unnamed string (its __FILE__ is 0); `text` must outlive
 // the shader. `helpers` go in the preamble, before the unit's first line.
 ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::string& file, const std::string& helpers,
-                      int default_version) {
+                      int default_version, glslang::TShader::Includer& includer) {
     static const TBuiltInResource res = resources();
     ParsedUnit out;
     out.shader = std::make_unique<glslang::TShader>(lang);
@@ -120,7 +121,7 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     out.shader->setPreamble(preamble.c_str());
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
     TokenBudgetScope budget;
-    out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages);
+    out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages, includer);
     if (const TokenBudgetScope::LargeStruct& large = budget.large_struct(); !large.name.empty()) {
         out.ok = false;
         out.diags.push_back(Diagnostic{file, large.line, fmt::format(
@@ -151,17 +152,27 @@ std::string define_lines(const std::vector<std::string>& defines) {
     return out;
 }
 
-bool parse_units(StageUnits& st, int default_version, const std::string& defines, std::vector<Diagnostic>& diags) {
+bool parse_units(StageUnits& st, int default_version, const std::string& defines,
+                 const std::vector<std::string>& include_dirs, std::vector<Diagnostic>& diags) {
     bool ok = true;
     StageTotals stage_totals;
     st.texts.clear();
-    for (const ShaderSource& src : st.sources) st.texts.push_back(prepare_source(src, default_version));
+    size_t include_bytes_left = kMaxSourceBytes;  // included files count toward the stage's source limit
+    for (const ShaderSource& src : st.sources) {
+        st.texts.push_back(prepare_source(src, default_version));
+        include_bytes_left -= std::min(include_bytes_left, src.text.size());
+    }
     for (size_t i = 0; i < st.sources.size(); ++i) {
         const ShaderSource& src = st.sources[i];
-        ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, defines, default_version);
+        // An included file gets the rewrites of the unit that includes it.
+        const int version = unit_version(src, default_version);
+        auto prepare = [&](std::string text) { return prepare_source(ShaderSource{src.name, std::move(text)}, version); };
+        FileIncluder includer(src.name, include_dirs, prepare, include_bytes_left);
+        ParsedUnit unit = parse_unit(st.lang, st.texts[i], src.name, defines, default_version, includer);
         if (std::set<int> lines = int_builtin_retry_lines(unit.diags, st.texts[i]); !unit.ok && !lines.empty()) {
             std::string renamed = rename_int_builtin_calls(st.texts[i], lines);
-            ParsedUnit retry = parse_unit(st.lang, renamed, src.name, defines + int_builtin_helpers(), default_version);
+            ParsedUnit retry =
+                parse_unit(st.lang, renamed, src.name, defines + int_builtin_helpers(), default_version, includer);
             if (retry.ok) {
                 unit = std::move(retry);
                 st.texts[i] = std::move(renamed);
@@ -322,7 +333,8 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
     if (fs.empty()) units[1].sources = {ShaderSource{"", kFixedFunctionFragment}};
     bool parsed = true;
     const std::string defines = define_lines(options.defines);
-    for (StageUnits& st : units) parsed = parse_units(st, options.default_version, defines, diags) && parsed;
+    for (StageUnits& st : units)
+        parsed = parse_units(st, options.default_version, defines, options.include_dirs, diags) && parsed;
     if (!parsed || has_errors(diags)) return to_error(std::move(diags));
     for (StageUnits& st : units) check_global_initializers(st, diags);
     bool linked = true;
@@ -361,7 +373,7 @@ Status check_here(Stage stage, const ShaderSource& source, const CompileOptions&
     PoolScope pool;
     std::vector<Diagnostic> diags;
     StageUnits st{stage == Stage::Vertex ? EShLangVertex : EShLangFragment, {source}, {}, {}, {}};
-    bool ok = parse_units(st, default_version, define_lines(options.defines), diags);
+    bool ok = parse_units(st, default_version, define_lines(options.defines), options.include_dirs, diags);
     if (!ok || has_errors(diags)) return to_error(std::move(diags));
     return Ok{};
 }

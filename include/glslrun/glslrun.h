@@ -113,6 +113,13 @@ struct CompileOptions {
     // debugger (`glslrun --check-undefined`, check_undefined() in
     // glslrun/undefined.h); images do not change. Off: no check is compiled.
     bool check_undefined = false;
+    // Directories for `#include "name"` and `#include <name>` (a shader
+    // with `#extension GL_GOOGLE_include_directive : require`, as
+    // glslangValidator's -I): a name is looked up beside the file that
+    // includes it (ShaderSource::name's directory), then in these in order.
+    // Errors in an included file name it and its line; included files
+    // count toward the stage's 1 MiB of source and nest at most 32 deep.
+    std::vector<std::string> include_dirs;
 };
 
 // How shaders evaluate floating point (docs/precision.md).

@@ -156,6 +156,30 @@ if command -v script > /dev/null; then
     grep -q "3/3 frames" tty.txt || fail "--frames shows no progress on a terminal: $(cat tty.txt)"
     "$glslrun" "$vs" "$fs" "$scene" --size 8x8 --frames 3 -o fr.png 2> notty.txt
     grep -q "/3 frames" notty.txt && fail "--frames prints progress into a pipe: $(cat notty.txt)"
+    script -qec "$glslrun $vs $fs $scene --size 8x8 --bench 3 -o fr.png" /dev/null > tty.txt 2>&1
+    grep -q "3/3 bench frames" tty.txt || fail "--bench shows no progress on a terminal: $(cat tty.txt)"
 fi
+
+# ---- #include with -I DIR (GL_GOOGLE_include_directive, as glslangValidator's -I).
+mkdir -p inc/lib inc/other
+printf '#extension GL_GOOGLE_include_directive : require\n#include "colour.glsl"\nvoid main() { gl_FragColor = colour(); }\n' > inc/main.frag
+printf '#include "helpers/scale.glsl"\nvec4 colour() { return vec4(scale(0.25), 1.0, 0.0, 1.0); }\n' > inc/lib/colour.glsl
+mkdir -p inc/lib/helpers
+printf 'float scale(float x) { return x * 2.0; }\n' > inc/lib/helpers/scale.glsl
+expect 1 "inc/main.frag:2: error: '#include' : 'colour.glsl' is in none of inc (-I DIR adds a directory)" \
+    "$glslrun" check inc/main.frag
+"$glslrun" check -I inc/other -I inc/lib inc/main.frag > out.txt 2> err.txt || fail "check -I: $(cat err.txt)"
+"$glslrun" "$vs" inc/main.frag "$scene" -I inc/lib --size 4x4 -o inc.png 2> err.txt || fail "render -I: $(cat err.txt)"
+printf 'void main() { gl_FragColor = vec4(0.5, 1.0, 0.0, 1.0); }\n' > inc/flat.frag
+"$glslrun" "$vs" inc/flat.frag "$scene" --size 4x4 -o flat.png 2> /dev/null || fail "render flat.frag"
+same inc.png flat.png "the included function's colour"
+# An error inside an included file names that file and its own line.
+printf 'float scale(float x) {\n    return x * undefined_thing;\n}\n' > inc/lib/helpers/scale.glsl
+expect 1 "inc/lib/helpers/scale.glsl:2: error: 'undefined_thing' : undeclared identifier" \
+    "$glslrun" check -I inc/lib inc/main.frag
+expect 2 "--include-dir: Directory does not exist: inc/missing" "$glslrun" check -I inc/missing inc/main.frag
+# A file that includes itself ends at the depth limit.
+printf '#extension GL_GOOGLE_include_directive : require\n#include "self.frag"\nvoid main() {}\n' > inc/self.frag
+expect 1 "#include nests more than 32 deep" "$glslrun" check inc/self.frag
 
 finish "new-user CLI: inputs protected, NUL paths, exit statuses, help, check, formats, reports, batch"

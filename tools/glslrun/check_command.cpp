@@ -47,6 +47,7 @@ int check_main(int argc, char** argv) {
         ->check(CLI::IsMember({"vert", "frag"}));
     CompileOptions options;
     add_define_option(app, options.defines);
+    add_include_option(app, options.include_dirs);
     if (int rc = parse_command_line(app, argc, argv); rc >= 0) return rc;
     int status = 0;
     for (const std::string& f : files) status = std::max(status, check_file(f, stage, options));

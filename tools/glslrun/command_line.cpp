@@ -74,6 +74,16 @@ void add_define_option(CLI::App& app, std::vector<std::string>& defines) {
         });
 }
 
+void add_include_option(CLI::App& app, std::vector<std::string>& dirs) {
+    app.add_option("-I,--include-dir", dirs,
+                   "DIR: where `#include \"name\"` looks after the including file's own directory (with "
+                   "`#extension GL_GOOGLE_include_directive : require` in the shader, as glslangValidator's -I); "
+                   "repeatable, searched in order")
+        ->type_name("DIR")
+        ->allow_extra_args(false)
+        ->check(CLI::ExistingDirectory);
+}
+
 std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::string_view separators) {
     int a = 0, b = 0;
     const char* end = text.data() + text.size();

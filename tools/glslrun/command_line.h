@@ -32,6 +32,8 @@ std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::st
 // -D NAME[=VALUE] (repeatable) into `defines`: NAME an identifier that GLSL
 // does not reserve (GL_..., __...), VALUE on one line; a bad one is a usage error.
 void add_define_option(CLI::App& app, std::vector<std::string>& defines);
+// -I DIR (repeatable, existing directories) into `dirs`: CompileOptions::include_dirs.
+void add_include_option(CLI::App& app, std::vector<std::string>& dirs);
 
 // --precision NAME, for rendering, tracing and `glslrun test`; a bad name is a usage error.
 void add_precision_option(CLI::App& app, Precision& precision);

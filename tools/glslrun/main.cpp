@@ -45,6 +45,7 @@ using namespace glslrun;
 namespace pg = glslrun::piglit;
 using cli::add_backend_option;
 using cli::add_define_option;
+using cli::add_include_option;
 using cli::add_precision_option;
 using cli::parse_command_line;
 
@@ -330,6 +331,7 @@ int program_cli(int argc, char** argv) {
                    "(created if missing)")
         ->type_name("DIR");
     add_define_option(app, o.defines);
+    add_include_option(app, o.include_dirs);
     app.add_option("--stage,-S", o.stage,
                    "the stage of shader files whose name does not give it (a.glsl): vert or frag")
         ->check(CLI::IsMember({"vert", "frag"}));

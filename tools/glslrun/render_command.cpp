@@ -199,6 +199,7 @@ Status check_outputs(const InputFiles& inputs, const std::string& output, int bu
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
     CompileOptions options;
     options.defines = o.defines;
+    options.include_dirs = o.include_dirs;
     auto prog = Program::compile(in.vertex, in.fragment, options);
     if (prog || !in.vertex.empty()) return prog;
     Error e = prog.error();
@@ -381,6 +382,7 @@ Status bench_frames(const scene::ScenePrograms& programs, const scene::Scene& sc
                     scene::BenchReport& report) {
     report.stage_s = {{"vertex", {}}, {"raster", {}}, {"fragment", {}}};
     uint64_t fused = 0;
+    Progress progress("bench frames", size_t(frames));  // on a terminal only; drawn between the timed frames
     for (int i = 0; i < frames; ++i) {
         auto start = Clock::now();
         double cpu_start = scene::process_cpu_seconds();
@@ -392,6 +394,7 @@ Status bench_frames(const scene::ScenePrograms& programs, const scene::Scene& sc
         report.stage_s[1].second.push_back(stats->raster_seconds);
         report.stage_s[2].second.push_back(stats->fragment_seconds);
         fused = stats->fragments_fused;
+        progress.step();
     }
     report.counts.push_back({"fused_fragments", fused});
     return Ok{};

@@ -13,6 +13,7 @@ struct RenderOptions {
     std::string background;    // --compare: R,G,B,A or "none"; "" for the scene's clear colour or the corners'
     std::string stage;         // --stage vert|frag: the stage of shaders whose name does not say
     std::vector<std::string> defines;  // -D NAME[=VALUE]
+    std::vector<std::string> include_dirs;  // -I DIR
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
     int tolerance = 0;
     double min_fraction = 1.0;  // --compare passes when this fraction of the covered pixels is within tolerance
