@@ -402,18 +402,18 @@ bool one_image(const Texture& texture) {
 // A comparison reads the depths alone and compares them in a lane loop, the
 // function chosen once.
 void nearest_in_image(const TextureImage& image, const Lookup& proto, int dims, const int* nx, const int* ny,
-                      const int* nz, Lanes& l) {
+                      const int* nz, const Lanes& l, float (*out)[kLanes]) {
     alignas(32) int at[kLanes];
     const int w = image.width, h = image.height;  // w * h * d below 2^24 (limits.md): no overflow
     for (int i = 0; i < kLanes; ++i) at[i] = ((dims > 2 ? nz[i] : 0) * h + (dims > 1 ? ny[i] : 0)) * w + nx[i];
     const glm::vec4* texels = image.texels.data();
     if (!proto.compare) {
-        for (int i = 0; i < kLanes; ++i) put(l.rgba, i, texel_of(texels[at[i]]));
+        for (int i = 0; i < kLanes; ++i) put(out, i, texel_of(texels[at[i]]));
         return;
     }
     alignas(32) float depth[kLanes];
     for (int i = 0; i < kLanes; ++i) depth[i] = texels[at[i]].r;
-    float* __restrict result = l.rgba[0];
+    float* __restrict result = out[0];
     const float* __restrict ref = l.ref;
     const auto compare = [&](auto func) {
         for (int i = 0; i < kLanes; ++i) result[i] = compare_depth(func(), ref[i], depth[i]);
@@ -429,42 +429,41 @@ void nearest_in_image(const TextureImage& image, const Lookup& proto, int dims, 
     case CompareFunc::Always: compare([] { return CompareFunc::Always; }); break;
     }
     for (int c = 1; c < 4; ++c)
-        for (int i = 0; i < kLanes; ++i) l.rgba[c][i] = result[i];  // fetch()'s splat
+        for (int i = 0; i < kLanes; ++i) out[c][i] = result[i];  // fetch()'s splat
 }
 
-// The lookups of a one_image() texture into l.rgba (the lanes whose
-// `active` is 0 too: they are selected away). The sizes are the image's,
-// not the lanes', and nothing per lane decides a level or a filter.
-// Linear blends without the border or a comparison go four lanes at a
-// time; the others lane by lane.
+// The lookups of every lane in one image with one filter (LINEAR or
+// NEAREST within the level) into out (the lanes whose `active` is 0 too:
+// they are selected away). The sizes are the image's, not the lanes', and
+// nothing per lane decides a level or a filter. Linear blends without the
+// border or a comparison go four or eight lanes at a time; the others lane
+// by lane. `coord`: the lanes' (s, t, r) on the image.
 template <bool kAvx2>
-void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* active, Lanes& l) {
-    const SamplerState& st = texture.sampler;
-    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
-    const int dims = texture_dims(texture.target());
-    const bool linear = linear_within_level(st.mag_filter);  // the min filter's too (one_image)
+void sample_image(const TextureImage& image, Lookup proto, bool linear, const float* const* coord, const int* active,
+                  Lanes& l, float (*out)[kLanes]) {
+    const SamplerState& st = *proto.st;
+    const int dims = proto.dims;
     const OneSize w{image.width}, h{image.height}, d{image.depth};
-    Lookup proto{&texture, &st, 0, dims, glm::vec3(0.0f), texture.depth() && st.compare, 0.0f};
     if (!linear) {
         alignas(32) int nx[kLanes], ny[kLanes], nz[kLanes];
-        axis_indices<kAvx2>(st.wrap_s, false, lk.coord[0], w, nx, nullptr, nullptr);
-        if (dims > 1) axis_indices<kAvx2>(st.wrap_t, false, lk.coord[1], h, ny, nullptr, nullptr);
-        if (dims > 2) axis_indices<kAvx2>(st.wrap_r, false, lk.coord[2], d, nz, nullptr, nullptr);
+        axis_indices<kAvx2>(st.wrap_s, false, coord[0], w, nx, nullptr, nullptr);
+        if (dims > 1) axis_indices<kAvx2>(st.wrap_t, false, coord[1], h, ny, nullptr, nullptr);
+        if (dims > 2) axis_indices<kAvx2>(st.wrap_r, false, coord[2], d, nz, nullptr, nullptr);
         // NEAREST meets the border under CLAMP_TO_BORDER only (CLAMP clamps to the edge texels).
         const bool border = st.wrap_s == TextureWrap::ClampToBorder ||
                             (dims > 1 && st.wrap_t == TextureWrap::ClampToBorder) ||
                             (dims > 2 && st.wrap_r == TextureWrap::ClampToBorder);
-        if (!border) return nearest_in_image(image, proto, dims, nx, ny, nz, l);
+        if (!border) return nearest_in_image(image, proto, dims, nx, ny, nz, l, out);
         for (int i = 0; i < kLanes; ++i) {
             proto.ref = l.ref[i];
-            if (!active[i]) put(l.rgba, i, splat_texel(0.0f));  // defined, for the loops that select it away
-            else put(l.rgba, i, fetch(proto, image, nx[i], dims > 1 ? ny[i] : 0, dims > 2 ? nz[i] : 0));
+            if (!active[i]) put(out, i, splat_texel(0.0f));  // defined, for the loops that select it away
+            else put(out, i, fetch(proto, image, nx[i], dims > 1 ? ny[i] : 0, dims > 2 ? nz[i] : 0));
         }
         return;
     }
-    axis_indices<kAvx2>(st.wrap_s, true, lk.coord[0], w, l.x0, l.x1, l.ax);
-    if (dims > 1) axis_indices<kAvx2>(st.wrap_t, true, lk.coord[1], h, l.y0, l.y1, l.ay);
-    if (dims > 2) axis_indices<kAvx2>(st.wrap_r, true, lk.coord[2], d, l.z0, l.z1, l.az);
+    axis_indices<kAvx2>(st.wrap_s, true, coord[0], w, l.x0, l.x1, l.ax);
+    if (dims > 1) axis_indices<kAvx2>(st.wrap_t, true, coord[1], h, l.y0, l.y1, l.ay);
+    if (dims > 2) axis_indices<kAvx2>(st.wrap_r, true, coord[2], d, l.z0, l.z1, l.az);
     const bool border = may_border(st.wrap_s) || (dims > 1 && may_border(st.wrap_t)) ||
                         (dims > 2 && may_border(st.wrap_r));
 #if defined(__SSE2__)
@@ -496,31 +495,62 @@ void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* 
             int any = 0;
             for (int i = g; i < g + step; ++i) any |= active[i];
             if (!any) {
-                for (int i = g; i < g + step; ++i) put(l.rgba, i, splat_texel(0.0f));  // selected away
+                for (int i = g; i < g + step; ++i) put(out, i, splat_texel(0.0f));  // selected away
                 continue;
             }
 #if defined(__x86_64__) && defined(__GNUC__)
             if constexpr (kAvx2) {
-                blend8(texels, at, l.ax, l.ay, dims > 2 ? l.az : nullptr, g, l.rgba);
+                blend8(texels, at, l.ax, l.ay, dims > 2 ? l.az : nullptr, g, out);
                 continue;
             }
 #endif
             const auto src = [texels](int) { return texels; };
-            if (dims == 2) bilinear4(src, at, l.ax, l.ay, g, l.rgba);
-            else trilinear4(src, at, l.ax, l.ay, l.az, g, l.rgba);
+            if (dims == 2) bilinear4(src, at, l.ax, l.ay, g, out);
+            else trilinear4(src, at, l.ax, l.ay, l.az, g, out);
         }
         return;
     }
 #endif
     for (int i = 0; i < kLanes; ++i) {
         proto.ref = l.ref[i];
-        if (!active[i]) put(l.rgba, i, splat_texel(0.0f));
-        else put(l.rgba, i, linear_lane(proto, image, l, i, dims));
+        if (!active[i]) put(out, i, splat_texel(0.0f));
+        else put(out, i, linear_lane(proto, image, l, i, dims));
     }
 }
 
+// The lookups of a one_image() texture into l.rgba: its level_base with
+// the mag filter (the min filter's too).
+template <bool kAvx2>
+void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* active, Lanes& l) {
+    const SamplerState& st = texture.sampler;
+    const Lookup proto{&texture, &st, 0, texture_dims(texture.target()), glm::vec3(0.0f),
+                       texture.depth() && st.compare, 0.0f};
+    sample_image<kAvx2>(texture.levels(0)[size_t(st.base_level)], proto, linear_within_level(st.mag_filter),
+                        lk.coord, active, l, l.rgba);
+}
+
+// The first active lane where every active lane has its face, its level(s)
+// and its filter: one image per level for the whole batch (a smooth
+// surface's common case); else -1.
+int uniform_lane(const Lanes& l, const int* active) {
+    int first = -1;
+    for (int i = 0; i < kLanes && first < 0; ++i)
+        if (active[i]) first = i;
+    if (first < 0) return -1;
+    const int face = l.face[first], d0 = l.level[0][first], d1 = l.level[1][first], linear = l.linear[first];
+    int differ = 0;
+    for (int i = 0; i < kLanes; ++i)
+        differ |= active[i] & int((l.face[i] != face) | (l.level[0][i] != d0) | (l.level[1][i] != d1) |
+                                  (l.linear[i] != linear));
+    return differ ? -1 : first;
+}
+
 // Lanes of several levels or faces: each lane's level(s) from its lambda
-// (filter()'s decisions), sampled level by level, then mixed.
+// (filter()'s decisions), sampled level by level, then mixed. Where every
+// active lane reads the same face and level(s) with one filter, each level
+// is one image for the batch (sample_image(): the same indices and blends,
+// the sizes hoisted, eight lanes at a time under AVX2).
+template <bool kAvx2>
 void sample_levels_of_lanes(const Texture& texture, const BatchLookup& lk, const int* active, Lanes& l) {
     if (texture.target() == TextureTarget::Cube) cube_coords(lk, l);
     else plain_coords(lk, l);
@@ -536,9 +566,16 @@ void sample_levels_of_lanes(const Texture& texture, const BatchLookup& lk, const
     const SamplerState& st = texture.sampler;
     const Lookup proto{&texture, &st, 0, texture_dims(texture.target()), glm::vec3(0.0f),
                        texture.depth() && st.compare, 0.0f};
-    sample_levels(texture, proto, l, l.level[0], active, l.rgba);
+    const int u = uniform_lane(l, active);
+    const float* const coord[3] = {l.s, l.t, nullptr};
+    const auto level = [&](int k, const int* take, float (*out)[kLanes]) {
+        if (u < 0) return sample_levels(texture, proto, l, l.level[k], take, out);
+        const TextureImage& image = texture.levels(l.face[u])[size_t(l.level[k][u])];
+        sample_image<kAvx2>(image, proto, l.linear[u] != 0, coord, take, l, out);
+    };
+    level(0, active, l.rgba);
     if (!two) return;
-    sample_levels(texture, proto, l, l.level[1], second, l.second);
+    level(1, second, l.second);
     // filter()'s mix() of the two levels, channel by channel.
     for (int c = 0; c < 4; ++c)
         for (int i = 0; i < kLanes; ++i) {
@@ -563,7 +600,7 @@ template <bool kAvx2>
         for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
     }
     if (one_image(texture)) sample_one_image<kAvx2>(texture, lk, active, l);
-    else sample_levels_of_lanes(texture, lk, active, l);
+    else sample_levels_of_lanes<kAvx2>(texture, lk, active, l);
     const SamplerState& st = texture.sampler;
     if (texture.depth())
         for (int i = 0; i < kLanes; ++i)

@@ -67,7 +67,10 @@ struct Operands {
 };
 
 // Compares sample_batch() with sample_complete_lane() on one batch.
-void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::TexLod lod_kind) {
+// `shared`: every lane has lane 0's derivatives and LOD (a cube map's lanes
+// on the +X face), so that the lanes choose one face and level(s), as on a
+// smooth surface: the batch then samples one image per level.
+void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::TexLod lod_kind, bool shared = false) {
     const int dims = texture.target() == TextureTarget::Tex1D ? 1 : (texture.target() == TextureTarget::Tex2D ? 2 : 3);
     Operands ops{};
     for (int i = 0; i < rt::kLanes; ++i) {
@@ -78,6 +81,17 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
         }
         ops.ref[i] = coordinate(rng);
         ops.lod[i] = std::uniform_real_distribution<float>(-3.0f, 6.0f)(rng);
+        if (shared && i > 0) {
+            for (int c = 0; c < dims; ++c) {
+                ops.ddx[c][i] = ops.ddx[c][0];
+                ops.ddy[c][i] = ops.ddy[c][0];
+            }
+            ops.lod[i] = ops.lod[0];
+        }
+        if (shared && texture.target() == TextureTarget::Cube) {
+            ops.coord[0][i] = 2.0f;
+            for (int c = 1; c < 3; ++c) ops.coord[c][i] = std::uniform_real_distribution<float>(-1.9f, 1.9f)(rng);
+        }
     }
     rt::BatchLookup lk;
     lk.implicit = lod_kind != ir::TexLod::Explicit;
@@ -142,7 +156,7 @@ void sweep(std::mt19937& rng, Texture& texture, bool shadow) {
                         texture.sampler.wrap_r = t == s ? TextureWrap::ClampToEdge : s;
                         REQUIRE(texture.complete());
                         if (!rt::batch_samples(texture)) continue;
-                        for (int batch = 0; batch < 2; ++batch) check_batch(rng, texture, shadow, lod);
+                        for (int batch = 0; batch < 4; ++batch) check_batch(rng, texture, shadow, lod, batch >= 2);
                     }
 }
 
@@ -189,7 +203,8 @@ TEST_CASE("batched sampling equals per-lane sampling: depth textures and compare
                         // NEAREST for both: every lane one image, compared texel by texel.
                         depth.sampler.mag_filter = min == TextureFilter::Nearest ? min : TextureFilter::Linear;
                         depth.sampler.wrap_s = depth.sampler.wrap_t = wrap;
-                        for (ir::TexLod lod : kLods) check_batch(rng, depth, true, lod);
+                        for (ir::TexLod lod : kLods)
+                            for (bool shared : {false, true}) check_batch(rng, depth, true, lod, shared);
                     }
             }
 }
