@@ -13,7 +13,8 @@
 //
 // Measured error bounds (tests/ir/fast_math_test.cpp asserts them; the
 // measured values are in docs/precision.md, "Built-in functions"):
-//   rcp, rsqrt       relative 2^-22 (about 2 ULP)
+//   rcp              relative 2^-22 (about 2 ULP)
+//   rsqrt            relative 2^-23 (two IEEE roundings)
 //   exp2             relative 2^-21.5
 //   log2, log        relative 2^-21.5, absolute where |result| < 1
 //   exp              relative 2^-21 (1 + |x|): x log2(e) is rounded to float
@@ -79,19 +80,17 @@ inline float rcp(float x) {
     return std::isnan(x) ? x + x : y;
 }
 
-// 1/sqrt(x): the integer estimate 0x5F375A86 - bits(x)/2 (within 3.5%) and
-// three Newton steps y' = y (1.5 - (x y) y / 2), in that order so that no
-// intermediate underflows; IEEE results for 0, Inf, x < 0 and NaN.
-inline float rsqrt(float x) {
-    using namespace detail;
-    float y = std::bit_cast<float>(0x5F375A86u - (std::bit_cast<uint32_t>(x) >> 1));
-    y = y * (1.5f - 0.5f * (x * y) * y);
-    y = y * (1.5f - 0.5f * (x * y) * y);
-    y = y * (1.5f - 0.5f * (x * y) * y);
-    y = x == 0.0f ? std::copysign(kInf, x) : y;
-    y = x == kInf ? 0.0f : y;
-    return x < 0.0f ? std::bit_cast<float>(0xFFC00000u) : (std::isnan(x) ? x + x : y);
-}
+// 1/sqrt(x) as the CPU's square root and divider compute it: both are IEEE
+// (correctly rounded, the same bits on every x86-64 machine), so the result
+// is within 2^-23 relative, and vsqrtps + vdivps cost less than the integer
+// estimate 0x5F375A86 - bits(x)/2 with three Newton steps and the selects
+// for 0, Inf, x < 0 and NaN that it needed (measured: the spot frame under
+// the JIT, docs/performance.md "Fast against Precise, rsqrt"). The special
+// cases come out of the IEEE operations: 1/sqrt(+-0) = +-Inf, 1/sqrt(Inf) =
+// 0, x < 0 gives the default NaN, a NaN stays itself, quieted. GPUs
+// estimate (NVIDIA's MUFU.RSQ is within about 2^-22.9); an estimate whose
+// bits are fixed costs more here than the exact answer.
+inline float rsqrt(float x) { return 1.0f / std::sqrt(x); }
 
 // 2^x = 2^k * 2^r, |r| <= 1/2, with 2^r a degree-5 polynomial. The scale is
 // applied in two halves so that 2^k below 2^-126 or above 2^127 needs no

@@ -281,17 +281,9 @@ Value* MathEmitter::horner(Value* x, const float (&c)[M]) {
     return acc;
 }
 
-// fast::rsqrt
+// fast::rsqrt: 1 / sqrt(x), both IEEE.
 Value* MathEmitter::fast_rsqrt(Value* x) {
-    Value* y = as_float(b_.CreateSub(i32(0x5F375A86u), b_.CreateLShr(as_int(x), 1)));
-    for (int step = 0; step < 3; ++step) {
-        Value* half_xyy = b_.CreateFMul(b_.CreateFMul(f(0.5f), b_.CreateFMul(x, y)), y);
-        y = b_.CreateFMul(y, b_.CreateFSub(f(1.5f), half_xyy));
-    }
-    Value* signed_inf = b_.CreateBinaryIntrinsic(llvm::Intrinsic::copysign, f(kInf), x);
-    y = sel(b_.CreateFCmpOEQ(x, f(0.0f)), signed_inf, y);
-    y = sel(b_.CreateFCmpOEQ(x, f(kInf)), f(0.0f), y);
-    return sel(b_.CreateFCmpOLT(x, f(0.0f)), f_bits(0xFFC00000u), sel(is_nan(x), b_.CreateFAdd(x, x), y));
+    return b_.CreateFDiv(f(1.0f), b_.CreateUnaryIntrinsic(llvm::Intrinsic::sqrt, x));
 }
 
 // fast::exp2

@@ -272,7 +272,7 @@ TEST_CASE("Fast computes normalize with rsqrt; Precise keeps its bits", "[precis
         CHECK(pre.vec("r0", l) == glm::vec4(x / len, y / len, z / len, x / std::sqrt(value(l, 3))));
         for (int c = 0; c < 4; ++c) differing += fast.at("r0", l, c) != pre.at("r0", l, c);
     }
-    // rsqrt's 2^-22 relative and a multiply's rounding.
+    // rsqrt's 2^-23 relative and a multiply's rounding.
     check_output(fast, "r0", 4, [&](uint32_t l) { return pre.vec("r0", l); }, 1e-6f);
     CHECK(differing > int(count) / 4);
 }
