@@ -52,9 +52,10 @@ class Scene:
         image: _Numbers,
         *,
         linear: bool = True,
-        wrap: str = "repeat",
-        mipmaps: bool = True,
+        wrap: str | None = None,
+        mipmaps: bool | None = None,
         top_down: bool = False,
+        target: str = "2d",
     ) -> None: ...
 
 class Program:

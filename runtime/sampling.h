@@ -45,4 +45,8 @@ struct LaneLookup {
 // back through memory and the loads stalled on the stores (perf).
 void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, float* rgba);
 
+// sample_complete_lane() of a complete rectangle texture (TextureTarget::Rect:
+// unnormalized coordinates, one level, clamping wraps; sampling_rect.cpp).
+void sample_rect_lane(const Texture& texture, const LaneLookup& lookup, float* rgba);
+
 }  // namespace glslrun::rt

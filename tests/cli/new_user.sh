@@ -158,4 +158,9 @@ if command -v script > /dev/null; then
     grep -q "/3 frames" notty.txt && fail "--frames prints progress into a pipe: $(cat notty.txt)"
 fi
 
+# ---- --stats names a rectangle texture (scenes/rectangle.toml).
+"$glslrun" "$src/shaders/rect_post.vert" "$src/shaders/rect_post.frag" "$src/scenes/rectangle.toml" --size 8x8 \
+    --stats -o rect.png > rect_stats.txt 2> rect_err.txt || fail "rect_post did not render: $(cat rect_err.txt)"
+grep -q "unit 0: rectangle 64x64 RGBA8, 1 level" rect_stats.txt || fail "--stats: no rectangle texture in $(cat rect_stats.txt)"
+
 finish "new-user CLI: inputs protected, NUL paths, exit statuses, help, check, formats, reports, batch"
