@@ -58,6 +58,7 @@ CASES = [
     ("back_material", "back_material.toml", "lecture pixel"),
     ("textured_pix", "textured.toml", "textured"),
     ("cube_reflect", "cube_map.toml", "textured"),
+    ("rect_post", "rectangle.toml", "textured"),
 ]
 
 

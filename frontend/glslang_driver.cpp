@@ -116,7 +116,9 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     out.shader->setStringsWithLengths(&str, &len, 1);
     // GLSL 1.10 makes the *Lod texture functions built-in in the vertex
     // shader; glslang 12 wants the extension.
-    std::string preamble = lang == EShLangVertex ? "#extension GL_ARB_shader_texture_lod : enable\n" : "";
+    std::string preamble;
+    for (std::string_view name : kDefaultExtensions) preamble += "#extension " + std::string(name) + " : enable\n";
+    if (lang == EShLangVertex) preamble += "#extension GL_ARB_shader_texture_lod : enable\n";
     preamble += extension_macros() + helpers;
     out.shader->setPreamble(preamble.c_str());
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));

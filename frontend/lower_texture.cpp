@@ -7,6 +7,13 @@
 //   texture2D(s, c, bias)     in a fragment shader: ddx(c), ddy(c), bias
 //   texture2DLod(s, c, lod)   lod given; also any lookup in a vertex shader
 //                             (lod 0: vertex shaders have no derivatives)
+//   texture2DRect(s, c)       as texture2D, target Rect: the sampler takes
+//                             c unnormalized (runtime/sampling_rect.cpp)
+//   texture2DGradARB(s, c, dx, dy)   (ARB_shader_texture_lod) as texture2D
+//                             with dx, dy in place of the screen derivatives,
+//                             in either stage; the Proj forms divide c by q
+//                             and take dx, dy as they are (the extension's
+//                             "already projected" gradients)
 //
 // Derivatives are taken of the projected coordinates, as §3.8.8 computes
 // rho from s/q and t/q.
@@ -28,6 +35,7 @@ bool sampler_target(const gl::TSampler& s, ir::TexTarget* target) {
     case gl::Esd2D: *target = ir::TexTarget::T2D; return true;
     case gl::Esd3D: *target = ir::TexTarget::T3D; return true;
     case gl::EsdCube: *target = ir::TexTarget::Cube; return true;
+    case gl::EsdRect: *target = ir::TexTarget::Rect; return true;
     default: return false;
     }
 }
@@ -37,18 +45,19 @@ bool sampler_target(const gl::TSampler& s, ir::TexTarget* target) {
 Value StageLowering::texture(gl::TIntermAggregate* n) {
     const gl::TIntermSequence& seq = n->getSequence();
     const gl::TOperator op = n->getOp();
-    const bool proj = op == gl::EOpTextureProj || op == gl::EOpTextureProjLod;
+    const bool proj = op == gl::EOpTextureProj || op == gl::EOpTextureProjLod || op == gl::EOpTextureProjGrad;
     const bool explicit_lod = op == gl::EOpTextureLod || op == gl::EOpTextureProjLod;
-    if (seq.size() < 2 || (op != gl::EOpTexture && !proj && !explicit_lod))
+    const bool grad = op == gl::EOpTextureGrad || op == gl::EOpTextureProjGrad;
+    if (seq.size() < (grad ? 4u : 2u) || (op != gl::EOpTexture && !proj && !explicit_lod && !grad))
         return fail(n, "this texture function is not part of GLSL 1.10/1.20");
     const gl::TType& sampler_type = seq[0]->getAsTyped()->getType();
     ir::TexInfo info;
     if (sampler_type.getBasicType() != gl::EbtSampler || !sampler_target(sampler_type.getSampler(), &info.target) ||
         sampler_type.getSampler().isArrayed())
-        return fail(n, "only sampler1D/2D/3D/Cube and sampler1D/2DShadow are supported");
+        return fail(n, "only sampler1D/2D/3D/Cube/2DRect and sampler1D/2D/2DRectShadow are supported");
     info.shadow = sampler_type.getSampler().isShadow();
-    const bool has_extra = seq.size() > 2;  // bias, or the explicit lod
-    const bool implicit = stage_ == ir::Stage::Fragment && !explicit_lod;
+    const bool has_extra = !grad && seq.size() > 2;  // bias, or the explicit lod
+    const bool implicit = grad || (stage_ == ir::Stage::Fragment && !explicit_lod);
     info.lod = !implicit ? ir::TexLod::Explicit : has_extra ? ir::TexLod::ImplicitBias : ir::TexLod::Implicit;
 
     std::vector<Value> args;
@@ -69,7 +78,12 @@ Value StageLowering::texture(gl::TIntermAggregate* n) {
     if (info.shadow) block_values.push_back(projected(coord.regs[2]));
     if (info.lod == ir::TexLod::Explicit) block_values.push_back(has_extra ? args[2].regs.at(0) : konst_f(0.0f));
     if (info.lod == ir::TexLod::ImplicitBias) block_values.push_back(args[2].regs.at(0));
-    if (implicit) {
+    if (grad) {
+        for (const Value* d : {&args[2], &args[3]}) {
+            if (d->regs.size() < dims) return fail(n, "texture gradient has too few components");
+            for (uint32_t k = 0; k < dims; ++k) block_values.push_back(d->regs[k]);
+        }
+    } else if (implicit) {
         shader.uses_derivatives = true;
         for (Op d : {Op::ddx, Op::ddy})
             for (Reg r : s) block_values.push_back(alu(d, Kind::F32, r));

@@ -49,6 +49,15 @@ std::string expand_defined_macros(const std::string& src);
 // gl_MaxDrawBuffers, which GLSL 1.10 has anyway.
 inline constexpr std::array<std::string_view, 1> kExtraExtensions{"GL_ARB_draw_buffers"};
 std::string extension_macros();
+// Extensions glslang knows that glslrun enables in every shader of both
+// stages, as Mesa does in a compatibility context (the preamble's
+// `#extension NAME : enable`; the source may still disable one).
+inline constexpr std::array<std::string_view, 1> kDefaultExtensions{"GL_ARB_texture_rectangle"};
+// Extensions glslang knows and glslrun implements, that a shader enables
+// with `#extension NAME : enable|require` (as in Mesa; their macros are
+// glslang's): ARB_shader_texture_lod's *Lod in the fragment shader and the
+// *GradARB functions.
+inline constexpr std::array<std::string_view, 1> kOptionalExtensions{"GL_ARB_shader_texture_lod"};
 std::string accept_extension_directives(const std::string& src);
 
 // Mesa compatibility: a float literal's `f`/`F` suffix is accepted in GLSL

@@ -69,22 +69,25 @@ struct Instr {
 // compare against), then lod (Explicit) or bias (ImplicitBias), then ddx[dims]
 // and ddy[dims] (Implicit*: the screen derivatives of the coordinates).
 // Projection (texture2DProj, ...) is done by the frontend before the block.
-enum class TexTarget : uint8_t { T1D, T2D, T3D, Cube };  // glslrun::TextureTarget's order
+// Rect: a rectangle texture, 2D with unnormalized coordinates.
+enum class TexTarget : uint8_t { T1D, T2D, T3D, Cube, Rect };  // glslrun::TextureTarget's order
 enum class TexLod : uint8_t { Explicit, Implicit, ImplicitBias };
 struct TexInfo {
     TexTarget target = TexTarget::T2D;
     bool shadow = false;
     TexLod lod = TexLod::Implicit;
 
-    uint32_t dims() const { return target == TexTarget::T1D ? 1 : target == TexTarget::T2D ? 2 : 3; }
+    uint32_t dims() const {
+        return target == TexTarget::T1D ? 1 : target == TexTarget::T2D || target == TexTarget::Rect ? 2 : 3;
+    }
     uint32_t ref_at() const { return dims(); }
     uint32_t lod_at() const { return dims() + (shadow ? 1 : 0); }
     uint32_t ddx_at() const { return lod_at() + (lod == TexLod::Implicit ? 0 : 1); }
     uint32_t ddy_at() const { return ddx_at() + dims(); }
     uint32_t operand_count() const { return lod == TexLod::Explicit ? ddx_at() : ddy_at() + dims(); }
-    uint32_t encode() const { return uint32_t(target) | uint32_t(shadow) << 2 | uint32_t(lod) << 3; }
+    uint32_t encode() const { return uint32_t(target) | uint32_t(shadow) << 3 | uint32_t(lod) << 4; }
     static TexInfo decode(uint32_t bits) {
-        return {TexTarget(bits & 3), bool(bits >> 2 & 1), TexLod(bits >> 3 & 3)};
+        return {TexTarget(bits & 7), bool(bits >> 3 & 1), TexLod(bits >> 4 & 3)};
     }
 };
 inline constexpr uint32_t kTexResults = 4;

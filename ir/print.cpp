@@ -1,5 +1,6 @@
 // The IR printer: the debugging tool (glslrun --dump-ir) and the basis of the
 // golden tests, so its output is stable and complete.
+#include <array>
 #include <cstring>
 #include <string>
 
@@ -46,7 +47,10 @@ std::string instr_text(const Instr& in) {
                                undef_info(UndefOp(in.imm[0] % uint32_t(UndefOp::Count_))).name, reg_name(in.src[0]),
                                reg_name(in.src[1]), reg_name(in.src[2]), in.imm[1]);
     case Op::tex: {
-        static const char* const targets[] = {"1d", "2d", "3d", "cube"};
+        // By TexTarget: a target added there without a name here does not compile.
+        static constexpr std::array<const char*, size_t(TexTarget::Rect) + 1> targets = {"1d", "2d", "3d", "cube",
+                                                                                        "rect"};
+        static_assert(targets.back() != nullptr);
         static const char* const lods[] = {"lod", "implicit", "bias"};
         const TexInfo t = TexInfo::decode(in.imm[2]);
         return s + fmt::format(".{}{}.{} unit {}, %{}..%{} (result %{}..%{})", targets[int(t.target)],

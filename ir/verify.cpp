@@ -114,8 +114,8 @@ struct Verifier {
         if (shader.regs[in.src[0]] != Kind::I32) return fail(n, "tex: unit is not i32");
         if (in.type != Kind::F32) return fail(n, "tex: result is not f32");
         if (in.imm[1] != t.operand_count()) return fail(n, "tex: operand count differs from its TexInfo");
-        if (t.lod != TexLod::Explicit && shader.stage != Stage::Fragment)
-            return fail(n, "tex: implicit level of detail outside a fragment shader");
+        // An implicit LOD outside a fragment shader is texture*GradARB's (its
+        // operands are the given gradients, not ddx/ddy of the coordinates).
         if (!range_ok(in.imm[0], in.imm[1], 1) || !range_ok(in.dst, kTexResults, 1))
             return fail(n, "tex: register block out of bounds");
         for (uint32_t k = 0; k < in.imm[1]; ++k)

@@ -55,9 +55,10 @@ class Scene:
         image: _Numbers,
         *,
         linear: bool = True,
-        wrap: str = "repeat",
-        mipmaps: bool = True,
+        wrap: str | None = None,
+        mipmaps: bool | None = None,
         top_down: bool = False,
+        target: str = "2d",
     ) -> None: ...
     # The GL state of the scene file's sections, keyword by keyword.
     def set_state(self, **kwargs: _SceneValue) -> None: ...

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,9 +98,23 @@ TextureWrap parse_wrap(const std::string& name) {
 }
 
 // An H x W x {1, 3, 4} image (uint8: n/255 into RGBA8; float32: RGBA32F) as
-// a 2D texture on `unit`, bottom row first unless `top_down`.
-void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear, const std::string& wrap,
-                 bool mipmaps, bool top_down) {
+// A rectangle texture (target "rectangle") has no mipmaps and clamps; its
+// defaults are GL's for rectangles, and asking for what GL refuses is an error.
+void rectangle_options(const std::optional<std::string>& wrap, std::optional<bool>& mipmaps) {
+    if (mipmaps.value_or(false)) throw py::value_error("a rectangle texture has no mipmaps: mipmaps must be False");
+    if (wrap && (*wrap == "repeat" || *wrap == "mirrored_repeat"))
+        throw py::value_error("a rectangle texture's wrap is clamp_to_edge, clamp or clamp_to_border, not " + *wrap);
+    mipmaps = false;
+}
+
+// a 2D or rectangle texture on `unit`, bottom row first unless `top_down`.
+void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear, std::optional<std::string> wrap,
+                 std::optional<bool> mipmaps_opt, bool top_down, const std::string& target_name) {
+    if (target_name != "2d" && target_name != "rectangle")
+        throw py::value_error("target '" + target_name + "' is not one of 2d, rectangle");
+    const TextureTarget target = target_name == "rectangle" ? TextureTarget::Rect : TextureTarget::Tex2D;
+    if (target == TextureTarget::Rect) rectangle_options(wrap, mipmaps_opt);
+    const bool mipmaps = mipmaps_opt.value_or(true);
     if (unit < 0 || unit >= kMaxTextureUnits)
         throw py::value_error("texture units are 0.." + std::to_string(kMaxTextureUnits - 1));
     py::array any = py::array::ensure(image);
@@ -121,13 +136,14 @@ void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear
             size_t row = size_t(top_down ? y : h - 1 - y);
             level.texels[row * size_t(w) + size_t(x)] = t * glm::vec4(scale, scale, scale, c == 4 ? scale : 1);
         }
-    Texture texture = take(Texture::create(TextureTarget::Tex2D, {std::move(level)},
+    Texture texture = take(Texture::create(target, {std::move(level)},
                                            bytes ? TextureFormat::RGBA8 : TextureFormat::RGBA32F));
     if (mipmaps) texture.generate_mipmaps();
     texture.sampler.mag_filter = linear ? TextureFilter::Linear : TextureFilter::Nearest;
     texture.sampler.min_filter = mipmaps ? (linear ? TextureFilter::LinearMipmapLinear : TextureFilter::NearestMipmapNearest)
                                          : texture.sampler.mag_filter;
-    texture.sampler.wrap_s = texture.sampler.wrap_t = parse_wrap(wrap);
+    texture.sampler.wrap_s = texture.sampler.wrap_t =
+        wrap ? parse_wrap(*wrap) : target == TextureTarget::Rect ? TextureWrap::ClampToEdge : TextureWrap::Repeat;
     scene::TextureSetting setting{unit, std::make_shared<const Texture>(std::move(texture)), mipmaps, -1, 0,
                                   {"set_texture", 0}};
     for (scene::TextureSetting& t : s.textures)
@@ -156,12 +172,15 @@ void bind_mesh(py::module_& m) {
               "files (\"triangles\", \"triangle_strip\", \"lines\", ...), uniforms ({name: value}) for this object. "
               "Its model matrix is the identity: transform positions in numpy. Returns the object's index.");
     scene.def("set_texture", &set_texture, py::arg("unit"), py::arg("image"), py::kw_only(), py::arg("linear") = true,
-              py::arg("wrap") = "repeat", py::arg("mipmaps") = true, py::arg("top_down") = false,
-              "Binds an image array to texture unit `unit` as a 2D texture: H x W (luminance), H x W x 3 or H x W x 4; "
+              py::arg("wrap") = py::none(), py::arg("mipmaps") = py::none(), py::arg("top_down") = false,
+              py::arg("target") = "2d",
+              "Binds an image array to texture unit `unit` as a 2D texture (target=\"rectangle\": a rectangle "
+              "texture, sampler2DRect, addressed in texels, without mipmaps, wrap clamp_to_edge unless given): "
+              "H x W (luminance), H x W x 3 or H x W x 4; "
               "uint8 as n/255 into RGBA8, floats into RGBA32F. Row 0 of the array is the top of the picture, so "
               "t = 0 is its bottom row (top_down=True: row 0 at t = 0). mipmaps generates every level (GL's default "
-              "minifying filter needs them; without, the filter is linear or nearest); wrap is repeat, "
-              "clamp_to_edge, clamp, clamp_to_border or mirrored_repeat.");
+              "minifying filter needs them; without, the filter is linear or nearest; default True for 2d); wrap is "
+              "repeat (the 2d default), clamp_to_edge, clamp, clamp_to_border or mirrored_repeat.");
 }
 
 }  // namespace glslrun::python

@@ -17,6 +17,16 @@ float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::ve
 
 glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod) {
     if (!texture.complete()) return {0.0f, 0.0f, 0.0f, 1.0f};
+    if (texture.target() == TextureTarget::Rect) {
+        LaneLookup lookup;
+        lookup.coord = coord;
+        lookup.ref = ref;
+        lookup.lod = lod;
+        lookup.implicit = false;
+        glm::vec4 v;
+        sample_rect_lane(texture, lookup, &v.x);
+        return v;
+    }
     return sample_complete(texture, coord, ref, lod);
 }
 

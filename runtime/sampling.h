@@ -75,5 +75,8 @@ struct LookupDetails {
     glm::vec4 result{0.0f, 0.0f, 0.0f, 1.0f};
 };
 LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup);
+// sample_complete_lane() of a complete rectangle texture (TextureTarget::Rect:
+// unnormalized coordinates, one level, clamping wraps; sampling_rect.cpp).
+void sample_rect_lane(const Texture& texture, const LaneLookup& lookup, float* rgba);
 
 }  // namespace glslrun::rt

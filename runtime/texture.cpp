@@ -28,14 +28,29 @@ const char* target_name(TextureTarget t) {
     case TextureTarget::Tex2D: return "2D texture";
     case TextureTarget::Tex3D: return "3D texture";
     case TextureTarget::Cube: return "cube map";
+    case TextureTarget::Rect: return "rectangle texture";
     }
     return "texture";
 }
 
-// GL_MAX_TEXTURE_SIZE, or GL_MAX_3D_TEXTURE_SIZE for 3D textures.
-int max_size(TextureTarget t) { return t == TextureTarget::Tex3D ? kMax3DTextureSize : kMaxTextureSize; }
+// GL_MAX_TEXTURE_SIZE, or the 3D or rectangle maximum.
+int max_size(TextureTarget t) {
+    return t == TextureTarget::Tex3D ? kMax3DTextureSize
+                                     : t == TextureTarget::Rect ? kMaxRectangleTextureSize : kMaxTextureSize;
+}
 const char* max_size_name(TextureTarget t) {
-    return t == TextureTarget::Tex3D ? "GL_MAX_3D_TEXTURE_SIZE" : "GL_MAX_TEXTURE_SIZE";
+    return t == TextureTarget::Tex3D ? "GL_MAX_3D_TEXTURE_SIZE"
+                                     : t == TextureTarget::Rect ? "GL_MAX_RECTANGLE_TEXTURE_SIZE" : "GL_MAX_TEXTURE_SIZE";
+}
+
+// ARB_texture_rectangle: a rectangle has no mipmaps, and GL refuses the wrap
+// modes and min filters that would need them (GL_INVALID_ENUM) and any base
+// level but 0 (GL_INVALID_VALUE). Those states cannot arise in GL; here a
+// SamplerState holding one makes the texture incomplete.
+bool rectangle_sampler_ok(const SamplerState& st) {
+    auto clamps = [](TextureWrap w) { return w != TextureWrap::Repeat && w != TextureWrap::MirroredRepeat; };
+    return clamps(st.wrap_s) && clamps(st.wrap_t) && clamps(st.wrap_r) && !rt::is_mipmap_filter(st.min_filter) &&
+           st.base_level == 0;
 }
 
 // Levels 0 .. log2(max size): glTexImage refuses others (GL_INVALID_VALUE).
@@ -74,7 +89,8 @@ std::string check_image(TextureTarget target, const TextureImage& image, int lev
         return fmt::format("a texture image needs width, height and depth of at least 1 (got {})", size_str(image));
     if (target == TextureTarget::Tex1D && (image.height != 1 || image.depth != 1))
         return fmt::format("a 1D texture image has height = depth = 1 (got {})", size_str(image));
-    if ((target == TextureTarget::Tex2D || target == TextureTarget::Cube) && image.depth != 1)
+    if ((target == TextureTarget::Tex2D || target == TextureTarget::Cube || target == TextureTarget::Rect) &&
+        image.depth != 1)
         return fmt::format("a {} image has depth = 1 (got {})", target_name(target), size_str(image));
     if (target == TextureTarget::Cube && image.width != image.height)
         return fmt::format("cube map faces are square (got {}x{})", image.width, image.height);
@@ -151,9 +167,11 @@ Result<Texture> Texture::create(TextureTarget target, std::vector<TextureImage> 
     if (faces.size() != want)
         return Error(fmt::format("a {} takes {} image{} for level 0 (got {})", target_name(target), want,
                                  cube ? "s, one per face (+X, -X, +Y, -Y, +Z, -Z)" : "", faces.size()));
-    // §3.8.1: DEPTH_COMPONENT images are for TEXTURE_1D and TEXTURE_2D only in GL 2.1.
-    if (format == TextureFormat::Depth && target != TextureTarget::Tex1D && target != TextureTarget::Tex2D)
-        return Error(fmt::format("a depth texture is 1D or 2D in GL 2.1 (this is a {})", target_name(target)));
+    // §3.8.1: DEPTH_COMPONENT images are for TEXTURE_1D and TEXTURE_2D only in
+    // GL 2.1, and rectangles (ARB_texture_rectangle with ARB_depth_texture).
+    if (format == TextureFormat::Depth && (target == TextureTarget::Tex3D || target == TextureTarget::Cube))
+        return Error(fmt::format("a depth texture is 1D, 2D or a rectangle in GL 2.1 (this is a {})",
+                                 target_name(target)));
     for (size_t f = 0; f < faces.size(); ++f) {
         std::string why = check_image(target, faces[f], 0);
         if (!why.empty()) return Error(cube ? fmt::format("cube map face {}: {}", kFaceNames[f], why) : why);
@@ -167,6 +185,10 @@ Result<Texture> Texture::create(TextureTarget target, std::vector<TextureImage> 
         t.target_ = target;
         t.format_ = format;
         t.levels_.resize(want);
+        if (target == TextureTarget::Rect) {  // GL's initial state for rectangles
+            t.sampler.min_filter = TextureFilter::Linear;
+            t.sampler.wrap_s = t.sampler.wrap_t = t.sampler.wrap_r = TextureWrap::ClampToEdge;
+        }
         for (size_t f = 0; f < want; ++f) {
             store_image(format, faces[f]);
             t.levels_[f].push_back(std::move(faces[f]));
@@ -179,6 +201,9 @@ Status Texture::set_level(int face, int level, TextureImage image) {
     if (face < 0 || face >= faces())
         return Error(fmt::format("face {} does not exist: a {} has {} face{}", face, target_name(target_), faces(),
                                  faces() > 1 ? "s (0..5: +X, -X, +Y, -Y, +Z, -Z)" : " (0)"));
+    if (target_ == TextureTarget::Rect && level != 0)
+        return Error(fmt::format("mipmap level {} of a rectangle texture: rectangles have level 0 only "
+                                 "(GL_INVALID_VALUE)", level));
     if (level < 0 || level >= level_limit(target_))
         return Error(fmt::format("mipmap level {} is outside 0..{} for a {}", level, level_limit(target_) - 1,
                                  target_name(target_)));
@@ -198,6 +223,7 @@ Status Texture::set_level(int face, int level, TextureImage image) {
 // max_level as they are now choose the levels. Where GL would refuse
 // (no level_base image, cube faces of different sizes) nothing changes.
 void Texture::generate_mipmaps() {
+    if (target_ == TextureTarget::Rect) return;  // rectangles have no mipmaps (GL_INVALID_ENUM)
     const int base = sampler.base_level;
     for (int f = 0; f < faces(); ++f) {
         const TextureImage* image = rt::level_image(*this, f, base);
@@ -225,6 +251,7 @@ bool Texture::complete() const {
     const int base = sampler.base_level;
     const TextureImage* first = rt::level_image(*this, 0, base);
     if (!first) return false;
+    if (target_ == TextureTarget::Rect) return rectangle_sampler_ok(sampler);
     for (int f = 1; f < faces(); ++f) {
         const TextureImage* image = rt::level_image(*this, f, base);
         if (!image || image->width != first->width || image->height != first->height) return false;

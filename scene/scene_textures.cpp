@@ -15,7 +15,7 @@ namespace glslrun::scene::detail {
 namespace {
 
 // Each list is in its enum's order (glslrun.h), so a choice's index is the value.
-const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map"};
+const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map", "rectangle"};
 const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component"};
 const std::vector<std::string_view> kFilters = {"nearest", "linear", "nearest_mipmap_nearest",
                                                 "linear_mipmap_nearest", "nearest_mipmap_linear",
@@ -74,7 +74,8 @@ Size3 read_size(const Section& s, const Context& c) {
     if (!a || int(a->size()) != dims)
         fail(n, fmt::format("'{}' must be {} for a {} texture (got {})", s.name("size"), size_form(c.target),
                             kTargets[size_t(c.target)], describe(n)));
-    int max = c.target == TextureTarget::Tex3D ? kMax3DTextureSize : kMaxTextureSize;
+    int max = c.target == TextureTarget::Tex3D ? kMax3DTextureSize
+              : c.target == TextureTarget::Rect ? kMaxRectangleTextureSize : kMaxTextureSize;
     Size3 size{1, 1, 1};
     for (int i = 0; i < dims; ++i)
         size[size_t(i)] = int(integer((*a)[size_t(i)], fmt::format("{}[{}]", s.name("size"), i), 1, max));
@@ -326,6 +327,10 @@ void read_depth_state(const Section& s, const Context& c, SamplerState& st) {
 
 SamplerState read_sampler(const Section& s, const Context& c) {
     SamplerState st;
+    if (c.target == TextureTarget::Rect) {  // GL's initial state for rectangles, as Texture::create's
+        st.min_filter = TextureFilter::Linear;
+        st.wrap_s = st.wrap_t = st.wrap_r = TextureWrap::ClampToEdge;
+    }
     read_filters_and_wraps(s, st);
     read_border_color(s, st);
     s.read("min_lod", st.min_lod);
@@ -338,6 +343,25 @@ SamplerState read_sampler(const Section& s, const Context& c) {
 }
 
 bool is_mipmap_filter(TextureFilter f) { return f != TextureFilter::Nearest && f != TextureFilter::Linear; }
+
+// ARB_texture_rectangle: what GL refuses for a rectangle (GL_INVALID_ENUM,
+// GL_INVALID_VALUE) is refused here, with the key that asked for it.
+void check_rectangle(const Section& s, const SamplerState& st) {
+    for (std::string_view key : {"levels", "generate_mipmap"})
+        if (const toml::node* n = s.get(key))
+            fail(*n, fmt::format("'{}': a rectangle texture has no mipmaps", s.name(key)));
+    if (const toml::node* n = s.get("min_filter"); n && is_mipmap_filter(st.min_filter))
+        fail(*n, fmt::format("'{}' of a rectangle texture is \"nearest\" or \"linear\" (it has no mipmaps)",
+                             s.name("min_filter")));
+    for (std::string_view key : {"wrap_s", "wrap_t", "wrap_r"}) {
+        const toml::node* n = s.get(key);
+        if (n && (n->value_or(std::string_view{}) == "repeat" || n->value_or(std::string_view{}) == "mirrored_repeat"))
+            fail(*n, fmt::format("'{}' of a rectangle texture is \"clamp\", \"clamp_to_edge\" or "
+                                 "\"clamp_to_border\" (GL refuses \"{}\")", s.name(key), n->value_or(std::string_view{})));
+    }
+    if (const toml::node* n = s.get("base_level"); n && st.base_level != 0)
+        fail(*n, fmt::format("'{}' of a rectangle texture is 0 (its only level)", s.name("base_level")));
+}
 
 // GL samples an incomplete texture as (0, 0, 0, 1) without a word; the most
 // common cause is GL's default min filter on a texture without mipmaps.
@@ -392,6 +416,7 @@ TextureSetting read_texture(const Section& s, int unit, const std::string& dir, 
         fail(*s.get("levels"), fmt::format("[{}] has both 'levels' and generate_mipmap = true; give one",
                                            s.path()));
     SamplerState sampler = read_sampler(s, c);  // before the texels: cheap mistakes first
+    if (c.target == TextureTarget::Rect) check_rectangle(s, sampler);
     Texture texture = build_texture(s, c);
     texture.sampler = sampler;
     if (setting.generate_mipmap) texture.generate_mipmaps();

@@ -32,9 +32,23 @@ exec "$glslrun" test --root "$root" --expect "$repo/tests/piglit-expectations.tx
     tests/spec/glsl-1.20 \
     generated_tests/spec/glsl-1.20 \
     tests/shaders \
+    tests/spec/arb_texture_rectangle \
+    tests/spec/arb_shader_texture_lod \
     generated_tests/spec/arb_draw_buffers/preprocessor/enabled-compat.vert \
     generated_tests/spec/arb_draw_buffers/preprocessor/enabled-compat.frag \
     generated_tests/spec/arb_draw_buffers/preprocessor/disabled-defined-compat.vert \
     generated_tests/spec/arb_draw_buffers/preprocessor/disabled-defined-compat.frag \
     generated_tests/spec/arb_draw_buffers/preprocessor/disabled-undefined-compat.vert \
-    generated_tests/spec/arb_draw_buffers/preprocessor/disabled-undefined-compat.frag
+    generated_tests/spec/arb_draw_buffers/preprocessor/disabled-undefined-compat.frag \
+    generated_tests/spec/arb_texture_rectangle/preprocessor/enabled-compat.vert \
+    generated_tests/spec/arb_texture_rectangle/preprocessor/enabled-compat.frag \
+    generated_tests/spec/arb_texture_rectangle/preprocessor/disabled-defined-compat.vert \
+    generated_tests/spec/arb_texture_rectangle/preprocessor/disabled-defined-compat.frag \
+    generated_tests/spec/arb_texture_rectangle/preprocessor/disabled-undefined-compat.vert \
+    generated_tests/spec/arb_texture_rectangle/preprocessor/disabled-undefined-compat.frag \
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/enabled-compat.vert \
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/enabled-compat.frag \
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-defined-compat.vert \
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-defined-compat.frag \
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-undefined-compat.vert \
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-undefined-compat.frag

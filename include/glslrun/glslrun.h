@@ -332,7 +332,12 @@ private:
 // immutable once bound (GLState holds shared_ptr<const Texture>), so draws on
 // many threads can share it.
 enum class CompareFunc : uint8_t { Never, Less, Equal, Lequal, Greater, Notequal, Gequal, Always };
-enum class TextureTarget : uint8_t { Tex1D, Tex2D, Tex3D, Cube };
+// Rect: GL_TEXTURE_RECTANGLE (ARB_texture_rectangle): one 2D image addressed
+// by unnormalized coordinates (s in [0, width]), no mipmaps; its sampler state
+// starts as GL's for rectangles (LINEAR, CLAMP_TO_EDGE), and a state GL would
+// refuse for it (REPEAT, MIRRORED_REPEAT, a mipmap min filter) makes it
+// incomplete.
+enum class TextureTarget : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Rect };
 enum class TextureFilter : uint8_t { Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest,
                                      NearestMipmapLinear, LinearMipmapLinear };
 enum class TextureWrap : uint8_t { Repeat, ClampToEdge, Clamp, ClampToBorder, MirroredRepeat };
@@ -367,6 +372,7 @@ struct TextureImage {
 
 inline constexpr int kMaxTextureSize = 16384;   // GL_MAX_TEXTURE_SIZE
 inline constexpr int kMax3DTextureSize = 2048;  // GL_MAX_3D_TEXTURE_SIZE
+inline constexpr int kMaxRectangleTextureSize = 16384;  // GL_MAX_RECTANGLE_TEXTURE_SIZE
 inline constexpr int kMaxTextureUnits = 16;     // GL_MAX_TEXTURE_IMAGE_UNITS
 
 class Texture {
@@ -515,7 +521,7 @@ struct GLState {
     int draw_buffers = 1;
     // glBindTexture per unit and target. A sampler reads the binding of its
     // own target on the unit its uniform names; none there samples as (0, 0, 0, 1).
-    struct TextureUnit { std::array<std::shared_ptr<const Texture>, 4> bound; };  // by TextureTarget
+    struct TextureUnit { std::array<std::shared_ptr<const Texture>, 5> bound; };  // by TextureTarget
     std::array<TextureUnit, kMaxTextureUnits> texture_units;
     // glActiveTexture(unit) + glBindTexture: fills the slot of the texture's
     // target; null unbinds every target of the unit. A unit outside

@@ -39,14 +39,23 @@ colors = [[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1], [1, 1, 0, 1]]
     np.testing.assert_array_equal(program.render(indexed), expected)
 
 
-def test_a_texture_from_an_array_is_upright():
-    program = glslrun.Program.compile(TEX_VS, TEX_FS)
+# Red, green over blue, white: row 0 is the top of the picture.
+PICTURE = np.array([[[255, 0, 0, 255], [0, 255, 0, 255]],
+                    [[0, 0, 255, 255], [255, 255, 255, 255]]], np.uint8)
+
+
+def textured_square(fragment):
+    """An 8x8 scene filled by a square with s, t over [0, 1], and its program."""
     scene = glslrun.Scene()
     scene.resize(8, 8)
     uv = (POSITIONS[:, :2] + 1) / 2
     scene.add_mesh(POSITIONS, texcoords=uv, primitive="triangle_strip", uniforms={"t": 0})
-    picture = np.array([[[255, 0, 0, 255], [0, 255, 0, 255]],
-                        [[0, 0, 255, 255], [255, 255, 255, 255]]], np.uint8)  # row 0 is the top
+    return glslrun.Program.compile(TEX_VS, fragment), scene
+
+
+def test_a_texture_from_an_array_is_upright():
+    program, scene = textured_square(TEX_FS)
+    picture = PICTURE
     scene.set_texture(0, picture, linear=False, mipmaps=False)
     image = program.render(scene)  # top row first, as the picture
     assert tuple(image[0, 0]) == (255, 0, 0, 255) and tuple(image[0, 7]) == (0, 255, 0, 255)
@@ -54,6 +63,27 @@ def test_a_texture_from_an_array_is_upright():
     # Floats, with mipmaps (GL's default minifying filter needs them).
     scene.set_texture(0, picture.astype(np.float32) / 255)
     assert program.render(scene)[0, 0, 0] > 128
+
+
+RECT_FS = """
+uniform sampler2DRect t;
+void main() { gl_FragColor = texture2DRect(t, gl_TexCoord[0].st * vec2(2.0)); }
+"""
+
+
+def test_a_rectangle_texture_is_addressed_in_texels():
+    program, scene = textured_square(RECT_FS)
+    picture = PICTURE
+    # s, t in [0, 2]: texels, not [0, 1]; no mipmaps, clamp_to_edge (GL's rectangle defaults).
+    scene.set_texture(0, picture, linear=False, target="rectangle")
+    image = program.render(scene)
+    assert tuple(image[0, 0]) == (255, 0, 0, 255) and tuple(image[7, 7]) == (255, 255, 255, 255)
+    with pytest.raises(ValueError, match="no mipmaps"):
+        scene.set_texture(0, picture, target="rectangle", mipmaps=True)
+    with pytest.raises(ValueError, match="not repeat"):
+        scene.set_texture(0, picture, target="rectangle", wrap="repeat")
+    with pytest.raises(ValueError, match="target 'rect'"):
+        scene.set_texture(0, picture, target="rect")
 
 
 def test_array_mistakes_are_errors():

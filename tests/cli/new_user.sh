@@ -3,7 +3,8 @@
 # output over an input, NUL bytes in paths, FIFOs, exit statuses as
 # docs/ci.md states them, CR-only sources, --help, mistyped commands and
 # uniforms, .glsl with --stage, `glslrun check`, image formats,
-# --error-report's files, --compare's coverage, batch's format.
+# --error-report's files, --compare's coverage, batch's format, the command
+# line's program in a scene whose passes all name their own.
 #
 #   tests/cli/new_user.sh SOURCE_DIR GLSLRUN
 set -u
@@ -181,5 +182,26 @@ expect 2 "--include-dir: Directory does not exist: inc/missing" "$glslrun" check
 # A file that includes itself ends at the depth limit.
 printf '#extension GL_GOOGLE_include_directive : require\n#include "self.frag"\nvoid main() {}\n' > inc/self.frag
 expect 1 "#include nests more than 32 deep" "$glslrun" check inc/self.frag
+
+# ---- --stats names a rectangle texture (scenes/rectangle.toml).
+"$glslrun" "$src/shaders/rect_post.vert" "$src/shaders/rect_post.frag" "$src/scenes/rectangle.toml" --size 8x8 \
+    --stats -o rect.png > rect_stats.txt 2> rect_err.txt || fail "rect_post did not render: $(cat rect_err.txt)"
+grep -q "unit 0: rectangle 64x64 RGBA8, 1 level" rect_stats.txt || fail "--stats: no rectangle texture in $(cat rect_stats.txt)"
+
+# ---- The command line's program compiles and links even where every pass
+# names its own shaders (multi_pass.toml): its errors are reported, with no image.
+printf 'void main() { gl_FragColor = vec4(undefined_name); }\n' > broken.frag
+printf 'varying vec3 v;\nvoid main() { gl_FragColor = vec4(v, 1.0); }\n' > unlinked.frag
+for mode in "-o passes.png" "--frames 2 -o passes.png" "--bench 1 -o passes.png" "--error-report er"; do
+    # shellcheck disable=SC2086
+    expect 1 "broken.frag:1: error: 'undefined_name'" "$glslrun" "$vs" broken.frag "$src/scenes/multi_pass.toml" \
+        --size 8x8 $mode
+    ls passes*.png er/*.png > /dev/null 2>&1 && fail "an image was written for a program that does not compile ($mode)"
+done
+expect 1 "varying 'v' is read by the fragment shader but not written" "$glslrun" "$vs" unlinked.frag \
+    "$src/scenes/multi_pass.toml" --size 8x8 -o passes.png
+expect 1 "broken.frag:1: error" "$glslrun" trace --pixel 1,1 "$vs" broken.frag "$src/scenes/multi_pass.toml"
+printf '%s broken.frag %s passes.png\n' "$vs" "$src/scenes/multi_pass.toml" > passes.jobs
+expect 1 "broken.frag:1: error" "$glslrun" batch passes.jobs
 
 finish "new-user CLI: inputs protected, NUL paths, exit statuses, help, check, formats, reports, batch"

@@ -69,7 +69,7 @@ void check_goldens(const char* dir_name, bool optimized, int min_cases) {
 
 }  // namespace
 
-TEST_CASE("golden IR of the frontend") { check_goldens("tests/ir/golden", false, 7); }
+TEST_CASE("golden IR of the frontend") { check_goldens("tests/ir/golden", false, 9); }
 
 // The pass pipeline's output (fuse_mad, hoist, dead_stores, regalloc): a
 // change in what the passes do shows up as a diff here.

@@ -115,9 +115,11 @@ TEST_CASE("requirements decide skips", "[piglit][parse]") {
     // Extensions glslrun enables (ARB_draw_buffers) run; tests that need them absent skip.
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_ARB_draw_buffers").has_value());
     CHECK(reason("GLSL >= 1.10\n!GL_ARB_draw_buffers").value() == "requires GL_ARB_draw_buffers to be absent");
-    CHECK_FALSE(reason("GLSL >= 1.10\n!GL_ARB_texture_rectangle").has_value());
-    CHECK(reason("GLSL >= 1.10\nGL_ARB_draw_buffers\nGL_ARB_texture_rectangle").value() ==
-          "extension GL_ARB_texture_rectangle is not supported");
+    // ARB_texture_rectangle is on in every shader too (glslang knows it; the preamble enables it).
+    CHECK_FALSE(reason("GLSL >= 1.10\nGL_ARB_draw_buffers\nGL_ARB_texture_rectangle").has_value());
+    CHECK(reason("GLSL >= 1.10\n!GL_ARB_texture_rectangle").value() ==
+          "requires GL_ARB_texture_rectangle to be absent");
+    CHECK(reason("GLSL >= 1.10\nGL_EXT_texture_array").value() == "extension GL_EXT_texture_array is not supported");
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_MAX_VARYING_COMPONENTS >= 64").has_value());
     CHECK(reason("GLSL >= 1.10\nGL_MAX_VARYING_COMPONENTS >= 65").has_value());
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_MAX_FRAGMENT_UNIFORM_COMPONENTS >= 4097").has_value());

@@ -89,6 +89,11 @@ TEST_CASE("texture command syntax", "[piglit][textures]") {
     CHECK(t.kind == TextureCommand::Kind::Shadow2D);
     CHECK(t.unit == 3);
     CHECK(t.height == 16);
+    t = cmd<TextureCommand>("texture shadowRect 2 (32, 16)");
+    CHECK(t.kind == TextureCommand::Kind::ShadowRect);
+    CHECK(t.unit == 2);
+    CHECK(t.height == 16);
+    CHECK(cmd<TexParameter>("texparameter Rect compare_func never").target == TexParameter::Target::Rect);
 }
 
 TEST_CASE("texparameter syntax", "[piglit][textures]") {
@@ -132,11 +137,9 @@ TEST_CASE("texture variants that need GL 3 or extensions skip", "[piglit][textur
     CHECK(cmd<Unsupported>("texture rgbw 0 (8, 8) GL_RGBA8UI").reason ==
           "texture format GL_RGBA8UI is not supported");
     cmd<Unsupported>("texture rgbw 1DArray 0 (8, 2)");
-    cmd<Unsupported>("texture shadowRect 0 (8, 8)");
     cmd<Unsupported>("texture shadow2DArray 0 (8, 8, 2)");
     cmd<Unsupported>("texture integer 0 (8, 8) (0, 0) GL_RGBA8I");
-    cmd<Unsupported>("texture miptree 0");
-    cmd<Unsupported>("texparameter Rect compare_func greater");
+    cmd<Unsupported>("texparameter 2DArray compare_func greater");
     cmd<Unsupported>("texparameter 2D swizzle_r green");
     cmd<Unsupported>("texparameter 2D depth_mode red");
     cmd<Unsupported>("texcoord 0 (0, 0, 0, 1)");
@@ -379,6 +382,53 @@ probe all rgba 1 1 1 1
 texparameter 2D compare_func never
 draw rect -1 -1 2 2
 probe all rgba 0 0 0 0
+)");
+    INFO(r.message);
+    CHECK(r.outcome == Outcome::Pass);
+}
+
+TEST_CASE("texture miptree: 8x8 with a colour per level, sampled nearest per level", "[piglit][textures]") {
+    auto c = cmd<TextureCommand>("texture miptree 2");
+    CHECK(c.kind == TextureCommand::Kind::Miptree);
+    CHECK(c.unit == 2);
+    auto t = make_texture(c);
+    REQUIRE(t);
+    REQUIRE(t->levels(0).size() == 4);
+    CHECK(t->levels(0)[0].width == 8);
+    CHECK(t->levels(0)[3].width == 1);
+    CHECK(texel(t->levels(0)[1], 0, 0) == kGreen);
+    CHECK(texel(t->levels(0)[3], 0, 0) == kWhite);
+    CHECK(t->sampler.min_filter == TextureFilter::NearestMipmapNearest);
+    CHECK(t->complete());
+}
+
+TEST_CASE("shadowRect and texparameter Rect end to end", "[piglit][textures][exec]") {
+    // As piglit's glsl-fs-shadow2DRect tests: texel x of the 32x32 ramp holds
+    // x / 31, compared GREATER with the reference t; coordinates in texels.
+    const std::string test = R"([require]
+GLSL >= 1.10
+GL_ARB_texture_rectangle
+
+[vertex shader]
+varying vec4 texcoords;
+void main() { gl_Position = gl_Vertex; texcoords = (gl_Vertex + 1.0) / 2.0; }
+
+[fragment shader]
+uniform sampler2DRectShadow tex;
+varying vec4 texcoords;
+void main() { gl_FragColor = shadow2DRect(tex, texcoords.xyy * vec3(31.0, 31.0, 1.0)); }
+
+[test]
+uniform int tex 0
+texture shadowRect 0 (32, 32)
+)";
+    TestResult r = run(test + R"(draw rect -1 -1 2 2
+relative probe rgba (0.1, 0.9) (1.0, 1.0, 1.0, 1.0)
+relative probe rgba (0.9, 0.1) (0.0, 0.0, 0.0, 1.0)
+texparameter Rect depth_mode alpha
+texparameter Rect compare_func always
+draw rect -1 -1 2 2
+probe all rgba 0 0 0 1
 )");
     INFO(r.message);
     CHECK(r.outcome == Outcome::Pass);

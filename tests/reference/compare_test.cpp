@@ -29,7 +29,7 @@ struct Case {
 
 // The lecture's programs with their scenes (scenes/*.toml), then the
 // scenes that stress the built-in state, then the textured scenes (an image
-// with generated mipmaps and trilinear filtering; a cube map).
+// with generated mipmaps and trilinear filtering; a cube map; a rectangle).
 constexpr Case kCases[] = {
     {"minimal", "teapot.toml"},
     {"colors", "quad.toml"},
@@ -48,6 +48,7 @@ constexpr Case kCases[] = {
     {"back_material", "back_material.toml"},
     {"textured_pix", "textured.toml"},
     {"cube_reflect", "cube_map.toml"},
+    {"rect_post", "rectangle.toml"},
 };
 
 const std::string kSourceDir = GLSLRUN_SOURCE_DIR;

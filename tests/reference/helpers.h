@@ -42,6 +42,22 @@ struct Inputs {
     scene::Scene scene;
 };
 
+// A vertex shader for texture scenes: gl_TexCoord[0] through the texture matrix.
+inline constexpr const char* kTextureMatrixVertex = R"(
+void main() {
+    gl_TexCoord[0] = gl_TextureMatrix[0] * gl_MultiTexCoord0;
+    gl_Position = ftransform();
+}
+)";
+
+// A scene given as text with its program's two sources, named after `name`.
+inline Inputs scene_inputs(const std::string& name, const std::string& toml, const char* vertex,
+                           const char* fragment) {
+    auto scene = scene::parse_scene(toml, name + ".toml");
+    if (!scene) FAIL(scene.error().str());
+    return {{{name + ".vert", vertex}}, {{name + ".frag", fragment}}, std::move(*scene)};
+}
+
 // One image per colour buffer (draw_buffers).
 inline Result<std::vector<scene::Image>> render_glslrun(const Inputs& in) {
     auto program = Program::compile(in.vertex, in.fragment);

@@ -21,13 +21,6 @@ using namespace glslrun;
 
 namespace {
 
-const char* kVertex = R"(
-void main() {
-    gl_TexCoord[0] = gl_TextureMatrix[0] * gl_MultiTexCoord0;
-    gl_Position = ftransform();
-}
-)";
-
 const char* k2DFragment = R"(
 uniform sampler2D tex;
 uniform float bias;
@@ -46,12 +39,6 @@ std::string square(int x, int y, int size, const std::string& uniforms) {
                        "transform = [ {{ translate = [{}, {}, 0] }}, {{ scale = [{}, {}, 1] }} ]\n"
                        "uniforms = {{ {} }}\n",
                        x + size / 2.0, y + size / 2.0, size, size, uniforms);
-}
-
-reference::Inputs inputs(const std::string& name, const std::string& toml, const char* fragment) {
-    auto scene = scene::parse_scene(toml, name + ".toml");
-    if (!scene) FAIL(scene.error().str());
-    return {{{name + ".vert", kVertex}}, {{name + ".frag", fragment}}, std::move(*scene)};
 }
 
 // ------------------------------------------------- wraps and filters ---
@@ -199,6 +186,10 @@ std::string dims_scene() {
     toml += square(4, 4, 56, "strip = 0, volume = 1");
     toml += square(68, 4, 56, "strip = 2, volume = 3");
     return toml;
+}
+
+reference::Inputs inputs(const std::string& name, const std::string& toml, const char* fragment) {
+    return reference::scene_inputs(name, toml, reference::kTextureMatrixVertex, fragment);
 }
 
 }  // namespace

@@ -156,9 +156,14 @@ struct Fuzzer {
     // now and then, any int), and the results read back into variables.
     void tex() {
         ir::TexInfo info;
-        info.target = ir::TexTarget(pick(4));
-        info.shadow = info.target <= ir::TexTarget::T2D && pick(3) == 0;  // shadow1D, shadow2D
-        info.lod = !fragment() ? ir::TexLod::Explicit : pick(3) == 0 ? ir::TexLod::ImplicitBias : ir::TexLod::Implicit;
+        info.target = ir::TexTarget(pick(5));
+        // shadow1D, shadow2D, shadow2DRect
+        info.shadow = (info.target <= ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && pick(3) == 0;
+        // texture2DGradARB & co. (either stage): an implicit LOD from given gradients, not ddx/ddy.
+        const bool grad = pick(5) == 0;
+        info.lod = grad ? ir::TexLod::Implicit
+                   : !fragment() ? ir::TexLod::Explicit
+                   : pick(3) == 0 ? ir::TexLod::ImplicitBias : ir::TexLod::Implicit;
         const bool proj = info.target != ir::TexTarget::Cube && pick(3) == 0;
         const Reg q = of(Kind::F32);
         auto coordinate = [&] {
@@ -174,6 +179,10 @@ struct Fuzzer {
         if (info.lod != ir::TexLod::Explicit)
             for (Op d : {Op::ddx, Op::ddy})
                 for (uint32_t k = 0; k < info.dims(); ++k) {
+                    if (grad) {
+                        operands.push_back(of(Kind::F32));
+                        continue;
+                    }
                     Reg r = b.reg(Kind::F32);
                     b.instr(d, Kind::F32, r, {operands[k]});
                     operands.push_back(r);
@@ -282,6 +291,20 @@ std::array<GLState::TextureUnit, kMaxTextureUnits> make_textures() {
         t.generate_mipmaps();
         t.sampler.min_filter = TextureFilter::LinearMipmapNearest;
         t.sampler.wrap_s = t.sampler.wrap_t = t.sampler.wrap_r = TextureWrap::MirroredRepeat;
+    }));
+    bind(0, make(TextureTarget::Rect, {image(5, 3, 1, 0, 1)}, TextureFormat::RGBA8, [](Texture& t) {
+        t.sampler.wrap_s = TextureWrap::ClampToBorder;  // texture2DRect: linear, the border on s
+        t.sampler.wrap_t = TextureWrap::Clamp;
+        t.sampler.border_color = {0.5f, 0.25f, 1.0f, 0.0f};
+    }));
+    bind(1, make(TextureTarget::Rect, {image(4, 6, 1, 0, 1)}, TextureFormat::Depth, [](Texture& t) {
+        t.sampler.compare = true;  // shadow2DRect, nearest when minified
+        t.sampler.min_filter = TextureFilter::Nearest;
+        t.sampler.depth_mode = DepthTextureMode::Intensity;
+    }));
+    bind(4, make(TextureTarget::Rect, {image(7, 2, 1, -1, 2)}, TextureFormat::RGBA32F, [](Texture& t) {
+        t.sampler.mag_filter = TextureFilter::Nearest;  // linear when minified, a LOD bias
+        t.sampler.lod_bias = -0.5f;
     }));
     bind(4, make(TextureTarget::Tex1D, {image(8, 1, 1, -1, 2)}, TextureFormat::RGBA32F, [](Texture& t) {
         t.generate_mipmaps();  // border colour, a clamped lod range from level 1

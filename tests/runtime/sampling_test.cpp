@@ -680,9 +680,9 @@ TEST_CASE("create() refuses images GL would refuse", "[sampling][errors]") {
     contains(create_error(TextureTarget::Tex2D, {TextureImage{kMaxTextureSize + 1, 1, 1, {}}}), "GL_MAX_TEXTURE_SIZE");
     contains(create_error(TextureTarget::Tex3D, {TextureImage{1, 1, kMax3DTextureSize + 1, {}}}),
              "GL_MAX_3D_TEXTURE_SIZE");
-    contains(create_error(TextureTarget::Tex3D, {solid(1, 1, {})}, TextureFormat::Depth), "1D or 2D");
+    contains(create_error(TextureTarget::Tex3D, {solid(1, 1, {})}, TextureFormat::Depth), "1D, 2D or a rectangle");
     contains(create_error(TextureTarget::Cube, std::vector<TextureImage>(6, solid(1, 1, {})), TextureFormat::Depth),
-             "1D or 2D");
+             "1D, 2D or a rectangle");
     // The largest sizes are fine.
     CHECK(Texture::create(TextureTarget::Tex1D, {TextureImage{kMaxTextureSize, 1, 1,
                                                               std::vector<glm::vec4>(size_t(kMaxTextureSize))}})

@@ -398,7 +398,7 @@ TEST_CASE("texture keys: unknown names, types and ranges", "[scene][textures][er
     check_error(with("wrap_s = \"clamp_to_edges\""), 3, "did you mean 'clamp_to_edge'?");
     check_error(with("min_filter = \"liner\""), 3, "'textures.0.min_filter' = \"liner\" is not allowed; did you mean 'linear'?");
     check_error(with("mag_filter = \"linear_mipmap_linear\""), 3, "valid values: nearest, linear");
-    check_error(with("target = \"cube\""), 3, "valid values: 1d, 2d, 3d, cube_map");
+    check_error(with("target = \"cube\""), 3, "valid values: 1d, 2d, 3d, cube_map, rectangle");
     check_error(with("internal_format = \"depth\""), 3, "'textures.0.internal_format' = \"depth\" is not allowed");
     check_error(with("border_color = [0, 0, 2]"), 3, "'textures.0.border_color' must be in [0, 1] (GL_TEXTURE_BORDER_COLOR); got 2");
     check_error(with("base_level = -1"), 3, "'textures.0.base_level' must be in [0, 2147483647]; got -1");
@@ -414,6 +414,30 @@ TEST_CASE("texture keys: unknown names, types and ranges", "[scene][textures][er
     check_error("[textures.x]\n", 1, "texture units are 0..15");
     check_error("textures = 3\n", 1, "'textures' must be a table");
     check_error("[texture.0]\n", 1, "did you mean 'textures'?");
+}
+
+TEST_CASE("a rectangle texture: GL's state for rectangles, and what GL refuses for one", "[scene][textures]") {
+    Scene s = parse_ok("[textures.2]\ntarget = \"rectangle\"\ncheckerboard = { size = [6, 3], square_size = 1 }\n");
+    const Texture& t = texture(s, 2);
+    CHECK(t.target() == TextureTarget::Rect);
+    CHECK(t.levels(0)[0].width == 6);
+    CHECK(t.levels(0)[0].height == 3);
+    CHECK(t.sampler.min_filter == TextureFilter::Linear);  // complete without mipmaps
+    CHECK(t.sampler.wrap_s == TextureWrap::ClampToEdge);
+    CHECK(t.complete());
+    CHECK(s.warnings.empty());
+    Scene depth = parse_ok("[textures.0]\ntarget = \"rectangle\"\ninternal_format = \"depth_component\"\n"
+                           "solid = { size = [3, 2], color = 0.5 }\ncompare_mode = \"compare_r_to_texture\"\n");
+    CHECK(texture(depth, 0).sampler.compare);
+    auto rect = [](const std::string& line) {
+        return "[textures.0]\ntarget = \"rectangle\"\nrgbw = { size = [4, 2] }\n" + line + "\n";
+    };
+    check_error(rect("wrap_s = \"repeat\""), 4, "'textures.0.wrap_s' of a rectangle texture is \"clamp\"");
+    check_error(rect("wrap_t = \"mirrored_repeat\""), 4, "GL refuses \"mirrored_repeat\"");
+    check_error(rect("min_filter = \"linear_mipmap_linear\""), 4, "is \"nearest\" or \"linear\" (it has no mipmaps)");
+    check_error(rect("generate_mipmap = true"), 4, "'textures.0.generate_mipmap': a rectangle texture has no mipmaps");
+    check_error(rect("base_level = 1"), 4, "'textures.0.base_level' of a rectangle texture is 0");
+    check_error("[textures.0]\ntarget = \"rectangle\"\nrgbw = { size = [4] }\n", 3, "[width, height]");
 }
 
 TEST_CASE("texture sources: one of them, of the right size", "[scene][textures][errors]") {
@@ -449,7 +473,7 @@ TEST_CASE("texture sources: one of them, of the right size", "[scene][textures][
     check_error("[textures.0]\nlevels = [{ solid = { size = [4096, 4096], color = 1 } },\n"
                 "  { solid = { size = [16, 16], color = 1 } }]\n", 3, "holds 16777472 texels in all");
     check_error("[textures.0]\ntarget = \"3d\"\ninternal_format = \"depth_component\"\n"
-                "solid = { size = [2, 2, 2], color = 1 }\n", 4, "[textures.0]: a depth texture is 1D or 2D");
+                "solid = { size = [2, 2, 2], color = 1 }\n", 4, "[textures.0]: a depth texture is 1D, 2D or a rectangle");
     check_error("[textures.0]\ntarget = \"cube_map\"\nsolid = { size = [4, 2], color = 1 }\n", 3,
                 "[textures.0]: cube map face +X: cube map faces are square");
 }

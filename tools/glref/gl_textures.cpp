@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@ GLenum gl_target(TextureTarget t) {
     case TextureTarget::Tex2D: return GL_TEXTURE_2D;
     case TextureTarget::Tex3D: return GL_TEXTURE_3D;
     case TextureTarget::Cube: return GL_TEXTURE_CUBE_MAP;
+    case TextureTarget::Rect: return GL_TEXTURE_RECTANGLE;
     }
     return GL_TEXTURE_2D;
 }
@@ -150,8 +152,9 @@ Result<GLuint> upload_one(const GLFunctions& gl, const scene::TextureSetting& se
 }
 
 constexpr GLenum kBindingQueries[] = {GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_2D, GL_TEXTURE_BINDING_3D,
-                                      GL_TEXTURE_BINDING_CUBE_MAP};
-constexpr GLenum kTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+                                      GL_TEXTURE_BINDING_CUBE_MAP, GL_TEXTURE_BINDING_RECTANGLE};
+constexpr GLenum kTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+                               GL_TEXTURE_RECTANGLE};
 
 // An empty 2D texture of the target's size, attached to the bound FBO; the
 // unit of a [textures.N] that samples it gets it with the file's sampler state.
@@ -218,7 +221,7 @@ Result<TextureBindings> upload_object_textures(const GLFunctions& gl, const scen
     TextureBindings b;
     for (int unit = 0; unit < kMaxTextureUnits; ++unit) {
         gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        for (size_t t = 0; t < 4; ++t) {
+        for (size_t t = 0; t < std::size(kTargets); ++t) {
             GLint id = 0;
             glGetIntegerv(kBindingQueries[t], &id);
             b.initial[size_t(unit)][t] = GLuint(id);
@@ -239,7 +242,7 @@ Result<TextureBindings> upload_object_textures(const GLFunctions& gl, const scen
 void restore_bindings(const GLFunctions& gl, const TextureBindings& b) {
     for (int unit = 0; unit < kMaxTextureUnits; ++unit) {
         gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        for (size_t t = 0; t < 4; ++t) glBindTexture(kTargets[t], b.initial[size_t(unit)][t]);
+        for (size_t t = 0; t < std::size(kTargets); ++t) glBindTexture(kTargets[t], b.initial[size_t(unit)][t]);
     }
     gl.ActiveTexture(GL_TEXTURE0);
 }

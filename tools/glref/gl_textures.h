@@ -37,7 +37,7 @@ Result<std::vector<GLTarget>> make_render_targets(const GLFunctions& gl, const s
 // and render targets are made: each frame starts from it.
 struct TextureBindings {
     std::vector<std::vector<GLuint>> objects;  // per object, per its textures
-    std::array<std::array<GLuint, 4>, kMaxTextureUnits> initial{};  // by unit and TextureTarget
+    std::array<std::array<GLuint, 5>, kMaxTextureUnits> initial{};  // by unit and TextureTarget
 };
 Result<TextureBindings> upload_object_textures(const GLFunctions& gl, const scene::Scene& scene,
                                                bool upload_generated_levels);

@@ -318,10 +318,11 @@ Parsed<CommandData> parse_checkerboard(Scanner in, std::string_view line) {
     return CommandData{t};
 }
 
-// "texture shadow1D N (w)", "texture shadow2D N (w, h)".
-Parsed<CommandData> parse_shadow(Scanner in, bool two_d, std::string_view line) {
+// "texture shadow1D N (w)", "texture shadow2D N (w, h)", "texture shadowRect N (w, h)".
+Parsed<CommandData> parse_shadow(Scanner in, TextureCommand::Kind kind, std::string_view line) {
     TextureCommand t;
-    t.kind = two_d ? TextureCommand::Kind::Shadow2D : TextureCommand::Kind::Shadow1D;
+    t.kind = kind;
+    const bool two_d = kind != TextureCommand::Kind::Shadow1D;
     auto unit = in.integer();
     if (!unit || !scan_size(in, t.width, two_d ? &t.height : nullptr))
         return error("bad texture command \"" + std::string(line) + "\"");
@@ -329,7 +330,8 @@ Parsed<CommandData> parse_shadow(Scanner in, bool two_d, std::string_view line) 
     return CommandData{t};
 }
 
-// "texture rgbw 1D N", "texture rgbw 3D N": piglit's fixed 4-texel and 2x2x2 textures.
+// "texture rgbw 1D N", "texture rgbw 3D N", "texture miptree N": piglit's
+// fixed 4-texel, 2x2x2 and 8x8-with-mipmaps textures.
 Parsed<CommandData> parse_fixed_rgbw(Scanner in, TextureCommand::Kind kind, std::string_view line) {
     TextureCommand t;
     t.kind = kind;
@@ -339,18 +341,20 @@ Parsed<CommandData> parse_fixed_rgbw(Scanner in, TextureCommand::Kind kind, std:
     return CommandData{t};
 }
 
-// After "texture ". The array, rectangle and integer variants need GL 3 or
-// extensions we do not expose; the other helpers are not used by GLSL 1.x tests.
+// After "texture ". The array and integer variants need GL 3 or extensions
+// we do not expose; the other helpers are not used by GLSL 1.x tests.
 Parsed<CommandData> parse_texture(std::string_view rest, std::string_view line) {
-    for (std::string_view v : {"rgbw 1DArray", "rgbw 2DArray", "shadow1DArray", "shadow2DArray", "shadowRect"})
+    for (std::string_view v : {"rgbw 1DArray", "rgbw 2DArray", "shadow1DArray", "shadow2DArray"})
         if (starts_with(rest, v))
             return CommandData{Unsupported{"texture " + std::string(v) + " needs GL 3 or extensions"}};
     if (eat(rest, "rgbw 1D")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Rgbw1D, line);
     if (eat(rest, "rgbw 3D")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Rgbw3D, line);
+    if (eat(rest, "miptree")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Miptree, line);
     if (eat(rest, "rgbw")) return parse_rgbw({rest}, line);
     if (eat(rest, "checkerboard")) return parse_checkerboard({rest}, line);
-    if (eat(rest, "shadow2D")) return parse_shadow({rest}, true, line);
-    if (eat(rest, "shadow1D")) return parse_shadow({rest}, false, line);
+    if (eat(rest, "shadow2D")) return parse_shadow({rest}, TextureCommand::Kind::Shadow2D, line);
+    if (eat(rest, "shadow1D")) return parse_shadow({rest}, TextureCommand::Kind::Shadow1D, line);
+    if (eat(rest, "shadowRect")) return parse_shadow({rest}, TextureCommand::Kind::ShadowRect, line);
     std::string_view kind = Scanner{rest}.word();
     return CommandData{Unsupported{"unsupported command \"texture " + std::string(kind) + "\""}};
 }
@@ -388,6 +392,7 @@ std::optional<TexParameter::Target> tex_target(std::string_view w) {
     if (w == "2D") return TexParameter::Target::Tex2D;
     if (w == "3D") return TexParameter::Target::Tex3D;
     if (w == "Cube") return TexParameter::Target::Cube;
+    if (w == "Rect") return TexParameter::Target::Rect;
     return std::nullopt;
 }
 
@@ -408,7 +413,7 @@ bool texparameter_numbers(TexParameter& p, std::string_view rest) {
 Parsed<CommandData> parse_texparameter(std::string_view rest, std::string_view line) {
     Scanner in{rest};
     std::string_view target = in.word();
-    for (std::string_view t : {"Rect", "1DArray", "2DArray", "CubeArray"})
+    for (std::string_view t : {"1DArray", "2DArray", "CubeArray"})
         if (target == t) return CommandData{Unsupported{"texparameter " + std::string(t) + " needs GL 3 or extensions"}};
     std::string_view name = in.word();
     if (name == "swizzle_r") return CommandData{Unsupported{"texparameter swizzle_r needs GL_EXT_texture_swizzle"}};

@@ -63,7 +63,12 @@ struct Capabilities {
     long max_vertex_attribs = 16;
     long max_clip_planes = 6;
     // The extensions a test may require, or require to be absent (frontend/source_rewrite.h).
-    std::vector<std::string> extensions{frontend::kExtraExtensions.begin(), frontend::kExtraExtensions.end()};
+    std::vector<std::string> extensions = [] {
+        std::vector<std::string> all{frontend::kExtraExtensions.begin(), frontend::kExtraExtensions.end()};
+        all.insert(all.end(), frontend::kDefaultExtensions.begin(), frontend::kDefaultExtensions.end());
+        all.insert(all.end(), frontend::kOptionalExtensions.begin(), frontend::kOptionalExtensions.end());
+        return all;
+    }();
     bool has_extension(const std::string& name) const {
         return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
     }
@@ -109,7 +114,7 @@ struct Tolerance { std::array<float, 4> tol{}; };
 // "texture rgbw|checkerboard|shadow1D|shadow2D ...": shader_runner makes a new
 // texture on `unit`, binds it there and leaves that unit active.
 struct TextureCommand {
-    enum class Kind { Rgbw, Rgbw1D, Rgbw3D, Checkerboard, Shadow1D, Shadow2D } kind = Kind::Rgbw;
+    enum class Kind { Rgbw, Rgbw1D, Rgbw3D, Miptree, Checkerboard, Shadow1D, Shadow2D, ShadowRect } kind = Kind::Rgbw;
     int unit = 0;
     int level = 0;                 // checkerboard: the mip level it writes
     int width = 1, height = 1;     // rgbw/checkerboard/shadow (1D: height 1)
@@ -120,7 +125,7 @@ struct TextureCommand {
 // "texparameter <target> <name> <value>": glTexParameter on the texture bound
 // to <target> of the active unit.
 struct TexParameter {
-    enum class Target { Tex1D, Tex2D, Tex3D, Cube } target = Target::Tex2D;
+    enum class Target { Tex1D, Tex2D, Tex3D, Cube, Rect } target = Target::Tex2D;
     enum class Name { CompareFunc, DepthMode, Min, Mag, WrapS, WrapT, WrapR, LodBias, MaxLevel,
                       BaseLevel, BorderColor } name = Name::CompareFunc;
     std::string value;             // enum values as written ("greater", "linear_mipmap_nearest")

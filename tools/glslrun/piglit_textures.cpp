@@ -5,9 +5,11 @@
 //  - checkerboard: level `level` only, tiles of w/2 x h/2 alternating the two
 //    colours (the first one bottom-left), NEAREST, CLAMP_TO_BORDER with a red
 //    border;
-//  - shadow1D/shadow2D: a depth ramp x / (w - 1), NEAREST, CLAMP_TO_EDGE,
+//  - shadow1D/shadow2D/shadowRect: a depth ramp x / (w - 1), NEAREST, CLAMP_TO_EDGE,
 //    compare mode on with GL_GREATER (depth mode stays GL's LUMINANCE);
-//  - rgbw 1D / 3D: fixed 4-texel and 2x2x2 images, NEAREST, CLAMP_TO_EDGE.
+//  - rgbw 1D / 3D: fixed 4-texel and 2x2x2 images, NEAREST, CLAMP_TO_EDGE;
+//  - miptree: 8x8 with levels 1..3, each level one colour (red, green, blue,
+//    white), NEAREST_MIPMAP_NEAREST, NEAREST, CLAMP_TO_EDGE.
 // All of them pass floats with internal format GL_RGBA (8-bit unorm on Mesa)
 // or GL_DEPTH_COMPONENT, unless "texture rgbw" names another format.
 #include "piglit_textures.h"
@@ -74,11 +76,26 @@ Result<Texture> make_checkerboard(const TextureCommand& c) {
     });
 }
 
-Result<Texture> make_shadow(const TextureCommand& c, bool two_d) {
+Result<Texture> make_miptree() {
+    const glm::vec4 colors[4] = {kRed, kGreen, kBlue, kWhite};
+    auto level = [&](int l) {
+        const int size = 8 >> l;
+        return TextureImage{size, size, 1, std::vector<glm::vec4>(size_t(size * size), colors[l])};
+    };
+    auto t = Texture::create(TextureTarget::Tex2D, {level(0)});
+    for (int l = 1; t && l < 4; ++l)
+        if (Status st = t->set_level(0, l, level(l)); !st) return st.error();
+    return finish(std::move(t), [](SamplerState& s) {
+        nearest_clamped(s);
+        s.min_filter = TextureFilter::NearestMipmapNearest;
+    });
+}
+
+Result<Texture> make_shadow(const TextureCommand& c, TextureTarget target) {
+    const bool two_d = target != TextureTarget::Tex1D;
     int h = two_d ? c.height : 1;
     if (auto st = check_size(c.width, h, 1, two_d ? 2 : 1); !st) return st.error();
-    auto t = Texture::create(two_d ? TextureTarget::Tex2D : TextureTarget::Tex1D, {depth_ramp_image(c.width, h)},
-                             TextureFormat::Depth);
+    auto t = Texture::create(target, {depth_ramp_image(c.width, h)}, TextureFormat::Depth);
     return finish(std::move(t), [](SamplerState& s) {
         nearest_clamped(s);
         s.compare = true;
@@ -169,6 +186,7 @@ TextureTarget to_target(TexParameter::Target t) {
         case TexParameter::Target::Tex2D: return TextureTarget::Tex2D;
         case TexParameter::Target::Tex3D: return TextureTarget::Tex3D;
         case TexParameter::Target::Cube: return TextureTarget::Cube;
+        case TexParameter::Target::Rect: return TextureTarget::Rect;
     }
     return TextureTarget::Tex2D;
 }
@@ -225,9 +243,11 @@ Result<Texture> make_texture(const TextureCommand& cmd) {
                 nearest_clamped(s);
                 s.wrap_r = TextureWrap::ClampToEdge;
             });
+        case K::Miptree: return make_miptree();
         case K::Checkerboard: return make_checkerboard(cmd);
-        case K::Shadow1D: return make_shadow(cmd, false);
-        case K::Shadow2D: return make_shadow(cmd, true);
+        case K::Shadow1D: return make_shadow(cmd, TextureTarget::Tex1D);
+        case K::Shadow2D: return make_shadow(cmd, TextureTarget::Tex2D);
+        case K::ShadowRect: return make_shadow(cmd, TextureTarget::Rect);
     }
     return Error("unknown texture command");
 }

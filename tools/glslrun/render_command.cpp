@@ -3,6 +3,7 @@
 #include "render_command.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cctype>
 #include <chrono>
@@ -258,7 +259,10 @@ std::string join_builtin_attributes(const Program& prog) {
 // "unit 0: 2D 256x256 RGBA8, 9 levels" per bound texture; an incomplete one
 // samples as (0, 0, 0, 1), which is worth seeing next to a black image.
 std::string describe_textures(const scene::Scene& scene) {
-    static constexpr const char* kTargets[] = {"1D", "2D", "3D", "cube"};
+    // By TextureTarget: a target added there without a name here does not compile.
+    static constexpr std::array<const char*, size_t(TextureTarget::Rect) + 1> kTargets = {"1D", "2D", "3D", "cube",
+                                                                                          "rectangle"};
+    static_assert(kTargets.back() != nullptr);
     static constexpr const char* kFormats[] = {"RGBA8", "RGBA32F", "depth"};
     std::string out;
     for (const scene::TextureSetting& t : scene.textures) {
