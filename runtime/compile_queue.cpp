@@ -51,7 +51,7 @@ public:
                 return false;
             }
             started_ = true;
-            std::atexit([] { get().stop(); });
+            stop_compiles_before_exit();
         }
         jobs_.push_back(std::move(job));
         ready_.notify_one();
@@ -60,12 +60,7 @@ public:
 
     const std::atomic<bool>& stopping() const { return stopping_; }
 
-    size_t pending() {
-        std::lock_guard lock(mutex_);
-        return jobs_.size() + (running_ ? 1 : 0);
-    }
-
-private:
+    // Idempotent: the queue is empty and nothing runs once it returns.
     void stop() {
         std::unique_lock lock(mutex_);
         stopping_.store(true);
@@ -73,6 +68,12 @@ private:
         idle_.wait(lock, [&] { return !running_; });
     }
 
+    size_t pending() {
+        std::lock_guard lock(mutex_);
+        return jobs_.size() + (running_ ? 1 : 0);
+    }
+
+private:
     void work() {
         std::unique_lock lock(mutex_);
         for (;;) {
@@ -108,5 +109,9 @@ bool submit_compile(std::function<void()> job) { return Queue::get().submit(std:
 const std::atomic<bool>& compiles_stopping() { return Queue::get().stopping(); }
 
 size_t compiles_pending() { return Queue::get().pending(); }
+
+void stop_compiles_before_exit() {
+    std::atexit([] { Queue::get().stop(); });
+}
 
 }  // namespace glslrun::rt

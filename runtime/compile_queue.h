@@ -25,6 +25,13 @@ bool submit_compile(std::function<void()> job);
 // phases and gives up.
 const std::atomic<bool>& compiles_stopping();
 
+// Registers (again) the exit handler that drops the queued jobs and waits
+// for the running one to give up. Exit handlers run in the reverse order of
+// their registration, static destructors included: whoever loads code
+// whose static destructors a compile uses (the JIT's plugin, and LLVM with
+// it) calls this after loading it, so that no compile runs on while they do.
+void stop_compiles_before_exit();
+
 // Jobs queued or running (for tests).
 size_t compiles_pending();
 

@@ -9,6 +9,8 @@
 #include <mutex>
 #include <vector>
 
+#include "runtime/compile_queue.h"
+
 namespace glslrun::rt {
 
 namespace {
@@ -66,6 +68,8 @@ Loaded load() {
     // RTLD_LOCAL: LLVM's symbols stay the plugin's own.
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) return {nullptr, std::string("the JIT plugin could not be loaded: ") + dlerror()};
+    // LLVM's static destructors were registered by this dlopen: a background compile must stop first.
+    stop_compiles_before_exit();
     using Entry = const JitEntryPoints* (*)(const char*);
     auto entry = reinterpret_cast<Entry>(dlsym(handle, "glslrun_jit_entry_points"));
     if (!entry) return {nullptr, path.string() + " is not glslrun's JIT plugin"};

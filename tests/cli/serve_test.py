@@ -168,6 +168,9 @@ def test_http(src, glslrun, out):
     check(server.json("POST", "/api/files/1", nan.encode())["ok"], "the NaN edit did not render")
     f = server.json("GET", "/api/findings")
     check(any(x["kind"] == "nan" and "fdiv" in x["op"] for x in f["findings"]), f"findings: {f}")
+    # The same division by zero is an undefined operation (--check-undefined), at its source line.
+    check(any(x["kind"] == "undefined" and "division" in x["op"] and x["where"].endswith(":" + str(
+        frag.split("gl_FragColor = color;")[0].count("\n") + 1)) for x in f["findings"]), f"undefined: {f}")
     server.json("POST", "/api/files/1", frag.encode())
     h = server.json("GET", "/api/heat")
     check(h.get("ok") and "gl_FragColor" in h["output"], f"heat: {h}")

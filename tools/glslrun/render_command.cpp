@@ -298,7 +298,7 @@ std::string format_stats(const Program& prog, const scene::Scene& scene, const D
     // The fused pipeline's fragments, and its share of LLVM's time above.
     fmt::format_to(out, "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
                s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
-    fmt::format_to(out, "instructions {} (ExecOptions::max_draw_instructions bounds each draw, --max-instructions the render)\n",
+    fmt::format_to(out, "instructions {} (bounded per draw, and per render by --max-instructions)\n",
                    s.instructions);
     fmt::format_to(out, "time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
                compile_ms, s.vertex_seconds * 1e3, s.raster_seconds * 1e3, s.fragment_seconds * 1e3, output_ms);

@@ -14,6 +14,7 @@
 #include "glslrun/scene/error_report.h"
 #include "glslrun/scene/image_compare.h"
 #include "glslrun/scene/render.h"
+#include "glslrun/scene/undefined.h"
 #include "scene/text_file.h"
 #include "watchdog.h"
 
@@ -179,6 +180,17 @@ json finding_json(const char* kind, const debug::NanFinding& f) {
             {"where", f.event.where}, {"op", f.event.op}, {"pass", f.pass}};
 }
 
+json undefined_json(const scene::UndefinedFinding& f) {
+    return {{"kind", "undefined"},
+            {"x", f.first.x},
+            {"y", f.first.y},
+            {"vertex", f.first.vertex},
+            {"in_target", f.first.in_target},
+            {"where", fmt::format("{}:{}", f.file, f.line)},
+            {"op", fmt::format("{} ({}, {} invocations)", f.op, f.condition, f.count)},
+            {"pass", f.first.pass}};
+}
+
 }  // namespace
 
 std::string ServeSession::findings_json() {
@@ -191,7 +203,16 @@ std::string ServeSession::findings_json() {
     json findings = json::array();
     if (report->nan) findings.push_back(finding_json("nan", *report->nan));
     if (report->out_of_range) findings.push_back(finding_json("colour_range", *report->out_of_range));
-    return dump(json{{"findings", findings}, {"summary", debug::format_text(*report)}});
+    std::string summary = debug::format_text(*report);
+    // GLSL's undefined operations (glslrun --check-undefined), each at its first invocation's pixel.
+    ExecOptions exec;
+    exec.precision = options_.precision;
+    exec.set_time_limit(options_.time_limit);
+    auto undefined = scene::check_undefined(sources("vert"), sources("frag"), p->scene, exec);
+    if (!undefined) return error_json(undefined.error());
+    for (const scene::UndefinedFinding& f : undefined->findings) findings.push_back(undefined_json(f));
+    summary += scene::format_undefined(*undefined);
+    return dump(json{{"findings", findings}, {"summary", summary}});
 }
 
 std::string ServeSession::heat_json() {

@@ -206,7 +206,7 @@ async function refreshOverlays() {
   panel.replaceChildren();
   findings = [];
   if ($("show-findings").checked) {
-    panel.append("searching for NaN/inf ...");
+    panel.append("searching for NaN/inf and undefined operations ...");
     const r = await getJson("/api/findings");
     panel.replaceChildren();
     if (r.error) panel.append(el("div", { class: "kv" }, r.error));
