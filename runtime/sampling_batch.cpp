@@ -261,7 +261,7 @@ template <class Src>
 // the high ones, transposed within each half; the same products and sums
 // per lane, so the same bits. Only one image (every lane's texels).
 #define GLSLRUN_AVX2 __attribute__((target("avx2")))
-GLSLRUN_AVX2 [[gnu::always_inline]] inline void load8(const glm::vec4* texels, const int* at, int g, __m256* ch) {
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void load8(const glm::vec4* texels, const int* at, int g, __m256* ch) {
     __m256 r[4];
     for (int j = 0; j < 4; ++j)
         r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&texels[at[g + j]].x)),
@@ -274,11 +274,11 @@ GLSLRUN_AVX2 [[gnu::always_inline]] inline void load8(const glm::vec4* texels, c
     ch[3] = _mm256_shuffle_ps(t1, t3, 0xee);
 }
 
-GLSLRUN_AVX2 [[gnu::always_inline]] inline __m256 mix8(__m256 x, __m256 y, __m256 a, __m256 b) {
+[[gnu::always_inline]] GLSLRUN_AVX2 inline __m256 mix8(__m256 x, __m256 y, __m256 a, __m256 b) {
     return _mm256_add_ps(_mm256_mul_ps(x, b), _mm256_mul_ps(y, a));
 }
 
-GLSLRUN_AVX2 [[gnu::always_inline]] inline void plane8(const glm::vec4* texels, const int (*at)[kLanes],
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void plane8(const glm::vec4* texels, const int (*at)[kLanes],
                                                        const float* ax, const float* ay, int g, __m256* plane) {
     __m256 corner[4][4];
     for (int k = 0; k < 4; ++k) load8(texels, at[k], g, corner[k]);
