@@ -62,9 +62,7 @@ struct Loaded {
     std::string error;
 };
 
-Loaded load() {
-    const fs::path& path = plugin_path();
-    if (path.empty()) return {nullptr, std::string("the JIT plugin (") + kPluginName + ") was not found"};
+Loaded load_one(const fs::path& path) {
     // RTLD_LOCAL: LLVM's symbols stay the plugin's own.
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) return {nullptr, std::string("the JIT plugin could not be loaded: ") + dlerror()};
@@ -76,6 +74,20 @@ Loaded load() {
     const JitEntryPoints* points = entry(GLSLRUN_JIT_BUILD_KEY);
     if (!points) return {nullptr, "the JIT plugin " + path.string() + " belongs to another build of glslrun"};
     return {points, {}};
+}
+
+// The first candidate that loads and is this build's: an install elsewhere
+// on the machine (another build's plugin) does not hide the build tree's.
+Loaded load() {
+    Loaded first;
+    for (const fs::path& path : candidates()) {
+        if (!is_file(path)) continue;
+        Loaded l = load_one(path);
+        if (l.entry) return l;
+        if (first.error.empty()) first = l;
+    }
+    if (first.error.empty()) first.error = std::string("the JIT plugin (") + kPluginName + ") was not found";
+    return first;
 }
 
 // Set once the plugin has loaded: the one fact about it that changes.

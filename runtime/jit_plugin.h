@@ -12,8 +12,8 @@
 // tree, a Python wheel), D/glslrun (beside an installed libglslrun.so),
 // D/<bin to lib>/glslrun (an installed command, relocatable), then the
 // install's and the build tree's absolute paths. A plugin from another build
-// is refused (its build key differs) and the interpreter runs instead: the
-// same bits, more slowly. GLSLRUN_JIT_PLUGIN names a file to use instead.
+// is refused (its build key differs) and the next one is tried; with none,
+// the interpreter runs instead: the same bits, more slowly. GLSLRUN_JIT_PLUGIN names a file to use instead.
 #pragma once
 #include <atomic>
 #include <memory>

@@ -265,6 +265,8 @@ def test_code_cache(tmp_path):
     """The JIT's code cache: a second program compiles nothing and renders the same bits;
     an unwritable directory is a RuntimeWarning, not an error."""
     if not glslrun.jit_available():
+        # ctest says when the build has the JIT: then its plugin must load (no silent skip).
+        assert not os.environ.get("GLSLRUN_TEST_JIT_BUILT"), "the JIT plugin did not load"
         pytest.skip("built without the JIT")
     scene = glslrun.Scene.parse("[output]\nsize = [32, 32]\n[[objects]]\nmesh = \"quad\"\n",
                                 path("scenes", "inline.toml"))
