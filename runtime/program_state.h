@@ -20,6 +20,9 @@ struct Program::State {
     ir::Program ir;
     std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
     std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
+    // The options it was compiled with: the programs a scene's passes name
+    // and the debugger's twins compile with the same -D and -I.
+    CompileOptions options;
     // draw()'s working memory, reused by the next draw: a raster::DrawScratch
     // (raster/scratch.h) made at the first draw. The runtime does not know the
     // rasterizer's types; shared_ptr<void> still deletes it as what it is.

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/program_state.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
@@ -141,6 +142,10 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     if (object.back_material) gl.back_material = *object.back_material;
     if (object.color) gl.current_color = *object.color;
     return gl;
+}
+
+Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
+    return compile(main, scene, state_of(main).options);
 }
 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, const CompileOptions& options) {

@@ -493,6 +493,7 @@ int run_check_undefined(const Inputs& in, const RenderOptions& o, const scene::S
     exec.threads = o.threads;
     CompileOptions compile;
     compile.defines = o.defines;
+    compile.include_dirs = o.include_dirs;
     auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec, fb, compile);
     if (!report) return fail(report.error());
     if (!output.empty())
@@ -641,8 +642,6 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"), kToolError);
     if (!o.error_report.empty() && in->scene.empty())
         return fail(Error("--error-report needs a scene file (scene.toml) to render"), kToolError);
-    if (!o.error_report.empty() && !o.defines.empty())
-        return fail(Error("--error-report compiles the sources as they are: it does not take -D"), kToolError);
     if (!o.error_report.empty() &&
         (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
         return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "

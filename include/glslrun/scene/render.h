@@ -35,7 +35,10 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
 // others, and a scene without passes, use `main`. `main` must outlive this.
 class ScenePrograms {
 public:
-    static Result<ScenePrograms> compile(Program& main, const Scene& scene, const CompileOptions& options = {});
+    static Result<ScenePrograms> compile(Program& main, const Scene& scene, const CompileOptions& options);
+    // The same with the options `main` was compiled with: the passes' shaders
+    // see the same -D macros and -I directories as the command line's.
+    static Result<ScenePrograms> compile(Program& main, const Scene& scene);
     // Pass i's program; with no passes, 0 is `main`.
     Program& of_pass(size_t pass) const { return *by_pass_[pass]; }
     size_t size() const { return by_pass_.size(); }
