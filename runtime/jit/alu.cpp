@@ -14,6 +14,7 @@
 #include "ir/flow.h"
 #include "runtime/fast_kernels.h"
 #include "runtime/jit/codegen.h"
+#include "runtime/jit/engine.h"
 #include "runtime/jit/math.h"
 
 namespace glslrun::rt::jit {
@@ -79,12 +80,13 @@ llvm::Value* Emitter::exec_lanes() {
 // source: LLVM cannot commute it, so two NaNs give a's, quieted, as the
 // CPU's rule says (ir::a_nan_first), without a compare and blend per op.
 llvm::Value* Emitter::first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b) {
-    const unsigned width = std::min<unsigned>(kLanes, avx2_ ? 8 : 4);
+    const bool wide = avx2_ && avx512();  // zmm registers, and all 32 of them ("v")
+    const unsigned width = std::min<unsigned>(kLanes, wide ? 16 : avx2_ ? 8 : 4);
     auto* part_type = llvm::FixedVectorType::get(f32_, width);
     const std::string text = avx2_ ? std::string(multiply ? "vmulps" : "vaddps") + " $2, $1, $0"
                                    : std::string(multiply ? "mulps" : "addps") + " $2, $0";
     llvm::InlineAsm* op = llvm::InlineAsm::get(llvm::FunctionType::get(part_type, {part_type, part_type}, false), text,
-                                               avx2_ ? "=x,x,x" : "=x,0,x", false);
+                                               wide ? "=v,v,v" : avx2_ ? "=x,x,x" : "=x,0,x", false);
     std::vector<llvm::Value*> parts;
     for (unsigned first = 0; first < kLanes; first += width) {
         std::vector<int> lanes(width);

@@ -93,7 +93,15 @@ void initialise_llvm();
 double thread_cpu_seconds();
 // The baseline x86-64 ISA or AVX2 (x86-64-v3), never fusing a * b + c;
 // `quick`: LLVM's code generation without its optimizations (same bits).
+// Where avx512() says so, AVX2's target is AVX-512 (x86-64-v4) instead.
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick);
+// Whether the AVX2 target generates AVX-512 code, 512-bit vectors included:
+// where the CPU has AVX-512 F, BW, DQ and VL and GLSLRUN_NO_AVX512 is not 1.
+// A batch's <kLanes x float> registers then take 2 of its 32 registers, not
+// 4 of AVX2's 16: the ray tracer's and the marble's frames spent most of
+// their time spilling and reloading them. The same IEEE operations, so the
+// same bits (tests/cli/isa_determinism.sh).
+bool avx512();
 // The JIT's short function pass pipeline (module.cpp says why it is short).
 void optimise(llvm::Module& module, llvm::TargetMachine& machine);
 

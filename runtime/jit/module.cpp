@@ -49,10 +49,24 @@ void initialise_llvm() {
 
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick) {
     llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
-    builder.setCPU(avx2 ? "x86-64-v3" : "x86-64");
+    const bool wide = avx2 && avx512();
+    builder.setCPU(wide ? "x86-64-v4" : avx2 ? "x86-64-v3" : "x86-64");
+    // x86-64-v4 tunes for 256-bit vectors, which would split every register
+    // in four again
+    if (wide) builder.getFeatures().AddFeature("prefer-256-bit", false);
     builder.setCodeGenOptLevel(quick ? llvm::CodeGenOpt::None : llvm::CodeGenOpt::Default);
     builder.getOptions().AllowFPOpFusion = llvm::FPOpFusion::Strict;
     return builder;
+}
+
+bool avx512() {
+    static const bool on = [] {
+        const char* off = std::getenv("GLSLRUN_NO_AVX512");
+        if (off && off[0] == '1') return false;
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+               __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+    }();
+    return on;
 }
 
 double thread_cpu_seconds() {
