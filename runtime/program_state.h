@@ -20,6 +20,12 @@ struct Program::State {
     ir::Program ir;
     std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
     std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
+    // A program compiled without one of its stages keeps its sources and
+    // options: the scene library links them again with the fixed-function
+    // stage it generates from each draw's GL state (scene/ffp_*.cpp).
+    // Empty for a program of both stages.
+    std::vector<ShaderSource> vertex_sources, fragment_sources;
+    CompileOptions options;
     // draw()'s working memory, reused by the next draw: a raster::DrawScratch
     // (raster/scratch.h) made at the first draw. The runtime does not know the
     // rasterizer's types; shared_ptr<void> still deletes it as what it is.
