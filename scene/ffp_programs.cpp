@@ -81,8 +81,9 @@ Result<Program*> FixedFunctionPrograms::get(const Program* base, const std::vect
     if (found != programs_.end()) return found->second.get();
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
+    // A unit whose texel no combiner reads (DECAL of a luminance texture) has no active sampler.
     for (int u = 0; u < 8; ++u)
-        if (samplers >> u & 1)
+        if ((samplers >> u & 1) && program->has_uniform(ffp::sampler_uniform(u)))
             if (Status st = program->set_uniform(ffp::sampler_uniform(u), std::vector<int32_t>{u}); !st)
                 return st.error();
     auto made = std::make_shared<Program>(std::move(*program));

@@ -427,3 +427,72 @@ objects = ["shaded"]
 state = { cull_face = "back" }
 )", vertex, fragment);
 }
+
+// Every texture target in one draw: 1D, 3D and rectangle textures through
+// object-linear texgen, and a depth texture compared (shadow2DProj), each
+// unit modulating the one before.
+const char* kTargets = R"(
+[output]
+size = [64, 64]
+clear_color = [0.1, 0.1, 0.1, 1]
+[textures.0]
+target = "1d"
+rgbw = { size = [8] }
+min_filter = "nearest"
+mag_filter = "nearest"
+[textures.1]
+target = "3d"
+checkerboard = { size = [8, 8, 8], square_size = 4, colors = [[1, 1, 1], [0.5, 0.7, 0.9]] }
+min_filter = "nearest"
+mag_filter = "nearest"
+[textures.2]
+target = "rectangle"
+checkerboard = { size = [16, 16], square_size = 4, colors = [[1, 0.8, 0.6], [0.6, 0.8, 1]] }
+min_filter = "nearest"
+mag_filter = "nearest"
+[textures.3]
+internal_format = "depth_component"
+checkerboard = { size = [8, 8], square_size = 2, colors = [0.3, 0.7] }
+min_filter = "nearest"
+mag_filter = "nearest"
+compare_mode = "compare_r_to_texture"
+depth_texture_mode = "intensity"
+[texture_env.0]
+[texture_env.1]
+[texture_env.2]
+[texture_env.3]
+mode = "blend"
+color = [0.2, 0.9, 0.4, 1]
+[texture_gen.0]
+s = { mode = "object_linear", object_plane = [0.5, 0, 0, 0.5] }
+[texture_gen.1]
+s = { mode = "object_linear", object_plane = [0.5, 0, 0, 0.5] }
+t = { mode = "object_linear", object_plane = [0, 0.5, 0, 0.5] }
+r = { mode = "object_linear", object_plane = [0.25, 0.25, 0, 0.5] }
+[texture_gen.2]
+s = { mode = "object_linear", object_plane = [8, 0, 0, 8] }
+t = { mode = "object_linear", object_plane = [0, 8, 0, 8] }
+[texture_gen.3]
+s = { mode = "object_linear", object_plane = [0.5, 0, 0, 0.5] }
+t = { mode = "object_linear", object_plane = [0, 0.5, 0, 0.5] }
+r = { mode = "object_linear", object_plane = [0.3, 0.2, 0, 0.5] }
+[[objects]]
+mesh = "quad"
+transform = [ { scale = [0.9, 0.9, 1] } ]
+)";
+
+TEST_CASE("fixed-function texturing of 1D, 3D, rectangle and compared depth textures matches Mesa's",
+          "[reference][fixed]") {
+    compare_all_fixed("ffp-targets", kTargets);
+    // A depth texture's texture environment follows its depth_texture_mode's base format.
+    for (const char* depth_mode : {"luminance", "alpha"})
+        for (const char* env : {"replace", "decal", "add"}) {
+            INFO(depth_mode << " " << env);
+            std::string scene = texenv_scene(fmt::format("mode = \"{}\"\ncolor = [0.9, 0.2, 0.5, 0.5]", env));
+            const std::string rgbw = "rgbw = { size = [8, 8], alpha = true }";
+            scene.replace(scene.find(rgbw), rgbw.size(),
+                          fmt::format("internal_format = \"depth_component\"\ncheckerboard = {{ size = [8, 8], "
+                                      "colors = [0.2, 0.8] }}\ndepth_texture_mode = \"{}\"", depth_mode));
+            compare_all_fixed(fmt::format("ffp-depth-{}-{}", depth_mode, env), scene);
+        }
+}
