@@ -399,6 +399,18 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
                     const scene::Scene& scene, int height, PassProbe& probe) {
     auto programs = scene::ScenePrograms::compile(program, scene);
     if (!programs) return programs.error();
+    // A draw with a generated fixed-function stage runs a program the
+    // debugger has no twin of (its outputs differ from the pass program's).
+    for (size_t i = 0; i < programs->size(); ++i) {
+        const auto& st = state_of(programs->of_pass(i));
+        const bool fixed = (!scene.passes.empty() && scene.passes[i].fixed_function) ||
+                           st.vertex_sources.empty() != st.fragment_sources.empty();
+        if (fixed)
+            return Error(fmt::format("{} draws with GL's fixed function for a stage, which the shader debugger "
+                                     "does not trace: give both a vertex and a fragment shader",
+                                     scene.passes.empty() ? std::string("the program")
+                                                          : fmt::format("pass '{}'", scene.passes[i].name)));
+    }
     probe.scene_programs = std::move(*programs);
     probe.passes.clear();
     for (size_t i = 0; i < probe.scene_programs->size(); ++i) {

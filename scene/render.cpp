@@ -144,15 +144,33 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     return gl;
 }
 
+// scene/ffp_programs.cpp
+std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options);
+Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
+                                    const Pass& pass);
+
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
     return compile(main, scene, state_of(main).options);
 }
 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, const CompileOptions& options) {
     ScenePrograms programs;
+    programs.fixed_ = make_fixed_function_programs(options);
     if (scene.passes.empty()) programs.by_pass_.push_back(&main);
     for (const Pass& pass : scene.passes) {
-        if (pass.vertex.empty()) {
+        if (pass.fixed_function) {
+            auto fixed = fixed_pass_program(programs.fixed_, scene, pass);
+            if (!fixed) {
+                Error e(fmt::format("pass '{}': its fixed-function program does not compile", pass.name),
+                        pass.where.file, pass.where.line);
+                for (const Diagnostic& d : fixed.error().diagnostics) e.diagnostics.push_back(d);
+                return e;
+            }
+            (*fixed)->exec = main.exec;
+            programs.by_pass_.push_back(*fixed);
+            continue;
+        }
+        if (pass.vertex.empty() && pass.fragment.empty()) {
             programs.by_pass_.push_back(&main);
             continue;
         }
@@ -214,8 +232,9 @@ std::vector<VertexAttrib> attribs_with_current(const Scene& scene, const Mesh& m
 
 // One pass's draws (the scene's one pass when `pass` is null); the first
 // draw takes `pending` (and empties it).
-Result<DrawStats> draw_pass(Program& program, const Scene& scene, GLState& bound, const Pass* pass,
-                            Framebuffer& fb, ClearValues& pending) {
+Result<DrawStats> draw_pass(const ScenePrograms& programs, size_t index, const Scene& scene, GLState& bound,
+                            const Pass* pass, Framebuffer& fb, ClearValues& pending) {
+    Program& program = programs.of_pass(index);
     const bool lenient = pass != nullptr;
     if (Status st = apply_uniforms(program, scene.uniforms, lenient); !st) return st.error();
     if (pass)
@@ -231,7 +250,9 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, GLState& bound
         std::vector<VertexAttrib> with_current;
         if (!scene.current_attributes.empty()) with_current = attribs_with_current(scene, m);
         // The first draw clears, in its tiles on the workers (it clears even when it fails).
-        auto stats = draw(program, gl, fb, std::exchange(pending, {}), m.primitive,
+        auto drawn = programs.for_draw(index, scene, gl);
+        if (!drawn) return drawn.error();
+        auto stats = draw(**drawn, gl, fb, std::exchange(pending, {}), m.primitive,
                           with_current.empty() ? m.attribs : with_current, m.vertex_count, m.indices);
         if (!stats) return stats.error();
         total += *stats;
@@ -365,7 +386,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
     // bindings are context state that every object's draw sees.
     auto bound = bind_scene_textures(scene);
     if (!bound) return bound.error();
-    if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
+    if (scene.passes.empty()) return draw_pass(programs, 0, scene, *bound, nullptr, fb, pending);
     auto targets = make_targets(scene, fb.rounding);
     if (!targets) return targets.error();
     std::vector<std::shared_ptr<const Texture>> live;
@@ -381,7 +402,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (pass.clear.stencil) clear.stencil = pass.clear.stencil;
         Framebuffer& into = pass.target < 0 ? fb : (*targets)[size_t(pass.target)];
         if (programs.before_pass) programs.before_pass(i);
-        auto stats = draw_pass(programs.of_pass(i), scene, *bound, &pass, into, clear);
+        auto stats = draw_pass(programs, i, scene, *bound, &pass, into, clear);
         if (pass.target >= 0) flush_clear(into, target_clear);
         if (!stats) return stats.error();
         total += *stats;

@@ -66,7 +66,7 @@ Scene build_scene(const toml::table& root, const std::string& path) {
     Section top(root, "");
     top.allow({"output", "camera", "light_model", "lights", "material", "front_material", "back_material",
                "current", "state", "fog", "texture_matrix", "textures", "uniforms", "objects", "passes", "animation",
-               "render_targets"});
+               "render_targets", "fixed_function", "texture_env", "texture_gen"});
     Scene scene;
     scene.path = path;
     if (const toml::node* n = top.get("output")) read_output(section(*n, "output"), scene);
@@ -106,13 +106,14 @@ Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
 
 Status update_scene_state(Scene& scene, std::string_view toml_text, const std::string& what) {
     static const std::vector<std::string_view> kStateSections = {
-        "light_model", "material", "front_material", "back_material", "current", "state", "fog", "texture_matrix"};
+        "light_model", "material", "front_material", "back_material", "current", "state", "fog", "texture_matrix",
+        "fixed_function", "texture_env", "texture_gen"};
     // What the sections write, restored when one fails: no half-set state.
     auto saved = std::tuple(scene.camera, scene.view, scene.projection, scene.lights, scene.gl,
-                            scene.current_attributes);
+                            scene.current_attributes, scene.fixed);
     auto restore = [&] {
-        std::tie(scene.camera, scene.view, scene.projection, scene.lights, scene.gl, scene.current_attributes) =
-            std::move(saved);
+        std::tie(scene.camera, scene.view, scene.projection, scene.lights, scene.gl, scene.current_attributes,
+                 scene.fixed) = std::move(saved);
     };
     try {
         toml::table root = toml::parse(toml_text, what);

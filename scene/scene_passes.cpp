@@ -84,13 +84,18 @@ Pass read_pass(const toml::node& n, size_t index, const toml::array* objects, co
                const Scene& scene) {
     std::string what = fmt::format("passes[{}]", index);
     Section s(table(n, what), what);
-    s.allow({"name", "vertex", "fragment", "state", "uniforms", "objects", "target", "clear", "camera"});
+    s.allow({"name", "program", "vertex", "fragment", "state", "uniforms", "objects", "target", "clear", "camera"});
     Pass pass;
     pass.name = pass_name(s, index);
     pass.where = location(n);
-    if (!s.get("vertex") != !s.get("fragment"))
-        fail(n, fmt::format("pass '{}' gives {} shaders only: give both 'vertex' and 'fragment' (or neither, "
-                            "for the scene's program)", pass.name, s.get("vertex") ? "vertex" : "fragment"));
+    if (const toml::node* p = s.get("program")) {
+        choice(*p, s.name("program"), {"fixed"});
+        if (s.get("vertex") || s.get("fragment"))
+            fail(*p, fmt::format("pass '{}': program = \"fixed\" draws with GL's fixed function alone; leave out "
+                                 "'{}' (a pass of one shader has the fixed function for the other stage)",
+                                 pass.name, s.get("vertex") ? "vertex" : "fragment"));
+        pass.fixed_function = true;
+    }
     pass.vertex = read_shaders(s, "vertex", scene_dir);
     pass.fragment = read_shaders(s, "fragment", scene_dir);
     pass.state = scene.gl;

@@ -134,6 +134,13 @@ void read_textures(const toml::node& n, const std::string& scene_dir, Scene& sce
 // object's), adding their texels to `texels` (checked against kMaxSceneTexels).
 void read_texture_units(const toml::node& n, const std::string& what, const std::string& scene_dir, Scene& scene,
                         std::vector<TextureSetting>& out, int64_t& texels);
+// The fixed-function keys (scene_fixed.cpp): [fixed_function], [light_model]
+// color_control, [fog] mode and coord_src, [texture_env.N] and
+// [texture_gen.N] (world-space eye planes go through `view`).
+void read_fixed_function(const Section& s, FixedFunction& f);
+void read_light_model_fixed(const Section& s, FixedFunction& f);
+void read_fog_fixed(const Section& s, FixedFunction& f);
+void read_texture_units_fixed(const toml::table& top, const glm::mat4& view, FixedFunction& f);
 // "" when width x height is acceptable, else why not.
 std::string size_problem(int64_t width, int64_t height);
 

@@ -43,7 +43,7 @@ void read_light(const Section& s, LightSetting& light) {
 }
 
 void read_light_model(const Section& s, GLState& gl) {
-    s.allow({"ambient", "local_viewer", "two_side"});
+    s.allow({"ambient", "local_viewer", "two_side", "color_control"});
     s.read_color("ambient", gl.light_model_ambient);
     s.read("local_viewer", gl.light_model_local_viewer);
     s.read("two_side", gl.light_model_two_side);
@@ -82,7 +82,7 @@ void read_current(const Section& s, GLState& gl, Scene& scene) {
 }
 
 void read_fog(const Section& s, GLState& gl) {
-    s.allow({"color", "density", "start", "end"});
+    s.allow({"color", "density", "start", "end", "mode", "coord_src"});
     s.read_color("color", gl.fog.color);
     s.read("density", gl.fog.density, {.lo = 0, .why = "GL_FOG_DENSITY; GL_INVALID_VALUE below 0"});
     s.read("start", gl.fog.start);
@@ -284,14 +284,22 @@ void read_render_state(const Section& top, Scene& scene) {
         const toml::node* n = top.get(key);
         if (n) reader(Section(table(*n, std::string(key)), std::string(key)));
     };
-    section("light_model", [&](const Section& s) { read_light_model(s, scene.gl); });
+    section("light_model", [&](const Section& s) {
+        read_light_model(s, scene.gl);
+        read_light_model_fixed(s, scene.fixed);
+    });
     // [material] is glMaterial(GL_FRONT_AND_BACK); the sided tables come after it.
     read_material_section(top, "material", scene);
     read_material_section(top, "front_material", scene);
     read_material_section(top, "back_material", scene);
     section("current", [&](const Section& s) { read_current(s, scene.gl, scene); });
     section("state", [&](const Section& s) { read_state_section(s, scene.view, scene.gl); });
-    section("fog", [&](const Section& s) { read_fog(s, scene.gl); });
+    section("fog", [&](const Section& s) {
+        read_fog(s, scene.gl);
+        read_fog_fixed(s, scene.fixed);
+    });
+    section("fixed_function", [&](const Section& s) { read_fixed_function(s, scene.fixed); });
+    read_texture_units_fixed(top.table(), scene.view, scene.fixed);
     if (const toml::node* n = top.get("texture_matrix")) read_texture_matrices(*n, scene.gl);
 }
 

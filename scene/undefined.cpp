@@ -186,7 +186,7 @@ void attach(UndefProbe& probe, ScenePrograms& programs, const Scene& scene, int 
             p.name = pass.name;
             p.to_output = pass.target < 0;
             if (pass.target >= 0) p.height = scene.targets[size_t(pass.target)].height;
-            if (!pass.vertex.empty()) p.program_name = sources_name(pass.vertex, pass.fragment);
+            if (!pass.vertex.empty() || !pass.fragment.empty()) p.program_name = sources_name(pass.vertex, pass.fragment);
         }
         state_of(*p.program).probe = &probe;
         state_of(*p.program).undef = &probe;

@@ -124,4 +124,31 @@ inline void compare(const std::string& name, const Inputs& in) {
         compare_images(name + "." + std::to_string(i), in, mesa->more_images[i - 1], (*ours)[i]);
 }
 
+// Colour buffer 0 of `in` on one backend and thread count, in Precise.
+inline Result<scene::Image> render_with(const Inputs& in, Backend backend, unsigned threads) {
+    auto program = Program::compile(in.vertex, in.fragment);
+    if (!program) return program.error();
+    program->exec.backend = backend;
+    program->exec.threads = threads;
+    program->exec.precision = Precision::Precise;
+    Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
+    auto stats = scene::render_scene(*program, in.scene, fb);
+    if (!stats) return stats.error();
+    return scene::read_framebuffer(fb, 0);
+}
+
+// The interpreter at 1 thread against the JIT and 2 threads: bit for bit.
+inline void check_same_everywhere(const Inputs& in) {
+    auto base = render_with(in, Backend::Interp, 1);
+    if (!base) FAIL(base.error().str());
+    for (Backend backend : {Backend::Interp, Backend::Jit})
+        for (unsigned threads : {1u, 2u}) {
+            if (backend == Backend::Jit && !jit_available()) continue;
+            INFO("backend " << (backend == Backend::Jit ? "jit" : "interp") << ", " << threads << " threads");
+            auto other = render_with(in, backend, threads);
+            REQUIRE(other);
+            CHECK(other->rgba == base->rgba);
+        }
+}
+
 }  // namespace reference

@@ -17,39 +17,13 @@ const std::string kSourceDir = GLSLRUN_SOURCE_DIR;
 const char* kUnusedVertex = "void main() { gl_Position = ftransform(); }\n";
 const char* kUnusedFragment = "void main() { gl_FragColor = vec4(1.0); }\n";
 
-Result<scene::Image> render(const reference::Inputs& in, Backend backend, unsigned threads) {
-    auto program = Program::compile(in.vertex, in.fragment);
-    if (!program) return program.error();
-    program->exec.backend = backend;
-    program->exec.threads = threads;
-    program->exec.precision = Precision::Precise;
-    Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
-    auto stats = scene::render_scene(*program, in.scene, fb);
-    if (!stats) return stats.error();
-    return scene::read_framebuffer(fb, 0);
-}
-
-// The interpreter at 1 thread against the JIT and 2 threads: bit for bit.
-void check_same_everywhere(const reference::Inputs& in) {
-    auto base = render(in, Backend::Interp, 1);
-    if (!base) FAIL(base.error().str());
-    for (Backend backend : {Backend::Interp, Backend::Jit})
-        for (unsigned threads : {1u, 2u}) {
-            if (backend == Backend::Jit && !jit_available()) continue;
-            INFO("backend " << (backend == Backend::Jit ? "jit" : "interp") << ", " << threads << " threads");
-            auto other = render(in, backend, threads);
-            REQUIRE(other);
-            CHECK(other->rgba == base->rgba);
-        }
-}
-
 // An inline scene with one program, compared and checked everywhere.
 void compare_inline(const std::string& name, const char* text, const char* vertex, const char* fragment) {
     auto scene = scene::parse_scene(text, name + ".toml");
     if (!scene) FAIL(scene.error().str());
     reference::Inputs in{{{name + ".vert", vertex}}, {{name + ".frag", fragment}}, std::move(*scene)};
     reference::compare(name, in);
-    check_same_everywhere(in);
+    reference::check_same_everywhere(in);
 }
 
 void compare_scene_file(const std::string& name, const std::string& file) {
@@ -57,7 +31,7 @@ void compare_scene_file(const std::string& name, const std::string& file) {
     if (!scene) FAIL(scene.error().str());
     reference::Inputs in{{{"unused.vert", kUnusedVertex}}, {{"unused.frag", kUnusedFragment}}, std::move(*scene)};
     reference::compare(name, in);
-    check_same_everywhere(in);
+    reference::check_same_everywhere(in);
 }
 
 const char* kColorVertex = "void main() { gl_FrontColor = gl_Color; gl_Position = ftransform(); }\n";

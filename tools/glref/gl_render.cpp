@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "tools/glref/gl_context.h"
+#include "tools/glref/gl_fixed.h"
 #include "tools/glref/gl_textures.h"
 #include "tools/glref/gl_uniforms.h"
 #include "scene/bench_report.h"
@@ -71,7 +72,7 @@ Status attach_shaders(const GLFunctions& gl, GLuint program, GLenum stage, const
 
 Result<GLuint> build_program(const GLFunctions& gl, const std::vector<ShaderSource>& vertex,
                              const std::vector<ShaderSource>& fragment) {
-    if (vertex.empty() && fragment.empty()) return Error("no shaders to link");
+    if (vertex.empty() && fragment.empty()) return GLuint(0);  // GL's fixed function for both stages
     GLuint program = gl.CreateProgram();
     if (Status st = attach_shaders(gl, program, GL_VERTEX_SHADER, vertex); !st) return st.error();
     if (Status st = attach_shaders(gl, program, GL_FRAGMENT_SHADER, fragment); !st) return st.error();
@@ -272,6 +273,7 @@ Status set_scene_state(const GLFunctions& gl, const Scene& s) {
     load_matrix(GL_PROJECTION, s.projection);
     set_lighting(s);
     set_fog_and_textures(gl, s.gl);
+    set_fixed_function_state(gl, s);
     glMatrixMode(GL_MODELVIEW);
     return check_gl("while setting the scene's state");
 }
@@ -362,8 +364,8 @@ Status bind_array(const GLFunctions& gl, GLuint program, const VertexAttrib& a, 
     } else if (n.starts_with("gl_")) {
         return Error(fmt::format("'{}' is not a built-in attribute of GLSL 1.10", n));
     } else {
-        GLint loc = gl.GetAttribLocation(program, n.c_str());
-        if (loc < 0) return Ok{};  // not read by the program
+        GLint loc = program ? gl.GetAttribLocation(program, n.c_str()) : -1;
+        if (loc < 0) return Ok{};  // not read by the program (fixed function reads none)
         upload(gl, a.data);
         gl.VertexAttribPointer(GLuint(loc), GLint(a.components), GL_FLOAT, GL_FALSE, 0, nullptr);
         gl.EnableVertexAttribArray(GLuint(loc));
@@ -425,7 +427,7 @@ void set_current_attributes(const GLFunctions& gl, GLuint program, const Scene& 
             glMultiTexCoord4fv(GLenum(GL_TEXTURE0 + unit), glm::value_ptr(a.value));
         else if (a.name == "gl_FogCoord")
             gl.FogCoordf(a.value.x);
-        else if (GLint loc = gl.GetAttribLocation(program, a.name.c_str()); loc >= 0)
+        else if (GLint loc = program ? gl.GetAttribLocation(program, a.name.c_str()) : -1; loc >= 0)
             gl.VertexAttrib4fv(GLuint(loc), glm::value_ptr(a.value));
     }
 }
@@ -433,7 +435,7 @@ void set_current_attributes(const GLFunctions& gl, GLuint program, const Scene& 
 // render_scene's per-object state, in the same order: modelview, materials,
 // current attributes, the object's uniforms, then the arrays and the draw.
 Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const scene::Object& o,
-                   const scene::Pass* pass, const GLTarget& into, const TextureBindings& textures) {
+                   const scene::Pass* pass, const GLTarget& into, const TextureBindings& textures, GLState& bound) {
     if (Status st = check_mesh(o); !st) return st;
     const GLState* state = o.state ? &*o.state : &s.gl;
     if (pass) {
@@ -454,11 +456,15 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
     glNormal3fv(glm::value_ptr(s.gl.current_normal));
     set_current_attributes(gl, program, s);
     bind_object_textures(gl, o, textures.objects[size_t(&o - s.objects.data())]);
-    if (Status st = apply_uniforms(gl, program, o.uniforms); !st) return st;
-    BoundArrays bound;
-    Status st = bind_arrays(gl, program, o.mesh, bound);
+    for (const scene::TextureSetting& t : o.textures)
+        if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st;
+    enable_texture_targets(gl, s, bound);
+    if (program != 0)
+        if (Status st = apply_uniforms(gl, program, o.uniforms); !st) return st;
+    BoundArrays arrays;
+    Status st = bind_arrays(gl, program, o.mesh, arrays);
     if (st) draw_mesh(gl, o.mesh);
-    unbind_arrays(gl, bound);
+    unbind_arrays(gl, arrays);
     if (!st) return st;
     return check_gl(fmt::format("while drawing object '{}'", o.name));
 }
@@ -466,17 +472,19 @@ Status draw_object(const GLFunctions& gl, GLuint program, const Scene& s, const 
 // One pass (the scene's one pass when `pass` is null): glUseProgram, the
 // scene's and the pass's uniforms, then its objects.
 Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, const scene::Pass* pass,
-                 const GLTarget& into, const TextureBindings& textures) {
+                 const GLTarget& into, const TextureBindings& textures, GLState& bound) {
     gl.UseProgram(program);
-    if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
-    if (pass)
+    if (program != 0)
+        if (Status st = apply_uniforms(gl, program, scene.uniforms); !st) return st;
+    if (pass && program != 0)
         if (Status st = apply_uniforms(gl, program, pass->uniforms); !st) return st;
     if (!pass)
         for (const scene::Object& o : scene.objects)
-            if (Status st = draw_object(gl, program, scene, o, nullptr, into, textures); !st) return st;
+            if (Status st = draw_object(gl, program, scene, o, nullptr, into, textures, bound); !st) return st;
     if (pass)
         for (size_t i : pass->objects)
-            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass, into, textures); !st) return st;
+            if (Status st = draw_object(gl, program, scene, scene.objects[i], pass, into, textures, bound); !st)
+                return st;
     return Ok{};
 }
 
@@ -489,6 +497,9 @@ Status draw_pass(const GLFunctions& gl, GLuint program, const Scene& scene, cons
 Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, const Scene& scene,
                   const std::vector<GLTarget>& targets, const TextureBindings& textures) {
     restore_bindings(gl, textures);  // objects' glBindTexture calls last into the next frame
+    // The bindings as glslrun tracks them: which target fixed-function texturing samples.
+    auto bound = scene::bind_scene_textures(scene);
+    if (!bound) return bound.error();
     for (size_t t = 1; t < targets.size(); ++t) {
         gl.BindFramebuffer(GL_FRAMEBUFFER, targets[t].fbo);
         clear(gl, targets[t], ClearValues{glm::vec4(0), 1.0f, 0});
@@ -496,14 +507,14 @@ Status draw_frame(const GLFunctions& gl, const std::vector<GLuint>& programs, co
     gl.BindFramebuffer(GL_FRAMEBUFFER, targets[0].fbo);
     clear(gl, targets[0], ClearValues{scene.clear_color, scene.clear_depth, scene.clear_stencil});
     if (scene.passes.empty()) {
-        if (Status st = draw_pass(gl, programs[0], scene, nullptr, targets[0], textures); !st) return st;
+        if (Status st = draw_pass(gl, programs[0], scene, nullptr, targets[0], textures, *bound); !st) return st;
     }
     for (size_t i = 0; i < scene.passes.size(); ++i) {
         const scene::Pass& pass = scene.passes[i];
         const GLTarget& into = targets[size_t(pass.target + 1)];
         gl.BindFramebuffer(GL_FRAMEBUFFER, into.fbo);
         clear(gl, into, pass.clear);
-        if (Status st = draw_pass(gl, programs[i], scene, &pass, into, textures); !st) return st;
+        if (Status st = draw_pass(gl, programs[i], scene, &pass, into, textures, *bound); !st) return st;
     }
     gl.BindFramebuffer(GL_FRAMEBUFFER, targets[0].fbo);
     glFinish();
@@ -518,7 +529,11 @@ Result<std::vector<GLuint>> build_programs(const GLFunctions& gl, const std::vec
     std::vector<GLuint> programs;
     if (scene.passes.empty()) programs.push_back(*main);
     for (const scene::Pass& pass : scene.passes) {
-        if (pass.vertex.empty()) {
+        if (pass.fixed_function) {
+            programs.push_back(0);  // glUseProgram(0): GL's fixed function
+            continue;
+        }
+        if (pass.vertex.empty() && pass.fragment.empty()) {
             programs.push_back(*main);
             continue;
         }

@@ -265,8 +265,8 @@ int program_cli(int argc, char** argv) {
     cli::RenderOptions o;
     app.set_version_flag("--version", kVersion);
     app.add_option("files", files,
-                   "shader.vert shader.frag scene.toml (the vertex shader may be left out: a "
-                   "pass-through one is used)");
+                   "shader.vert shader.frag scene.toml (either shader may be left out: GL's fixed "
+                   "function is generated for that stage from the scene's state)");
     app.add_option("-o,--output", o.output,
                    "the image to write, its format by the name: .png (lossless, the default), .jpg, .bmp or .tga "
                    "(default: <program>-<scene>.png; - for PNG on standard output); with several draw buffers, "

@@ -30,17 +30,28 @@ Result<GLState> bind_scene_textures(const Scene& scene);
 // within `pass` (one of scene.passes) the pass's state for the object.
 GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object, const Pass* pass = nullptr);
 
+class FixedFunctionPrograms;  // scene/ffp_programs.cpp
+
 // The programs a scene draws with, one per pass: a pass that names its own
 // shaders gets them compiled (with `options`, and `main`'s ExecOptions); the
 // others, and a scene without passes, use `main`. `main` must outlive this.
+// A program without a vertex or fragment shader, and a `program = "fixed"`
+// pass, draw with GL's fixed function for the missing stages: generated per
+// draw state (scene/ffp.h) and linked with the program's own shaders.
 class ScenePrograms {
 public:
     static Result<ScenePrograms> compile(Program& main, const Scene& scene, const CompileOptions& options);
     // The same with the options `main` was compiled with: the passes' shaders
     // see the same -D macros and -I directories as the command line's.
     static Result<ScenePrograms> compile(Program& main, const Scene& scene);
-    // Pass i's program; with no passes, 0 is `main`.
+    // Pass i's program; with no passes, 0 is `main`. Uniforms are set on it.
     Program& of_pass(size_t pass) const { return *by_pass_[pass]; }
+    // The program a draw of pass i with `gl` runs: of_pass(i) where that has
+    // both shaders of its own; else its shaders with the fixed-function
+    // stages generated for `gl` (compiled once per distinct source), holding
+    // of_pass(i)'s uniform values and ExecOptions. `gl` may change for the
+    // draw (two-sided lighting selects gl_BackColor as GL does).
+    Result<Program*> for_draw(size_t pass, const Scene& scene, GLState& gl) const;
     size_t size() const { return by_pass_.size(); }
     // Called before pass i draws (the shader debugger's pixel history names
     // each draw's pass); not with a scene without passes.
@@ -48,6 +59,7 @@ public:
 private:
     std::vector<std::shared_ptr<Program>> own_;
     std::vector<Program*> by_pass_;
+    std::shared_ptr<FixedFunctionPrograms> fixed_;
 };
 
 // Draws every pass's objects into fb as it is, or cleared first to `clear`

@@ -95,6 +95,56 @@ struct TextureSetting {
     SourceLoc where;
 };
 
+// Fixed-function state that only GL's fixed-function stages read: a draw
+// without a vertex or fragment shader (a pass's `program = "fixed"`, or a
+// program of one stage) runs stages that scene/ffp_*.cpp generate from it as
+// GLSL 1.10, as Mesa generates its own. Scene-wide: [fixed_function],
+// [light_model] color_control, [fog] mode and coord_src, [texture_env.N],
+// [texture_gen.N] (docs/scene-format.md). Shaders never see it.
+enum class TexEnvMode : uint8_t { Modulate, Decal, Blend, Replace, Add, Combine };
+// GL_COMBINE_RGB / GL_COMBINE_ALPHA (DOT3 for RGB only).
+enum class CombineFunction : uint8_t { Replace, Modulate, Add, AddSigned, Interpolate, Subtract, Dot3Rgb, Dot3Rgba };
+// GL_SRCn_RGB / GL_SRCn_ALPHA: texture, constant, primary_color, previous,
+// then texture0..texture7 (the crossbar) as kCombineTexture0 + n.
+enum class CombineSource : uint8_t { Texture, Constant, PrimaryColor, Previous };
+inline constexpr uint8_t kCombineTexture0 = 4;
+enum class CombineOperand : uint8_t { SrcColor, OneMinusSrcColor, SrcAlpha, OneMinusSrcAlpha };
+struct TextureEnv {
+    bool enabled = false;  // glEnable of the bound texture's target on the unit
+    TexEnvMode mode = TexEnvMode::Modulate;
+    glm::vec4 color{0, 0, 0, 0};  // GL_TEXTURE_ENV_COLOR
+    CombineFunction combine_rgb = CombineFunction::Modulate, combine_alpha = CombineFunction::Modulate;
+    std::array<uint8_t, 3> source_rgb{0, 3, 1}, source_alpha{0, 3, 1};  // texture, previous, constant
+    std::array<CombineOperand, 3> operand_rgb{CombineOperand::SrcColor, CombineOperand::SrcColor,
+                                              CombineOperand::SrcAlpha};
+    std::array<CombineOperand, 3> operand_alpha{CombineOperand::SrcAlpha, CombineOperand::SrcAlpha,
+                                                CombineOperand::SrcAlpha};
+    float rgb_scale = 1, alpha_scale = 1;  // 1, 2 or 4
+};
+enum class TexGenMode : uint8_t { Off, ObjectLinear, EyeLinear, SphereMap, NormalMap, ReflectionMap };
+struct TexGen {
+    TexGenMode mode = TexGenMode::Off;  // Off: GL_TEXTURE_GEN_x disabled
+    glm::vec4 object_plane{0, 0, 0, 0};
+    glm::vec4 eye_plane{0, 0, 0, 0};  // eye space, as glTexGen stores it
+};
+enum class FogMode : uint8_t { Linear, Exp, Exp2 };
+enum class ColorMaterialMode : uint8_t { Emission, Ambient, Diffuse, Specular, AmbientAndDiffuse };
+struct FixedFunction {
+    bool lighting = false;        // glEnable(GL_LIGHTING)
+    bool color_material = false;  // glEnable(GL_COLOR_MATERIAL) with glColorMaterial(face, mode)
+    bool color_material_front = true, color_material_back = true;
+    ColorMaterialMode color_material_mode = ColorMaterialMode::AmbientAndDiffuse;
+    bool normalize = false, rescale_normal = false;  // GL_NORMALIZE, GL_RESCALE_NORMAL
+    bool separate_specular = false;  // GL_LIGHT_MODEL_COLOR_CONTROL = GL_SEPARATE_SPECULAR_COLOR
+    bool color_sum = false;          // glEnable(GL_COLOR_SUM)
+    bool fog = false;                // glEnable(GL_FOG)
+    FogMode fog_mode = FogMode::Exp;
+    bool fog_coord_from_array = false;  // GL_FOG_COORD_SRC = GL_FOG_COORD (else GL_FRAGMENT_DEPTH)
+    std::array<TextureEnv, 8> texture_env;
+    std::array<std::array<TexGen, 4>, 8> texture_gen = default_texture_gen();
+    static std::array<std::array<TexGen, 4>, 8> default_texture_gen();
+};
+
 struct Object {
     std::string name;              // for messages; "objects[2]" when unnamed
     Mesh mesh;
@@ -130,7 +180,11 @@ struct Pass {
     std::string name;  // for messages; "passes[1]" when unnamed
     // The pass's shaders, read from the files it names (relative to the scene
     // file). Both empty: the program given with the scene (the command line's).
+    // One of them empty: that stage is GL's fixed function (generated per
+    // draw); both empty: the scene's program, or fixed function for both
+    // stages where `fixed_function` (`program = "fixed"`).
     std::vector<ShaderSource> vertex, fragment;
+    bool fixed_function = false;
     GLState state;  // the scene's [state] with the pass's `state` keys on top
     std::vector<UniformSetting> uniforms;  // set on the pass's program before its objects
     std::vector<size_t> objects;           // indices into Scene::objects, in scene order
@@ -181,6 +235,7 @@ struct Scene {
     // default and what the fields above give is refused by render_scene
     // (it would be ignored), never drawn silently.
     GLState gl;
+    FixedFunction fixed;  // what generated fixed-function stages read
     std::vector<TextureSetting> textures;  // by unit, ascending
     std::vector<RenderTarget> targets;     // [render_targets.NAME], in file order
     std::vector<UniformSetting> uniforms;  // for every object

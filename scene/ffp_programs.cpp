@@ -1,0 +1,150 @@
+// The programs of draws with GL's fixed function for a stage: the stage
+// generated from the draw's state (scene/ffp.h) linked with the pass's own
+// shaders, compiled once per distinct generated source, as Mesa keeps its
+// fixed-function programs per state key.
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "glslrun/scene/render.h"
+#include "ir/ir.h"
+#include "runtime/program_state.h"
+#include "scene/ffp.h"
+
+namespace glslrun::scene {
+
+class FixedFunctionPrograms {
+public:
+    explicit FixedFunctionPrograms(CompileOptions options) : options_(std::move(options)) {}
+    // The program of `base`'s shaders (none for a fixed pass) with the generated stages.
+    Result<Program*> get(const Program* base, const std::vector<ShaderSource>& vertex,
+                         const std::vector<ShaderSource>& fragment, const CompileOptions& options, uint8_t samplers);
+    const CompileOptions& options() const { return options_; }
+
+private:
+    CompileOptions options_;
+    std::map<std::string, std::shared_ptr<Program>> programs_;
+};
+
+namespace {
+
+// gl_TexCoord[i] the user's fragment shader reads (all of them where it indexes the array).
+uint8_t texcoords_read(const Program& program) {
+    uint8_t units = 0;
+    for (const ir::Binding& b : state_of(program).ir.fragment.inputs) {
+        if (b.name == "gl_TexCoord") return 0xff;
+        if (b.name.starts_with("gl_TexCoord[") && b.name.size() > 12 && b.name[12] >= '0' && b.name[12] <= '7')
+            units |= uint8_t(1u << (b.name[12] - '0'));
+    }
+    return units;
+}
+
+// glUniform values of `from`'s own uniforms on `to`, where `to` has them:
+// the draw's program holds the uniforms the scene set on the pass's program.
+Status copy_user_uniforms(const Program& from, Program& to) {
+    const Program::State& src = state_of(from);
+    for (const ir::Uniform& u : state_of(to).ir.uniforms) {
+        if (u.builtin) continue;
+        uint32_t element = 0;
+        const ir::Uniform* s = ir::find_uniform(src.ir, u.name, &element);
+        if (!s || element != 0 || s->type.components() != u.type.components() || s->type.kind != u.type.kind) continue;
+        size_t words = size_t(u.type.components()) * std::min(u.array_size, s->array_size);
+        const uint32_t* w = src.uniforms.data() + s->slot;
+        Status st = Ok{};
+        if (u.type.kind == ir::Kind::F32 && !u.type.is_sampler) {
+            std::vector<float> values(words);
+            std::memcpy(values.data(), w, words * sizeof(float));
+            st = to.set_uniform(u.name, values);
+        } else {
+            st = to.set_uniform(u.name, std::vector<int32_t>(w, w + words));
+        }
+        if (!st) return st;
+    }
+    return Ok{};
+}
+
+std::string stage_text(const std::vector<ShaderSource>& sources) {
+    std::string text;
+    for (const ShaderSource& s : sources) text += s.name + "\n" + s.text + "\n";
+    return text;
+}
+
+}  // namespace
+
+Result<Program*> FixedFunctionPrograms::get(const Program* base, const std::vector<ShaderSource>& vertex,
+                                            const std::vector<ShaderSource>& fragment, const CompileOptions& options,
+                                            uint8_t samplers) {
+    std::string key = fmt::format("{}\n{}\x01{}", static_cast<const void*>(base), stage_text(vertex), stage_text(fragment));
+    auto found = programs_.find(key);
+    if (found != programs_.end()) return found->second.get();
+    auto program = Program::compile(vertex, fragment, options);
+    if (!program) return program.error();
+    // A unit whose texel no combiner reads (DECAL of a luminance texture) has no active sampler.
+    for (int u = 0; u < 8; ++u)
+        if ((samplers >> u & 1) && program->has_uniform(ffp::sampler_uniform(u)))
+            if (Status st = program->set_uniform(ffp::sampler_uniform(u), std::vector<int32_t>{u}); !st)
+                return st.error();
+    auto made = std::make_shared<Program>(std::move(*program));
+    programs_.emplace(std::move(key), made);
+    return made.get();
+}
+
+Result<Program*> ScenePrograms::for_draw(size_t pass, const Scene& scene, GLState& gl) const {
+    Program& base = of_pass(pass);
+    const Program::State& st = state_of(base);
+    const bool fixed = !scene.passes.empty() && scene.passes[pass].fixed_function;
+    const bool gen_vs = fixed || (st.vertex_sources.empty() && !st.fragment_sources.empty());
+    const bool gen_fs = fixed || (st.fragment_sources.empty() && !st.vertex_sources.empty());
+    if (!gen_vs && !gen_fs) return &base;
+    ffp::VertexNeeds needs;
+    needs.texcoords = gen_fs ? ffp::fragment_units(scene, gl) : texcoords_read(base);
+    const uint8_t samplers = gen_fs ? ffp::fragment_units(scene, gl) : 0;
+    std::vector<ShaderSource> vertex = st.vertex_sources, fragment = st.fragment_sources;
+    if (gen_vs) vertex = {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}};
+    if (gen_fs) fragment = {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}};
+    auto program = fixed_->get(fixed ? nullptr : &base, vertex, fragment, fixed ? fixed_->options() : st.options,
+                               samplers);
+    if (!program) {
+        std::string own = gen_vs ? (st.fragment_sources.empty() ? "" : st.fragment_sources[0].name)
+                                 : st.vertex_sources[0].name;
+        Error e(fixed ? "the fixed-function program generated for this draw does not compile"
+                      : fmt::format("'{}' does not link with the fixed-function {} stage generated for this draw "
+                                    "(it writes gl_Position, gl_FrontColor, gl_BackColor, the secondary colours, "
+                                    "gl_TexCoord[] and gl_FogFragCoord)",
+                                    own, gen_vs ? "vertex" : "fragment"));
+        for (const Diagnostic& d : program.error().diagnostics) e.diagnostics.push_back(d);
+        return e;
+    }
+    Program& drawn = **program;
+    if (!fixed)
+        if (Status copied = copy_user_uniforms(base, drawn); !copied) return copied.error();
+    drawn.exec = base.exec;
+    state_of(drawn).probe = st.probe;
+    state_of(drawn).undef = st.undef;
+    state_of(drawn).fast_ops = st.fast_ops;
+    // GL's two-sided lighting picks gl_BackColor for back faces, as
+    // GL_VERTEX_PROGRAM_TWO_SIDE does for a vertex shader.
+    if (gen_vs) gl.vertex_program_two_side = ffp::two_sided_lighting(scene, gl);
+    return &drawn;
+}
+
+// A `program = "fixed"` pass's program: the stages generated for the pass's state.
+Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
+                                    const Pass& pass) {
+    auto bound = bind_scene_textures(scene);
+    if (!bound) return bound.error();
+    GLState gl = pass.state;
+    gl.texture_units = bound->texture_units;
+    uint8_t units = ffp::fragment_units(scene, gl);
+    ffp::VertexNeeds needs{units};
+    return cache->get(nullptr, {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}},
+                      {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}}, cache->options(), units);
+}
+
+std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options) {
+    return std::make_shared<FixedFunctionPrograms>(options);
+}
+
+}  // namespace glslrun::scene
