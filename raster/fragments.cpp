@@ -213,7 +213,7 @@ const fused::Pipeline* FragmentStage::fused_pipeline() {
                                                     : static_cast<void*>(fb_.color_data<uint8_t>(b).data());
     target_.width = fb_.width;
     target_.height = fb_.height;
-    return state_of(program_).pipelines->get(state, program_.exec.backend == Backend::Jit);
+    return state_of(program_).pipelines->get(state, program_.exec.backend == Backend::Jit, program_.exec);
 }
 
 void FragmentStage::prefetch(const Rect& r) const {

@@ -76,26 +76,53 @@ llvm::Value* Emitter::exec_lanes() {
     return b_.CreateICmpNE(b_.CreateAnd(words, llvm::ConstantVector::get(bits)), splat_i(0));
 }
 
-// a + b or a * b as one x86 instruction per native vector, a its first
-// source: LLVM cannot commute it, so two NaNs give a's, quieted, as the
-// CPU's rule says (ir::a_nan_first), without a compare and blend per op.
-llvm::Value* Emitter::first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b) {
+// a + b or a * b (then, with `c`, that + c: fmad) as one x86 instruction
+// per native vector and step, a (then the first step's result) its first
+// source: LLVM cannot commute inline asm, so two NaNs give a's, quieted, as
+// the CPU's rule says (ir::a_nan_first), without a compare and blend per op.
+// With AVX2 an fmad's two steps are one asm statement per native vector:
+// LLVM parses each statement's text when it writes the machine code, with
+// an assembly parser made for that statement, which costs more than the
+// instructions' own code generation (docs/performance.md, "Compile time").
+// One statement per native vector, not per op: the scheduler interleaves
+// the parts (measured: one statement per op made multi_light's frame 10%
+// slower). SSE's two-operand forms keep one statement per instruction (a
+// tied output must not meet another input).
+llvm::Value* Emitter::first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b, llvm::Value* c) {
     const bool wide = avx2_ && avx512();  // zmm registers, and all 32 of them ("v")
     const unsigned width = std::min<unsigned>(kLanes, wide ? 16 : avx2_ ? 8 : 4);
     auto* part_type = llvm::FixedVectorType::get(f32_, width);
-    const std::string text = avx2_ ? std::string(multiply ? "vmulps" : "vaddps") + " $2, $1, $0"
-                                   : std::string(multiply ? "mulps" : "addps") + " $2, $0";
-    llvm::InlineAsm* op = llvm::InlineAsm::get(llvm::FunctionType::get(part_type, {part_type, part_type}, false), text,
-                                               wide ? "=v,v,v" : avx2_ ? "=x,x,x" : "=x,0,x", false);
-    std::vector<llvm::Value*> parts;
-    for (unsigned first = 0; first < kLanes; first += width) {
+    auto part = [&](llvm::Value* v, unsigned first) {
         std::vector<int> lanes(width);
         std::iota(lanes.begin(), lanes.end(), int(first));
-        llvm::CallInst* part = b_.CreateCall(op, {b_.CreateShuffleVector(a, lanes), b_.CreateShuffleVector(b, lanes)});
-        part->setDoesNotAccessMemory();
-        part->setDoesNotThrow();
-        part->addFnAttr(llvm::Attribute::WillReturn);
-        parts.push_back(part);
+        return b_.CreateShuffleVector(v, lanes);
+    };
+    auto asm_op = [&](unsigned operands, const std::string& text, const char* constraints) {
+        std::vector<llvm::Type*> ins(operands, part_type);
+        return llvm::InlineAsm::get(llvm::FunctionType::get(part_type, ins, false), text, constraints, false);
+    };
+    auto call = [&](llvm::InlineAsm* op, llvm::ArrayRef<llvm::Value*> args) {
+        llvm::CallInst* made = b_.CreateCall(op, args);
+        made->setDoesNotAccessMemory();
+        made->setDoesNotThrow();
+        made->addFnAttr(llvm::Attribute::WillReturn);
+        return made;
+    };
+    const std::string first = multiply ? "mulps" : "addps";
+    std::vector<llvm::Value*> parts;
+    if (avx2_) {
+        // The fmad's output is written before c is read: early-clobber, so that it is not c's register.
+        llvm::InlineAsm* op = c ? asm_op(3, "v" + first + " $2, $1, $0\n\tvaddps $3, $0, $0", wide ? "=&v,v,v,v" : "=&x,x,x,x")
+                                : asm_op(2, "v" + first + " $2, $1, $0", wide ? "=v,v,v" : "=x,x,x");
+        for (unsigned i = 0; i < kLanes; i += width)
+            parts.push_back(c ? call(op, {part(a, i), part(b, i), part(c, i)}) : call(op, {part(a, i), part(b, i)}));
+    } else {
+        llvm::InlineAsm* op = asm_op(2, first + " $2, $0", "=x,0,x");
+        llvm::InlineAsm* add = asm_op(2, "addps $2, $0", "=x,0,x");
+        for (unsigned i = 0; i < kLanes; i += width) {
+            llvm::Value* r = call(op, {part(a, i), part(b, i)});
+            parts.push_back(c ? call(add, {r, part(c, i)}) : r);
+        }
     }
     while (parts.size() > 1) {
         std::vector<llvm::Value*> joined;
@@ -205,9 +232,7 @@ llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm:
     case Op::fmax: return b_.CreateSelect(b_.CreateOr(b_.CreateFCmpOLT(b, a), b_.CreateFCmpUNE(b, b)), a, b);
     case Op::fsqrt: case Op::fsqrt_divisor: return call_intrinsic(llvm::Intrinsic::sqrt, {a});
     case Op::frsqrt: return b_.CreateFDiv(splat_f(1.0f), call_intrinsic(llvm::Intrinsic::sqrt, {a}));
-    case Op::fmad: {
-        return first_operand_op(false, product(), c);
-    }
+    case Op::fmad: return first_operand_op(true, a, b, c);
     case Op::fmsub: return b_.CreateFSub(product(), c);
     case Op::fnmadd: return b_.CreateFSub(c, product());
     default: return nullptr;

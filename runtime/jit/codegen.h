@@ -53,7 +53,7 @@ private:
     void emit_instr(const ir::Instr& in);
     bool emit_native(const ir::Instr& in, llvm::Value** result);
     llvm::Value* emit_float_op(ir::Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c);
-    llvm::Value* first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b);
+    llvm::Value* first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b, llvm::Value* c = nullptr);
     llvm::Value* emit_int_op(ir::Op op, llvm::Value* a, llvm::Value* b);
     llvm::Value* emit_compare(ir::Op op, llvm::Value* a, llvm::Value* b);
     llvm::Value* emit_conversion(ir::Op op, llvm::Value* a);

@@ -39,12 +39,10 @@ struct Engine {
     // Null where LLVM could not make it. `quick`: ExecOptions::jit_quick_codegen.
     static Engine* of(bool avx2, bool quick);
 
-    // A new module for this engine's target, in a context of its own; its
-    // functions' names end with `suffix`. Under `lock`.
+    // A new module for this engine's target, in a context of its own. Under `lock`.
     struct NewModule {
         std::unique_ptr<llvm::LLVMContext> context;
         std::unique_ptr<llvm::Module> module;
-        std::string suffix;
     };
     NewModule new_module(const char* name);
 
@@ -63,12 +61,8 @@ public:
     EngineCode(const EngineCode&) = delete;
     EngineCode& operator=(const EngineCode&) = delete;
     ~EngineCode();
-    // Adds `made` (verified and optimised) to `engine`'s LLJIT, under its
-    // lock; false where LLVM failed.
-    bool add(Engine& engine, Engine::NewModule made);
-    // Adds machine code (compile_object's, or the code cache's) whose
-    // functions' names have no suffix, under the lock; false where LLVM
-    // refused it.
+    // Adds machine code (compile_object's, or the code cache's) to
+    // `engine`'s LLJIT, under its lock; false where LLVM refused it.
     bool add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> object);
     // The address of the module's function `name`; null where absent (or
     // where its object could not be linked).
@@ -78,7 +72,6 @@ private:
     void open(Engine& engine);
     Engine* engine_ = nullptr;
     llvm::orc::JITDylib* dylib_ = nullptr;
-    std::string suffix_;
 };
 
 // `module`'s machine code for `engine`'s target, under its lock; null where

@@ -15,7 +15,6 @@
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/RTDyldObjectLinkingLayer.h>
-#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
 #include <llvm/IR/Verifier.h>
 #include <llvm/Passes/PassBuilder.h>
 #include <llvm/Transforms/Scalar/ADCE.h>
@@ -87,7 +86,7 @@ Engine* Engine::of(bool avx2, bool quick) {
 }
 
 Engine::NewModule Engine::new_module(const char* name) {
-    NewModule made{std::make_unique<llvm::LLVMContext>(), nullptr, "_" + std::to_string(modules++)};
+    NewModule made{std::make_unique<llvm::LLVMContext>(), nullptr};
     made.module = std::make_unique<llvm::Module>(name, *made.context);
     made.module->setDataLayout(machine->createDataLayout());
     made.module->setTargetTriple(machine->getTargetTriple().str());
@@ -108,16 +107,6 @@ void EngineCode::open(Engine& engine) {
     dylib_->addToLinkOrder(engine.jit->getMainJITDylib());
 }
 
-bool EngineCode::add(Engine& engine, Engine::NewModule made) {
-    open(engine);
-    suffix_ = std::move(made.suffix);
-    auto err = engine.jit->addIRModule(*dylib_, llvm::orc::ThreadSafeModule(std::move(made.module),
-                                                                            std::move(made.context)));
-    if (!err) return true;
-    llvm::consumeError(std::move(err));
-    return false;
-}
-
 bool EngineCode::add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> object) {
     open(engine);
     auto err = engine.jit->addObjectFile(*dylib_, std::move(object));
@@ -127,7 +116,7 @@ bool EngineCode::add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> 
 }
 
 void* EngineCode::lookup(const std::string& name) const {
-    auto symbol = engine_->jit->lookup(*dylib_, name + suffix_);
+    auto symbol = engine_->jit->lookup(*dylib_, name);
     if (symbol) return symbol->toPtr<void*>();
     llvm::consumeError(symbol.takeError());
     return nullptr;
@@ -330,7 +319,7 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     std::lock_guard hold(engine->lock);
     code->reg_count = uint32_t(shader.regs.size());
 
-    // Its own names, without a suffix: the code lives in a JITDylib of its own (EngineCode).
+    // Its own names: the code lives in a JITDylib of its own (EngineCode).
     Engine::NewModule made = engine->new_module("shader");
     llvm::Module& module = *made.module;
     {
