@@ -1,7 +1,8 @@
 // The compiled shaders of one Program, by specialization key: made at the
-// first draw that needs them and shared by every worker and later draw; and
-// Backend::Auto's policy, which picks for each stage the backend that costs
-// least over the program's life.
+// first draw that needs them (or on the compile thread: runtime/tiering.h)
+// and shared by every worker and later draw; and Backend::Auto's policy,
+// which picks for each stage the backend that costs least over the
+// program's life.
 //
 // Auto starts with the interpreter and measures its time. Once a stage has
 // spent about as long interpreting as LLVM would take to compile it
@@ -14,8 +15,6 @@
 // the same bits).
 #pragma once
 #include <atomic>
-#include <condition_variable>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <tuple>
@@ -23,10 +22,11 @@
 
 #include "runtime/backend.h"
 #include "runtime/code_cache.h"
+#include "runtime/tiering.h"
 
 namespace glslrun::rt {
 
-class BackendCache : public std::enable_shared_from_this<BackendCache> {
+class BackendCache {
 public:
     struct Key {
         ir::Stage stage;
@@ -41,7 +41,7 @@ public:
         auto tie() const { return std::tie(stage, backend, precision, fast_ops, avx2, quick_codegen, specialization); }
         bool operator<(const Key& o) const { return tie() < o.tie(); }
     };
-    BackendCache() = default;
+    BackendCache() : slots_(Slots::make()) {}
     BackendCache(const BackendCache&) = delete;
     BackendCache& operator=(const BackendCache&) = delete;
     ~BackendCache() = default;  // waits for nothing: queued compiles find it gone
@@ -80,23 +80,15 @@ public:
     Meter& meter(ir::Stage stage) { return meters_[size_t(stage)]; }
 
 private:
-    // What a compile made besides its code.
-    struct Made {
-        double seconds = 0;   // LLVM's
-        bool loaded = false;  // from the code cache
-    };
-    // Runs unlocked; the caller stores the code and count()s what it made.
-    static std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, const Key& key, Made* made,
-                                                   const std::atomic<bool>* stop = nullptr, CodeCacheUse cache = {});
-    void count(const Made& made);  // with the lock held
+    using Slots = CodeSlots<Key, CompiledShader>;
+    static Slots::Made compile(const ir::Shader& shader, const Key& key, const std::atomic<bool>* stop = nullptr,
+                               CodeCacheUse cache = {});
     // Backend::Auto's first draw of a stage: its code from `cache` (with the
     // lock held); false where it has none.
     bool probe(const ir::Shader& shader, const Key& plain, const CodeCacheConfig* cache);
     // Queues `key`'s compile on the compile thread (or compiles it here where
-    // there is none). Called with the lock held.
-    void queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock,
-               const CodeCacheConfig* cache);
-    const CompiledShader* ready(const Key& key) const;  // with the lock held
+    // there is none), with a copy of `shader`.
+    void queue(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache);
     struct Streak {
         bool surveyed = false;
         std::vector<uint32_t> read;  // the word indices the stage reads
@@ -107,11 +99,8 @@ private:
     Streak streaks_[2];  // by ir::Stage
     Meter meters_[2];    // by ir::Stage
 
-    mutable std::mutex mutex_;
-    std::map<Key, std::unique_ptr<CompiledShader>> shaders_;
-    std::map<Key, bool> queued_;  // keys whose background compile was queued
-    double jit_compile_seconds_ = 0;
-    Program::JitCompiles compiles_;
+    mutable std::mutex mutex_;  // the policy's: the streaks, a Meter's probed and expected_nanos
+    std::shared_ptr<Slots> slots_;
 };
 
 }  // namespace glslrun::rt
