@@ -30,7 +30,7 @@ public:
 class TimedExecutor final : public Executor {
 public:
     TimedExecutor(std::unique_ptr<Executor> inner, BackendCache::Meter& meter)
-        : inner_(std::move(inner)), meter_(meter), which_(inner_->backend() == Backend::Jit ? 1 : 0) {}
+        : inner_(std::move(inner)), meter_(meter), which_(inner_->runner() == Runner::Jit ? 1 : 0) {}
     ~TimedExecutor() override {
         meter_.nanos[which_].fetch_add(nanos_, std::memory_order_relaxed);
         meter_.lanes[which_].fetch_add(lanes_, std::memory_order_relaxed);
@@ -45,7 +45,7 @@ public:
     }
     LaneMask alive() const override { return inner_->alive(); }
     void skip_lookups(LaneMask lanes) override { inner_->skip_lookups(lanes); }
-    Backend backend() const override { return inner_->backend(); }
+    Runner runner() const override { return inner_->runner(); }
     void watch_undefined(UndefSink* sink) override { inner_->watch_undefined(sink); }
 
 private:
@@ -74,7 +74,7 @@ BackendCache::Slots::Made BackendCache::compile(const ir::Shader& shader, const 
     Slots::Made made;
     cache.loaded = &made.loaded;
     if (key.specialization.empty()) {
-        made.code = compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &made.seconds,
+        made.code = compile_shader(shader, key.runner, key.precision, key.fast_ops, key.avx2, &made.seconds,
                                    key.quick_codegen, stop, cache);
         return made;
     }
@@ -85,7 +85,7 @@ BackendCache::Slots::Made BackendCache::compile(const ir::Shader& shader, const 
     const uint32_t approximated = key.precision == Precision::Fast ? key.fast_ops : 0;
     if (!ir::specialize(*specialized, store, approximated).empty()) *specialized = shader;  // a bug: unspecialized
     auto owner = std::make_unique<OwningShader>();
-    owner->code = compile_shader(*specialized, key.backend, key.precision, key.fast_ops, key.avx2, &made.seconds,
+    owner->code = compile_shader(*specialized, key.runner, key.precision, key.fast_ops, key.avx2, &made.seconds,
                                  key.quick_codegen, stop, cache);
     if (!owner->code) return made;  // only_load, and not in the cache
     owner->shader = std::move(specialized);
@@ -131,13 +131,13 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
                                                       const ExecParams& params, const CodeCacheConfig* cache) {
     Meter& meter = meters_[size_t(key.stage)];
     const int chosen = meter.choice.load(std::memory_order_relaxed);
-    if (chosen == int(Backend::Interp)) return get(shader, interp).instantiate(params);
+    if (chosen == int(Runner::Interp)) return get(shader, interp).instantiate(params);
     std::unique_lock lock(mutex_);
     Key plain = key;
     plain.specialization.clear();
     if (!meter.queued.load()) probe(shader, plain, cache);
     const CompiledShader* jit = slots_->ready(plain);
-    if (jit && !key.specialization.empty() && chosen == int(Backend::Jit)) {
+    if (jit && !key.specialization.empty() && chosen == int(Runner::Jit)) {
         // The JIT won: specialize as ExecOptions::jit_specialize_after asks,
         // with the unspecialized code meanwhile.
         if (const CompiledShader* specialized = slots_->ready(key)) jit = specialized;
@@ -145,11 +145,11 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
     }
     if (jit) {
         std::unique_ptr<Executor> code = jit->instantiate(params);
-        if (code->backend() != Backend::Jit) {
-            meter.choice.store(int(Backend::Interp));  // the JIT declined the shader
+        if (code->runner() != Runner::Jit) {
+            meter.choice.store(int(Runner::Interp));  // the JIT declined the shader
             return code;
         }
-        if (chosen == int(Backend::Jit)) return code;
+        if (chosen == int(Runner::Jit)) return code;
         const uint64_t jit_nanos = meter.nanos[1].load(), interp_nanos = meter.nanos[0].load();
         if (jit_nanos < kMeasureNanos) return std::make_unique<TimedExecutor>(std::move(code), meter);
         if (interp_nanos < kMeasureNanos) {
@@ -161,16 +161,16 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
         // Per lane: jit_nanos / jit_lanes against interp_nanos / interp_lanes.
         const long double jit_cost = (long double)jit_nanos * (long double)meter.lanes[0].load(),
                           interp_cost = (long double)interp_nanos * (long double)meter.lanes[1].load();
-        const Backend keep = jit_cost < interp_cost ? Backend::Jit : Backend::Interp;
+        const Runner keep = jit_cost < interp_cost ? Runner::Jit : Runner::Interp;
         meter.choice.store(int(keep));
-        if (keep == Backend::Jit) return code;
+        if (keep == Runner::Jit) return code;
         lock.unlock();
         return get(shader, interp).instantiate(params);
     }
     if (!meter.queued.load()) {
         if (meter.expected_nanos == Meter::kUnknown) meter.expected_nanos = expected_compile_nanos(shader, key.quick_codegen);
         if (meter.expected_nanos == 0) {
-            meter.choice.store(int(Backend::Interp));  // the JIT does not take it
+            meter.choice.store(int(Runner::Interp));  // the JIT does not take it
         } else if (meter.nanos[0].load() >= meter.expected_nanos) {
             meter.queued.store(true);
             queue(shader, plain, cache);

@@ -20,7 +20,7 @@
 #include <tuple>
 #include <vector>
 
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/code_cache.h"
 #include "runtime/tiering.h"
 
@@ -30,7 +30,7 @@ class BackendCache {
 public:
     struct Key {
         ir::Stage stage;
-        Backend backend;  // Interp or Jit
+        Runner runner;
         Precision precision;
         uint32_t fast_ops;
         bool avx2;  // the vector ISA the code was made for
@@ -38,7 +38,7 @@ public:
         // A specialized shader's uniform words (those the stage reads, in
         // order: ir::uniform_words_read); empty for the unspecialized one.
         std::vector<uint32_t> specialization = {};
-        auto tie() const { return std::tie(stage, backend, precision, fast_ops, avx2, quick_codegen, specialization); }
+        auto tie() const { return std::tie(stage, runner, precision, fast_ops, avx2, quick_codegen, specialization); }
         bool operator<(const Key& o) const { return tie() < o.tie(); }
     };
     BackendCache() : slots_(Slots::make()) {}
@@ -69,10 +69,10 @@ public:
     // Auto's measurements of one stage's backends, added to by the timed
     // executors of its draws.
     struct Meter {
-        std::atomic<uint64_t> nanos[2] = {}, lanes[2] = {};  // by Backend::Interp, Backend::Jit
+        std::atomic<uint64_t> nanos[2] = {}, lanes[2] = {};  // by Runner
         std::atomic<bool> queued{false};  // the JIT's compile is queued or done
         bool probed = false;  // the code cache was asked for the stage's code (under the cache's lock)
-        std::atomic<int> choice{-1};      // the backend kept, once measured; -1 while measuring
+        std::atomic<int> choice{-1};      // the Runner kept, once measured; -1 while measuring
         static constexpr uint64_t kUnknown = ~uint64_t(0);
         uint64_t expected_nanos = kUnknown;  // LLVM's expected time (0: not taken); under the cache's lock
     };

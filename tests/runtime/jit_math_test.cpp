@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
 #include "tests/runtime/ir_builder.h"
 
@@ -88,8 +88,8 @@ void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in) {
     b.output("r", r);
     std::vector<uint32_t> uniforms(4);
     rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
-    auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);
-    auto jit = rt::compile_shader(b.sh, Backend::Jit, precision, params.fast_ops, avx2);
+    auto interp = rt::compile_shader(b.sh, rt::Runner::Interp, precision, params.fast_ops, avx2);
+    auto jit = rt::compile_shader(b.sh, rt::Runner::Jit, precision, params.fast_ops, avx2);
     REQUIRE(jit);
     auto ia = interp->instantiate(params), ja = jit->instantiate(params);
     size_t mismatches = 0;
