@@ -9,6 +9,7 @@
 
 #include "ir/scalar_ops.h"
 #include "raster/framebuffer.h"
+#include "runtime/backend_factory.h"
 #include "runtime/execute.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/program_state.h"
@@ -204,7 +205,7 @@ fused::State FragmentStage::fused_state() {
 // (fused::kPipelineAfterFragments), and under Backend::Auto until its
 // background compile is done.
 const fused::Pipeline* FragmentStage::fused_pipeline() {
-    if (interp_->backend() != Backend::Jit) return nullptr;
+    if (interp_->runner() != rt::Runner::Jit) return nullptr;
     const fused::State state = fused_state();
     target_.depth = fb_.depth.data();
     target_.stencil = fb_.stencil.data();

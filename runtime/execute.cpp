@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "runtime/api_checks.h"
+#include "runtime/backend_factory.h"
 #include "runtime/parallel.h"
 #include "runtime/undef_sink.h"
 

@@ -22,15 +22,14 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "glslrun/glslrun.h"
 #include "raster/fused/state.h"
 #include "runtime/backend.h"
+#include "runtime/tiering.h"
 
 namespace glslrun::raster::fused {
 
@@ -92,12 +91,12 @@ struct PipelineCompile {
 // programs, which draw a few small rectangles each, never compile one.
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
-// The pipelines of one Program, by key, compiled once and shared by its
-// workers and later draws. Without `wait`, null until a compile queued on
-// the process's compile thread (runtime/compile_queue.h) is done.
-class Cache : public std::enable_shared_from_this<Cache> {
+// The pipelines of one Program, by state_key(), compiled once and shared by
+// its workers and later draws (runtime/tiering.h). Without `wait`, null
+// until a compile queued on the process's compile thread is done.
+class Cache {
 public:
-    Cache() = default;
+    Cache() : slots_(Slots::make()) {}
     Cache(const Cache&) = delete;
     Cache& operator=(const Cache&) = delete;
     ~Cache() = default;  // waits for nothing: queued compiles find it gone
@@ -109,22 +108,13 @@ public:
     // Counts fragments the program shaded without a pipeline.
     void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
     // Seconds LLVM spent on this program's pipelines so far.
-    double compile_seconds() const;
+    double compile_seconds() const { return slots_->seconds(); }
     // The pipelines compiled by LLVM, and loaded from the code cache, so far.
-    struct Counts {
-        int compiled = 0, loaded = 0;
-    };
-    Counts counts() const;
+    Program::JitCompiles counts() const { return slots_->compiles(); }
 
 private:
-    mutable std::mutex mutex_;
-    // By state_key().
-    std::map<std::string, std::unique_ptr<Pipeline>> pipelines_;
-    std::map<std::string, bool> done_;  // compiled (the pipeline may still be null: declined)
-    // Stores a compile's result (under the lock); leaves `code` where the key has one.
-    void store(const std::string& key, std::unique_ptr<Pipeline>& code, const PipelineCompile& made);
-    double compile_seconds_ = 0;
-    Counts counts_;
+    using Slots = rt::CodeSlots<std::string, Pipeline>;
+    std::shared_ptr<Slots> slots_;
     std::atomic<uint64_t> unfused_{0};
 };
 

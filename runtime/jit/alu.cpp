@@ -23,15 +23,11 @@ namespace {
 
 using ir::Op;
 
-// Ops with a kernel too long to write out here: the generated code calls it.
-bool calls_kernel(Op op) { return op == Op::tex || op == Op::check_undef; }
+// Ops with a kernel too long to write out here (the table's CallOut): the
+// generated code calls it.
+bool calls_kernel(Op op) { return ir::has(op, ir::OpProp::CallOut); }
 
-WriteMode write_mode(Op op) {
-    switch (op) {
-    case Op::ddx: case Op::ddy: case Op::uniform_ind: case Op::load_ind: return WriteMode::Blends;
-    default: return WriteMode::Honours;
-    }
-}
+WriteMode write_mode(Op op) { return ir::has(op, ir::OpProp::Blends) ? WriteMode::Blends : WriteMode::Honours; }
 
 }  // namespace
 

@@ -251,7 +251,7 @@ public:
     }
     LaneMask alive() const override { return ctx_.alive; }
     void skip_lookups(LaneMask lanes) override { ctx_.machine.lookups = ~lanes; }
-    Backend backend() const override { return Backend::Jit; }
+    Runner runner() const override { return Runner::Jit; }
     void watch_undefined(UndefSink* sink) override { ctx_.machine.undef = sink; }
 
 private:

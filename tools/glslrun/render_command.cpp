@@ -297,7 +297,7 @@ std::string format_stats(const Program& prog, const scene::Scene& scene, const D
     fmt::format_to(out, "vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     // The fused pipeline's fragments, and its share of LLVM's time above.
     const raster::fused::Cache& pipelines = *state_of(prog).pipelines;
-    const raster::fused::Cache::Counts made = pipelines.counts();
+    const Program::JitCompiles made = pipelines.counts();
     fmt::format_to(out,
                    "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms; {} pipeline{} compiled, {} "
                    "loaded from the code cache)\n",
