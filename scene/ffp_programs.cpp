@@ -174,4 +174,24 @@ std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const Compil
     return std::make_shared<FixedFunctionPrograms>(options);
 }
 
+void use_fixed_function(Scene& scene) {
+    if (scene.passes.empty()) {
+        Pass pass;
+        pass.name = "fixed function";
+        pass.where = {scene.path, 0};
+        pass.state = scene.gl;
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            pass.objects.push_back(i);
+            pass.object_states.push_back(scene.objects[i].state);
+        }
+        scene.passes.push_back(std::move(pass));
+    }
+    for (Pass& pass : scene.passes)
+        if (pass.vertex.empty() && pass.fragment.empty()) pass.fixed_function = true;
+}
+
+Result<Program> unused_main_program() {
+    return Program::compile({{"(fixed function)", "void main() { gl_Position = ftransform(); }\n"}}, {});
+}
+
 }  // namespace glslrun::scene
