@@ -130,6 +130,33 @@ Result<Program*> ScenePrograms::for_draw(size_t pass, const Scene& scene, GLStat
     return &drawn;
 }
 
+// gl_TextureEnvColor, gl_EyePlane* and gl_ObjectPlane* keep GL's defaults
+// in a shader (GLState has no such state); a shader that reads one the scene
+// sets would silently see another value than GL's, so it is refused.
+Status check_fixed_state_builtins(const Program& program, const Scene& scene) {
+    const FixedFunction& f = scene.fixed;
+    const FixedFunction defaults;
+    auto sets = [&](std::string_view name) {
+        for (int u = 0; u < 8; ++u) {
+            if (name == "gl_TextureEnvColor" && f.texture_env[size_t(u)].color != defaults.texture_env[0].color)
+                return true;
+            for (int c = 0; c < 4; ++c) {
+                const TexGen &g = f.texture_gen[size_t(u)][size_t(c)], &d = defaults.texture_gen[size_t(u)][size_t(c)];
+                if (name == fmt::format("gl_EyePlane{}", "STRQ"[c]) && g.eye_plane != d.eye_plane) return true;
+                if (name == fmt::format("gl_ObjectPlane{}", "STRQ"[c]) && g.object_plane != d.object_plane) return true;
+            }
+        }
+        return false;
+    };
+    for (const UniformInfo& u : program.uniforms())
+        if (u.builtin && u.read && sets(u.name))
+            return Error(fmt::format("the program reads {}, which the scene sets for fixed function "
+                                     "([texture_env.N] color, [texture_gen.N] planes); glslrun gives shaders GL's "
+                                     "default value of it, so this program would not see the scene's: not supported",
+                                     u.name));
+    return Ok{};
+}
+
 // A `program = "fixed"` pass's program: the stages generated for the pass's state.
 Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
                                     const Pass& pass) {
@@ -145,6 +172,26 @@ Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>
 
 std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options) {
     return std::make_shared<FixedFunctionPrograms>(options);
+}
+
+void use_fixed_function(Scene& scene) {
+    if (scene.passes.empty()) {
+        Pass pass;
+        pass.name = "fixed function";
+        pass.where = {scene.path, 0};
+        pass.state = scene.gl;
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            pass.objects.push_back(i);
+            pass.object_states.push_back(scene.objects[i].state);
+        }
+        scene.passes.push_back(std::move(pass));
+    }
+    for (Pass& pass : scene.passes)
+        if (pass.vertex.empty() && pass.fragment.empty()) pass.fixed_function = true;
+}
+
+Result<Program> unused_main_program() {
+    return Program::compile({{"(fixed function)", "void main() { gl_Position = ftransform(); }\n"}}, {});
 }
 
 }  // namespace glslrun::scene

@@ -157,6 +157,7 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
 std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options);
 Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
                                     const Pass& pass);
+Status check_fixed_state_builtins(const Program& program, const Scene& scene);
 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
     return compile(main, scene, state_of(main).options);
@@ -165,6 +166,7 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, const CompileOptions& options) {
     ScenePrograms programs;
     programs.fixed_ = make_fixed_function_programs(options);
+    if (Status st = check_fixed_state_builtins(main, scene); !st) return st.error();
     if (scene.passes.empty()) programs.by_pass_.push_back(&main);
     for (const Pass& pass : scene.passes) {
         if (pass.fixed_function) {
@@ -190,6 +192,9 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, 
             for (const Diagnostic& d : program.error().diagnostics) e.diagnostics.push_back(d);
             return e;
         }
+        if (Status st = check_fixed_state_builtins(*program, scene); !st)
+            return Error(fmt::format("pass '{}': {}", pass.name, st.error().diagnostics[0].message), pass.where.file,
+                         pass.where.line);
         program->exec = main.exec;
         programs.own_.push_back(std::make_shared<Program>(std::move(*program)));
         programs.by_pass_.push_back(programs.own_.back().get());

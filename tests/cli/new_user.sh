@@ -88,6 +88,10 @@ cp "$fs" plain.glsl
 expect 2 "give --stage vert or --stage frag" "$glslrun" plain.glsl "$scene" -o g.png
 "$glslrun" --stage frag plain.glsl "$scene" --size 8x8 -o g.png || fail "--stage frag plain.glsl"
 "$glslrun" "$fs" "$scene" --size 8x8 -o f.png || fail "minimal.frag alone"
+# No shader at all: GL's fixed function for every draw; what needs a program of the user's says so.
+"$glslrun" "$scene" --size 8x8 -o n.png || fail "a scene alone (fixed function)"
+[ -s n.png ] || fail "a scene alone wrote no image"
+expect 2 "need a program of yours" "$glslrun" "$scene" --stats
 same g.png f.png "a .glsl fragment shader renders differently"
 cp "$fs" named.frag.glsl
 "$glslrun" check named.frag.glsl || fail "check a.frag.glsl"

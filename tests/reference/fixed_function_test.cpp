@@ -496,3 +496,14 @@ TEST_CASE("fixed-function texturing of 1D, 3D, rectangle and compared depth text
             compare_all_fixed(fmt::format("ffp-depth-{}-{}", depth_mode, env), scene);
         }
 }
+
+TEST_CASE("scenes/fixed_function.toml without shaders matches Mesa's fixed function", "[reference][fixed]") {
+    auto scene = scene::load_scene(std::string(GLSLRUN_SOURCE_DIR) + "/scenes/fixed_function.toml");
+    if (!scene) FAIL(scene.error().str());
+    // What `glslrun scene.toml` does: every draw in fixed function, the command line's program unused.
+    scene::use_fixed_function(*scene);
+    REQUIRE(scene::resize_scene(*scene, 256, 192));
+    reference::Inputs in{{{"unused.vert", kUnusedVertex}}, {{"unused.frag", kUnusedFragment}}, std::move(*scene)};
+    reference::compare("ffp-scene-file", in);
+    reference::check_same_everywhere(in);
+}

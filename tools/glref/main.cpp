@@ -25,10 +25,10 @@ namespace {
 using namespace glslrun;
 
 constexpr const char* kUsage =
-    "usage: glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]\n"
+    "usage: glref [--driver llvmpipe|softpipe] [shader.vert] [shader.frag] scene.toml [-o out.png] [--size WxH]\n"
     "             [--upload-mipmaps] [--frames N | --bench N]\n"
     "Renders the scene with Mesa through EGL (no X server) the way a GL 2.1 program would,\n"
-    "for comparison with glslrun's image (glslrun --compare).\n"
+    "for comparison with glslrun's image (glslrun --compare). A shader left out is Mesa's fixed function.\n"
     "  --driver D   Mesa's software rasteriser: llvmpipe (default) or softpipe\n"
     "  -o FILE      output PNG (default: <scene>-<driver>.png)\n"
     "  --size WxH   override the scene's size\n"
@@ -84,9 +84,9 @@ std::string parse_options(int argc, char** argv, Options& o) {
     }
     if (o.driver != "llvmpipe" && o.driver != "softpipe")
         return fmt::format("--driver '{}': use llvmpipe or softpipe", o.driver);
-    if (o.inputs.size() != 3)
-        return fmt::format("expected shader.vert shader.frag scene.toml, got {} file(s)", o.inputs.size());
-    if (o.output.empty()) o.output = std::filesystem::path(o.inputs[2]).stem().string() + "-" + o.driver + ".png";
+    if (o.inputs.empty() || o.inputs.size() > 3 || !o.inputs.back().ends_with(".toml"))
+        return fmt::format("expected [shader.vert] [shader.frag] scene.toml, got {} file(s)", o.inputs.size());
+    if (o.output.empty()) o.output = std::filesystem::path(o.inputs.back()).stem().string() + "-" + o.driver + ".png";
     return {};
 }
 
@@ -118,17 +118,25 @@ void print_frames(const glref::MesaRender& render, const scene::Scene& scene, co
     std::fputs(scene::format_bench(r).c_str(), stdout);
 }
 
+// A shader's stage by its name: .vert/.vs or .frag/.fs (also before .glsl).
+bool is_vertex(const std::string& path) {
+    std::string name = path.ends_with(".glsl") ? path.substr(0, path.size() - 5) : path;
+    return name.ends_with(".vert") || name.ends_with(".vs");
+}
+
 int run(const Options& o) {
-    auto vs = read_shader(o.inputs[0]);
-    if (!vs) return fail(vs.error());
-    auto fs = read_shader(o.inputs[1]);
-    if (!fs) return fail(fs.error());
-    auto scene = scene::load_scene(o.inputs[2]);
+    std::vector<ShaderSource> vertex, fragment;
+    for (size_t i = 0; i + 1 < o.inputs.size(); ++i) {
+        auto source = read_shader(o.inputs[i]);
+        if (!source) return fail(source.error());
+        (is_vertex(o.inputs[i]) || (o.inputs.size() == 3 && i == 0) ? vertex : fragment).push_back(*source);
+    }
+    auto scene = scene::load_scene(o.inputs.back());
     if (!scene) return fail(scene.error());
     if (o.size)
         if (Status st = scene::resize_scene(*scene, o.size->first, o.size->second); !st) return fail(st.error());
     for (const Diagnostic& w : scene->warnings) std::fprintf(stderr, "%s\n", w.str().c_str());
-    auto render = glref::render_with_mesa(o.driver, {*vs}, {*fs}, *scene, o.mesa);
+    auto render = glref::render_with_mesa(o.driver, vertex, fragment, *scene, o.mesa);
     if (!render) return fail(render.error());
     if (Status st = scene::write_png(render->image, o.output); !st) return fail(st.error());
     for (size_t i = 0; i < render->more_images.size(); ++i)

@@ -135,6 +135,7 @@ Result<std::pair<int, int>> parse_size(const std::string& text) {
 }
 
 std::string default_output(const Inputs& in) {
+    if (in.vertex.empty() && in.fragment.empty()) return fs::path(in.scene).stem().string() + ".png";
     std::string program = in.fragment.empty() ? fs::path(in.vertex[0].name).stem().string()
                                               : fs::path(in.fragment[0].name).stem().string();
     return fmt::format("{}-{}.png", program, fs::path(in.scene).stem().string());
@@ -536,7 +537,10 @@ int render(const Inputs& in, const RenderOptions& o) {
     auto start = Clock::now();
     if (warm_up.joinable()) warm_up.join();
     if (o.check_undefined) return run_check_undefined(in, o, *scene, *fb, writes_image ? output : "");
-    auto prog = compile_program(in, o);
+    // No shaders: every draw in GL's fixed function.
+    const bool fixed = in.vertex.empty() && in.fragment.empty();
+    if (fixed) scene::use_fixed_function(*scene);
+    auto prog = fixed ? scene::unused_main_program() : compile_program(in, o);
     if (!prog) return fail(prog.error());
     set_exec_options(*prog, o);  // before the passes' programs copy them
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
@@ -644,7 +648,12 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     bool has_shaders = !in->vertex.empty() || !in->fragment.empty();
     if (!in->image.empty())
         return fail(Error("a PNG is only accepted as `glslrun --compare REF.png IMAGE.png`", in->image), kToolError);
-    if (!has_shaders) return fail(Error("no shaders given (files ending in .vert or .frag)"), kToolError);
+    if (!has_shaders && in->scene.empty())
+        return fail(Error("no shaders given (files ending in .vert or .frag), and no scene to draw with GL's fixed "
+                          "function"), kToolError);
+    if (!has_shaders && (o.stats || o.dump_ir || o.frames > 0 || o.check_undefined || !o.error_report.empty()))
+        return fail(Error("without shaders the scene is drawn with GL's fixed function; --stats, --dump-ir, --frames, "
+                          "--check-undefined and --error-report need a program of yours"), kToolError);
     if (!o.error_report.empty() && in->scene.empty())
         return fail(Error("--error-report needs a scene file (scene.toml) to render"), kToolError);
     if (!o.error_report.empty() &&

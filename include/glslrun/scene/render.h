@@ -62,6 +62,15 @@ private:
     std::shared_ptr<FixedFunctionPrograms> fixed_;
 };
 
+// For a scene drawn without shaders (`glslrun scene.toml`): every draw with
+// GL's fixed function. A scene without passes gets one `program = "fixed"`
+// pass of every object (with their states); passes that would draw with
+// the command line's program become fixed ones.
+void use_fixed_function(Scene& scene);
+// The program `glslrun scene.toml` hands ScenePrograms after
+// use_fixed_function: no pass draws with it.
+Result<Program> unused_main_program();
+
 // Draws every pass's objects into fb as it is, or cleared first to `clear`
 // (by the first draw's tiles: draw() with ClearValues). With passes, the
 // scene's and objects' uniforms are set on each pass's program that declares
