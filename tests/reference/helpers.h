@@ -124,4 +124,46 @@ inline void compare(const std::string& name, const Inputs& in) {
         compare_images(name + "." + std::to_string(i), in, mesa->more_images[i - 1], (*ours)[i]);
 }
 
+// Colour buffer 0 of `in` rendered by glslrun in one precision mode, on one
+// backend, with `threads` worker threads.
+inline Result<scene::Image> render_with(const Inputs& in, Precision precision, Backend backend, unsigned threads) {
+    auto program = Program::compile(in.vertex, in.fragment);
+    if (!program) return program.error();
+    program->exec.precision = precision;
+    program->exec.backend = backend;
+    program->exec.threads = threads;
+    Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
+    auto stats = scene::render_scene(*program, in.scene, fb);
+    if (!stats) return stats.error();
+    return scene::read_framebuffer(fb, 0);
+}
+
+// Issue #3's rule against Mesa in Precise and in Fast, and each mode's image
+// the same bit for bit on the interpreter and the JIT, at 1 and 2 threads.
+inline void compare_in_every_mode(const std::string& name, const Inputs& in) {
+    auto mesa = glref::render_with_mesa(kDriver, in.vertex, in.fragment, in.scene);
+    if (!mesa) {
+        FAIL_CHECK("Mesa (" << kDriver << ") could not render: " << mesa.error().str());
+        return;
+    }
+    for (Precision precision : {Precision::Precise, Precision::Fast}) {
+        const std::string mode = precision == Precision::Fast ? "fast" : "precise";
+        auto base = render_with(in, precision, Backend::Interp, 1);
+        if (!base) {
+            FAIL_CHECK("glslrun could not render: " << base.error().str());
+            return;
+        }
+        compare_images(name + "-" + mode, in, mesa->image, *base);
+        for (Backend backend : {Backend::Interp, Backend::Jit})
+            for (unsigned threads : {1u, 2u}) {
+                if (backend == Backend::Jit && !jit_available()) continue;
+                INFO(name << " " << mode << ", " << (backend == Backend::Jit ? "jit" : "interp") << ", " << threads
+                          << " threads");
+                auto other = render_with(in, precision, backend, threads);
+                REQUIRE(other);
+                CHECK(other->rgba == base->rgba);
+            }
+    }
+}
+
 }  // namespace reference
