@@ -206,3 +206,13 @@ coord_replace = [1]
             reference::compare_in_every_mode(name, inputs(name, toml, vertex, fragment));
         }
 }
+
+TEST_CASE("glslrun matches Mesa on the particles scene", "[reference][points]") {
+    // scenes/particles.toml: attenuated sprites, discs and a texture, blended over a floor.
+    const std::string dir = GLSLRUN_SOURCE_DIR;
+    auto vs = reference::read_shader(dir + "/shaders/particles.vert");
+    auto fs = reference::read_shader(dir + "/shaders/particles.frag");
+    auto sc = scene::load_scene(dir + "/scenes/particles.toml");
+    if (!vs || !fs || !sc) FAIL((!vs ? vs.error().str() : !fs ? fs.error().str() : sc.error().str()));
+    reference::compare_in_every_mode("particles", {{*vs}, {*fs}, std::move(*sc)});
+}
