@@ -235,6 +235,10 @@ struct VaryingLink {
 struct Program {
     Shader vertex;
     Shader fragment;
+    // The vertex stage is glslrun's stand-in for GL's fixed-function one (no
+    // vertex shader was given): the rasterizer treats its gl_PointSize as
+    // GL treats the fixed-function point size.
+    bool fixed_function_vertex = false;
     std::vector<Uniform> uniforms;
     uint32_t uniform_words = 0;
     // Initial uniform values (GLSL 1.20 initializers), uniform_words words;
