@@ -4,12 +4,16 @@
 // of each axis), in lane loops that the compiler vectorises, 8 lanes at a
 // time under AVX2. Where every lane reads one image with one filter (no
 // mipmaps, not a cube map: 1D, 2D, 3D and rectangles alike) the level and
-// face steps are skipped and the image's sizes are constants. Linear blends that cannot
-// meet the border or a depth comparison fetch 4 lanes at a time (8 under
-// AVX2), the texels transposed into channels; the others lane by lane, four
-// channels in one register. Every value comes from the same functions as
-// sample_complete_lane()'s (runtime/sampling_rules.h), so both give the same
-// bits; tests/runtime/sampling_batch_test.cpp compares them.
+// face steps are skipped and the image's sizes are constants. Linear blends
+// that cannot meet the border or a depth comparison fetch 4 lanes at a time
+// (8 under AVX2), the texels transposed into channels; the others lane by
+// lane, four channels in one register. Under AVX2, a colour texture's
+// bilinear lookup of one 2D image (or rectangle) whose wraps keep every
+// texel in the image goes eight lanes at a time from the coordinates to the
+// result, with no lane array between the steps (bilinear_direct()). Every
+// value comes from the same functions as sample_complete_lane()'s
+// (runtime/sampling_rules.h), so both give the same bits;
+// tests/runtime/sampling_batch_test.cpp compares them.
 #pragma once
 #include "runtime/backend.h"
 #include "runtime/sampling.h"

@@ -107,6 +107,21 @@ LaneMask same_unit(const W* units, LaneMask lanes, int first) {
     return same & lanes;
 }
 
+// (0, 0, 0, 1) in every lane, (0, 0, 0, 0) where `lookups` skips the lane;
+// the bit tests as in Machine::write (the loops vectorise).
+void fill_defaults(float (*out)[kLanes], LaneMask lookups) {
+    for (int i = 0; i < kLanes; ++i) {
+        out[0][i] = out[1][i] = out[2][i] = 0.0f;
+        out[3][i] = 1.0f;
+    }
+    if (lookups == kAllLanes) return;
+    for (int base = 0; base < kLanes; base += 32) {
+        const uint32_t bits = uint32_t(lookups >> base);
+        const int n = kLanes - base < 32 ? kLanes - base : 32;
+        for (int i = 0; i < n; ++i) out[3][base + i] = (bits & kLaneBit[size_t(i)]) ? 1.0f : 0.0f;
+    }
+}
+
 bool use_avx2() {
     static const bool avx2 = cpu_has_avx2();  // the CPU and the environment do not change
     return avx2;
@@ -120,30 +135,24 @@ void tex(const Step<W>& s, Machine<W>& m) {
     const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
     const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
     alignas(64) float out[ir::kTexResults][kLanes];
-    // An incomplete texture samples as (0, 0, 0, 1), as nothing bound (GL
-    // 2.1 §3.8.10), and so do the lanes that skip their lookups.
-    for (int i = 0; i < kLanes; ++i) {
-        out[0][i] = out[1][i] = out[2][i] = 0.0f;
-        out[3][i] = 1.0f;
-    }
     const LaneMask lookups = m.mask.active() & m.lookups;
-    if (m.lookups != kAllLanes) {  // skipped lookups read 0; the bit tests as in Machine::write
-        for (int base = 0; base < kLanes; base += 32) {
-            const uint32_t bits = uint32_t(m.lookups >> base);
-            const int n = kLanes - base < 32 ? kLanes - base : 32;
-            for (int i = 0; i < n; ++i) out[3][base + i] = (bits & kLaneBit[size_t(i)]) ? 1.0f : 0.0f;
-        }
-    }
+    // An incomplete texture samples as (0, 0, 0, 1), as nothing bound (GL
+    // 2.1 §3.8.10), and so do inactive lanes; lanes that skip their lookups
+    // read 0. A whole batch is usually sampled whole: its defaults are
+    // filled afterwards, and only where a lane was not sampled.
+    const bool whole = lookups == kAllLanes;
+    if (!whole) fill_defaults(out, m.lookups);
     const FloatOperands<W> floats(info, ops.block);
     const BatchLookup batch = floats.lookup(info);
     // The lanes' unit is almost always one: each unit's lanes are sampled together.
-    LaneMask left = lookups;
+    LaneMask left = lookups, sampled = 0;
     while (left) {
         const int first = std::countr_zero(left);
         const LaneMask lanes = same_unit(s.src[0], left, first);
         left &= ~lanes;
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
+        sampled |= lanes;
         if (batch_samples(*texture)) {
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;
@@ -155,6 +164,12 @@ void tex(const Step<W>& s, Machine<W>& m) {
             for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = texel[c];
         }
     }
+    if (whole && sampled != kAllLanes)  // rare: an incomplete texture or none bound
+        for (int i = 0; i < kLanes; ++i)
+            if (!((sampled >> i) & 1)) {
+                out[0][i] = out[1][i] = out[2][i] = 0.0f;
+                out[3][i] = 1.0f;
+            }
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
         W words[kLanes];
         for (int i = 0; i < kLanes; ++i) words[i] = std::bit_cast<W>(F(out[c][i]));
