@@ -264,6 +264,7 @@ FsVertex window_lerp(const DrawContext& c, SetupOut& out, const FsVertex& a, con
 void emit_stippled(const DrawContext& c, SetupOut& out, const FsPrimitive& line) {
     for_each_stipple_run(line.v[0].win, line.v[1].win, c.gl.line_stipple_pattern, c.gl.line_stipple_repeat,
                          out.stipple_counter, [&](float t0, float t1) {
+                             if (++out.stipple_runs > kMaxStippleRuns) return;  // the draw fails
                              FsPrimitive run = line;
                              if (t0 > 0.0f) run.v[0] = window_lerp(c, out, line.v[0], line.v[1], t0);
                              if (t1 < 1.0f) run.v[1] = window_lerp(c, out, line.v[0], line.v[1], t1);
@@ -576,6 +577,10 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
                       {}, sizes.output, sizes.fixed, scratch.front_attrs, scratch.window};
         prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
         auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
+        if (outs[0].stipple_runs > kMaxStippleRuns)  // a stippled draw sets up in one job
+            return Error(fmt::format("the draw's stippled lines make more than {} dashes (runs of the pattern's set "
+                                     "bits), glslrun's limit per draw (docs/limits.md); draw fewer or shorter lines",
+                                     kMaxStippleRuns));
         scratch.bins.reset(scissor);
         bin_primitives(outs, scratch.bins, &stats.triangles);
         stats.raster_seconds = seconds_since(raster_start);

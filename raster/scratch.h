@@ -31,6 +31,9 @@ struct SetupOut {
     // The line stipple counter (raster/stipple.h): a stippled draw sets up
     // in one job, in submission order, so that it runs on along strips.
     uint32_t stipple_counter = 0;
+    // The runs of stippled lines made so far, bounded by kMaxStippleRuns:
+    // past it the draw fails instead of storing more (raster/stipple.h).
+    uint64_t stipple_runs = 0;
 
     void clear() {
         arena.clear();
@@ -39,6 +42,7 @@ struct SetupOut {
         edges.clear();
         triangles = 0;
         stipple_counter = 0;
+        stipple_runs = 0;
     }
 };
 

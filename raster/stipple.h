@@ -10,6 +10,11 @@
 
 namespace glslrun::raster {
 
+// The runs of stippled lines one draw may make: each is a primitive of its
+// own (about 250 bytes with its ends), so 2^20 of them take some 256 MiB,
+// as much as a draw's other storage may (docs/limits.md).
+inline constexpr uint64_t kMaxStippleRuns = uint64_t(1) << 20;
+
 // A stippled line is drawn as the runs of its pattern's set bits, each a
 // line of its own from t0 to t1 of the way (llvmpipe cuts lines so, in its
 // draw module): the counter steps once per whole pixel of the line's major
