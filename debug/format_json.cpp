@@ -1,5 +1,6 @@
 // The trace as JSON (glslrun trace --json; the page of `glslrun serve` reads
 // it), written with nlohmann-json. docs/debugging.md lists the fields.
+#include <array>
 #include <cmath>
 #include <cstdlib>
 
@@ -68,7 +69,9 @@ Json vec4(const glm::vec4& v) { return {number(v[0]), number(v[1]), number(v[2])
 // A texture lookup: its operands, what the sampler computed (lod, lambda,
 // levels, texels) and its result.
 Json lookup(const TextureLookup& t) {
-    static constexpr const char* kTargets[] = {"1D", "2D", "3D", "cube"};
+    // By ir::TexTarget: a target added there without a name here does not compile.
+    static constexpr std::array<const char*, size_t(ir::TexTarget::A2D) + 1> kTargets = {
+        "1D", "2D", "3D", "cube", "rectangle", "1D array", "2D array"};
     static constexpr const char* kLods[] = {"explicit", "implicit", "bias"};
     const rt::LookupDetails& d = t.details;
     Json coord = Json::array(), levels = Json::array(), texels = Json::array();

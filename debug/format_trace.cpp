@@ -1,4 +1,5 @@
 // The trace and the NaN report as text (glslrun trace); format_json.cpp writes the JSON.
+#include <array>
 #include <cmath>
 #include <map>
 #include <string_view>
@@ -180,8 +181,10 @@ std::string where_text(const SourceLines& lines, const InvocationTrace& t, const
     return text.empty() ? s.where : fmt::format("{}  {}", s.where, text);
 }
 
+// By ir::TexTarget: a target added there without a name here does not compile.
 const char* target_name(ir::TexTarget t) {
-    static constexpr const char* kNames[] = {"1D", "2D", "3D", "cube"};
+    static constexpr std::array<const char*, size_t(ir::TexTarget::A2D) + 1> kNames = {
+        "1D", "2D", "3D", "cube", "rectangle", "1D array", "2D array"};
     return kNames[size_t(t)];
 }
 

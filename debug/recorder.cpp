@@ -103,20 +103,19 @@ void LaneRecorder::lookup(const ir::Node& n, const rt::LaneReader& regs) {
                 if (int32_t(uniforms_[u.slot + e]) == t.unit)
                     t.samplers.push_back(u.is_array ? fmt::format("{}[{}]", u.name, e) : u.name);
     auto operand = [&](uint32_t k) { return float(regs.read(ir::Reg(in.imm[0] + k), lane_).f); };
-    auto vec = [&](uint32_t first) {
-        const uint32_t dims = t.info.dims();
+    auto vec = [&](uint32_t first, uint32_t dims) {
         return glm::vec3(operand(first), dims > 1 ? operand(first + 1) : 0.0f, dims > 2 ? operand(first + 2) : 0.0f);
     };
     rt::LaneLookup lk;  // as the `tex` kernel decodes it (runtime/tex_kernel.cpp)
-    lk.coord = vec(0);
+    lk.coord = vec(0, t.info.dims());
     for (uint32_t c = 0; c < t.info.dims(); ++c) t.coord.push_back(lk.coord[int(c)]);
     if (t.info.shadow) t.ref = lk.ref = operand(t.info.ref_at());
     lk.implicit = t.info.lod != ir::TexLod::Explicit;
     lk.bias = t.info.lod == ir::TexLod::ImplicitBias;
     if (t.info.lod != ir::TexLod::Implicit) t.lod = lk.lod = operand(t.info.lod_at());
     if (lk.implicit) {
-        lk.ddx = vec(t.info.ddx_at());
-        lk.ddy = vec(t.info.ddy_at());
+        lk.ddx = vec(t.info.ddx_at(), t.info.grad_dims());
+        lk.ddy = vec(t.info.ddy_at(), t.info.grad_dims());
     }
     const Texture* texture = textures_ && t.unit >= 0 && t.unit < kMaxTextureUnits
                                  ? textures_[t.unit].bound[size_t(t.info.target)].get()

@@ -298,6 +298,23 @@ bool explain_newer_syntax(Diagnostic& d, const std::string& source) {
     return false;
 }
 
+// EXT_texture_array's types are plain names until a shader enables the
+// extension (as in Mesa), so glslang reports only a syntax error.
+bool explain_array_sampler(Diagnostic& d, const std::string& source) {
+    if (d.message.rfind("syntax error", 0) != 0 || source.find("GL_EXT_texture_array") != std::string::npos)
+        return false;
+    std::vector<std::string> lines = split_lines(source);
+    if (d.line < 1 || d.line > int(lines.size())) return false;
+    const std::string line = strip_line_comment(lines[size_t(d.line - 1)]);
+    for (const char* type : {"sampler1DArray", "sampler2DArray", "sampler1DArrayShadow", "sampler2DArrayShadow"}) {
+        if (!line_has_word(line, type)) continue;
+        d.message = fmt::format("'{}' is EXT_texture_array's: add '#extension GL_EXT_texture_array : enable' "
+                                "before the code", type);
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource& source) {
@@ -306,7 +323,7 @@ void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource&
         Diagnostic& d = diags[i];
         if (d.warning || d.file != source.name) continue;
         const std::string& m = d.message;
-        if (explain_newer_syntax(d, source.text)) continue;
+        if (explain_array_sampler(d, source.text) || explain_newer_syntax(d, source.text)) continue;
         if (m.find(": undeclared identifier") != std::string::npos) {
             if (!candidates) candidates = undeclared_candidates(source.text);
             explain_undeclared(d, *candidates);

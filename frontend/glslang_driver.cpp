@@ -26,6 +26,7 @@
 #include "frontend/lower.h"
 #include "frontend/size_limits.h"
 #include "frontend/source_rewrite.h"
+#include "frontend/texture_array.h"
 #include "frontend/token_budget.h"
 #include "frontend/unit_checks.h"
 
@@ -119,10 +120,13 @@ ParsedUnit parse_unit(EShLanguage lang, const std::string& text, const std::stri
     std::string preamble;
     for (std::string_view name : kDefaultExtensions) preamble += "#extension " + std::string(name) + " : enable\n";
     if (lang == EShLangVertex) preamble += "#extension GL_ARB_shader_texture_lod : enable\n";
+    // Mesa defines the macro of every extension it supports, enabled or not.
+    preamble += "#define " + std::string(kTextureArrayExtension) + " 1\n";
     preamble += extension_macros() + helpers;
     out.shader->setPreamble(preamble.c_str());
     FoldVersionScope fold(unit_version(ShaderSource{file, text}, default_version));
     TokenBudgetScope budget;
+    TextureArrayScope texture_arrays;
     out.ok = out.shader->parse(&res, default_version, ENoProfile, false, false, kMessages, includer);
     if (const TokenBudgetScope::LargeStruct& large = budget.large_struct(); !large.name.empty()) {
         out.ok = false;

@@ -9,6 +9,9 @@
 //                             (lod 0: vertex shaders have no derivatives)
 //   texture2DRect(s, c)       as texture2D, target Rect: the sampler takes
 //                             c unnormalized (runtime/sampling_rect.cpp)
+//   texture2DArray(s, v3)     (EXT_texture_array) coord = v3.xy, layer v3.z;
+//                             derivatives of v3.xy only (the sampler picks
+//                             the layer); shadow2DArray's ref is v4.w
 //   texture2DGradARB(s, c, dx, dy)   (ARB_shader_texture_lod) as texture2D
 //                             with dx, dy in place of the screen derivatives,
 //                             in either stage; the Proj forms divide c by q
@@ -30,6 +33,10 @@ using ir::Reg;
 namespace {
 
 bool sampler_target(const gl::TSampler& s, ir::TexTarget* target) {
+    if (s.isArrayed()) {
+        *target = s.dim == gl::Esd1D ? ir::TexTarget::A1D : ir::TexTarget::A2D;
+        return s.dim == gl::Esd1D || s.dim == gl::Esd2D;
+    }
     switch (s.dim) {
     case gl::Esd1D: *target = ir::TexTarget::T1D; return true;
     case gl::Esd2D: *target = ir::TexTarget::T2D; return true;
@@ -53,8 +60,9 @@ Value StageLowering::texture(gl::TIntermAggregate* n) {
     const gl::TType& sampler_type = seq[0]->getAsTyped()->getType();
     ir::TexInfo info;
     if (sampler_type.getBasicType() != gl::EbtSampler || !sampler_target(sampler_type.getSampler(), &info.target) ||
-        sampler_type.getSampler().isArrayed())
-        return fail(n, "only sampler1D/2D/3D/Cube/2DRect and sampler1D/2D/2DRectShadow are supported");
+        (info.arrayed() && (proj || grad)))
+        return fail(n, "only sampler1D/2D/3D/Cube/2DRect, sampler1D/2D/2DRectShadow and the 1D/2D array samplers "
+                       "are supported");
     info.shadow = sampler_type.getSampler().isShadow();
     const bool has_extra = !grad && seq.size() > 2;  // bias, or the explicit lod
     const bool implicit = grad || (stage_ == ir::Stage::Fragment && !explicit_lod);
@@ -66,7 +74,9 @@ Value StageLowering::texture(gl::TIntermAggregate* n) {
     const Reg unit = args[0].regs.at(0);
     const Value& coord = args[1];
     const uint32_t dims = info.dims();
-    const size_t needed = std::max<size_t>(dims, info.shadow ? 3 : 0) + (proj ? 1 : 0);
+    // The shadow reference: r of (s, t, r) (shadow1D's too), an array's after its layer.
+    const uint32_t ref = std::max<uint32_t>(dims, 2);
+    const size_t needed = std::max<size_t>(dims, info.shadow ? ref + 1 : 0) + (proj ? 1 : 0);
     if (coord.regs.size() < needed) return fail(n, "texture coordinate has too few components");
 
     // The projected coordinates, then the reference depth.
@@ -75,7 +85,7 @@ Value StageLowering::texture(gl::TIntermAggregate* n) {
     std::vector<Reg> s;
     for (uint32_t d = 0; d < dims; ++d) s.push_back(projected(coord.regs[d]));
     std::vector<Reg> block_values = s;
-    if (info.shadow) block_values.push_back(projected(coord.regs[2]));
+    if (info.shadow) block_values.push_back(projected(coord.regs[ref]));
     if (info.lod == ir::TexLod::Explicit) block_values.push_back(has_extra ? args[2].regs.at(0) : konst_f(0.0f));
     if (info.lod == ir::TexLod::ImplicitBias) block_values.push_back(args[2].regs.at(0));
     if (grad) {
@@ -86,7 +96,7 @@ Value StageLowering::texture(gl::TIntermAggregate* n) {
     } else if (implicit) {
         shader.uses_derivatives = true;
         for (Op d : {Op::ddx, Op::ddy})
-            for (Reg r : s) block_values.push_back(alu(d, Kind::F32, r));
+            for (uint32_t k = 0; k < info.grad_dims(); ++k) block_values.push_back(alu(d, Kind::F32, s[k]));
     }
 
     const Reg block = new_range(std::vector<Kind>(block_values.size(), Kind::F32));

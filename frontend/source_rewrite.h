@@ -53,11 +53,12 @@ std::string extension_macros();
 // stages, as Mesa does in a compatibility context (the preamble's
 // `#extension NAME : enable`; the source may still disable one).
 inline constexpr std::array<std::string_view, 1> kDefaultExtensions{"GL_ARB_texture_rectangle"};
-// Extensions glslang knows and glslrun implements, that a shader enables
-// with `#extension NAME : enable|require` (as in Mesa; their macros are
-// glslang's): ARB_shader_texture_lod's *Lod in the fragment shader and the
-// *GradARB functions.
-inline constexpr std::array<std::string_view, 1> kOptionalExtensions{"GL_ARB_shader_texture_lod"};
+// Extensions glslrun implements that a shader enables with `#extension
+// NAME : enable|require` (as in Mesa): ARB_shader_texture_lod's *Lod in the
+// fragment shader and the *GradARB functions (glslang's, with its macro);
+// EXT_texture_array's array samplers (taught to glslang in texture_array.cpp).
+inline constexpr std::array<std::string_view, 2> kOptionalExtensions{"GL_ARB_shader_texture_lod",
+                                                                     "GL_EXT_texture_array"};
 std::string accept_extension_directives(const std::string& src);
 
 // Mesa compatibility: a float literal's `f`/`F` suffix is accepted in GLSL

@@ -9,6 +9,8 @@
 // (glslang/MachineIndependent/preprocessor/PpContext.h, Scan.h).
 #include "frontend/token_budget.h"
 
+#include "frontend/texture_array.h"
+
 #include <algorithm>
 
 #include <glslang/MachineIndependent/ParseHelper.h>
@@ -48,7 +50,9 @@ extern "C" {
 int __real__Z5yylexP7YYSTYPERN7glslang13TParseContextE(void* value, void* context);
 int __wrap__Z5yylexP7YYSTYPERN7glslang13TParseContextE(void* value, void* context) {
     if (active && !spend(active->parser, glslrun::frontend::kMaxParserTokens)) return kParserEnd;
-    return __real__Z5yylexP7YYSTYPERN7glslang13TParseContextE(value, context);
+    const int token = __real__Z5yylexP7YYSTYPERN7glslang13TParseContextE(value, context);
+    // EXT_texture_array's types and functions (texture_array.cpp).
+    return glslrun::frontend::texture_array_token(token, value, *static_cast<glslang::TParseContext*>(context));
 }
 
 // int TPpContext::TokenStream::getToken(TParseContextBase&, TPpToken*): the

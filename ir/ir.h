@@ -84,25 +84,38 @@ struct Instr {
 
 // What a `tex` instruction samples and where its operands are. The operand
 // block is contiguous: coord[dims], then ref (shadow samplers: the depth to
-// compare against), then lod (Explicit) or bias (ImplicitBias), then ddx[dims]
-// and ddy[dims] (Implicit*: the screen derivatives of the coordinates).
+// compare against), then lod (Explicit) or bias (ImplicitBias), then
+// ddx[grad_dims] and ddy[grad_dims] (Implicit*: the screen derivatives of the
+// coordinates that are filtered).
 // Projection (texture2DProj, ...) is done by the frontend before the block.
 // Rect: a rectangle texture, 2D with unnormalized coordinates.
-enum class TexTarget : uint8_t { T1D, T2D, T3D, Cube, Rect };  // glslrun::TextureTarget's order
+// A1D, A2D: EXT_texture_array's 1D and 2D arrays; the coordinate's last
+// component is the layer, which is not filtered and has no derivatives.
+enum class TexTarget : uint8_t { T1D, T2D, T3D, Cube, Rect, A1D, A2D };  // glslrun::TextureTarget's order
 enum class TexLod : uint8_t { Explicit, Implicit, ImplicitBias };
 struct TexInfo {
     TexTarget target = TexTarget::T2D;
     bool shadow = false;
     TexLod lod = TexLod::Implicit;
 
+    // Coordinate components, an array's layer included.
     uint32_t dims() const {
-        return target == TexTarget::T1D ? 1 : target == TexTarget::T2D || target == TexTarget::Rect ? 2 : 3;
+        switch (target) {
+        case TexTarget::T1D: return 1;
+        case TexTarget::T2D:
+        case TexTarget::Rect:
+        case TexTarget::A1D: return 2;
+        default: return 3;
+        }
     }
+    bool arrayed() const { return target == TexTarget::A1D || target == TexTarget::A2D; }
+    // Components with derivatives: all but an array's layer.
+    uint32_t grad_dims() const { return arrayed() ? dims() - 1 : dims(); }
     uint32_t ref_at() const { return dims(); }
     uint32_t lod_at() const { return dims() + (shadow ? 1 : 0); }
     uint32_t ddx_at() const { return lod_at() + (lod == TexLod::Implicit ? 0 : 1); }
-    uint32_t ddy_at() const { return ddx_at() + dims(); }
-    uint32_t operand_count() const { return lod == TexLod::Explicit ? ddx_at() : ddy_at() + dims(); }
+    uint32_t ddy_at() const { return ddx_at() + grad_dims(); }
+    uint32_t operand_count() const { return lod == TexLod::Explicit ? ddx_at() : ddy_at() + grad_dims(); }
     uint32_t encode() const { return uint32_t(target) | uint32_t(shadow) << 3 | uint32_t(lod) << 4; }
     static TexInfo decode(uint32_t bits) {
         return {TexTarget(bits & 7), bool(bits >> 3 & 1), TexLod(bits >> 4 & 3)};

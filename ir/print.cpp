@@ -48,8 +48,8 @@ std::string instr_text(const Instr& in) {
                                reg_name(in.src[1]), reg_name(in.src[2]), in.imm[1]);
     case Op::tex: {
         // By TexTarget: a target added there without a name here does not compile.
-        static constexpr std::array<const char*, size_t(TexTarget::Rect) + 1> targets = {"1d", "2d", "3d", "cube",
-                                                                                        "rect"};
+        static constexpr std::array<const char*, size_t(TexTarget::A2D) + 1> targets = {
+            "1d", "2d", "3d", "cube", "rect", "1darray", "2darray"};
         static_assert(targets.back() != nullptr);
         static const char* const lods[] = {"lod", "implicit", "bias"};
         const TexInfo t = TexInfo::decode(in.imm[2]);

@@ -110,7 +110,8 @@ struct Verifier {
     bool tex(const Node& n) {
         const Instr& in = n.instr;
         const TexInfo t = TexInfo::decode(in.imm[2]);
-        if (in.imm[2] != t.encode() || int(t.lod) > int(TexLod::ImplicitBias)) return fail(n, "tex: bad TexInfo");
+        if (in.imm[2] != t.encode() || int(t.lod) > int(TexLod::ImplicitBias) || int(t.target) > int(TexTarget::A2D))
+            return fail(n, "tex: bad TexInfo");
         if (shader.regs[in.src[0]] != Kind::I32) return fail(n, "tex: unit is not i32");
         if (in.type != Kind::F32) return fail(n, "tex: result is not f32");
         if (in.imm[1] != t.operand_count()) return fail(n, "tex: operand count differs from its TexInfo");

@@ -46,8 +46,9 @@ Status check_exec_options(const ExecOptions& exec) {
 }
 
 Status check_texture_enums(TextureTarget target, TextureFormat format) {
-    if (!enum_in_range(target, TextureTarget::Rect))
-        return Error(fmt::format("texture target {} is not Tex1D, Tex2D, Tex3D, Cube or Rect (GL_INVALID_ENUM)",
+    if (!enum_in_range(target, TextureTarget::Tex2DArray))
+        return Error(fmt::format("texture target {} is not Tex1D, Tex2D, Tex3D, Cube, Rect, Tex1DArray or "
+                                 "Tex2DArray (GL_INVALID_ENUM)",
                                  int(target)));
     if (!enum_in_range(format, TextureFormat::Depth))
         return Error(fmt::format("texture format {} is not RGBA8, RGBA32F or Depth (GL_INVALID_ENUM)", int(format)));

@@ -797,7 +797,9 @@ __attribute__((target("avx2"), flatten)) void run_avx2(const Texture& texture, c
 }  // namespace
 
 bool batch_samples(const Texture& texture) {
-    // 3D textures whose lanes choose their own levels keep the per-lane path.
+    // Array textures (a layer per lane) and 3D textures whose lanes choose
+    // their own levels keep the per-lane path.
+    if (texture.target() == TextureTarget::Tex1DArray || texture.target() == TextureTarget::Tex2DArray) return false;
     return texture.target() != TextureTarget::Tex3D || one_image(texture);
 }
 

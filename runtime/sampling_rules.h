@@ -259,7 +259,8 @@ inline float compare_depth(CompareFunc func, float ref, float d) {
 // What one lookup needs at every texel: the face and its (s, t, r), and the
 // depth comparison. For a depth texture with compare on, every texel (the
 // border too) reads as its comparison result, so the filters average
-// results: compare first, then filter, as Mesa does.
+// results: compare first, then filter, as Mesa does. An array's layer is a
+// fixed texel row (1D array: j) or slice (2D array: k) of every level.
 struct Lookup {
     const Texture* texture;
     const SamplerState* st;
@@ -267,7 +268,12 @@ struct Lookup {
     glm::vec3 str;
     bool compare;
     float ref;
+    int layer_j = 0, layer_k = 0;
 };
+
+// EXT_texture_array: the layer of coordinate r is clamp(floor(r + 1/2), 0,
+// layers - 1), the same at every level (NaN: layer 0).
+inline int array_layer(float r, int layers) { return std::clamp(floor_int(r + 0.5f), 0, layers - 1); }
 
 inline float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
 
@@ -281,6 +287,13 @@ inline float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
     // §3.8.14: the comparison applies to depth textures only; R is clamped to [0, 1].
     lk.compare = texture.depth() && st.compare;
     lk.ref = unorm(ref);
+    if (texture.target() == TextureTarget::Tex1DArray || texture.target() == TextureTarget::Tex2DArray) {
+        const TextureImage& base = texture.levels(0)[size_t(st.base_level)];
+        if (texture.target() == TextureTarget::Tex1DArray)
+            lk.layer_j = array_layer(coord.y, base.height);
+        else
+            lk.layer_k = array_layer(coord.z, base.depth);
+    }
     return lk;
 }
 
@@ -347,8 +360,8 @@ template <class Obs = NoObserver>
 template <class Obs = NoObserver>
 [[gnu::always_inline]] inline Texel sample_nearest(const Lookup& lk, const TextureImage& image, Obs&& obs = Obs{}) {
     const int i = nearest_index(lk.st->wrap_s, lk.str.x, image.width);
-    const int j = lk.dims > 1 ? nearest_index(lk.st->wrap_t, lk.str.y, image.height) : 0;
-    const int k = lk.dims > 2 ? nearest_index(lk.st->wrap_r, lk.str.z, image.depth) : 0;
+    const int j = lk.dims > 1 ? nearest_index(lk.st->wrap_t, lk.str.y, image.height) : lk.layer_j;
+    const int k = lk.dims > 2 ? nearest_index(lk.st->wrap_r, lk.str.z, image.depth) : lk.layer_k;
     return fetch(lk, image, i, j, k, obs);
 }
 
@@ -356,14 +369,16 @@ template <class Obs = NoObserver>
 template <class Obs = NoObserver>
 [[gnu::always_inline]] inline Texel sample_linear(const Lookup& lk, const TextureImage& image, Obs&& obs = Obs{}) {
     const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
-    if (lk.dims == 1) return mix(fetch(lk, image, x.i0, 0, 0, obs), fetch(lk, image, x.i1, 0, 0, obs), x.a);
+    if (lk.dims == 1)
+        return mix(fetch(lk, image, x.i0, lk.layer_j, lk.layer_k, obs), fetch(lk, image, x.i1, lk.layer_j, lk.layer_k, obs),
+                   x.a);
     const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
     auto plane = [&](int k) {
         const Texel row0 = mix(fetch(lk, image, x.i0, y.i0, k, obs), fetch(lk, image, x.i1, y.i0, k, obs), x.a);
         const Texel row1 = mix(fetch(lk, image, x.i0, y.i1, k, obs), fetch(lk, image, x.i1, y.i1, k, obs), x.a);
         return mix(row0, row1, y.a);
     };
-    if (lk.dims == 2) return plane(0);
+    if (lk.dims == 2) return plane(lk.layer_k);
     const LinearAxis z = linear_axis(lk.st->wrap_r, lk.str.z, image.depth);
     return mix(plane(z.i0), plane(z.i1), z.a);
 }
@@ -417,7 +432,7 @@ template <class Obs = NoObserver>
     if (magnified) return sample_level(lk, base, linear_within_level(st.mag_filter), obs);
     const bool linear = linear_within_level(st.min_filter);
     if (!is_mipmap_filter(st.min_filter)) return sample_level(lk, base, linear, obs);
-    const int q = last_mip_level(lk.texture->levels(lk.face)[size_t(base)], st);
+    const int q = last_mip_level(lk.texture->levels(lk.face)[size_t(base)], st, lk.dims);
     if (st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest)
         return sample_level(lk, nearest_mip_level(lambda, base, q), linear, obs);
     // §3.8.8, *_MIPMAP_LINEAR: levels d1 = floor(level_base + lambda)

@@ -49,8 +49,8 @@ LaneLookup lane_lookup(const ir::TexInfo& info, const Operands<W>& ops, int lane
     lk.bias = info.lod == ir::TexLod::ImplicitBias;
     if (info.lod != ir::TexLod::Implicit) lk.lod = ops.at(info.lod_at(), lane);
     if (lk.implicit) {
-        lk.ddx = ops.vec(info.ddx_at(), dims, lane);
-        lk.ddy = ops.vec(info.ddy_at(), dims, lane);
+        lk.ddx = ops.vec(info.ddx_at(), info.grad_dims(), lane);
+        lk.ddy = ops.vec(info.ddy_at(), info.grad_dims(), lane);
     }
     return lk;
 }
@@ -86,8 +86,8 @@ struct FloatOperands {
         lk.bias = info.lod == ir::TexLod::ImplicitBias;
         for (uint32_t c = 0; c < 3; ++c) {
             lk.coord[c] = component(0, dims, c);
-            lk.ddx[c] = lk.implicit ? component(info.ddx_at(), dims, c) : zeros;
-            lk.ddy[c] = lk.implicit ? component(info.ddy_at(), dims, c) : zeros;
+            lk.ddx[c] = lk.implicit ? component(info.ddx_at(), info.grad_dims(), c) : zeros;
+            lk.ddy[c] = lk.implicit ? component(info.ddy_at(), info.grad_dims(), c) : zeros;
         }
         if (info.shadow) lk.ref = at(info.ref_at());
         if (info.lod != ir::TexLod::Implicit) lk.lod = at(info.lod_at());

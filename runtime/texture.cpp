@@ -29,6 +29,8 @@ const char* target_name(TextureTarget t) {
     case TextureTarget::Tex3D: return "3D texture";
     case TextureTarget::Cube: return "cube map";
     case TextureTarget::Rect: return "rectangle texture";
+    case TextureTarget::Tex1DArray: return "1D array texture";
+    case TextureTarget::Tex2DArray: return "2D array texture";
     }
     return "texture";
 }
@@ -81,21 +83,34 @@ void store_image(TextureFormat format, TextureImage& image) {
 
 std::string size_str(const TextureImage& i) { return fmt::format("{}x{}x{}", i.width, i.height, i.depth); }
 
+bool arrayed(TextureTarget t) { return t == TextureTarget::Tex1DArray || t == TextureTarget::Tex2DArray; }
+
+// An array's layers: the height of a 1D array, the depth of a 2D array.
+int layers(TextureTarget t, const TextureImage& image) {
+    return t == TextureTarget::Tex1DArray ? image.height : t == TextureTarget::Tex2DArray ? image.depth : 1;
+}
+
 // The checks glTexImage makes on one image of `level` (§3.8.1): the target's
-// dimensionality, square cube faces, GL's maxima, and the texel count. Empty
-// when the image is acceptable.
+// dimensionality, square cube faces, GL's maxima (an array's layer count
+// against GL_MAX_ARRAY_TEXTURE_LAYERS_EXT at every level), and the texel
+// count. Empty when the image is acceptable.
 std::string check_image(TextureTarget target, const TextureImage& image, int level) {
     if (image.width < 1 || image.height < 1 || image.depth < 1)
         return fmt::format("a texture image needs width, height and depth of at least 1 (got {})", size_str(image));
     if (target == TextureTarget::Tex1D && (image.height != 1 || image.depth != 1))
         return fmt::format("a 1D texture image has height = depth = 1 (got {})", size_str(image));
-    if ((target == TextureTarget::Tex2D || target == TextureTarget::Cube || target == TextureTarget::Rect) &&
+    if ((target == TextureTarget::Tex2D || target == TextureTarget::Cube || target == TextureTarget::Rect ||
+         target == TextureTarget::Tex1DArray) &&
         image.depth != 1)
         return fmt::format("a {} image has depth = 1 (got {})", target_name(target), size_str(image));
     if (target == TextureTarget::Cube && image.width != image.height)
         return fmt::format("cube map faces are square (got {}x{})", image.width, image.height);
     const int limit = max_size(target) >> level;
-    if (image.width > limit || image.height > limit || image.depth > limit)
+    if (arrayed(target) && layers(target, image) > kMaxArrayTextureLayers)
+        return fmt::format("{} has {} layers, more than GL_MAX_ARRAY_TEXTURE_LAYERS_EXT ({})", size_str(image),
+                           layers(target, image), kMaxArrayTextureLayers);
+    const int dims = rt::texture_dims(target);
+    if (image.width > limit || (dims > 1 && image.height > limit) || (dims > 2 && image.depth > limit))
         return fmt::format("{} is larger than {} ({}) allows at level {} (at most {})", size_str(image),
                            max_size_name(target), max_size(target), level, limit);
     const uint64_t want = uint64_t(image.width) * uint64_t(image.height) * uint64_t(image.depth);
@@ -144,14 +159,16 @@ TextureImage reduce(const TextureImage& src, int dims) {
     return TextureImage{size[0], size[1], size[2], std::move(texels)};
 }
 
-// Levels base+1 .. q of one face follow the sizes of §3.8.10 and are defined.
-bool chain_complete(const std::vector<TextureImage>& chain, int base, int q) {
+// Levels base+1 .. q of one face follow the sizes of §3.8.10 and are defined:
+// each of the first `dims` sizes halves, the others (an array's layers) stay.
+bool chain_complete(const std::vector<TextureImage>& chain, int base, int q, int dims) {
     if (q >= int(chain.size())) return false;
+    auto next = [dims](int size, int axis) { return axis < dims ? half_size(size) : size; };
     for (int level = base + 1; level <= q; ++level) {
         const TextureImage& above = chain[size_t(level - 1)];
         const TextureImage& image = chain[size_t(level)];
-        if (!defined(image) || image.width != half_size(above.width) || image.height != half_size(above.height) ||
-            image.depth != half_size(above.depth))
+        if (!defined(image) || image.width != next(above.width, 0) || image.height != next(above.height, 1) ||
+            image.depth != next(above.depth, 2))
             return false;
     }
     return true;
@@ -231,8 +248,8 @@ void Texture::generate_mipmaps() {
             image->height != levels_[0][size_t(base)].height)
             return;
     }
-    const int q = rt::last_mip_level(levels_[0][size_t(base)], sampler);
     const int dims = rt::texture_dims(target_);
+    const int q = rt::last_mip_level(levels_[0][size_t(base)], sampler, dims);
     for (std::vector<TextureImage>& chain : levels_) {
         if (chain.size() <= size_t(std::max(q, base))) chain.resize(size_t(std::max(q, base)) + 1);
         for (int level = base + 1; level <= q; ++level) {
@@ -258,9 +275,10 @@ bool Texture::complete() const {
     }
     if (!rt::is_mipmap_filter(sampler.min_filter)) return true;
     if (base > sampler.max_level) return false;
-    const int q = rt::last_mip_level(*first, sampler);
+    const int dims = rt::texture_dims(target_);
+    const int q = rt::last_mip_level(*first, sampler, dims);
     for (const std::vector<TextureImage>& chain : levels_)
-        if (!chain_complete(chain, base, q)) return false;
+        if (!chain_complete(chain, base, q, dims)) return false;
     return true;
 }
 

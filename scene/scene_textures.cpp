@@ -15,7 +15,7 @@ namespace glslrun::scene::detail {
 namespace {
 
 // Each list is in its enum's order (glslrun.h), so a choice's index is the value.
-const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map", "rectangle"};
+const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map", "rectangle", "1d_array", "2d_array"};
 const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component"};
 const std::vector<std::string_view> kFilters = {"nearest", "linear", "nearest_mipmap_nearest",
                                                 "linear_mipmap_nearest", "nearest_mipmap_linear",
@@ -29,7 +29,7 @@ const std::vector<std::string_view> kImageSources = {"image", "checkerboard", "r
 const std::vector<std::string_view> kDepthKeys = {"compare_mode", "compare_func", "depth_texture_mode"};
 
 const std::vector<std::string_view> kTextureKeys = {
-    "target", "internal_format", "image", "checkerboard", "rgbw", "solid", "faces", "levels",
+    "target", "internal_format", "image", "checkerboard", "rgbw", "solid", "faces", "levels", "layers",
     "generate_mipmap", "min_filter", "mag_filter", "wrap_s", "wrap_t", "wrap_r", "border_color", "min_lod",
     "max_lod", "lod_bias", "base_level", "max_level", "compare_mode", "compare_func", "depth_texture_mode",
     "render_target", "attachment"};
@@ -47,6 +47,14 @@ struct Context {
     std::string dir;  // the scene file's directory: image paths are relative to it
     std::vector<std::string>* files = nullptr;  // the image files read are added here
 };
+
+bool arrayed(TextureTarget t) { return t == TextureTarget::Tex1DArray || t == TextureTarget::Tex2DArray; }
+
+// An array's layers are images of one dimension less: each layer of `layers`
+// is read as a 1D or 2D texture's image.
+TextureTarget layer_target(TextureTarget t) {
+    return t == TextureTarget::Tex1DArray ? TextureTarget::Tex1D : t == TextureTarget::Tex2DArray ? TextureTarget::Tex2D : t;
+}
 
 int dimensions(TextureTarget t) {
     switch (t) {
@@ -245,6 +253,9 @@ Context read_context(const Section& s, const std::string& dir) {
     } else if (s.get("faces")) {
         c.target = TextureTarget::Cube;  // six faces can only be a cube map
     }
+    if (s.get("layers") && !arrayed(c.target))
+        fail(*s.get("layers"), fmt::format("'{}' is for target = \"1d_array\" or \"2d_array\" (this is \"{}\")",
+                                           s.name("layers"), kTargets[size_t(c.target)]));
     if (const toml::node* n = s.get("internal_format"))
         c.format = TextureFormat(choice(*n, s.name("internal_format"), kFormats));
     return c;
@@ -254,9 +265,39 @@ std::string first_message(const Error& e) {
     return e.diagnostics.empty() ? std::string("refused") : e.diagnostics[0].message;
 }
 
+// EXT_texture_array: `layers = [...]`, one image per layer (a file name or
+// a source table, as a 1D or 2D texture's), all of one size, stacked into
+// level 0 (a 1D array's layers are its rows, a 2D array's its slices).
+// Mipmaps come from generate_mipmap.
+Texture build_array_texture(const Section& s, const Context& c) {
+    for (std::string_view key : {"image", "checkerboard", "rgbw", "solid", "levels"})
+        if (const toml::node* n = s.get(key))
+            fail(*n, fmt::format("'{}': an array texture takes its images from 'layers'{}", s.name(key),
+                                 key == "levels" ? " (mipmaps: generate_mipmap = true)" : ""));
+    if (!s.get("layers"))
+        fail(s.table(), fmt::format("[{}] needs 'layers', one image per layer (target = \"{}\")", s.path(),
+                                    kTargets[size_t(c.target)]));
+    Context layer = c;
+    layer.target = layer_target(c.target);
+    std::vector<TextureImage> images = read_list(s, "layers", layer, 1, size_t(kMaxArrayTextureLayers));
+    const toml::array& a = *s.get("layers")->as_array();
+    TextureImage stacked{images[0].width, images[0].height, 1, {}};
+    for (size_t i = 0; i < images.size(); ++i) {
+        if (images[i].width != stacked.width || images[i].height != stacked.height)
+            fail(a[i], fmt::format("'{}[{}]' is {}x{}; layer 0 is {}x{}: every layer has one size", s.name("layers"),
+                                   i, images[i].width, images[i].height, stacked.width, stacked.height));
+        stacked.texels.insert(stacked.texels.end(), images[i].texels.begin(), images[i].texels.end());
+    }
+    (c.target == TextureTarget::Tex1DArray ? stacked.height : stacked.depth) = int(images.size());
+    Result<Texture> texture = Texture::create(c.target, {std::move(stacked)}, c.format);
+    if (!texture) fail(*s.get("layers"), fmt::format("[{}]: {}", s.path(), first_message(texture.error())));
+    return std::move(*texture);
+}
+
 // glTexImage for every face or level the file gives; Texture::create checks
 // the sizes against the target (1D, square equal cube faces, GL's maxima).
 Texture build_texture(const Section& s, const Context& c) {
+    if (arrayed(c.target)) return build_array_texture(s, c);
     const toml::key* k = source_key(s, {"image", "checkerboard", "rgbw", "solid", "faces", "levels"},
                                     "a source of texels: image, checkerboard, rgbw, solid, faces (cube_map) "
                                     "or levels");

@@ -34,6 +34,7 @@ exec "$glslrun" test --root "$root" --expect "$repo/tests/piglit-expectations.tx
     tests/shaders \
     tests/spec/arb_texture_rectangle \
     tests/spec/arb_shader_texture_lod \
+    tests/spec/ext_texture_array \
     generated_tests/spec/arb_draw_buffers/preprocessor/enabled-compat.vert \
     generated_tests/spec/arb_draw_buffers/preprocessor/enabled-compat.frag \
     generated_tests/spec/arb_draw_buffers/preprocessor/disabled-defined-compat.vert \
@@ -51,4 +52,10 @@ exec "$glslrun" test --root "$root" --expect "$repo/tests/piglit-expectations.tx
     generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-defined-compat.vert \
     generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-defined-compat.frag \
     generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-undefined-compat.vert \
-    generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-undefined-compat.frag
+    generated_tests/spec/arb_shader_texture_lod/preprocessor/disabled-undefined-compat.frag \
+    generated_tests/spec/ext_texture_array/preprocessor/enabled-compat.vert \
+    generated_tests/spec/ext_texture_array/preprocessor/enabled-compat.frag \
+    generated_tests/spec/ext_texture_array/preprocessor/disabled-defined-compat.vert \
+    generated_tests/spec/ext_texture_array/preprocessor/disabled-defined-compat.frag \
+    generated_tests/spec/ext_texture_array/preprocessor/disabled-undefined-compat.vert \
+    generated_tests/spec/ext_texture_array/preprocessor/disabled-undefined-compat.frag

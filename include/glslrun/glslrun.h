@@ -337,7 +337,11 @@ enum class CompareFunc : uint8_t { Never, Less, Equal, Lequal, Greater, Notequal
 // starts as GL's for rectangles (LINEAR, CLAMP_TO_EDGE), and a state GL would
 // refuse for it (REPEAT, MIRRORED_REPEAT, a mipmap min filter) makes it
 // incomplete.
-enum class TextureTarget : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Rect };
+// Tex1DArray, Tex2DArray: EXT_texture_array's arrays of 1D and 2D images,
+// stored as one image whose height (1D) or depth (2D) counts the layers; a
+// lookup picks layer clamp(floor(r + 1/2), 0, layers - 1) and filters within
+// it; mipmap levels halve width (and height) and keep the layer count.
+enum class TextureTarget : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Rect, Tex1DArray, Tex2DArray };
 enum class TextureFilter : uint8_t { Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest,
                                      NearestMipmapLinear, LinearMipmapLinear };
 enum class TextureWrap : uint8_t { Repeat, ClampToEdge, Clamp, ClampToBorder, MirroredRepeat };
@@ -373,13 +377,15 @@ struct TextureImage {
 inline constexpr int kMaxTextureSize = 16384;   // GL_MAX_TEXTURE_SIZE
 inline constexpr int kMax3DTextureSize = 2048;  // GL_MAX_3D_TEXTURE_SIZE
 inline constexpr int kMaxRectangleTextureSize = 16384;  // GL_MAX_RECTANGLE_TEXTURE_SIZE
+inline constexpr int kMaxArrayTextureLayers = 2048;  // GL_MAX_ARRAY_TEXTURE_LAYERS_EXT (llvmpipe's)
 inline constexpr int kMaxTextureUnits = 16;     // GL_MAX_TEXTURE_IMAGE_UNITS
 
 class Texture {
 public:
     // `faces` holds level 0: one image, or six for a cube map in GL's face
     // order (+X, -X, +Y, -Y, +Z, -Z). Sizes are checked against the target
-    // (1D: height = depth = 1; cube: square, equal faces) and GL's maxima.
+    // (1D: height = depth = 1; cube: square, equal faces; 1D array: depth = 1)
+    // and GL's maxima.
     static Result<Texture> create(TextureTarget target, std::vector<TextureImage> faces,
                                   TextureFormat format = TextureFormat::RGBA8);
     // glTexImage with level > 0: sizes are not checked here (GL accepts any);
@@ -550,7 +556,7 @@ struct GLState {
     int draw_buffers = 1;
     // glBindTexture per unit and target. A sampler reads the binding of its
     // own target on the unit its uniform names; none there samples as (0, 0, 0, 1).
-    struct TextureUnit { std::array<std::shared_ptr<const Texture>, 5> bound; };  // by TextureTarget
+    struct TextureUnit { std::array<std::shared_ptr<const Texture>, 7> bound; };  // by TextureTarget
     std::array<TextureUnit, kMaxTextureUnits> texture_units;
     // glActiveTexture(unit) + glBindTexture: fills the slot of the texture's
     // target; null unbinds every target of the unit. A unit outside

@@ -119,7 +119,9 @@ TEST_CASE("requirements decide skips", "[piglit][parse]") {
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_ARB_draw_buffers\nGL_ARB_texture_rectangle").has_value());
     CHECK(reason("GLSL >= 1.10\n!GL_ARB_texture_rectangle").value() ==
           "requires GL_ARB_texture_rectangle to be absent");
-    CHECK(reason("GLSL >= 1.10\nGL_EXT_texture_array").value() == "extension GL_EXT_texture_array is not supported");
+    CHECK(reason("GLSL >= 1.10\nGL_ARB_texture_multisample").value() ==
+          "extension GL_ARB_texture_multisample is not supported");
+    CHECK_FALSE(reason("GLSL >= 1.10\nGL_EXT_texture_array").has_value());  // EXT_texture_array is supported
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_MAX_VARYING_COMPONENTS >= 64").has_value());
     CHECK(reason("GLSL >= 1.10\nGL_MAX_VARYING_COMPONENTS >= 65").has_value());
     CHECK_FALSE(reason("GLSL >= 1.10\nGL_MAX_FRAGMENT_UNIFORM_COMPONENTS >= 4097").has_value());
@@ -138,8 +140,11 @@ TEST_CASE("GL 3 texture commands and unsupported sections skip", "[piglit][parse
     ShaderTest t = parse_ok("[require]\nGLSL >= 1.10\n[test]\ntexture rgbw 0 (8, 8)\n"
                             "texparameter 2D compare_func greater\ndraw rect -1 -1 2 2\n");
     CHECK_FALSE(skip_reason(t).has_value());
-    ShaderTest a = parse_ok("[require]\nGLSL >= 1.10\n[test]\ntexture rgbw 2DArray 0 (8, 8, 2)\n");
-    CHECK(skip_reason(a).value() == "texture rgbw 2DArray needs GL 3 or extensions");
+    ShaderTest a = parse_ok("[require]\nGLSL >= 1.10\n[test]\ntexparameter CubeArray min nearest\n");
+    CHECK(skip_reason(a).value() == "texparameter CubeArray needs GL 4 or extensions");
+    // EXT_texture_array's textures are supported.
+    CHECK_FALSE(skip_reason(parse_ok("[require]\nGLSL >= 1.10\n[test]\ntexture rgbw 2DArray 0 (8, 8, 2)\n"
+                                     "texparameter 2DArray min linear\n")).has_value());
     ShaderTest g = parse_ok("[require]\nGLSL >= 1.10\n[geometry shader]\nvoid main(){}\n[test]\n");
     CHECK(skip_reason(g).value() == "unsupported section [geometry shader]");
     ShaderTest u = parse_ok("[require]\nGLSL >= 1.10\n[test]\nuniform dvec2 x 3 4\n");

@@ -136,13 +136,37 @@ TEST_CASE("malformed texture commands are parse errors", "[piglit][textures][mal
 TEST_CASE("texture variants that need GL 3 or extensions skip", "[piglit][textures]") {
     CHECK(cmd<Unsupported>("texture rgbw 0 (8, 8) GL_RGBA8UI").reason ==
           "texture format GL_RGBA8UI is not supported");
-    cmd<Unsupported>("texture rgbw 1DArray 0 (8, 2)");
-    cmd<Unsupported>("texture shadow2DArray 0 (8, 8, 2)");
     cmd<Unsupported>("texture integer 0 (8, 8) (0, 0) GL_RGBA8I");
-    cmd<Unsupported>("texparameter 2DArray compare_func greater");
+    cmd<Unsupported>("texparameter CubeArray compare_func greater");
     cmd<Unsupported>("texparameter 2D swizzle_r green");
     cmd<Unsupported>("texparameter 2D depth_mode red");
     cmd<Unsupported>("texcoord 0 (0, 0, 0, 1)");
+}
+
+TEST_CASE("array textures (EXT_texture_array): piglit_array_texture's layers and the depth ramps",
+          "[piglit][textures]") {
+    auto one = cmd<TextureCommand>("texture rgbw 1DArray 2 (8, 3)");
+    CHECK((one.kind == TextureCommand::Kind::Rgbw1DArray && one.unit == 2 && one.width == 8 && one.layers == 3));
+    auto two = cmd<TextureCommand>("texture shadow2DArray 0 (4, 2, 5)");
+    CHECK((two.kind == TextureCommand::Kind::Shadow2DArray && two.width == 4 && two.height == 2 && two.layers == 5));
+    CHECK(cmd<TexParameter>("texparameter 1DArray min linear").target == TexParameter::Target::Tex1DArray);
+    parse_error("texture rgbw 2DArray 0 (8, 8)");
+    parse_error("texture shadow1DArray 0 (8)");
+    // Layer l is colour l mod 4 of red, green, blue, white; a 1D array's layers are its rows.
+    auto t = make_texture(one);
+    REQUIRE(t);
+    CHECK(t->target() == TextureTarget::Tex1DArray);
+    const glslrun::TextureImage& img = t->levels(0)[0];
+    CHECK((img.width == 8 && img.height == 3 && img.depth == 1));
+    CHECK(texel(img, 5, 1) == kGreen);
+    CHECK(texel(img, 0, 2) == kBlue);
+    CHECK(t->sampler.min_filter == TextureFilter::Nearest);
+    auto d = make_texture(two);
+    REQUIRE(d);
+    CHECK((d->target() == TextureTarget::Tex2DArray && d->depth() && d->sampler.compare));
+    CHECK(d->levels(0)[0].depth == 5);
+    CHECK(texel(d->levels(0)[0], 3, 1, 4).r == 1.0f);  // layer 4, x = 3: the ramp's end
+    CHECK(texel(d->levels(0)[0], 0, 1, 4).r == 0.0f);
 }
 
 // ------------------------------------------------------------------- images ---

@@ -156,15 +156,15 @@ struct Fuzzer {
     // now and then, any int), and the results read back into variables.
     void tex() {
         ir::TexInfo info;
-        info.target = ir::TexTarget(pick(5));
-        // shadow1D, shadow2D, shadow2DRect
-        info.shadow = (info.target <= ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && pick(3) == 0;
+        info.target = ir::TexTarget(pick(7));
+        // shadow1D, shadow2D, shadow2DRect, shadow1DArray, shadow2DArray
+        info.shadow = (info.target <= ir::TexTarget::T2D || info.target >= ir::TexTarget::Rect) && pick(3) == 0;
         // texture2DGradARB & co. (either stage): an implicit LOD from given gradients, not ddx/ddy.
-        const bool grad = pick(5) == 0;
+        const bool grad = !info.arrayed() && pick(5) == 0;
         info.lod = grad ? ir::TexLod::Implicit
                    : !fragment() ? ir::TexLod::Explicit
                    : pick(3) == 0 ? ir::TexLod::ImplicitBias : ir::TexLod::Implicit;
-        const bool proj = info.target != ir::TexTarget::Cube && pick(3) == 0;
+        const bool proj = info.target != ir::TexTarget::Cube && !info.arrayed() && pick(3) == 0;
         const Reg q = of(Kind::F32);
         auto coordinate = [&] {
             if (!proj) return of(Kind::F32);
@@ -178,7 +178,7 @@ struct Fuzzer {
         if (info.lod != ir::TexLod::Implicit) operands.push_back(of(Kind::F32));  // lod or bias
         if (info.lod != ir::TexLod::Explicit)
             for (Op d : {Op::ddx, Op::ddy})
-                for (uint32_t k = 0; k < info.dims(); ++k) {
+                for (uint32_t k = 0; k < info.grad_dims(); ++k) {
                     if (grad) {
                         operands.push_back(of(Kind::F32));
                         continue;
@@ -305,6 +305,15 @@ std::array<GLState::TextureUnit, kMaxTextureUnits> make_textures() {
     bind(4, make(TextureTarget::Rect, {image(7, 2, 1, -1, 2)}, TextureFormat::RGBA32F, [](Texture& t) {
         t.sampler.mag_filter = TextureFilter::Nearest;  // linear when minified, a LOD bias
         t.sampler.lod_bias = -0.5f;
+    }));
+    bind(5, make(TextureTarget::Tex2DArray, {image(4, 2, 3, 0, 1)}, TextureFormat::RGBA8, [](Texture& t) {
+        t.generate_mipmaps();  // texture2DArray: trilinear within a layer
+        t.sampler.min_filter = TextureFilter::LinearMipmapLinear;
+    }));
+    bind(5, make(TextureTarget::Tex1DArray, {image(4, 3, 1, 0, 1)}, TextureFormat::Depth, [](Texture& t) {
+        t.sampler.compare = true;  // shadow1DArray, linear, clamped
+        t.sampler.min_filter = TextureFilter::Linear;
+        t.sampler.wrap_s = TextureWrap::ClampToEdge;
     }));
     bind(4, make(TextureTarget::Tex1D, {image(8, 1, 1, -1, 2)}, TextureFormat::RGBA32F, [](Texture& t) {
         t.generate_mipmaps();  // border colour, a clamped lod range from level 1
@@ -483,7 +492,7 @@ TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fu
         for (uint32_t& u : uniforms) u = fz.special_word(fz.any_kind());
         for (uint32_t k = 0; k < kSamplers; ++k) {
             static const int32_t units[] = {0, 1, 2, 3, 4, 5, -1, kMaxTextureUnits};
-            uniforms[kSamplerWords + k] = uint32_t(units[fz.pick(fz.pick(4) ? 5 : 8)]);
+            uniforms[kSamplerWords + k] = uint32_t(units[fz.pick(fz.pick(4) ? 6 : 8)]);
         }
         std::vector<Batch> batches(kBatches);
         for (Batch& batch : batches) {

@@ -440,6 +440,39 @@ TEST_CASE("a rectangle texture: GL's state for rectangles, and what GL refuses f
     check_error("[textures.0]\ntarget = \"rectangle\"\nrgbw = { size = [4] }\n", 3, "[width, height]");
 }
 
+TEST_CASE("array textures: one image per layer, stacked; what they refuse", "[scene][textures][array]") {
+    Scene s = parse_ok("[textures.1]\ntarget = \"2d_array\"\nmin_filter = \"nearest\"\nlayers = [\n"
+                       "  { solid = { size = [2, 2], color = [1, 0, 0] } },\n"
+                       "  { checkerboard = { size = [2, 2], square_size = 1 } },\n"
+                       "  { rgbw = { size = [2, 2] } },\n]\n");
+    const Texture& t = texture(s, 1);
+    CHECK(t.target() == TextureTarget::Tex2DArray);
+    const TextureImage& img = t.levels(0)[0];
+    CHECK((img.width == 2 && img.height == 2 && img.depth == 3));
+    CHECK(texel(img, 1, 1, 0) == glm::vec4(1, 0, 0, 1));
+    CHECK(texel(img, 0, 0, 1) == glm::vec4(0, 0, 0, 1));  // the checkerboard's first colour, bottom left
+    CHECK(texel(img, 1, 1, 1) == glm::vec4(0, 0, 0, 1));
+    CHECK(texel(img, 0, 0, 2) == glm::vec4(1, 0, 0, 1));  // rgbw: red bottom left
+    CHECK(t.complete());
+    Scene one = parse_ok("[textures.0]\ntarget = \"1d_array\"\ngenerate_mipmap = true\n"
+                         "layers = [ { rgbw = { size = [4] } }, { solid = { size = [4], color = 0.5 } } ]\n");
+    const Texture& o = texture(one, 0);
+    CHECK(o.target() == TextureTarget::Tex1DArray);
+    CHECK((o.levels(0)[0].width == 4 && o.levels(0)[0].height == 2));
+    REQUIRE(o.levels(0).size() == 3);
+    CHECK(o.levels(0)[2].height == 2);  // the layers stay at every level
+    CHECK(o.complete());
+    check_error("[textures.0]\ntarget = \"2d_array\"\nrgbw = { size = [2, 2] }\n", 3,
+                "an array texture takes its images from 'layers'");
+    check_error("[textures.0]\ntarget = \"2d_array\"\nmin_filter = \"linear\"\n", 1, "needs 'layers'");
+    check_error("[textures.0]\nlayers = [ { rgbw = { size = [2, 2] } } ]\n", 2,
+                "'textures.0.layers' is for target = \"1d_array\" or \"2d_array\"");
+    check_error("[textures.0]\ntarget = \"2d_array\"\nlayers = [ { rgbw = { size = [2, 2] } }, "
+                "{ rgbw = { size = [4, 2] } } ]\n", 3, "every layer has one size");
+    check_error("[textures.0]\ntarget = \"1d_array\"\nlayers = [ { rgbw = { size = [2, 2] } } ]\n", 3, "[width]");
+    check_error("[textures.0]\ntarget = \"2d_array\"\nlayers = []\n", 3, "must have 1 to 2048 elements");
+}
+
 TEST_CASE("texture sources: one of them, of the right size", "[scene][textures][errors]") {
     check_error("[textures.0]\nmin_filter = \"linear\"\n", 1, "[textures.0] needs a source of texels");
     check_error("[textures.0]\nrgbw = { size = [2, 2] }\nsolid = { size = [1, 1], color = 1 }\n", 3,

@@ -19,6 +19,8 @@ GLenum gl_target(TextureTarget t) {
     case TextureTarget::Tex3D: return GL_TEXTURE_3D;
     case TextureTarget::Cube: return GL_TEXTURE_CUBE_MAP;
     case TextureTarget::Rect: return GL_TEXTURE_RECTANGLE;
+    case TextureTarget::Tex1DArray: return GL_TEXTURE_1D_ARRAY_EXT;
+    case TextureTarget::Tex2DArray: return GL_TEXTURE_2D_ARRAY_EXT;
     }
     return GL_TEXTURE_2D;
 }
@@ -97,6 +99,7 @@ void tex_image(const GLFunctions& gl, const Texture& t, int face, int level) {
         glTexImage1D(target, level, u.internal_format, image.width, 0, u.format, u.type, u.data());
         break;
     case TextureTarget::Tex3D:
+    case TextureTarget::Tex2DArray:  // EXT_texture_array: the layers are the depth
         gl.TexImage3D(target, level, u.internal_format, image.width, image.height, image.depth, 0, u.format, u.type,
                       u.data());
         break;

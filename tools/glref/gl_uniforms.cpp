@@ -79,7 +79,9 @@ std::optional<TypeInfo> type_info(GLenum type) {
     case GL_FLOAT_MAT4x3: return matrix(4, 3);
     case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
     case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW:
-    case GL_SAMPLER_2D_RECT: case GL_SAMPLER_2D_RECT_SHADOW: return TypeInfo{Kind::Int, 1};
+    case GL_SAMPLER_2D_RECT: case GL_SAMPLER_2D_RECT_SHADOW:
+    case GL_SAMPLER_1D_ARRAY_EXT: case GL_SAMPLER_2D_ARRAY_EXT:
+    case GL_SAMPLER_1D_ARRAY_SHADOW_EXT: case GL_SAMPLER_2D_ARRAY_SHADOW_EXT: return TypeInfo{Kind::Int, 1};
     default: return std::nullopt;
     }
 }

@@ -341,12 +341,36 @@ Parsed<CommandData> parse_fixed_rgbw(Scanner in, TextureCommand::Kind kind, std:
     return CommandData{t};
 }
 
-// After "texture ". The array and integer variants need GL 3 or extensions
-// we do not expose; the other helpers are not used by GLSL 1.x tests.
+// "texture rgbw 1DArray N (w, l)", "texture rgbw 2DArray N (w, h, l)",
+// "texture shadow1DArray N (w, l)", "texture shadow2DArray N (w, h, l)"
+// (EXT_texture_array): the size, then the layer count.
+Parsed<CommandData> parse_array(Scanner in, TextureCommand::Kind kind, std::string_view line) {
+    TextureCommand t;
+    t.kind = kind;
+    const bool two_d = kind == TextureCommand::Kind::Rgbw2DArray || kind == TextureCommand::Kind::Shadow2DArray;
+    auto unit = in.integer();
+    bool ok = unit && in.literal('(');
+    std::optional<int> w = ok ? in.integer() : std::nullopt;
+    ok = w && in.literal(',');
+    std::optional<int> h = ok && two_d ? in.integer() : std::optional<int>(1);
+    ok = ok && h && (!two_d || in.literal(','));
+    std::optional<int> l = ok ? in.integer() : std::nullopt;
+    if (!l || !in.literal(')')) return error("bad texture command \"" + std::string(line) + "\"");
+    t.unit = *unit;
+    t.width = *w;
+    t.height = *h;
+    t.layers = *l;
+    return CommandData{t};
+}
+
+// After "texture ". The integer variants need GL 3 or extensions we do not
+// expose; the other helpers are not used by GLSL 1.x tests.
 Parsed<CommandData> parse_texture(std::string_view rest, std::string_view line) {
-    for (std::string_view v : {"rgbw 1DArray", "rgbw 2DArray", "shadow1DArray", "shadow2DArray"})
-        if (starts_with(rest, v))
-            return CommandData{Unsupported{"texture " + std::string(v) + " needs GL 3 or extensions"}};
+    using K = TextureCommand::Kind;
+    if (eat(rest, "rgbw 1DArray")) return parse_array({rest}, K::Rgbw1DArray, line);
+    if (eat(rest, "rgbw 2DArray")) return parse_array({rest}, K::Rgbw2DArray, line);
+    if (eat(rest, "shadow1DArray")) return parse_array({rest}, K::Shadow1DArray, line);
+    if (eat(rest, "shadow2DArray")) return parse_array({rest}, K::Shadow2DArray, line);
     if (eat(rest, "rgbw 1D")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Rgbw1D, line);
     if (eat(rest, "rgbw 3D")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Rgbw3D, line);
     if (eat(rest, "miptree")) return parse_fixed_rgbw({rest}, TextureCommand::Kind::Miptree, line);
@@ -393,6 +417,8 @@ std::optional<TexParameter::Target> tex_target(std::string_view w) {
     if (w == "3D") return TexParameter::Target::Tex3D;
     if (w == "Cube") return TexParameter::Target::Cube;
     if (w == "Rect") return TexParameter::Target::Rect;
+    if (w == "1DArray") return TexParameter::Target::Tex1DArray;
+    if (w == "2DArray") return TexParameter::Target::Tex2DArray;
     return std::nullopt;
 }
 
@@ -413,8 +439,7 @@ bool texparameter_numbers(TexParameter& p, std::string_view rest) {
 Parsed<CommandData> parse_texparameter(std::string_view rest, std::string_view line) {
     Scanner in{rest};
     std::string_view target = in.word();
-    for (std::string_view t : {"1DArray", "2DArray", "CubeArray"})
-        if (target == t) return CommandData{Unsupported{"texparameter " + std::string(t) + " needs GL 3 or extensions"}};
+    if (target == "CubeArray") return CommandData{Unsupported{"texparameter CubeArray needs GL 4 or extensions"}};
     std::string_view name = in.word();
     if (name == "swizzle_r") return CommandData{Unsupported{"texparameter swizzle_r needs GL_EXT_texture_swizzle"}};
     TexParameter p;

@@ -114,10 +114,12 @@ struct Tolerance { std::array<float, 4> tol{}; };
 // "texture rgbw|checkerboard|shadow1D|shadow2D ...": shader_runner makes a new
 // texture on `unit`, binds it there and leaves that unit active.
 struct TextureCommand {
-    enum class Kind { Rgbw, Rgbw1D, Rgbw3D, Miptree, Checkerboard, Shadow1D, Shadow2D, ShadowRect } kind = Kind::Rgbw;
+    enum class Kind { Rgbw, Rgbw1D, Rgbw3D, Miptree, Checkerboard, Shadow1D, Shadow2D, ShadowRect, Rgbw1DArray,
+                      Rgbw2DArray, Shadow1DArray, Shadow2DArray } kind = Kind::Rgbw;
     int unit = 0;
     int level = 0;                 // checkerboard: the mip level it writes
     int width = 1, height = 1;     // rgbw/checkerboard/shadow (1D: height 1)
+    int layers = 1;                // the array textures (EXT_texture_array)
     std::string format;            // rgbw: the internal format named after the size, "" = GL_RGBA
     bool float_format = false;     // that format stores floats (GL_RGBA32F, ...), else 8-bit unorm
     std::array<float, 4> black{}, white{};  // checkerboard colours
@@ -125,7 +127,7 @@ struct TextureCommand {
 // "texparameter <target> <name> <value>": glTexParameter on the texture bound
 // to <target> of the active unit.
 struct TexParameter {
-    enum class Target { Tex1D, Tex2D, Tex3D, Cube, Rect } target = Target::Tex2D;
+    enum class Target { Tex1D, Tex2D, Tex3D, Cube, Rect, Tex1DArray, Tex2DArray } target = Target::Tex2D;
     enum class Name { CompareFunc, DepthMode, Min, Mag, WrapS, WrapT, WrapR, LodBias, MaxLevel,
                       BaseLevel, BorderColor } name = Name::CompareFunc;
     std::string value;             // enum values as written ("greater", "linear_mipmap_nearest")

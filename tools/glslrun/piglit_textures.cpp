@@ -9,7 +9,12 @@
 //    compare mode on with GL_GREATER (depth mode stays GL's LUMINANCE);
 //  - rgbw 1D / 3D: fixed 4-texel and 2x2x2 images, NEAREST, CLAMP_TO_EDGE;
 //  - miptree: 8x8 with levels 1..3, each level one colour (red, green, blue,
-//    white), NEAREST_MIPMAP_NEAREST, NEAREST, CLAMP_TO_EDGE.
+//    white), NEAREST_MIPMAP_NEAREST, NEAREST, CLAMP_TO_EDGE;
+//  - rgbw 1DArray / 2DArray (piglit_array_texture, mip = GL_FALSE): level 0,
+//    layer l all one colour of red, green, blue, white (l mod 4), NEAREST,
+//    CLAMP_TO_EDGE on S and T;
+//  - shadow1DArray / shadow2DArray: the depth ramp in every row / layer, as
+//    shadow1D/shadow2D.
 // All of them pass floats with internal format GL_RGBA (8-bit unorm on Mesa)
 // or GL_DEPTH_COMPONENT, unless "texture rgbw" names another format.
 #include "piglit_textures.h"
@@ -88,6 +93,32 @@ Result<Texture> make_miptree() {
     return finish(std::move(t), [](SamplerState& s) {
         nearest_clamped(s);
         s.min_filter = TextureFilter::NearestMipmapNearest;
+    });
+}
+
+Result<Texture> make_array(const TextureCommand& c, TextureTarget target) {
+    const bool one_d = target == TextureTarget::Tex1DArray;
+    const int h = one_d ? 1 : c.height;
+    if (auto st = check_size(c.width, h, c.layers, one_d ? 2 : 3); !st) return st.error();
+    if (c.layers > kMaxArrayTextureLayers)
+        return Error(fmt::format("{} layers exceed GL_MAX_ARRAY_TEXTURE_LAYERS_EXT ({})", c.layers,
+                                 kMaxArrayTextureLayers));
+    const bool depth = c.kind == TextureCommand::Kind::Shadow1DArray || c.kind == TextureCommand::Kind::Shadow2DArray;
+    const glm::vec4 colors[4] = {kRed, kGreen, kBlue, kWhite};
+    TextureImage img{c.width, one_d ? c.layers : h, one_d ? 1 : c.layers, {}};
+    const TextureImage ramp = depth_ramp_image(c.width, h);
+    for (int layer = 0; layer < c.layers; ++layer) {
+        if (depth)
+            img.texels.insert(img.texels.end(), ramp.texels.begin(), ramp.texels.end());
+        else
+            img.texels.insert(img.texels.end(), size_t(c.width) * size_t(h), colors[layer % 4]);
+    }
+    auto t = Texture::create(target, {std::move(img)}, depth ? TextureFormat::Depth : TextureFormat::RGBA8);
+    if (!depth) return finish(std::move(t), nearest_clamped);
+    return finish(std::move(t), [](SamplerState& s) {
+        nearest_clamped(s);
+        s.compare = true;
+        s.compare_func = CompareFunc::Greater;
     });
 }
 
@@ -187,6 +218,8 @@ TextureTarget to_target(TexParameter::Target t) {
         case TexParameter::Target::Tex3D: return TextureTarget::Tex3D;
         case TexParameter::Target::Cube: return TextureTarget::Cube;
         case TexParameter::Target::Rect: return TextureTarget::Rect;
+        case TexParameter::Target::Tex1DArray: return TextureTarget::Tex1DArray;
+        case TexParameter::Target::Tex2DArray: return TextureTarget::Tex2DArray;
     }
     return TextureTarget::Tex2D;
 }
@@ -248,6 +281,10 @@ Result<Texture> make_texture(const TextureCommand& cmd) {
         case K::Shadow1D: return make_shadow(cmd, TextureTarget::Tex1D);
         case K::Shadow2D: return make_shadow(cmd, TextureTarget::Tex2D);
         case K::ShadowRect: return make_shadow(cmd, TextureTarget::Rect);
+        case K::Rgbw1DArray:
+        case K::Shadow1DArray: return make_array(cmd, TextureTarget::Tex1DArray);
+        case K::Rgbw2DArray:
+        case K::Shadow2DArray: return make_array(cmd, TextureTarget::Tex2DArray);
     }
     return Error("unknown texture command");
 }

@@ -261,8 +261,8 @@ std::string join_builtin_attributes(const Program& prog) {
 // samples as (0, 0, 0, 1), which is worth seeing next to a black image.
 std::string describe_textures(const scene::Scene& scene) {
     // By TextureTarget: a target added there without a name here does not compile.
-    static constexpr std::array<const char*, size_t(TextureTarget::Rect) + 1> kTargets = {"1D", "2D", "3D", "cube",
-                                                                                          "rectangle"};
+    static constexpr std::array<const char*, size_t(TextureTarget::Tex2DArray) + 1> kTargets = {
+        "1D", "2D", "3D", "cube", "rectangle", "1D array", "2D array"};
     static_assert(kTargets.back() != nullptr);
     static constexpr const char* kFormats[] = {"RGBA8", "RGBA32F", "depth"};
     std::string out;
