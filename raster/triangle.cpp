@@ -228,15 +228,17 @@ namespace {
 struct BlockOffsets {
     __m512i at[3][4];
 };
-GLSLRUN_AVX512 inline BlockOffsets block_offsets(const std::array<int64_t, 3>& dx,
-                                                                         const std::array<int64_t, 3>& dy) {
+GLSLRUN_AVX512 inline BlockOffsets block_offsets(const std::array<int64_t, 3>& dx, const std::array<int64_t, 3>& dy) {
+    // Column j % 8 and row j / 8 of lane j; steps_fit_32() keeps each product and sum in 32 bits.
+    const __m512i column = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
+    const __m512i row = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
     BlockOffsets o;
-    alignas(64) int32_t lanes[16];
-    for (size_t i = 0; i < 3; ++i)
-        for (int k = 0; k < 4; ++k) {
-            for (int j = 0; j < 16; ++j) lanes[j] = int32_t((j % 8) * dx[i] + (2 * k + j / 8) * dy[i]);
-            o.at[i][k] = _mm512_load_si512(lanes);
-        }
+    for (size_t i = 0; i < 3; ++i) {
+        const __m512i step = _mm512_set1_epi32(int32_t(2 * dy[i]));
+        o.at[i][0] = _mm512_add_epi32(_mm512_mullo_epi32(column, _mm512_set1_epi32(int32_t(dx[i]))),
+                                      _mm512_mullo_epi32(row, _mm512_set1_epi32(int32_t(dy[i]))));
+        for (int k = 1; k < 4; ++k) o.at[i][k] = _mm512_add_epi32(o.at[i][k - 1], step);
+    }
     return o;
 }
 GLSLRUN_AVX512 inline uint64_t square_covered_512(const std::array<int64_t, 3>& first,
@@ -244,6 +246,7 @@ GLSLRUN_AVX512 inline uint64_t square_covered_512(const std::array<int64_t, 3>& 
     const __m512i a = _mm512_set1_epi32(int32_t(first[0])), b = _mm512_set1_epi32(int32_t(first[1])),
                   c = _mm512_set1_epi32(int32_t(first[2]));
     uint64_t mask = 0;
+#pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
         const __m512i any = _mm512_or_si512(_mm512_or_si512(_mm512_add_epi32(a, o.at[0][k]), _mm512_add_epi32(b, o.at[1][k])),
                                             _mm512_add_epi32(c, o.at[2][k]));
@@ -266,7 +269,7 @@ template <bool kWide>
     }
     const bool fits_32 = steps_fit_32(dx, dy);
 #if defined(__x86_64__) && defined(__GNUC__)
-    [[maybe_unused]] std::conditional_t<kWide, BlockOffsets, char> offsets{};
+    [[maybe_unused]] std::conditional_t<kWide, BlockOffsets, char> offsets;  // read only where fits_32
     if constexpr (kWide)
         if (fits_32) offsets = block_offsets(dx, dy);
 #endif
