@@ -127,7 +127,10 @@ struct CoveredBlock {
 // without a branch on the coverage: the triangles of the lecture's scenes span a few blocks each,
 // and branches that skipped the blocks outside an edge or inside all three
 // mispredicted at every other block (perf; 6% of the 1080p spot frame).
+// Blocks are tested with AVX-512 where rt::cpu_has_avx512(); the overload
+// picks (the same blocks either way: tests/raster/coverage.cpp).
 size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out);
+size_t covered_blocks(const TriangleEdges& t, const Rect& r, CoveredBlock* out, bool avx512);
 
 // How many aligned blocks r touches.
 inline size_t blocks_spanned(const Rect& r) {

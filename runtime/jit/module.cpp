@@ -31,6 +31,7 @@
 #include <llvm/ExecutionEngine/Orc/CompileUtils.h>
 
 #include "runtime/aligned_words.h"
+#include "runtime/cpu_features.h"
 #include "runtime/jit/cached_shader.h"
 #include "runtime/jit/codegen.h"
 #include "runtime/jit/engine.h"
@@ -58,15 +59,7 @@ llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick) {
     return builder;
 }
 
-bool avx512() {
-    static const bool on = [] {
-        const char* off = std::getenv("GLSLRUN_NO_AVX512");
-        if (off && off[0] == '1') return false;
-        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-               __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
-    }();
-    return on;
-}
+bool avx512() { return cpu_has_avx512(); }
 
 double thread_cpu_seconds() {
     timespec t{};

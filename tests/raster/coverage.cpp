@@ -7,6 +7,7 @@
 
 #include "raster/fragments.h"
 #include "raster/triangle.h"
+#include "runtime/cpu_features.h"
 
 using namespace glslrun::raster;
 
@@ -171,6 +172,34 @@ TEST_CASE("8x8 blocks inside or outside a triangle cover what the per-pixel test
             }
         INFO("triangle " << n);
         CHECK(wrong == 0);
+    }
+}
+
+TEST_CASE("covered_blocks finds the same blocks with AVX-512 as without", "[raster][coverage]") {
+    if (!glslrun::rt::cpu_has_avx512()) return;
+    std::mt19937 rng(29);
+    const float reach = GENERATE(40.0f, 140.0f, 3.0e5f);
+    std::uniform_real_distribution<float> near(-20.0f, 140.0f), far(-reach, reach);
+    std::uniform_int_distribution<int> edge(0, 60);
+    for (int n = 0; n < 2000; ++n) {
+        auto t = setup_triangle({glm::vec2(near(rng), near(rng)), glm::vec2(far(rng), far(rng)),
+                                 glm::vec2(far(rng), far(rng))},
+                                Rect{0, 0, 128, 128});
+        if (!t) continue;
+        // Rectangles with odd and even edges, as a tile's clip cuts the bounds.
+        const Rect clip{edge(rng), edge(rng), 128 - edge(rng), 128 - edge(rng)};
+        Rect r{std::max(t->bbox.x0, clip.x0), std::max(t->bbox.y0, clip.y0), std::min(t->bbox.x1, clip.x1),
+               std::min(t->bbox.y1, clip.y1)};
+        if (r.x0 >= r.x1 || r.y0 >= r.y1) continue;
+        std::vector<CoveredBlock> wide(blocks_spanned(r)), narrow(blocks_spanned(r));
+        const size_t w = covered_blocks(*t, r, wide.data(), true), m = covered_blocks(*t, r, narrow.data(), false);
+        INFO("triangle " << n);
+        REQUIRE(w == m);
+        for (size_t i = 0; i < w; ++i) {
+            CHECK(wide[i].x == narrow[i].x);
+            CHECK(wide[i].y == narrow[i].y);
+            CHECK(wide[i].pixels == narrow[i].pixels);
+        }
     }
 }
 
