@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/mipmap_gpu.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
@@ -118,10 +119,20 @@ Status apply_uniforms(Program& program, const std::vector<UniformSetting>& setti
     return Ok{};
 }
 
-Result<GLState> bind_scene_textures(const Scene& scene) {
+// The texture a setting binds under `rounding`: with the GPU's rounding a
+// GL_GENERATE_MIPMAP texture's levels are generated again as NVIDIA's driver
+// makes them (rt::generate_gpu_mipmaps), into a copy.
+std::shared_ptr<const Texture> texture_for(const TextureSetting& t, ColorRounding rounding) {
+    if (rounding != ColorRounding::Gpu || !t.generate_mipmap || !t.texture) return t.texture;
+    auto copy = std::make_shared<Texture>(*t.texture);
+    if (!rt::generate_gpu_mipmaps(*copy)) return t.texture;
+    return copy;
+}
+
+Result<GLState> bind_scene_textures(const Scene& scene, ColorRounding rounding) {
     GLState bound = scene.gl;
     for (const TextureSetting& t : scene.textures)
-        if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st.error();
+        if (Status st = bound.bind_texture(t.unit, texture_for(t, rounding)); !st) return st.error();
     return bound;
 }
 
@@ -219,7 +230,7 @@ Result<DrawStats> draw_pass(Program& program, const Scene& scene, GLState& bound
     auto draw_object = [&](const Object& object) -> Status {
         // glBindTexture: context state, so it stays for the objects after this one.
         for (const TextureSetting& t : object.textures)
-            if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st;
+            if (Status st = bound.bind_texture(t.unit, texture_for(t, fb.rounding)); !st) return st;
         GLState gl = object_gl_state(scene, bound, object, pass);
         if (Status st = apply_uniforms(program, object.uniforms, lenient); !st) return st;
         const Mesh& m = object.mesh;
@@ -358,7 +369,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
-    auto bound = bind_scene_textures(scene);
+    auto bound = bind_scene_textures(scene, fb.rounding);
     if (!bound) return bound.error();
     if (scene.passes.empty()) return draw_pass(programs.of_pass(0), scene, *bound, nullptr, fb, pending);
     auto targets = make_targets(scene, fb.rounding);
