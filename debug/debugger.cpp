@@ -118,7 +118,7 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
                        int lane, size_t& steps_left, Fill&& fill) {
     ShaderNames names(shader, state_of(debug).ir);
     LaneRecorder recorder(names, draw.uniforms.data(), lane, std::min(InvocationTrace::kMaxSteps, steps_left),
-                          draw.gl.texture_units.data());
+                          draw.gl.texture_units.data(), debug.exec.precision);
     rt::TracedInterpreter in(shader, draw.uniforms.data(), rt::RunLimits(debug.exec), draw.gl.texture_units.data(),
                              debug.exec.precision, ~0u, recorder);
     fill(in);

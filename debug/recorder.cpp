@@ -86,8 +86,11 @@ void NanWatch::instr(const ir::Node& n, rt::LaneMask active, const rt::LaneReade
 }
 
 LaneRecorder::LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane, size_t max_steps,
-                           const GLState::TextureUnit* textures)
-    : names_(names), uniforms_(uniforms), lane_(lane), max_steps_(max_steps), textures_(textures) {}
+                           const GLState::TextureUnit* textures, Precision precision)
+    : names_(names), uniforms_(uniforms), lane_(lane), max_steps_(max_steps), textures_(textures),
+      rules_(precision == Precision::Reference ? rt::SamplingRules::Spec
+             : precision == Precision::Fast    ? rt::SamplingRules::Gpu
+                                               : rt::SamplingRules::Common) {}
 
 // A `tex` instruction of the lane, after it ran: its operands (the block
 // ir::TexInfo lays out), the sampler's steps again with an observer, and
@@ -107,6 +110,7 @@ void LaneRecorder::lookup(const ir::Node& n, const rt::LaneReader& regs) {
         return glm::vec3(operand(first), dims > 1 ? operand(first + 1) : 0.0f, dims > 2 ? operand(first + 2) : 0.0f);
     };
     rt::LaneLookup lk;  // as the `tex` kernel decodes it (runtime/tex_kernel.cpp)
+    lk.rules = rules_;
     lk.coord = vec(0, t.info.dims());
     for (uint32_t c = 0; c < t.info.dims(); ++c) t.coord.push_back(lk.coord[int(c)]);
     if (t.info.shadow) t.ref = lk.ref = operand(t.info.ref_at());
@@ -114,8 +118,15 @@ void LaneRecorder::lookup(const ir::Node& n, const rt::LaneReader& regs) {
     lk.bias = t.info.lod == ir::TexLod::ImplicitBias;
     if (t.info.lod != ir::TexLod::Implicit) t.lod = lk.lod = operand(t.info.lod_at());
     if (lk.implicit) {
-        lk.ddx = vec(t.info.ddx_at(), t.info.grad_dims());
-        lk.ddy = vec(t.info.ddy_at(), t.info.grad_dims());
+        // The GPU's rules take the quad's first lane's derivatives (tex_kernel.cpp).
+        const int from = rules_ == rt::SamplingRules::Gpu ? lane_ & ~3 : lane_;
+        auto derivative = [&](uint32_t first) {
+            const uint32_t dims = t.info.grad_dims();
+            auto at = [&](uint32_t k) { return float(regs.read(ir::Reg(in.imm[0] + first + k), from).f); };
+            return glm::vec3(at(0), dims > 1 ? at(1) : 0.0f, dims > 2 ? at(2) : 0.0f);
+        };
+        lk.ddx = derivative(t.info.ddx_at());
+        lk.ddy = derivative(t.info.ddy_at());
     }
     const Texture* texture = textures_ && t.unit >= 0 && t.unit < kMaxTextureUnits
                                  ? textures_[t.unit].bound[size_t(t.info.target)].get()

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "debug/trace.h"
+#include "runtime/sampling.h"
 #include "runtime/traced_interpreter.h"
 
 namespace glslrun::debug {
@@ -43,9 +44,11 @@ class LaneRecorder final : public rt::TraceHook {
 public:
     // `uniforms`: the store the run reads (for the values of the uniforms read);
     // at most `max_steps` steps are kept.
-    // `textures`: the units the run samples (the lookups' details).
+    // `textures`: the units the run samples (the lookups' details), by the
+    // precision mode's rules (rt::SamplingRules, as the `tex` kernel picks them).
     LaneRecorder(const ShaderNames& names, const uint32_t* uniforms, int lane,
-                 size_t max_steps = InvocationTrace::kMaxSteps, const GLState::TextureUnit* textures = nullptr);
+                 size_t max_steps = InvocationTrace::kMaxSteps, const GLState::TextureUnit* textures = nullptr,
+                 Precision precision = Precision::Precise);
     void instr(const ir::Node& n, rt::LaneMask active, const rt::LaneReader& regs) override;
     void branch(const ir::Node& n, rt::LaneMask active, rt::LaneMask taken) override;
     void loop_iteration(const ir::Node& n, uint64_t iteration, rt::LaneMask active) override;
@@ -71,6 +74,7 @@ private:
     int lane_;
     size_t max_steps_;
     const GLState::TextureUnit* textures_;
+    rt::SamplingRules rules_;
     size_t extra_ = 0;
     int depth_ = 0;
     ir::SourceLoc last_{};

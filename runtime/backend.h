@@ -40,7 +40,8 @@ enum FastOps : uint32_t {
     kFastExpLog = 1u << 1,  // fexp, fexp2, flog, flog2
     kFastPow = 1u << 2,     // fpow
     kFastSinCos = 1u << 3,  // fsin, fcos
-    kAllFastOps = (1u << 4) - 1,
+    kFastTexture = 1u << 4,  // tex: the GPU's filter weights and level of detail (runtime/sampling_rules.h)
+    kAllFastOps = (1u << 5) - 1,
 };
 
 // Who runs a shader's code: the interpreter, or the JIT's native code. The

@@ -1,5 +1,6 @@
 // Precision::Fast's kernels: the ops that GPUs approximate (inversesqrt,
 // exp/exp2/log/log2, pow, sin, cos) call glslrun::math::fast (ir/fast_math.h),
+// texture lookups filter with the GPU's arithmetic (kernels::tex_gpu),
 // and a square root read only as a divisor (normalize, x / sqrt(y):
 // ir/sqrt_divisor.cpp) becomes the fast rsqrt and multiplies; every other op
 // keeps its Precise kernel.
@@ -93,6 +94,8 @@ static_assert(kFastRsqrt == 1u << (uint32_t(ir::FastClass::Rsqrt) - 1) &&
 // The fp32 modes' kernel of `op`: Fast's where it has one and its class is in
 // `fast_ops`, else Precise's.
 inline Kernel<uint32_t> kernel_for(ir::Op op, bool avx2, Precision precision, uint32_t fast_ops = kAllFastOps) {
+    if (op == ir::Op::tex && precision == Precision::Fast && (fast_ops & kFastTexture))
+        return avx2 ? pick_kernel<uint32_t, true, &kernels::tex_gpu>() : &kernels::tex_gpu;
     if (precision != Precision::Fast || !(fast_op_class(op) & fast_ops)) return kernel_for(op, avx2);
     return avx2 ? fast::kernel_for<true>(op) : fast::kernel_for<false>(op);
 }

@@ -300,6 +300,9 @@ template <class W>
 void tex(const Step<W>& s, Machine<W>& m);
 extern template void tex<uint32_t>(const Step<uint32_t>&, Machine<uint32_t>&);
 extern template void tex<uint64_t>(const Step<uint64_t>&, Machine<uint64_t>&);
+// Precision::Fast's `tex`: the same lookups with the GPU's filter arithmetic
+// (runtime/sampling_rules.h, "The GPU's filtering").
+void tex_gpu(const Step<uint32_t>& s, Machine<uint32_t>& m);
 
 }  // namespace kernels
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "runtime/sampling_gpu.h"
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt {
@@ -15,27 +16,54 @@ float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::ve
     return lod_of(texture, coord, ddx, ddy);
 }
 
-glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod) {
+bool lanes_only(const Texture& texture, SamplingRules rules) {
+    return (rules == SamplingRules::Gpu && gpu::filtered(texture)) ||
+           (rules == SamplingRules::Spec && spec_switch_over(texture.sampler));
+}
+
+namespace {
+
+// Whether this lookup follows the GPU's arithmetic (sampling_gpu.h).
+bool gpu_lookup(const Texture& texture, const LaneLookup& lookup) {
+    return lookup.rules == SamplingRules::Gpu && gpu::filtered(texture);
+}
+
+// lambda_base from the lookup's derivatives, by the lookup's rules.
+float implicit_lambda(const Texture& texture, const LaneLookup& lookup) {
+    if (gpu_lookup(texture, lookup)) return gpu::lambda_of_rho(rho_of(texture, lookup.coord, lookup.ddx, lookup.ddy, true));
+    return lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy);
+}
+
+template <class Obs>
+glm::vec4 sample_by_rules(const Texture& texture, const LaneLookup& lookup, float lod, Obs&& obs) {
+    if (gpu_lookup(texture, lookup)) return gpu::sample_complete(texture, lookup.coord, lookup.ref, lod, obs);
+    return sample_complete(texture, lookup.coord, lookup.ref, lod, obs, lookup.rules);
+}
+
+}  // namespace
+
+glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod, SamplingRules rules) {
     if (!texture.complete()) return {0.0f, 0.0f, 0.0f, 1.0f};
+    LaneLookup lookup;
+    lookup.coord = coord;
+    lookup.ref = ref;
+    lookup.lod = lod;
+    lookup.implicit = false;
+    lookup.rules = rules;
     if (texture.target() == TextureTarget::Rect) {
-        LaneLookup lookup;
-        lookup.coord = coord;
-        lookup.ref = ref;
-        lookup.lod = lod;
-        lookup.implicit = false;
         glm::vec4 v;
         sample_rect_lane(texture, lookup, &v.x);
         return v;
     }
-    return sample_complete(texture, coord, ref, lod);
+    return sample_by_rules(texture, lookup, lod, NoObserver{});
 }
 
 void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, float* rgba) {
     float lod = lookup.lod;
     const bool lod_matters = sampling::lod_matters(texture.sampler);
-    if (lookup.implicit && lod_matters) lod = lookup.bias ? lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy) + lookup.lod
-                                           : lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy);
-    const glm::vec4 v = sample_complete(texture, lookup.coord, lookup.ref, lod);
+    if (lookup.implicit && lod_matters)
+        lod = lookup.bias ? implicit_lambda(texture, lookup) + lookup.lod : implicit_lambda(texture, lookup);
+    const glm::vec4 v = sample_by_rules(texture, lookup, lod, NoObserver{});
     for (int c = 0; c < 4; ++c) rgba[c] = canonical_nan(v[c]);
 }
 
@@ -70,12 +98,11 @@ LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup) {
         d.face_coord = cube_coord(kCubeFaces[d.face], lookup.coord);
     }
     // As sample_complete_lane(): the implicit LOD only where it matters.
-    d.lod_implicit = lookup.implicit ? lod_of(*texture, lookup.coord, lookup.ddx, lookup.ddy)
-                                     : std::numeric_limits<float>::quiet_NaN();
+    d.lod_implicit = lookup.implicit ? implicit_lambda(*texture, lookup) : std::numeric_limits<float>::quiet_NaN();
     d.lod_used = !lookup.implicit || sampling::lod_matters(texture->sampler);
     float lod = lookup.lod;
     if (lookup.implicit && d.lod_used) lod = lookup.bias ? d.lod_implicit + lookup.lod : d.lod_implicit;
-    const glm::vec4 v = sample_complete(*texture, lookup.coord, lookup.ref, lod, Recorder{d});
+    const glm::vec4 v = sample_by_rules(*texture, lookup, lod, Recorder{d});
     // The filters fetch in the order the compiler evaluates their operands
     // (GCC and clang differ): each level's texels are listed sorted instead.
     std::stable_sort(d.texels.begin(), d.texels.end(), [&](const LookupTexel& a, const LookupTexel& b) {

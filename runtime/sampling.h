@@ -16,6 +16,14 @@ namespace glslrun::rt {
 
 using TextureUnits = std::array<GLState::TextureUnit, kMaxTextureUnits>;
 
+// Where GL 2.1 leaves a lookup's arithmetic to the implementation, which
+// answer it takes (docs/semantics.md, "Texture filtering and level of detail").
+enum class SamplingRules : uint8_t {
+    Spec,    // Precision::Reference: §3.8.8's formulas exactly, c = 1/2 for the min/mag switch-over
+    Common,  // Precision::Precise: exact arithmetic, and c = 0 as llvmpipe and NVIDIA's driver switch
+    Gpu,     // Precision::Fast: NVIDIA's filter weights, level of detail and 16-bit filter results
+};
+
 // The implicit level of detail, log2(rho) of §3.8.8 (before any bias or
 // clamp), from the derivatives of the (already projected) coordinates over
 // the screen. Only the components of the texture's dimensionality are read.
@@ -29,7 +37,8 @@ float implicit_lod(const Texture& texture, const glm::vec3& coord, const glm::ve
 // implicit LOD plus the shader's bias, or the explicit Lod argument. The
 // texture object's own lod_bias, min/max_lod and base/max_level apply here.
 // An incomplete texture gives (0, 0, 0, 1).
-glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod);
+glm::vec4 sample_texture(const Texture& texture, const glm::vec3& coord, float ref, float lod,
+                         SamplingRules rules = SamplingRules::Common);
 // What a shader's lookup gives one lane: the coordinate, the reference, and
 // either the LOD (explicit) or the derivatives with an optional bias.
 struct LaneLookup {
@@ -37,6 +46,7 @@ struct LaneLookup {
     float ref = 0.0f;
     float lod = 0.0f;  // the explicit LOD, or the bias
     bool implicit = true, bias = false;
+    SamplingRules rules = SamplingRules::Common;
 };
 
 // implicit_lod() (where the lookup has no explicit LOD) and sample_texture()
@@ -75,6 +85,10 @@ struct LookupDetails {
     glm::vec4 result{0.0f, 0.0f, 0.0f, 1.0f};
 };
 LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup);
+// Whether lookups of `texture` under `rules` go through sample_complete_lane()
+// rather than sample_batch(), whose lane loops follow SamplingRules::Common.
+bool lanes_only(const Texture& texture, SamplingRules rules);
+
 // sample_complete_lane() of a complete rectangle texture (TextureTarget::Rect:
 // unnormalized coordinates, one level, clamping wraps; sampling_rect.cpp).
 void sample_rect_lane(const Texture& texture, const LaneLookup& lookup, float* rgba);

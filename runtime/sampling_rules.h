@@ -27,6 +27,7 @@
 
 #include "glslrun/glslrun.h"
 #include "ir/precise_math.h"
+#include "runtime/sampling.h"
 #include "runtime/texture_levels.h"
 
 namespace glslrun::rt::sampling {
@@ -268,7 +269,11 @@ struct Lookup {
     glm::vec3 str;
     bool compare;
     float ref;
+<<<<<<< HEAD
     int layer_j = 0, layer_k = 0;
+=======
+    SamplingRules rules = SamplingRules::Common;
+>>>>>>> gpufast
 };
 
 // EXT_texture_array: the layer of coordinate r is clamp(floor(r + 1/2), 0,
@@ -277,9 +282,10 @@ inline int array_layer(float r, int layers) { return std::clamp(floor_int(r + 0.
 
 inline float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
 
-[[gnu::always_inline]] inline Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref) {
+[[gnu::always_inline]] inline Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref,
+                                                 SamplingRules rules = SamplingRules::Common) {
     const SamplerState& st = texture.sampler;
-    Lookup lk{&texture, &st, 0, texture_dims(texture.target()), coord, false, 0.0f};
+    Lookup lk{&texture, &st, 0, texture_dims(texture.target()), coord, false, 0.0f, rules};
     if (texture.target() == TextureTarget::Cube) {
         lk.face = cube_face(coord);
         lk.str = cube_coord(kCubeFaces[lk.face], coord);
@@ -415,11 +421,17 @@ inline int nearest_mip_level(float lambda, int base, int q) {
     return lambda <= 0.5f ? base : (float(base) + lambda > float(q) + 0.5f ? q : d);
 }
 
-// §3.8.9: c, the switch-over between magnification and minification.
-inline float mag_threshold(const SamplerState& st) {
+// §3.8.9: c, the switch-over between magnification and minification. The
+// specification's c = 1/2 for LINEAR magnification with a NEAREST_MIPMAP_*
+// minification filter is taken by Reference alone: llvmpipe and NVIDIA's
+// driver both switch at 0 (docs/semantics.md, measured by tools/gpu_probes).
+inline bool spec_switch_over(const SamplerState& st) {
     const bool nearest_mipmap = st.min_filter == TextureFilter::NearestMipmapNearest ||
                                 st.min_filter == TextureFilter::NearestMipmapLinear;
-    return st.mag_filter == TextureFilter::Linear && nearest_mipmap ? 0.5f : 0.0f;
+    return st.mag_filter == TextureFilter::Linear && nearest_mipmap;
+}
+inline float mag_threshold(const SamplerState& st, SamplingRules rules = SamplingRules::Common) {
+    return rules == SamplingRules::Spec && spec_switch_over(st) ? 0.5f : 0.0f;
 }
 
 template <class Obs = NoObserver>
@@ -427,7 +439,7 @@ template <class Obs = NoObserver>
     const SamplerState& st = *lk.st;
     const int base = st.base_level;
     // §3.8.9: lambda <= c magnifies: the mag filter on level_base.
-    const bool magnified = lambda <= mag_threshold(st);
+    const bool magnified = lambda <= mag_threshold(st, lk.rules);
     obs.filter(lambda, magnified);
     if (magnified) return sample_level(lk, base, linear_within_level(st.mag_filter), obs);
     const bool linear = linear_within_level(st.min_filter);
@@ -478,20 +490,37 @@ inline float face_derivative(float sc, float dsc, float ama, float dama) {
 // derivatives of (s, t, r) over the screen (on the face, for a cube map) and
 // the sizes of level_base. The one place the rule is written: the per-lane
 // and the batched samplers both call it, lane by lane.
-[[gnu::always_inline]] inline float lod_rule(const glm::vec3& dx, const glm::vec3& dy, const glm::vec3& size,
+// rho = max of the lengths of (du/dx, dv/dx, dw/dx) and (du/dy, dv/dy, dw/dy).
+[[gnu::always_inline]] inline float rho_rule(const glm::vec3& dx, const glm::vec3& dy, const glm::vec3& size,
                                              int dims) {
-    // rho = max of the lengths of (du/dx, dv/dx, dw/dx) and (du/dy, dv/dy, dw/dy).
-    const float rho = std::max(scaled_length(dx, size, dims), scaled_length(dy, size, dims));
+    return std::max(scaled_length(dx, size, dims), scaled_length(dy, size, dims));
+}
+
+// The GPU's length of (du, dv) (sampling_gpu.h): max + 11/32 min of the two magnitudes.
+inline float gpu_length(const glm::vec3& d, const glm::vec3& size, int dims) {
+    const float u = std::fabs(d.x * size.x), v = dims > 1 ? std::fabs(d.y * size.y) : 0.0f;
+    return std::max(u, v) + 0.34375f * std::min(u, v);
+}
+
+// lambda_base = log2(rho).
+inline float lod_from_rho(float rho) {
     if (!(rho > 0.0f)) return -kLodLimit;  // no change across the pixel (or NaN): magnification
     return std::min(math::log2(rho), kLodLimit);
+}
+
+[[gnu::always_inline]] inline float lod_rule(const glm::vec3& dx, const glm::vec3& dy, const glm::vec3& size,
+                                             int dims) {
+    return lod_from_rho(rho_rule(dx, dy, size, dims));
 }
 
 inline glm::vec3 image_size(const TextureImage& image) {
     return {float(image.width), float(image.height), float(image.depth)};
 }
 
-[[gnu::always_inline]] inline float lod_of(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx,
-                                           const glm::vec3& ddy) {
+// rho of §3.8.8 for a lookup's derivatives; 0 where the texture is incomplete.
+// `gpu`: the GPU's lengths (gpu_length) for 1D and 2D images.
+[[gnu::always_inline]] inline float rho_of(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx,
+                                           const glm::vec3& ddy, bool gpu = false) {
     const TextureImage* base = level_image(texture, 0, texture.sampler.base_level);
     if (!base) return 0.0f;  // incomplete: the lookup gives (0, 0, 0, 1) whatever the LOD
     glm::vec3 dx = ddx, dy = ddy;
@@ -500,7 +529,16 @@ inline glm::vec3 image_size(const TextureImage& image) {
         dx = cube_derivative(face, coord, ddx);
         dy = cube_derivative(face, coord, ddy);
     }
-    return lod_rule(dx, dy, image_size(*base), texture_dims(texture.target()));
+    const int dims = texture_dims(texture.target());
+    if (gpu && dims <= 2)
+        return std::max(gpu_length(dx, image_size(*base), dims), gpu_length(dy, image_size(*base), dims));
+    return rho_rule(dx, dy, image_size(*base), dims);
+}
+
+[[gnu::always_inline]] inline float lod_of(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx,
+                                           const glm::vec3& ddy) {
+    if (!level_image(texture, 0, texture.sampler.base_level)) return 0.0f;  // incomplete: any LOD gives (0, 0, 0, 1)
+    return lod_from_rho(rho_of(texture, coord, ddx, ddy));
 }
 
 // Without mipmaps and with one filter within a level for both, both sides
@@ -513,9 +551,10 @@ inline bool lod_matters(const SamplerState& st) {
 
 template <class Obs = NoObserver>
 [[gnu::always_inline]] inline glm::vec4 sample_complete(const Texture& texture, const glm::vec3& coord, float ref,
-                                                         float lod, Obs&& obs = Obs{}) {
+                                                         float lod, Obs&& obs = Obs{},
+                                                         SamplingRules rules = SamplingRules::Common) {
     const SamplerState& st = texture.sampler;
-    const Lookup lk = make_lookup(texture, coord, ref);
+    const Lookup lk = make_lookup(texture, coord, ref, rules);
     const glm::vec4 v = vec_of(filter(lk, clamp_lambda(lod + st.lod_bias, st), obs));
     return texture.depth() ? expand_depth(st.depth_mode, v.r) : v;
 }

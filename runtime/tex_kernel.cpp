@@ -40,17 +40,21 @@ struct Operands {
 };
 
 template <class W>
-LaneLookup lane_lookup(const ir::TexInfo& info, const Operands<W>& ops, int lane) {
+LaneLookup lane_lookup(const ir::TexInfo& info, const Operands<W>& ops, int lane, SamplingRules rules) {
     const uint32_t dims = info.dims();
     LaneLookup lk;
+    lk.rules = rules;
     lk.coord = ops.vec(0, dims, lane);
     if (info.shadow) lk.ref = ops.at(info.ref_at(), lane);
     lk.implicit = info.lod != ir::TexLod::Explicit;
     lk.bias = info.lod == ir::TexLod::ImplicitBias;
     if (info.lod != ir::TexLod::Implicit) lk.lod = ops.at(info.lod_at(), lane);
     if (lk.implicit) {
-        lk.ddx = ops.vec(info.ddx_at(), info.grad_dims(), lane);
-        lk.ddy = ops.vec(info.ddy_at(), info.grad_dims(), lane);
+        // The GPU's one lambda per quad (sampling_gpu.h): lanes 4q..4q+3 are a
+        // 2x2 quad, and lane 4q holds its lower row's d/dx and left column's d/dy.
+        const int from = rules == SamplingRules::Gpu ? lane & ~3 : lane;
+        lk.ddx = ops.vec(info.ddx_at(), info.grad_dims(), from);
+        lk.ddy = ops.vec(info.ddy_at(), info.grad_dims(), from);
     }
     return lk;
 }
@@ -127,10 +131,9 @@ bool use_avx2() {
     return avx2;
 }
 
-}  // namespace
-
+// `rules`: the precision mode's (SamplingRules).
 template <class W>
-void tex(const Step<W>& s, Machine<W>& m) {
+void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
     using F = FloatOf<W>;
     const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
     const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
@@ -153,14 +156,17 @@ void tex(const Step<W>& s, Machine<W>& m) {
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
         sampled |= lanes;
-        if (batch_samples(*texture)) {
+        if (!lanes_only(*texture, rules) && batch_samples(*texture)) {
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;
         }
         for (int i = 0; i < kLanes; ++i) {
             if (!((lanes >> i) & 1)) continue;
             float texel[ir::kTexResults];
-            sample_complete_lane(*texture, lane_lookup(info, ops, i), texel);
+            if (texture->target() == TextureTarget::Rect)  // unnormalized coordinates: sampling_rect.cpp
+                sample_rect_lane(*texture, lane_lookup(info, ops, i, rules), texel);
+            else
+                sample_complete_lane(*texture, lane_lookup(info, ops, i, rules), texel);
             for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = texel[c];
         }
     }
@@ -176,6 +182,16 @@ void tex(const Step<W>& s, Machine<W>& m) {
         m.write(s.dst + size_t(c) * kLanes, words);
     }
 }
+
+}  // namespace
+
+template <class W>
+void tex(const Step<W>& s, Machine<W>& m) {
+    // Reference mode (doubles) takes the specification's rules, Precise the common ones.
+    sample_lanes(s, m, std::is_same_v<W, uint64_t> ? SamplingRules::Spec : SamplingRules::Common);
+}
+
+void tex_gpu(const Step<uint32_t>& s, Machine<uint32_t>& m) { sample_lanes(s, m, SamplingRules::Gpu); }
 
 template void tex<uint32_t>(const Step<uint32_t>&, Machine<uint32_t>&);
 template void tex<uint64_t>(const Step<uint64_t>&, Machine<uint64_t>&);

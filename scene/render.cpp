@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "runtime/program_state.h"
+#include "runtime/mipmap_gpu.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
@@ -121,6 +122,16 @@ Status apply_settings(Program& program, const std::vector<UniformInfo>& infos,
     return Ok{};
 }
 
+// The texture a setting binds under `rounding`: with the GPU's rounding a
+// GL_GENERATE_MIPMAP texture's levels are generated again as NVIDIA's driver
+// makes them (rt::generate_gpu_mipmaps), into a copy.
+std::shared_ptr<const Texture> texture_for(const TextureSetting& t, ColorRounding rounding) {
+    if (rounding != ColorRounding::Gpu || !t.generate_mipmap || !t.texture) return t.texture;
+    auto copy = std::make_shared<Texture>(*t.texture);
+    if (!rt::generate_gpu_mipmaps(*copy)) return t.texture;
+    return copy;
+}
+
 }  // namespace
 
 Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings, bool skip_undeclared) {
@@ -128,10 +139,10 @@ Status apply_uniforms(Program& program, const std::vector<UniformSetting>& setti
     return apply_settings(program, program.uniforms(), settings, skip_undeclared);
 }
 
-Result<GLState> bind_scene_textures(const Scene& scene) {
+Result<GLState> bind_scene_textures(const Scene& scene, ColorRounding rounding) {
     GLState bound = scene.gl;
     for (const TextureSetting& t : scene.textures)
-        if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st.error();
+        if (Status st = bound.bind_texture(t.unit, texture_for(t, rounding)); !st) return st.error();
     return bound;
 }
 
@@ -261,7 +272,7 @@ Result<DrawStats> draw_pass(const ScenePrograms& programs, size_t index, const S
     auto draw_object = [&](const Object& object) -> Status {
         // glBindTexture: context state, so it stays for the objects after this one.
         for (const TextureSetting& t : object.textures)
-            if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st;
+            if (Status st = bound.bind_texture(t.unit, texture_for(t, fb.rounding)); !st) return st;
         GLState gl = object_gl_state(scene, bound, object, pass);
         if (!object.uniforms.empty()) {
             if (!infos) infos = program.uniforms();
@@ -405,7 +416,7 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
-    auto bound = bind_scene_textures(scene);
+    auto bound = bind_scene_textures(scene, fb.rounding);
     if (!bound) return bound.error();
     if (scene.passes.empty()) return draw_pass(programs, 0, scene, *bound, nullptr, fb, pending);
     auto targets = make_targets(scene, fb.rounding);

@@ -293,10 +293,11 @@ glm::vec4 between(int d1, float f, bool linear) {
 }
 
 struct LodCase { float lod; glm::vec4 want; };
-void check_lods(const Texture& t, const std::vector<LodCase>& cases) {
+void check_lods(const Texture& t, const std::vector<LodCase>& cases,
+                rt::SamplingRules rules = rt::SamplingRules::Common) {
     for (const LodCase& c : cases) {
         INFO("min " << int(t.sampler.min_filter) << " mag " << int(t.sampler.mag_filter) << " lod " << c.lod);
-        check_vec(sample_texture(t, {0.25f, 0.5f, 0}, 0, c.lod), c.want);
+        check_vec(sample_texture(t, {0.25f, 0.5f, 0}, 0, c.lod, rules), c.want);
     }
 }
 
@@ -331,13 +332,19 @@ TEST_CASE("each min filter picks its level(s) from lambda", "[sampling][lod]") {
     }
 }
 
-TEST_CASE("magnification below c: c = 0.5 for LINEAR mag with NEAREST_MIPMAP_*", "[sampling][lod]") {
+TEST_CASE("magnification below c: c = 0.5 for LINEAR mag with NEAREST_MIPMAP_* in Reference alone",
+          "[sampling][lod]") {
     Texture t = level_texture();
+    const auto spec = rt::SamplingRules::Spec;
     set_filters(t, TextureFilter::NearestMipmapLinear, TextureFilter::Linear);
-    check_lods(t, {{0.25f, at_level(0, true)}, {0.5f, at_level(0, true)}, {0.75f, between(0, 0.75f, false)}});
+    check_lods(t, {{0.25f, at_level(0, true)}, {0.5f, at_level(0, true)}, {0.75f, between(0, 0.75f, false)}}, spec);
+    // Precise (and Fast) switch at c = 0, as llvmpipe and NVIDIA's driver: lambda 0.25 minifies.
+    check_lods(t, {{0.0f, at_level(0, true)}, {0.25f, between(0, 0.25f, false)}, {0.5f, between(0, 0.5f, false)}});
     set_filters(t, TextureFilter::NearestMipmapNearest, TextureFilter::Linear);
-    check_lods(t, {{0.3f, at_level(0, true)}, {0.5f, at_level(0, true)}, {0.51f, at_level(1, false)}});
-    // Otherwise c = 0: lambda 0.25 is minification already.
+    check_lods(t, {{0.3f, at_level(0, true)}, {0.5f, at_level(0, true)}, {0.51f, at_level(1, false)}}, spec);
+    check_lods(t, {{0.0f, at_level(0, true)}, {0.3f, at_level(0, false)}, {0.5f, at_level(0, false)},
+                   {0.51f, at_level(1, false)}});
+    // Otherwise c = 0 in every mode: lambda 0.25 is minification already.
     set_filters(t, TextureFilter::LinearMipmapNearest, TextureFilter::Linear);
     check_lods(t, {{0.0f, at_level(0, true)}, {0.3f, at_level(0, true)}, {0.51f, at_level(1, true)}});
     set_filters(t, TextureFilter::NearestMipmapLinear, TextureFilter::Nearest);

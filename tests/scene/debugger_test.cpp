@@ -40,14 +40,15 @@ struct Traced {
 
 // Paths relative to the repository.
 Traced trace_files(const std::string& vertex, const ShaderSource& fragment, const std::string& scene_path, int x,
-                   int y) {
+                   int y, Precision precision = Precision::Precise) {
     std::vector<ShaderSource> vs{shader(vertex)};
     std::vector<ShaderSource> fs{fragment};
     auto scene = scene::load_scene(kRoot + "/" + scene_path);
     REQUIRE(scene);
     auto prog = Program::compile(vs, fs);
     REQUIRE(prog);
-    auto dbg = debug::compile_for_debugging(vs, fs, Precision::Precise);
+    prog->exec.precision = precision;
+    auto dbg = debug::compile_for_debugging(vs, fs, precision);
     REQUIRE(dbg);
     Traced t;
     t.fb = Framebuffer(scene->width, scene->height, true);  // floats: the values before quantization
@@ -406,19 +407,21 @@ TEST_CASE("the pixel history covers every pass's program, in draw order", "[debu
 
 // The trace's texture lookups come from the sampler itself (rt::explain_lookup,
 // an observer on its steps): the result it explains is the value the shader
-// got, bit for bit, with the levels and texels it took.
+// got, bit for bit, with the levels and texels it took; in Fast too (the GPU's
+// filtering and its one level of detail per quad).
 TEST_CASE("texture lookups in the trace: operands, lod, levels, texels and the sampler's result", "[debug]") {
     struct Case {
         const char *vertex, *fragment, *scene;
         int x, y;
     };
     int lookups = 0, cube = 0, shadow = 0;
+    for (Precision precision : {Precision::Precise, Precision::Fast})
     for (Case c : {Case{"shaders/textured_pix.vert", "shaders/textured_pix.frag", "scenes/textured.toml", 256, 256},
                    Case{"shaders/cube_reflect.vert", "shaders/cube_reflect.frag", "scenes/cube_map.toml", 256, 256},
                    Case{"shaders/minimal.vert", "shaders/minimal.frag", "scenes/shadow_map.toml", 128, 100},
                    Case{"shaders/minimal.vert", "shaders/minimal.frag", "scenes/blur.toml", 64, 64}}) {
-        INFO(c.scene);
-        Traced t = trace_files(c.vertex, shader(c.fragment), c.scene, c.x, c.y);
+        INFO(c.scene << ", precision " << int(precision));
+        Traced t = trace_files(c.vertex, shader(c.fragment), c.scene, c.x, c.y, precision);
         for (const debug::FragmentTrace& f : t.trace.fragments) {
             CHECK(f.matches_render);
             size_t steps = 0;

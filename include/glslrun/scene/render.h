@@ -23,8 +23,9 @@ std::string color_buffer_path(const std::string& output, int buffer);
 // with `skip_undeclared`, names the program does not declare are left out.
 Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings, bool skip_undeclared = false);
 
-// scene.gl with the scene's textures bound to their units.
-Result<GLState> bind_scene_textures(const Scene& scene);
+// scene.gl with the scene's textures bound to their units; with `rounding`
+// Gpu (Precision::Fast) generated mipmaps are the GPU's (runtime/mipmap_gpu.h).
+Result<GLState> bind_scene_textures(const Scene& scene, ColorRounding rounding = ColorRounding::Nearest);
 // The state one object is drawn with: `bound` (from bind_scene_textures)
 // with modelview = view * model, the material overrides and the current colour;
 // within `pass` (one of scene.passes) the pass's state for the object.

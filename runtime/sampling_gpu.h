@@ -1,0 +1,160 @@
+// NVIDIA's texture filtering, which Precision::Fast follows (SamplingRules::Gpu):
+// the rules tools/gpu_probes measured on an H200 with driver 580.159, each
+// matching every probe sample (docs/precision.md, "The GPU's texture
+// filtering"). Internal to sampling.cpp; the steps are sampling_rules.h's
+// (wraps, cube faces, levels), only the arithmetic differs:
+//
+// - A LINEAR weight is frac(u - 1/2) rounded to 8 bits, ties up: w in 0..256.
+// - A bilinear blend weighs the four texels with integers that sum to 256:
+//   w11 = round(wx wy / 256) (ties up), w01 = wx - w11, w10 = wy - w11,
+//   w00 = 256 - wx - wy + w11.
+// - Texels enter as 16-bit values (byte b as 257 b, 1.0 as 65535); a blend is
+//   rounded to 16 bits ((sum + 128) >> 8), and the lookup returns r / 65535.
+// - lambda = log2(rho) from a table: the exponent of rho plus T[k] / 256 for
+//   the top 8 bits k of its significand (kLog2Fraction). A mipmap blend
+//   weighs its two levels by frac(lambda) in 8 bits, rounded like a bilinear
+//   blend.
+//
+// - One lambda per 2x2 quad: the implicit LOD takes the quad's first lane's
+//   derivatives (its lower row's d/dx, its left column's d/dy) for all four
+//   lanes, as coarse derivatives (tex_kernel.cpp; lod.frag band 4).
+// - A *_MIPMAP_NEAREST level is level_base + floor(lambda + 1/2) (ties up).
+//
+// The switch-over (c = 0) and texel indices are the Common rules'. What the probes did not measure keeps those rules: 3D, float, depth
+// and rectangle textures (filtered() says which follow this file). rho
+// itself is the exact length; the GPU's differs where both s and t change
+// along one screen axis (lambda up to 0.07 lower on a 45-degree diagonal).
+#pragma once
+#include <bit>
+#include <cstdint>
+
+#include "runtime/sampling_rules.h"
+
+namespace glslrun::rt::sampling::gpu {
+
+// Whether a lookup of `texture` follows the GPU's rules.
+inline bool filtered(const Texture& texture) {
+    const TextureTarget target = texture.target();
+    return texture.format() == TextureFormat::RGBA8 && target != TextureTarget::Tex3D &&
+           target != TextureTarget::Rect;
+}
+
+// 256 * frac(lambda) for a significand 1 + k/256 of rho, as the GPU's level
+// of detail gives it (tools/gpu_probes/lod.frag, band 0: rho = 1 + q/8192).
+inline constexpr uint8_t kLog2Fraction[256] = {
+    0,   2,   4,   5,   6,   8,   9,   11,  12,  13,  15,  16,  18,  19,  20,  22,  23,  24,  26,  27,  28,  30,
+    31,  32,  34,  35,  36,  38,  39,  40,  42,  43,  44,  45,  47,  48,  49,  50,  52,  53,  54,  55,  57,  58,
+    59,  60,  62,  63,  64,  65,  66,  68,  69,  70,  71,  72,  74,  75,  76,  77,  78,  79,  81,  82,  83,  84,
+    85,  86,  88,  89,  90,  91,  92,  93,  94,  95,  97,  98,  99,  100, 101, 102, 103, 104, 105, 106, 107, 109,
+    110, 111, 112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131,
+    132, 133, 135, 136, 137, 137, 138, 139, 140, 141, 142, 143, 144, 145, 146, 147, 148, 149, 150, 151, 152, 153,
+    154, 155, 156, 157, 158, 159, 160, 161, 162, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 173,
+    174, 175, 176, 177, 178, 179, 180, 181, 181, 182, 183, 184, 185, 186, 187, 188, 188, 189, 190, 191, 192, 193,
+    194, 195, 195, 196, 197, 198, 199, 200, 200, 201, 202, 203, 204, 205, 205, 206, 207, 208, 209, 210, 210, 211,
+    212, 213, 214, 214, 215, 216, 217, 218, 218, 219, 220, 221, 222, 222, 223, 224, 225, 226, 226, 227, 228, 229,
+    229, 230, 231, 232, 233, 233, 234, 235, 236, 236, 237, 238, 239, 239, 240, 241, 242, 242, 243, 244, 245, 245,
+    246, 247, 248, 248, 249, 250, 251, 251, 252, 253, 253, 254, 255, 255,
+};
+
+// lambda_base from rho: the exponent plus the table's fraction. Below the
+// smallest normal float (and for 0 or NaN) magnification, as lod_from_rho().
+inline float lambda_of_rho(float rho) {
+    if (!(rho >= 0x1p-126f)) return -kLodLimit;
+    const uint32_t bits = std::bit_cast<uint32_t>(rho);
+    const int exponent = int(bits >> 23) - 127;  // rho is positive; Inf gives 128
+    return std::min(float(exponent) + float(kLog2Fraction[(bits >> 15) & 255u]) * (1.0f / 256.0f), kLodLimit);
+}
+
+// lambda after the biases and clamps, in the GPU's 8 fraction bits (ties up).
+inline float quantize_lambda(float lambda) { return floor_f(lambda * 256.0f + 0.5f) * (1.0f / 256.0f); }
+
+// An 8-bit weight 0..256 for a fraction a in [0, 1].
+inline int weight8(float a) { return int(a * 256.0f + 0.5f); }
+
+// Channel arithmetic on Texel; every value is a non-negative integer below
+// 2^24, so each operation is exact and truncation is floor.
+#if defined(__SSE2__)
+inline Texel scaled(Texel t, float k) { return _mm_mul_ps(t, _mm_set1_ps(k)); }
+inline Texel plus(Texel a, Texel b) { return _mm_add_ps(a, b); }
+inline Texel floor_nonneg(Texel t) { return _mm_cvtepi32_ps(_mm_cvttps_epi32(t)); }
+inline Texel over_unorm16(Texel t) { return _mm_div_ps(t, _mm_set1_ps(65535.0f)); }
+#else
+inline Texel scaled(Texel t, float k) { return t * k; }
+inline Texel plus(Texel a, Texel b) { return a + b; }
+inline Texel floor_nonneg(Texel t) { return glm::floor(t); }
+inline Texel over_unorm16(Texel t) { return t / 65535.0f; }
+#endif
+
+// A texel (in [0, 1]: k/255, or the clamped border colour) as a 16-bit value.
+inline Texel unorm16(Texel t) { return floor_nonneg(plus(scaled(t, 65535.0f), splat_texel(0.5f))); }
+
+// (sum + 128) >> 8: a blend of 16-bit values by weights summing to 256.
+inline Texel round_blend(Texel sum) { return floor_nonneg(scaled(plus(sum, splat_texel(128.0f)), 1.0f / 256.0f)); }
+
+inline Texel blend2(Texel a, Texel b, int w) {
+    return round_blend(plus(scaled(a, float(256 - w)), scaled(b, float(w))));
+}
+
+template <class Obs>
+[[gnu::always_inline]] inline Texel linear16(const Lookup& lk, const TextureImage& image, Obs&& obs) {
+    const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
+    const int wx = weight8(x.a);
+    if (lk.dims == 1)
+        return blend2(unorm16(fetch(lk, image, x.i0, 0, 0, obs)), unorm16(fetch(lk, image, x.i1, 0, 0, obs)), wx);
+    const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
+    const int wy = weight8(y.a);
+    const int w11 = (wx * wy + 128) >> 8;
+    const Texel t00 = unorm16(fetch(lk, image, x.i0, y.i0, 0, obs));
+    const Texel t01 = unorm16(fetch(lk, image, x.i1, y.i0, 0, obs));
+    const Texel t10 = unorm16(fetch(lk, image, x.i0, y.i1, 0, obs));
+    const Texel t11 = unorm16(fetch(lk, image, x.i1, y.i1, 0, obs));
+    const Texel row0 = plus(scaled(t00, float(256 - wx - wy + w11)), scaled(t01, float(wx - w11)));
+    const Texel row1 = plus(scaled(t10, float(wy - w11)), scaled(t11, float(w11)));
+    return round_blend(plus(row0, row1));
+}
+
+template <class Obs>
+[[gnu::always_inline]] inline Texel level16(const Lookup& lk, int level, bool linear, Obs&& obs) {
+    const TextureImage& image = lk.texture->levels(lk.face)[size_t(level)];
+    obs.level(level, image, linear);
+    return linear ? linear16(lk, image, obs) : unorm16(sampling::sample_nearest(lk, image, obs));
+}
+
+// *_MIPMAP_NEAREST's level: level_base + floor(lambda + 1/2), so that
+// lambda = 1/2 takes level_base + 1, where §3.8.8 (ceil(lambda + 1/2) - 1)
+// keeps level_base (lod.frag, bands 5 and 7).
+inline int nearest_level(float lambda, int base, int q) {
+    return std::clamp(base + int(floor_f(lambda + 0.5f)), base, q);
+}
+
+// filter() of sampling_rules.h with the GPU's lambda and blends, in 16-bit values.
+template <class Obs>
+[[gnu::always_inline]] inline Texel filter16(const Lookup& lk, float lambda, Obs&& obs) {
+    const SamplerState& st = *lk.st;
+    const int base = st.base_level;
+    lambda = quantize_lambda(lambda);
+    const bool magnified = lambda <= 0.0f;
+    obs.filter(lambda, magnified);
+    if (magnified) return level16(lk, base, linear_within_level(st.mag_filter), obs);
+    const bool linear = linear_within_level(st.min_filter);
+    if (!is_mipmap_filter(st.min_filter)) return level16(lk, base, linear, obs);
+    const int q = last_mip_level(lk.texture->levels(lk.face)[size_t(base)], st);
+    if (st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest)
+        return level16(lk, nearest_level(lambda, base, q), linear, obs);
+    if (float(base) + lambda >= float(q)) return level16(lk, q, linear, obs);
+    const float whole = floor_f(lambda);
+    const int d1 = base + int(whole);
+    const Texel first = level16(lk, d1, linear, obs);
+    return blend2(first, level16(lk, d1 + 1, linear, obs), weight8(lambda - whole));
+}
+
+// sample_complete() for a texture that filtered() takes.
+template <class Obs = NoObserver>
+[[gnu::always_inline]] inline glm::vec4 sample_complete(const Texture& texture, const glm::vec3& coord, float ref,
+                                                         float lod, Obs&& obs = Obs{}) {
+    const SamplerState& st = texture.sampler;
+    const Lookup lk = make_lookup(texture, coord, ref, SamplingRules::Gpu);
+    return vec_of(over_unorm16(filter16(lk, clamp_lambda(lod + st.lod_bias, st), obs)));
+}
+
+}  // namespace glslrun::rt::sampling::gpu

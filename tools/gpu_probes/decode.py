@@ -1,0 +1,311 @@
+#!/usr/bin/env python3
+"""Decode the GPU probes of this folder (rendered by run_gpu.sh, or by glslrun/glref on the CPU).
+
+usage: decode.py texfilter|lod|mipgen|cube|funcs2 LABEL=IMG.png ...
+Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
+"""
+import sys
+
+import numpy as np
+from PIL import Image
+
+HERE = __file__.rsplit("/", 1)[0] if "/" in __file__ else "."
+f32 = np.float32
+
+
+def load(path):
+    a = np.asarray(Image.open(path).convert("RGBA"), dtype=np.int64)
+    return a[::-1]  # row index = floor(gl_FragCoord.y)
+
+
+def dec16(a):
+    n = np.rint(a / 17.0).astype(np.int64)
+    return (n[..., 0] << 12) | (n[..., 1] << 8) | (n[..., 2] << 4) | n[..., 3]
+
+
+def band(a, b):
+    return a[64 * b: 64 * b + 64].reshape(-1)  # sample i = (y mod 64) * 512 + x
+
+
+I = np.arange(32768)
+
+
+def steps(x, w):
+    """Where w (the measured weight in 1/65536) changes as x (the exact position) grows: the thresholds."""
+    ch = np.nonzero(np.diff(w))[0]
+    return [(float(x[c + 1]), int(w[c]), int(w[c + 1])) for c in ch]
+
+
+def weight_rule(x, w, label):
+    """x: exact fraction in texels (float64), w: measured weight * 65536. Fit w = q(x * 256) / 256."""
+    x256 = x * 256.0
+    models = {
+        "exact": np.rint(x * 65536),
+        "floor8": np.floor(x256) * 256,
+        "round8": np.floor(x256 + 0.5) * 256,
+        "round8_tiesdown": np.ceil(x256 - 0.5) * 256,
+        "floor9": np.floor(x * 512) * 128,
+    }
+    res = ", ".join(f"{k} {100 * np.mean(v == w):.2f}%" for k, v in models.items())
+    print(f"  {label}: weights {len(np.unique(w))} distinct; {res}")
+    st = steps(x, w)
+    print(f"    first steps (x where the weight changes, old, new): {st[:4]} ... {st[-2:]}")
+
+
+def texfilter(images):
+    for label, path in images:
+        a = dec16(load(path))
+        print(f"texfilter {label}:")
+        weight_rule(I / 32768.0, band(a, 0), "2x1 along s (u = 0.5 + i/32768)")
+        weight_rule(I / 32768.0, 65536 - band(a, 1), "64x1 (u = 31.5 + i/32768)")
+        s = ((f32(2047.5) + (I / 32768.0).astype(f32)).astype(f32) / f32(4096)).astype(f32)
+        u = s.astype(np.float64) * 4096
+        weight_rule(u - 2047.5, 65536 - band(a, 2), "4096x1 (u = 2047.5 + i/32768, rounded)")
+        weight_rule(I / 32768.0, band(a, 6), "1x2 along t")
+        # NEAREST: which texel at u = 128 + (i - 16384) / 65536
+        u = 128 + (I - 16384) / 65536.0
+        k = np.rint(band(a, 3) * 255 / 65536.0)
+        low = u[k == 128].min() if (k == 128).any() else None
+        print(f"  NEAREST 256x1: texel 128 from u = {low!r} (floor(u): from 128.0); texels seen {np.unique(k)}")
+        # band 7: u = -0.5 + i/16384 on 2 texels, CLAMP_TO_EDGE: the weight of texel 1 is clamp(u, 0.5, 1.5) - 0.5
+        u = -0.5 + I / 16384.0
+        w = band(a, 7)
+        x = np.clip(u, 0.5, 1.5) - 0.5
+        weight_rule(x, w, "2x1 CLAMP_TO_EDGE over u in [-0.5, 1.5)")
+
+
+def quads(a, b):
+    """Band b's quads: the four pixels' values, shape (8192, 4), q = (yb / 2) * 256 + x / 2."""
+    blk = a[64 * b: 64 * b + 64].reshape(32, 2, 256, 2).transpose(0, 2, 1, 3).reshape(8192, 4)
+    return blk
+
+
+Q = np.arange(8192)
+
+
+def lod_report(lam, f, label):
+    """lam: the exact lambda (float64), f: the measured blend (15 v): its fraction against frac(lambda)."""
+    fr = lam - np.floor(lam)
+    err = f - fr
+    print(f"  {label}: measured - exact frac(lambda): mean {err.mean():+.5f}, min {err.min():+.5f}, max {err.max():+.5f}; "
+          f"distinct blends {len(np.unique(np.round(f * 65536)))}")
+    for name, m in [("floor8", np.floor(fr * 256) / 256), ("round8", np.floor(fr * 256 + 0.5) / 256)]:
+        print(f"    {name}(frac lambda): {100 * np.mean(np.abs(f - m) < 1.01 / 65536):.2f}% within 1/65536")
+    st = steps(lam, np.round(f * 65536).astype(np.int64))
+    print(f"    first steps (lambda where the blend changes, old, new /65536): {st[:5]}")
+
+
+def classify(v15):
+    return np.where(np.abs(v15 - 7.5) < 0.01, "mag", np.where(np.abs(v15) < 0.01, "L0", np.where(np.abs(v15 - 1) < 0.01, "L1", "mix")))
+
+
+def lod(images):
+    for label, path in images:
+        img = load(path)
+        a = dec16(img) * 15 / 65536.0
+        g = dec16(img) / 65536.0
+        print(f"lod {label}:")
+        x = 1 + Q / 8192.0
+        for b, m, extra, what in [(0, 1, 0, "LINEAR_MIPMAP_LINEAR, rho = 256 a"), (1, 2, 0, "the same, rho in [2, 4)"),
+                                  (2, 1, 0.5, "s and t step along x (sqrt 2 * rho if the spec's length)"),
+                                  (3, 1, 0, "t steps 3/4 a along y (max of the two lengths)")]:
+            qv = quads(g, b)
+            same = np.all(qv == qv[:, :1], axis=1).mean()
+            lam = np.log2(x * m) + extra
+            odd = np.floor(lam) % 2 == 1  # level k's green is k mod 2: the blend from k to k + 1 falls there
+            lod_report(lam, np.where(odd, 1 - qv[:, 0], qv[:, 0]), f"band {b}, {what} (quads with 4 equal pixels: {100 * same:.1f}%)")
+        qv = quads(g, 4)  # pixels (0,0), (1,0), (0,1), (1,1) of each quad
+        lam0 = np.log2(x)
+        for p, extra in enumerate([0, 0, 1, 1]):
+            lam = lam0 + extra
+            odd = np.floor(lam) % 2 == 1
+            lod_report(lam, np.where(odd, 1 - qv[:, p], qv[:, p]), f"band 4, quad pixel {p}: fine derivatives give lambda + {extra}")
+        for b, what in [(5, "NEAREST_MIPMAP_NEAREST, mag LINEAR, lambda in [0, 1)"),
+                        (6, "NEAREST_MIPMAP_LINEAR, mag LINEAR, lambda in [0, 1)"), (7, "LINEAR_MIPMAP_NEAREST, lambda in [0, 1)")]:
+            lam = np.log2(x * (0.5 if b == 4 else 1))
+            c = classify(quads(a, b)[:, 0])
+            runs = []
+            for k in range(len(c)):
+                if not runs or runs[-1][0] != c[k]:
+                    runs.append([c[k], lam[k], lam[k]])
+                runs[-1][2] = lam[k]
+            print(f"  band {b}, {what}: " + "; ".join(f"{r[0]} lambda {r[1]:.6f}..{r[2]:.6f}" for r in runs[:8])
+                  + (" ..." if len(runs) > 8 else ""))
+
+
+def gpu_unorm8(v):
+    """NVIDIA's float-to-UNORM8 store (docs/precision.md): 12 fraction bits, then nearest, ties down."""
+    t = np.floor(v.astype(np.float64) * 4096)
+    return np.ceil(t * 255 / 4096 - 0.5)
+
+
+def texture_levels(img, rows, n):
+    """The levels a mipgen image shows for one texture of size n: {L: array (w, w, 4)}, t up."""
+    out = {}
+    L, w = 1, n // 2
+    while w >= 1:
+        x0 = n - 2 * w
+        out[L] = img[rows: rows + w, x0: x0 + w]
+        L, w = L + 1, w // 2
+    return out
+
+
+def mip_models(above):
+    """Candidate rules for one 2x2 box step: above (2w, 2w, 4) bytes -> (w, w, 4)."""
+    s = above[0::2, 0::2] + above[1::2, 0::2] + above[0::2, 1::2] + above[1::2, 1::2]
+    mean = s / 4.0
+    f32mean = ((above[0::2, 0::2] / 255.0 + above[1::2, 0::2] / 255.0 + above[0::2, 1::2] / 255.0
+                + above[1::2, 1::2] / 255.0) / 4).astype(np.float32)
+    return {
+        "round half even (glslrun)": np.rint(mean),
+        "round half up": np.floor(mean + 0.5),
+        "round half down": np.ceil(mean - 0.5),
+        "truncate": np.floor(mean),
+        "gpu_unorm8(mean / 255)": gpu_unorm8(f32mean),
+        "two linear steps, gpu_unorm8": None,
+    }
+
+
+def mipgen(images):
+    from PIL import Image as _I
+    here = HERE
+    base = {"rand128": (0, 128, np.asarray(_I.open(f"{here}/rand128.png").convert("RGBA"), dtype=np.int64)[::-1]),
+            "wood": (64, 64, np.asarray(_I.open(f"{here}/../../scenes/textures/wood.png").convert("RGBA"), dtype=np.int64)[::-1])}
+    for label, path in images:
+        img = load(path)
+        print(f"mipgen {label}:")
+        for name, (rows, n, lvl0) in base.items():
+            lv = texture_levels(img, rows, n)
+            lv[0] = lvl0
+            for L in sorted(k for k in lv if k >= 1):
+                above, got = lv[L - 1], lv[L]
+                if above.shape[0] < 2:
+                    continue
+                ms = mip_models(above)
+                res = []
+                for k, m in ms.items():
+                    if m is None:
+                        continue
+                    res.append(f"{k} {100 * np.mean(m == got):.2f}%")
+                print(f"  {name} level {L} ({got.shape[0]}x{got.shape[1]}) from the measured level {L - 1}: " + ", ".join(res))
+                if L == 1:
+                    s = (above[0::2, 0::2] + above[1::2, 0::2] + above[0::2, 1::2] + above[1::2, 1::2])
+                    for r in range(4):
+                        m = (s % 4) == r
+                        d = got[m] - np.floor(s[m] / 4)
+                        print(f"    sum mod 4 = {r}: byte - floor(sum/4): " + ", ".join(
+                            f"{int(x)}: {int(c)}" for x, c in zip(*np.unique(d, return_counts=True))))
+
+
+F2 = [("sin(x), x in [0.5, 1.5)", np.sin, lambda i: 0.5 + i / 32768.0),
+      ("cos(x), x in [0, 1)", np.cos, lambda i: i / 32768.0),
+      ("sin(x), x in [2, 3)", np.sin, lambda i: 2.0 + i / 32768.0),
+      ("cos(x), x in [4, 6)", np.cos, lambda i: 4.0 + i / 16384.0),
+      ("exp(x), x in (-1, 0]", np.exp, lambda i: -i / 32768.0),
+      ("log(x), x in [1.75, 2.75)", np.log, lambda i: 1.75 + i / 32768.0),
+      ("sin(x), x in [64, 192)", np.sin, lambda i: 64.0 + i / 256.0),
+      ("cos(x), x in (-192, -64]", np.cos, lambda i: -64.0 - i / 256.0)]
+
+
+def funcs2(images):
+    """The absolute error in units of 2^-24, from the low 12 bits of y * 2^24 (mod 4096)."""
+    for label, path in images:
+        img = load(path)
+        n = np.rint(img / 17.0).astype(np.int64)
+        got = (n[..., 2] << 8) | (n[..., 1] << 4) | n[..., 0]  # bits 2^-13 .. 2^-24 of y
+        print(f"funcs2 {label}: absolute error in units of 2^-24 (mean, min, max)")
+        for b, (name, fn, arg) in enumerate(F2):
+            x = arg(I.astype(np.float64)).astype(np.float32).astype(np.float64)
+            want = np.floor(np.mod(fn(x) * 2.0 ** 24, 4096.0))
+            e = np.mod(band(got[..., None], b)[:, 0] if False else got[64 * b: 64 * b + 64].reshape(-1) - want + 2048, 4096) - 2048
+            print(f"  {name}: {e.mean():+.2f}, {int(e.min()):+d}, {int(e.max()):+d}")
+
+
+QUANT = {
+    "exact": lambda a: a,
+    "floor8": lambda a: np.floor(a * 256) / 256,
+    "round8": lambda a: np.floor(a * 256 + 0.5) / 256,
+}
+
+
+def lin_axis_repeat(s, n, q):
+    """LINEAR under REPEAT: indices and the weight, with the weight rule q (QUANT)."""
+    s = s.astype(np.float32)
+    u = ((s - np.floor(s)) * np.float32(n) - np.float32(0.5)).astype(np.float32)
+    i0 = np.floor(u).astype(np.int64)
+    a = (u - np.floor(u)).astype(np.float32)
+    a = q(a.astype(np.float64)).astype(np.float32)
+    return i0 % n, (i0 + 1) % n, a
+
+
+def mix32(x, y, a):
+    x = x.astype(np.float32); y = y.astype(np.float32); a = a.astype(np.float32)
+    return (x * (np.float32(1) - a) + y * a).astype(np.float32)
+
+
+def bilinear_band(img, band_index, channel, label):
+    """Bands 4, 5 of texfilter: the 16x16 random texture at exact (s, t), models of the blend."""
+    tex = np.asarray(Image.open(f"{HERE}/rand16.png").convert("RGBA"), dtype=np.int64)[::-1]  # row j = t
+    texf = (tex[..., channel] / 255.0).astype(np.float32)
+    X = np.tile(np.arange(512), 64); yb = np.repeat(np.arange(64), 512)
+    s = (X / 512.0 + yb / 32768.0).astype(np.float32)
+    t = (yb / 64.0 + X / 16384.0).astype(np.float32)
+    got = band(img, band_index)
+    res = []
+    for name, q in QUANT.items():
+        x0, x1, ax = lin_axis_repeat(s, 16, q)
+        y0, y1, ay = lin_axis_repeat(t, 16, q)
+        r0 = mix32(texf[y0, x0], texf[y0, x1], ax)
+        r1 = mix32(texf[y1, x0], texf[y1, x1], ax)
+        v = mix32(r0, r1, ay)
+        e = np.mod(np.floor(v.astype(np.float64) * 65536 + 0.5), 65536)
+        diff = (got - e + 32768) % 65536 - 32768
+        res.append(f"{name}: {100 * np.mean(diff == 0):.2f}% exact, |d| <= 1: {100 * np.mean(np.abs(diff) <= 1):.2f}%, max |d| {np.abs(diff).max()}")
+        if name != "exact":
+            # fixed point: the four texels' bytes times the 8-bit weights, exact
+            wx = np.rint(ax.astype(np.float64) * 256); wy = np.rint(ay.astype(np.float64) * 256)
+            tb = tex[..., channel]
+            acc = (tb[y0, x0] * (256 - wx) + tb[y0, x1] * wx) * (256 - wy) + (tb[y1, x0] * (256 - wx) + tb[y1, x1] * wx) * wy
+            vf = acc / (65536.0 * 255.0)
+            e2 = np.mod(np.floor(vf * 65536 + 0.5), 65536)
+            d2 = (got - e2 + 32768) % 65536 - 32768
+            res.append(f"{name} exact products: {100 * np.mean(d2 == 0):.2f}% exact, max |d| {np.abs(d2).max()}")
+    print(f"  {label}:\n    " + "\n    ".join(res))
+
+
+def texfilter2d(images):
+    for label, path in images:
+        a = dec16(load(path))
+        print(f"texfilter 2D {label}:")
+        bilinear_band(a, 4, 0, "16x16 random, red")
+        bilinear_band(a, 5, 1, "16x16 random, green")
+
+
+def cube(images):
+    """The +X face's weight of the white column, against s = (sc / ma + 1) / 2 computed in float."""
+    mas = [1.0, 3.0, 5.0, 7.0, 11.0, 13.0, 0.75, 2.0]
+    for label, path in images:
+        a = dec16(load(path))
+        print(f"cube {label}: per |ma|, the measured weight against models of s (the weight rule applied to each)")
+        for b, ma in enumerate(mas):
+            ma32 = np.float32(ma)
+            sc = (ma32 * (I / 32768.0).astype(np.float32) - ma32 * np.float32(0.5)).astype(np.float32)
+            got = band(a, b)
+            res = []
+            for sname, s in [("div", (np.float32(0.5) * ((sc / ma32).astype(np.float32) + np.float32(1))).astype(np.float32)),
+                             ("rcp", (np.float32(0.5) * ((sc * (np.float32(1) / ma32)).astype(np.float32) + np.float32(1))).astype(np.float32)),
+                             ("rcp/2", ((sc * (np.float32(0.5) / ma32)).astype(np.float32) + np.float32(0.5)).astype(np.float32))]:
+                u = (s * np.float32(2) - np.float32(0.5)).astype(np.float32)
+                x = np.clip(u.astype(np.float64), 0.0, 1.0)
+                for qn in ("exact", "floor8", "round8"):
+                    w = np.rint(QUANT[qn](x) * 65536)
+                    res.append(f"{sname}/{qn} {100 * np.mean(w == got):.2f}%")
+            print(f"  |ma| = {ma}: " + ", ".join(res))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    what = sys.argv[1]
+    imgs = [tuple(arg.split("=", 1)) for arg in sys.argv[2:]]
+    globals()[what](imgs)
