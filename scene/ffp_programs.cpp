@@ -76,7 +76,8 @@ std::string stage_text(const std::vector<ShaderSource>& sources) {
 Result<Program*> FixedFunctionPrograms::get(const Program* base, const std::vector<ShaderSource>& vertex,
                                             const std::vector<ShaderSource>& fragment, const CompileOptions& options,
                                             uint8_t samplers) {
-    std::string key = fmt::format("{}\n{}\x01{}", static_cast<const void*>(base), stage_text(vertex), stage_text(fragment));
+    std::string key =
+        fmt::format("{}\n{}\x01{}", static_cast<const void*>(base), stage_text(vertex), stage_text(fragment));
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second.get();
     auto program = Program::compile(vertex, fragment, options);

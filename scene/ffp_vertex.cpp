@@ -54,8 +54,9 @@ std::string scene_color(const FixedFunction& f, const Side& side) {
     using M = ColorMaterialMode;
     if (!tracked(f, side, M::Emission) && !tracked(f, side, M::Ambient) && !tracked(f, side, M::Diffuse))
         return fmt::format("gl_{}LightModelProduct.sceneColor", side.name);
-    return fmt::format("vec4(gl_LightModel.ambient.rgb * {}.rgb + {}.rgb, {}.a)", material(f, side, M::Ambient, "ambient"),
-                       material(f, side, M::Emission, "emission"), material(f, side, M::Diffuse, "diffuse"));
+    return fmt::format("vec4(gl_LightModel.ambient.rgb * {}.rgb + {}.rgb, {}.a)",
+                       material(f, side, M::Ambient, "ambient"), material(f, side, M::Emission, "emission"),
+                       material(f, side, M::Diffuse, "diffuse"));
 }
 
 bool positional(const LightState& l) { return l.position.w != 0.0f; }

@@ -400,7 +400,8 @@ t = { mode = "eye_linear", eye_plane = [0, 0.4, 0, 0.5] }
 }
 
 TEST_CASE("a fixed-function object beside a shaded one", "[reference][fixed]") {
-    const char* vertex = "void main() { gl_FrontColor = vec4(1.0, 0.5, 0.25, 1.0) * gl_Color; gl_Position = ftransform(); }\n";
+    const char* vertex =
+        "void main() { gl_FrontColor = vec4(1.0, 0.5, 0.25, 1.0) * gl_Color; gl_Position = ftransform(); }\n";
     const char* fragment = "void main() { gl_FragColor = gl_Color.bgra; }\n";
     compare_fixed("ffp-beside-shaded", std::string(kCamera) + R"(
 [state]
