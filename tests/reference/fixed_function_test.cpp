@@ -508,3 +508,10 @@ TEST_CASE("scenes/fixed_function.toml without shaders matches Mesa's fixed funct
     reference::compare("ffp-scene-file", in);
     reference::check_same_everywhere(in);
 }
+
+TEST_CASE("the fixed-function vertex stage clips against user clip planes in eye space", "[reference][fixed]") {
+    std::string lights = kEightLights;
+    lights.replace(lights.find("[state]\ndepth_test = true\n"), 26,
+                   "[state]\ndepth_test = true\nclip_planes = [[1, 0.3, 0, 0.2], [0, -1, 0.2, 0.6]]\n");
+    compare_all_fixed("ffp-clip-planes", std::string(kCamera) + lights);
+}
