@@ -116,9 +116,19 @@ def error_of(program, scene, mode, args, tmp):
     }
 
 
-# The ops Fast runs with its own approximations (runtime/fast_kernels.h); every
-# other op has the same kernel as in Precise.
-FAST_OPS = {"frsqrt", "fsqrt_divisor", "fdiv_by_sqrt", "fexp", "fexp2", "flog", "flog2", "fpow", "fsin", "fcos"}
+def fast_ops():
+    """The ops Fast runs with its own approximations: those of a Fast class
+    other than Exact in the opcode table's `fast` column (ir/opcodes.def);
+    every other op has the same kernel as in Precise."""
+    with open(os.path.join(REPO, "ir", "opcodes.def")) as f:
+        rows = re.findall(r"^OP\((\w+),\s*\d+,\s*\w,\s*\w,\s*\w+,\s*(\w+),", f.read(), re.M)
+    ops = {name for name, fast in rows if fast != "Exact"}
+    if not ops:
+        sys.exit("no Fast ops found in ir/opcodes.def: has its layout changed?")
+    return ops
+
+
+FAST_OPS = fast_ops()
 
 
 def fragment_op_mix(program, args):

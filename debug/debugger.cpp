@@ -44,8 +44,8 @@ void optimize_keeping_variables(ir::Shader& shader) {
 }  // namespace
 
 Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
-                                      const std::vector<ShaderSource>& fragment, Precision precision) {
-    CompileOptions options;
+                                      const std::vector<ShaderSource>& fragment, Precision precision,
+                                      CompileOptions options) {
     options.optimize = false;
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
@@ -360,7 +360,7 @@ namespace {
 
 // The debugging twin of pass `pass`'s own program, with `debug`'s limits.
 Result<std::shared_ptr<Program>> debug_twin(const scene::Pass& pass, const Program& debug) {
-    auto twin = compile_for_debugging(pass.vertex, pass.fragment, debug.exec.precision);
+    auto twin = compile_for_debugging(pass.vertex, pass.fragment, debug.exec.precision, state_of(debug).options);
     if (!twin) {
         Error e(fmt::format("pass '{}': its debugging program does not compile", pass.name), pass.where.file,
                 pass.where.line);

@@ -23,8 +23,10 @@ namespace glslrun::debug {
 // The program again, unoptimized (the registers keep the variables), with
 // the same uniform layout; Fast's sqrt_divisor marks applied so that it
 // computes the same values as `program`.
+// `options` are the program's own (its defines and include directories).
 Result<Program> compile_for_debugging(const std::vector<ShaderSource>& vertex,
-                                      const std::vector<ShaderSource>& fragment, Precision precision);
+                                      const std::vector<ShaderSource>& fragment, Precision precision,
+                                      CompileOptions options = {});
 
 // The per-fragment tests after the shader (GL 2.1 §4.1) as one fragment met
 // them, in GL's order, with the values each compared. A fragment that

@@ -57,7 +57,8 @@ namespace {
 bool non_finite(const rt::LaneValue& v) { return v.kind == ir::Kind::F32 && !std::isfinite(v.f); }
 
 // The registers an instruction writes: tex writes four.
-uint32_t results(const ir::Instr& in) { return in.op == ir::Op::tex ? ir::kTexResults : 1; }
+bool lookup_op(const ir::Instr& in) { return ir::has(in.op, ir::OpProp::Texture); }
+uint32_t results(const ir::Instr& in) { return lookup_op(in) ? ir::kTexResults : 1; }
 
 }  // namespace
 
@@ -68,7 +69,7 @@ std::optional<NanEvent> nan_event(const ShaderNames& names, const ir::Node& n, c
     for (uint32_t k = 0; k < results(in); ++k) bad = bad || non_finite(regs.read(in.dst + k, lane));
     if (!bad) return std::nullopt;
     NanEvent e{names.where(n.loc), ir::op_info(in.op).name, {}, read_values(regs, in.dst, results(in), lane), {}};
-    const int arity = in.op == ir::Op::tex ? 0 : ir::op_info(in.op).arity;
+    const int arity = lookup_op(in) ? 0 : ir::op_info(in.op).arity;
     for (int k = 0; k < arity; ++k) e.operands.push_back(read_values(regs, in.src[k], 1, lane));
     if (const ir::Variable* var = names.variable(in.dst)) e.variable = var->name;
     return e;
@@ -196,8 +197,8 @@ void LaneRecorder::instr(const ir::Node& n, rt::LaneMask active, const rt::LaneR
         if (u >= 0 && std::find(uniforms_read_.begin(), uniforms_read_.end(), u) == uniforms_read_.end())
             uniforms_read_.push_back(u);
     }
-    if (in.op == ir::Op::tex) lookup(n, regs);
-    ir::Reg written = in.op == ir::Op::store_ind ? in.imm[0] : in.dst;
+    if (lookup_op(in)) lookup(n, regs);
+    ir::Reg written = ir::has(in.op, ir::OpProp::WritesRange) ? in.imm[0] : in.dst;
     if (const ir::Variable* var = names_.variable(written))
         if (std::find(dirty_.begin(), dirty_.end(), var) == dirty_.end()) dirty_.push_back(var);
     if (!trace.first_nan) trace.first_nan = nan_event(names_, n, regs, lane_);

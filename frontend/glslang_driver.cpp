@@ -310,7 +310,16 @@ const char* kFixedFunctionVertex =
     "  gl_TexCoord[5] = gl_TextureMatrix[5] * gl_MultiTexCoord5;\n"
     "  gl_TexCoord[6] = gl_TextureMatrix[6] * gl_MultiTexCoord6;\n"
     "  gl_TexCoord[7] = gl_TextureMatrix[7] * gl_MultiTexCoord7;\n"
-    "  gl_FogFragCoord = abs((gl_ModelViewMatrix * gl_Vertex).z);\n"
+    "  float eyeZ = (gl_ModelViewMatrix * gl_Vertex).z;\n"
+    "  gl_FogFragCoord = abs(eyeZ);\n"
+    // GL 1.4's distance attenuation as Mesa's fixed-function vertex program
+    // computes it (d = |eye z|, ARB's RSQ of |x|); the rasterizer takes it
+    // only when the attenuation is not (1, 0, 0), as Mesa writes it only then.
+    "  vec3 abc = vec3(gl_Point.distanceConstantAttenuation, gl_Point.distanceLinearAttenuation,\n"
+    "                  gl_Point.distanceQuadraticAttenuation);\n"
+    "  float d = abs(eyeZ);\n"
+    "  float size = gl_Point.size * inversesqrt(abs(abc.x + d * (abc.y + d * abc.z)));\n"
+    "  gl_PointSize = min(max(size, gl_Point.sizeMin), gl_Point.sizeMax);\n"
     "}\n";
 const char* kFixedFunctionFragment = "void main() { gl_FragColor = gl_Color; }\n";
 
@@ -363,6 +372,7 @@ Result<ir::Program> compile_here(const std::vector<ShaderSource>& vs, const std:
     program.uniforms = std::move(uniforms.leaves);
     program.uniform_words = uint32_t(uniforms.slot_kinds.size());
     program.uniform_defaults = std::move(uniforms.defaults);
+    program.fixed_function_vertex = vs.empty();
     link_varyings(program);
     return program;
 }

@@ -60,7 +60,7 @@ struct Lane;
             return Out::out(static_cast<typename Out::T>(expr));                                    \
         }                                                                                           \
     };
-#define OP(name, arity, res, opnd, kind, fast, expr) GLSLRUN_ALU_##kind(name, arity, res, opnd, expr)
+#define OP(name, arity, res, opnd, kind, fast, props, expr) GLSLRUN_ALU_##kind(name, arity, res, opnd, expr)
 #include "ir/opcodes.def"
 #undef OP
 #undef GLSLRUN_ALU_Alu
@@ -74,7 +74,7 @@ W eval(Op op, W a, W b, W c) {
 #define GLSLRUN_ALU_Special(name)
 #define GLSLRUN_ALU_Alu(name) \
     case Op::name: return Lane<Op::name>::eval<W>(a, b, c);
-#define OP(name, arity, res, opnd, kind, fast, expr) GLSLRUN_ALU_##kind(name)
+#define OP(name, arity, res, opnd, kind, fast, props, expr) GLSLRUN_ALU_##kind(name)
 #include "ir/opcodes.def"
 #undef OP
 #undef GLSLRUN_ALU_Alu

@@ -35,25 +35,13 @@ struct ExprHash {
     }
 };
 
-bool commutative(Op op) {
-    switch (op) {
-    case Op::fadd: case Op::fmul: case Op::iadd: case Op::imul: case Op::feq: case Op::fne:
-    case Op::ieq: case Op::ine: case Op::beq: case Op::bne: case Op::band: case Op::bor: case Op::bxor:
-        return true;
-    default: return false;
-    }
-}
-
-// Pure functions of their operands (and of the uniform store, fixed during a run).
-bool reusable(Op op) {
-    if (op_info(op).kind == OpKind::Alu) return true;
-    return op == Op::konst || op == Op::sel || op == Op::uniform || op == Op::uniform_ind || op == Op::ddx ||
-           op == Op::ddy;
-}
+// Pure functions of their operands (and of the uniform store, fixed during
+// a run); a mov is a copy, followed as such.
+bool reusable(Op op) { return has(op, OpProp::Pure) && op != Op::mov; }
 
 Expr expr_of(const Instr& in) {
     Expr e{in.op, in.type, {in.src[0], in.src[1], in.src[2]}, {in.imm[0], in.imm[1], in.imm[2]}};
-    if (commutative(in.op) && e.src[1] < e.src[0]) std::swap(e.src[0], e.src[1]);
+    if (has(in.op, OpProp::Commutative) && e.src[1] < e.src[0]) std::swap(e.src[0], e.src[1]);
     return e;
 }
 

@@ -31,7 +31,7 @@ struct Eliminator {
 
     bool dead(const Instr& in) const {
         if (in.op == Op::mov && in.src[0] == in.dst) return true;
-        if (in.op == Op::check_undef) return false;  // it writes no register: its effect is the record
+        if (has(in.op, OpProp::Effect)) return false;  // check_undef: its effect is the record it makes
         bool any_read = false;
         flow::for_each_write(in, [&](Reg r) { any_read = any_read || (r < read.size() && read[r]); });
         return !any_read;

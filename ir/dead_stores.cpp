@@ -22,9 +22,7 @@ namespace {
 constexpr size_t kWindow = 256;
 
 // A write whose every lane-wise effect is its destination (no ranges, no tex blocks).
-bool plain_write(const Instr& in) {
-    return in.dst != kNoReg && !flow::writes_range(in.op) && in.op != Op::tex;
-}
+bool plain_write(const Instr& in) { return flow::writes_dst_only(in); }
 
 bool reads(const Node& n, Reg r) {
     bool hit = false;

@@ -15,8 +15,14 @@ void for_each_in_range(const Instr& in, Fn&& fn) {
     for (uint32_t e = 0; e < in.imm[1]; ++e) fn(Reg(in.imm[0] + e * in.imm[2]));
 }
 
-inline bool reads_range(Op op) { return op == Op::load_ind; }
-inline bool writes_range(Op op) { return op == Op::store_ind; }
+inline bool reads_range(Op op) { return has(op, OpProp::ReadsRange); }
+inline bool writes_range(Op op) { return has(op, OpProp::WritesRange); }
+// Whether the op samples a texture: an operand block and kTexResults results.
+inline bool texture(Op op) { return has(op, OpProp::Texture); }
+// Whether its only write is dst (none of ranges or result blocks).
+inline bool writes_dst_only(const Instr& in) {
+    return in.dst != kNoReg && !writes_range(in.op) && !texture(in.op);
+}
 
 // Registers an instruction reads explicitly (its operands).
 template <class Fn>
@@ -46,7 +52,7 @@ void for_each_read(const Node& n, Fn&& fn) {
     if (n.kind != NodeKind::Instr) return;
     for_each_operand(n.instr, fn);
     if (reads_range(n.instr.op)) for_each_in_range(n.instr, fn);
-    if (n.instr.op == Op::tex) for_each_tex_operand(n.instr, fn);
+    if (texture(n.instr.op)) for_each_tex_operand(n.instr, fn);
 }
 
 // Registers a single instruction may write.
@@ -54,7 +60,7 @@ template <class Fn>
 void for_each_write(const Instr& in, Fn&& fn) {
     if (writes_range(in.op))
         for_each_in_range(in, fn);
-    else if (in.op == Op::tex)
+    else if (texture(in.op))
         for_each_tex_result(in, fn);
     else if (in.dst != kNoReg)
         fn(in.dst);

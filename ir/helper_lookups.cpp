@@ -34,7 +34,7 @@ struct Reached {
 void sweep(const Block& block, Reached& reached) {
     for (const Node& n : block) {
         if (n.kind == NodeKind::Instr) {
-            bool reads = n.instr.op == Op::tex;
+            bool reads = flow::texture(n.instr.op);
             flow::for_each_read(n, [&](Reg r) { reads = reads || reached.has(r); });
             if (reads) flow::for_each_write(n.instr, [&](Reg r) { reached.add(r); });
         }
@@ -47,7 +47,7 @@ void sweep(const Block& block, Reached& reached) {
 bool read_across_lanes(const Block& block, const Reached& reached) {
     for (const Node& n : block) {
         if (n.kind == NodeKind::If && reached.has(n.cond)) return true;
-        const bool derivative = n.kind == NodeKind::Instr && (n.instr.op == Op::ddx || n.instr.op == Op::ddy);
+        const bool derivative = n.kind == NodeKind::Instr && has(n.instr.op, OpProp::CrossLane);
         if (derivative && reached.has(n.instr.src[0])) return true;
         if (read_across_lanes(n.body, reached) || read_across_lanes(n.alt, reached)) return true;
     }

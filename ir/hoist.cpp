@@ -22,10 +22,8 @@
 namespace glslrun::ir {
 namespace {
 
-bool hoistable_op(Op op) {
-    return op_info(op).kind == OpKind::Alu || op == Op::konst || op == Op::mov || op == Op::sel ||
-           op == Op::uniform || op == Op::uniform_ind;
-}
+// A lane's result from its own operands and the uniforms alone.
+bool hoistable_op(Op op) { return has(op, OpProp::Pure) && !has(op, OpProp::CrossLane); }
 
 struct Hoister {
     Shader& shader;
@@ -45,11 +43,11 @@ struct Hoister {
                 if (r < writes.size()) ++writes[r];
             });
             if (flow::reads_range(in.op) || flow::writes_range(in.op)) flow::for_each_in_range(in, [&](Reg r) { pin(r); });
-            if (in.op == Op::tex) {
+            if (flow::texture(in.op)) {
                 flow::for_each_tex_operand(in, [&](Reg r) { pin(r); });
                 flow::for_each_tex_result(in, [&](Reg r) { pin(r); });
             }
-            if (in.op == Op::ddx || in.op == Op::ddy) pin(in.src[0]);
+            if (has(in.op, OpProp::CrossLane)) pin(in.src[0]);
         });
     }
 

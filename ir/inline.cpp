@@ -44,9 +44,9 @@ struct Inliner {
                 flow::for_each_read(n, [&](Reg r) { claim(r, fn); });
                 if (n.kind == NodeKind::Instr) {
                     flow::for_each_write(n.instr, [&](Reg r) { claim(r, fn); });
-                    if (n.instr.op == Op::load_ind || n.instr.op == Op::store_ind)
+                    if (flow::reads_range(n.instr.op) || flow::writes_range(n.instr.op))
                         flow::for_each_in_range(n.instr, [&](Reg r) { claim(r, kShared); });
-                    if (n.instr.op == Op::tex) {
+                    if (flow::texture(n.instr.op)) {
                         flow::for_each_tex_operand(n.instr, [&](Reg r) { claim(r, kShared); });
                         flow::for_each_tex_result(n.instr, [&](Reg r) { claim(r, kShared); });
                     }

@@ -27,7 +27,7 @@ enum class Kind : uint8_t { F32, I32, Bool };
 const char* kind_name(Kind k);
 
 enum class Op : uint8_t {
-#define OP(name, arity, res, opnd, kind, fast, expr) name,
+#define OP(name, arity, res, opnd, kind, fast, props, expr) name,
 #include "ir/opcodes.def"
 #undef OP
     Count_
@@ -43,6 +43,21 @@ constexpr uint32_t fast_class_bit(FastClass c) { return c == FastClass::Exact ? 
 // Operand/result type classes of the table: F, I, B, T (instruction type), X.
 enum class TypeClass : uint8_t { F, I, B, T, X };
 
+// The table's `props` column: what an op is (ir/opcodes.def says what each
+// means), as bits of OpInfo::props.
+enum class OpProp : uint16_t {
+    Pure = 1u << 0,
+    Commutative = 1u << 1,
+    Libm = 1u << 2,
+    CrossLane = 1u << 3,
+    ReadsRange = 1u << 4,
+    WritesRange = 1u << 5,
+    Texture = 1u << 6,
+    Effect = 1u << 7,
+    Blends = 1u << 8,
+    CallOut = 1u << 9,
+};
+
 struct OpInfo {
     const char* name;
     int arity;
@@ -50,8 +65,11 @@ struct OpInfo {
     TypeClass operand;
     OpKind kind;
     FastClass fast;
+    uint16_t props;  // OpProp bits
 };
 const OpInfo& op_info(Op op);
+// Whether the table gives `op` the property `p`.
+inline bool has(Op op, OpProp p) { return (op_info(op).props & uint16_t(p)) != 0; }
 
 struct Instr {
     Op op = Op::mov;
@@ -217,6 +235,10 @@ struct VaryingLink {
 struct Program {
     Shader vertex;
     Shader fragment;
+    // The vertex stage is glslrun's stand-in for GL's fixed-function one (no
+    // vertex shader was given): the rasterizer treats its gl_PointSize as
+    // GL treats the fixed-function point size.
+    bool fixed_function_vertex = false;
     std::vector<Uniform> uniforms;
     uint32_t uniform_words = 0;
     // Initial uniform values (GLSL 1.20 initializers), uniform_words words;

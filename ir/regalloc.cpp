@@ -51,11 +51,11 @@ struct Allocator {
             const Instr& in = n.instr;
             if ((flow::reads_range(in.op) || flow::writes_range(in.op)) && in.imm[1] > 0)
                 pin_span(in.imm[0], uint64_t(in.imm[1] - 1) * in.imm[2] + 1);
-            if (in.op == Op::tex) {
+            if (flow::texture(in.op)) {
                 pin_span(in.imm[0], in.imm[1]);
                 pin_span(in.dst, kTexResults);
             }
-            if (in.op == Op::ddx || in.op == Op::ddy) pin_span(in.src[0], 1);
+            if (has(in.op, OpProp::CrossLane)) pin_span(in.src[0], 1);
         });
     }
 
@@ -140,8 +140,7 @@ void mark_unmasked(Block& block, const std::vector<bool>& pinned, const std::vec
     for (Node& n : block) {
         if (n.kind == NodeKind::Instr) {
             Reg d = n.instr.dst;
-            n.instr.unmasked = d != kNoReg && d < pinned.size() && !pinned[d] && writes[d] == 1 &&
-                               !flow::writes_range(n.instr.op) && n.instr.op != Op::tex;
+            n.instr.unmasked = d < pinned.size() && !pinned[d] && writes[d] == 1 && flow::writes_dst_only(n.instr);
         }
         mark_unmasked(n.body, pinned, writes);
         mark_unmasked(n.alt, pinned, writes);
@@ -173,7 +172,7 @@ void rename(Block& block, const std::vector<Reg>& map) {
             re(in.dst);
             for (int k = 0; k < op_info(in.op).arity; ++k) re(in.src[k]);
             // Pinned spans keep their layout, so renaming the base renames the span.
-            if (flow::reads_range(in.op) || flow::writes_range(in.op) || in.op == Op::tex) re(in.imm[0]);
+            if (flow::reads_range(in.op) || flow::writes_range(in.op) || flow::texture(in.op)) re(in.imm[0]);
         }
         rename(n.body, map);
         rename(n.alt, map);

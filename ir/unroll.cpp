@@ -79,7 +79,7 @@ struct Uses {
             flow::for_each_write(n.instr, [&](Reg r) { count(writes, r); });
             const Instr& in = n.instr;
             if (flow::reads_range(in.op) || flow::writes_range(in.op)) flow::for_each_in_range(in, [&](Reg r) { pin(r); });
-            if (in.op == Op::tex) {
+            if (flow::texture(in.op)) {
                 flow::for_each_tex_operand(in, [&](Reg r) { pin(r); });
                 flow::for_each_tex_result(in, [&](Reg r) { pin(r); });
             }

@@ -77,6 +77,8 @@ class Program:
         fragment: Union[str, Sequence[tuple[str, str]]],
         default_version: int = 110,
         optimize: bool = True,
+        *,
+        include_dirs: Sequence[str] = ...,
     ) -> Program: ...
     @staticmethod
     def from_files(
@@ -84,6 +86,8 @@ class Program:
         fragment: Union[str, Sequence[str]],
         default_version: int = 110,
         optimize: bool = True,
+        *,
+        include_dirs: Sequence[str] = ...,
     ) -> Program: ...
     def set_uniform(self, name: str, value: _Numbers) -> None: ...
     def has_uniform(self, name: str) -> bool: ...
@@ -122,14 +126,21 @@ def render(
     time_limit: float = 0.0,
     cache_dir: str = "",
     cache: bool = True,
+    include_dirs: Sequence[str] = ...,
 ) -> _Image: ...
 def jit_available() -> bool: ...
 def read_png(path: str) -> _Image: ...
 def write_png(image: _Image, path: str) -> None: ...
 def compare_images(reference: _Image, actual: _Image, tolerance: int = 1) -> dict[str, Any]: ...
 def error_report(
-    vertex: str, fragment: str, scene: str, mode: str = "fast", threads: int = 0
+    vertex: str, fragment: str, scene: str, mode: str = "fast", threads: int = 0, *, include_dirs: Sequence[str] = ...
 ) -> dict[str, Any]: ...
 def check_undefined(
-    vertex: str, fragment: str, scene: str, precision: str = "precise", *, backend: str = "auto"
+    vertex: str,
+    fragment: str,
+    scene: str,
+    precision: str = "precise",
+    *,
+    backend: str = "auto",
+    include_dirs: Sequence[str] = ...,
 ) -> list[dict[str, Any]]: ...

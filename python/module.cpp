@@ -184,10 +184,11 @@ std::vector<ShaderSource> sources(const py::object& texts, const char* default_n
     return out;
 }
 
-CompileOptions compile_options(int default_version, bool optimize) {
+CompileOptions compile_options(int default_version, bool optimize, const std::vector<std::string>& include_dirs) {
     CompileOptions o;
     o.default_version = default_version;
     o.optimize = optimize;
+    o.include_dirs = include_dirs;
     return o;
 }
 
@@ -200,20 +201,26 @@ void bind_program(py::module_& m) {
     py::class_<PyProgram>(m, "Program", "A compiled vertex and fragment program.")
         .def_static(
             "compile",
-            [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize) {
+            [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize,
+               const std::vector<std::string>& include_dirs) {
                 return PyProgram(take(Program::compile(sources(vertex, "shader.vert"), sources(fragment, "shader.frag"),
-                                                       compile_options(default_version, optimize))));
+                                                       compile_options(default_version, optimize, include_dirs))));
             },
             py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
-            "Compiles GLSL text: a string per stage, or a list of (name, text) pairs.")
+            py::kw_only(), py::arg("include_dirs") = std::vector<std::string>{},
+            "Compiles GLSL text: a string per stage, or a list of (name, text) pairs. `include_dirs`: where "
+            "`#include` looks after the including source's own directory (as the command line's -I).")
         .def_static(
             "from_files",
-            [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize) {
+            [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize,
+               const std::vector<std::string>& include_dirs) {
                 return PyProgram(take(scene::compile_files(paths(vertex), paths(fragment),
-                                                           compile_options(default_version, optimize))));
+                                                           compile_options(default_version, optimize, include_dirs))));
             },
             py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
-            "Compiles shader files: a path per stage, or a list of paths.")
+            py::kw_only(), py::arg("include_dirs") = std::vector<std::string>{},
+            "Compiles shader files: a path per stage, or a list of paths. `include_dirs`: as the command line's "
+            "-I.")
         .def("set_uniform", &set_uniform, py::arg("name"), py::arg("value"),
              "Sets a uniform from a number, a sequence or a numpy array (glUniform semantics).")
         .def("has_uniform", &Program::has_uniform, py::arg("name"),

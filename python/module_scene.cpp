@@ -190,18 +190,29 @@ py::dict keys_to_dict(const std::string& lines) {
     return out;
 }
 
+// A scene and its command line's two shader files, as the module-level
+// functions that take paths read them.
+struct SceneInputs {
+    scene::Scene scene;
+    std::vector<ShaderSource> vertex, fragment;
+};
+
+SceneInputs read_inputs(const std::string& vertex, const std::string& fragment, const std::string& scene_path) {
+    return {take(scene::load_scene(scene_path)), take(scene::read_shader_files({vertex})),
+            take(scene::read_shader_files({fragment}))};
+}
+
 py::dict error_report(const std::string& vertex, const std::string& fragment, const std::string& scene_path,
-                      const std::string& mode, unsigned threads) {
+                      const std::string& mode, unsigned threads, const std::vector<std::string>& include_dirs) {
     scene::ErrorReportOptions options;
     options.mode = take(parse_precision(mode));
     options.threads = threads;
-    auto scene = take(scene::load_scene(scene_path));
-    auto vertex_sources = take(scene::read_shader_files({vertex}));
-    auto fragment_sources = take(scene::read_shader_files({fragment}));
+    options.compile.include_dirs = include_dirs;
+    SceneInputs in = read_inputs(vertex, fragment, scene_path);
     scene::ErrorReport report;
     {
         py::gil_scoped_release release;
-        report = take(scene::measure_error(vertex_sources, fragment_sources, scene, options));
+        report = take(scene::measure_error(in.vertex, in.fragment, in.scene, options));
     }
     py::dict out = keys_to_dict(scene::format_error_keys(report));
     out["notes"] = report.notes;
@@ -212,15 +223,16 @@ py::dict error_report(const std::string& vertex, const std::string& fragment, co
 
 // check_undefined() (glslrun/scene/undefined.h): one dict per finding.
 py::list check_undefined(const std::string& vertex, const std::string& fragment, const std::string& scene_path,
-                         const std::string& precision, const std::string& backend) {
+                         const std::string& precision, const std::string& backend,
+                         const std::vector<std::string>& include_dirs) {
     ExecOptions exec = exec_options(1, precision, backend);
-    auto scene = take(scene::load_scene(scene_path));
-    auto vertex_sources = take(scene::read_shader_files({vertex}));
-    auto fragment_sources = take(scene::read_shader_files({fragment}));
+    CompileOptions compile;
+    compile.include_dirs = include_dirs;
+    SceneInputs in = read_inputs(vertex, fragment, scene_path);
     scene::UndefinedReport report;
     {
         py::gil_scoped_release release;
-        report = take(scene::check_undefined(vertex_sources, fragment_sources, scene, exec));
+        report = take(scene::check_undefined(in.vertex, in.fragment, in.scene, exec, compile));
     }
     py::list out;
     for (const scene::UndefinedFinding& f : report.findings) {
@@ -291,14 +303,16 @@ void bind_scene(py::module_& m) {
         "render",
         [](const std::string& vertex, const std::string& fragment, const std::string& scene_path, unsigned threads,
            const std::string& precision, const py::object& uniforms, const std::string& backend,
-           double time_limit, const std::string& cache_dir, bool cache) {
+           double time_limit, const std::string& cache_dir, bool cache, const std::vector<std::string>& include_dirs) {
             ExecOptions exec = exec_options(threads, precision, backend);
             exec.code_cache_dir = cache_dir;
             exec.code_cache = cache;
             warn_about_code_cache(exec);
             scene::Scene scene = take(scene::load_scene(scene_path));
             scene::override_uniforms(scene, uniform_settings(uniforms, "uniforms"));
-            Program program = take(scene::compile_files({vertex}, {fragment}));
+            CompileOptions compile;
+            compile.include_dirs = include_dirs;
+            Program program = take(scene::compile_files({vertex}, {fragment}, compile));
             program.exec = exec;
             scene::Image image;
             run_interruptibly(program.exec, time_limit, [&] { image = take(scene::render_image(program, scene)); });
@@ -307,11 +321,12 @@ void bind_scene(py::module_& m) {
         py::arg("vertex"), py::arg("fragment"), py::arg("scene"), py::arg("threads") = 0,
         py::arg("precision") = "precise", py::kw_only(), py::arg("uniforms") = py::none(), py::arg("backend") = "auto",
         py::arg("time_limit") = 0.0, py::arg("cache_dir") = "", py::arg("cache") = true,
+        py::arg("include_dirs") = std::vector<std::string>{},
         "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.\n\n"
         "`uniforms` ({name: value}) overrides the scene's [uniforms], as the command line's --uniform does; "
         "`backend` is \"auto\", \"jit\" or \"interp\" (the same bits); time_limit and Ctrl-C as for "
         "Program.render. `cache_dir` and `cache`: the JIT's code cache, as Program.cache_dir and Program.cache "
-        "(a directory that cannot be written is a RuntimeWarning).");
+        "(a directory that cannot be written is a RuntimeWarning). `include_dirs`: as the command line's -I.");
     m.def(
         "read_png", [](const std::string& path) { return to_array(take(scene::read_png(path))); }, py::arg("path"),
         "A PNG as an H x W x 4 uint8 array, top row first.");
@@ -319,25 +334,27 @@ void bind_scene(py::module_& m) {
         "write_png",
         [](const py::object& image, const std::string& path) { check(scene::write_png(to_image(image), path)); },
         py::arg("image"), py::arg("path"), "Writes an H x W x 4 uint8 array as an RGBA8 PNG (lossless).");
-    m.def("jit_available", &jit_available, "Whether this glslrun was built with the LLVM JIT (backend \"jit\").");
     m.def("compare_images", &compare, py::arg("reference"), py::arg("actual"), py::arg("tolerance") = 1,
           "Per-channel differences of two H x W x 4 uint8 images (as glslrun --compare).");
     m.def("error_report", &error_report, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),
-          py::arg("mode") = "fast", py::arg("threads") = 0,
+          py::arg("mode") = "fast", py::arg("threads") = 0, py::kw_only(),
+          py::arg("include_dirs") = std::vector<std::string>{},
           "The scene in `mode` against Reference (glslrun --error-report): the report's keys as a dict, with "
-          "'notes', 'reference_image' and 'mode_image'.");
+          "'notes', 'reference_image' and 'mode_image'. `include_dirs`: as the command line's -I.");
     m.def("jit_available", &jit_available,
           "Whether the JIT can run here: LLVM's native code, in the plugin libglslrun-jit.so beside this "
           "module, loaded by this call or the first compile. Without it every backend runs the interpreter, "
           "which computes the same bits.");
     m.def("check_undefined", &check_undefined, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),
           py::arg("precision") = "precise", py::kw_only(), py::arg("backend") = "auto",
+          py::arg("include_dirs") = std::vector<std::string>{},
           "The operations GLSL 1.10/1.20 leaves undefined that rendering the scene computes (glslrun "
           "--check-undefined, docs/debugging.md): one dict per source position and op, with 'op', 'condition', "
           "'stage', 'file', 'line', 'column', 'text' (the line), 'count' (invocations), 'first' (the first "
           "invocation: 'stage', 'draw', 'pass', 'program', 'operands' and 'pixel' or 'vertex'), what each "
           "precision mode returns for its operands ('reference', 'precise', 'fast', 'value_note') and what "
-          "NVIDIA's GPU returned for such operands ('gpu', measured; '' where not measured).");
+          "NVIDIA's GPU returned for such operands ('gpu', measured; '' where not measured). `include_dirs`: as the "
+          "command line's -I.");
 }
 
 }  // namespace glslrun::python

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -12,6 +13,7 @@
 #include "raster/fragments.h"
 #include "raster/points_lines.h"
 #include "raster/scratch.h"
+#include "raster/stipple.h"
 #include "raster/tiles.h"
 #include "raster/triangle.h"
 #include "runtime/api_checks.h"
@@ -37,7 +39,10 @@ struct DrawContext {
     Rect scissor;
     glm::vec4 viewport;  // x y w h
     ClipParams clip;
+    // The vertex output points take their size from, or -1: every point is
+    // fixed_point_size.
     int point_size_output = -1;
+    float fixed_point_size = 1;
     // Per vertex of the arrays: its fragment attribute vector (front colours).
     std::vector<float>& front_attrs;
     // Per vertex of the arrays: its window position, depth and 1/w, which
@@ -192,6 +197,7 @@ void draw_polygon(const DrawContext& c, SetupOut& out, const ClipVertex* const* 
                              {front, back_colors, offset, provoking_id});
     if (offset != 0.0f)
         for (size_t i = 0; i < n; ++i) verts[i].z += offset;
+    out.stipple_counter = 0;  // as Mesa's stipple stage, which a filled polygon passes
     set_attrs(c, out, poly, n, provoking_id, back_colors, verts.data());
     for (size_t k = 1; k + 1 < n; ++k) add_triangle(c, out, verts[0], verts[k], verts[k + 1], front);
 }
@@ -200,6 +206,14 @@ void draw_triangle(const DrawContext& c, SetupOut& out, const TriangleIds& tri, 
     const std::array<uint32_t, 3>& ids = tri.ids;
     const ClipVertex* corners[3] = {&c.vertices[ids[0]], &c.vertices[ids[1]], &c.vertices[ids[2]]};
     uint32_t codes[3] = {c.outcodes[ids[0]], c.outcodes[ids[1]], c.outcodes[ids[2]]};
+    const bool unfilled = c.gl.polygon_mode[0] != PolygonMode::Fill || c.gl.polygon_mode[1] != PolygonMode::Fill;
+    ClipParams params = c.clip;
+    // A polygon that needs clipping Mesa clips to the viewport's sides as
+    // well, not to the guard band: in GL_POINT mode the vertices made there
+    // are drawn, and stippled edges count from there.
+    if (unfilled) params.guard = 1.0f;
+    if (unfilled && c.gl.line_stipple)
+        for (size_t k = 0; k < 3; ++k) codes[k] = outcode(*corners[k], params);
     if (codes[0] & codes[1] & codes[2]) return;
     if (!(codes[0] | codes[1] | codes[2])) {
         std::array<FsVertex, 3> verts{c.window[ids[0]], c.window[ids[1]], c.window[ids[2]]};
@@ -207,11 +221,6 @@ void draw_triangle(const DrawContext& c, SetupOut& out, const TriangleIds& tri, 
     }
     ClipPolygon poly{*corners[0], *corners[1], *corners[2]};
     for (size_t k = 0; k < 3; ++k) poly[k].edge = (tri.edges >> k) & 1u;
-    // A polygon that needs clipping Mesa clips to the viewport's sides as
-    // well, not to the guard band: in GL_POINT mode the vertices made there
-    // are drawn.
-    ClipParams params = c.clip;
-    if (c.gl.polygon_mode[0] != PolygonMode::Fill || c.gl.polygon_mode[1] != PolygonMode::Fill) params.guard = 1.0f;
     clip_polygon(poly, params, out.arena);
     if (poly.size() < 3) return;
     std::array<const ClipVertex*, kMaxClipVertices> clipped;
@@ -235,6 +244,34 @@ Rect line_rect(const FsPrimitive& p) {
             pixel_floor(hi.y) + 1 + reach};
 }
 
+// The vertex at t of the way from a to b, every value linear in window
+// space (window position, depth, 1/w and the attributes), as llvmpipe makes
+// the ends of a stipple's runs.
+FsVertex window_lerp(const DrawContext& c, SetupOut& out, const FsVertex& a, const FsVertex& b, float t) {
+    auto lerp = [t](float x, float y) { return x + t * (y - x); };
+    FsVertex v;
+    v.win = {lerp(a.win.x, b.win.x), lerp(a.win.y, b.win.y)};
+    v.z = lerp(a.z, b.z);
+    v.inv_w = lerp(a.inv_w, b.inv_w);
+    const uint32_t n = c.stage.attr_count();
+    float* attrs = out.arena.alloc(n);
+    for (uint32_t i = 0; i < n; ++i) attrs[i] = lerp(a.attrs[i], b.attrs[i]);
+    v.attrs = attrs;
+    return v;
+}
+
+// glLineStipple: the runs of the pattern, each a line of its own.
+void emit_stippled(const DrawContext& c, SetupOut& out, const FsPrimitive& line) {
+    for_each_stipple_run(line.v[0].win, line.v[1].win, c.gl.line_stipple_pattern, c.gl.line_stipple_repeat,
+                         out.stipple_counter, [&](float t0, float t1) {
+                             FsPrimitive run = line;
+                             if (t0 > 0.0f) run.v[0] = window_lerp(c, out, line.v[0], line.v[1], t0);
+                             if (t1 < 1.0f) run.v[1] = window_lerp(c, out, line.v[0], line.v[1], t1);
+                             set_line_planes(run);
+                             bin(out, run, line_rect(run));
+                         });
+}
+
 // A segment inside the view volume and the user planes.
 void emit_segment(const DrawContext& c, SetupOut& out, const ClipVertex& a, const ClipVertex& b,
                   uint32_t provoking_id, const EdgeStyle& style) {
@@ -248,6 +285,7 @@ void emit_segment(const DrawContext& c, SetupOut& out, const ClipVertex& a, cons
     p.v[0].z += style.z_offset;
     p.v[1].z += style.z_offset;
     set_attrs(c, out, ends, 2, provoking_id, style.back_colors, p.v.data());
+    if (c.gl.line_stipple) return emit_stippled(c, out, p);
     set_line_planes(p);
     bin(out, p, line_rect(p));
 }
@@ -255,8 +293,15 @@ void emit_segment(const DrawContext& c, SetupOut& out, const ClipVertex& a, cons
 void draw_line(const DrawContext& c, SetupOut& out, const std::array<uint32_t, 3>& ids, uint32_t provoking_id) {
     ClipVertex a = c.vertices[ids[0]], b = c.vertices[ids[1]];
     uint32_t ca = c.outcodes[ids[0]], cb = c.outcodes[ids[1]];
+    ClipParams params = c.clip;
+    if (c.gl.line_stipple) {
+        // Mesa clips lines to the view volume itself, and its stipple
+        // counts from where they enter it.
+        params.guard = 1.0f;
+        ca = outcode(a, params), cb = outcode(b, params);
+    }
     if (ca & cb) return;
-    if ((ca | cb) && !clip_segment(a, b, c.clip, out.arena)) return;
+    if ((ca | cb) && !clip_segment(a, b, params, out.arena)) return;
     emit_segment(c, out, a, b, provoking_id, {});
 }
 
@@ -271,8 +316,9 @@ void emit_point(const DrawContext& c, SetupOut& out, const ClipVertex& v, const 
     if (style.provoking >= 0) set_attrs(c, out, &own, 1, uint32_t(style.provoking), style.back_colors, p.v.data());
     else p.v[0].attrs = fs_attrs(c, out, v, style.back_colors);
     p.count = 1;
-    float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.gl.point_size;
-    set_point_square(p, p.v[0].win, size, c.gl.point_sprite);
+    out.stipple_counter = 0;  // as Mesa's stipple stage, which a point passes
+    float size = c.point_size_output >= 0 ? v.attrs[c.vs.offset[size_t(c.point_size_output)]] : c.fixed_point_size;
+    set_point_square(p, p.v[0].win, size, c.gl.point_sprite, c.gl.point_sprite_coord_lower_left);
     set_point_planes(p);
     bin(out, p, p.point_box);
 }
@@ -282,6 +328,26 @@ void draw_point(const DrawContext& c, SetupOut& out, const ClipVertex& v) {
     ClipParams frustum = c.clip;
     frustum.guard = 1.0f;
     if (!outcode(v, frustum)) emit_point(c, out, v, {});
+}
+
+// GL 2.1 §3.3: points take the vertex shader's gl_PointSize with
+// GL_VERTEX_PROGRAM_POINT_SIZE. GL's fixed-function stage writes one only
+// with distance attenuation (Mesa's; its stand-in here computes it as Mesa
+// does) and takes no notice of GL_VERTEX_PROGRAM_POINT_SIZE. Otherwise the
+// size is glPointSize clamped to [min, max], the minimum first where they
+// cross (Mesa's CLAMP); a shader that should write gl_PointSize and does
+// not gets glPointSize itself, as in Mesa.
+struct PointSizes {
+    int output = -1;
+    float fixed = 1;
+};
+PointSizes point_sizes(const ir::Program& program, const GLState& gl) {
+    const bool attenuated = gl.point_distance_attenuation != glm::vec3(1, 0, 0);
+    const bool from_shader = program.fixed_function_vertex ? attenuated : gl.vertex_program_point_size;
+    if (from_shader) return {find_output(program.vertex, "gl_PointSize"), gl.point_size};
+    return {-1, gl.point_size < gl.point_size_min   ? gl.point_size_min
+                : gl.point_size > gl.point_size_max ? gl.point_size_max
+                                                    : gl.point_size};
 }
 
 // Where a vertex's clip position and user-plane distances come from.
@@ -335,6 +401,10 @@ Status check_draw_input(const GLState& gl, const Framebuffer& fb, Primitive prim
     if (Status st = rt::check_gl_enums(gl); !st) return st;
     if (!(gl.line_width > 0.0f))
         return Error(fmt::format("line width {} must be > 0 (GL_INVALID_VALUE)", gl.line_width));
+    for (float v : {gl.point_size_min, gl.point_size_max, gl.point_fade_threshold_size})
+        if (!(v >= 0.0f))
+            return Error(fmt::format("point parameter {} (size min, max or fade threshold) must be >= 0 "
+                                     "(GL_INVALID_VALUE)", v));
     if (gl.viewport[2] < 0 || gl.viewport[3] < 0)
         return Error(fmt::format("viewport {}x{}: width and height must not be negative (GL_INVALID_VALUE)",
                                  gl.viewport[2], gl.viewport[3]));
@@ -404,6 +474,7 @@ void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<Assembl
         std::array<uint32_t, 3> ids{id(p.v[0]), id(p.v[1]), id(p.v[2])};
         out.current_primitive = uint32_t(i);
         out.current_ids = ids;
+        if (p.restarts_stipple) out.stipple_counter = 0;
         if (p.count == 3) {
             ++out.triangles;
             draw_triangle(c, out, {ids, p.edges}, id(p.provoking));
@@ -423,11 +494,14 @@ std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint
     std::vector<AssembledPrim>& assembled = scratch.assembled;
     const bool triangles = prim == Primitive::Triangles;  // the same either way in the unfilled modes
     bool unfilled = c.gl.polygon_mode[0] != PolygonMode::Fill || c.gl.polygon_mode[1] != PolygonMode::Fill;
+    // Polygon stipple, too, sends Mesa's polygons through its draw pipeline,
+    // which splits quads and polygons the unfilled way.
     if (triangles) assembled.clear();
-    else assemble(prim, stream, assembled, unfilled);
+    else assemble(prim, stream, assembled, unfilled || c.gl.polygon_stipple);
     const size_t count = triangles ? stream / 3 : assembled.size();
     size_t jobs = (count + kSetupJob - 1) / kSetupJob;
-    unsigned workers = count < kParallelSetup ? 1 : rt::thread_count(threads, jobs);
+    // The line stipple's counter runs on from primitive to primitive.
+    unsigned workers = count < kParallelSetup || c.gl.line_stipple ? 1 : rt::thread_count(threads, jobs);
     // One thread: one job, whose primitives need no copy. A primitive's setup
     // does not depend on its job, so neither do the results.
     size_t job_size = workers == 1 ? std::max<size_t>(count, 1) : kSetupJob;
@@ -495,9 +569,11 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
     if (scissor.x0 < scissor.x1 && scissor.y0 < scissor.y1) {
         // The stage's executor goes at the end of this scope: its last instructions reach the budget.
         FragmentStage stage(program, gl, fb, &budget);
+        std::optional<PolygonStipple> stipple;
+        if (gl.polygon_stipple) stipple.emplace(gl.polygon_stipple_pattern);
+        const PointSizes sizes = point_sizes(state_of(program).ir, gl);
         DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
-                      {}, gl.vertex_program_point_size ? find_output(vs, "gl_PointSize") : -1, scratch.front_attrs,
-                      scratch.window};
+                      {}, sizes.output, sizes.fixed, scratch.front_attrs, scratch.window};
         prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
         auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
         scratch.bins.reset(scissor);
@@ -505,7 +581,8 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
         stats.raster_seconds = seconds_since(raster_start);
         auto fragment_start = Clock::now();
         TileResult tiles =
-            scratch.bins.render(TileTarget{program, gl, fb, scissor, &budget}, stage, program.exec.threads, clear);
+            scratch.bins.render(TileTarget{program, gl, fb, scissor, &budget, stipple ? &*stipple : nullptr}, stage,
+                                program.exec.threads, clear);
         *cleared = true;
         stats.fragment_seconds = seconds_since(fragment_start);
         stats.fragments_shaded = tiles.fragments_shaded;

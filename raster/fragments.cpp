@@ -9,6 +9,7 @@
 
 #include "ir/scalar_ops.h"
 #include "raster/framebuffer.h"
+#include "runtime/backend_factory.h"
 #include "runtime/execute.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/program_state.h"
@@ -204,7 +205,7 @@ fused::State FragmentStage::fused_state() {
 // (fused::kPipelineAfterFragments), and under Backend::Auto until its
 // background compile is done.
 const fused::Pipeline* FragmentStage::fused_pipeline() {
-    if (interp_->backend() != Backend::Jit) return nullptr;
+    if (interp_->runner() != rt::Runner::Jit) return nullptr;
     const fused::State state = fused_state();
     target_.depth = fb_.depth.data();
     target_.stencil = fb_.stencil.data();
@@ -213,7 +214,7 @@ const fused::Pipeline* FragmentStage::fused_pipeline() {
                                                     : static_cast<void*>(fb_.color_data<uint8_t>(b).data());
     target_.width = fb_.width;
     target_.height = fb_.height;
-    return state_of(program_).pipelines->get(state, program_.exec.backend == Backend::Jit);
+    return state_of(program_).pipelines->get(state, program_.exec.backend == Backend::Jit, program_.exec);
 }
 
 void FragmentStage::prefetch(const Rect& r) const {

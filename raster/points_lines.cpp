@@ -14,8 +14,8 @@ int ceil256(int64_t v) { return int((v + 255) >> 8); }
 
 }  // namespace
 
-void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool sprite) {
-    const int64_t width = snap256(size > 1.0f ? std::min(size, 4096.0f) : 1.0f);  // NaN -> 1
+void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool sprite, bool lower_left) {
+    const int64_t width = snap256(size > 1.0f ? std::min(size, kMaxPointSize) : 1.0f);  // NaN -> 1
     float step = 1.0f;
     if (sprite) {
         // Pixel x is in when x0 <= 256 x < x0 + width, the centres at whole
@@ -35,8 +35,9 @@ void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool spri
     }
     // llvmpipe's plane constants, 0.5 - d (centre - 1/2) in double rounded
     // once. With sprites t runs down from the top (GL's upper-left origin
-    // in a framebuffer object), without them up, as Mesa leaves it.
-    const float t_step = sprite ? -step : step;
+    // in a framebuffer object) unless the origin is the lower left; without
+    // them up, as Mesa leaves it.
+    const float t_step = sprite && !lower_left ? -step : step;
     prim.point_coord_step = {step, t_step};
     prim.point_coord_origin = {float(0.5 - double(step * (centre.x - 0.5f))),
                                float(0.5 - double(t_step * (centre.y - 0.5f)))};

@@ -8,16 +8,21 @@
 namespace glslrun::raster {
 
 // A point's square, as llvmpipe (the reference, tools/glref) rasterizes GL
-// 2.1 §3.3 in 1/256-pixel fixed point: the size, clamped to [1, 4096], and the
-// centre snapped to 1/256 (nearest, ties to even).
+// 2.1 §3.3 in 1/256-pixel fixed point: the size, clamped to [1, 255] (Mesa's
+// GL_ALIASED_POINT_SIZE_RANGE), and the centre snapped to 1/256 (nearest,
+// ties to even).
 //  - Point sprites: a square of the exact size, centred on the point; a
 //    pixel is in when its centre is, the left and bottom edges included.
-//    gl_PointCoord steps by 1/size per pixel.
+//    gl_PointCoord steps by 1/size per pixel, t from the top down, or from
+//    the bottom up with `lower_left` (GL_POINT_SPRITE_COORD_ORIGIN).
 //  - Other points (§3.3.1): the size rounded to a whole n (n + 1/2 rounds
 //    down, as Mesa), the n x n pixels around floor(centre) (n odd) or
-//    floor(centre + 1/2) (n even). gl_PointCoord is undefined; it steps by 1/n.
+//    floor(centre + 1/2) (n even). gl_PointCoord is undefined; it steps by
+//    1/n, t upwards, as Mesa leaves it.
 // Sets prim.point_box, point_coord_origin and point_coord_step.
-void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool sprite);
+void set_point_square(FsPrimitive& prim, glm::vec2 centre, float size, bool sprite, bool lower_left = false);
+// The largest point size: larger sizes draw at this one (as llvmpipe).
+inline constexpr float kMaxPointSize = 255.0f;
 // Line width as GL rasterizes non-antialiased lines: rounded, at least 1 (at most 255).
 int line_pixels(float width);
 

@@ -28,6 +28,9 @@ struct SetupOut {
     // The primitive being set up and its vertices (FsPrimitive::primitive).
     uint32_t current_primitive = 0;
     std::array<uint32_t, 3> current_ids{};
+    // The line stipple counter (raster/stipple.h): a stippled draw sets up
+    // in one job, in submission order, so that it runs on along strips.
+    uint32_t stipple_counter = 0;
 
     void clear() {
         arena.clear();
@@ -35,6 +38,7 @@ struct SetupOut {
         bounds.clear();
         edges.clear();
         triangles = 0;
+        stipple_counter = 0;
     }
 };
 

@@ -62,7 +62,12 @@ void TileBins::render_tile(const TileTarget& target, size_t tile, FragmentStage&
         // Consecutive primitives of a bin are rarely adjacent in memory: the
         // loads of p missed the cache (perf: 15% of render_tile on one load).
         if (i + 1 < bin.size()) prefetch(bin[i + 1]);
-        auto add_quads = [&](uint64_t pixels, uint64_t part, int ox, int oy) { stage.add_quads(p, pixels, part, ox, oy); };
+        auto add_quads = [&](uint64_t pixels, uint64_t part, int ox, int oy) {
+            // Polygon stipple masks a filled polygon's pixels before any
+            // other test (GL 2.1 §3.6.2), so they are never shaded.
+            if (target.polygon_stipple) pixels &= target.polygon_stipple->square(ox, oy);
+            stage.add_quads(p, pixels, part, ox, oy);
+        };
         if (p.count == 3 && p.cover.mask) {
             for_each_small_part(p.cover, clip, add_quads);
         } else if (p.count == 3) {

@@ -10,6 +10,7 @@
 #include "glslrun/glslrun.h"
 #include "raster/fragments.h"
 #include "raster/framebuffer.h"
+#include "raster/stipple.h"
 #include "raster/triangle.h"
 
 namespace glslrun::raster {
@@ -23,6 +24,7 @@ struct TileTarget {
     Framebuffer& fb;
     Rect scissor;
     rt::DrawBudget* budget = nullptr;  // the draw's, shared by every worker's executor
+    const PolygonStipple* polygon_stipple = nullptr;  // GL_POLYGON_STIPPLE's masks, when it is on
 };
 
 // Fragment counts and the first error, by tile order.

@@ -1,10 +1,11 @@
-// The backend seam: who runs a shader. A backend turns an ir::Shader into
-// `CompiledShader`, once per program and specialization key (cached on the
-// Program: runtime/backend.cpp), and each worker instantiates its own
-// `Executor` from it: a register file, the uniforms and textures of the
-// draw, and the code. The interpreter (runtime/interpreter.h) is one
-// backend; the LLVM JIT (runtime/jit/) is the other. Both compute the same
-// bits: the interpreter is the JIT's oracle (tests/runtime/backend_*).
+// The backend seam, the contract between who runs a shader and its callers:
+// a backend turns an ir::Shader into a `CompiledShader`, and each worker
+// instantiates its own `Executor` from it: a register file, the uniforms
+// and textures of the draw, and the code. The interpreter
+// (runtime/interpreter.h) is one backend; the LLVM JIT (runtime/jit/) is the
+// other. Both compute the same bits: the interpreter is the JIT's oracle
+// (tests/runtime/backend_*). Which backend compiles what, and the way from
+// a Program to an executor, is the factory's (runtime/backend_factory.h).
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -41,6 +42,11 @@ enum FastOps : uint32_t {
     kFastSinCos = 1u << 3,  // fsin, fcos
     kAllFastOps = (1u << 4) - 1,
 };
+
+// Who runs a shader's code: the interpreter, or the JIT's native code. The
+// user's glslrun::Backend is a request, `Auto` among its values: a policy
+// (runtime/backend_cache.h) that picks a Runner per stage, draw by draw.
+enum class Runner : uint8_t { Interp, Jit };
 
 struct RunError {
     std::string message;
@@ -102,8 +108,8 @@ public:
     // fragment batch's helper lanes, where ir::Shader::helper_lookups_matter
     // says nothing reads their lookups.
     virtual void skip_lookups(LaneMask lanes) = 0;
-    // "interp" or "jit": which backend this is.
-    virtual Backend backend() const = 0;
+    // Who runs this executor's code.
+    virtual Runner runner() const = 0;
     // The following runs' check_undef instructions report to `sink`
     // (runtime/undef_sink.h; null: to no one).
     virtual void watch_undefined(UndefSink* sink) = 0;
@@ -115,46 +121,5 @@ public:
     virtual ~CompiledShader() = default;
     virtual std::unique_ptr<Executor> instantiate(const ExecParams& params) const = 0;
 };
-
-struct CodeCacheConfig;  // runtime/code_cache.h
-
-// How a JIT compile uses the code cache (runtime/code_cache.h). `config`
-// null or without a directory: not at all. `only_load`: the cached code or
-// nothing (null), never an LLVM compile. *loaded (may be null): whether the
-// code came from the cache.
-struct CodeCacheUse {
-    const CodeCacheConfig* config = nullptr;
-    bool only_load = false;
-    bool* loaded = nullptr;
-};
-
-// `shader` compiled by `backend` (Interp or Jit) for `precision`,
-// `fast_ops` and the vector ISA (`avx2`, else baseline x86-64). The JIT
-// declines what it cannot take (Reference, a recursive call graph, calls
-// that expand to too much code, a build without it): the interpreter then serves, with the same bits.
-// *llvm_seconds (may be null) receives LLVM's compile time; `quick_codegen`:
-// ExecOptions::jit_quick_codegen; `stop` (may be null): the JIT gives up
-// between its phases once it is set (the interpreter then serves); `cache`:
-// the code cache, and with only_load, null where it has no code.
-std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
-                                               uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr,
-                                               bool quick_codegen = false, const std::atomic<bool>* stop = nullptr,
-                                               CodeCacheUse cache = {});
-
-// How the JIT would compile `shader` (runtime/jit/jit.h: plan_compile; not
-// at all without the JIT).
-struct JitPlan {
-    bool take = false;   // whether the JIT compiles it at all
-    bool quick = false;  // without code-generation optimizations (same bits)
-    uint64_t nanos = 0;  // LLVM's expected CPU time
-};
-JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen);
-
-// An executor of `program`'s shader for `stage`, from the code cached on the
-// program (compiled at the first call for its key; thread-safe). The
-// program's uniforms, options and `textures` as the draw has them; the
-// draw's `budget` (ExecOptions' cancel flag and deadline with it).
-std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
-                                        const GLState::TextureUnit* textures, DrawBudget* budget);
 
 }  // namespace glslrun::rt

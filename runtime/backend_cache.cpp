@@ -7,7 +7,6 @@
 #include <chrono>
 
 #include "ir/passes.h"
-#include "runtime/compile_queue.h"
 #include "runtime/jit_plugin.h"
 
 namespace glslrun::rt {
@@ -31,7 +30,7 @@ public:
 class TimedExecutor final : public Executor {
 public:
     TimedExecutor(std::unique_ptr<Executor> inner, BackendCache::Meter& meter)
-        : inner_(std::move(inner)), meter_(meter), which_(inner_->backend() == Backend::Jit ? 1 : 0) {}
+        : inner_(std::move(inner)), meter_(meter), which_(inner_->runner() == Runner::Jit ? 1 : 0) {}
     ~TimedExecutor() override {
         meter_.nanos[which_].fetch_add(nanos_, std::memory_order_relaxed);
         meter_.lanes[which_].fetch_add(lanes_, std::memory_order_relaxed);
@@ -46,7 +45,7 @@ public:
     }
     LaneMask alive() const override { return inner_->alive(); }
     void skip_lookups(LaneMask lanes) override { inner_->skip_lookups(lanes); }
-    Backend backend() const override { return inner_->backend(); }
+    Runner runner() const override { return inner_->runner(); }
     void watch_undefined(UndefSink* sink) override { inner_->watch_undefined(sink); }
 
 private:
@@ -70,12 +69,15 @@ uint64_t expected_compile_nanos(const ir::Shader& shader, bool quick_codegen) {
 
 }  // namespace
 
-std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, const Key& key, Made* made,
-                                                      const std::atomic<bool>* stop, CodeCacheUse cache) {
-    cache.loaded = &made->loaded;
-    if (key.specialization.empty())
-        return compile_shader(shader, key.backend, key.precision, key.fast_ops, key.avx2, &made->seconds,
-                              key.quick_codegen, stop, cache);
+BackendCache::Slots::Made BackendCache::compile(const ir::Shader& shader, const Key& key,
+                                                const std::atomic<bool>* stop, CodeCacheUse cache) {
+    Slots::Made made;
+    cache.loaded = &made.loaded;
+    if (key.specialization.empty()) {
+        made.code = compile_shader(shader, key.runner, key.precision, key.fast_ops, key.avx2, &made.seconds,
+                                   key.quick_codegen, stop, cache);
+        return made;
+    }
     const std::vector<uint32_t> read = ir::uniform_words_read(shader);
     std::vector<uint32_t> store(read.empty() ? 0 : read.back() + 1);
     for (size_t i = 0; i < read.size(); ++i) store[read[i]] = key.specialization[i];
@@ -83,63 +85,30 @@ std::unique_ptr<CompiledShader> BackendCache::compile(const ir::Shader& shader, 
     const uint32_t approximated = key.precision == Precision::Fast ? key.fast_ops : 0;
     if (!ir::specialize(*specialized, store, approximated).empty()) *specialized = shader;  // a bug: unspecialized
     auto owner = std::make_unique<OwningShader>();
-    owner->code = compile_shader(*specialized, key.backend, key.precision, key.fast_ops, key.avx2, &made->seconds,
+    owner->code = compile_shader(*specialized, key.runner, key.precision, key.fast_ops, key.avx2, &made.seconds,
                                  key.quick_codegen, stop, cache);
-    if (!owner->code) return nullptr;  // only_load, and not in the cache
+    if (!owner->code) return made;  // only_load, and not in the cache
     owner->shader = std::move(specialized);
-    return owner;
-}
-
-void BackendCache::count(const Made& made) {
-    jit_compile_seconds_ += made.seconds;
-    if (made.loaded) ++compiles_.loaded;
-    else if (made.seconds > 0) ++compiles_.compiled;
-}
-
-const CompiledShader* BackendCache::ready(const Key& key) const {
-    auto found = shaders_.find(key);
-    return found == shaders_.end() ? nullptr : found->second.get();
+    made.code = std::move(owner);
+    return made;
 }
 
 const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache) {
-    std::lock_guard lock(mutex_);
-    std::unique_ptr<CompiledShader>& slot = shaders_[key];
-    if (!slot) {
-        Made made;
-        slot = compile(shader, key, &made, nullptr, {cache});
-        count(made);
-    }
-    return *slot;
+    return *slots_->get(key, [&](const std::atomic<bool>*) { return compile(shader, key, nullptr, {cache}); });
 }
 
-void BackendCache::queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock,
-                         const CodeCacheConfig* cache) {
-    if (queued_[key]) return;
-    queued_[key] = true;
-    std::weak_ptr<BackendCache> self = weak_from_this();
+void BackendCache::queue(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache) {
+    if (slots_->requested(key)) return;
     auto copy = std::make_shared<const ir::Shader>(shader);
     auto config = std::make_shared<const CodeCacheConfig>(cache ? *cache : CodeCacheConfig{});
-    auto job = [self, copy, key, config] {
-        if (self.expired()) return;  // the program is gone
-        Made made;
-        auto owner = std::make_unique<OwningShader>();
-        owner->code = compile(*copy, key, &made, &compiles_stopping(), {config.get()});
+    slots_->queue(key, [copy, key, config](const std::atomic<bool>* stop) {
+        Slots::Made made = compile(*copy, key, stop, {config.get()});
+        auto owner = std::make_unique<OwningShader>();  // the code may refer to the copy
+        owner->code = std::move(made.code);
         owner->shader = copy;
-        std::shared_ptr<BackendCache> cache = self.lock();
-        if (!cache || compiles_stopping().load()) return;
-        std::lock_guard hold(cache->mutex_);
-        std::unique_ptr<CompiledShader>& slot = cache->shaders_[key];
-        if (!slot) slot = std::move(owner);
-        cache->count(made);
-    };
-    if (!self.expired() && submit_compile(job)) return;
-    lock.unlock();  // no compile thread to be had (or a cache outside a Program): compile here
-    Made made;
-    std::unique_ptr<CompiledShader> code = compile(shader, key, &made, nullptr, {cache});
-    lock.lock();
-    std::unique_ptr<CompiledShader>& slot = shaders_[key];
-    if (!slot) slot = std::move(code);
-    count(made);
+        if (owner->code) made.code = std::move(owner);
+        return made;
+    });
 }
 
 // The stage's JIT code from the code cache, at its first draw: where there
@@ -151,12 +120,9 @@ bool BackendCache::probe(const ir::Shader& shader, const Key& plain, const CodeC
     Meter& meter = meters_[size_t(plain.stage)];
     if (meter.probed || !cache || cache->dir.empty() || !jit_plugin_loaded()) return false;
     meter.probed = true;
-    Made made;
-    std::unique_ptr<CompiledShader> code = compile(shader, plain, &made, nullptr, {cache, true});
-    count(made);
-    if (!code || !made.loaded) return false;
-    shaders_[plain] = std::move(code);
-    queued_[plain] = true;
+    Slots::Made made = compile(shader, plain, nullptr, {cache, true});
+    if (!made.code || !made.loaded) return false;
+    slots_->put(plain, std::move(made));
     meter.queued.store(true);
     return true;
 }
@@ -165,25 +131,25 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
                                                       const ExecParams& params, const CodeCacheConfig* cache) {
     Meter& meter = meters_[size_t(key.stage)];
     const int chosen = meter.choice.load(std::memory_order_relaxed);
-    if (chosen == int(Backend::Interp)) return get(shader, interp).instantiate(params);
+    if (chosen == int(Runner::Interp)) return get(shader, interp).instantiate(params);
     std::unique_lock lock(mutex_);
     Key plain = key;
     plain.specialization.clear();
     if (!meter.queued.load()) probe(shader, plain, cache);
-    const CompiledShader* jit = ready(plain);
-    if (jit && !key.specialization.empty() && chosen == int(Backend::Jit)) {
+    const CompiledShader* jit = slots_->ready(plain);
+    if (jit && !key.specialization.empty() && chosen == int(Runner::Jit)) {
         // The JIT won: specialize as ExecOptions::jit_specialize_after asks,
         // with the unspecialized code meanwhile.
-        if (const CompiledShader* specialized = ready(key)) jit = specialized;
-        else queue(shader, key, lock, cache);
+        if (const CompiledShader* specialized = slots_->ready(key)) jit = specialized;
+        else queue(shader, key, cache);
     }
     if (jit) {
         std::unique_ptr<Executor> code = jit->instantiate(params);
-        if (code->backend() != Backend::Jit) {
-            meter.choice.store(int(Backend::Interp));  // the JIT declined the shader
+        if (code->runner() != Runner::Jit) {
+            meter.choice.store(int(Runner::Interp));  // the JIT declined the shader
             return code;
         }
-        if (chosen == int(Backend::Jit)) return code;
+        if (chosen == int(Runner::Jit)) return code;
         const uint64_t jit_nanos = meter.nanos[1].load(), interp_nanos = meter.nanos[0].load();
         if (jit_nanos < kMeasureNanos) return std::make_unique<TimedExecutor>(std::move(code), meter);
         if (interp_nanos < kMeasureNanos) {
@@ -195,20 +161,20 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
         // Per lane: jit_nanos / jit_lanes against interp_nanos / interp_lanes.
         const long double jit_cost = (long double)jit_nanos * (long double)meter.lanes[0].load(),
                           interp_cost = (long double)interp_nanos * (long double)meter.lanes[1].load();
-        const Backend keep = jit_cost < interp_cost ? Backend::Jit : Backend::Interp;
+        const Runner keep = jit_cost < interp_cost ? Runner::Jit : Runner::Interp;
         meter.choice.store(int(keep));
-        if (keep == Backend::Jit) return code;
+        if (keep == Runner::Jit) return code;
         lock.unlock();
         return get(shader, interp).instantiate(params);
     }
     if (!meter.queued.load()) {
         if (meter.expected_nanos == Meter::kUnknown) meter.expected_nanos = expected_compile_nanos(shader, key.quick_codegen);
         if (meter.expected_nanos == 0) {
-            meter.choice.store(int(Backend::Interp));  // the JIT does not take it
+            meter.choice.store(int(Runner::Interp));  // the JIT does not take it
         } else if (meter.nanos[0].load() >= meter.expected_nanos) {
             meter.queued.store(true);
-            queue(shader, plain, lock, cache);
-            if (ready(plain)) {  // compiled here, without a thread
+            queue(shader, plain, cache);
+            if (slots_->ready(plain)) {  // compiled here, without a thread
                 lock.unlock();
                 return auto_executor(shader, key, interp, params, cache);
             }
@@ -236,14 +202,8 @@ std::vector<uint32_t> BackendCache::specialization(const ir::Shader& shader, con
     return streak.draws >= after ? words : std::vector<uint32_t>{};
 }
 
-double BackendCache::jit_compile_seconds() const {
-    std::lock_guard lock(mutex_);
-    return jit_compile_seconds_;
-}
+double BackendCache::jit_compile_seconds() const { return slots_->seconds(); }
 
-Program::JitCompiles BackendCache::jit_compiles() const {
-    std::lock_guard lock(mutex_);
-    return compiles_;
-}
+Program::JitCompiles BackendCache::jit_compiles() const { return slots_->compiles(); }
 
 }  // namespace glslrun::rt

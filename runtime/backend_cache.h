@@ -1,7 +1,8 @@
 // The compiled shaders of one Program, by specialization key: made at the
-// first draw that needs them and shared by every worker and later draw; and
-// Backend::Auto's policy, which picks for each stage the backend that costs
-// least over the program's life.
+// first draw that needs them (or on the compile thread: runtime/tiering.h)
+// and shared by every worker and later draw; and Backend::Auto's policy,
+// which picks for each stage the backend that costs least over the
+// program's life.
 //
 // Auto starts with the interpreter and measures its time. Once a stage has
 // spent about as long interpreting as LLVM would take to compile it
@@ -14,23 +15,22 @@
 // the same bits).
 #pragma once
 #include <atomic>
-#include <condition_variable>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <tuple>
 #include <vector>
 
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/code_cache.h"
+#include "runtime/tiering.h"
 
 namespace glslrun::rt {
 
-class BackendCache : public std::enable_shared_from_this<BackendCache> {
+class BackendCache {
 public:
     struct Key {
         ir::Stage stage;
-        Backend backend;  // Interp or Jit
+        Runner runner;
         Precision precision;
         uint32_t fast_ops;
         bool avx2;  // the vector ISA the code was made for
@@ -38,10 +38,10 @@ public:
         // A specialized shader's uniform words (those the stage reads, in
         // order: ir::uniform_words_read); empty for the unspecialized one.
         std::vector<uint32_t> specialization = {};
-        auto tie() const { return std::tie(stage, backend, precision, fast_ops, avx2, quick_codegen, specialization); }
+        auto tie() const { return std::tie(stage, runner, precision, fast_ops, avx2, quick_codegen, specialization); }
         bool operator<(const Key& o) const { return tie() < o.tie(); }
     };
-    BackendCache() = default;
+    BackendCache() : slots_(Slots::make()) {}
     BackendCache(const BackendCache&) = delete;
     BackendCache& operator=(const BackendCache&) = delete;
     ~BackendCache() = default;  // waits for nothing: queued compiles find it gone
@@ -69,10 +69,10 @@ public:
     // Auto's measurements of one stage's backends, added to by the timed
     // executors of its draws.
     struct Meter {
-        std::atomic<uint64_t> nanos[2] = {}, lanes[2] = {};  // by Backend::Interp, Backend::Jit
+        std::atomic<uint64_t> nanos[2] = {}, lanes[2] = {};  // by Runner
         std::atomic<bool> queued{false};  // the JIT's compile is queued or done
         bool probed = false;  // the code cache was asked for the stage's code (under the cache's lock)
-        std::atomic<int> choice{-1};      // the backend kept, once measured; -1 while measuring
+        std::atomic<int> choice{-1};      // the Runner kept, once measured; -1 while measuring
         static constexpr uint64_t kUnknown = ~uint64_t(0);
         uint64_t expected_nanos = kUnknown;  // LLVM's expected time (0: not taken); under the cache's lock
     };
@@ -80,23 +80,15 @@ public:
     Meter& meter(ir::Stage stage) { return meters_[size_t(stage)]; }
 
 private:
-    // What a compile made besides its code.
-    struct Made {
-        double seconds = 0;   // LLVM's
-        bool loaded = false;  // from the code cache
-    };
-    // Runs unlocked; the caller stores the code and count()s what it made.
-    static std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, const Key& key, Made* made,
-                                                   const std::atomic<bool>* stop = nullptr, CodeCacheUse cache = {});
-    void count(const Made& made);  // with the lock held
+    using Slots = CodeSlots<Key, CompiledShader>;
+    static Slots::Made compile(const ir::Shader& shader, const Key& key, const std::atomic<bool>* stop = nullptr,
+                               CodeCacheUse cache = {});
     // Backend::Auto's first draw of a stage: its code from `cache` (with the
     // lock held); false where it has none.
     bool probe(const ir::Shader& shader, const Key& plain, const CodeCacheConfig* cache);
     // Queues `key`'s compile on the compile thread (or compiles it here where
-    // there is none). Called with the lock held.
-    void queue(const ir::Shader& shader, const Key& key, std::unique_lock<std::mutex>& lock,
-               const CodeCacheConfig* cache);
-    const CompiledShader* ready(const Key& key) const;  // with the lock held
+    // there is none), with a copy of `shader`.
+    void queue(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache);
     struct Streak {
         bool surveyed = false;
         std::vector<uint32_t> read;  // the word indices the stage reads
@@ -107,11 +99,8 @@ private:
     Streak streaks_[2];  // by ir::Stage
     Meter meters_[2];    // by ir::Stage
 
-    mutable std::mutex mutex_;
-    std::map<Key, std::unique_ptr<CompiledShader>> shaders_;
-    std::map<Key, bool> queued_;  // keys whose background compile was queued
-    double jit_compile_seconds_ = 0;
-    Program::JitCompiles compiles_;
+    mutable std::mutex mutex_;  // the policy's: the streaks, a Meter's probed and expected_nanos
+    std::shared_ptr<Slots> slots_;
 };
 
 }  // namespace glslrun::rt

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "runtime/api_checks.h"
+#include "runtime/backend_factory.h"
 #include "runtime/parallel.h"
 #include "runtime/undef_sink.h"
 
@@ -67,6 +68,13 @@ float default_component(uint32_t component, const glm::vec4& fallback) {
     return component < 4 ? fallback[component] : (component % 4 == 3 ? 1.0f : 0.0f);
 }
 
+// The value of a component an input lacks: the current value where no array
+// feeds it; where an array of fewer components does, GL 2.1 §2.8's (0, 0, 0,
+// 1), not the current value (a colour array of 3 has alpha 1, whatever glColor said).
+float missing_component(const InputSource& src, uint32_t component) {
+    return default_component(component, src.attrib ? glm::vec4(0, 0, 0, 1) : src.fallback);
+}
+
 Result<std::vector<InputSource>> plan_inputs(const ir::Shader& shader,
                                              const std::vector<VertexAttrib>& attribs, uint32_t count,
                                              const GLState& current) {
@@ -94,7 +102,7 @@ Result<std::vector<InputSource>> plan_inputs(const ir::Shader& shader,
 void fill_input(rt::Executor& interp, const InputSource& src, int lane, uint32_t element) {
     const ir::Binding& b = *src.binding;
     for (uint32_t c = 0; c < b.count; ++c) {
-        float v = default_component(c, src.fallback);
+        float v = missing_component(src, c);
         if (src.attrib && c < src.attrib->components)
             v = src.attrib->data[size_t(element) * src.attrib->components + c];
         set_lane(interp, b.kind, b.first + c, lane, v);
@@ -108,7 +116,7 @@ void fill_batch(rt::Executor& interp, const InputSource& src, uint32_t base, int
     for (uint32_t c = 0; c < b.count; ++c) {
         uint32_t* dst = interp.lanes(b.first + c);
         if (!src.attrib || c >= src.attrib->components) {
-            std::fill(dst, dst + n, to_bits(b.kind, default_component(c, src.fallback)));
+            std::fill(dst, dst + n, to_bits(b.kind, missing_component(src, c)));
             continue;
         }
         const float* data = src.attrib->data.data() + size_t(base) * src.attrib->components + c;
@@ -183,7 +191,7 @@ Result<std::vector<std::vector<uint32_t>>> vertex_input_words(const ir::Shader& 
     for (const InputSource& src : *plan) {
         std::vector<uint32_t>& w = words.emplace_back();
         for (uint32_t c = 0; c < src.binding->count; ++c) {
-            float v = default_component(c, src.fallback);
+            float v = missing_component(src, c);
             if (src.attrib && c < src.attrib->components) v = src.attrib->data[size_t(element) * src.attrib->components + c];
             w.push_back(to_bits(src.binding->kind, v));
         }

@@ -58,21 +58,26 @@ void alu(const Step<uint32_t>& s, Machine<uint32_t>& m) {
     kernels::emit(s, m, [&](uint32_t* out) { kernels::alu_lanes<uint32_t, FastLane<op>>(s, out); });
 }
 
+// Fast's kernel of every op of a Fast class in the table (an op of a class
+// without its FastLane does not compile), Precise's of the others.
 template <bool kAvx2>
 Kernel<uint32_t> kernel_for(ir::Op op) {
     switch (op) {
 #define GLSLRUN_FAST_CASE(name) \
     case ir::Op::name: return pick_kernel<uint32_t, kAvx2, &alu<ir::Op::name>>();
-        GLSLRUN_FAST_CASE(frsqrt)
-        GLSLRUN_FAST_CASE(fsqrt_divisor)
-        GLSLRUN_FAST_CASE(fdiv_by_sqrt)
-        GLSLRUN_FAST_CASE(fexp)
-        GLSLRUN_FAST_CASE(fexp2)
-        GLSLRUN_FAST_CASE(flog)
-        GLSLRUN_FAST_CASE(flog2)
-        GLSLRUN_FAST_CASE(fpow)
-        GLSLRUN_FAST_CASE(fsin)
-        GLSLRUN_FAST_CASE(fcos)
+#define GLSLRUN_FAST_CASE_Exact(name)
+#define GLSLRUN_FAST_CASE_Rsqrt GLSLRUN_FAST_CASE
+#define GLSLRUN_FAST_CASE_ExpLog GLSLRUN_FAST_CASE
+#define GLSLRUN_FAST_CASE_Pow GLSLRUN_FAST_CASE
+#define GLSLRUN_FAST_CASE_SinCos GLSLRUN_FAST_CASE
+#define OP(name, arity, res, opnd, kind, fast, props, expr) GLSLRUN_FAST_CASE_##fast(name)
+#include "ir/opcodes.def"
+#undef OP
+#undef GLSLRUN_FAST_CASE_SinCos
+#undef GLSLRUN_FAST_CASE_Pow
+#undef GLSLRUN_FAST_CASE_ExpLog
+#undef GLSLRUN_FAST_CASE_Rsqrt
+#undef GLSLRUN_FAST_CASE_Exact
 #undef GLSLRUN_FAST_CASE
     default: return rt::kernel_for<uint32_t, kAvx2>(op);
     }

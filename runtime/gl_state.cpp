@@ -132,12 +132,12 @@ void emit_fixed_defaults(const Emit& emit, const GLState& gl) {
     emit_float(emit, "gl_DepthRange.diff", gl.depth_far - gl.depth_near);
     emit("gl_ClipPlane", &gl.clip_planes[0][0], 24);
     emit_float(emit, "gl_Point.size", gl.point_size);
-    emit_float(emit, "gl_Point.sizeMin", 0.0f);
-    emit_float(emit, "gl_Point.sizeMax", 255.0f);
-    emit_float(emit, "gl_Point.fadeThresholdSize", 1.0f);
-    emit_float(emit, "gl_Point.distanceConstantAttenuation", 1.0f);
-    emit_float(emit, "gl_Point.distanceLinearAttenuation", 0.0f);
-    emit_float(emit, "gl_Point.distanceQuadraticAttenuation", 0.0f);
+    emit_float(emit, "gl_Point.sizeMin", gl.point_size_min);
+    emit_float(emit, "gl_Point.sizeMax", gl.point_size_max);
+    emit_float(emit, "gl_Point.fadeThresholdSize", gl.point_fade_threshold_size);
+    emit_float(emit, "gl_Point.distanceConstantAttenuation", gl.point_distance_attenuation[0]);
+    emit_float(emit, "gl_Point.distanceLinearAttenuation", gl.point_distance_attenuation[1]);
+    emit_float(emit, "gl_Point.distanceQuadraticAttenuation", gl.point_distance_attenuation[2]);
     emit_vec(emit, "gl_LightModel.ambient", gl.light_model_ambient);
     std::vector<float> zeros(kMaxUnits * 4, 0.0f);
     emit("gl_TextureEnvColor", zeros.data(), zeros.size());

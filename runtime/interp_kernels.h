@@ -108,14 +108,14 @@ Step<W> instr_step(const ir::Instr& in, Kernel<W> fn, RegOf&& reg) {
     Step<W> s;
     s.fn = fn;
     s.dst = in.dst == ir::kNoReg ? nullptr : reg(in.dst);
-    s.unmasked = in.unmasked;
+    s.unmasked = in.unmasked && !ir::has(in.op, ir::OpProp::Blends);
     s.type = in.type;
     s.value = widen<W>(in.type, in.imm[0]);
     for (int k = 0; k < 3; ++k) {
         s.src[k] = reg(in.src[k]);
         s.imm[k] = in.imm[k];
     }
-    if (in.op == ir::Op::tex) s.src[1] = reg(in.imm[0]);  // the operand block
+    if (ir::has(in.op, ir::OpProp::Texture)) s.src[1] = reg(in.imm[0]);  // the operand block
     return s;
 }
 
@@ -331,7 +331,7 @@ Kernel<W> kernel_for(ir::Op op) {
     case ir::Op::name: return pick_kernel<W, kAvx2, &kernels::alu<W, ir::Op::name>>();
 #define GLSLRUN_KERNEL_Special(name) \
     case ir::Op::name: return pick_kernel<W, kAvx2, &kernels::name<W>>();
-#define OP(name, arity, res, opnd, kind, fast, expr) GLSLRUN_KERNEL_##kind(name)
+#define OP(name, arity, res, opnd, kind, fast, props, expr) GLSLRUN_KERNEL_##kind(name)
 #include "ir/opcodes.def"
 #undef OP
 #undef GLSLRUN_KERNEL_Special

@@ -41,7 +41,7 @@ public:
     bool run(LaneMask live, RunError* error) override;
     LaneMask alive() const override;
     void skip_lookups(LaneMask lanes) override;
-    Backend backend() const override { return Backend::Interp; }
+    Runner runner() const override { return Runner::Interp; }
     void watch_undefined(UndefSink* sink) override;
 
 private:

@@ -23,6 +23,7 @@
 
 namespace glslrun::raster::fused {
 struct Pipeline;
+struct PipelineCompile;
 struct State;
 }  // namespace glslrun::raster::fused
 
@@ -36,7 +37,8 @@ struct JitEntryPoints {
     // runtime/jit/jit.h's compile and raster/fused/pipeline.h's.
     std::unique_ptr<CompiledShader> (*compile)(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                                bool avx2, bool quick_codegen, jit::CompileStats* stats);
-    std::unique_ptr<raster::fused::Pipeline> (*compile_pipeline)(const raster::fused::State& state, double* seconds);
+    std::unique_ptr<raster::fused::Pipeline> (*compile_pipeline)(const raster::fused::State& state,
+                                                                 raster::fused::PipelineCompile* compile);
 };
 
 // The plugin's entry points, loaded at the first call (thread-safe; the

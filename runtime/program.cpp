@@ -78,10 +78,10 @@ Result<Program> Program::compile(const std::vector<ShaderSource>& vertex,
     initialise_uniforms(st.ir, st.uniforms);
     if (!vertex.empty()) st.vertex_name = vertex.front().name;
     if (!fragment.empty()) st.fragment_name = fragment.front().name;
+    st.options = options;
     if (vertex.empty() || fragment.empty()) {
         st.vertex_sources = vertex;
         st.fragment_sources = fragment;
-        st.options = options;
     }
     return program;
 }

@@ -20,11 +20,14 @@ struct Program::State {
     ir::Program ir;
     std::vector<uint32_t> uniforms;  // ir.uniform_words words, GL default 0
     std::string vertex_name, fragment_name;  // first source of each stage, for run-time errors
-    // A program compiled without one of its stages keeps its sources and
-    // options: the scene library links them again with the fixed-function
-    // stage it generates from each draw's GL state (scene/ffp_*.cpp).
-    // Empty for a program of both stages.
+    // A program compiled without one of its stages keeps its sources: the
+    // scene library links them again with the fixed-function stage it
+    // generates from each draw's GL state (scene/ffp_*.cpp). Empty for a
+    // program of both stages.
     std::vector<ShaderSource> vertex_sources, fragment_sources;
+    // The options it was compiled with: the programs a scene's passes name,
+    // the generated fixed-function stages' links and the debugger's twins
+    // compile with the same -D and -I.
     CompileOptions options;
     // draw()'s working memory, reused by the next draw: a raster::DrawScratch
     // (raster/scratch.h) made at the first draw. The runtime does not know the

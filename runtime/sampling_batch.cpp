@@ -72,7 +72,9 @@ void lambdas(const Texture& texture, const BatchLookup& lk, Lanes& l) {
                 lambda[i] = lod_of(texture, {lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]},
                                    {lk.ddx[0][i], lk.ddx[1][i], lk.ddx[2][i]}, {lk.ddy[0][i], lk.ddy[1][i], lk.ddy[2][i]});
         } else {
-            const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
+            // A rectangle's (u, v) are in texels already: the size factors of §3.8.8 are 1.
+            const bool rect = texture.target() == TextureTarget::Rect;
+            const glm::vec3 size = rect ? glm::vec3(1.0f) : image_size(*level_image(texture, 0, st.base_level));
             const int dims = texture_dims(texture.target());
             const float* __restrict dxs = lk.ddx[0];
             const float* __restrict dxt = lk.ddx[1];
@@ -180,11 +182,30 @@ void linear_lanes(const float* __restrict s, N n, int* __restrict i0, int* __res
     }
 }
 
+// A rectangle's NEAREST and LINEAR indices on one axis for every lane:
+// rect_nearest_index<kWrap>() and rect_linear_axis<kWrap>() (u unnormalized).
+template <TextureWrap kWrap, bool kRound>
+void rect_lanes(bool linear, const float* __restrict u, int n, int* __restrict i0, int* __restrict i1,
+                float* __restrict a) {
+    if (!linear) {
+        for (int i = 0; i < kLanes; ++i) i0[i] = rect_nearest_index<kWrap, kRound>(u[i], n);
+        return;
+    }
+    for (int i = 0; i < kLanes; ++i) {
+        const LinearAxis axis = rect_linear_axis<kWrap, kRound>(u[i], n);
+        i0[i] = axis.i0;
+        i1[i] = axis.i1;
+        a[i] = axis.a;
+    }
+}
+
 // `kRound`: floor_t()'s roundps, in the AVX2 build only (the same bits).
-template <bool kRound = false, class N>
+// `kRect`: a rectangle's unnormalized coordinates (one image: OneSize).
+template <bool kRound = false, bool kRect = false, class N>
 void axis_indices(TextureWrap wrap, bool linear, const float* s, N n, int* i0, int* i1, float* a) {
     with_wrap(wrap, [&]<TextureWrap kWrap>() {
-        if (linear) linear_lanes<kWrap, kRound>(s, n, i0, i1, a);
+        if constexpr (kRect) rect_lanes<kWrap, kRound>(linear, s, n.n, i0, i1, a);
+        else if (linear) linear_lanes<kWrap, kRound>(s, n, i0, i1, a);
         else nearest_lanes<kWrap, kRound>(s, n, i0);
     });
 }
@@ -303,6 +324,7 @@ GLSLRUN_AVX2 void blend8(const glm::vec4* texels, const int (*at)[kLanes], const
     const __m256 a = _mm256_loadu_ps(&az[g]), ia = _mm256_sub_ps(_mm256_set1_ps(1.0f), a);
     for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], mix8(near[c], far[c], a, ia));
 }
+
 #undef GLSLRUN_AVX2
 #endif
 
@@ -437,23 +459,25 @@ void nearest_in_image(const TextureImage& image, const Lookup& proto, int dims, 
 // they are selected away). The sizes are the image's, not the lanes', and
 // nothing per lane decides a level or a filter. Linear blends without the
 // border or a comparison go four or eight lanes at a time; the others lane
-// by lane. `coord`: the lanes' (s, t, r) on the image.
-template <bool kAvx2>
-void sample_image(const TextureImage& image, Lookup proto, bool linear, const float* const* coord, const int* active,
+// by lane. `coord`: the lanes' (s, t, r) on the image; `kRect`: a
+// rectangle's unnormalized (u, v).
+template <bool kAvx2, bool kRect = false>
+[[gnu::always_inline]] inline void sample_image(const TextureImage& image, Lookup proto, bool linear, const float* const* coord, const int* active,
                   Lanes& l, float (*out)[kLanes]) {
     const SamplerState& st = *proto.st;
     const int dims = proto.dims;
     const OneSize w{image.width}, h{image.height}, d{image.depth};
     if (!linear) {
         alignas(32) int nx[kLanes], ny[kLanes], nz[kLanes];
-        axis_indices<kAvx2>(st.wrap_s, false, coord[0], w, nx, nullptr, nullptr);
-        if (dims > 1) axis_indices<kAvx2>(st.wrap_t, false, coord[1], h, ny, nullptr, nullptr);
-        if (dims > 2) axis_indices<kAvx2>(st.wrap_r, false, coord[2], d, nz, nullptr, nullptr);
+        axis_indices<kAvx2, kRect>(st.wrap_s, false, coord[0], w, nx, nullptr, nullptr);
+        if (dims > 1) axis_indices<kAvx2, kRect>(st.wrap_t, false, coord[1], h, ny, nullptr, nullptr);
+        if (dims > 2) axis_indices<kAvx2, kRect>(st.wrap_r, false, coord[2], d, nz, nullptr, nullptr);
         // NEAREST meets the border under CLAMP_TO_BORDER only (CLAMP clamps to the edge texels).
         const bool border = st.wrap_s == TextureWrap::ClampToBorder ||
                             (dims > 1 && st.wrap_t == TextureWrap::ClampToBorder) ||
                             (dims > 2 && st.wrap_r == TextureWrap::ClampToBorder);
-        if (!border) return nearest_in_image(image, proto, dims, nx, ny, nz, l, out);
+        // The axes the target lacks read nx (selected away): never an unset array.
+        if (!border) return nearest_in_image(image, proto, dims, nx, dims > 1 ? ny : nx, dims > 2 ? nz : nx, l, out);
         for (int i = 0; i < kLanes; ++i) {
             proto.ref = l.ref[i];
             if (!active[i]) put(out, i, splat_texel(0.0f));  // defined, for the loops that select it away
@@ -461,9 +485,9 @@ void sample_image(const TextureImage& image, Lookup proto, bool linear, const fl
         }
         return;
     }
-    axis_indices<kAvx2>(st.wrap_s, true, coord[0], w, l.x0, l.x1, l.ax);
-    if (dims > 1) axis_indices<kAvx2>(st.wrap_t, true, coord[1], h, l.y0, l.y1, l.ay);
-    if (dims > 2) axis_indices<kAvx2>(st.wrap_r, true, coord[2], d, l.z0, l.z1, l.az);
+    axis_indices<kAvx2, kRect>(st.wrap_s, true, coord[0], w, l.x0, l.x1, l.ax);
+    if (dims > 1) axis_indices<kAvx2, kRect>(st.wrap_t, true, coord[1], h, l.y0, l.y1, l.ay);
+    if (dims > 2) axis_indices<kAvx2, kRect>(st.wrap_r, true, coord[2], d, l.z0, l.z1, l.az);
     const bool border = may_border(st.wrap_s) || (dims > 1 && may_border(st.wrap_t)) ||
                         (dims > 2 && may_border(st.wrap_r));
 #if defined(__SSE2__)
@@ -527,6 +551,30 @@ void sample_one_image(const Texture& texture, const BatchLookup& lk, const int* 
                        texture.depth() && st.compare, 0.0f};
     sample_image<kAvx2>(texture.levels(0)[size_t(st.base_level)], proto, linear_within_level(st.mag_filter),
                         lk.coord, active, l, l.rgba);
+}
+
+// A rectangle's lookups into l.rgba (sample_rect_lane()'s rules): one image,
+// one level; the magnification switch (c = 0) per lane only where the two
+// filters differ, each filter's lanes then sampled apart and selected.
+template <bool kAvx2>
+void sample_rect(const Texture& texture, const BatchLookup& lk, const int* active, Lanes& l) {
+    const SamplerState& st = texture.sampler;
+    const Lookup proto{&texture, &st, 0, 2, glm::vec3(0.0f), texture.depth() && st.compare, 0.0f};
+    const TextureImage& image = texture.levels(0)[0];
+    const bool mag_linear = linear_within_level(st.mag_filter);
+    if (mag_linear == linear_within_level(st.min_filter))
+        return sample_image<kAvx2, true>(image, proto, mag_linear, lk.coord, active, l, l.rgba);
+    lambdas(texture, lk, l);
+    alignas(32) int mag[kLanes], min[kLanes];
+    for (int i = 0; i < kLanes; ++i) {
+        const int magnified = int(l.lambda[i] <= 0.0f);
+        mag[i] = active[i] & magnified;
+        min[i] = active[i] & (magnified ^ 1);
+    }
+    sample_image<kAvx2, true>(image, proto, mag_linear, lk.coord, mag, l, l.rgba);
+    sample_image<kAvx2, true>(image, proto, !mag_linear, lk.coord, min, l, l.second);
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) l.rgba[c][i] = min[i] ? l.second[c][i] : l.rgba[c][i];
 }
 
 // The first active lane where every active lane has its face, its level(s)
@@ -599,7 +647,8 @@ template <bool kAvx2>
         const uint32_t bits = uint32_t(lanes >> base);
         for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
     }
-    if (one_image(texture)) sample_one_image<kAvx2>(texture, lk, active, l);
+    if (texture.target() == TextureTarget::Rect) sample_rect<kAvx2>(texture, lk, active, l);
+    else if (one_image(texture)) sample_one_image<kAvx2>(texture, lk, active, l);
     else sample_levels_of_lanes<kAvx2>(texture, lk, active, l);
     const SamplerState& st = texture.sampler;
     if (texture.depth())

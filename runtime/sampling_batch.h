@@ -3,8 +3,8 @@
 // and cube faces, the level of detail, the mipmap levels, the texel indices
 // of each axis), in lane loops that the compiler vectorises, 8 lanes at a
 // time under AVX2. Where every lane reads one image with one filter (no
-// mipmaps, not a cube map: 1D, 2D and 3D alike) the level and face steps
-// are skipped and the image's sizes are constants. Linear blends that cannot
+// mipmaps, not a cube map: 1D, 2D, 3D and rectangles alike) the level and
+// face steps are skipped and the image's sizes are constants. Linear blends that cannot
 // meet the border or a depth comparison fetch 4 lanes at a time (8 under
 // AVX2), the texels transposed into channels; the others lane by lane, four
 // channels in one register. Every value comes from the same functions as

@@ -15,8 +15,9 @@
 // is allowed) reads lambda = log2(rho) with rho from the derivatives of
 // (u, v) themselves. Everything else (the depth comparison, the border
 // colour, DEPTH_TEXTURE_MODE, the filters' blend) is sampling_rules.h's.
-// Rectangles are rare and small in the programs of the era, so they take
-// no batched path: both backends call this through the `tex` kernel.
+// The batched sampler (sampling_batch.cpp) takes rectangles too, with the
+// same index functions (sampling_rules.h); this is the lane-by-lane oracle
+// and sample_texture()'s path.
 #include "runtime/sampling.h"
 
 #include "runtime/sampling_rules.h"
@@ -28,25 +29,11 @@ using namespace sampling;
 namespace {
 
 int rect_nearest_index(TextureWrap wrap, float u, int n) {
-    const int i = floor_int(u);
-    return wrap == TextureWrap::ClampToBorder ? border_or_index(i, n) : std::clamp(i, 0, n - 1);
+    return with_wrap(wrap, [&]<TextureWrap kWrap>() { return sampling::rect_nearest_index<kWrap>(u, n); });
 }
 
 LinearAxis rect_linear_axis(TextureWrap wrap, float u, int n) {
-    const float size = float(n);
-    float x = 0.0f;
-    switch (wrap) {
-    case TextureWrap::ClampToEdge: {
-        x = clamp_or_low(u, 0.5f, size - 0.5f) - 0.5f;
-        const int i0 = floor_int(x);
-        // At u = w - 1/2, i1 is past the image with weight 0: kept on the last texel.
-        return {std::min(i0, n - 1), std::min(i0 + 1, n - 1), x - floor_f(x)};
-    }
-    case TextureWrap::Clamp: x = clamp_or_low(u, 0.0f, size) - 0.5f; break;
-    default: x = clamp_or_low(u, -0.5f, size + 0.5f) - 0.5f; break;  // CLAMP_TO_BORDER
-    }
-    const int i0 = floor_int(x);
-    return {border_or_index(i0, n), border_or_index(i0 + 1, n), x - floor_f(x)};
+    return with_wrap(wrap, [&]<TextureWrap kWrap>() { return sampling::rect_linear_axis<kWrap>(u, n); });
 }
 
 Texel rect_level(const Lookup& lk, const TextureImage& image, bool linear) {

@@ -179,6 +179,34 @@ template <TextureWrap kWrap, bool kRound = false>
     return with_wrap(wrap, [&]<TextureWrap kWrap>() { return linear_axis<kWrap>(s, n); });
 }
 
+// ARB_texture_rectangle's indices (sampling_rect.cpp says the rules): u is
+// the unnormalized coordinate, not s * size. Only the clamping wraps are
+// complete for a rectangle; the others take CLAMP's NEAREST and
+// CLAMP_TO_BORDER's LINEAR, as every sampler of rectangles does.
+template <TextureWrap kWrap, bool kRound = false>
+[[gnu::always_inline]] inline int rect_nearest_index(float u, int n) {
+    const int i = floor_int<kRound>(u);
+    return kWrap == TextureWrap::ClampToBorder ? border_or_index(i, n) : std::clamp(i, 0, n - 1);
+}
+
+template <TextureWrap kWrap, bool kRound = false>
+[[gnu::always_inline]] inline LinearAxis rect_linear_axis(float u, int n) {
+    const float size = float(n);
+    float x = 0.0f;
+    switch (kWrap) {
+    case TextureWrap::ClampToEdge: {
+        x = clamp_or_low(u, 0.5f, size - 0.5f) - 0.5f;
+        const int i0 = floor_int<kRound>(x);
+        // At u = w - 1/2, i1 is past the image with weight 0: kept on the last texel.
+        return {std::min(i0, n - 1), std::min(i0 + 1, n - 1), x - floor_t<kRound>(x)};
+    }
+    case TextureWrap::Clamp: x = clamp_or_low(u, 0.0f, size) - 0.5f; break;
+    default: x = clamp_or_low(u, -0.5f, size + 0.5f) - 0.5f; break;  // CLAMP_TO_BORDER
+    }
+    const int i0 = floor_int<kRound>(x);
+    return {border_or_index(i0, n), border_or_index(i0 + 1, n), x - floor_t<kRound>(x)};
+}
+
 // ------------------------------------------------------------ lookup ---
 // The table of §3.8.6: per face, the major axis and which component (with which
 // sign) becomes sc and tc.

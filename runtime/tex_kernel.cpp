@@ -144,19 +144,14 @@ void tex(const Step<W>& s, Machine<W>& m) {
         left &= ~lanes;
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
-        // Rectangles (unnormalized coordinates) have their own lane sampler, sampling_rect.cpp.
-        const bool rect = texture->target() == TextureTarget::Rect;
-        if (!rect && batch_samples(*texture)) {
+        if (batch_samples(*texture)) {
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;
         }
         for (int i = 0; i < kLanes; ++i) {
             if (!((lanes >> i) & 1)) continue;
             float texel[ir::kTexResults];
-            if (rect)
-                sample_rect_lane(*texture, lane_lookup(info, ops, i), texel);
-            else
-                sample_complete_lane(*texture, lane_lookup(info, ops, i), texel);
+            sample_complete_lane(*texture, lane_lookup(info, ops, i), texel);
             for (uint32_t c = 0; c < ir::kTexResults; ++c) out[c][i] = texel[c];
         }
     }

@@ -28,7 +28,7 @@ struct Frame {
 
 Result<Program> compile_for(const std::vector<ShaderSource>& vertex, const std::vector<ShaderSource>& fragment,
                             Precision precision, const ErrorReportOptions& options) {
-    auto prog = Program::compile(vertex, fragment);
+    auto prog = Program::compile(vertex, fragment, options.compile);
     if (!prog) return prog.error();
     prog->exec.precision = precision;
     prog->exec.threads = options.threads;

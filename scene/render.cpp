@@ -5,11 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "runtime/program_state.h"
 #include "scene/scene_reader.h"
 #include "scene/text_file.h"
 
@@ -108,14 +110,22 @@ std::string color_buffer_path(const std::string& output, int buffer) {
     return (p.parent_path() / fmt::format("{}.{}{}", p.stem().string(), buffer, p.extension().string())).string();
 }
 
-Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings, bool skip_undeclared) {
-    if (settings.empty()) return Ok{};
-    std::vector<UniformInfo> infos = program.uniforms();
+namespace {
+
+Status apply_settings(Program& program, const std::vector<UniformInfo>& infos,
+                      const std::vector<UniformSetting>& settings, bool skip_undeclared) {
     for (const UniformSetting& s : settings) {
         if (skip_undeclared && !find_declaration(infos, s.name)) continue;
         if (Status st = apply_one(program, infos, s); !st) return st;
     }
     return Ok{};
+}
+
+}  // namespace
+
+Status apply_uniforms(Program& program, const std::vector<UniformSetting>& settings, bool skip_undeclared) {
+    if (settings.empty()) return Ok{};
+    return apply_settings(program, program.uniforms(), settings, skip_undeclared);
 }
 
 Result<GLState> bind_scene_textures(const Scene& scene) {
@@ -148,6 +158,10 @@ std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const Compil
 Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
                                     const Pass& pass);
 Status check_fixed_state_builtins(const Program& program, const Scene& scene);
+
+Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
+    return compile(main, scene, state_of(main).options);
+}
 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, const CompileOptions& options) {
     ScenePrograms programs;
@@ -240,12 +254,19 @@ Result<DrawStats> draw_pass(const ScenePrograms& programs, size_t index, const S
     if (pass)
         if (Status st = apply_uniforms(program, pass->uniforms); !st) return st.error();
     DrawStats total;
+    // The program's uniforms, listed once for all its objects: a list of
+    // strings made and freed per object was most of a small draw's CPU time
+    // outside the rasterizer (bench/corpus/many_draws).
+    std::optional<std::vector<UniformInfo>> infos;
     auto draw_object = [&](const Object& object) -> Status {
         // glBindTexture: context state, so it stays for the objects after this one.
         for (const TextureSetting& t : object.textures)
             if (Status st = bound.bind_texture(t.unit, t.texture); !st) return st;
         GLState gl = object_gl_state(scene, bound, object, pass);
-        if (Status st = apply_uniforms(program, object.uniforms, lenient); !st) return st;
+        if (!object.uniforms.empty()) {
+            if (!infos) infos = program.uniforms();
+            if (Status st = apply_settings(program, *infos, object.uniforms, lenient); !st) return st;
+        }
         const Mesh& m = object.mesh;
         std::vector<VertexAttrib> with_current;
         if (!scene.current_attributes.empty()) with_current = attribs_with_current(scene, m);

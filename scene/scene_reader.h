@@ -115,6 +115,9 @@ const std::vector<std::string_view>& compare_func_names();
 // [state]'s per-fragment operations (scene_fragment_state.cpp).
 const std::vector<std::string_view>& fragment_state_keys();
 void read_fragment_state(const Section& s, GLState& gl);
+// [state]'s point parameters, line and polygon stipples (scene_stipple_state.cpp).
+const std::vector<std::string_view>& stipple_state_keys();
+void read_stipple_state(const Section& s, GLState& gl);
 // [objects.state]: each object's state is the scene's final state with its own keys on top.
 void read_object_states(const toml::node& objects, Scene& scene);
 void read_uniforms(const toml::node& n, const std::string& what, std::vector<UniformSetting>& out);

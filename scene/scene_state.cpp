@@ -233,6 +233,7 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
                                           "polygon_offset_point", "line_width", "point_sprite", "coord_replace",
                                           "viewport"};
     keys.insert(keys.end(), fragment_state_keys().begin(), fragment_state_keys().end());
+    keys.insert(keys.end(), stipple_state_keys().begin(), stipple_state_keys().end());
     s.allow(keys);
     s.read("depth_test", gl.depth_test);
     if (auto n = s.get("depth_func"))
@@ -252,6 +253,7 @@ void read_state_section(const Section& s, const glm::mat4& view, GLState& gl) {
     read_point_sprite(s, gl);
     read_viewport(s, gl);
     read_fragment_state(s, gl);
+    read_stipple_state(s, gl);
 }
 
 void read_material(const Section& s, MaterialState& m) {

@@ -457,6 +457,11 @@ struct MaterialState {
 };
 struct GLState {
     GLState();  // light 0 gets its special diffuse/specular defaults
+    static constexpr std::array<uint32_t, 32> filled_stipple() {
+        std::array<uint32_t, 32> rows{};
+        for (uint32_t& r : rows) r = 0xFFFFFFFFu;
+        return rows;
+    }
     glm::mat4 modelview{1.0f}, projection{1.0f};
     std::array<glm::mat4, 8> texture_matrix;
     std::array<LightState, 8> lights;
@@ -469,6 +474,30 @@ struct GLState {
     // glEnable(GL_VERTEX_PROGRAM_POINT_SIZE): points take the vertex shader's
     // gl_PointSize; off (GL's default), point_size (glPointSize).
     bool vertex_program_point_size = false;
+    // glPointParameter (GL 1.4): without the vertex shader's size, a point's
+    // is point_size clamped to [point_size_min, point_size_max]; GL's
+    // fixed-function vertex stage first multiplies it by 1 / sqrt(a + b d +
+    // c d^2), d the eye distance (as Mesa: |z| in eye space), a b c
+    // point_distance_attenuation. The fade threshold only matters with
+    // multisampling (GL 2.1 §3.3), which glslrun does not have: it reaches
+    // shaders as gl_Point.fadeThresholdSize. All of them are >= 0.
+    float point_size_min = 0, point_size_max = 255;  // 255: the largest point Mesa draws
+    glm::vec3 point_distance_attenuation{1, 0, 0};
+    float point_fade_threshold_size = 1;
+    // GL_POINT_SPRITE_COORD_ORIGIN: gl_PointCoord's t runs down from the
+    // top (GL_UPPER_LEFT, GL's default) or up from the bottom (GL_LOWER_LEFT).
+    bool point_sprite_coord_lower_left = false;
+    // glEnable(GL_LINE_STIPPLE) + glLineStipple(repeat, pattern): the
+    // fragments of a line whose bit (counter / repeat) % 16 of the pattern
+    // is 0 are not drawn (GL 2.1 §3.5.2); repeat in [1, 256].
+    bool line_stipple = false;
+    int line_stipple_repeat = 1;
+    uint16_t line_stipple_pattern = 0xFFFF;
+    // glEnable(GL_POLYGON_STIPPLE) + glPolygonStipple: filled polygons keep
+    // the pixels (x, y) whose bit 31 - x % 32 of row y % 32 is set (rows
+    // bottom up; bit 31 is the leftmost pixel, as glPolygonStipple's first byte's high bit).
+    bool polygon_stipple = false;
+    std::array<uint32_t, 32> polygon_stipple_pattern = filled_stipple();
     struct Fog { glm::vec4 color{0, 0, 0, 0}; float density = 1, start = 0, end = 1; } fog;
     bool light_model_local_viewer = false, light_model_two_side = false;  // fixed function only
     glm::vec4 current_color{1, 1, 1, 1};     // glColor, for gl_Color without an array

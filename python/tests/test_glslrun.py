@@ -286,3 +286,26 @@ def test_code_cache(tmp_path):
     with pytest.warns(RuntimeWarning, match="cannot be written"):
         image = glslrun.render(*SPOT, backend="jit", cache_dir=str(blocker / "cache"))
     np.testing.assert_array_equal(image, glslrun.render(*SPOT, backend="interp", cache=False))
+
+
+def test_include_dirs(tmp_path):
+    # As the command line's -I: `#include` looks beside the including file, then in include_dirs.
+    lib = tmp_path / "lib"
+    lib.mkdir()
+    (lib / "colour.glsl").write_text("vec4 colour() { return vec4(0.5, 1.0, 0.0, 1.0); }\n")
+    main = tmp_path / "main.frag"
+    main.write_text('#extension GL_GOOGLE_include_directive : require\n#include "colour.glsl"\n'
+                    "void main() { gl_FragColor = colour(); }\n")
+    flat = tmp_path / "flat.frag"
+    flat.write_text("void main() { gl_FragColor = vec4(0.5, 1.0, 0.0, 1.0); }\n")
+    vert, scene = path("shaders", "colors.vert"), path("scenes", "quad.toml")
+    with pytest.raises(glslrun.Error, match="colour.glsl"):
+        glslrun.Program.from_files(vert, str(main))
+    glslrun.Program.from_files(vert, str(main), include_dirs=[str(lib)])
+    glslrun.Program.compile(open(vert).read(), [(str(main), main.read_text())], include_dirs=[str(lib)])
+    expected = glslrun.render(vert, str(flat), scene, backend="interp")
+    np.testing.assert_array_equal(glslrun.render(vert, str(main), scene, backend="interp", include_dirs=[str(lib)]),
+                                  expected)
+    assert glslrun.check_undefined(vert, str(main), scene, backend="interp", include_dirs=[str(lib)]) == []
+    report = glslrun.error_report(vert, str(main), scene, mode="fast", include_dirs=[str(lib)])
+    assert report["mode"] == "fast"

@@ -59,6 +59,8 @@ SETTINGS = [
     ("set_texture_matrix", (0,), {"transform": [{"scale": [2, 3, 1]}]},
      '[texture_matrix.0]\ntransform = [{ scale = [2, 3, 1] }]\n'),
     ("set_current", (), {"fog_coord": 1.0}, '[current]\nfog_coord = 1.0\n'),  # the quads have colours of their own
+    ("set_state", (), {"polygon_stipple": True, "polygon_stipple_pattern": [0xAAAAAAAA, 0x55555555]},
+     '[state]\npolygon_stipple = true\npolygon_stipple_pattern = [0xAAAAAAAA, 0x55555555]\n'),
 ]
 
 

@@ -22,15 +22,14 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "glslrun/glslrun.h"
 #include "raster/fused/state.h"
 #include "runtime/backend.h"
+#include "runtime/tiering.h"
 
 namespace glslrun::raster::fused {
 
@@ -77,6 +76,14 @@ struct Pipeline {
     OutputsFn outputs = nullptr;
 };
 
+// A pipeline's compile: in, the code cache (may be null: none); out,
+// LLVM's time (thread CPU) and whether the code came from the cache.
+struct PipelineCompile {
+    const rt::CodeCacheConfig* cache = nullptr;
+    double seconds = 0;
+    bool loaded = false;
+};
+
 // A program's draws take the fused pipeline once it has shaded this many
 // fragments without it: a pipeline costs 8 to 15 ms of LLVM's time (thread
 // CPU, docs/performance.md), which it saves back over about a million
@@ -84,39 +91,37 @@ struct Pipeline {
 // programs, which draw a few small rectangles each, never compile one.
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
-// The pipelines of one Program, by key, compiled once and shared by its
-// workers and later draws. Without `wait`, null until a compile queued on
-// the process's compile thread (runtime/compile_queue.h) is done.
-class Cache : public std::enable_shared_from_this<Cache> {
+// The pipelines of one Program, by state_key(), compiled once and shared by
+// its workers and later draws (runtime/tiering.h). Without `wait`, null
+// until a compile queued on the process's compile thread is done.
+class Cache {
 public:
-    Cache() = default;
+    Cache() : slots_(Slots::make()) {}
     Cache(const Cache&) = delete;
     Cache& operator=(const Cache&) = delete;
     ~Cache() = default;  // waits for nothing: queued compiles find it gone
 
     // Null where the JIT is not built in or declined the key, and until the
     // program has shaded kPipelineAfterFragments fragments without one.
-    const Pipeline* get(const State& state, bool wait);
+    // `options`: the code cache's (code_cache_config), read only to compile.
+    const Pipeline* get(const State& state, bool wait, const ExecOptions& options);
     // Counts fragments the program shaded without a pipeline.
     void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
     // Seconds LLVM spent on this program's pipelines so far.
-    double compile_seconds() const;
+    double compile_seconds() const { return slots_->seconds(); }
+    // The pipelines compiled by LLVM, and loaded from the code cache, so far.
+    Program::JitCompiles counts() const { return slots_->compiles(); }
 
 private:
-    mutable std::mutex mutex_;
-    // By state_key().
-    std::map<std::string, std::unique_ptr<Pipeline>> pipelines_;
-    std::map<std::string, bool> done_;  // compiled (the pipeline may still be null: declined)
-    // Stores a compile's result (under the lock); leaves `code` where the key has one.
-    void store(const std::string& key, std::unique_ptr<Pipeline>& code, double seconds);
-    double compile_seconds_ = 0;
+    using Slots = rt::CodeSlots<std::string, Pipeline>;
+    std::shared_ptr<Slots> slots_;
     std::atomic<uint64_t> unfused_{0};
 };
 
-// The generated functions of `state`; null where it is not fusable() or
-// LLVM failed. *seconds (may be null): LLVM's time (thread CPU).
-// (raster/fused/gen/, in the JIT plugin: Cache::get calls it through
-// rt::jit_plugin().)
-std::unique_ptr<Pipeline> compile(const State& state, double* seconds);
+// The generated functions of `state`, from the code cache where it has
+// them; null where it is not fusable() or LLVM failed. `compile` may be
+// null. (raster/fused/gen/, in the JIT plugin: Cache::get calls it
+// through rt::jit_plugin().)
+std::unique_ptr<Pipeline> compile(const State& state, PipelineCompile* compile);
 
 }  // namespace glslrun::raster::fused

@@ -1,6 +1,7 @@
 // The emitter of one shader's LLVM IR (runtime/jit/jit.h): control.cpp
 // writes the functions, blocks and masks, alu.cpp the instructions.
 #pragma once
+#include <optional>
 #include <vector>
 #include <string>
 
@@ -53,7 +54,8 @@ private:
     void emit_instr(const ir::Instr& in);
     bool emit_native(const ir::Instr& in, llvm::Value** result);
     llvm::Value* emit_float_op(ir::Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c);
-    llvm::Value* first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b);
+    llvm::Value* first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b, llvm::Value* c = nullptr);
+    llvm::Constant* exact_reciprocal(llvm::Value* b);
     llvm::Value* emit_int_op(ir::Op op, llvm::Value* a, llvm::Value* b);
     llvm::Value* emit_compare(ir::Op op, llvm::Value* a, llvm::Value* b);
     llvm::Value* emit_conversion(ir::Op op, llvm::Value* a);
@@ -104,6 +106,11 @@ private:
     // null for those kept in the register file.
     std::vector<llvm::AllocaInst*> locals_;
     void make_locals(const ir::Block& block);
+    // The main body's reads of a prologue `konst` that nothing else writes:
+    // its value, which LLVM sees (a division by a power of two becomes a
+    // multiplication, alu.cpp) instead of a load from the register file.
+    std::vector<std::optional<uint32_t>> constants_;
+    void find_constants();
     llvm::AllocaInst* exec_ = nullptr;
     llvm::AllocaInst* alive_ = nullptr;
     llvm::AllocaInst* brk_ = nullptr;

@@ -8,6 +8,10 @@
 // after each control-flow node), so instructions run exactly where the
 // interpreter runs them, and loop iterations are counted alike.
 #include "runtime/jit/codegen.h"
+
+#include <bit>
+#include <cmath>
+
 #include "ir/flow.h"
 
 #include <llvm/IR/Function.h>
@@ -45,10 +49,49 @@ void Emitter::branch_unless_active(llvm::BasicBlock* exit) {
     b_.SetInsertPoint(next);
 }
 
+void Emitter::find_constants() {
+    using namespace ir::flow;
+    std::vector<int> writes(shader_.regs.size());
+    auto count = [&](ir::Reg r) {
+        if (r < writes.size()) writes[r] += 2;  // a binding's, too, is a write from outside
+    };
+    for (const auto* list : {&shader_.inputs, &shader_.outputs})
+        for (const ir::Binding& b : *list)
+            for (uint32_t i = 0; i < b.count; ++i) count(b.first + i);
+    auto written = [&](const ir::Node& n) {
+        if (n.kind == ir::NodeKind::Instr) for_each_write(n.instr, count);
+    };
+    walk(shader_.body, written);
+    for (const ir::Function& f : shader_.functions) walk(f.body, written);
+    constants_.assign(shader_.regs.size(), std::nullopt);
+    walk(shader_.prologue, [&](const ir::Node& n) {
+        if (n.kind == ir::NodeKind::Instr)
+            for_each_write(n.instr, [&](ir::Reg r) {
+                if (r < writes.size()) ++writes[r];
+            });
+    });
+    // LLVM folds x * 1, x / 1, x - 0 and -0 - x to x or -x, which under
+    // DAZ the CPU does not (a denormal x gives 0), nor for a signalling NaN
+    // (quieted); it picks a NaN operand's NaN as it likes. Such floats stay
+    // in the register file.
+    auto foldable = [](ir::Kind kind, uint32_t word) {
+        const float v = std::bit_cast<float>(word);
+        return kind != ir::Kind::F32 || (std::isnormal(v) && std::fabs(v) != 1.0f);
+    };
+    for (const ir::Node& n : shader_.prologue)  // its top level runs for every lane
+        if (n.kind == ir::NodeKind::Instr && n.instr.op == ir::Op::konst && n.instr.dst < constants_.size() &&
+            foldable(shader_.regs[n.instr.dst], n.instr.imm[0]))
+            constants_[n.instr.dst] = n.instr.imm[0];
+    for (size_t r = 0; r < writes.size(); ++r)
+        if (writes[r] != 1) constants_[r].reset();
+}
+
 void Emitter::make_locals(const ir::Block& block) {
     using namespace ir::flow;
     locals_.clear();
+    constants_.clear();
     if (&block != &shader_.body) return;
+    find_constants();
     std::vector<bool> shared(shader_.regs.size());
     auto share = [&](ir::Reg r) {
         if (r < shared.size()) shared[r] = true;

@@ -39,12 +39,10 @@ struct Engine {
     // Null where LLVM could not make it. `quick`: ExecOptions::jit_quick_codegen.
     static Engine* of(bool avx2, bool quick);
 
-    // A new module for this engine's target, in a context of its own; its
-    // functions' names end with `suffix`. Under `lock`.
+    // A new module for this engine's target, in a context of its own. Under `lock`.
     struct NewModule {
         std::unique_ptr<llvm::LLVMContext> context;
         std::unique_ptr<llvm::Module> module;
-        std::string suffix;
     };
     NewModule new_module(const char* name);
 
@@ -63,12 +61,8 @@ public:
     EngineCode(const EngineCode&) = delete;
     EngineCode& operator=(const EngineCode&) = delete;
     ~EngineCode();
-    // Adds `made` (verified and optimised) to `engine`'s LLJIT, under its
-    // lock; false where LLVM failed.
-    bool add(Engine& engine, Engine::NewModule made);
-    // Adds machine code (compile_object's, or the code cache's) whose
-    // functions' names have no suffix, under the lock; false where LLVM
-    // refused it.
+    // Adds machine code (compile_object's, or the code cache's) to
+    // `engine`'s LLJIT, under its lock; false where LLVM refused it.
     bool add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> object);
     // The address of the module's function `name`; null where absent (or
     // where its object could not be linked).
@@ -78,7 +72,6 @@ private:
     void open(Engine& engine);
     Engine* engine_ = nullptr;
     llvm::orc::JITDylib* dylib_ = nullptr;
-    std::string suffix_;
 };
 
 // `module`'s machine code for `engine`'s target, under its lock; null where
@@ -93,7 +86,15 @@ void initialise_llvm();
 double thread_cpu_seconds();
 // The baseline x86-64 ISA or AVX2 (x86-64-v3), never fusing a * b + c;
 // `quick`: LLVM's code generation without its optimizations (same bits).
+// Where avx512() says so, AVX2's target is AVX-512 (x86-64-v4) instead.
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick);
+// Whether the AVX2 target generates AVX-512 code, 512-bit vectors included:
+// where the CPU has AVX-512 F, BW, DQ and VL and GLSLRUN_NO_AVX512 is not 1.
+// A batch's <kLanes x float> registers then take 2 of its 32 registers, not
+// 4 of AVX2's 16: the ray tracer's and the marble's frames spent most of
+// their time spilling and reloading them. The same IEEE operations, so the
+// same bits (tests/cli/isa_determinism.sh).
+bool avx512();
 // The JIT's short function pass pipeline (module.cpp says why it is short).
 void optimise(llvm::Module& module, llvm::TargetMachine& machine);
 

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 
 namespace glslrun::rt::jit {
 

@@ -383,13 +383,11 @@ Value* MathEmitter::fast_op(Op op, Value* a, Value* b) {
 
 }  // namespace
 
+// Every op of the table's Fast classes in Fast, its Libm ops in both (but
+// Precise fpow: emit_pow_common).
 bool generates_math(Op op, bool fast) {
-    switch (op) {
-    case Op::fexp: case Op::fexp2: case Op::flog: case Op::flog2: case Op::fsin: case Op::fcos: case Op::ftan: case Op::fasin: case Op::facos: case Op::fatan: case Op::fatan2:
-        return true;
-    case Op::frsqrt: case Op::fsqrt_divisor: case Op::fdiv_by_sqrt: case Op::fpow: return fast;
-    default: return false;
-    }
+    if (fast && ir::op_info(op).fast != ir::FastClass::Exact) return true;
+    return ir::has(op, ir::OpProp::Libm) && (fast || op != Op::fpow);
 }
 
 namespace {

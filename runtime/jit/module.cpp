@@ -15,7 +15,6 @@
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/RTDyldObjectLinkingLayer.h>
-#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
 #include <llvm/IR/Verifier.h>
 #include <llvm/Passes/PassBuilder.h>
 #include <llvm/Transforms/Scalar/ADCE.h>
@@ -49,10 +48,24 @@ void initialise_llvm() {
 
 llvm::orc::JITTargetMachineBuilder target_for(bool avx2, bool quick) {
     llvm::orc::JITTargetMachineBuilder builder{llvm::Triple(llvm::sys::getProcessTriple())};
-    builder.setCPU(avx2 ? "x86-64-v3" : "x86-64");
+    const bool wide = avx2 && avx512();
+    builder.setCPU(wide ? "x86-64-v4" : avx2 ? "x86-64-v3" : "x86-64");
+    // x86-64-v4 tunes for 256-bit vectors, which would split every register
+    // in four again
+    if (wide) builder.getFeatures().AddFeature("prefer-256-bit", false);
     builder.setCodeGenOptLevel(quick ? llvm::CodeGenOpt::None : llvm::CodeGenOpt::Default);
     builder.getOptions().AllowFPOpFusion = llvm::FPOpFusion::Strict;
     return builder;
+}
+
+bool avx512() {
+    static const bool on = [] {
+        const char* off = std::getenv("GLSLRUN_NO_AVX512");
+        if (off && off[0] == '1') return false;
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+               __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+    }();
+    return on;
 }
 
 double thread_cpu_seconds() {
@@ -73,7 +86,7 @@ Engine* Engine::of(bool avx2, bool quick) {
 }
 
 Engine::NewModule Engine::new_module(const char* name) {
-    NewModule made{std::make_unique<llvm::LLVMContext>(), nullptr, "_" + std::to_string(modules++)};
+    NewModule made{std::make_unique<llvm::LLVMContext>(), nullptr};
     made.module = std::make_unique<llvm::Module>(name, *made.context);
     made.module->setDataLayout(machine->createDataLayout());
     made.module->setTargetTriple(machine->getTargetTriple().str());
@@ -94,16 +107,6 @@ void EngineCode::open(Engine& engine) {
     dylib_->addToLinkOrder(engine.jit->getMainJITDylib());
 }
 
-bool EngineCode::add(Engine& engine, Engine::NewModule made) {
-    open(engine);
-    suffix_ = std::move(made.suffix);
-    auto err = engine.jit->addIRModule(*dylib_, llvm::orc::ThreadSafeModule(std::move(made.module),
-                                                                            std::move(made.context)));
-    if (!err) return true;
-    llvm::consumeError(std::move(err));
-    return false;
-}
-
 bool EngineCode::add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> object) {
     open(engine);
     auto err = engine.jit->addObjectFile(*dylib_, std::move(object));
@@ -113,7 +116,7 @@ bool EngineCode::add_object(Engine& engine, std::unique_ptr<llvm::MemoryBuffer> 
 }
 
 void* EngineCode::lookup(const std::string& name) const {
-    auto symbol = engine_->jit->lookup(*dylib_, name + suffix_);
+    auto symbol = engine_->jit->lookup(*dylib_, name);
     if (symbol) return symbol->toPtr<void*>();
     llvm::consumeError(symbol.takeError());
     return nullptr;
@@ -248,7 +251,7 @@ public:
     }
     LaneMask alive() const override { return ctx_.alive; }
     void skip_lookups(LaneMask lanes) override { ctx_.machine.lookups = ~lanes; }
-    Backend backend() const override { return Backend::Jit; }
+    Runner runner() const override { return Runner::Jit; }
     void watch_undefined(UndefSink* sink) override { ctx_.machine.undef = sink; }
 
 private:
@@ -316,7 +319,7 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     std::lock_guard hold(engine->lock);
     code->reg_count = uint32_t(shader.regs.size());
 
-    // Its own names, without a suffix: the code lives in a JITDylib of its own (EngineCode).
+    // Its own names: the code lives in a JITDylib of its own (EngineCode).
     Engine::NewModule made = engine->new_module("shader");
     llvm::Module& module = *made.module;
     {

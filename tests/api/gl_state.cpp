@@ -209,3 +209,22 @@ void main() {
     REQUIRE(unread);
     CHECK_FALSE(unread->read);
 }
+
+TEST_CASE("an array of fewer components fills the rest with GL's (0, 0, 0, 1), not the current value",
+          "[api][glstate]") {
+    // GL 2.1 §2.8: a colour array of 3 has alpha 1 whatever glColor said;
+    // without an array the current colour is read whole.
+    Program p = compile("varying vec4 c, t; void main() { c = gl_Color; t = gl_MultiTexCoord0; "
+                        "gl_Position = gl_Vertex; }",
+                        "varying vec4 c, t; void main() { gl_FragColor = c + t; }");
+    GLState gl;
+    gl.current_color = {0.1f, 0.2f, 0.3f, 0.25f};
+    auto with = run_vertices(p, {{"gl_Vertex", 2, {0, 0}}, {"gl_Color", 3, {0.5f, 0.6f, 0.7f}},
+                                 {"gl_MultiTexCoord0", 2, {0.75f, 0.5f}}}, 1, &gl);
+    REQUIRE(with.ok());
+    check_vec(vec(*with, "c"), {0.5f, 0.6f, 0.7f, 1.0f});
+    check_vec(vec(*with, "t"), {0.75f, 0.5f, 0.0f, 1.0f});
+    auto without = run_vertices(p, {{"gl_Vertex", 2, {0, 0}}}, 1, &gl);
+    REQUIRE(without.ok());
+    check_vec(vec(*without, "c"), {0.1f, 0.2f, 0.3f, 0.25f});
+}

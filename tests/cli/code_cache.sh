@@ -1,7 +1,8 @@
 #!/bin/sh
 # The JIT's code cache from the command line: a second render of the same
-# program compiles nothing (--stats counts) and writes the same PNG as the
-# first, the interpreter's and an uncached render; --no-cache and
+# program compiles nothing (--stats counts), its fused fragment pipeline
+# included, and writes the same PNG as the first, the interpreter's and an
+# uncached render; --no-cache and
 # GLSLRUN_NO_CACHE write nothing; GLSLRUN_CACHE_DIR and --cache-dir choose
 # the directory; an unwritable one is a warning, not an error; damaged
 # entries are compiled and written again.
@@ -41,6 +42,25 @@ for name in warm auto uncached interp; do
     cmp -s cold.png $name.png || fail "the $name image differs from the first render's"
 done
 
+# The fused fragment pipeline (compiled once a program has shaded 2^20
+# fragments, raster/fused/pipeline.h: the sixth frame of this quad) is cached too.
+quad="$src/shaders/colors.vert $src/shaders/colors.frag $src/scenes/quad.toml --size 1024x1024 --bench 5"
+for name in fused_cold fused_warm; do
+    # shellcheck disable=SC2086
+    "$glslrun" $quad --backend jit --stats --cache-dir "$tmp/fused-cache" -o $name.png >$name.txt 2>$name.err ||
+        fail "render $name failed: $(head -c 300 $name.err)"
+    grep -q '^fused_fragments  *[1-9]' $name.txt || fail "$name: the fused pipeline drew no fragment"
+done
+grep -q "1 pipeline compiled, 0 loaded from the code cache" fused_cold.txt || fail "fused, cold: $(grep fragments fused_cold.txt)"
+grep -q "0 shaders compiled, 2 loaded" fused_warm.txt || fail "fused, warm: $(grep backend fused_warm.txt)"
+grep -q "0 pipelines compiled, 1 loaded from the code cache" fused_warm.txt ||
+    fail "fused, warm: the pipeline was not loaded: $(grep fragments fused_warm.txt)"
+[ "$(entries "$tmp/fused-cache")" = 3 ] || fail "fused: $(entries "$tmp/fused-cache") entries, not 3 (2 shaders, 1 pipeline)"
+# shellcheck disable=SC2086
+"$glslrun" $quad --backend interp -o fused_interp.png >/dev/null || fail "the quad did not render (interp)"
+cmp -s fused_cold.png fused_warm.png || fail "the image with the cached pipeline differs from the first"
+cmp -s fused_cold.png fused_interp.png || fail "the fused pipeline's image differs from the interpreter's"
+
 # The environment: GLSLRUN_CACHE_DIR, and GLSLRUN_NO_CACHE over it.
 [ "$(entries "$tmp/env-cache")" = 0 ] || fail "--no-cache or --cache-dir wrote to GLSLRUN_CACHE_DIR"
 render env
@@ -63,4 +83,4 @@ grep -q "2 shaders compiled, 0 loaded" damaged.txt || fail "damaged entries: $(g
 cmp -s cold.png damaged.png || fail "the image after damaged entries differs"
 render repaired --cache-dir "$tmp/cache"
 grep -q "0 shaders compiled, 2 loaded" repaired.txt || fail "rewritten entries: $(grep backend repaired.txt)"
-finish "code cache: a second run compiles nothing, the same images, unwritable and damaged caches handled"
+finish "code cache: a second run compiles nothing (shaders and fused pipeline), the same images, unwritable and damaged caches handled"

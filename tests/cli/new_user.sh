@@ -178,6 +178,27 @@ expect 1 "inc/main.frag:2: error: '#include' : 'colour.glsl' is in none of inc (
 printf 'void main() { gl_FragColor = vec4(0.5, 1.0, 0.0, 1.0); }\n' > inc/flat.frag
 "$glslrun" "$vs" inc/flat.frag "$scene" --size 4x4 -o flat.png 2> /dev/null || fail "render flat.frag"
 same inc.png flat.png "the included function's colour"
+# Every command that compiles the shaders takes -I and -D: the debugger, the
+# error report, --check-undefined, and a pass that names its own shaders.
+"$glslrun" trace --pixel 2,2 -I inc/lib "$vs" inc/main.frag "$scene" --size 4x4 > tr.txt 2> err.txt ||
+    fail "trace -I: $(cat err.txt)"
+grep -q "colour.glsl" tr.txt || fail "trace -I: the included file's lines are not in the trace: $(cat tr.txt)"
+"$glslrun" trace --find-nan -I inc/lib "$vs" inc/main.frag "$scene" --size 4x4 > /dev/null 2> err.txt ||
+    fail "trace --find-nan -I: $(cat err.txt)"
+"$glslrun" "$vs" inc/main.frag "$scene" -I inc/lib --size 4x4 --check-undefined > /dev/null 2> err.txt ||
+    fail "--check-undefined -I: $(cat err.txt)"
+"$glslrun" "$vs" inc/main.frag "$scene" -I inc/lib --size 4x4 --error-report er_inc > /dev/null 2> err.txt ||
+    fail "--error-report -I: $(cat err.txt)"
+printf '#ifndef GREEN\n#error GREEN is not defined\n#endif\nvoid main() { gl_FragColor = vec4(0.5, GREEN, 0.0, 1.0); }\n' \
+    > inc/defined.frag
+"$glslrun" "$vs" inc/defined.frag "$scene" -D GREEN=1.0 --size 4x4 --error-report er_d > /dev/null 2> err.txt ||
+    fail "--error-report -D: $(cat err.txt)"
+"$glslrun" trace --pixel 2,2 -D GREEN=1.0 "$vs" inc/defined.frag "$scene" --size 4x4 > /dev/null 2> err.txt ||
+    fail "trace -D: $(cat err.txt)"
+{ cat "$scene"; printf '\n[[passes]]\nvertex = "%s"\nfragment = "inc/main.frag"\n' "$vs"; } > inc_pass.toml
+"$glslrun" "$vs" inc/main.frag inc_pass.toml -I inc/lib --size 4x4 -o inc_pass.png 2> err.txt ||
+    fail "a pass's own shaders with -I: $(cat err.txt)"
+same inc_pass.png flat.png "a pass's own shader with -I: the included function's colour"
 # An error inside an included file names that file and its own line.
 printf 'float scale(float x) {\n    return x * undefined_thing;\n}\n' > inc/lib/helpers/scale.glsl
 expect 1 "inc/lib/helpers/scale.glsl:2: error: 'undefined_thing' : undeclared identifier" \

@@ -93,7 +93,7 @@ private:
         ST_##res(expr);                           \
     }
 #define EVAL_Special(res, opnd, expr)
-#define OP(name, arity, res, opnd, kind, fast, expr) \
+#define OP(name, arity, res, opnd, kind, fast, props, expr) \
     case Op::name: EVAL_##kind(res, opnd, expr) return;
         using namespace ir;
         switch (in.op) {

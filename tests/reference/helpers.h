@@ -124,31 +124,50 @@ inline void compare(const std::string& name, const Inputs& in) {
         compare_images(name + "." + std::to_string(i), in, mesa->more_images[i - 1], (*ours)[i]);
 }
 
-// Colour buffer 0 of `in` on one backend and thread count, in Precise.
-inline Result<scene::Image> render_with(const Inputs& in, Backend backend, unsigned threads) {
+// Colour buffer 0 of `in` rendered by glslrun in one precision mode, on one
+// backend, with `threads` worker threads.
+inline Result<scene::Image> render_with(const Inputs& in, Precision precision, Backend backend, unsigned threads) {
     auto program = Program::compile(in.vertex, in.fragment);
     if (!program) return program.error();
+    program->exec.precision = precision;
     program->exec.backend = backend;
     program->exec.threads = threads;
-    program->exec.precision = Precision::Precise;
     Framebuffer fb(in.scene.width, in.scene.height, false, scene::color_buffers(in.scene));
     auto stats = scene::render_scene(*program, in.scene, fb);
     if (!stats) return stats.error();
     return scene::read_framebuffer(fb, 0);
 }
 
-// The interpreter at 1 thread against the JIT and 2 threads: bit for bit.
-inline void check_same_everywhere(const Inputs& in) {
-    auto base = render_with(in, Backend::Interp, 1);
-    if (!base) FAIL(base.error().str());
+// The interpreter at 1 thread against the JIT and 2 threads, in `precision`:
+// bit for bit. Returns the interpreter's image; a render error fails the test.
+inline scene::Image check_same_everywhere(const Inputs& in, Precision precision = Precision::Precise) {
+    auto base = render_with(in, precision, Backend::Interp, 1);
+    if (!base) FAIL("glslrun could not render: " << base.error().str());
     for (Backend backend : {Backend::Interp, Backend::Jit})
         for (unsigned threads : {1u, 2u}) {
             if (backend == Backend::Jit && !jit_available()) continue;
-            INFO("backend " << (backend == Backend::Jit ? "jit" : "interp") << ", " << threads << " threads");
-            auto other = render_with(in, backend, threads);
+            INFO((precision == Precision::Fast ? "fast, " : "precise, ")
+                 << (backend == Backend::Jit ? "jit" : "interp") << ", " << threads << " threads");
+            auto other = render_with(in, precision, backend, threads);
             REQUIRE(other);
             CHECK(other->rgba == base->rgba);
         }
+    return *base;
+}
+
+// Issue #3's rule against Mesa in Precise and in Fast, and each mode's image
+// the same bit for bit on the interpreter and the JIT, at 1 and 2 threads.
+inline void compare_in_every_mode(const std::string& name, const Inputs& in) {
+    auto mesa = glref::render_with_mesa(kDriver, in.vertex, in.fragment, in.scene);
+    if (!mesa) {
+        FAIL_CHECK("Mesa (" << kDriver << ") could not render: " << mesa.error().str());
+        return;
+    }
+    for (Precision precision : {Precision::Precise, Precision::Fast}) {
+        INFO(name);
+        const scene::Image base = check_same_everywhere(in, precision);
+        compare_images(name + (precision == Precision::Fast ? "-fast" : "-precise"), in, mesa->image, base);
+    }
 }
 
 }  // namespace reference

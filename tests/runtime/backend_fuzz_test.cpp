@@ -41,7 +41,7 @@
 #include "ir/alu_eval.h"
 #include "ir/flow.h"
 #include "ir/passes.h"
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
 #include "tests/runtime/ir_builder.h"
 
@@ -350,14 +350,14 @@ struct Config {
     const GLState::TextureUnit* textures;
 };
 
-Outcome run_on(const ir::Shader& shader, Backend backend, const std::vector<uint32_t>& uniforms,
+Outcome run_on(const ir::Shader& shader, rt::Runner runner, const std::vector<uint32_t>& uniforms,
                const std::vector<Batch>& batches, const Config& c) {
     rt::ExecParams params{uniforms.data(), kLoopCap, c.textures, c.precision, rt::kAllFastOps};
     params.limits.max_instructions = c.max_instructions;
-    auto code = rt::compile_shader(shader, backend, c.precision, params.fast_ops, c.avx2, nullptr,
-                                   backend == Backend::Jit && c.quick);
+    auto code = rt::compile_shader(shader, runner, c.precision, params.fast_ops, c.avx2, nullptr,
+                                   runner == rt::Runner::Jit && c.quick);
     auto e = code->instantiate(params);
-    REQUIRE(e->backend() == backend);
+    REQUIRE(e->runner() == runner);
     return run_all(*e, shader, batches);
 }
 
@@ -416,15 +416,15 @@ std::string first_difference(const ir::Shader& shader, bool specialize, const st
             << ": " << std::hex << a.words[first] << " vs " << b.words[first];
         return out.str();
     };
-    const Outcome interp = run_on(shader, Backend::Interp, uniforms, batches, c);
+    const Outcome interp = run_on(shader, rt::Runner::Interp, uniforms, batches, c);
     *log = interp.log;
     std::string d = differ("interpreter vs JIT", outputs_of(interp, shader),
-                           outputs_of(run_on(shader, Backend::Jit, uniforms, batches, c), shader), shader, true);
+                           outputs_of(run_on(shader, rt::Runner::Jit, uniforms, batches, c), shader), shader, true);
     if (!d.empty() || !specialize) return d;
     const ir::Shader s = specialized(shader, uniforms, c.precision);
-    const Outcome s_interp = run_on(s, Backend::Interp, uniforms, batches, c);
+    const Outcome s_interp = run_on(s, rt::Runner::Interp, uniforms, batches, c);
     d = differ("specialized interpreter vs specialized JIT", outputs_of(s_interp, s),
-               outputs_of(run_on(s, Backend::Jit, uniforms, batches, c), s), s, true);
+               outputs_of(run_on(s, rt::Runner::Jit, uniforms, batches, c), s), s, true);
     if (!d.empty()) return d;
     return differ("interpreter vs specialized interpreter, outputs", outputs_of(interp, shader),
                   outputs_of(s_interp, s), shader, true);

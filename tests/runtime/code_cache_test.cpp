@@ -20,6 +20,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "runtime/backend_factory.h"
 #include "runtime/code_cache.h"
 #include "runtime/jit_plugin.h"
 #include "runtime/interp_kernels.h"
@@ -324,7 +325,7 @@ TEST_CASE("code cache: the vector ISA is part of the key", "[runtime][code_cache
     auto compile = [&](bool avx2) {
         bool loaded = false;
         double seconds = 0;
-        auto code = rt::compile_shader(shader, Backend::Jit, Precision::Precise, rt::kAllFastOps, avx2, &seconds,
+        auto code = rt::compile_shader(shader, rt::Runner::Jit, Precision::Precise, rt::kAllFastOps, avx2, &seconds,
                                        false, nullptr, {&config, false, &loaded});
         REQUIRE(code);
         return loaded;

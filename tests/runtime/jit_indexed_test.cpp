@@ -7,7 +7,7 @@
 #include <climits>
 #include <vector>
 
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
 #include "tests/runtime/ir_builder.h"
 
@@ -33,8 +33,8 @@ TEST_CASE("generated indexed access gives the kernels' words", "[runtime][backen
     rt::ExecParams params{uniforms.data(), 10, nullptr, Precision::Precise, rt::kAllFastOps};
     for (bool avx2 : {false, true}) {
         if (avx2 && !rt::cpu_has_avx2()) continue;
-        auto interp = rt::compile_shader(b.sh, Backend::Interp, Precision::Precise, params.fast_ops, avx2);
-        auto jit = rt::compile_shader(b.sh, Backend::Jit, Precision::Precise, params.fast_ops, avx2);
+        auto interp = rt::compile_shader(b.sh, rt::Runner::Interp, Precision::Precise, params.fast_ops, avx2);
+        auto jit = rt::compile_shader(b.sh, rt::Runner::Jit, Precision::Precise, params.fast_ops, avx2);
         REQUIRE(jit);
         auto ia = interp->instantiate(params), ja = jit->instantiate(params);
         for (int round = 0; round < 2 * kIndices; ++round) {

@@ -3,7 +3,7 @@
 // JIT's oracle), whatever order the compilers put the operands in.
 #include <catch2/catch.hpp>
 
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
 #include "tests/runtime/ir_builder.h"
 
@@ -29,8 +29,8 @@ TEST_CASE("backends return the same NaN for NaN operands", "[runtime][backend][n
                 b.instr(op, Kind::F32, r, arity == 1 ? std::initializer_list<Reg>{x} : arity == 2 ? std::initializer_list<Reg>{x, y} : std::initializer_list<Reg>{x, y, z});
                 std::vector<uint32_t> uniforms(4);
                 rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
-                auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);
-                auto jit = rt::compile_shader(b.sh, Backend::Jit, precision, params.fast_ops, avx2);
+                auto interp = rt::compile_shader(b.sh, rt::Runner::Interp, precision, params.fast_ops, avx2);
+                auto jit = rt::compile_shader(b.sh, rt::Runner::Jit, precision, params.fast_ops, avx2);
                 auto ia = interp->instantiate(params), ja = jit->instantiate(params);
                 for (int k = 0; k < n * n * n; k += rt::kLanes) {
                     for (rt::Executor* e : {ia.get(), ja.get()})

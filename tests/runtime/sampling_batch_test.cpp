@@ -18,6 +18,7 @@
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/texture_levels.h"
 
 using namespace glslrun;
 
@@ -70,12 +71,24 @@ struct Operands {
 // `shared`: every lane has lane 0's derivatives and LOD (a cube map's lanes
 // on the +X face), so that the lanes choose one face and level(s), as on a
 // smooth surface: the batch then samples one image per level.
+// A rectangle's coordinates are in texels: spread over the image and past
+// its edges, often on a texel's edge or centre, sometimes an extreme.
+float rect_coordinate(std::mt19937& rng, int size) {
+    std::uniform_int_distribution<int> pick(0, 3);
+    const int p = pick(rng);
+    if (p == 0) return coordinate(rng);
+    if (p == 1) return 0.5f * float(std::uniform_int_distribution<int>(-3, 2 * size + 3)(rng));
+    return std::uniform_real_distribution<float>(-2.0f, float(size) + 2.0f)(rng);
+}
+
 void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::TexLod lod_kind, bool shared = false) {
-    const int dims = texture.target() == TextureTarget::Tex1D ? 1 : (texture.target() == TextureTarget::Tex2D ? 2 : 3);
+    const bool rect = texture.target() == TextureTarget::Rect;
+    const int dims = rt::texture_dims(texture.target());
+    const int size[2] = {texture.levels(0)[0].width, texture.levels(0)[0].height};
     Operands ops{};
     for (int i = 0; i < rt::kLanes; ++i) {
         for (int c = 0; c < dims; ++c) {
-            ops.coord[c][i] = coordinate(rng);
+            ops.coord[c][i] = rect ? rect_coordinate(rng, size[c]) : coordinate(rng);
             ops.ddx[c][i] = derivative(rng);
             ops.ddy[c][i] = derivative(rng);
         }
@@ -122,7 +135,8 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
                 lane.lod = lod_kind != ir::TexLod::Implicit ? ops.lod[i] : 0.0f;
                 lane.implicit = lk.implicit;
                 lane.bias = lk.bias;
-                rt::sample_complete_lane(texture, lane, want);
+                if (rect) rt::sample_rect_lane(texture, lane, want);
+                else rt::sample_complete_lane(texture, lane, want);
             }
             for (int c = 0; c < 4; ++c) {
                 INFO("avx2 " << avx2 << " lane " << i << " channel " << c << " coord (" << ops.coord[0][i] << ", "
@@ -207,6 +221,46 @@ TEST_CASE("batched sampling equals per-lane sampling: depth textures and compare
                             for (bool shared : {false, true}) check_batch(rng, depth, true, lod, shared);
                     }
             }
+}
+
+// Rectangles against sample_rect_lane(): the clamping wraps (the others
+// make a rectangle incomplete), NEAREST and LINEAR each side of the
+// magnification switch (the lanes then choose their filter), explicit and
+// biased LODs, the texture's LOD bias and clamps, depth compares.
+TEST_CASE("batched sampling equals per-lane sampling: rectangles", "[sampling][batch][rectangle]") {
+    std::mt19937 rng(2718);
+    Texture rect = make(rng, TextureTarget::Rect, TextureFormat::RGBA32F, 13, 7);
+    rect.sampler.border_color = {0.25f, -1.0f, 2.0f, 0.5f};
+    constexpr TextureWrap kClamps[] = {TextureWrap::ClampToEdge, TextureWrap::Clamp, TextureWrap::ClampToBorder};
+    auto sweep_rect = [&](Texture& t, bool shadow) {
+        for (TextureFilter min : {TextureFilter::Nearest, TextureFilter::Linear})
+            for (TextureFilter mag : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (TextureWrap s : kClamps)
+                    for (TextureWrap w : kClamps)
+                        for (ir::TexLod lod : kLods) {
+                            t.sampler.min_filter = min;
+                            t.sampler.mag_filter = mag;
+                            t.sampler.wrap_s = s;
+                            t.sampler.wrap_t = w;
+                            REQUIRE(t.complete());
+                            REQUIRE(rt::batch_samples(t));
+                            for (int batch = 0; batch < 4; ++batch) check_batch(rng, t, shadow, lod, batch >= 2);
+                        }
+    };
+    sweep_rect(rect, false);
+    rect.sampler.lod_bias = -0.75f;
+    rect.sampler.min_lod = -0.5f;
+    rect.sampler.max_lod = 1.25f;
+    sweep_rect(rect, false);
+    Texture depth = make(rng, TextureTarget::Rect, TextureFormat::Depth, 6, 9);
+    depth.sampler.border_color = {0.6f, 0.0f, 0.0f, 0.0f};
+    for (CompareFunc func : {CompareFunc::Less, CompareFunc::Gequal})
+        for (DepthTextureMode mode : {DepthTextureMode::Intensity, DepthTextureMode::Alpha}) {
+            depth.sampler.compare = func == CompareFunc::Less;
+            depth.sampler.compare_func = func;
+            depth.sampler.depth_mode = mode;
+            sweep_rect(depth, true);
+        }
 }
 
 // The sweep skips what batch_samples() refuses; this says what that is: 3D

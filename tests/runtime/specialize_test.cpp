@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "ir/passes.h"
-#include "runtime/backend.h"
+#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
 #include "tests/runtime/ir_builder.h"
 
@@ -62,8 +62,8 @@ TEST_CASE("specialization folds uniform code and dead branches, with the same bi
 
         rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
         const bool avx2 = rt::cpu_has_avx2();
-        auto interp = rt::compile_shader(b.sh, Backend::Interp, precision, params.fast_ops, avx2);
-        auto jit = rt::compile_shader(specialized, Backend::Jit, precision, params.fast_ops, avx2);
+        auto interp = rt::compile_shader(b.sh, rt::Runner::Interp, precision, params.fast_ops, avx2);
+        auto jit = rt::compile_shader(specialized, rt::Runner::Jit, precision, params.fast_ops, avx2);
         auto a = interp->instantiate(params), j = jit->instantiate(params);
         for (int lane = 0; lane < rt::kLanes; ++lane)
             a->lanes_f(y)[lane] = j->lanes_f(y)[lane] = float(lane) * 0.37f - 2.0f;

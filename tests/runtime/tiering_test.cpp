@@ -41,8 +41,8 @@ ir::Shader small_shader() {
     return b.sh;
 }
 
-rt::BackendCache::Key key_for(Backend backend) {
-    return {ir::Stage::Fragment, backend, Precision::Precise, rt::kAllFastOps, rt::cpu_has_avx2(), false};
+rt::BackendCache::Key key_for(rt::Runner runner) {
+    return {ir::Stage::Fragment, runner, Precision::Precise, rt::kAllFastOps, rt::cpu_has_avx2(), false};
 }
 
 // Runs one batch on `e` and checks its output lanes.
@@ -69,10 +69,10 @@ TEST_CASE("auto: a short render compiles nothing; a long one compiles and keeps 
         INFO("the JIT measures " << (jit_faster ? "faster" : "slower"));
         auto cache = std::make_shared<rt::BackendCache>();
         rt::BackendCache::Meter& meter = cache->meter(ir::Stage::Fragment);
-        const auto jit = key_for(Backend::Jit), interp = key_for(Backend::Interp);
+        const auto jit = key_for(rt::Runner::Jit), interp = key_for(rt::Runner::Interp);
         {
             auto e = cache->auto_executor(shader, jit, interp, params);
-            CHECK(e->backend() == Backend::Interp);
+            CHECK(e->runner() == rt::Runner::Interp);
             check_runs(*e);
         }
         // One batch is far less than LLVM's time: nothing was queued.
@@ -81,14 +81,14 @@ TEST_CASE("auto: a short render compiles nothing; a long one compiles and keeps 
         CHECK(cache->jit_compile_seconds() == 0);
         // Interpreting as long as the compile would take queues it.
         meter.nanos[0] = 1'000'000'000;
-        CHECK(cache->auto_executor(shader, jit, interp, params)->backend() == Backend::Interp);
+        CHECK(cache->auto_executor(shader, jit, interp, params)->runner() == rt::Runner::Interp);
         CHECK(meter.queued.load());
         wait_for_queue();
         CHECK(cache->jit_compile_seconds() > 0);
         // The JIT's code runs, timed, until it has run long enough to compare.
         {
             auto e = cache->auto_executor(shader, jit, interp, params);
-            CHECK(e->backend() == Backend::Jit);
+            CHECK(e->runner() == rt::Runner::Jit);
             check_runs(*e);
         }
         CHECK(meter.lanes[1].load() == uint64_t(rt::kLanes));
@@ -96,10 +96,10 @@ TEST_CASE("auto: a short render compiles nothing; a long one compiles and keeps 
         // Per lane: the interpreter 1e9 ns over 16 lanes; the JIT 1/10 or 10x that.
         meter.lanes[1] = meter.lanes[0].load();
         meter.nanos[1] = jit_faster ? 100'000'000 : 10'000'000'000;
-        const Backend kept = jit_faster ? Backend::Jit : Backend::Interp;
+        const rt::Runner kept = jit_faster ? rt::Runner::Jit : rt::Runner::Interp;
         for (int draw = 0; draw < 3; ++draw) {
             auto e = cache->auto_executor(shader, jit, interp, params);
-            CHECK(e->backend() == kept);
+            CHECK(e->runner() == kept);
             check_runs(*e);
         }
         CHECK(meter.choice.load() == int(kept));
@@ -115,8 +115,8 @@ TEST_CASE("a program goes without waiting for its queued compile", "[runtime][ti
     REQUIRE(rt::submit_compile([released] { released.wait(); }));
     auto cache = std::make_shared<rt::BackendCache>();
     cache->meter(ir::Stage::Fragment).nanos[0] = 1'000'000'000;
-    CHECK(cache->auto_executor(shader, key_for(Backend::Jit), key_for(Backend::Interp), {})->backend() ==
-          Backend::Interp);
+    CHECK(cache->auto_executor(shader, key_for(rt::Runner::Jit), key_for(rt::Runner::Interp), {})->runner() ==
+          rt::Runner::Interp);
     CHECK(rt::compiles_pending() == 2);
     cache.reset();  // would never return if it waited for the compile behind the held one
     release.set_value();
@@ -185,8 +185,8 @@ TEST_CASE("the JIT's compile-cost bound: large programs stay on the interpreter"
     params.uniforms = uniforms.data();
     for (const ir::Shader* s : {&raytrace, &deep}) {
         const auto start = std::chrono::steady_clock::now();
-        CHECK(rt::compile_shader(*s, Backend::Jit, Precision::Precise, rt::kAllFastOps, false)
-                  ->instantiate(params)->backend() == Backend::Interp);
+        CHECK(rt::compile_shader(*s, rt::Runner::Jit, Precision::Precise, rt::kAllFastOps, false)
+                  ->instantiate(params)->runner() == rt::Runner::Interp);
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
     }
 }
@@ -231,7 +231,7 @@ TEST_CASE("300 programs' background compiles take one thread", "[runtime][tierin
     for (int i = 0; i < 300; ++i) {
         caches.push_back(std::make_shared<rt::BackendCache>());
         caches.back()->meter(ir::Stage::Fragment).nanos[0] = 1'000'000'000;
-        (void)caches.back()->auto_executor(shader, key_for(Backend::Jit), key_for(Backend::Interp), {});
+        (void)caches.back()->auto_executor(shader, key_for(rt::Runner::Jit), key_for(rt::Runner::Interp), {});
     }
     CHECK(rt::compiles_pending() == 301);
     CHECK(thread_count() == threads);

@@ -77,7 +77,10 @@ namespace glslrun::glref {
     X(PFNGLBLENDCOLORPROC, BlendColor)                                                      \
     X(PFNGLSTENCILFUNCSEPARATEPROC, StencilFuncSeparate)                                    \
     X(PFNGLSTENCILOPSEPARATEPROC, StencilOpSeparate)                                        \
-    X(PFNGLSTENCILMASKSEPARATEPROC, StencilMaskSeparate)
+    X(PFNGLSTENCILMASKSEPARATEPROC, StencilMaskSeparate)                                    \
+    X(PFNGLPOINTPARAMETERFPROC, PointParameterf)                                            \
+    X(PFNGLPOINTPARAMETERFVPROC, PointParameterfv)                                          \
+    X(PFNGLPOINTPARAMETERIPROC, PointParameteri)
 
 struct GLFunctions {
 #define GLREF_DECLARE(type, name) type name = nullptr;

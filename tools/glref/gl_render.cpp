@@ -178,6 +178,24 @@ void set_fragment_state(const GLFunctions& gl, const GLState& g) {
     set_draw_buffers(gl, g.draw_buffers);
 }
 
+// glPointParameter, glLineStipple and glPolygonStipple with their enables.
+void set_point_and_stipple_state(const GLFunctions& gl, const GLState& g) {
+    gl.PointParameterf(GL_POINT_SIZE_MIN, g.point_size_min);
+    gl.PointParameterf(GL_POINT_SIZE_MAX, g.point_size_max);
+    gl.PointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, g.point_fade_threshold_size);
+    gl.PointParameterfv(GL_POINT_DISTANCE_ATTENUATION, glm::value_ptr(g.point_distance_attenuation));
+    gl.PointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, g.point_sprite_coord_lower_left ? GL_LOWER_LEFT : GL_UPPER_LEFT);
+    enable(GL_LINE_STIPPLE, g.line_stipple);
+    glLineStipple(g.line_stipple_repeat, g.line_stipple_pattern);
+    enable(GL_POLYGON_STIPPLE, g.polygon_stipple);
+    // glPolygonStipple reads 32 rows of 4 bytes, bottom up, the high bit of
+    // each row's first byte leftmost (GL_UNPACK_LSB_FIRST's default).
+    std::array<GLubyte, 128> bytes{};
+    for (size_t row = 0; row < 32; ++row)
+        for (size_t i = 0; i < 4; ++i) bytes[row * 4 + i] = GLubyte(g.polygon_stipple_pattern[row] >> (24 - 8 * i));
+    glPolygonStipple(bytes.data());  // 4-byte rows: any GL_UNPACK_ALIGNMENT reads them alike
+}
+
 // glPolygonMode, glPolygonOffset, glLineWidth and point sprites.
 void set_primitive_state(const GLFunctions& gl, const GLState& g) {
     constexpr GLenum kModes[] = {GL_POINT, GL_LINE, GL_FILL};
@@ -194,6 +212,7 @@ void set_primitive_state(const GLFunctions& gl, const GLState& g) {
         glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, (g.coord_replace >> unit) & 1u ? GL_TRUE : GL_FALSE);
     }
     gl.ActiveTexture(GL_TEXTURE0);
+    set_point_and_stipple_state(gl, g);
 }
 
 // glViewport: GLState's width 0 is the whole framebuffer being drawn.

@@ -46,6 +46,8 @@ int run_error_report(const std::vector<ShaderSource>& vertex, const std::vector<
     options.mode = o.precision;
     options.threads = o.threads;
     options.time_limit = o.time_limit;  // --time-limit: for the report's renders together
+    options.compile.defines = o.defines;
+    options.compile.include_dirs = o.include_dirs;
     auto report = scene::measure_error(vertex, fragment, scene, options);
     if (!report) return fail(report.error());
     auto files = scene::write_error_images(*report, o.error_report, [&](const std::string& path) {

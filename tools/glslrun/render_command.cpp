@@ -297,8 +297,13 @@ std::string format_stats(const Program& prog, const scene::Scene& scene, const D
                compiles.compiled == 1 ? "" : "s", compiles.loaded);
     fmt::format_to(out, "vertices     {}\ntriangles    {}\n", s.vertices, s.triangles);
     // The fused pipeline's fragments, and its share of LLVM's time above.
-    fmt::format_to(out, "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms)\n", s.fragments_shaded,
-               s.fragments_written, s.fragments_fused, state_of(prog).pipelines->compile_seconds() * 1e3);
+    const raster::fused::Cache& pipelines = *state_of(prog).pipelines;
+    const Program::JitCompiles made = pipelines.counts();
+    fmt::format_to(out,
+                   "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms; {} pipeline{} compiled, {} "
+                   "loaded from the code cache)\n",
+                   s.fragments_shaded, s.fragments_written, s.fragments_fused, pipelines.compile_seconds() * 1e3,
+                   made.compiled, made.compiled == 1 ? "" : "s", made.loaded);
     fmt::format_to(out, "instructions {} (bounded per draw, and per render by --max-instructions)\n",
                    s.instructions);
     fmt::format_to(out, "time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
@@ -494,6 +499,7 @@ int run_check_undefined(const Inputs& in, const RenderOptions& o, const scene::S
     exec.threads = o.threads;
     CompileOptions compile;
     compile.defines = o.defines;
+    compile.include_dirs = o.include_dirs;
     auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec, fb, compile);
     if (!report) return fail(report.error());
     if (!output.empty())
@@ -650,8 +656,6 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
                           "--check-undefined and --error-report need a program of yours"), kToolError);
     if (!o.error_report.empty() && in->scene.empty())
         return fail(Error("--error-report needs a scene file (scene.toml) to render"), kToolError);
-    if (!o.error_report.empty() && !o.defines.empty())
-        return fail(Error("--error-report compiles the sources as they are: it does not take -D"), kToolError);
     if (!o.error_report.empty() &&
         (o.bench_frames > 0 || !o.compare.empty() || !o.output.empty() || o.stats || o.dump_ir))
         return fail(Error("--error-report writes its own images and numbers: it does not combine with -o, "

@@ -29,7 +29,7 @@ Result<std::pair<int, int>> parse_pixel(const std::string& text) {
 }
 
 struct TraceOptions {
-    std::vector<std::string> files;
+    std::vector<std::string> files, defines, include_dirs;
     std::string pixel, size, target;
     std::optional<uint32_t> vertex;
     uint32_t draw = 0;
@@ -38,10 +38,10 @@ struct TraceOptions {
 };
 
 // --check-undefined: as `glslrun --check-undefined` (glslrun/scene/undefined.h).
-int check_undefined(const Inputs& in, const scene::Scene& scene, Precision precision) {
+int check_undefined(const Inputs& in, const scene::Scene& scene, Precision precision, const CompileOptions& compile) {
     ExecOptions exec;
     exec.precision = precision;
-    auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec);
+    auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec, compile);
     if (!report) return fail(report.error());
     std::fputs(scene::format_undefined(*report).c_str(), stdout);
     return 0;
@@ -66,11 +66,14 @@ int run_trace(const TraceOptions& o) {
     render.size = o.size;
     auto scene = load_sized_scene(*in, render);
     if (!scene) return fail(scene.error());
-    if (o.check_undefined) return check_undefined(*in, *scene, o.precision);
-    auto program = Program::compile(in->vertex, in->fragment);
+    CompileOptions compile;
+    compile.defines = o.defines;
+    compile.include_dirs = o.include_dirs;
+    if (o.check_undefined) return check_undefined(*in, *scene, o.precision, compile);
+    auto program = Program::compile(in->vertex, in->fragment, compile);
     if (!program) return fail(program.error());
     program->exec.precision = o.precision;
-    auto debug = debug::compile_for_debugging(in->vertex, in->fragment, o.precision);
+    auto debug = debug::compile_for_debugging(in->vertex, in->fragment, o.precision, compile);
     if (!debug) return fail(debug.error());
     Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     if (o.find_nan) {
@@ -113,6 +116,8 @@ int trace_main(int argc, char** argv) {
                  "render computes, per source line, with the first invocation");
     app.add_flag("--colour-range", o.colour_range, "--find-nan: also the first colour output outside [0,1]");
     app.add_option("--size", o.size, "image size WxH, instead of the scene's");
+    add_define_option(app, o.defines);
+    add_include_option(app, o.include_dirs);
     add_precision_option(app, o.precision);
     add_code_cache_options(app);
     if (int status = parse_command_line(app, argc, argv); status >= 0) return status;

@@ -54,6 +54,8 @@ struct ErrorReportOptions {
     // Seconds for every render of the report together (ExecOptions::set_time_limit, from the
     // compile on); past it the report is an Error. 0: none.
     double time_limit = 0;
+    // The sources' -D macros and -I directories (the other fields are the report's own).
+    CompileOptions compile;
 };
 
 // Compiles the program once per mode and renders `scene` in both; in Fast,

@@ -40,7 +40,10 @@ class FixedFunctionPrograms;  // scene/ffp_programs.cpp
 // draw state (scene/ffp.h) and linked with the program's own shaders.
 class ScenePrograms {
 public:
-    static Result<ScenePrograms> compile(Program& main, const Scene& scene, const CompileOptions& options = {});
+    static Result<ScenePrograms> compile(Program& main, const Scene& scene, const CompileOptions& options);
+    // The same with the options `main` was compiled with: the passes' shaders
+    // see the same -D macros and -I directories as the command line's.
+    static Result<ScenePrograms> compile(Program& main, const Scene& scene);
     // Pass i's program; with no passes, 0 is `main`. Uniforms are set on it.
     Program& of_pass(size_t pass) const { return *by_pass_[pass]; }
     // The program a draw of pass i with `gl` runs: of_pass(i) where that has

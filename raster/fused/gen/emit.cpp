@@ -8,22 +8,24 @@
 #include <array>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
-#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
 #include <llvm/IR/Verifier.h>
+#include <llvm/Support/BLAKE3.h>
 
 #include "raster/fused/gen/emitter.h"
+#include "runtime/jit/cached_shader.h"
 #include "runtime/jit/engine.h"
 
 namespace glslrun::raster::fused {
 
 llvm::Function* PipelineEmitter::begin(const char* name, llvm::Type* result, llvm::ArrayRef<llvm::Type*> params) {
     auto* type = llvm::FunctionType::get(result, params, false);
-    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name + suffix_, module_);
+    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
     fn_->addFnAttr(llvm::Attribute::NoUnwind);
     b_.SetInsertPoint(llvm::BasicBlock::Create(b_.getContext(), "entry", fn_));
     return fn_;
@@ -382,19 +384,50 @@ public:
     EngineCode code;
 };
 
-}  // namespace
+// The code cache's key of `state`'s pipeline: the engine's salt (glslrun's
+// build, LLVM, the target) and the state's bytes (state_key), tagged apart
+// from the shaders' keys (runtime/jit/cached_shader.cpp).
+std::optional<rt::CodeKey> pipeline_key(const Engine& engine, const State& state) {
+    if (engine.cache_salt.empty()) return std::nullopt;
+    const std::string bytes = engine.cache_salt + "\nfused pipeline\n" + state_key(state);
+    return llvm::BLAKE3::hash(llvm::arrayRefFromStringRef(bytes));
+}
 
-std::unique_ptr<Pipeline> compile(const State& key, double* seconds) {
-    const double start = rt::jit::thread_cpu_seconds();
-    if (!fusable(key)) return nullptr;
-    Engine* engine = Engine::of(key.avx2, false);
-    if (!engine) return nullptr;
+// Links `object` into `code` and finds its functions; false where LLVM
+// refused it or a function is missing.
+bool link(Engine& engine, CompiledPipeline& code, std::unique_ptr<llvm::MemoryBuffer> object, bool early_depth) {
+    if (!object || !code.code.add_object(engine, std::move(object))) return false;
+    if (early_depth) {
+        code.quad_depth = reinterpret_cast<Pipeline::QuadDepthFn>(code.code.lookup("glslrun_quad_depth"));
+        code.square_depth = reinterpret_cast<Pipeline::SquareDepthFn>(code.code.lookup("glslrun_square_depth"));
+    }
+    code.inputs = reinterpret_cast<Pipeline::InputsFn>(code.code.lookup("glslrun_inputs"));
+    code.outputs = reinterpret_cast<Pipeline::OutputsFn>(code.code.lookup("glslrun_outputs"));
+    return code.inputs && code.outputs && (!early_depth || (code.quad_depth && code.square_depth));
+}
+
+// `state`'s pipeline from the code cache; null where it has none (or none
+// that links: it is then compiled and stored anew).
+std::unique_ptr<CompiledPipeline> load(Engine& engine, const rt::DiskCache& disk, const rt::CodeKey& key,
+                                       const State& state) {
+    std::optional<std::string> payload = disk.load(key);
+    if (!payload) return nullptr;
+    std::optional<rt::jit::CachedShader> cached = rt::jit::parse_cached_shader(*payload, Precision::Precise, 0,
+                                                                              state.avx2);
+    if (!cached || !cached->call_outs.empty()) return nullptr;
     auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
-    std::lock_guard hold(engine->lock);
-    Engine::NewModule made = engine->new_module("pipeline");
+    std::lock_guard hold(engine.lock);
+    if (link(engine, *code, std::move(cached->object), state.early_depth)) return code;
+    return nullptr;
+}
+
+// `state`'s machine code: LLVM's passes and code generation, told of the
+// code cache's writer (may be null).
+std::unique_ptr<llvm::MemoryBuffer> generate(Engine& engine, const State& state, llvm::ObjectCache* writer) {
+    Engine::NewModule made = engine.new_module("pipeline");
     {
-        PipelineEmitter emitter(*made.context, *made.module, key, made.suffix);
-        if (key.early_depth) {
+        PipelineEmitter emitter(*made.context, *made.module, state);
+        if (state.early_depth) {
             emitter.define_quad_depth();
             emitter.define_square_depth();
         }
@@ -402,17 +435,37 @@ std::unique_ptr<Pipeline> compile(const State& key, double* seconds) {
         emitter.define_outputs();
     }
     if (llvm::verifyModule(*made.module, &llvm::errs())) return nullptr;
-    rt::jit::optimise(*made.module, *engine->machine);
-    if (!code->code.add(*engine, std::move(made))) return nullptr;
-    if (key.early_depth) {
-        code->quad_depth = reinterpret_cast<Pipeline::QuadDepthFn>(code->code.lookup("glslrun_quad_depth"));
-        code->square_depth = reinterpret_cast<Pipeline::SquareDepthFn>(code->code.lookup("glslrun_square_depth"));
-    }
-    code->inputs = reinterpret_cast<Pipeline::InputsFn>(code->code.lookup("glslrun_inputs"));
-    code->outputs = reinterpret_cast<Pipeline::OutputsFn>(code->code.lookup("glslrun_outputs"));
-    if (!code->inputs || !code->outputs || (key.early_depth && (!code->quad_depth || !code->square_depth)))
-        return nullptr;
-    if (seconds) *seconds = rt::jit::thread_cpu_seconds() - start;
+    rt::jit::optimise(*made.module, *engine.machine);
+    return rt::jit::compile_object(engine, *made.module, writer);
+}
+
+}  // namespace
+
+// As a shader's (runtime/jit/module.cpp): the code cache is read before any
+// LLVM work and written by the compile; an entry is a cached shader without
+// call-outs (rt::jit::CachedShader).
+std::unique_ptr<Pipeline> compile(const State& key, PipelineCompile* compile) {
+    const double start = rt::jit::thread_cpu_seconds();
+    if (!fusable(key)) return nullptr;
+    Engine* engine = Engine::of(key.avx2, false);
+    if (!engine) return nullptr;
+    std::optional<rt::DiskCache> disk;
+    std::optional<rt::CodeKey> code_key;
+    if (compile && compile->cache && !compile->cache->dir.empty()) code_key = pipeline_key(*engine, key);
+    if (code_key) disk.emplace(*compile->cache);
+    if (code_key)
+        if (std::unique_ptr<CompiledPipeline> loaded = load(*engine, *disk, *code_key, key)) {
+            compile->loaded = true;
+            compile->seconds = rt::jit::thread_cpu_seconds() - start;
+            return loaded;
+        }
+    auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
+    std::lock_guard hold(engine->lock);
+    const std::vector<rt::jit::CallOut> none;
+    std::optional<rt::jit::ShaderCacheWriter> writer;
+    if (code_key) writer.emplace(*disk, *code_key, none);
+    if (!link(*engine, *code, generate(*engine, key, writer ? &*writer : nullptr), key.early_depth)) return nullptr;
+    if (compile) compile->seconds = rt::jit::thread_cpu_seconds() - start;
     return code;
 }
 

@@ -38,10 +38,11 @@ constexpr int kDy[4] = {0, 0, 1, 1};
 // The LLVM IR of one State's fragment functions, into one module.
 class PipelineEmitter {
 public:
-    // The functions are named glslrun_quad_depth, glslrun_inputs and
-    // glslrun_outputs, followed by `suffix`.
-    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const State& state, std::string suffix)
-        : module_(module), b_(context), key_(state), ops_(state.ops), suffix_(std::move(suffix)) {
+    // The functions are named glslrun_quad_depth, glslrun_square_depth,
+    // glslrun_inputs and glslrun_outputs (the module's code has a JITDylib
+    // of its own: runtime/jit/engine.h).
+    PipelineEmitter(llvm::LLVMContext& context, llvm::Module& module, const State& state)
+        : module_(module), b_(context), key_(state), ops_(state.ops) {
         i8_ = b_.getInt8Ty();
         i32_ = b_.getInt32Ty();
         i64_ = b_.getInt64Ty();
@@ -163,7 +164,6 @@ private:
     llvm::IRBuilder<> b_;
     const State& key_;
     const FragmentState& ops_;
-    std::string suffix_;
     llvm::Type *i8_, *i32_, *i64_, *f32_, *ptr_;
     llvm::FixedVectorType* v4f_;
     // Per function being defined.

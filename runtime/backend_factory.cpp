@@ -1,5 +1,6 @@
-// The backend factory and the way from a Program to an executor.
-#include "runtime/backend.h"
+// The backend factory and the way from a Program to an executor
+// (runtime/backend_factory.h).
+#include "runtime/backend_factory.h"
 
 #include <fmt/format.h>
 
@@ -17,11 +18,7 @@ namespace glslrun {
 bool jit_available() { return rt::jit_plugin() != nullptr; }
 
 Backend effective_backend(Backend requested, Precision precision) {
-    if (precision == Precision::Reference || requested == Backend::Interp) return Backend::Interp;
-    // Auto must not load the plugin before it compiles anything: its file's presence is enough here
-    // (a plugin that then fails to load leaves the interpreter running, the same bits).
-    const bool jit = requested == Backend::Jit ? jit_available() : rt::jit_plugin_present();
-    return jit ? Backend::Jit : Backend::Interp;
+    return rt::runner_for(requested, precision) == rt::Runner::Jit ? Backend::Jit : Backend::Interp;
 }
 
 Program::JitCompiles Program::jit_compiles() const {
@@ -37,6 +34,14 @@ double Program::jit_compile_seconds() const {
 }  // namespace glslrun
 
 namespace glslrun::rt {
+
+Runner runner_for(Backend requested, Precision precision) {
+    if (precision == Precision::Reference || requested == Backend::Interp) return Runner::Interp;
+    // Auto must not load the plugin before it compiles anything: its file's presence is enough here
+    // (a plugin that then fails to load leaves the interpreter running, the same bits).
+    const bool jit = requested == Backend::Jit ? jit_available() : jit_plugin_present();
+    return jit ? Runner::Jit : Runner::Interp;
+}
 
 namespace {
 
@@ -55,13 +60,13 @@ private:
 
 }  // namespace
 
-std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Backend backend, Precision precision,
+std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Runner runner, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds,
                                                bool quick_codegen, const std::atomic<bool>* stop,
                                                CodeCacheUse cache) {
     if (llvm_seconds) *llvm_seconds = 0;
     if (cache.loaded) *cache.loaded = false;
-    const JitEntryPoints* jit = backend == Backend::Jit ? jit_plugin() : nullptr;
+    const JitEntryPoints* jit = runner == Runner::Jit ? jit_plugin() : nullptr;
     if (jit) {
         jit::CompileStats stats;
         stats.stop = stop;
@@ -89,10 +94,10 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
                       st.fast_ops};
     params.limits.draw = budget;
     if (budget) params.limits.cancel = nullptr;  // the budget polls it
-    BackendCache::Key key{stage, effective_backend(program.exec.backend, params.precision), params.precision,
+    BackendCache::Key key{stage, runner_for(program.exec.backend, params.precision), params.precision,
                           params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
     std::unique_ptr<Executor> executor;
-    if (key.backend != Backend::Jit) {
+    if (key.runner != Runner::Jit) {
         executor = st.backends->get(shader, key).instantiate(params);
     } else {
         key.specialization =
@@ -102,7 +107,7 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
             executor = st.backends->get(shader, key, &cache).instantiate(params);
         } else {
             BackendCache::Key interp = key;
-            interp.backend = Backend::Interp;
+            interp.runner = Runner::Interp;
             interp.specialization.clear();
             executor = st.backends->auto_executor(shader, key, interp, params, &cache);
         }
