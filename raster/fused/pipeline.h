@@ -31,6 +31,10 @@
 #include "runtime/backend.h"
 #include "runtime/tiering.h"
 
+namespace glslrun::rt {
+struct CodeCacheConfig;  // runtime/code_cache.h
+}
+
 namespace glslrun::raster::fused {
 
 using rt::kLanes;
