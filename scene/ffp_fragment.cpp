@@ -120,7 +120,8 @@ std::string argument(uint8_t source, CombineOperand op, int unit, bool alpha) {
     case CombineOperand::SrcColor: return s + ".rgb";
     case CombineOperand::OneMinusSrcColor: return fmt::format("(1.0 - {}.rgb)", s);
     case CombineOperand::SrcAlpha: return alpha ? s + ".a" : fmt::format("vec3({}.a)", s);
-    case CombineOperand::OneMinusSrcAlpha: return alpha ? fmt::format("(1.0 - {}.a)", s) : fmt::format("vec3(1.0 - {}.a)", s);
+    case CombineOperand::OneMinusSrcAlpha:
+        return alpha ? fmt::format("(1.0 - {}.a)", s) : fmt::format("vec3(1.0 - {}.a)", s);
     }
     return s;
 }
@@ -172,28 +173,30 @@ std::string texenv(const Combiner& c, int unit) {
     return out;
 }
 
+// The sampler type and the projective lookup of a target (GL's fixed function divides by q).
 struct Sampler {
     const char* type;
-    std::string (*lookup)(const std::string& sampler, const std::string& coord);
+    const char* function;  // nullptr: textureCube, which has no projective form
 };
 
 Sampler sampler_for(TextureTarget t, bool shadow) {
     switch (t) {
     case TextureTarget::Tex1D:
-        if (shadow) return {"sampler1DShadow", [](const std::string& s, const std::string& c) { return fmt::format("shadow1DProj({}, {})", s, c); }};
-        return {"sampler1D", [](const std::string& s, const std::string& c) { return fmt::format("texture1DProj({}, {})", s, c); }};
+        return shadow ? Sampler{"sampler1DShadow", "shadow1DProj"} : Sampler{"sampler1D", "texture1DProj"};
     case TextureTarget::Tex2D:
-        if (shadow) return {"sampler2DShadow", [](const std::string& s, const std::string& c) { return fmt::format("shadow2DProj({}, {})", s, c); }};
-        return {"sampler2D", [](const std::string& s, const std::string& c) { return fmt::format("texture2DProj({}, {})", s, c); }};
-    case TextureTarget::Tex3D:
-        return {"sampler3D", [](const std::string& s, const std::string& c) { return fmt::format("texture3DProj({}, {})", s, c); }};
-    case TextureTarget::Cube:
-        return {"samplerCube", [](const std::string& s, const std::string& c) { return fmt::format("textureCube({0}, {1}.xyz / {1}.w)", s, c); }};
+        return shadow ? Sampler{"sampler2DShadow", "shadow2DProj"} : Sampler{"sampler2D", "texture2DProj"};
+    case TextureTarget::Tex3D: return {"sampler3D", "texture3DProj"};
+    case TextureTarget::Cube: return {"samplerCube", nullptr};
     case TextureTarget::Rect:
-        if (shadow) return {"sampler2DRectShadow", [](const std::string& s, const std::string& c) { return fmt::format("shadow2DRectProj({}, {})", s, c); }};
-        return {"sampler2DRect", [](const std::string& s, const std::string& c) { return fmt::format("texture2DRectProj({}, {})", s, c); }};
+        return shadow ? Sampler{"sampler2DRectShadow", "shadow2DRectProj"}
+                      : Sampler{"sampler2DRect", "texture2DRectProj"};
     }
-    return {"sampler2D", nullptr};
+    return {"sampler2D", "texture2DProj"};
+}
+
+std::string lookup(const Sampler& s, const std::string& sampler, const std::string& coord) {
+    if (!s.function) return fmt::format("textureCube({0}, {1}.xyz / {1}.w)", sampler, coord);
+    return fmt::format("{}({}, {})", s.function, sampler, coord);
 }
 
 const Texture& bound_texture(const GLState& gl, int unit, int target) {
@@ -221,7 +224,8 @@ std::string fog(const FixedFunction& f, const GLState& gl) {
         factor = fmt::format("gl_FogFragCoord * {} + {}", literal(scale), literal(gl.fog.end * -scale));
         break;
     case FogMode::Exp:
-        factor = fmt::format("exp2(-(gl_FogFragCoord * {}))", literal(float(double(gl.fog.density) * 1.4426950408889634)));
+        factor = fmt::format("exp2(-(gl_FogFragCoord * {}))",
+                             literal(float(double(gl.fog.density) * 1.4426950408889634)));
         break;
     case FogMode::Exp2:
         factor = fmt::format("exp2(-((gl_FogFragCoord * {0}) * (gl_FogFragCoord * {0})))",
@@ -269,11 +273,13 @@ std::string fragment_source(const Scene& scene, const GLState& gl) {
         Sampler s = sampler_for(TextureTarget(target), t.depth() && t.sampler.compare);
         rectangle = rectangle || TextureTarget(target) == TextureTarget::Rect;
         head += fmt::format("uniform {} {};\n", s.type, sampler_uniform(u));
-        body += fmt::format("    vec4 texel{} = {};\n", u, s.lookup(sampler_uniform(u), fmt::format("gl_TexCoord[{}]", u)));
+        std::string coord = fmt::format("gl_TexCoord[{}]", u);
+        body += fmt::format("    vec4 texel{} = {};\n", u, lookup(s, sampler_uniform(u), coord));
     }
     for (int u = 0; u < 8; ++u)
         if (enabled >> u & 1) body += texenv(combiners[size_t(u)], u);
-    if ((f.lighting && f.separate_specular) || f.color_sum) body += "    previous.rgb = previous.rgb + gl_SecondaryColor.rgb;\n";
+    if ((f.lighting && f.separate_specular) || f.color_sum)
+        body += "    previous.rgb = previous.rgb + gl_SecondaryColor.rgb;\n";
     if (f.fog) body += fog(f, gl);
     std::string out = "// GL's fixed-function fragment stage for this draw's state, generated by glslrun\n";
     if (rectangle) out += "#extension GL_ARB_texture_rectangle : enable\n";

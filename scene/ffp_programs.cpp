@@ -19,8 +19,10 @@ class FixedFunctionPrograms {
 public:
     explicit FixedFunctionPrograms(CompileOptions options) : options_(std::move(options)) {}
     // The program of `base`'s shaders (none for a fixed pass) with the generated stages.
+    // `generated_vertex`: the vertex stage is GL's fixed function (the rasterizer treats its point size so).
     Result<Program*> get(const Program* base, const std::vector<ShaderSource>& vertex,
-                         const std::vector<ShaderSource>& fragment, const CompileOptions& options, uint8_t samplers);
+                         const std::vector<ShaderSource>& fragment, const CompileOptions& options, uint8_t samplers,
+                         bool generated_vertex);
     const CompileOptions& options() const { return options_; }
 
 private:
@@ -75,12 +77,14 @@ std::string stage_text(const std::vector<ShaderSource>& sources) {
 
 Result<Program*> FixedFunctionPrograms::get(const Program* base, const std::vector<ShaderSource>& vertex,
                                             const std::vector<ShaderSource>& fragment, const CompileOptions& options,
-                                            uint8_t samplers) {
-    std::string key = fmt::format("{}\n{}\x01{}", static_cast<const void*>(base), stage_text(vertex), stage_text(fragment));
+                                            uint8_t samplers, bool generated_vertex) {
+    std::string key =
+        fmt::format("{}\n{}\x01{}", static_cast<const void*>(base), stage_text(vertex), stage_text(fragment));
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second.get();
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
+    state_of(*program).ir.fixed_function_vertex = generated_vertex;
     // A unit whose texel no combiner reads (DECAL of a luminance texture) has no active sampler.
     for (int u = 0; u < 8; ++u)
         if ((samplers >> u & 1) && program->has_uniform(ffp::sampler_uniform(u)))
@@ -105,7 +109,7 @@ Result<Program*> ScenePrograms::for_draw(size_t pass, const Scene& scene, GLStat
     if (gen_vs) vertex = {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}};
     if (gen_fs) fragment = {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}};
     auto program = fixed_->get(fixed ? nullptr : &base, vertex, fragment, fixed ? fixed_->options() : st.options,
-                               samplers);
+                               samplers, gen_vs);
     if (!program) {
         std::string own = gen_vs ? (st.fragment_sources.empty() ? "" : st.fragment_sources[0].name)
                                  : st.vertex_sources[0].name;
@@ -167,7 +171,8 @@ Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>
     uint8_t units = ffp::fragment_units(scene, gl);
     ffp::VertexNeeds needs{units};
     return cache->get(nullptr, {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}},
-                      {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}}, cache->options(), units);
+                      {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}}, cache->options(), units,
+                      true);
 }
 
 std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options) {

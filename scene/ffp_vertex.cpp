@@ -54,8 +54,9 @@ std::string scene_color(const FixedFunction& f, const Side& side) {
     using M = ColorMaterialMode;
     if (!tracked(f, side, M::Emission) && !tracked(f, side, M::Ambient) && !tracked(f, side, M::Diffuse))
         return fmt::format("gl_{}LightModelProduct.sceneColor", side.name);
-    return fmt::format("vec4(gl_LightModel.ambient.rgb * {}.rgb + {}.rgb, {}.a)", material(f, side, M::Ambient, "ambient"),
-                       material(f, side, M::Emission, "emission"), material(f, side, M::Diffuse, "diffuse"));
+    return fmt::format("vec4(gl_LightModel.ambient.rgb * {}.rgb + {}.rgb, {}.a)",
+                       material(f, side, M::Ambient, "ambient"), material(f, side, M::Emission, "emission"),
+                       material(f, side, M::Diffuse, "diffuse"));
 }
 
 bool positional(const LightState& l) { return l.position.w != 0.0f; }
@@ -193,6 +194,17 @@ std::string eye_normal(const FixedFunction& f) {
     return "    vec3 normal = gl_NormalMatrix * gl_Normal;\n";
 }
 
+// GL 1.4's distance attenuation, as Mesa's fixed-function program computes
+// it (d = |eye z|, the RSQ of |x|) and only where the attenuation is not
+// (1, 0, 0); the rasterizer then takes the size (ir::Program::fixed_function_vertex).
+std::string point_size(const GLState& gl) {
+    if (gl.point_distance_attenuation == glm::vec3(1, 0, 0)) return {};
+    return "    float d = abs(eye.z);\n"
+           "    float size = gl_Point.size * inversesqrt(abs(gl_Point.distanceConstantAttenuation + d * "
+           "(gl_Point.distanceLinearAttenuation + d * gl_Point.distanceQuadraticAttenuation)));\n"
+           "    gl_PointSize = min(max(size, gl_Point.sizeMin), gl_Point.sizeMax);\n";
+}
+
 }  // namespace
 
 std::string vertex_source(const Scene& scene, const GLState& gl, const VertexNeeds& needs) {
@@ -206,7 +218,7 @@ std::string vertex_source(const Scene& scene, const GLState& gl, const VertexNee
     out += f.lighting ? lighting(scene, gl) : unlit_colors();
     out += texcoords(f, needs.texcoords);
     out += f.fog_coord_from_array ? "    gl_FogFragCoord = gl_FogCoord;\n" : "    gl_FogFragCoord = abs(eye.z);\n";
-    return out + "}\n";
+    return out + point_size(gl) + "}\n";
 }
 
 }  // namespace glslrun::scene::ffp

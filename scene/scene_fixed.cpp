@@ -57,7 +57,8 @@ void read_light_model_fixed(const Section& s, FixedFunction& f) {
 }
 
 void read_fog_fixed(const Section& s, FixedFunction& f) {
-    if (const toml::node* n = s.get("mode")) f.fog_mode = FogMode(choice(*n, s.name("mode"), {"linear", "exp", "exp2"}));
+    if (const toml::node* n = s.get("mode"))
+        f.fog_mode = FogMode(choice(*n, s.name("mode"), {"linear", "exp", "exp2"}));
     if (const toml::node* n = s.get("coord_src"))
         f.fog_coord_from_array = choice(*n, s.name("coord_src"), {"fragment_depth", "fog_coord"}) == 1;
 }
@@ -82,7 +83,8 @@ float combine_scale(const Section& s, std::string_view key, float current) {
     if (!n) return current;
     double v = number(*n, s.name(key));
     if (v != 1 && v != 2 && v != 4)
-        fail(*n, fmt::format("'{}' must be 1, 2 or 4 (GL's values; GL_INVALID_VALUE otherwise); got {}", s.name(key), v));
+        fail(*n, fmt::format("'{}' must be 1, 2 or 4 (GL's values; GL_INVALID_VALUE otherwise); got {}",
+                             s.name(key), v));
     return float(v);
 }
 
@@ -128,7 +130,8 @@ void read_texture_env(const Section& s, TextureEnv& env) {
     s.read_color("color", env.color);
     for (int c = 0; c < 4; ++c)
         if (env.color[c] < 0 || env.color[c] > 1)
-            fail(*s.get("color"), fmt::format("'{}' must be in [0, 1] (GL clamps GL_TEXTURE_ENV_COLOR)", s.name("color")));
+            fail(*s.get("color"),
+                 fmt::format("'{}' must be in [0, 1] (GL clamps GL_TEXTURE_ENV_COLOR)", s.name("color")));
     read_combine(s, env);
     bool combine_keys = false;
     for (std::string_view k : keys)

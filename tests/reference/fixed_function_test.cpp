@@ -400,7 +400,8 @@ t = { mode = "eye_linear", eye_plane = [0, 0.4, 0, 0.5] }
 }
 
 TEST_CASE("a fixed-function object beside a shaded one", "[reference][fixed]") {
-    const char* vertex = "void main() { gl_FrontColor = vec4(1.0, 0.5, 0.25, 1.0) * gl_Color; gl_Position = ftransform(); }\n";
+    const char* vertex =
+        "void main() { gl_FrontColor = vec4(1.0, 0.5, 0.25, 1.0) * gl_Color; gl_Position = ftransform(); }\n";
     const char* fragment = "void main() { gl_FragColor = gl_Color.bgra; }\n";
     compare_fixed("ffp-beside-shaded", std::string(kCamera) + R"(
 [state]
@@ -506,4 +507,11 @@ TEST_CASE("scenes/fixed_function.toml without shaders matches Mesa's fixed funct
     reference::Inputs in{{{"unused.vert", kUnusedVertex}}, {{"unused.frag", kUnusedFragment}}, std::move(*scene)};
     reference::compare("ffp-scene-file", in);
     reference::check_same_everywhere(in);
+}
+
+TEST_CASE("the fixed-function vertex stage clips against user clip planes in eye space", "[reference][fixed]") {
+    std::string lights = kEightLights;
+    lights.replace(lights.find("[state]\ndepth_test = true\n"), 26,
+                   "[state]\ndepth_test = true\nclip_planes = [[1, 0.3, 0, 0.2], [0, -1, 0.2, 0.6]]\n");
+    compare_all_fixed("ffp-clip-planes", std::string(kCamera) + lights);
 }

@@ -23,7 +23,8 @@ void set_color_material(const FixedFunction& f) {
 
 GLenum source_enum(uint8_t source) {
     constexpr GLenum kSources[] = {GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS};
-    return source < scene::kCombineTexture0 ? kSources[source] : GLenum(GL_TEXTURE0 + (source - scene::kCombineTexture0));
+    if (source < scene::kCombineTexture0) return kSources[source];
+    return GLenum(GL_TEXTURE0 + (source - scene::kCombineTexture0));
 }
 
 void set_combine(const scene::TextureEnv& e) {
