@@ -269,11 +269,8 @@ struct Lookup {
     glm::vec3 str;
     bool compare;
     float ref;
-<<<<<<< HEAD
     int layer_j = 0, layer_k = 0;
-=======
     SamplingRules rules = SamplingRules::Common;
->>>>>>> gpufast
 };
 
 // EXT_texture_array: the layer of coordinate r is clamp(floor(r + 1/2), 0,
@@ -285,7 +282,8 @@ inline float unorm(float x) { return clamp_or_low(x, 0.0f, 1.0f); }
 [[gnu::always_inline]] inline Lookup make_lookup(const Texture& texture, const glm::vec3& coord, float ref,
                                                  SamplingRules rules = SamplingRules::Common) {
     const SamplerState& st = texture.sampler;
-    Lookup lk{&texture, &st, 0, texture_dims(texture.target()), coord, false, 0.0f, rules};
+    Lookup lk{&texture, &st, 0, texture_dims(texture.target()), coord, false, 0.0f};
+    lk.rules = rules;
     if (texture.target() == TextureTarget::Cube) {
         lk.face = cube_face(coord);
         lk.str = cube_coord(kCubeFaces[lk.face], coord);

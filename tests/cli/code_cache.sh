@@ -51,7 +51,7 @@ for name in fused_cold fused_warm; do
         fail "render $name failed: $(head -c 300 $name.err)"
     grep -q '^fused_fragments  *[1-9]' $name.txt || fail "$name: the fused pipeline drew no fragment"
 done
-grep -q "1 pipeline compiled, 0 loaded from the code cache" fused_cold.txt || fail "fused, cold: $(grep fragments fused_cold.txt)"
+grep -q "1 pipeline compiled, 0 loaded from the code cache" fused_cold.txt || fail "fused, cold: $(grep pipelines fused_cold.txt)"
 grep -q "0 shaders compiled, 2 loaded" fused_warm.txt || fail "fused, warm: $(grep backend fused_warm.txt)"
 grep -q "0 pipelines compiled, 1 loaded from the code cache" fused_warm.txt ||
     fail "fused, warm: the pipeline was not loaded: $(grep fragments fused_warm.txt)"

@@ -299,11 +299,10 @@ std::string format_stats(const Program& prog, const scene::Scene& scene, const D
     // The fused pipeline's fragments, and its share of LLVM's time above.
     const raster::fused::Cache& pipelines = *state_of(prog).pipelines;
     const Program::JitCompiles made = pipelines.counts();
-    fmt::format_to(out,
-                   "fragments    {} shaded, {} written; fused pipeline: {} (LLVM {:.2f} ms; {} pipeline{} compiled, {} "
-                   "loaded from the code cache)\n",
-                   s.fragments_shaded, s.fragments_written, s.fragments_fused, pipelines.compile_seconds() * 1e3,
-                   made.compiled, made.compiled == 1 ? "" : "s", made.loaded);
+    fmt::format_to(out, "fragments    {} shaded, {} written; fused pipeline: {}\n", s.fragments_shaded,
+                   s.fragments_written, s.fragments_fused);
+    fmt::format_to(out, "pipelines    {} pipeline{} compiled, {} loaded from the code cache (LLVM {:.2f} ms)\n",
+                   made.compiled, made.compiled == 1 ? "" : "s", made.loaded, pipelines.compile_seconds() * 1e3);
     fmt::format_to(out, "instructions {} (bounded per draw, and per render by --max-instructions)\n",
                    s.instructions);
     fmt::format_to(out, "time (ms)    compile {:.2f}, vertex {:.2f}, setup+raster {:.2f}, fragment {:.2f}, output {:.2f}\n",
