@@ -68,8 +68,10 @@ inline float lambda_of_rho(float rho) {
 // lambda after the biases and clamps, in the GPU's 8 fraction bits (ties up).
 inline float quantize_lambda(float lambda) { return floor_f(lambda * 256.0f + 0.5f) * (1.0f / 256.0f); }
 
-// An 8-bit weight 0..256 for a fraction a in [0, 1].
-inline int weight8(float a) { return int(a * 256.0f + 0.5f); }
+// An 8-bit weight 0..256 for a fraction a in [0, 1]. A NaN coordinate's
+// fraction (NaN) weighs 0: the first texel, on every backend (a NaN cast to
+// int is undefined behaviour, not the CPU's INT_MIN).
+inline int weight8(float a) { return a > 0.0f ? int(std::min(a, 1.0f) * 256.0f + 0.5f) : 0; }
 
 // Channel arithmetic on Texel; every value is a non-negative integer below
 // 2^24, so each operation is exact and truncation is floor.
