@@ -60,6 +60,9 @@ static int thread_count() {
 TEST_CASE("parallel isolated runs keep their own results, reported in order", "[piglit][isolate]") {
     std::vector<size_t> order;
     std::vector<int> threads_at_report;
+    // Earlier test cases may have left threads of their own (a render's
+    // background compile thread): the runner must add none.
+    const int threads_before = thread_count();
     auto results = run_isolated_tests(24, 6, [](size_t i) {
         if (i % 5 == 4) std::raise(SIGSEGV);
         if (i % 7 == 3) std::this_thread::sleep_for(std::chrono::seconds(30));
@@ -75,7 +78,7 @@ TEST_CASE("parallel isolated runs keep their own results, reported in order", "[
         CHECK(order[i] == i);
         // Children are forked from this thread alone: no thread of the runner
         // may be allocating at a fork (#17: an ASan child hung on its lock).
-        CHECK(threads_at_report[i] == 1);
+        CHECK(threads_at_report[i] <= threads_before);
         if (i % 5 == 4) CHECK(results[i].message == "crashed: signal 11 (SIGSEGV)");
         else if (i % 7 == 3) CHECK(results[i].message == "timed out after 2 s");
         else CHECK(results[i].message == "r" + std::to_string(i));
