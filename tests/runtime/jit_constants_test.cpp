@@ -9,8 +9,8 @@
 
 #include <limits>
 
-#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
+#include "tests/runtime/backend_pair.h"
 #include "tests/runtime/ir_builder.h"
 
 using namespace glslrun;
@@ -42,13 +42,11 @@ TEST_CASE("division and mod by prologue constants agree with the interpreter", "
                 b.instr(Op::fmod, Kind::F32, m, {x, d});
                 std::vector<uint32_t> uniforms(4);
                 rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
-                auto interp = rt::compile_shader(b.sh, rt::Runner::Interp, precision, params.fast_ops, avx2);
-                auto jit = rt::compile_shader(b.sh, rt::Runner::Jit, precision, params.fast_ops, avx2);
-                REQUIRE(jit);
-                auto ia = interp->instantiate(params), ja = jit->instantiate(params);
+                test::BackendPair pair = test::both_backends(b.sh, precision, params, avx2);
+                rt::Executor *ia = pair.interp.get(), *ja = pair.jit.get();
                 REQUIRE(ja->runner() == rt::Runner::Jit);
                 for (int k = 0; k < n; k += rt::kLanes) {
-                    for (rt::Executor* e : {ia.get(), ja.get()})
+                    for (rt::Executor* e : {ia, ja})
                         for (int lane = 0; lane < rt::kLanes; ++lane) e->lanes(x)[lane] = dividends[(k + lane) % n];
                     REQUIRE(ia->run(rt::kAllLanes, nullptr));
                     REQUIRE(ja->run(rt::kAllLanes, nullptr));

@@ -12,8 +12,8 @@
 #include <random>
 #include <vector>
 
-#include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
+#include "tests/runtime/backend_pair.h"
 #include "tests/runtime/ir_builder.h"
 
 using namespace glslrun;
@@ -88,15 +88,13 @@ void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in) {
     b.output("r", r);
     std::vector<uint32_t> uniforms(4);
     rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
-    auto interp = rt::compile_shader(b.sh, rt::Runner::Interp, precision, params.fast_ops, avx2);
-    auto jit = rt::compile_shader(b.sh, rt::Runner::Jit, precision, params.fast_ops, avx2);
-    REQUIRE(jit);
-    auto ia = interp->instantiate(params), ja = jit->instantiate(params);
+    test::BackendPair pair = test::both_backends(b.sh, precision, params, avx2);
+    rt::Executor *ia = pair.interp.get(), *ja = pair.jit.get();
     size_t mismatches = 0;
     for (size_t k = 0; k < in.a.size(); k += rt::kLanes) {
         const rt::LaneMask live =
             (k / rt::kLanes) % 4 == 3 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
-        for (rt::Executor* e : {ia.get(), ja.get()})
+        for (rt::Executor* e : {ia, ja})
             for (int lane = 0; lane < rt::kLanes; ++lane) {
                 const size_t i = (k + size_t(lane)) % in.a.size();
                 e->lanes(x)[lane] = in.a[i];
