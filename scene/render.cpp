@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -125,7 +127,7 @@ Status apply_settings(Program& program, const std::vector<UniformInfo>& infos,
 // The texture a setting binds under `rounding`: with the GPU's rounding a
 // GL_GENERATE_MIPMAP texture's levels are generated again as NVIDIA's driver
 // makes them (rt::generate_gpu_mipmaps), into a copy.
-std::shared_ptr<const Texture> texture_for(const TextureSetting& t, ColorRounding rounding) {
+std::shared_ptr<const Texture> gpu_texture_for(const TextureSetting& t, ColorRounding rounding) {
     if (rounding != ColorRounding::Gpu || !t.generate_mipmap || !t.texture) return t.texture;
     auto copy = std::make_shared<Texture>(*t.texture);
     if (!rt::generate_gpu_mipmaps(*copy)) return t.texture;
@@ -142,8 +144,23 @@ Status apply_uniforms(Program& program, const std::vector<UniformSetting>& setti
 Result<GLState> bind_scene_textures(const Scene& scene, ColorRounding rounding) {
     GLState bound = scene.gl;
     for (const TextureSetting& t : scene.textures)
-        if (Status st = bound.bind_texture(t.unit, texture_for(t, rounding)); !st) return st.error();
+        if (Status st = bound.bind_texture(t.unit, gpu_texture_for(t, rounding)); !st) return st.error();
     return bound;
+}
+
+// The GPU-mipmapped copies by source texture (holding the source, so that
+// its address is not reused while it is a key).
+struct ScenePrograms::GpuMipmaps {
+    std::mutex mutex;
+    std::map<const Texture*, std::pair<std::shared_ptr<const Texture>, std::shared_ptr<const Texture>>> copies;
+};
+
+std::shared_ptr<const Texture> ScenePrograms::texture_for(const TextureSetting& t, ColorRounding rounding) const {
+    if (rounding != ColorRounding::Gpu || !t.generate_mipmap || !t.texture) return t.texture;
+    std::lock_guard lock(gpu_mipmaps_->mutex);
+    auto& slot = gpu_mipmaps_->copies[t.texture.get()];
+    if (!slot.first) slot = {t.texture, gpu_texture_for(t, rounding)};
+    return slot.second;
 }
 
 GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& object, const Pass* pass) {
@@ -177,6 +194,7 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, const CompileOptions& options) {
     ScenePrograms programs;
     programs.fixed_ = make_fixed_function_programs(options);
+    programs.gpu_mipmaps_ = std::make_shared<GpuMipmaps>();
     if (Status st = check_fixed_state_builtins(main, scene); !st) return st.error();
     if (scene.passes.empty()) programs.by_pass_.push_back(&main);
     for (const Pass& pass : scene.passes) {
@@ -272,7 +290,7 @@ Result<DrawStats> draw_pass(const ScenePrograms& programs, size_t index, const S
     auto draw_object = [&](const Object& object) -> Status {
         // glBindTexture: context state, so it stays for the objects after this one.
         for (const TextureSetting& t : object.textures)
-            if (Status st = bound.bind_texture(t.unit, texture_for(t, fb.rounding)); !st) return st;
+            if (Status st = bound.bind_texture(t.unit, programs.texture_for(t, fb.rounding)); !st) return st;
         GLState gl = object_gl_state(scene, bound, object, pass);
         if (!object.uniforms.empty()) {
             if (!infos) infos = program.uniforms();
@@ -416,8 +434,10 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
         if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
-    auto bound = bind_scene_textures(scene, fb.rounding);
-    if (!bound) return bound.error();
+    // (the scene's own textures through the programs' GPU-mipmapped copies)
+    Result<GLState> bound = scene.gl;
+    for (const TextureSetting& t : scene.textures)
+        if (Status st = bound->bind_texture(t.unit, programs.texture_for(t, fb.rounding)); !st) return st.error();
     if (scene.passes.empty()) return draw_pass(programs, 0, scene, *bound, nullptr, fb, pending);
     auto targets = make_targets(scene, fb.rounding);
     if (!targets) return targets.error();

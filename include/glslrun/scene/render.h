@@ -57,10 +57,17 @@ public:
     // Called before pass i draws (the shader debugger's pixel history names
     // each draw's pass); not with a scene without passes.
     std::function<void(size_t pass)> before_pass;
+    // The texture `t` binds under `rounding`: with the GPU's rounding a
+    // GL_GENERATE_MIPMAP texture's levels as NVIDIA's driver makes them,
+    // generated once per texture for these programs' renders (every frame
+    // and object binds the same copy).
+    std::shared_ptr<const Texture> texture_for(const TextureSetting& t, ColorRounding rounding) const;
 private:
     std::vector<std::shared_ptr<Program>> own_;
     std::vector<Program*> by_pass_;
     std::shared_ptr<FixedFunctionPrograms> fixed_;
+    struct GpuMipmaps;  // scene/render.cpp
+    std::shared_ptr<GpuMipmaps> gpu_mipmaps_;
 };
 
 // For a scene drawn without shaders (`glslrun scene.toml`): every draw with
