@@ -14,10 +14,12 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/sampling_direct.h"
 #include "runtime/texture_levels.h"
 
 using namespace glslrun;
@@ -261,6 +263,39 @@ TEST_CASE("batched sampling equals per-lane sampling: rectangles", "[sampling][b
             depth.sampler.depth_mode = mode;
             sweep_rect(depth, true);
         }
+}
+
+// The one-pass kernels (sampling_direct.h) on the sizes where their
+// clamps meet: one texel (size - 1/2 = 1/2), one row or column, odd sizes;
+// RGBA8 texels; every wrap pair and both filters, normalized and rectangle.
+// The sweeps above reach them too; this says they are the ones taken.
+TEST_CASE("batched sampling equals per-lane sampling: one-pass 2D and rectangle kernels", "[sampling][batch]") {
+    std::mt19937 rng(4242);
+    for (auto [w, h] : {std::pair{1, 1}, {1, 5}, {7, 1}, {3, 17}}) {
+        for (TextureTarget target : {TextureTarget::Tex2D, TextureTarget::Rect}) {
+            Texture t = make(rng, target, TextureFormat::RGBA8, w, h);
+            t.sampler.border_color = {0.5f, 1.5f, -0.25f, 0.75f};
+            const bool rect = target == TextureTarget::Rect;
+            for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (TextureWrap s : kWraps)
+                    for (TextureWrap u : kWraps) {
+                        if (rect && (s == TextureWrap::Repeat || s == TextureWrap::MirroredRepeat ||
+                                     u == TextureWrap::Repeat || u == TextureWrap::MirroredRepeat))
+                            continue;  // incomplete rectangles
+                        t.sampler.min_filter = t.sampler.mag_filter = filter;
+                        t.sampler.wrap_s = s;
+                        t.sampler.wrap_t = u;
+                        REQUIRE(t.complete());
+#if defined(__x86_64__) && defined(__GNUC__)
+                        REQUIRE(rt::direct_samples(t));
+#endif
+                        for (int batch = 0; batch < 3; ++batch) check_batch(rng, t, false, ir::TexLod::Implicit);
+                    }
+            t.sampler.min_filter = TextureFilter::Nearest;
+            t.sampler.mag_filter = TextureFilter::Linear;
+            CHECK_FALSE(rt::direct_samples(t));  // the lanes choose a filter: the steps
+        }
+    }
 }
 
 // The sweep skips what batch_samples() refuses; this says what that is: 3D
