@@ -343,7 +343,12 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
     info.target = ir::TexTarget::T2D;
     info.lod = ir::TexLod::ImplicitBias;
     constexpr int32_t kUnits[] = {0, 3, 0, 4, 5, -1, 99, 3};
-    for (int round = 0; round < 20; ++round) {
+    for (int round = 0; round < 32; ++round) {
+        // From round 20 the results overwrite the operand block (a register
+        // reused), half of those a whole batch of mixed units, which the
+        // kernel samples straight into the destination: no lane's result may
+        // overwrite a word that a lookup still reads.
+        const bool alias = round >= 20, mixed_whole = alias && round % 2;
         std::vector<uint32_t> block(size_t(info.operand_count()) * rt::kLanes);
         auto operand = [&](uint32_t k, int lane) -> float& {
             return *reinterpret_cast<float*>(&block[size_t(k) * rt::kLanes + size_t(lane)]);
@@ -358,8 +363,9 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
                                          : kUnits[size_t(round / 2) % std::size(kUnits)]);
         }
         for (uint32_t& w : dst) w = 0xdeadbeefu;
+        const std::vector<uint32_t> before = block;
         rt::Step<uint32_t> step;
-        step.dst = dst;
+        step.dst = alias ? block.data() : dst;
         step.src[0] = unit;
         step.src[1] = block.data();
         step.imm[2] = info.encode();
@@ -367,9 +373,13 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
         m.textures = units.data();
         // Every fourth round a whole batch: sampled whole (an incomplete or unbound unit's defaults then come afterwards).
         const rt::LaneMask active =
-            round % 4 == 0 ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+            round % 4 == 0 || mixed_whole ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
         m.mask.reset(active);
-        m.lookups = round % 3 ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+        m.lookups = round % 3 || mixed_whole ? rt::kAllLanes
+                                             : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+        const auto operand_before = [&](uint32_t k, int lane) {
+            return std::bit_cast<float>(before[size_t(k) * rt::kLanes + size_t(lane)]);
+        };
         rt::kernels::tex<uint32_t>(step, m);
         for (int i = 0; i < rt::kLanes; ++i) {
             float want[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -380,18 +390,19 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
                 want[3] = 0.0f;
             } else if (texture && texture->complete()) {
                 rt::LaneLookup lane;
-                lane.coord = {operand(0, i), operand(1, i), 0.0f};
-                lane.ddx = {operand(info.ddx_at(), i), operand(info.ddx_at() + 1, i), 0.0f};
-                lane.ddy = {operand(info.ddy_at(), i), operand(info.ddy_at() + 1, i), 0.0f};
-                lane.lod = operand(info.lod_at(), i);
+                lane.coord = {operand_before(0, i), operand_before(1, i), 0.0f};
+                lane.ddx = {operand_before(info.ddx_at(), i), operand_before(info.ddx_at() + 1, i), 0.0f};
+                lane.ddy = {operand_before(info.ddy_at(), i), operand_before(info.ddy_at() + 1, i), 0.0f};
+                lane.lod = operand_before(info.lod_at(), i);
                 lane.bias = true;
                 rt::sample_complete_lane(*texture, lane, want);
             }
             for (uint32_t c = 0; c < ir::kTexResults; ++c) {
                 INFO("round " << round << " lane " << i << " unit " << u << " channel " << c);
-                const uint32_t got = dst[c * rt::kLanes + size_t(i)];
+                const size_t at = c * rt::kLanes + size_t(i);
+                const uint32_t got = step.dst[at];
                 if ((active >> i) & 1) REQUIRE(got == std::bit_cast<uint32_t>(want[c]));
-                else REQUIRE(got == 0xdeadbeefu);
+                else REQUIRE(got == (alias ? before[at] : 0xdeadbeefu));
             }
         }
     }
