@@ -175,13 +175,15 @@ template <bool kBorder>
         border = _mm256_cmpgt_epi32(_mm256_setzero_si256(), _mm256_or_si256(x, y));  // either index negative
         at = _mm256_andnot_si256(border, at);
     }
-    alignas(32) int ix[8];
-    _mm256_store_si256(reinterpret_cast<I*>(ix), at);
+    // Byte offsets (below 2^28), unsigned: each load takes its offset as it
+    // is, with no sign extension or scaling in between.
+    alignas(32) uint32_t off[8];
+    _mm256_store_si256(reinterpret_cast<I*>(off), _mm256_slli_epi32(at, 4));
+    const char* base = reinterpret_cast<const char*>(src.texels);
+    const auto texel = [&](int j) { return _mm_loadu_ps(reinterpret_cast<const float*>(base + off[j])); };
     V r[4];
 #pragma GCC unroll 4
-    for (int j = 0; j < 4; ++j)
-        r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&src.texels[ix[j]].x)),
-                                    _mm_loadu_ps(&src.texels[ix[4 + j]].x), 1);
+    for (int j = 0; j < 4; ++j) r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(texel(j)), texel(4 + j), 1);
     // Lanes 0..3 in the low halves, 4..7 in the high ones, each half a 4x4 transpose.
     const V t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
     const V t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
