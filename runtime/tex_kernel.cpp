@@ -14,6 +14,7 @@
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/sampling_gpu_batch.h"
 
 namespace glslrun::rt::kernels {
 
@@ -156,6 +157,10 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
         sampled |= lanes;
+        if (rules == SamplingRules::Gpu && gpu_batch_samples(*texture)) {
+            sample_gpu_batch(*texture, batch, lanes, out, use_avx2());
+            continue;
+        }
         if (!lanes_only(*texture, rules) && batch_samples(*texture)) {
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;
