@@ -50,10 +50,10 @@ void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
         const float* __restrict dxt = lk.ddx[1];
         const float* __restrict dys = lk.ddy[0];
         const float* __restrict dyt = lk.ddy[1];
-        for (int i = 0; i < kLanes; ++i) {
-            const int from = i & ~3;
-            lambda[i] = gpu::lambda_of_rho(
-                gpu_rho({dxs[from], dxt[from], 0.0f}, {dys[from], dyt[from], 0.0f}, size, dims));
+        // One lambda_base per quad (lanes 4q..4q+3), from its first lane's derivatives.
+        for (int q = 0; q < kLanes; q += 4) {
+            const float base = gpu::lambda_of_rho(gpu_rho({dxs[q], dxt[q], 0.0f}, {dys[q], dyt[q], 0.0f}, size, dims));
+            for (int i = q; i < q + 4; ++i) lambda[i] = base;
         }
         if (lk.bias)
             for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
@@ -67,6 +67,7 @@ void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
 
 // gpu::filter16()'s choices for every lane: magnification or minification,
 // the filter within the level, the level(s) and the 8-bit mipmap weight.
+template <bool kRound>
 void choose_levels(const Texture& texture, GpuLanes& l) {
     const SamplerState& st = texture.sampler;
     const int base = st.base_level;
@@ -80,7 +81,7 @@ void choose_levels(const Texture& texture, GpuLanes& l) {
         const bool mag = lambda <= 0.0f;
         const bool minify = !mag && mipmap;
         const bool last = float(base) + lambda >= float(q);
-        const float whole = floor_f(lambda);
+        const float whole = floor_t<kRound>(lambda);
         const int linear_level = last ? q : base + int(whole);
         const int d0 = !minify ? base : (nearest_mip ? gpu::nearest_level(lambda, base, q) : linear_level);
         const bool two = minify && !nearest_mip && !last;
@@ -292,12 +293,27 @@ template <bool kAvx2>
 void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* level, const int* take,
                   bool linear, int dims, float (*out)[kLanes]) {
     const std::vector<TextureImage>& levels = texture.levels(0);
+    // A skipped lane reads its first level, which exists. Usually every lane has one level.
+    alignas(32) int lane_level[kLanes];
+    int differ = 0;
     for (int i = 0; i < kLanes; ++i) {
-        // A skipped lane reads its first level, which exists.
-        const TextureImage& image = levels[size_t(take[i] ? level[i] : l.level[0][i])];
-        l.texels[i] = image.texels.data();
-        l.width[i] = image.width;
-        l.height[i] = image.height;
+        lane_level[i] = take[i] ? level[i] : l.level[0][i];
+        differ |= lane_level[i] ^ lane_level[0];
+    }
+    if (!differ) {
+        const TextureImage& image = levels[size_t(lane_level[0])];
+        for (int i = 0; i < kLanes; ++i) {
+            l.texels[i] = image.texels.data();
+            l.width[i] = image.width;
+            l.height[i] = image.height;
+        }
+    } else {
+        for (int i = 0; i < kLanes; ++i) {
+            const TextureImage& image = levels[size_t(lane_level[i])];
+            l.texels[i] = image.texels.data();
+            l.width[i] = image.width;
+            l.height[i] = image.height;
+        }
     }
     const SamplerState& st = texture.sampler;
     axis<kAvx2>(st.wrap_s, linear, lk.coord[0], l.width, l.x0, l.x1, l.wx);
@@ -390,7 +406,7 @@ template <bool kAvx2>
     }
     if (lod_matters(texture.sampler)) {
         lambdas(texture, lk, l);
-        choose_levels(texture, l);
+        choose_levels<kAvx2>(texture, l);
     } else {
         // One level and one filter whatever lambda is (gpu::filter16()'s
         // magnified and unmipmapped branches sample level_base alike).
@@ -410,12 +426,12 @@ template <bool kAvx2>
     sample_levels<kAvx2>(texture, l, lk, l.level[0], active, dims, l.first);
     if (two) {
         sample_levels<kAvx2>(texture, l, lk, l.level[1], second, dims, l.second);
-        // gpu::blend2() of the two levels: exact integers, then (sum + 128) >> 8.
+        // gpu::blend2() of the two levels in integers (exact in float there too).
         for (int c = 0; c < 4; ++c)
             for (int i = 0; i < kLanes; ++i) {
-                const float w = float(l.mip_weight[i]);
-                const float sum = l.first[c][i] * (256.0f - w) + l.second[c][i] * w;
-                const float blend = floor_f((sum + 128.0f) * (1.0f / 256.0f));
+                const int w = l.mip_weight[i];
+                const int sum = int(l.first[c][i]) * (256 - w) + int(l.second[c][i]) * w;
+                const float blend = float((sum + 128) >> 8);
                 l.first[c][i] = second[i] ? blend : l.first[c][i];
             }
     }
