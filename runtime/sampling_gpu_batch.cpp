@@ -28,6 +28,9 @@ struct GpuLanes {
     alignas(32) int level[2][kLanes];  // level[1] < 0: one level only
     alignas(32) int mip_weight[kLanes];  // 8-bit weight of level[1]
     alignas(32) int linear[kLanes];    // LINEAR within the level (else NEAREST)
+    // Cube maps: each lane's face and (s, t) on it.
+    alignas(32) int face[kLanes];
+    alignas(32) float s[kLanes], t[kLanes];
     // Per level pass: the lane's image, its size, texel indices and 8-bit weights.
     const glm::vec4* texels[kLanes];
     alignas(32) int width[kLanes], height[kLanes];
@@ -43,7 +46,18 @@ struct GpuLanes {
 void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
     const SamplerState& st = texture.sampler;
     float* lambda = l.lambda;
-    if (lk.implicit && lod_matters(st)) {
+    if (lk.implicit && lod_matters(st) && texture.target() == TextureTarget::Cube) {
+        // On the face each lane's direction selects: rho_of() lane by lane,
+        // with its quad's first lane's derivatives.
+        for (int i = 0; i < kLanes; ++i) {
+            const int q = i & ~3;
+            const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
+            const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]), dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
+            lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
+        }
+        if (lk.bias)
+            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
+    } else if (lk.implicit && lod_matters(st)) {
         const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
         const int dims = texture_dims(texture.target());
         const float* __restrict dxs = lk.ddx[0];
@@ -292,16 +306,24 @@ void axis(TextureWrap wrap, bool linear, const float* s, const int* n, int* i0, 
 template <bool kAvx2>
 void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* level, const int* take,
                   bool linear, int dims, float (*out)[kLanes]) {
+    const bool cube = texture.target() == TextureTarget::Cube;
     const std::vector<TextureImage>& levels = texture.levels(0);
-    // A skipped lane reads its first level, which exists. Usually every lane has one level.
+    // A skipped lane reads its first level, which exists. Usually every lane has one level (and face).
     alignas(32) int lane_level[kLanes];
     int differ = 0;
     for (int i = 0; i < kLanes; ++i) {
         lane_level[i] = take[i] ? level[i] : l.level[0][i];
-        differ |= lane_level[i] ^ lane_level[0];
+        differ |= (lane_level[i] ^ lane_level[0]) | (l.face[i] ^ l.face[0]);
     }
-    if (!differ) {
-        const TextureImage& image = levels[size_t(lane_level[0])];
+    if (cube && differ) {
+        for (int i = 0; i < kLanes; ++i) {
+            const TextureImage& image = texture.levels(l.face[i])[size_t(lane_level[i])];
+            l.texels[i] = image.texels.data();
+            l.width[i] = image.width;
+            l.height[i] = image.height;
+        }
+    } else if (!differ) {
+        const TextureImage& image = texture.levels(l.face[0])[size_t(lane_level[0])];
         for (int i = 0; i < kLanes; ++i) {
             l.texels[i] = image.texels.data();
             l.width[i] = image.width;
@@ -316,9 +338,9 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
         }
     }
     const SamplerState& st = texture.sampler;
-    axis<kAvx2>(st.wrap_s, linear, lk.coord[0], l.width, l.x0, l.x1, l.wx);
+    axis<kAvx2>(st.wrap_s, linear, cube ? l.s : lk.coord[0], l.width, l.x0, l.x1, l.wx);
     if (dims > 1) {
-        axis<kAvx2>(st.wrap_t, linear, lk.coord[1], l.height, l.y0, l.y1, l.wy);
+        axis<kAvx2>(st.wrap_t, linear, cube ? l.t : lk.coord[1], l.height, l.y0, l.y1, l.wy);
     } else {
         for (int i = 0; i < kLanes; ++i) l.y0[i] = l.y1[i] = l.wy[i] = 0;
     }
@@ -404,6 +426,19 @@ template <bool kAvx2>
         const uint32_t bits = uint32_t(lanes >> base);
         for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
     }
+    if (texture.target() == TextureTarget::Cube) {
+        // make_lookup()'s face and cube_coord() for every lane.
+        for (int i = 0; i < kLanes; ++i) {
+            const glm::vec3 r(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
+            const int face = cube_face(r);
+            const glm::vec3 st = cube_coord(kCubeFaces[face], r);
+            l.face[i] = face;
+            l.s[i] = st.x;
+            l.t[i] = st.y;
+        }
+    } else {
+        for (int i = 0; i < kLanes; ++i) l.face[i] = 0;
+    }
     if (lod_matters(texture.sampler)) {
         lambdas(texture, lk, l);
         choose_levels<kAvx2>(texture, l);
@@ -455,7 +490,8 @@ __attribute__((target("avx2"), flatten)) void run_avx2(const Texture& texture, c
 
 bool gpu_batch_samples(const Texture& texture) {
     const TextureTarget target = texture.target();
-    return gpu::filtered(texture) && (target == TextureTarget::Tex1D || target == TextureTarget::Tex2D);
+    return gpu::filtered(texture) &&
+           (target == TextureTarget::Tex1D || target == TextureTarget::Tex2D || target == TextureTarget::Cube);
 }
 
 void sample_gpu_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes],

@@ -10,8 +10,8 @@
 namespace glslrun::rt {
 
 // Whether sample_gpu_batch() takes lookups of this complete texture under
-// SamplingRules::Gpu: RGBA8 1D and 2D textures (sampling_gpu.h's filtered()
-// ones but cube maps and arrays, which keep the per-lane path).
+// SamplingRules::Gpu: RGBA8 1D, 2D and cube-map textures (sampling_gpu.h's
+// filtered() ones but arrays, which keep the per-lane path).
 bool gpu_batch_samples(const Texture& texture);
 
 // sample_complete_lane() with SamplingRules::Gpu for every lane in `lanes`:

@@ -2,11 +2,12 @@
 // one under the GPU's rules (sample_complete_lane with SamplingRules::Gpu),
 // bit for bit: random and extreme coordinates, random derivatives (one set
 // per 2x2 quad, the first lane's, as the tex kernel hands the lanes), RGBA8
-// 1D and 2D textures with the GPU's mipmaps, every filter pair and wrap
+// 1D, 2D and cube-map textures with the GPU's mipmaps, every filter pair and wrap
 // mode, implicit, biased and explicit LODs, the texture's bias and clamps,
 // lanes partly masked; the baseline and the AVX2 builds of its loops.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -32,8 +33,8 @@ Texture make(std::mt19937& rng, TextureTarget target, int w, int h) {
     TextureImage img{w, h, 1, {}};
     for (int i = 0; i < w * h; ++i)
         img.texels.push_back({byte(rng) / 255.0f, byte(rng) / 255.0f, byte(rng) / 255.0f, byte(rng) / 255.0f});
-    std::vector<TextureImage> faces;
-    faces.push_back(std::move(img));
+    std::vector<TextureImage> faces(target == TextureTarget::Cube ? 6 : 1, img);
+    for (size_t f = 1; f < faces.size(); ++f) std::shuffle(faces[f].texels.begin(), faces[f].texels.end(), rng);
     auto t = Texture::create(target, std::move(faces), TextureFormat::RGBA8);
     if (!t) FAIL(t.error().str());
     if (!rt::generate_gpu_mipmaps(*t)) t->generate_mipmaps();
@@ -63,7 +64,8 @@ struct Operands {
 };
 
 void check_batch(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind) {
-    const int dims = rt::texture_dims(texture.target());
+    // A cube map's lookup takes a direction and its derivatives.
+    const int dims = texture.target() == TextureTarget::Cube ? 3 : rt::texture_dims(texture.target());
     Operands ops{};
     for (int i = 0; i < rt::kLanes; ++i) {
         for (int c = 0; c < dims; ++c) {
@@ -155,7 +157,13 @@ TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling", "[sam
     sweep(rng, two);
 }
 
-TEST_CASE("Fast's batched GPU-rule sampling takes RGBA8 1D and 2D textures only", "[sampling][batch][gpu]") {
+TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling: cube maps", "[sampling][batch][gpu]") {
+    std::mt19937 rng(66);
+    Texture cube = make(rng, TextureTarget::Cube, 8, 8);
+    sweep(rng, cube);
+}
+
+TEST_CASE("Fast's batched GPU-rule sampling takes RGBA8 1D, 2D and cube maps only", "[sampling][batch][gpu]") {
     std::mt19937 rng(7);
     CHECK(rt::gpu_batch_samples(make(rng, TextureTarget::Tex2D, 4, 4)));
     std::vector<TextureImage> faces{TextureImage{2, 2, 1, std::vector<glm::vec4>(4, glm::vec4(0.5f))}};
