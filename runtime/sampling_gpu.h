@@ -27,9 +27,10 @@
 //   quad whose derivatives are half texels; 92% of those in steps of 11/16,
 //   the rest one or two table steps off).
 //
-// The switch-over (c = 0) and texel indices are the Common rules'. What the
-// probes did not measure keeps those rules: 3D, float, depth and rectangle
-// textures (filtered() says which follow this file).
+// The switch-over (c = 0) and texel indices are the Common rules'. 3D,
+// float and depth textures keep those rules (their probes, texkinds.frag and
+// lod3d.frag, showed 8-bit weights but not yet every blend), and so do the
+// unmeasured rectangles: filtered() says which follow this file.
 #pragma once
 #include <bit>
 #include <cstdint>

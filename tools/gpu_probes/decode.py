@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Decode the GPU probes of this folder (rendered by run_gpu.sh, or by glslrun/glref on the CPU).
 
-usage: decode.py texfilter|lod|lodrand|mipgen|cube|funcs2 LABEL=IMG.png ...
+usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|mipgen|cube|funcs2 LABEL=IMG.png ...
 Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
 """
 import sys
@@ -351,6 +351,77 @@ def lodrand(images):
             ok = np.abs(lambda_of_rho(rho.astype(f32), table) - lam) < 1e-6
             print(f"  {name}: half texels {100 * ok[valid & (qx < 256)].mean():.2f}%, "
                   f"steps of 11/16 {100 * ok[valid & (qx >= 256)].mean():.2f}%")
+
+
+def lod3d(images):
+    """lod3d.frag: each quad's lambda against 3D models of rho (the fraction of quads with lambda in (0, 6))."""
+    table = log2_fraction_table()
+    qy, qx = np.mgrid[0:256, 0:512]
+    q = qy * 512 + qx
+    ux, vx, wx, uy, vy, wy = [((q // 7 ** j) % 7 - 3) * 1.5 for j in range(6)]
+
+    def length3(a, b, c, mid, low):
+        m = np.sort(np.abs(np.stack([a, b, c])), axis=0)
+        return m[2] + mid * m[1] + low * m[0]
+
+    def rho(mid, low, diagonals):
+        axes = np.maximum(length3(ux, vx, wx, mid, low), length3(uy, vy, wy, mid, low))
+        if not diagonals:
+            return axes
+        return np.maximum(axes, 0.6875 * np.maximum(length3(ux + uy, vx + vy, wx + wy, mid, low),
+                                                    length3(ux - uy, vx - vy, wx - wy, mid, low)))
+    exact = np.maximum(np.sqrt(ux ** 2 + vx ** 2 + wx ** 2), np.sqrt(uy ** 2 + vy ** 2 + wy ** 2))
+    models = {"exact: max(|J x|, |J y|)": exact,
+              "max + 11/32 (mid + min), axes only": rho(0.34375, 0.34375, False),
+              "max + 11/32 mid + 1/4 min, with 11/16 |J (x +- y)|": rho(0.34375, 0.25, True)}
+    for label, path in images:
+        lam = quad_lambdas(load(path))
+        valid = (q < 7 ** 6) & (lam > 0.001) & (lam < 5.99)
+        print(f"lod3d {label}: quads with lambda in (0, 6): {valid.sum()}")
+        for name, r in models.items():
+            ok = np.abs(lambda_of_rho(np.asarray(r, dtype=f32), table) - lam) < 1e-6
+            print(f"  {name}: {100 * ok[valid].mean():.2f}%")
+
+
+def texkinds(images):
+    """texkinds.frag: the LINEAR weights of 3D, float and depth textures (8-bit weight w: v = w / 256)."""
+    x = np.arange(32768) / 32768.0
+    w8 = np.floor(x * 256 + 0.5)
+    unorm16 = np.floor(np.floor((65535 * w8 + 128) / 256) / 65535 * 65536 + 0.5) % 65536
+    float8 = np.floor(w8 / 256 * 65536 + 0.5) % 65536
+    for label, path in images:
+        e = dec16(load(path))
+        band32 = lambda b: e[32 * b: 32 * b + 32].reshape(-1)
+        print(f"texkinds {label}:")
+        for b, what in [(0, "3D along s"), (1, "3D along r"), (2, "RGBA32F along s"), (4, "depth along s"),
+                        (6, "depth compared (r = 1/2) along s")]:
+            v = band32(b)
+            print(f"  {what}: 16-bit blend of 8-bit weights {100 * np.mean(v == unorm16):.2f}%, "
+                  f"w / 256 in float {100 * np.mean(v == float8):.2f}%, exact weight "
+                  f"{100 * np.mean(v == np.floor(x * 65536 + 0.5)):.2f}%")
+        for b, what in [(3, "RGBA32F"), (5, "depth"), (7, "RGBA32F (1/4 | 3/4)")]:
+            print(f"  {what}: bits below 2^-16 zero in {100 * np.mean(band32(b) == 0):.2f}% of the samples")
+        # Band 8 (high 16 bits) and 9 (the next 16): the random RGBA32F texture's red, against its
+        # texels blended with the RGBA8 rule's integer weights (w11 = round(wx wy / 256), ...) in float.
+        hi, lo = e[256:288].astype(np.float64), e[288:320].astype(np.float64) / 65536.0
+        v = (hi - (lo >= 0.5) + lo) / 65536.0
+        texels = np.asarray(Image.open(HERE + "/rand16.png").convert("RGBA"), dtype=np.int64)[::-1, :, 0]
+        texels = (texels.astype(f32) / f32(255)).astype(f32)
+        yb, xx = np.mgrid[0:32, 0:1024]
+
+        def axis(c):
+            u = ((c - np.floor(c)) * f32(16) - f32(0.5)).astype(f32)
+            i0 = np.floor(u).astype(np.int64)
+            return i0 % 16, (i0 + 1) % 16, np.floor((u - np.floor(u)).astype(np.float64) * 256 + 0.5).astype(np.int64)
+        x0, x1, wx = axis((xx / 1024.0 + yb / 32768.0).astype(f32))
+        y0, y1, wy = axis((yb / 32.0 + xx / 32768.0).astype(f32))
+        w11 = (wx * wy + 128) >> 8
+        terms = [texels[y0, x0] * (256 - wx - wy + w11), texels[y0, x1] * (wx - w11), texels[y1, x0] * (wy - w11),
+                 texels[y1, x1] * w11]
+        model = ((terms[0] + terms[1]).astype(f32) + (terms[2] + terms[3]).astype(f32)).astype(f32) / f32(256)
+        d = np.abs(model.astype(np.float64) - v)
+        print(f"  RGBA32F 16x16 random, red: integer weights summed in float: exact (2^-31) {100 * np.mean(d < 2 ** -31):.2f}%, "
+              f"within 2^-16 {100 * np.mean(d < 2 ** -16):.2f}%, largest difference {d.max():.3g}")
 
 
 if __name__ == "__main__":
