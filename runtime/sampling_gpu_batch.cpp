@@ -165,8 +165,10 @@ inline void put(float (*out)[kLanes], int i, Texel t) {
 #define GLSLRUN_AVX2 __attribute__((target("avx2")))
 // The texels of lanes g..g+7 at offsets at[g..g+7] of each lane's image,
 // as 16-bit values transposed into channels (lanes g..g+3 in the low
-// halves, g+4..g+7 in the high ones): gpu::unorm16()'s multiply, add and
-// truncation, lane by lane the same.
+// halves, g+4..g+7 in the high ones). gpu::unorm16() is floor(t 65535 +
+// 1/2); an RGBA8 image's texel is k/255 (Texture stores every one so), so
+// t 65535 is within 0.01 of 257 k and rounding it to nearest (one
+// instruction instead of three) gives the same 257 k.
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void load16x8(const glm::vec4* const* texels, const int* at, int g,
                                                           __m256* ch) {
     __m256 r[4];
@@ -176,12 +178,12 @@ inline void put(float (*out)[kLanes], int i, Texel t) {
                                     _mm_loadu_ps(&texels[g + 4 + j][at[g + 4 + j]].x), 1);
     const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
     const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-    const __m256 scale = _mm256_set1_ps(65535.0f), half = _mm256_set1_ps(0.5f);
+    const __m256 scale = _mm256_set1_ps(65535.0f);
     const __m256 c[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xee),
                          _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xee)};
     #pragma GCC unroll 4
     for (int k = 0; k < 4; ++k)
-        ch[k] = _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(c[k], scale), half)));
+        ch[k] = _mm256_round_ps(_mm256_mul_ps(c[k], scale), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
 }
 
 // clamp_or_low(x, lo, hi) of eight lanes: NaN to lo, as there.
@@ -283,6 +285,16 @@ GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const fl
         _mm256_storeu_ps(&out[c][g],
                          _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum[c], bias), scale))));
 }
+// store_unorm16() eight lanes at a time.
+GLSLRUN_AVX2 void store_unorm16x8(const float* v, const int* active, float* out) {
+    const __m256 scale = _mm256_set1_ps(65535.0f);
+    for (int i = 0; i < kLanes; i += 8) {
+        const __m256 take = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+            _mm256_load_si256(reinterpret_cast<const __m256i*>(active + i)), _mm256_setzero_si256()));
+        const __m256 r = _mm256_div_ps(_mm256_load_ps(v + i), scale);
+        _mm256_storeu_ps(out + i, _mm256_blendv_ps(_mm256_loadu_ps(out + i), r, take));
+    }
+}
 #undef GLSLRUN_AVX2
 #endif
 
@@ -299,44 +311,41 @@ void axis(TextureWrap wrap, bool linear, const float* s, const int* n, int* i0, 
     });
 }
 
-// gpu::level16() of every lane in `take` at its level `level[i]`, as 16-bit
-// values into out[c][i]; `linear` is the same for all of them (the caller
-// splits). Eight lanes at a time where the build has AVX2 and no texel can
-// be the border's; the others lane by lane.
-template <bool kAvx2>
-void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* level, const int* take,
-                  bool linear, int dims, float (*out)[kLanes]) {
-    const bool cube = texture.target() == TextureTarget::Cube;
-    const std::vector<TextureImage>& levels = texture.levels(0);
-    // A skipped lane reads its first level, which exists. Usually every lane has one level (and face).
+// Every lane's image is `image`.
+void one_image(const TextureImage& image, GpuLanes& l) {
+    for (int i = 0; i < kLanes; ++i) {
+        l.texels[i] = image.texels.data();
+        l.width[i] = image.width;
+        l.height[i] = image.height;
+    }
+}
+
+// Each lane's image for a level pass: level[i] of its face (a skipped lane
+// its first level, which exists). Usually every lane has one.
+void lane_images(const Texture& texture, GpuLanes& l, const int* level, const int* take) {
     alignas(32) int lane_level[kLanes];
     int differ = 0;
     for (int i = 0; i < kLanes; ++i) {
         lane_level[i] = take[i] ? level[i] : l.level[0][i];
         differ |= (lane_level[i] ^ lane_level[0]) | (l.face[i] ^ l.face[0]);
     }
-    if (cube && differ) {
-        for (int i = 0; i < kLanes; ++i) {
-            const TextureImage& image = texture.levels(l.face[i])[size_t(lane_level[i])];
-            l.texels[i] = image.texels.data();
-            l.width[i] = image.width;
-            l.height[i] = image.height;
-        }
-    } else if (!differ) {
-        const TextureImage& image = texture.levels(l.face[0])[size_t(lane_level[0])];
-        for (int i = 0; i < kLanes; ++i) {
-            l.texels[i] = image.texels.data();
-            l.width[i] = image.width;
-            l.height[i] = image.height;
-        }
-    } else {
-        for (int i = 0; i < kLanes; ++i) {
-            const TextureImage& image = levels[size_t(lane_level[i])];
-            l.texels[i] = image.texels.data();
-            l.width[i] = image.width;
-            l.height[i] = image.height;
-        }
+    if (!differ) return one_image(texture.levels(l.face[0])[size_t(lane_level[0])], l);
+    for (int i = 0; i < kLanes; ++i) {
+        const TextureImage& image = texture.levels(l.face[i])[size_t(lane_level[i])];
+        l.texels[i] = image.texels.data();
+        l.width[i] = image.width;
+        l.height[i] = image.height;
     }
+}
+
+// gpu::level16() of every lane in `take` on its image (l.texels, set by
+// lane_images() or one_image()), as 16-bit values into out[c][i]; `linear` is the same for all of them (the caller
+// splits). Eight lanes at a time where the build has AVX2 and no texel can
+// be the border's; the others lane by lane.
+template <bool kAvx2>
+void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* take, bool linear, int dims,
+                  float (*out)[kLanes]) {
+    const bool cube = texture.target() == TextureTarget::Cube;
     const SamplerState& st = texture.sampler;
     axis<kAvx2>(st.wrap_s, linear, cube ? l.s : lk.coord[0], l.width, l.x0, l.x1, l.wx);
     if (dims > 1) {
@@ -397,8 +406,9 @@ void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, c
         any[1] |= by_filter[1][i];
         any[0] |= by_filter[0][i];
     }
-    if (any[1]) sample_level<kAvx2>(texture, l, lk, level, by_filter[1], true, dims, out);
-    if (any[0]) sample_level<kAvx2>(texture, l, lk, level, by_filter[0], false, dims, out);
+    lane_images(texture, l, level, take);
+    if (any[1]) sample_level<kAvx2>(texture, l, lk, by_filter[1], true, dims, out);
+    if (any[0]) sample_level<kAvx2>(texture, l, lk, by_filter[0], false, dims, out);
 }
 
 // out[i] = v[i] / 65535 (gpu::over_unorm16()) for the active lanes, four
@@ -439,38 +449,50 @@ template <bool kAvx2>
     } else {
         for (int i = 0; i < kLanes; ++i) l.face[i] = 0;
     }
-    if (lod_matters(texture.sampler)) {
-        lambdas(texture, lk, l);
-        choose_levels<kAvx2>(texture, l);
-    } else {
-        // One level and one filter whatever lambda is (gpu::filter16()'s
+    const int dims = texture_dims(texture.target());
+    const SamplerState& st = texture.sampler;
+    if (!lod_matters(st) && texture.target() != TextureTarget::Cube) {
+        // One image and one filter whatever lambda is (gpu::filter16()'s
         // magnified and unmipmapped branches sample level_base alike).
-        const int base = texture.sampler.base_level, linear = linear_within_level(texture.sampler.min_filter);
+        one_image(texture.levels(0)[size_t(st.base_level)], l);
+        sample_level<kAvx2>(texture, l, lk, active, linear_within_level(st.min_filter), dims, l.first);
+    } else {
+        if (lod_matters(st)) {
+            lambdas(texture, lk, l);
+            choose_levels<kAvx2>(texture, l);
+        } else {
+            const int linear = linear_within_level(st.min_filter);
+            for (int i = 0; i < kLanes; ++i) {
+                l.level[0][i] = st.base_level;
+                l.level[1][i] = -1;
+                l.linear[i] = linear;
+            }
+        }
+        int two = 0;
         for (int i = 0; i < kLanes; ++i) {
-            l.level[0][i] = base;
-            l.level[1][i] = -1;
-            l.linear[i] = linear;
+            second[i] = active[i] & int(l.level[1][i] >= 0);
+            two |= second[i];
+        }
+        sample_levels<kAvx2>(texture, l, lk, l.level[0], active, dims, l.first);
+        if (two) {
+            sample_levels<kAvx2>(texture, l, lk, l.level[1], second, dims, l.second);
+            // gpu::blend2() of the two levels in integers (exact in float there too).
+            for (int c = 0; c < 4; ++c)
+                for (int i = 0; i < kLanes; ++i) {
+                    const int w = l.mip_weight[i];
+                    const int sum = int(l.first[c][i]) * (256 - w) + int(l.second[c][i]) * w;
+                    const float blend = float((sum + 128) >> 8);
+                    l.first[c][i] = second[i] ? blend : l.first[c][i];
+                }
         }
     }
-    int two = 0;
-    for (int i = 0; i < kLanes; ++i) {
-        second[i] = active[i] & int(l.level[1][i] >= 0);
-        two |= second[i];
-    }
-    const int dims = texture_dims(texture.target());
-    sample_levels<kAvx2>(texture, l, lk, l.level[0], active, dims, l.first);
-    if (two) {
-        sample_levels<kAvx2>(texture, l, lk, l.level[1], second, dims, l.second);
-        // gpu::blend2() of the two levels in integers (exact in float there too).
-        for (int c = 0; c < 4; ++c)
-            for (int i = 0; i < kLanes; ++i) {
-                const int w = l.mip_weight[i];
-                const int sum = int(l.first[c][i]) * (256 - w) + int(l.second[c][i]) * w;
-                const float blend = float((sum + 128) >> 8);
-                l.first[c][i] = second[i] ? blend : l.first[c][i];
-            }
-    }
     // gpu::over_unorm16(); the results are finite, canonical_nan() keeps them.
+#if defined(__x86_64__) && defined(__GNUC__)
+    if constexpr (kAvx2) {
+        for (int c = 0; c < 4; ++c) store_unorm16x8(l.first[c], active, out[c]);
+        return;
+    }
+#endif
     for (int c = 0; c < 4; ++c) store_unorm16(l.first[c], active, out[c]);
 }
 
