@@ -144,13 +144,15 @@ private:
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
     void write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer);
     llvm::Value* alpha_passes(const QuadValues& v);
-    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer);
+    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer,
+                          llvm::Value* packed = nullptr);
     std::array<llvm::Value*, 4> color_values(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels,
                                              llvm::Value* index);
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
     llvm::Value* stored_byte(llvm::Value* c);
+    llvm::Value* pack_batch(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
         target_.stencil = b_.CreateLoad(ptr_, at(target, offsetof(Target, stencil)));
