@@ -6,6 +6,7 @@
 #include "runtime/sampling_batch.h"
 
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling_direct.h"
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt {
@@ -342,108 +343,6 @@ GLSLRUN_AVX2 void blend8(const glm::vec4* texels, const int (*at)[kLanes], const
     for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], mix8(near[c], far[c], a, ia));
 }
 
-// One axis's LINEAR indices and weight for lanes g..g+7: linear_lanes()'s
-// (or rect_lanes()'s) values, REPEAT's far lanes (NaN, huge coordinates)
-// through repeat_index() as there.
-template <TextureWrap kWrap, bool kRect>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear8(const float* __restrict s, int n, int g, int* __restrict i0,
-                                                        int* __restrict i1, float* __restrict a) {
-    if constexpr (!kRect && kWrap == TextureWrap::Repeat) {
-        alignas(32) int raw[8];
-        int far = 0;
-        for (int k = 0; k < 8; ++k) {
-            const float u = repeat_position<true>(s[g + k], float(n));
-            raw[k] = floor_int<true>(u);
-            a[g + k] = u - floor_t<true>(u);
-            i0[g + k] = repeat_near(raw[k], n);
-            i1[g + k] = repeat_near(raw[k] + 1, n);
-            far |= int(!repeat_is_near(raw[k], n)) | int(!repeat_is_near(raw[k] + 1, n));
-        }
-        if (far)
-            for (int k = 0; k < 8; ++k) {
-                i0[g + k] = repeat_index(raw[k], n);
-                i1[g + k] = repeat_index(raw[k] + 1, n);
-            }
-    } else {
-        for (int k = g; k < g + 8; ++k) {
-            const LinearAxis axis = kRect ? rect_linear_axis<kWrap, true>(s[k], n) : linear_axis<kWrap, true>(s[k], n);
-            i0[k] = axis.i0;
-            i1[k] = axis.i1;
-            a[k] = axis.a;
-        }
-    }
-}
-
-// The bilinear lookup of one 2D image (or rectangle) whose wraps cannot
-// meet the border, without a depth comparison (a full-screen pass's or a
-// magnified surface's common case), eight lanes at a time from the
-// coordinates to the result: the indices, weights and blends of
-// sample_image(), the result NaN-canonicalised and stored for the lanes
-// of `lanes` only, with no lane array between the steps.
-template <TextureWrap kS, TextureWrap kT, bool kRect>
-GLSLRUN_AVX2 void bilinear_direct(const TextureImage& image, const BatchLookup& lk, LaneMask lanes,
-                                  float (*out)[kLanes]) {
-    const int w = image.width, h = image.height;  // w * h below 2^24 (limits.md): no overflow
-    const glm::vec4* texels = image.texels.data();
-    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());  // canonical_nan()'s
-    alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes], at[4][kLanes];
-    alignas(32) float ax[kLanes], ay[kLanes];
-    for (int g = 0; g < kLanes; g += 8) {
-        const int bits = int(uint32_t(lanes >> g) & 0xffu);
-        if (!bits) continue;
-        linear8<kS, kRect>(lk.coord[0], w, g, x0, x1, ax);
-        linear8<kT, kRect>(lk.coord[1], h, g, y0, y1, ay);
-        for (int k = g; k < g + 8; ++k) {
-            const int row0 = y0[k] * w, row1 = y1[k] * w;
-            at[0][k] = row0 + x0[k];
-            at[1][k] = row0 + x1[k];
-            at[2][k] = row1 + x0[k];
-            at[3][k] = row1 + x1[k];
-        }
-        __m256 plane[4];
-        plane8(texels, at, ax, ay, g, plane);
-        const __m256 take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), bit), bit));
-        #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) {
-            const __m256 v = _mm256_blendv_ps(plane[c], nan, _mm256_cmp_ps(plane[c], plane[c], _CMP_UNORD_Q));
-            _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), v, take));
-        }
-    }
-}
-
-// bilinear_direct() where the texture takes it: a 2D texture or a rectangle,
-// colour (no depth), one image (no mipmaps, one filter within the level,
-// LINEAR), wraps that keep every index in the image. False: the steps.
-GLSLRUN_AVX2 bool sample_bilinear_direct(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
-                                         float (*out)[kLanes]) {
-    const SamplerState& st = texture.sampler;
-    const bool rect = texture.target() == TextureTarget::Rect;
-    if ((texture.target() != TextureTarget::Tex2D && !rect) || texture.depth() || lod_matters(st) ||
-        !linear_within_level(st.mag_filter))
-        return false;
-    const TextureImage& image = texture.levels(0)[rect ? 0 : size_t(st.base_level)];
-    using enum TextureWrap;
-    if (rect) {
-        if (st.wrap_s != ClampToEdge || st.wrap_t != ClampToEdge) return false;
-        bilinear_direct<ClampToEdge, ClampToEdge, true>(image, lk, lanes, out);
-        return true;
-    }
-    const auto with_t = [&]<TextureWrap kS>() {
-        switch (st.wrap_t) {
-        case Repeat: bilinear_direct<kS, Repeat, false>(image, lk, lanes, out); return true;
-        case MirroredRepeat: bilinear_direct<kS, MirroredRepeat, false>(image, lk, lanes, out); return true;
-        case ClampToEdge: bilinear_direct<kS, ClampToEdge, false>(image, lk, lanes, out); return true;
-        default: return false;  // CLAMP and CLAMP_TO_BORDER may meet the border
-        }
-    };
-    switch (st.wrap_s) {
-    case Repeat: return with_t.template operator()<Repeat>();
-    case MirroredRepeat: return with_t.template operator()<MirroredRepeat>();
-    case ClampToEdge: return with_t.template operator()<ClampToEdge>();
-    default: return false;
-    }
-}
 #undef GLSLRUN_AVX2
 #endif
 
@@ -756,10 +655,6 @@ void sample_levels_of_lanes(const Texture& texture, const BatchLookup& lk, const
 template <bool kAvx2>
 [[gnu::always_inline]] inline void run(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
                                        float (*out)[kLanes]) {
-#if defined(__x86_64__) && defined(__GNUC__)
-    if constexpr (kAvx2)
-        if (sample_bilinear_direct(texture, lk, lanes, out)) return;
-#endif
     Lanes l;
     if (lk.ref)
         for (int i = 0; i < kLanes; ++i) l.ref[i] = unorm(lk.ref[i]);
@@ -805,6 +700,7 @@ bool batch_samples(const Texture& texture) {
 
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2) {
 #if defined(__x86_64__) && defined(__GNUC__)
+    if (avx2 && direct_samples(texture)) return sample_direct(texture, lookup, lanes, out);
     if (avx2) return run_avx2(texture, lookup, lanes, out);
 #endif
     (void)avx2;

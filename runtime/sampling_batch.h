@@ -8,9 +8,9 @@
 // that cannot meet the border or a depth comparison fetch 4 lanes at a time
 // (8 under AVX2), the texels transposed into channels; the others lane by
 // lane, four channels in one register. Under AVX2, a colour texture's
-// bilinear lookup of one 2D image (or rectangle) whose wraps keep every
-// texel in the image goes eight lanes at a time from the coordinates to the
-// result, with no lane array between the steps (bilinear_direct()). Every
+// NEAREST or LINEAR lookup of one 2D image (or rectangle), any wrap, goes
+// eight lanes at a time from the coordinates to the result in registers,
+// one kernel per texture state (sampling_direct.h). Every
 // value comes from the same functions as sample_complete_lane()'s
 // (runtime/sampling_rules.h), so both give the same bits;
 // tests/runtime/sampling_batch_test.cpp compares them.

@@ -14,6 +14,7 @@
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/sampling_gpu_batch.h"
 
 namespace glslrun::rt::kernels {
 
@@ -137,13 +138,20 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
     using F = FloatOf<W>;
     const ir::TexInfo info = ir::TexInfo::decode(s.imm[2]);
     const Operands<W> ops{reinterpret_cast<const F*>(s.src[1])};
-    alignas(64) float out[ir::kTexResults][kLanes];
+    alignas(64) float local[ir::kTexResults][kLanes];
+    float (*out)[kLanes] = local;
     const LaneMask lookups = m.mask.active() & m.lookups;
     // An incomplete texture samples as (0, 0, 0, 1), as nothing bound (GL
     // 2.1 §3.8.10), and so do inactive lanes; lanes that skip their lookups
     // read 0. A whole batch is usually sampled whole: its defaults are
     // filled afterwards, and only where a lane was not sampled.
     const bool whole = lookups == kAllLanes;
+    // A whole batch of fp32 words goes straight into the destination
+    // registers (Machine::write would copy them whole: a tenth of a
+    // nine-tap frame). They may be operand registers: each lane's results
+    // overwrite only that lane's words, after its lookup has read them.
+    if constexpr (std::is_same_v<F, float>)
+        if (whole) out = reinterpret_cast<float (*)[kLanes]>(s.dst);
     if (!whole) fill_defaults(out, m.lookups);
     const FloatOperands<W> floats(info, ops.block);
     const BatchLookup batch = floats.lookup(info);
@@ -156,6 +164,10 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
         sampled |= lanes;
+        if (rules == SamplingRules::Gpu && gpu_batch_samples(*texture)) {
+            sample_gpu_batch(*texture, batch, lanes, out, use_avx2());
+            continue;
+        }
         if (!lanes_only(*texture, rules) && batch_samples(*texture)) {
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;
@@ -176,6 +188,7 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
                 out[0][i] = out[1][i] = out[2][i] = 0.0f;
                 out[3][i] = 1.0f;
             }
+    if (out != local) return;
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
         W words[kLanes];
         for (int i = 0; i < kLanes; ++i) words[i] = std::bit_cast<W>(F(out[c][i]));

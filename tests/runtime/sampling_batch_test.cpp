@@ -14,10 +14,12 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/sampling_direct.h"
 #include "runtime/texture_levels.h"
 
 using namespace glslrun;
@@ -263,6 +265,39 @@ TEST_CASE("batched sampling equals per-lane sampling: rectangles", "[sampling][b
         }
 }
 
+// The one-pass kernels (sampling_direct.h) on the sizes where their
+// clamps meet: one texel (size - 1/2 = 1/2), one row or column, odd sizes;
+// RGBA8 texels; every wrap pair and both filters, normalized and rectangle.
+// The sweeps above reach them too; this says they are the ones taken.
+TEST_CASE("batched sampling equals per-lane sampling: one-pass 2D and rectangle kernels", "[sampling][batch]") {
+    std::mt19937 rng(4242);
+    for (auto [w, h] : {std::pair{1, 1}, {1, 5}, {7, 1}, {3, 17}}) {
+        for (TextureTarget target : {TextureTarget::Tex2D, TextureTarget::Rect}) {
+            Texture t = make(rng, target, TextureFormat::RGBA8, w, h);
+            t.sampler.border_color = {0.5f, 1.5f, -0.25f, 0.75f};
+            const bool rect = target == TextureTarget::Rect;
+            for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (TextureWrap s : kWraps)
+                    for (TextureWrap u : kWraps) {
+                        if (rect && (s == TextureWrap::Repeat || s == TextureWrap::MirroredRepeat ||
+                                     u == TextureWrap::Repeat || u == TextureWrap::MirroredRepeat))
+                            continue;  // incomplete rectangles
+                        t.sampler.min_filter = t.sampler.mag_filter = filter;
+                        t.sampler.wrap_s = s;
+                        t.sampler.wrap_t = u;
+                        REQUIRE(t.complete());
+#if defined(__x86_64__) && defined(__GNUC__)
+                        REQUIRE(rt::direct_samples(t));
+#endif
+                        for (int batch = 0; batch < 3; ++batch) check_batch(rng, t, false, ir::TexLod::Implicit);
+                    }
+            t.sampler.min_filter = TextureFilter::Nearest;
+            t.sampler.mag_filter = TextureFilter::Linear;
+            CHECK_FALSE(rt::direct_samples(t));  // the lanes choose a filter: the steps
+        }
+    }
+}
+
 // The sweep skips what batch_samples() refuses; this says what that is: 3D
 // textures whose lanes choose levels (mipmaps, or two filters).
 TEST_CASE("batched sampling equals per-lane sampling: 3D textures", "[sampling][batch]") {
@@ -308,7 +343,12 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
     info.target = ir::TexTarget::T2D;
     info.lod = ir::TexLod::ImplicitBias;
     constexpr int32_t kUnits[] = {0, 3, 0, 4, 5, -1, 99, 3};
-    for (int round = 0; round < 20; ++round) {
+    for (int round = 0; round < 32; ++round) {
+        // From round 20 the results overwrite the operand block (a register
+        // reused), half of those a whole batch of mixed units, which the
+        // kernel samples straight into the destination: no lane's result may
+        // overwrite a word that a lookup still reads.
+        const bool alias = round >= 20, mixed_whole = alias && round % 2;
         std::vector<uint32_t> block(size_t(info.operand_count()) * rt::kLanes);
         auto operand = [&](uint32_t k, int lane) -> float& {
             return *reinterpret_cast<float*>(&block[size_t(k) * rt::kLanes + size_t(lane)]);
@@ -323,8 +363,9 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
                                          : kUnits[size_t(round / 2) % std::size(kUnits)]);
         }
         for (uint32_t& w : dst) w = 0xdeadbeefu;
+        const std::vector<uint32_t> before = block;
         rt::Step<uint32_t> step;
-        step.dst = dst;
+        step.dst = alias ? block.data() : dst;
         step.src[0] = unit;
         step.src[1] = block.data();
         step.imm[2] = info.encode();
@@ -332,9 +373,13 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
         m.textures = units.data();
         // Every fourth round a whole batch: sampled whole (an incomplete or unbound unit's defaults then come afterwards).
         const rt::LaneMask active =
-            round % 4 == 0 ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+            round % 4 == 0 || mixed_whole ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
         m.mask.reset(active);
-        m.lookups = round % 3 ? rt::kAllLanes : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+        m.lookups = round % 3 || mixed_whole ? rt::kAllLanes
+                                             : std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng);
+        const auto operand_before = [&](uint32_t k, int lane) {
+            return std::bit_cast<float>(before[size_t(k) * rt::kLanes + size_t(lane)]);
+        };
         rt::kernels::tex<uint32_t>(step, m);
         for (int i = 0; i < rt::kLanes; ++i) {
             float want[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -345,18 +390,19 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
                 want[3] = 0.0f;
             } else if (texture && texture->complete()) {
                 rt::LaneLookup lane;
-                lane.coord = {operand(0, i), operand(1, i), 0.0f};
-                lane.ddx = {operand(info.ddx_at(), i), operand(info.ddx_at() + 1, i), 0.0f};
-                lane.ddy = {operand(info.ddy_at(), i), operand(info.ddy_at() + 1, i), 0.0f};
-                lane.lod = operand(info.lod_at(), i);
+                lane.coord = {operand_before(0, i), operand_before(1, i), 0.0f};
+                lane.ddx = {operand_before(info.ddx_at(), i), operand_before(info.ddx_at() + 1, i), 0.0f};
+                lane.ddy = {operand_before(info.ddy_at(), i), operand_before(info.ddy_at() + 1, i), 0.0f};
+                lane.lod = operand_before(info.lod_at(), i);
                 lane.bias = true;
                 rt::sample_complete_lane(*texture, lane, want);
             }
             for (uint32_t c = 0; c < ir::kTexResults; ++c) {
                 INFO("round " << round << " lane " << i << " unit " << u << " channel " << c);
-                const uint32_t got = dst[c * rt::kLanes + size_t(i)];
+                const size_t at = c * rt::kLanes + size_t(i);
+                const uint32_t got = step.dst[at];
                 if ((active >> i) & 1) REQUIRE(got == std::bit_cast<uint32_t>(want[c]));
-                else REQUIRE(got == 0xdeadbeefu);
+                else REQUIRE(got == (alias ? before[at] : 0xdeadbeefu));
             }
         }
     }

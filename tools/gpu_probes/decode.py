@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Decode the GPU probes of this folder (rendered by run_gpu.sh, or by glslrun/glref on the CPU).
 
-usage: decode.py texfilter|lod|mipgen|cube|funcs2 LABEL=IMG.png ...
+usage: decode.py texfilter|lod|lodrand|mipgen|cube|funcs2 LABEL=IMG.png ...
 Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
 """
 import sys
@@ -301,6 +301,56 @@ def cube(images):
                     w = np.rint(QUANT[qn](x) * 65536)
                     res.append(f"{sname}/{qn} {100 * np.mean(w == got):.2f}%")
             print(f"  |ma| = {ma}: " + ", ".join(res))
+
+
+# 256 * frac(lambda) for a significand 1 + k/256 of rho (runtime/sampling_gpu.h's kLog2Fraction).
+def log2_fraction_table():
+    src = open(HERE + "/../../runtime/sampling_gpu.h").read()
+    body = src.split("kLog2Fraction[256] = {", 1)[1].split("};", 1)[0]
+    return np.array([int(v) for v in body.replace("\n", " ").split(",") if v.strip()])
+
+
+def lambda_of_rho(rho, table):
+    bits = np.asarray(rho, dtype=f32).view(np.uint32).astype(np.int64)
+    return ((bits >> 23) - 127) + table[(bits >> 15) & 255] / 256.0
+
+
+def quad_lambdas(img):
+    """lodnorm/lodrand/lod3d encoding: the lambda of each quad's first pixel (level pair in red, blend in G, B, A)."""
+    n = np.rint(img[..., 1:4] / 17.0).astype(np.int64)
+    g = ((n[..., 0] << 8) | (n[..., 1] << 4) | n[..., 2])[0::2, 0::2] / 4096.0
+    k = np.floor(img[0::2, 0::2, 0] / 17.0 + 1e-9)
+    f = np.where(k % 2 == 1, (1 - g) % 1.0, g)  # level k's green is k mod 2
+    return k + np.round(f * 256) / 256
+
+
+def gpu_length(a, b):
+    a, b = np.abs(a).astype(f32), np.abs(b).astype(f32)
+    return (np.maximum(a, b) + f32(0.34375) * np.minimum(a, b)).astype(f32)
+
+
+def lodrand(images):
+    """Each quad's lambda against models of rho: the fraction of quads (lambda in (0, 8)) they give exactly."""
+    table = log2_fraction_table()
+    qy, qx = np.mgrid[0:256, 0:512]
+    q = qy * 256 + qx % 256
+    m = np.where(qx < 256, 1.0, 1.375)
+    ux, vx, uy, vy = [((q // 16 ** j) % 16 - 7.5) * m for j in range(4)]
+    models = {
+        "exact: max(|J x|, |J y|)": np.maximum(np.hypot(ux, vx), np.hypot(uy, vy)),
+        "max(|J x|, |J y|), |(a, b)| = max + 11/32 min": np.maximum(gpu_length(ux, vx), gpu_length(uy, vy)),
+        "the same and 11/16 |J (x +- y)| (sampling_gpu.h)": np.maximum(
+            np.maximum(gpu_length(ux, vx), gpu_length(uy, vy)),
+            f32(0.6875) * np.maximum(gpu_length(ux + uy, vx + vy), gpu_length(ux - uy, vx - vy))),
+    }
+    for label, path in images:
+        lam = quad_lambdas(load(path))
+        valid = (lam > 0.001) & (lam < 7.99)
+        print(f"lodrand {label}: quads with lambda in (0, 8): {valid.sum()}")
+        for name, rho in models.items():
+            ok = np.abs(lambda_of_rho(rho.astype(f32), table) - lam) < 1e-6
+            print(f"  {name}: half texels {100 * ok[valid & (qx < 256)].mean():.2f}%, "
+                  f"steps of 11/16 {100 * ok[valid & (qx >= 256)].mean():.2f}%")
 
 
 if __name__ == "__main__":

@@ -71,7 +71,7 @@ private:
     llvm::Value* at(llvm::Value* base, uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(i8_, base, offset); }
     llvm::Value* load_f(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(f32_, at(base, offset)); }
     llvm::Value* load_i(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(i32_, at(base, offset)); }
-    // Values of a quad's lanes, or of two quads' (width_ 8).
+    // Values of a quad's lanes, or of two or four quads' (width_ 8, 16).
     llvm::FixedVectorType* vf() { return llvm::FixedVectorType::get(f32_, width_); }
     llvm::Value* splat(llvm::Value* v) { return b_.CreateVectorSplat(width_, v); }
     llvm::Value* lanes_i(const int (&v)[4]) {
@@ -95,7 +95,7 @@ private:
     llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
     // then()'s value where `condition` holds, else `otherwise`: a branch and a phi.
     llvm::Value* if_then(llvm::Value* condition, llvm::Value* otherwise, const std::function<llvm::Value*()>& then);
-    // One quad at (x[0], y[0]), or two of one primitive (width_ 8).
+    // One quad at (x[0], y[0]), or two or four of one primitive (width_ 8, 16).
     Quad quad(llvm::Value* prim, llvm::ArrayRef<llvm::Value*> x, llvm::ArrayRef<llvm::Value*> y);
     llvm::Value* plane(const Quad& q, uint64_t offset);
     llvm::Value* clamp01(llvm::Value* v);
@@ -174,7 +174,7 @@ private:
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
-    unsigned width_ = 4;   // lanes per vector: one quad, or two in the inputs' pairs
+    unsigned width_ = 4;   // lanes per vector: one quad, or two or four in the inputs' runs
 };
 
 }  // namespace glslrun::raster::fused
