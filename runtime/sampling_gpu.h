@@ -17,7 +17,8 @@
 //
 // - One lambda per 2x2 quad: the implicit LOD takes the quad's first lane's
 //   derivatives (its lower row's d/dx, its left column's d/dy) for all four
-//   lanes, as coarse derivatives (tex_kernel.cpp; lod.frag band 4).
+//   lanes, as coarse derivatives (derivative_lane in sampling.h, which
+//   Precise shares with llvmpipe; lod.frag band 4).
 // - A *_MIPMAP_NEAREST level is level_base + floor(lambda + 1/2) (ties up).
 //
 // - rho = max(|J x|, |J y|, 11/16 |J (x + y)|, 11/16 |J (x - y)|) for the
