@@ -118,8 +118,7 @@ void LaneRecorder::lookup(const ir::Node& n, const rt::LaneReader& regs) {
     lk.bias = t.info.lod == ir::TexLod::ImplicitBias;
     if (t.info.lod != ir::TexLod::Implicit) t.lod = lk.lod = operand(t.info.lod_at());
     if (lk.implicit) {
-        // The GPU's rules take the quad's first lane's derivatives (tex_kernel.cpp).
-        const int from = rules_ == rt::SamplingRules::Gpu ? lane_ & ~3 : lane_;
+        const int from = rt::derivative_lane(lane_, rules_, t.info.grad);
         auto derivative = [&](uint32_t first) {
             const uint32_t dims = t.info.grad_dims();
             auto at = [&](uint32_t k) { return float(regs.read(ir::Reg(in.imm[0] + first + k), from).f); };

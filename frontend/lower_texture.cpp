@@ -64,6 +64,7 @@ Value StageLowering::texture(gl::TIntermAggregate* n) {
         return fail(n, "only sampler1D/2D/3D/Cube/2DRect, sampler1D/2D/2DRectShadow and the 1D/2D array samplers "
                        "are supported");
     info.shadow = sampler_type.getSampler().isShadow();
+    info.grad = grad;
     const bool has_extra = !grad && seq.size() > 2;  // bias, or the explicit lod
     const bool implicit = grad || (stage_ == ir::Stage::Fragment && !explicit_lod);
     info.lod = !implicit ? ir::TexLod::Explicit : has_extra ? ir::TexLod::ImplicitBias : ir::TexLod::Implicit;

@@ -97,6 +97,9 @@ struct TexInfo {
     TexTarget target = TexTarget::T2D;
     bool shadow = false;
     TexLod lod = TexLod::Implicit;
+    // The derivatives are the program's (texture*GradARB), not the screen's:
+    // they are the lane's own, never shared by a quad.
+    bool grad = false;
 
     // Coordinate components, an array's layer included.
     uint32_t dims() const {
@@ -116,9 +119,11 @@ struct TexInfo {
     uint32_t ddx_at() const { return lod_at() + (lod == TexLod::Implicit ? 0 : 1); }
     uint32_t ddy_at() const { return ddx_at() + grad_dims(); }
     uint32_t operand_count() const { return lod == TexLod::Explicit ? ddx_at() : ddy_at() + grad_dims(); }
-    uint32_t encode() const { return uint32_t(target) | uint32_t(shadow) << 3 | uint32_t(lod) << 4; }
+    uint32_t encode() const {
+        return uint32_t(target) | uint32_t(shadow) << 3 | uint32_t(lod) << 4 | uint32_t(grad) << 6;
+    }
     static TexInfo decode(uint32_t bits) {
-        return {TexTarget(bits & 7), bool(bits >> 3 & 1), TexLod(bits >> 4 & 3)};
+        return {TexTarget(bits & 7), bool(bits >> 3 & 1), TexLod(bits >> 4 & 3), bool(bits >> 6 & 1)};
     }
 };
 inline constexpr uint32_t kTexResults = 4;

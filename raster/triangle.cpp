@@ -273,24 +273,41 @@ template <bool kWide>
     if constexpr (kWide)
         if (fits_32) offsets = block_offsets(dx, dy);
 #endif
+    // r's pixels in a block: the first block column and the last cut
+    // columns, the first and last block rows cut rows; the others are
+    // whole (square_rect() per block was a fifth of the walk: perf).
+    const int last_bx = x0 + (r.x1 - 1 - x0) / kBlockSize * kBlockSize;
+    const uint64_t first_columns = square_columns(r.x0 - x0, kBlockSize);
+    const uint64_t last_columns = square_columns(0, r.x1 - last_bx);
+    // Where no edge value of the walk can leave [-kClamp, kClamp],
+    // clamped() changes nothing and is skipped.
+    bool unclamped = fits_32;
+    for (size_t i = 0; i < 3; ++i)
+        unclamped = unclamped && std::abs(row_start[i]) + (last_bx - x0 + kBlockSize) * std::abs(dx[i]) +
+                                         (r.y1 - y0 + kBlockSize) * std::abs(dy[i]) < kClamp;
     // Without branches on the coverage (they mispredicted at every other
     // block: perf): every block's eight rows are computed, and blocks
     // without pixels are written over.
     size_t n = 0;
     for (int by = y0; by < r.y1; by += kBlockSize) {
         std::array<int64_t, 3> e = row_start;
+        const uint64_t rows = square_rows(r.y0 - by, r.y1 - by);
         for (int bx = x0; bx < r.x1; bx += kBlockSize) {
-            const Rect b{std::max(bx, r.x0), std::max(by, r.y0), std::min(bx + kBlockSize, r.x1),
-                         std::min(by + kBlockSize, r.y1)};
-            uint64_t pixels = square_rect(bx, by, b);
-            if (!fits_32) pixels &= block_covered_64(e, dx, dy, by, b);
+            uint64_t pixels = rows & (bx == x0 ? first_columns : ~uint64_t(0)) &
+                              (bx == last_bx ? last_columns : ~uint64_t(0));
+            // The block's pixels in r, for the 64-bit test's rows.
+            auto block = [&] {
+                return Rect{std::max(bx, r.x0), std::max(by, r.y0), std::min(bx + kBlockSize, r.x1),
+                            std::min(by + kBlockSize, r.y1)};
+            };
+            if (!fits_32) pixels &= block_covered_64(e, dx, dy, by, block());
 #if defined(__x86_64__) && defined(__GNUC__)
-            else if constexpr (kWide) pixels &= square_covered_512(clamped(e), offsets);
+            else if constexpr (kWide) pixels &= square_covered_512(unclamped ? e : clamped(e), offsets);
 #endif
 #if defined(__SSE2__)
-            else pixels &= square_covered_32(clamped(e), dx, dy);
+            else pixels &= square_covered_32(unclamped ? e : clamped(e), dx, dy);
 #else
-            else pixels &= block_covered_64(e, dx, dy, by, b);
+            else pixels &= block_covered_64(e, dx, dy, by, block());
 #endif
             out[n] = {bx, by, pixels};
             n += pixels != 0;

@@ -5,7 +5,9 @@
 #include <cstring>
 #include <functional>
 #include <string>
-#include <unordered_map>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -27,12 +29,20 @@ namespace {
 // many elements as the program declares.
 constexpr int kMaxUnits = 32;
 
-using Emit = std::function<void(const std::string& name, const float* values, size_t count)>;
+using Emit = std::function<void(std::string_view name, const float* values, size_t count)>;
 // The built-ins the program reads: state nobody reads is never derived
-// (the inverses of 32 texture matrices, light products, ...).
+// (the inverses of 32 texture matrices, light products, ...), and groups
+// nobody reads are not even named. This runs at every draw: a scene of
+// many small draws spent 6% of its frame naming the ~150 built-ins (perf).
+// A program reads a few built-ins: a list searched in order beats a hash.
 struct Wants {
-    std::unordered_map<std::string_view, const ir::Uniform*> names;
-    bool name(const std::string& n) const { return names.count(n) > 0; }
+    std::vector<std::pair<std::string_view, const ir::Uniform*>> names;
+    const ir::Uniform* find(std::string_view n) const {
+        for (const auto& entry : names)
+            if (entry.first == n) return entry.second;
+        return nullptr;
+    }
+    bool name(std::string_view n) const { return find(n) != nullptr; }
     bool prefix(std::string_view p) const {
         for (const auto& entry : names)
             if (entry.first.starts_with(p)) return true;
@@ -40,13 +50,14 @@ struct Wants {
     }
 };
 
-void emit_vec(const Emit& emit, const std::string& name, const glm::vec4& v) { emit(name, &v[0], 4); }
-void emit_vec3(const Emit& emit, const std::string& name, const glm::vec3& v) { emit(name, &v[0], 3); }
-void emit_float(const Emit& emit, const std::string& name, float f) { emit(name, &f, 1); }
+void emit_vec(const Emit& emit, std::string_view name, const glm::vec4& v) { emit(name, &v[0], 4); }
+void emit_vec3(const Emit& emit, std::string_view name, const glm::vec3& v) { emit(name, &v[0], 3); }
+void emit_float(const Emit& emit, std::string_view name, float f) { emit(name, &f, 1); }
 
 // The four variants of one matrix: M, Inverse, Transpose, InverseTranspose.
 void emit_matrix_family(const Emit& emit, const Wants& wants, const std::string& base,
                         const std::vector<glm::mat4>& ms) {
+    if (!wants.prefix(base)) return;
     auto each = [&](const char* suffix, auto transform) {
         if (!wants.name(base + suffix)) return;
         std::vector<float> words;
@@ -87,7 +98,7 @@ void emit_light(const Emit& emit, int i, const LightState& l) {
     emit_float(emit, p + "quadraticAttenuation", l.quadratic_attenuation);
 }
 
-void emit_material(const Emit& emit, const std::string& side, const MaterialState& m,
+void emit_material(const Emit& emit, const Wants& wants, const std::string& side, const MaterialState& m,
                    const GLState& gl) {
     std::string p = "gl_" + side + "Material.";
     emit_vec(emit, p + "emission", m.emission);
@@ -102,6 +113,7 @@ void emit_material(const Emit& emit, const std::string& side, const MaterialStat
     for (int i = 0; i < 8; ++i) {
         const LightState& l = gl.lights[i];
         std::string lp = fmt::format("gl_{}LightProduct[{}].", side, i);
+        if (!wants.prefix(lp)) continue;
         emit_vec(emit, lp + "ambient", l.ambient * m.ambient);
         emit_vec(emit, lp + "diffuse", l.diffuse * m.diffuse);
         emit_vec(emit, lp + "specular", l.specular * m.specular);
@@ -118,37 +130,47 @@ void emit_matrices(const Emit& emit, const Wants& wants, const GLState& gl) {
         std::copy(gl.texture_matrix.begin(), gl.texture_matrix.end(), textures.begin());
         emit_matrix_family(emit, wants, "gl_TextureMatrix", textures);
     }
-    glm::mat3 normal = glm::inverseTranspose(glm::mat3(gl.modelview));
-    emit("gl_NormalMatrix", &normal[0][0], 9);
+    if (wants.name("gl_NormalMatrix")) {
+        glm::mat3 normal = glm::inverseTranspose(glm::mat3(gl.modelview));
+        emit("gl_NormalMatrix", &normal[0][0], 9);
+    }
+    if (!wants.name("gl_NormalScale")) return;
     // Mesa: 1 / |row 2 of the inverse modelview's upper 3x3|.
     glm::mat4 inv = glm::inverse(gl.modelview);
     float f = inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2];
     emit_float(emit, "gl_NormalScale", f < 1e-12f ? 1.0f : 1.0f / std::sqrt(f));
 }
 
-void emit_fixed_defaults(const Emit& emit, const GLState& gl) {
-    emit_float(emit, "gl_DepthRange.near", gl.depth_near);
-    emit_float(emit, "gl_DepthRange.far", gl.depth_far);
-    emit_float(emit, "gl_DepthRange.diff", gl.depth_far - gl.depth_near);
-    emit("gl_ClipPlane", &gl.clip_planes[0][0], 24);
-    emit_float(emit, "gl_Point.size", gl.point_size);
-    emit_float(emit, "gl_Point.sizeMin", gl.point_size_min);
-    emit_float(emit, "gl_Point.sizeMax", gl.point_size_max);
-    emit_float(emit, "gl_Point.fadeThresholdSize", gl.point_fade_threshold_size);
-    emit_float(emit, "gl_Point.distanceConstantAttenuation", gl.point_distance_attenuation[0]);
-    emit_float(emit, "gl_Point.distanceLinearAttenuation", gl.point_distance_attenuation[1]);
-    emit_float(emit, "gl_Point.distanceQuadraticAttenuation", gl.point_distance_attenuation[2]);
+void emit_fixed_defaults(const Emit& emit, const Wants& wants, const GLState& gl) {
+    if (wants.prefix("gl_DepthRange.")) {
+        emit_float(emit, "gl_DepthRange.near", gl.depth_near);
+        emit_float(emit, "gl_DepthRange.far", gl.depth_far);
+        emit_float(emit, "gl_DepthRange.diff", gl.depth_far - gl.depth_near);
+    }
+    if (wants.name("gl_ClipPlane")) emit("gl_ClipPlane", &gl.clip_planes[0][0], 24);
+    if (wants.prefix("gl_Point.")) {
+        emit_float(emit, "gl_Point.size", gl.point_size);
+        emit_float(emit, "gl_Point.sizeMin", gl.point_size_min);
+        emit_float(emit, "gl_Point.sizeMax", gl.point_size_max);
+        emit_float(emit, "gl_Point.fadeThresholdSize", gl.point_fade_threshold_size);
+        emit_float(emit, "gl_Point.distanceConstantAttenuation", gl.point_distance_attenuation[0]);
+        emit_float(emit, "gl_Point.distanceLinearAttenuation", gl.point_distance_attenuation[1]);
+        emit_float(emit, "gl_Point.distanceQuadraticAttenuation", gl.point_distance_attenuation[2]);
+    }
     emit_vec(emit, "gl_LightModel.ambient", gl.light_model_ambient);
-    std::vector<float> zeros(kMaxUnits * 4, 0.0f);
-    emit("gl_TextureEnvColor", zeros.data(), zeros.size());
+    if (wants.name("gl_TextureEnvColor")) {
+        std::vector<float> zeros(kMaxUnits * 4, 0.0f);
+        emit("gl_TextureEnvColor", zeros.data(), zeros.size());
+    }
     const glm::vec4 planes[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
     const char* coord = "STRQ";
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < 4 && (wants.prefix("gl_EyePlane") || wants.prefix("gl_ObjectPlane")); ++c) {
         std::vector<float> words;
         for (int unit = 0; unit < kMaxUnits; ++unit) words.insert(words.end(), &planes[c][0], &planes[c][0] + 4);
         emit(fmt::format("gl_EyePlane{}", coord[c]), words.data(), words.size());
         emit(fmt::format("gl_ObjectPlane{}", coord[c]), words.data(), words.size());
     }
+    if (!wants.prefix("gl_Fog.")) return;
     emit_vec(emit, "gl_Fog.color", gl.fog.color);
     emit_float(emit, "gl_Fog.density", gl.fog.density);
     emit_float(emit, "gl_Fog.start", gl.fog.start);
@@ -160,11 +182,11 @@ void emit_fixed_defaults(const Emit& emit, const GLState& gl) {
 
 void for_each_builtin(const GLState& gl, const Wants& wants, const Emit& emit) {
     emit_matrices(emit, wants, gl);
-    emit_fixed_defaults(emit, gl);
-    for (int i = 0; i < 8; ++i)
+    emit_fixed_defaults(emit, wants, gl);
+    for (int i = 0; i < 8 && wants.prefix("gl_LightSource["); ++i)
         if (wants.prefix(fmt::format("gl_LightSource[{}]", i))) emit_light(emit, i, gl.lights[i]);
-    if (wants.prefix("gl_Front")) emit_material(emit, "Front", gl.front_material, gl);
-    if (wants.prefix("gl_Back")) emit_material(emit, "Back", gl.back_material, gl);
+    if (wants.prefix("gl_Front")) emit_material(emit, wants, "Front", gl.front_material, gl);
+    if (wants.prefix("gl_Back")) emit_material(emit, wants, "Back", gl.back_material, gl);
 }
 
 }  // namespace
@@ -174,12 +196,12 @@ Status apply_builtin_uniforms(Program& program, const GLState& gl) {
     Program::State& st = state_of(program);
     Wants wants;
     for (const ir::Uniform& u : st.ir.uniforms)
-        if (u.builtin && u.read) wants.names.emplace(u.name, &u);
+        if (u.builtin && u.read) wants.names.emplace_back(u.name, &u);
     if (wants.names.empty()) return Ok{};
-    for_each_builtin(gl, wants, [&](const std::string& name, const float* values, size_t count) {
-        auto it = wants.names.find(name);
-        if (it == wants.names.end()) return;
-        const ir::Uniform& u = *it->second;
+    for_each_builtin(gl, wants, [&](std::string_view name, const float* values, size_t count) {
+        const ir::Uniform* found = wants.find(name);
+        if (!found) return;
+        const ir::Uniform& u = *found;
         size_t words = std::min<size_t>(count, size_t(u.type.components()) * u.array_size);
         if (u.slot + words > st.uniforms.size()) return;  // malformed layout: never write past the store
         std::memcpy(st.uniforms.data() + u.slot, values, words * sizeof(float));

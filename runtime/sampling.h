@@ -24,6 +24,16 @@ enum class SamplingRules : uint8_t {
     Gpu,     // Precision::Fast: NVIDIA's filter weights, level of detail and 16-bit filter results
 };
 
+// The lane whose derivatives an implicit level of detail reads. llvmpipe and
+// NVIDIA's driver take one pair per 2x2 quad (lanes 4q..4q+3): its first
+// lane's, the lower row's d/dx and the left column's d/dy (tools/gpu_probes'
+// lod.frag band 4; llvmpipe's quad LOD), so Precise and Fast do too; the
+// spec's rules (Reference) take each fragment's own, and so does every mode
+// for derivatives the program gives (`given`: texture*GradARB).
+inline int derivative_lane(int lane, SamplingRules rules, bool given) {
+    return rules == SamplingRules::Spec || given ? lane : lane & ~3;
+}
+
 // The implicit level of detail, log2(rho) of §3.8.8 (before any bias or
 // clamp), from the derivatives of the (already projected) coordinates over
 // the screen. Only the components of the texture's dimensionality are read.

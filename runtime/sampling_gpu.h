@@ -17,13 +17,21 @@
 //
 // - One lambda per 2x2 quad: the implicit LOD takes the quad's first lane's
 //   derivatives (its lower row's d/dx, its left column's d/dy) for all four
-//   lanes, as coarse derivatives (tex_kernel.cpp; lod.frag band 4).
+//   lanes, as coarse derivatives (derivative_lane in sampling.h, which
+//   Precise shares with llvmpipe; lod.frag band 4).
 // - A *_MIPMAP_NEAREST level is level_base + floor(lambda + 1/2) (ties up).
 //
-// The switch-over (c = 0) and texel indices are the Common rules'. What the probes did not measure keeps those rules: 3D, float, depth
-// and rectangle textures (filtered() says which follow this file). rho
-// itself is the exact length; the GPU's differs where both s and t change
-// along one screen axis (lambda up to 0.07 lower on a 45-degree diagonal).
+// - rho = max(|J x|, |J y|, 11/16 |J (x + y)|, 11/16 |J (x - y)|) for the
+//   texel-space Jacobian J, each length |(a, b)| as max + 11/32 min
+//   (gpu_rho() in sampling_rules.h): the screen's diagonals count, so a
+//   footprint stretched along one is not underestimated (lodrand.frag: every
+//   quad whose derivatives are half texels; 92% of those in steps of 11/16,
+//   the rest one or two table steps off).
+//
+// The switch-over (c = 0) and texel indices are the Common rules'. 3D,
+// float and depth textures keep those rules (their probes, texkinds.frag and
+// lod3d.frag, showed 8-bit weights but not yet every blend), and so do the
+// unmeasured rectangles: filtered() says which follow this file.
 #pragma once
 #include <bit>
 #include <cstdint>

@@ -494,10 +494,21 @@ inline float face_derivative(float sc, float dsc, float ama, float dama) {
     return std::max(scaled_length(dx, size, dims), scaled_length(dy, size, dims));
 }
 
-// The GPU's length of (du, dv) (sampling_gpu.h): max + 11/32 min of the two magnitudes.
-inline float gpu_length(const glm::vec3& d, const glm::vec3& size, int dims) {
-    const float u = std::fabs(d.x * size.x), v = dims > 1 ? std::fabs(d.y * size.y) : 0.0f;
+// The GPU's length of a texel-space vector (du, dv) (sampling_gpu.h): max + 11/32 min of the magnitudes.
+inline float gpu_length(float du, float dv) {
+    const float u = std::fabs(du), v = std::fabs(dv);
     return std::max(u, v) + 0.34375f * std::min(u, v);
+}
+
+// The GPU's rho (sampling_gpu.h): the lengths of J x, J y and 11/16 of
+// J (x + y), J (x - y), so an ellipse whose axis is diagonal on the screen
+// counts too (tools/gpu_probes/lodrand.frag).
+inline float gpu_rho(const glm::vec3& dx, const glm::vec3& dy, const glm::vec3& size, int dims) {
+    const float ux = dx.x * size.x, uy = dy.x * size.x;
+    const float vx = dims > 1 ? dx.y * size.y : 0.0f, vy = dims > 1 ? dy.y * size.y : 0.0f;
+    const float axes = std::max(gpu_length(ux, vx), gpu_length(uy, vy));
+    const float diagonals = std::max(gpu_length(ux + uy, vx + vy), gpu_length(ux - uy, vx - vy));
+    return std::max(axes, 0.6875f * diagonals);
 }
 
 // lambda_base = log2(rho).
@@ -516,7 +527,7 @@ inline glm::vec3 image_size(const TextureImage& image) {
 }
 
 // rho of §3.8.8 for a lookup's derivatives; 0 where the texture is incomplete.
-// `gpu`: the GPU's lengths (gpu_length) for 1D and 2D images.
+// `gpu`: the GPU's rho (gpu_rho) for 1D and 2D images.
 [[gnu::always_inline]] inline float rho_of(const Texture& texture, const glm::vec3& coord, const glm::vec3& ddx,
                                            const glm::vec3& ddy, bool gpu = false) {
     const TextureImage* base = level_image(texture, 0, texture.sampler.base_level);
@@ -529,7 +540,7 @@ inline glm::vec3 image_size(const TextureImage& image) {
     }
     const int dims = texture_dims(texture.target());
     if (gpu && dims <= 2)
-        return std::max(gpu_length(dx, image_size(*base), dims), gpu_length(dy, image_size(*base), dims));
+        return gpu_rho(dx, dy, image_size(*base), dims);
     return rho_rule(dx, dy, image_size(*base), dims);
 }
 

@@ -14,6 +14,7 @@
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/sampling_gpu_batch.h"
 
 namespace glslrun::rt::kernels {
 
@@ -50,9 +51,7 @@ LaneLookup lane_lookup(const ir::TexInfo& info, const Operands<W>& ops, int lane
     lk.bias = info.lod == ir::TexLod::ImplicitBias;
     if (info.lod != ir::TexLod::Implicit) lk.lod = ops.at(info.lod_at(), lane);
     if (lk.implicit) {
-        // The GPU's one lambda per quad (sampling_gpu.h): lanes 4q..4q+3 are a
-        // 2x2 quad, and lane 4q holds its lower row's d/dx and left column's d/dy.
-        const int from = rules == SamplingRules::Gpu ? lane & ~3 : lane;
+        const int from = derivative_lane(lane, rules, info.grad);
         lk.ddx = ops.vec(info.ddx_at(), info.grad_dims(), from);
         lk.ddy = ops.vec(info.ddy_at(), info.grad_dims(), from);
     }
@@ -98,6 +97,19 @@ struct FloatOperands {
         return lk;
     }
 };
+
+// The batched sampler's derivatives as derivative_lane() picks them: each
+// quad's first lane's for all four, copied into `rows`.
+void share_quad_derivatives(BatchLookup& lk, float (&rows)[6][kLanes]) {
+    for (int c = 0; c < 3; ++c) {
+        for (int i = 0; i < kLanes; ++i) {
+            rows[c][i] = lk.ddx[c][i & ~3];
+            rows[3 + c][i] = lk.ddy[c][i & ~3];
+        }
+        lk.ddx[c] = rows[c];
+        lk.ddy[c] = rows[3 + c];
+    }
+}
 
 // The lanes of `lanes` whose unit is the same as lane `first`'s.
 template <class W>
@@ -153,7 +165,9 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         if (whole) out = reinterpret_cast<float (*)[kLanes]>(s.dst);
     if (!whole) fill_defaults(out, m.lookups);
     const FloatOperands<W> floats(info, ops.block);
-    const BatchLookup batch = floats.lookup(info);
+    BatchLookup batch = floats.lookup(info);
+    alignas(32) float quad_derivatives[6][kLanes];
+    if (batch.implicit && derivative_lane(1, rules, info.grad) == 0) share_quad_derivatives(batch, quad_derivatives);
     // The lanes' unit is almost always one: each unit's lanes are sampled together.
     LaneMask left = lookups, sampled = 0;
     while (left) {
@@ -163,6 +177,10 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
         sampled |= lanes;
+        if (rules == SamplingRules::Gpu && gpu_batch_samples(*texture)) {
+            sample_gpu_batch(*texture, batch, lanes, out, use_avx2());
+            continue;
+        }
         if (!lanes_only(*texture, rules) && batch_samples(*texture)) {
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;

@@ -229,6 +229,9 @@ llvm::Constant* Emitter::exact_reciprocal(llvm::Value* b) {
 llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c) {
     auto floor = [&](llvm::Value* x) { return call_intrinsic(llvm::Intrinsic::floor, {x}); };
     auto product = [&] { return first_operand_op(true, a, b); };
+    // Fast's fsqrt_divisor holds 1/sqrt(a) and fdiv_by_sqrt multiplies by it
+    // (runtime/fast_kernels.h): the same IEEE operations, inline.
+    const bool fast_rsqrt = precision_ == Precision::Fast && (fast_ops_ & kFastRsqrt);
     switch (op) {
     case Op::fadd: return first_operand_op(false, a, b);
     case Op::fsub: return b_.CreateFSub(a, b);
@@ -236,7 +239,7 @@ llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm:
     case Op::fdiv:
         if (llvm::Constant* r = exact_reciprocal(b)) return b_.CreateFMul(a, r);
         return b_.CreateFDiv(a, b);
-    case Op::fdiv_by_sqrt: return b_.CreateFDiv(a, b);
+    case Op::fdiv_by_sqrt: return fast_rsqrt ? product() : b_.CreateFDiv(a, b);
     case Op::fneg: return ftz(b_.CreateFNeg(a));
     case Op::fabs: return ftz(call_intrinsic(llvm::Intrinsic::fabs, {a}));
     case Op::fsign:
@@ -251,7 +254,10 @@ llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm:
     }
     case Op::fmin: return b_.CreateSelect(b_.CreateOr(b_.CreateFCmpOLT(a, b), b_.CreateFCmpUNE(b, b)), a, b);
     case Op::fmax: return b_.CreateSelect(b_.CreateOr(b_.CreateFCmpOLT(b, a), b_.CreateFCmpUNE(b, b)), a, b);
-    case Op::fsqrt: case Op::fsqrt_divisor: return call_intrinsic(llvm::Intrinsic::sqrt, {a});
+    case Op::fsqrt: return call_intrinsic(llvm::Intrinsic::sqrt, {a});
+    case Op::fsqrt_divisor:
+        if (!fast_rsqrt) return call_intrinsic(llvm::Intrinsic::sqrt, {a});
+        [[fallthrough]];
     case Op::frsqrt: return b_.CreateFDiv(splat_f(1.0f), call_intrinsic(llvm::Intrinsic::sqrt, {a}));
     case Op::fmad: return first_operand_op(true, a, b, c);
     case Op::fmsub: return b_.CreateFSub(product(), c);

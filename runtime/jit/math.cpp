@@ -106,7 +106,6 @@ private:
     template <size_t M>
     Value* horner(Value* x, const float (&c)[M]);
     Value* pow2i(Value* k) { return as_float(b_.CreateShl(b_.CreateAdd(k, i32(127)), 23)); }
-    Value* fast_rsqrt(Value* x);
     Value* fast_exp2(Value* x);
     Value* fast_log2(Value* x);
     Value* fast_pow(Value* x, Value* y);
@@ -281,11 +280,6 @@ Value* MathEmitter::horner(Value* x, const float (&c)[M]) {
     return acc;
 }
 
-// fast::rsqrt: 1 / sqrt(x), both IEEE.
-Value* MathEmitter::fast_rsqrt(Value* x) {
-    return b_.CreateFDiv(f(1.0f), b_.CreateUnaryIntrinsic(llvm::Intrinsic::sqrt, x));
-}
-
 // fast::exp2
 Value* MathEmitter::fast_exp2(Value* x) {
     Value* xc = clamp(x, f(-151.0f), f(129.0f));
@@ -365,18 +359,21 @@ Value* MathEmitter::precise_op(Op op, Value* a, Value* b) {
     }
 }
 
-// runtime/fast_kernels.h's FastLane expressions.
+// runtime/fast_kernels.h's FastLane expressions, ftz(f(ftz(a), ...)),
+// without the flushes: the FTZ/DAZ control word makes them. A denormal
+// operand reads as a zero of its sign in every arithmetic op and compare,
+// every arithmetic result is flushed, and where log2 reads a denormal's
+// bits the compares select its special case for zero (-Inf; pow's 0), as
+// for the flushed operand. The two flushes were 8 of exp's 35 instructions.
 Value* MathEmitter::fast_op(Op op, Value* a, Value* b) {
     switch (op) {
-    case Op::frsqrt: case Op::fsqrt_divisor: return ftz(fast_rsqrt(a));
-    case Op::fdiv_by_sqrt: return ftz(sel(is_nan(a), b_.CreateFAdd(a, a), b_.CreateFMul(a, b)));  // ir::a_nan_first
-    case Op::fexp2: return ftz(fast_exp2(ftz(a)));
-    case Op::fexp: return ftz(fast_exp2(b_.CreateFMul(ftz(a), f(1.44269504f))));
-    case Op::flog2: return ftz(fast_log2(ftz(a)));
-    case Op::flog: return ftz(b_.CreateFMul(fast_log2(ftz(a)), f(0.693147181f)));
-    case Op::fpow: return ftz(fast_pow(ftz(a), ftz(b)));
-    case Op::fsin: return ftz(fast_sin(ftz(a)));
-    case Op::fcos: return ftz(fast_cos(ftz(a)));
+    case Op::fexp2: return fast_exp2(a);
+    case Op::fexp: return fast_exp2(b_.CreateFMul(a, f(1.44269504f)));
+    case Op::flog2: return fast_log2(a);
+    case Op::flog: return b_.CreateFMul(fast_log2(a), f(0.693147181f));
+    case Op::fpow: return fast_pow(a, b);
+    case Op::fsin: return fast_sin(a);
+    case Op::fcos: return fast_cos(a);
     default: return nullptr;
     }
 }
@@ -384,9 +381,15 @@ Value* MathEmitter::fast_op(Op op, Value* a, Value* b) {
 }  // namespace
 
 // Every op of the table's Fast classes in Fast, its Libm ops in both (but
-// Precise fpow: emit_pow_common).
+// Precise fpow: emit_pow_common). Not Fast's Rsqrt class: 1/sqrt(a) and
+// a * b, which the native code writes inline (runtime/jit/alu.cpp) with the
+// kernels' bits under the kernels' FTZ/DAZ, where a call to a shared
+// function cost more than the two instructions (a loop of 16 normalizes
+// per fragment: 1.5x Precise's time as a call, Precise's time inline).
 bool generates_math(Op op, bool fast) {
-    if (fast && ir::op_info(op).fast != ir::FastClass::Exact) return true;
+    const ir::FastClass fast_class = ir::op_info(op).fast;
+    if (fast && fast_class == ir::FastClass::Rsqrt) return false;
+    if (fast && fast_class != ir::FastClass::Exact) return true;
     return ir::has(op, ir::OpProp::Libm) && (fast || op != Op::fpow);
 }
 

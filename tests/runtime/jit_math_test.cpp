@@ -79,7 +79,7 @@ Inputs inputs(bool binary, int randoms) {
 // Runs `op` on every (a[i], b[i]) in both backends and compares the results
 // word for word; every fourth batch runs under a partial mask, where the
 // other lanes must keep r's old words.
-void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in) {
+void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in, uint32_t fast_ops = rt::kAllFastOps) {
     const bool binary = ir::op_info(op).arity == 2;
     Builder b;
     const Kind kind = ir::op_info(op).operand == ir::TypeClass::F ? Kind::F32 : Kind::I32;
@@ -87,7 +87,7 @@ void compare_backends(Op op, Precision precision, bool avx2, const Inputs& in) {
     b.instr(op, kind, r, binary ? std::initializer_list<Reg>{x, y} : std::initializer_list<Reg>{x});
     b.output("r", r);
     std::vector<uint32_t> uniforms(4);
-    rt::ExecParams params{uniforms.data(), 10, nullptr, precision, rt::kAllFastOps};
+    rt::ExecParams params{uniforms.data(), 10, nullptr, precision, fast_ops};
     test::BackendPair pair = test::both_backends(b.sh, precision, params, avx2);
     rt::Executor *ia = pair.interp.get(), *ja = pair.jit.get();
     size_t mismatches = 0;
@@ -131,6 +131,19 @@ TEST_CASE("generated built-ins give the kernels' bits", "[runtime][backend][jit_
                 if (!avx2 || rt::cpu_has_avx2()) compare_backends(op, precision, avx2, in);
     }
     CHECK(generated >= 15);  // as many as when this test was written
+}
+
+// Fast's rsqrt class is native code, not generated math: 1/sqrt and a
+// multiply in Fast, Precise's square root and division where the error
+// report's ablation leaves the class out of the fast ops.
+TEST_CASE("Fast's inline rsqrt class gives the kernels' bits, with the class on and off", "[runtime][backend][jit_math]") {
+    if (!jit_available()) return;
+    for (Op op : {Op::frsqrt, Op::fsqrt_divisor, Op::fdiv_by_sqrt}) {
+        const Inputs in = inputs(ir::op_info(op).arity == 2, 1 << 16);
+        for (uint32_t fast_ops : {uint32_t(rt::kAllFastOps), uint32_t(rt::kAllFastOps & ~rt::kFastRsqrt)})
+            for (bool avx2 : {false, true})
+                if (!avx2 || rt::cpu_has_avx2()) compare_backends(op, Precision::Fast, avx2, in, fast_ops);
+    }
 }
 
 TEST_CASE("generated integer division gives the kernels' words", "[runtime][backend][jit_math]") {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Decode the GPU probes of this folder (rendered by run_gpu.sh, or by glslrun/glref on the CPU).
 
-usage: decode.py texfilter|lod|mipgen|cube|funcs2 LABEL=IMG.png ...
+usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|mipgen|cube|funcs2 LABEL=IMG.png ...
 Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
 """
 import sys
@@ -301,6 +301,127 @@ def cube(images):
                     w = np.rint(QUANT[qn](x) * 65536)
                     res.append(f"{sname}/{qn} {100 * np.mean(w == got):.2f}%")
             print(f"  |ma| = {ma}: " + ", ".join(res))
+
+
+# 256 * frac(lambda) for a significand 1 + k/256 of rho (runtime/sampling_gpu.h's kLog2Fraction).
+def log2_fraction_table():
+    src = open(HERE + "/../../runtime/sampling_gpu.h").read()
+    body = src.split("kLog2Fraction[256] = {", 1)[1].split("};", 1)[0]
+    return np.array([int(v) for v in body.replace("\n", " ").split(",") if v.strip()])
+
+
+def lambda_of_rho(rho, table):
+    bits = np.asarray(rho, dtype=f32).view(np.uint32).astype(np.int64)
+    return ((bits >> 23) - 127) + table[(bits >> 15) & 255] / 256.0
+
+
+def quad_lambdas(img):
+    """lodnorm/lodrand/lod3d encoding: the lambda of each quad's first pixel (level pair in red, blend in G, B, A)."""
+    n = np.rint(img[..., 1:4] / 17.0).astype(np.int64)
+    g = ((n[..., 0] << 8) | (n[..., 1] << 4) | n[..., 2])[0::2, 0::2] / 4096.0
+    k = np.floor(img[0::2, 0::2, 0] / 17.0 + 1e-9)
+    f = np.where(k % 2 == 1, (1 - g) % 1.0, g)  # level k's green is k mod 2
+    return k + np.round(f * 256) / 256
+
+
+def gpu_length(a, b):
+    a, b = np.abs(a).astype(f32), np.abs(b).astype(f32)
+    return (np.maximum(a, b) + f32(0.34375) * np.minimum(a, b)).astype(f32)
+
+
+def lodrand(images):
+    """Each quad's lambda against models of rho: the fraction of quads (lambda in (0, 8)) they give exactly."""
+    table = log2_fraction_table()
+    qy, qx = np.mgrid[0:256, 0:512]
+    q = qy * 256 + qx % 256
+    m = np.where(qx < 256, 1.0, 1.375)
+    ux, vx, uy, vy = [((q // 16 ** j) % 16 - 7.5) * m for j in range(4)]
+    models = {
+        "exact: max(|J x|, |J y|)": np.maximum(np.hypot(ux, vx), np.hypot(uy, vy)),
+        "max(|J x|, |J y|), |(a, b)| = max + 11/32 min": np.maximum(gpu_length(ux, vx), gpu_length(uy, vy)),
+        "the same and 11/16 |J (x +- y)| (sampling_gpu.h)": np.maximum(
+            np.maximum(gpu_length(ux, vx), gpu_length(uy, vy)),
+            f32(0.6875) * np.maximum(gpu_length(ux + uy, vx + vy), gpu_length(ux - uy, vx - vy))),
+    }
+    for label, path in images:
+        lam = quad_lambdas(load(path))
+        valid = (lam > 0.001) & (lam < 7.99)
+        print(f"lodrand {label}: quads with lambda in (0, 8): {valid.sum()}")
+        for name, rho in models.items():
+            ok = np.abs(lambda_of_rho(rho.astype(f32), table) - lam) < 1e-6
+            print(f"  {name}: half texels {100 * ok[valid & (qx < 256)].mean():.2f}%, "
+                  f"steps of 11/16 {100 * ok[valid & (qx >= 256)].mean():.2f}%")
+
+
+def lod3d(images):
+    """lod3d.frag: each quad's lambda against 3D models of rho (the fraction of quads with lambda in (0, 6))."""
+    table = log2_fraction_table()
+    qy, qx = np.mgrid[0:256, 0:512]
+    q = qy * 512 + qx
+    ux, vx, wx, uy, vy, wy = [((q // 7 ** j) % 7 - 3) * 1.5 for j in range(6)]
+
+    def length3(a, b, c, mid, low):
+        m = np.sort(np.abs(np.stack([a, b, c])), axis=0)
+        return m[2] + mid * m[1] + low * m[0]
+
+    def rho(mid, low, diagonals):
+        axes = np.maximum(length3(ux, vx, wx, mid, low), length3(uy, vy, wy, mid, low))
+        if not diagonals:
+            return axes
+        return np.maximum(axes, 0.6875 * np.maximum(length3(ux + uy, vx + vy, wx + wy, mid, low),
+                                                    length3(ux - uy, vx - vy, wx - wy, mid, low)))
+    exact = np.maximum(np.sqrt(ux ** 2 + vx ** 2 + wx ** 2), np.sqrt(uy ** 2 + vy ** 2 + wy ** 2))
+    models = {"exact: max(|J x|, |J y|)": exact,
+              "max + 11/32 (mid + min), axes only": rho(0.34375, 0.34375, False),
+              "max + 11/32 mid + 1/4 min, with 11/16 |J (x +- y)|": rho(0.34375, 0.25, True)}
+    for label, path in images:
+        lam = quad_lambdas(load(path))
+        valid = (q < 7 ** 6) & (lam > 0.001) & (lam < 5.99)
+        print(f"lod3d {label}: quads with lambda in (0, 6): {valid.sum()}")
+        for name, r in models.items():
+            ok = np.abs(lambda_of_rho(np.asarray(r, dtype=f32), table) - lam) < 1e-6
+            print(f"  {name}: {100 * ok[valid].mean():.2f}%")
+
+
+def texkinds(images):
+    """texkinds.frag: the LINEAR weights of 3D, float and depth textures (8-bit weight w: v = w / 256)."""
+    x = np.arange(32768) / 32768.0
+    w8 = np.floor(x * 256 + 0.5)
+    unorm16 = np.floor(np.floor((65535 * w8 + 128) / 256) / 65535 * 65536 + 0.5) % 65536
+    float8 = np.floor(w8 / 256 * 65536 + 0.5) % 65536
+    for label, path in images:
+        e = dec16(load(path))
+        band32 = lambda b: e[32 * b: 32 * b + 32].reshape(-1)
+        print(f"texkinds {label}:")
+        for b, what in [(0, "3D along s"), (1, "3D along r"), (2, "RGBA32F along s"), (4, "depth along s"),
+                        (6, "depth compared (r = 1/2) along s")]:
+            v = band32(b)
+            print(f"  {what}: 16-bit blend of 8-bit weights {100 * np.mean(v == unorm16):.2f}%, "
+                  f"w / 256 in float {100 * np.mean(v == float8):.2f}%, exact weight "
+                  f"{100 * np.mean(v == np.floor(x * 65536 + 0.5)):.2f}%")
+        for b, what in [(3, "RGBA32F"), (5, "depth"), (7, "RGBA32F (1/4 | 3/4)")]:
+            print(f"  {what}: bits below 2^-16 zero in {100 * np.mean(band32(b) == 0):.2f}% of the samples")
+        # Band 8 (high 16 bits) and 9 (the next 16): the random RGBA32F texture's red, against its
+        # texels blended with the RGBA8 rule's integer weights (w11 = round(wx wy / 256), ...) in float.
+        hi, lo = e[256:288].astype(np.float64), e[288:320].astype(np.float64) / 65536.0
+        v = (hi - (lo >= 0.5) + lo) / 65536.0
+        texels = np.asarray(Image.open(HERE + "/rand16.png").convert("RGBA"), dtype=np.int64)[::-1, :, 0]
+        texels = (texels.astype(f32) / f32(255)).astype(f32)
+        yb, xx = np.mgrid[0:32, 0:1024]
+
+        def axis(c):
+            u = ((c - np.floor(c)) * f32(16) - f32(0.5)).astype(f32)
+            i0 = np.floor(u).astype(np.int64)
+            return i0 % 16, (i0 + 1) % 16, np.floor((u - np.floor(u)).astype(np.float64) * 256 + 0.5).astype(np.int64)
+        x0, x1, wx = axis((xx / 1024.0 + yb / 32768.0).astype(f32))
+        y0, y1, wy = axis((yb / 32.0 + xx / 32768.0).astype(f32))
+        w11 = (wx * wy + 128) >> 8
+        terms = [texels[y0, x0] * (256 - wx - wy + w11), texels[y0, x1] * (wx - w11), texels[y1, x0] * (wy - w11),
+                 texels[y1, x1] * w11]
+        model = ((terms[0] + terms[1]).astype(f32) + (terms[2] + terms[3]).astype(f32)).astype(f32) / f32(256)
+        d = np.abs(model.astype(np.float64) - v)
+        print(f"  RGBA32F 16x16 random, red: integer weights summed in float: exact (2^-31) {100 * np.mean(d < 2 ** -31):.2f}%, "
+              f"within 2^-16 {100 * np.mean(d < 2 ** -16):.2f}%, largest difference {d.max():.3g}")
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ if [[ ! -e /usr/share/glvnd/egl_vendor.d/10_nvidia.json && -e /usr/local/nvidia/
 fi
 cd tools/gpu_probes || exit 1
 rc=0
-for p in texfilter lod lodnorm mipgen cube funcs2 textured_lin; do
+for p in texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs2 textured_lin; do
   frag=$p.frag; [[ $p == textured_lin ]] && frag=../../shaders/textured_pix.frag
   vert=probe.vert; [[ $p == textured_lin ]] && vert=../../shaders/textured_pix.vert
   if "$G" --driver gpu "$vert" "$frag" "$p.toml" -o "$O/$p.png" >"$O/$p.log" 2>&1; then

@@ -268,8 +268,10 @@ void PipelineEmitter::define_square_depth() {
 }
 
 // Emits body(index, quads) for the batch's quads in order, a loop: quads
-// `index` and `index + 1` together (width_ 8, the first one's primitive)
-// where pairable(index, index + 1) holds, else quad `index` alone (width_ 4).
+// `index` to `index + 3` together (width_ 16, the first one's primitive)
+// where the code is AVX-512's and pairable(index, k) holds for the three
+// others, else `index` and `index + 1` (width_ 8) where pairable(index,
+// index + 1) holds, else quad `index` alone (width_ 4).
 void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable) {
     llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
     llvm::BasicBlock* entry = b_.GetInsertBlock();
@@ -279,33 +281,50 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, co
     b_.SetInsertPoint(loop);
     llvm::PHINode* index = b_.CreatePHI(i32_, 2);
     index->addIncoming(b_.getInt32(0), entry);
-    llvm::Value* next = b_.CreateAdd(index, b_.getInt32(1));
+    auto plus = [&](int k) { return b_.CreateAdd(index, b_.getInt32(k)); };
+    llvm::Value* next = plus(1);
     auto x = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, x), i32_, i); };
     auto y = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, y), i32_, i); };
     llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
     llvm::Value* step = b_.getInt32(1);
     if (pairable) {
-        llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
-        llvm::BasicBlock* pair = llvm::BasicBlock::Create(b_.getContext(), "pair", fn_);
-        llvm::BasicBlock* single = llvm::BasicBlock::Create(b_.getContext(), "single", fn_);
         llvm::BasicBlock* after = llvm::BasicBlock::Create(b_.getContext(), "after_quads", fn_);
+        llvm::PHINode* taken = llvm::PHINode::Create(i32_, 3, "taken", after);
+        // Quads index .. index + n - 1 at width_ 4n, then to `after`.
+        auto run = [&](int n, const char* name) {
+            llvm::BasicBlock* block = llvm::BasicBlock::Create(b_.getContext(), name, fn_);
+            b_.SetInsertPoint(block);
+            std::vector<llvm::Value*> xs, ys;
+            for (int k = 0; k < n; ++k) {
+                xs.push_back(x(k ? plus(k) : index));
+                ys.push_back(y(k ? plus(k) : index));
+            }
+            width_ = unsigned(4 * n);
+            body(b_.CreateZExt(index, i64_), quad(prim, xs, ys));
+            width_ = 4;
+            taken->addIncoming(b_.getInt32(n), b_.GetInsertBlock());
+            b_.CreateBr(after);
+            return block;
+        };
+        llvm::BasicBlock* single = run(1, "single");
+        llvm::BasicBlock* pair = run(2, "pair");
+        llvm::BasicBlock* pair_or_four = pair;
+        if (key_.avx2 && rt::jit::avx512()) {
+            // Four quads of one primitive: a 512-bit register per value.
+            llvm::BasicBlock* four = run(4, "four");
+            pair_or_four = llvm::BasicBlock::Create(b_.getContext(), "test_four", fn_);
+            b_.SetInsertPoint(pair_or_four);
+            llvm::BasicBlock* test_rest = llvm::BasicBlock::Create(b_.getContext(), "test_rest", fn_);
+            b_.CreateCondBr(b_.CreateICmpSLT(plus(3), quads), test_rest, pair);
+            b_.SetInsertPoint(test_rest);
+            b_.CreateCondBr(b_.CreateAnd(pairable(index, plus(2)), pairable(index, plus(3))), four, pair);
+        }
+        llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
+        b_.SetInsertPoint(loop);
         b_.CreateCondBr(b_.CreateICmpSLT(next, quads), test_pair, single);
         b_.SetInsertPoint(test_pair);
-        b_.CreateCondBr(pairable(index, next), pair, single);
-        b_.SetInsertPoint(pair);
-        width_ = 8;
-        body(b_.CreateZExt(index, i64_), quad(prim, {x(index), x(next)}, {y(index), y(next)}));
-        width_ = 4;
-        llvm::BasicBlock* pair_end = b_.GetInsertBlock();
-        b_.CreateBr(after);
-        b_.SetInsertPoint(single);
-        body(b_.CreateZExt(index, i64_), quad(prim, {x(index)}, {y(index)}));
-        llvm::BasicBlock* single_end = b_.GetInsertBlock();
-        b_.CreateBr(after);
+        b_.CreateCondBr(pairable(index, next), pair_or_four, single);
         b_.SetInsertPoint(after);
-        llvm::PHINode* taken = b_.CreatePHI(i32_, 2);
-        taken->addIncoming(b_.getInt32(2), pair_end);
-        taken->addIncoming(b_.getInt32(1), single_end);
         step = taken;
     } else {
         body(b_.CreateZExt(index, i64_), quad(prim, {x(index)}, {y(index)}));
@@ -316,10 +335,10 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, co
     b_.SetInsertPoint(done);
 }
 
-// inputs(batch, regs): FragmentStage::fill_inputs. Two quads of one
-// primitive (the common case: a batch's quads come several from one
-// triangle) are interpolated together, 8 lanes a vector: the same
-// operations per lane, half the instructions.
+// inputs(batch, regs): FragmentStage::fill_inputs. Two or four quads of
+// one primitive (the common case: a batch's quads come several from one
+// triangle) are interpolated together, 8 or 16 lanes a vector: the same
+// operations per lane, a half or a quarter of the instructions.
 void PipelineEmitter::define_inputs() {
     begin("glslrun_inputs", b_.getVoidTy(), {ptr_, ptr_});
     llvm::Value* batch = fn_->getArg(0);

@@ -71,7 +71,7 @@ private:
     llvm::Value* at(llvm::Value* base, uint64_t offset) { return b_.CreateConstInBoundsGEP1_64(i8_, base, offset); }
     llvm::Value* load_f(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(f32_, at(base, offset)); }
     llvm::Value* load_i(llvm::Value* base, uint64_t offset) { return b_.CreateLoad(i32_, at(base, offset)); }
-    // Values of a quad's lanes, or of two quads' (width_ 8).
+    // Values of a quad's lanes, or of two or four quads' (width_ 8, 16).
     llvm::FixedVectorType* vf() { return llvm::FixedVectorType::get(f32_, width_); }
     llvm::Value* splat(llvm::Value* v) { return b_.CreateVectorSplat(width_, v); }
     llvm::Value* lanes_i(const int (&v)[4]) {
@@ -95,7 +95,7 @@ private:
     llvm::Value* is_nan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
     // then()'s value where `condition` holds, else `otherwise`: a branch and a phi.
     llvm::Value* if_then(llvm::Value* condition, llvm::Value* otherwise, const std::function<llvm::Value*()>& then);
-    // One quad at (x[0], y[0]), or two of one primitive (width_ 8).
+    // One quad at (x[0], y[0]), or two or four of one primitive (width_ 8, 16).
     Quad quad(llvm::Value* prim, llvm::ArrayRef<llvm::Value*> x, llvm::ArrayRef<llvm::Value*> y);
     llvm::Value* plane(const Quad& q, uint64_t offset);
     llvm::Value* clamp01(llvm::Value* v);
@@ -144,13 +144,15 @@ private:
     QuadValues quad_values(const Quad& q, const std::vector<llvm::Value*>& regs, llvm::Value* index);
     void write_float_lanes(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer);
     llvm::Value* alpha_passes(const QuadValues& v);
-    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer);
+    void write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer,
+                          llvm::Value* packed = nullptr);
     std::array<llvm::Value*, 4> color_values(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels,
                                              llvm::Value* index);
     void read_modify_write_quad(const Quad& q, const QuadValues& v, llvm::Value* live, llvm::Value* lower_slot,
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
     llvm::Value* stored_byte(llvm::Value* c);
+    llvm::Value* pack_batch(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
         target_.stencil = b_.CreateLoad(ptr_, at(target, offsetof(Target, stencil)));
@@ -174,7 +176,7 @@ private:
     } target_{};
     llvm::AllocaInst* written_ = nullptr;
     bool strict_ = false;  // add() and mul() order NaNs
-    unsigned width_ = 4;   // lanes per vector: one quad, or two in the inputs' pairs
+    unsigned width_ = 4;   // lanes per vector: one quad, or two or four in the inputs' runs
 };
 
 }  // namespace glslrun::raster::fused

@@ -159,8 +159,10 @@ llvm::Value* PipelineEmitter::alpha_passes(const QuadValues& v) {
 // A quad's live lanes into RGBA8 storage: the lanes' pixels are distinct, two rows of two, so two
 // masked stores of two pixels each write the same bytes. No branch on the
 // lanes: a quad's live lanes vary, and branches on them mispredicted (perf).
-// `lanes`: i32, bit i: lane i.
-void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer) {
+// `lanes`: i32, bit i: lane i. `packed`: the quad's words, where the
+// batch's were packed ahead (else null: packed here).
+void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm::Value* lanes, llvm::Value* buffer,
+                                       llvm::Value* packed) {
     auto* v4i = llvm::FixedVectorType::get(i32_, 4);
     llvm::Value* live = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(4, lanes),
                                                      llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{1, 2, 4, 8})),
@@ -180,20 +182,20 @@ void PipelineEmitter::write_rgba8_quad(const Quad& q, const QuadValues& v, llvm:
     llvm::Value* lower_slot = b_.CreateGEP(i32_, buffer, pixel);
     llvm::Value* upper_slot = b_.CreateGEP(i32_, buffer, above);
     if (reads_color(key_)) return read_modify_write_quad(q, v, live, lower_slot, upper_slot, row(0), row(2));
-    llvm::Value* words = pack_rgba8(v.rgba);
+    llvm::Value* words = packed ? packed : pack_rgba8(v.rgba);
     llvm::Value* lower = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{0, 1, 0, 1});
     llvm::Value* upper = b_.CreateShuffleVector(words, llvm::ArrayRef<int>{2, 3, 2, 3});
     b_.CreateMaskedStore(lower, lower_slot, llvm::Align(4), row(0));
     b_.CreateMaskedStore(upper, upper_slot, llvm::Align(4), row(2));
 }
 
-// Four lanes of channel values (0 to 255) as RGBA8 words.
+// Lanes of channel values (0 to 255) as RGBA8 words (a quad's, or a batch's).
 llvm::Value* PipelineEmitter::pack_rgba8(const std::array<llvm::Value*, 4>& rgba) {
-    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
-    llvm::Value* words = llvm::Constant::getNullValue(v4i);
+    llvm::Type* vi = rgba[0]->getType();
+    llvm::Value* words = llvm::Constant::getNullValue(vi);
     for (unsigned k = 0; k < 4; ++k) {
-        llvm::Value* byte = b_.CreateAnd(rgba[k], llvm::ConstantInt::get(v4i, 255));
-        words = b_.CreateOr(words, b_.CreateShl(byte, llvm::ConstantInt::get(v4i, 8 * k)));
+        llvm::Value* byte = b_.CreateAnd(rgba[k], llvm::ConstantInt::get(vi, 255));
+        words = b_.CreateOr(words, b_.CreateShl(byte, llvm::ConstantInt::get(vi, 8 * k)));
     }
     return words;
 }
@@ -285,19 +287,37 @@ std::array<llvm::Value*, 4> PipelineEmitter::color_values(const std::vector<llvm
 }
 
 // A channel's RGBA8 byte as a 32-bit integer: raster::to_unorm8's steps, or
-// raster::gpu_unorm8's with ColorRounding::Gpu.
+// raster::gpu_unorm8's with ColorRounding::Gpu (of a quad's lanes, or a batch's).
 llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
-    auto* v4i = llvm::FixedVectorType::get(i32_, 4);
-    c = b_.CreateSelect(b_.CreateFCmpOGT(c, splat_f(0.0f)), c, splat_f(0.0f));
-    c = b_.CreateSelect(b_.CreateFCmpOLT(c, splat_f(1.0f)), c, splat_f(1.0f));
+    llvm::Type* vi = llvm::VectorType::getInteger(llvm::cast<llvm::VectorType>(c->getType()));
+    auto f = [&](float v) { return llvm::ConstantFP::get(c->getType(), v); };
+    c = b_.CreateSelect(b_.CreateFCmpOGT(c, f(0.0f)), c, f(0.0f));
+    c = b_.CreateSelect(b_.CreateFCmpOLT(c, f(1.0f)), c, f(1.0f));
     if (ops_.rounding == ColorRounding::Gpu) {
-        llvm::Value* t = b_.CreateFPToSI(b_.CreateFMul(c, splat_f(4096.0f)), v4i);
-        llvm::Value* sum = b_.CreateAdd(b_.CreateMul(t, llvm::ConstantInt::get(v4i, 510)), llvm::ConstantInt::get(v4i, 4095));
-        return b_.CreateAShr(sum, llvm::ConstantInt::get(v4i, 13));
+        llvm::Value* t = b_.CreateFPToSI(b_.CreateFMul(c, f(4096.0f)), vi);
+        llvm::Value* sum = b_.CreateAdd(b_.CreateMul(t, llvm::ConstantInt::get(vi, 510)), llvm::ConstantInt::get(vi, 4095));
+        return b_.CreateAShr(sum, llvm::ConstantInt::get(vi, 13));
     }
     constexpr float kRound = 8388608.0f;
-    llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, splat_f(255.0f)), splat_f(kRound));
-    return b_.CreateFPToSI(b_.CreateFSub(rounded, splat_f(kRound)), v4i);
+    llvm::Value* rounded = b_.CreateFAdd(b_.CreateFMul(c, f(255.0f)), f(kRound));
+    return b_.CreateFPToSI(b_.CreateFSub(rounded, f(kRound)), vi);
+}
+
+// The RGBA8 words of every lane of the batch for the colour buffer whose
+// outputs are the `channels` registers of `regs` from `first` on, into a
+// slot of kLanes words: one conversion of whole registers (16 lanes a
+// 512-bit vector) instead of one per quad. Lanes past the batch's quads
+// are converted too, never stored.
+llvm::Value* PipelineEmitter::pack_batch(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels) {
+    auto* batch_f = llvm::FixedVectorType::get(f32_, kLanes);
+    std::array<llvm::Value*, 4> rgba;
+    for (uint32_t k = 0; k < 4; ++k)
+        rgba[k] = stored_byte(k < channels ? static_cast<llvm::Value*>(b_.CreateAlignedLoad(batch_f, regs[first + k], llvm::Align(16)))
+                                           : llvm::ConstantFP::get(batch_f, 0.0));
+    llvm::AllocaInst* slot = b_.CreateAlloca(llvm::ArrayType::get(i32_, kLanes));
+    slot->setAlignment(llvm::Align(64));
+    b_.CreateAlignedStore(pack_rgba8(rgba), slot, llvm::Align(64));
+    return slot;
 }
 
 // outputs(batch, regs, alive, target): FragmentStage::write_outputs, quad
@@ -315,6 +335,17 @@ void PipelineEmitter::define_outputs() {
     b_.CreateStore(b_.getInt64(0), written_);
     const bool late_depth = ops_.depth_test && !key_.early_depth;
     const bool rgba8 = !ops_.float_color && writes_color(key_);
+    // Where every live lane's colour is stored as the shader made it (no
+    // test after the shader, nothing read back), the batch's colours are
+    // converted before the quads' stores.
+    const bool ahead = rgba8 && !late_depth && !ops_.alpha_test && !ops_.stencil_test && !reads_color(key_);
+    std::array<llvm::Value*, kMaxDrawBuffers> packed{};
+    for (size_t b = 0, first = key_.color_channels + (key_.depth_output ? 1 : 0); ahead && b < packed.size(); ++b) {
+        const uint32_t channels = b == 0 ? key_.color_channels : key_.more_channels[b];
+        if (channels == 0) continue;
+        packed[b] = pack_batch(regs, b == 0 ? 0 : first, channels);
+        if (b > 0) first += channels;
+    }
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
         llvm::Value* shift = b_.CreateShl(index, 2);
         llvm::Value* lanes = b_.CreateTrunc(b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), shift), b_.getInt64(0xF)), i32_);
@@ -340,7 +371,12 @@ void PipelineEmitter::define_outputs() {
             if (channels == 0) continue;
             QuadValues colour = v;
             if (b > 0) colour.rgba = color_values(regs, first, channels, index), first += channels;
-            if (rgba8) write_rgba8_quad(q, colour, lanes, target_.color[b]);
+            llvm::Value* words = nullptr;
+            if (packed[b])
+                words = b_.CreateAlignedLoad(llvm::FixedVectorType::get(i32_, 4),
+                                             b_.CreateInBoundsGEP(i32_, packed[b], b_.CreateShl(index, 2)),
+                                             llvm::Align(16));
+            if (rgba8) write_rgba8_quad(q, colour, lanes, target_.color[b], words);
             else write_float_lanes(q, colour, lanes, target_.color[b]);
         }
         if (next) {

@@ -1,0 +1,173 @@
+// Fast's batched sampler (runtime/sampling_gpu_batch.h) against the per-lane
+// one under the GPU's rules (sample_complete_lane with SamplingRules::Gpu),
+// bit for bit: random and extreme coordinates, random derivatives (one set
+// per 2x2 quad, the first lane's, as the tex kernel hands the lanes), RGBA8
+// 1D, 2D and cube-map textures with the GPU's mipmaps, every filter pair and wrap
+// mode, implicit, biased and explicit LODs, the texture's bias and clamps,
+// lanes partly masked; the baseline and the AVX2 builds of its loops.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "runtime/interp_kernels.h"
+#include "runtime/mipmap_gpu.h"
+#include "runtime/sampling_gpu_batch.h"
+#include "runtime/texture_levels.h"
+
+using namespace glslrun;
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// RGBA8 texels are k/255; the GPU's mipmaps are made from them where the
+// sizes halve exactly, the box filter's otherwise.
+Texture make(std::mt19937& rng, TextureTarget target, int w, int h) {
+    std::uniform_int_distribution<int> byte(0, 255);
+    TextureImage img{w, h, 1, {}};
+    for (int i = 0; i < w * h; ++i)
+        img.texels.push_back({byte(rng) / 255.0f, byte(rng) / 255.0f, byte(rng) / 255.0f, byte(rng) / 255.0f});
+    std::vector<TextureImage> faces(target == TextureTarget::Cube ? 6 : 1, img);
+    for (size_t f = 1; f < faces.size(); ++f) std::shuffle(faces[f].texels.begin(), faces[f].texels.end(), rng);
+    auto t = Texture::create(target, std::move(faces), TextureFormat::RGBA8);
+    if (!t) FAIL(t.error().str());
+    if (!rt::generate_gpu_mipmaps(*t)) t->generate_mipmaps();
+    return std::move(*t);
+}
+
+float coordinate(std::mt19937& rng) {
+    static constexpr float kSpecial[] = {kNaN, kInf, -kInf, 1e30f, -1e30f, 0.0f, -0.0f, 1e-40f, 0.5f, 1.0f,
+                                         -1.0f, 0.125f, 0.875f, 2.0f, 16777216.0f, -8388609.0f, 3.0e9f};
+    if (std::uniform_int_distribution<int>(0, 9)(rng) == 0)
+        return kSpecial[std::uniform_int_distribution<size_t>(0, std::size(kSpecial) - 1)(rng)];
+    return std::uniform_real_distribution<float>(-3.0f, 3.0f)(rng);
+}
+
+// Magnification to strong minification, in every direction; sometimes 0, NaN or infinite.
+float derivative(std::mt19937& rng) {
+    const int p = std::uniform_int_distribution<int>(0, 19)(rng);
+    if (p == 0) return 0.0f;
+    if (p == 1) return kNaN;
+    if (p == 2) return kInf;
+    const float magnitude = std::exp2(std::uniform_real_distribution<float>(-12.0f, 4.0f)(rng));
+    return p < 11 ? magnitude : -magnitude;
+}
+
+struct Operands {
+    alignas(32) float coord[3][rt::kLanes], ddx[3][rt::kLanes], ddy[3][rt::kLanes], lod[rt::kLanes];
+};
+
+void check_batch(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind) {
+    // A cube map's lookup takes a direction and its derivatives.
+    const int dims = texture.target() == TextureTarget::Cube ? 3 : rt::texture_dims(texture.target());
+    Operands ops{};
+    for (int i = 0; i < rt::kLanes; ++i) {
+        for (int c = 0; c < dims; ++c) {
+            ops.coord[c][i] = coordinate(rng);
+            ops.ddx[c][i] = derivative(rng);
+            ops.ddy[c][i] = derivative(rng);
+        }
+        ops.lod[i] = std::uniform_real_distribution<float>(-3.0f, 6.0f)(rng);
+    }
+    rt::BatchLookup lk;
+    lk.implicit = lod_kind != ir::TexLod::Explicit;
+    lk.bias = lod_kind == ir::TexLod::ImplicitBias;
+    for (int c = 0; c < 3; ++c) {
+        lk.coord[c] = ops.coord[c];
+        lk.ddx[c] = ops.ddx[c];
+        lk.ddy[c] = ops.ddy[c];
+    }
+    if (lod_kind != ir::TexLod::Implicit) lk.lod = ops.lod;
+    const rt::LaneMask lanes = std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng) | 1;
+    for (bool avx2 : {false, true}) {
+        if (avx2 && !rt::cpu_has_avx2()) continue;
+        alignas(64) float out[4][rt::kLanes];
+        for (auto& channel : out)
+            for (float& v : channel) v = -7.0f;  // what lanes outside the mask must keep
+        rt::sample_gpu_batch(texture, lk, lanes, out, avx2);
+        for (int i = 0; i < rt::kLanes; ++i) {
+            float want[4] = {-7.0f, -7.0f, -7.0f, -7.0f};
+            if ((lanes >> i) & 1) {
+                const int from = i & ~3;  // the quad's first lane's derivatives
+                rt::LaneLookup lane;
+                lane.rules = rt::SamplingRules::Gpu;
+                lane.coord = {ops.coord[0][i], ops.coord[1][i], ops.coord[2][i]};
+                lane.ddx = {ops.ddx[0][from], ops.ddx[1][from], ops.ddx[2][from]};
+                lane.ddy = {ops.ddy[0][from], ops.ddy[1][from], ops.ddy[2][from]};
+                lane.lod = lod_kind != ir::TexLod::Implicit ? ops.lod[i] : 0.0f;
+                lane.implicit = lk.implicit;
+                lane.bias = lk.bias;
+                rt::sample_complete_lane(texture, lane, want);
+            }
+            for (int c = 0; c < 4; ++c) {
+                INFO("avx2 " << avx2 << " lane " << i << " channel " << c << " coord (" << ops.coord[0][i] << ", "
+                             << ops.coord[1][i] << ") got " << out[c][i] << " want " << want[c]);
+                REQUIRE(std::bit_cast<uint32_t>(out[c][i]) == std::bit_cast<uint32_t>(want[c]));
+            }
+        }
+    }
+}
+
+constexpr TextureFilter kFilters[] = {TextureFilter::Nearest,           TextureFilter::Linear,
+                                      TextureFilter::NearestMipmapNearest, TextureFilter::LinearMipmapNearest,
+                                      TextureFilter::NearestMipmapLinear,  TextureFilter::LinearMipmapLinear};
+constexpr TextureWrap kWraps[] = {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::Clamp,
+                                  TextureWrap::ClampToBorder, TextureWrap::MirroredRepeat};
+constexpr ir::TexLod kLods[] = {ir::TexLod::Implicit, ir::TexLod::ImplicitBias, ir::TexLod::Explicit};
+
+void sweep(std::mt19937& rng, Texture& texture) {
+    for (TextureFilter min : kFilters)
+        for (TextureFilter mag : {TextureFilter::Nearest, TextureFilter::Linear})
+            for (TextureWrap s : kWraps)
+                for (TextureWrap t : {TextureWrap::Repeat, TextureWrap::ClampToBorder, s})
+                    for (ir::TexLod lod : kLods) {
+                        texture.sampler.min_filter = min;
+                        texture.sampler.mag_filter = mag;
+                        texture.sampler.wrap_s = s;
+                        texture.sampler.wrap_t = t;
+                        REQUIRE(texture.complete());
+                        REQUIRE(rt::gpu_batch_samples(texture));
+                        for (int batch = 0; batch < 3; ++batch) check_batch(rng, texture, lod);
+                    }
+}
+
+}  // namespace
+
+TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling", "[sampling][batch][gpu]") {
+    std::mt19937 rng(2511);
+    Texture one = make(rng, TextureTarget::Tex1D, 8, 1);
+    sweep(rng, one);
+    Texture square = make(rng, TextureTarget::Tex2D, 16, 8);
+    sweep(rng, square);
+    // Not a power of two, a border colour, then the object's bias and clamps and a base level above 0.
+    Texture two = make(rng, TextureTarget::Tex2D, 13, 6);
+    two.sampler.border_color = {0.25f, 0.0f, 1.0f, 0.5f};
+    sweep(rng, two);
+    two.sampler.lod_bias = 0.75f;
+    two.sampler.min_lod = -0.5f;
+    two.sampler.max_lod = 2.25f;
+    two.sampler.base_level = 1;
+    two.sampler.max_level = 2;
+    sweep(rng, two);
+}
+
+TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling: cube maps", "[sampling][batch][gpu]") {
+    std::mt19937 rng(66);
+    Texture cube = make(rng, TextureTarget::Cube, 8, 8);
+    sweep(rng, cube);
+}
+
+TEST_CASE("Fast's batched GPU-rule sampling takes RGBA8 1D, 2D and cube maps only", "[sampling][batch][gpu]") {
+    std::mt19937 rng(7);
+    CHECK(rt::gpu_batch_samples(make(rng, TextureTarget::Tex2D, 4, 4)));
+    std::vector<TextureImage> faces{TextureImage{2, 2, 1, std::vector<glm::vec4>(4, glm::vec4(0.5f))}};
+    auto f = Texture::create(TextureTarget::Tex2D, std::move(faces), TextureFormat::RGBA32F);
+    REQUIRE(f);
+    CHECK_FALSE(rt::gpu_batch_samples(*f));
+}
