@@ -561,7 +561,7 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
         return st.error();
     stats.vertex_seconds = seconds_since(start);
     if (raster::DrawProbe* probe = state_of(program).probe)
-        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded});
+        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded, &program});
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = state_of(program).ir.vertex;

@@ -85,6 +85,9 @@ Result<Program*> FixedFunctionPrograms::get(const Program* base, const std::vect
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
     state_of(*program).ir.fixed_function_vertex = generated_vertex;
+    // Both stages' sources, the generated one too: the shader debugger compiles its twin from them.
+    state_of(*program).vertex_sources = vertex;
+    state_of(*program).fragment_sources = fragment;
     // A unit whose texel no combiner reads (DECAL of a luminance texture) has no active sampler.
     for (int u = 0; u < 8; ++u)
         if ((samplers >> u & 1) && program->has_uniform(ffp::sampler_uniform(u)))
@@ -106,8 +109,8 @@ Result<Program*> ScenePrograms::for_draw(size_t pass, const Scene& scene, GLStat
     needs.texcoords = gen_fs ? ffp::fragment_units(scene, gl) : texcoords_read(base);
     const uint8_t samplers = gen_fs ? ffp::fragment_units(scene, gl) : 0;
     std::vector<ShaderSource> vertex = st.vertex_sources, fragment = st.fragment_sources;
-    if (gen_vs) vertex = {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}};
-    if (gen_fs) fragment = {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}};
+    if (gen_vs) vertex = {{ffp::kVertexStageName, ffp::vertex_source(scene, gl, needs)}};
+    if (gen_fs) fragment = {{ffp::kFragmentStageName, ffp::fragment_source(scene, gl)}};
     auto program = fixed_->get(fixed ? nullptr : &base, vertex, fragment, fixed ? fixed_->options() : st.options,
                                samplers, gen_vs);
     if (!program) {
@@ -170,8 +173,8 @@ Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>
     gl.texture_units = bound->texture_units;
     uint8_t units = ffp::fragment_units(scene, gl);
     ffp::VertexNeeds needs{units};
-    return cache->get(nullptr, {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}},
-                      {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}}, cache->options(), units,
+    return cache->get(nullptr, {{ffp::kVertexStageName, ffp::vertex_source(scene, gl, needs)}},
+                      {{ffp::kFragmentStageName, ffp::fragment_source(scene, gl)}}, cache->options(), units,
                       true);
 }
 

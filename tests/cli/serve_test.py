@@ -195,6 +195,16 @@ def test_http(src, glslrun, out):
     r = alone.json("POST", "/api/render", b"")
     check(not r["ok"] and "stand-in" in r["diagnostics"][0]["message"], f"no vertex shader: {r}")
     alone.stop()
+    # A fragment shader alone draws with the generated fixed-function vertex stage: traced, its text sent.
+    alone = Server(glslrun, [f"{src}/shaders/minimal.frag", files[2]], out)
+    check(alone.json("POST", "/api/render", b"")["ok"], "minimal.frag alone did not render")
+    t = alone.json("GET", "/api/trace?x=256&y=256")
+    check("error" not in t and t["fragments"] and all(f["matches_render"] for f in t["fragments"]), f"trace: {t}")
+    generated = [g for g in t["generated"] if g["name"] == "(generated) fixed-function-1.vert"]
+    check(generated and "gl_Position" in generated[0]["text"], f"no generated vertex stage: {t['generated']}")
+    check(any(s.get("where", "").startswith("(generated) fixed-function-1.vert:") for v in t["vertices"]
+              for s in v["trace"]["steps"]), "the vertices' steps are not in the generated stage")
+    alone.stop()
     res = subprocess.run([glslrun, "serve", files[0]], capture_output=True, text=True, timeout=30)
     check(res.returncode == 2 and "serve needs" in res.stderr, f"no scene: {res.returncode} {res.stderr}")
     print("serve over HTTP: page files only, Host/Origin checked, errors at their lines, time limit, clean stop")

@@ -295,6 +295,10 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
+    app.add_option("--dump-fixed-function", o.dump_fixed_function,
+                   "also write the fixed-function stages generated for the scene's draws (a stage left out, "
+                   "program = \"fixed\") to DIR as fixed-function-1.vert, fixed-function-1.frag, ...")
+        ->type_name("DIR");
     app.add_flag("--check-undefined", o.check_undefined,
                  "render on one thread with checks of the operations GLSL leaves undefined (pow of x < 0, "
                  "division by zero, an array index out of range, ...) and print each one found: file:line, "

@@ -22,6 +22,8 @@
 #include "image_output.h"
 #include "output_guard.h"
 #include "progress.h"
+#include "trace_command.h"
+#include "debug/debugger.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
 #include "raster/fused/pipeline.h"
@@ -149,9 +151,9 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
             return Error(fmt::format("-o - writes one image, and the scene draws {} colour buffers (draw_buffers); "
                                      "give a file name", buffers));
         if (o.frames > 1) return Error("-o - writes one image; --frames writes one per frame: give a file name");
-        if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty())
+        if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty() || !o.dump_fixed_function.empty())
             return Error("-o - writes the PNG to standard output: it does not combine with --stats, --bench, "
-                         "--dump-ir or --compare, which print there too");
+                         "--dump-ir, --dump-fixed-function or --compare, which print there too");
         return Ok{};
     }
     return check_image_name(output);
@@ -563,6 +565,12 @@ int render(const Inputs& in, const RenderOptions& o) {
         bench.once_s = {{"output", output_ms / 1e3}, {"llvm_compile", prog->jit_compile_seconds()}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);
     }
+    if (!o.dump_fixed_function.empty()) {
+        // A render with a probe on the draws' programs names the stages as trace does.
+        auto stages = debug::generated_stages(*prog, *prog, *scene, *fb);
+        if (!stages) return fail(stages.error());
+        if (int status = dump_fixed_function(*stages, o.dump_fixed_function, in, *scene); status != 0) return status;
+    }
     if (!o.compare.empty()) return compare_with(scene::read_framebuffer(*fb), o, scene::to_rgba8(scene->clear_color));
     return 0;
 }
@@ -666,6 +674,11 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
                               !o.error_report.empty() || in->scene.empty()))
         return fail(Error("--check-undefined renders the scene once with checks (shaders and a scene file): it does "
                           "not combine with --frames, --bench, --compare, --stats, --dump-ir or --error-report"),
+                    kToolError);
+    if (!o.dump_fixed_function.empty() &&
+        (in->scene.empty() || o.frames > 0 || o.check_undefined || !o.error_report.empty()))
+        return fail(Error("--dump-fixed-function writes the stages generated for a scene's draws while it renders "
+                          "the scene once (a scene file; not with --frames, --check-undefined or --error-report)"),
                     kToolError);
     if (o.frames == 0 && (!o.time_uniform.empty() || o.frames_per_second > 0))
         return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"), kToolError);

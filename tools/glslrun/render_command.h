@@ -15,6 +15,7 @@ struct RenderOptions {
     std::vector<std::string> defines;  // -D NAME[=VALUE]
     std::vector<std::string> include_dirs;  // -I DIR
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
+    std::string dump_fixed_function;  // --dump-fixed-function DIR: the generated stages' sources
     int tolerance = 0;
     double min_fraction = 1.0;  // --compare passes when this fraction of the covered pixels is within tolerance
     unsigned threads = 0;  // draw() worker threads; 0: one per core
