@@ -155,6 +155,20 @@ printf '%s %s %s %s\n' "$vs" base.frag green.toml b1.png "$vs" base.frag "$scene
 "$glslrun" "$vs" base.frag "$scene" -o b2_alone.png 2>/dev/null || fail "render b2 alone"
 same b2.png b2_alone.png "a batch job saw the previous job's uniform"
 
+# Jobs of one shader or none draw the missing stages with GL's fixed function, as `glslrun` does;
+# one shader's stage comes from its name.
+ff=$src/scenes/fixed_function.toml
+cp "$fs" stage.glsl
+printf '%s %s alone.png\n%s fixed.png\nstage.glsl %s x.png\n' "$fs" "$scene" "$ff" "$scene" > fixed.jobs
+expect 1 "fixed.jobs:3: error: 'stage.glsl': a job of one shader takes its stage from the name" \
+    "$glslrun" batch fixed.jobs
+grep -q "2 jobs, 2 rendered, 0 failed, 1 malformed line; 2 programs compiled" out.txt ||
+    fail "batch fixed.jobs summary: $(cat out.txt)"
+"$glslrun" "$fs" "$scene" -o alone_cli.png 2>/dev/null || fail "render minimal.frag alone"
+"$glslrun" "$ff" -o fixed_cli.png 2>/dev/null || fail "render fixed_function.toml"
+same alone.png alone_cli.png "batch: a job of a fragment shader alone differs from glslrun's image"
+same fixed.png fixed_cli.png "batch: a job without shaders differs from glslrun's image"
+
 # ---- Progress on a terminal (script gives the command one).
 if command -v script > /dev/null; then
     script -qec "$glslrun $vs $fs $scene --size 8x8 --frames 3 -o fr.png" /dev/null > tty.txt 2>&1

@@ -231,9 +231,10 @@ int batch_main(int argc, char** argv) {
     std::string jobs;
     ExecOptions exec;
     app.add_option("jobs", jobs,
-                   "a file of jobs, one `VERT FRAG SCENE OUTPUT` per line: fields separated by blanks, quoted "
-                   "as in a shell ('a b.png' or \"a b.png\") where they hold one; '#' starts a comment; the "
-                   "output's format by its name (.png, .jpg, .bmp, .tga)")
+                   "a file of jobs, one `[VERT] [FRAG] SCENE OUTPUT` per line (a shader left out: GL's fixed "
+                   "function, generated from the scene, as `glslrun` renders; one shader's stage by its name): "
+                   "fields separated by blanks, quoted as in a shell ('a b.png' or \"a b.png\") where they hold "
+                   "one; '#' starts a comment; the output's format by its name (.png, .jpg, .bmp, .tga)")
         ->required();
     app.add_option("--threads", exec.threads, "worker threads for drawing (default: one per core)")
         ->check(CLI::Range(1, 256));

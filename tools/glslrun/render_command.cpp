@@ -57,17 +57,6 @@ std::string lower(std::string text) {
     return text;
 }
 
-// A shader's stage by its name: .vert/.vs and .frag/.fs, also before .glsl
-// (a.vert.glsl); "" when the name does not say.
-std::string stage_by_name(const std::string& path) {
-    fs::path p(path);
-    std::string ext = lower(p.extension().string());
-    if (ext == ".glsl") ext = lower(p.stem().extension().string());
-    if (ext == ".vert" || ext == ".vs") return "vert";
-    if (ext == ".frag" || ext == ".fs") return "frag";
-    return {};
-}
-
 }  // namespace
 
 // What each file is, by its name; a file of no known kind is a usage error.
@@ -80,7 +69,7 @@ Result<std::vector<std::pair<std::string, std::string>>> sort_files(const std::v
     for (const std::string& path : files) {
         if (Status st = scene::check_path(path, "input"); !st) return st.error();
         std::string ext = lower(fs::path(path).extension().string());
-        std::string kind = stage_by_name(path);
+        std::string kind = scene::shader_stage_of(path);
         if (ext == ".toml") {
             if (scenes++) return Error("only one scene file may be given", path);
             kind = "scene";
@@ -645,7 +634,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     // Two images: no shader or scene in sight, so no message about them.
     bool only_images = !files.empty() && std::none_of(files.begin(), files.end(), [](const std::string& f) {
         std::string ext = lower(fs::path(f).extension().string());
-        return ext == ".toml" || !stage_by_name(f).empty() || ext == ".glsl";
+        return ext == ".toml" || !scene::shader_stage_of(f).empty() || ext == ".glsl";
     });
     if (!o.compare.empty() && only_images && o.stage.empty()) return compare_files(files, o);
     if (auto kinds = sort_files(files, o.stage); !kinds) return fail(kinds.error(), kToolError);

@@ -101,6 +101,11 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
 // buffer 0 when the scene draws to several.
 Result<Image> render_image(Program& program, const Scene& scene);
 
+// The stage a shader file's name gives, as the command line reads it: "vert"
+// for .vert and .vs, "frag" for .frag and .fs (also before .glsl:
+// a.vert.glsl), any case; "" when the name does not say.
+std::string shader_stage_of(const std::string& path);
+
 // Reads shader files; each source is named by its path, so diagnostics say
 // "path:line: error: ...", as on the command line.
 Result<std::vector<ShaderSource>> read_shader_files(const std::vector<std::string>& paths);
