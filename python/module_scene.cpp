@@ -359,7 +359,11 @@ void bind_scene(py::module_& m) {
             compile.include_dirs = include_dirs;
             // No shaders: every draw in GL's fixed function, as `glslrun scene.toml` draws it.
             const bool fixed = files.vertex.empty() && files.fragment.empty();
-            if (fixed) scene::use_fixed_function(scene);
+            if (fixed) {
+                const std::string w = scene::fixed_function_warning(scene);
+                if (!w.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 1) < 0) throw py::error_already_set();
+                scene::use_fixed_function(scene);
+            }
             Program program = take(fixed ? scene::unused_main_program()
                                          : scene::compile_files(files.vertex, files.fragment, compile));
             program.exec = exec;

@@ -198,6 +198,27 @@ void use_fixed_function(Scene& scene) {
         if (pass.vertex.empty() && pass.fragment.empty()) pass.fixed_function = true;
 }
 
+std::string fixed_function_warning(const Scene& scene) {
+    const FixedFunction& f = scene.fixed;
+    bool state = f.lighting || f.fog || f.color_sum || f.separate_specular;
+    for (int u = 0; u < 8; ++u) {
+        state = state || f.texture_env[size_t(u)].enabled;
+        for (const TexGen& g : f.texture_gen[size_t(u)]) state = state || g.mode != TexGenMode::Off;
+    }
+    for (const Object& o : scene.objects) {
+        state = state || o.color.has_value();
+        for (const VertexAttrib& a : o.mesh.attribs) state = state || a.name == "gl_Color";
+    }
+    for (const CurrentAttribute& c : scene.current_attributes) state = state || c.name == "gl_Color";
+    for (const Pass& p : scene.passes) state = state || p.fixed_function;
+    if (state) return {};
+    return fmt::format("warning: {}: no shaders were given, and the scene sets no fixed-function state, so GL's "
+                       "fixed function draws every object unlit in white: give the program's shaders (glslrun "
+                       "a.vert a.frag scene.toml), or the state ([fixed_function] lighting, [texture_env.N], "
+                       "[fog], colours: docs/scene-format.md, \"Fixed function\")",
+                       scene.path);
+}
+
 Result<Program> unused_main_program() {
     return Program::compile({{"(fixed function)", "void main() { gl_Position = ftransform(); }\n"}}, {});
 }

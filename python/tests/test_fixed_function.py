@@ -56,6 +56,8 @@ def test_one_shader_in_the_reports():
 
 
 def test_messages_say_what_to_do():
+    with pytest.warns(RuntimeWarning, match="no shaders were given, and the scene sets no fixed-function state"):
+        glslrun.render(SPOT)  # unlit white: said, with what to give
     with pytest.raises(ValueError, match=r"needs a scene file \(\.toml\).*None\) is drawn with GL's fixed function"):
         glslrun.render(FRAG)
     with pytest.raises(ValueError, match="cannot tell what 'a.glsl' is from its name: pass render"):

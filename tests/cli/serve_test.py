@@ -190,10 +190,11 @@ def test_http(src, glslrun, out):
                          timeout=30)
     check(res.returncode == 2 and "cannot listen" in res.stderr, f"a port in use: {res.returncode} {res.stderr}")
     other.stop(signal.SIGHUP)
-    # Without a vertex shader, as `glslrun` renders: the stand-in's note on a varying it does not write.
+    # Without a vertex shader, as `glslrun` renders: the note on a varying the fixed-function stage does not write.
     alone = Server(glslrun, files[1:], out)
     r = alone.json("POST", "/api/render", b"")
-    check(not r["ok"] and "stand-in" in r["diagnostics"][0]["message"], f"no vertex shader: {r}")
+    check(not r["ok"] and "the vertex stage is GL's fixed function" in r["diagnostics"][0]["message"],
+          f"no vertex shader: {r}")
     alone.stop()
     # A fragment shader alone draws with the generated fixed-function vertex stage: traced, its text sent.
     alone = Server(glslrun, [f"{src}/shaders/minimal.frag", files[2]], out)

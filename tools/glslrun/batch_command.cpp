@@ -167,7 +167,10 @@ Status run_job(const Job& job, const ExecOptions& exec, ProgramCache& programs, 
     auto scene = scene::load_scene(job.scene);
     if (!scene) return scene.error();
     // No shaders: every draw in GL's fixed function, as `glslrun scene.toml` draws it.
-    if (job.vertex.empty() && job.fragment.empty()) scene::use_fixed_function(*scene);
+    if (job.vertex.empty() && job.fragment.empty()) {
+        if (std::string w = scene::fixed_function_warning(*scene); !w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
+        scene::use_fixed_function(*scene);
+    }
     InputFiles inputs = all_inputs;
     inputs.add_scene(*scene);
     if (Status st = inputs.check_output(job.output, "the output"); !st) return st;

@@ -187,8 +187,9 @@ Status check_outputs(const InputFiles& inputs, const std::string& output, int bu
 
 }  // namespace
 
-// Without a vertex shader glslrun links a stand-in for GL's fixed-function
-// vertex stage; an error about the vertex stage or a varying says so.
+// Without a vertex shader the draws run GL's fixed-function vertex stage,
+// generated per draw (the compile here links a stand-in, for the checks);
+// an error about the vertex stage or a varying says so.
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
     CompileOptions options;
     options.defines = o.defines;
@@ -198,10 +199,10 @@ Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
     Error e = prog.error();
     for (Diagnostic& d : e.diagnostics)
         if (d.message.find("vertex") != std::string::npos || d.message.find("varying") != std::string::npos) {
-            d.message += "\n  note: no vertex shader was given, so glslrun linked a stand-in for GL's fixed-function "
-                         "vertex stage (gl_Position = ftransform(), gl_FrontColor = gl_Color, gl_TexCoord[i] = "
-                         "gl_TextureMatrix[i] * gl_MultiTexCoordi, gl_FogFragCoord); a varying of your own needs a "
-                         ".vert file that writes it";
+            d.message += "\n  note: no vertex shader was given, so the vertex stage is GL's fixed function, "
+                         "generated from the scene's state for each draw: it writes gl_Position, gl_FrontColor and "
+                         "gl_BackColor, the secondary colours, gl_TexCoord[] and gl_FogFragCoord; a varying of your "
+                         "own needs a .vert file that writes it";
             break;
         }
     return e;
@@ -529,7 +530,10 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (o.check_undefined) return run_check_undefined(in, o, *scene, *fb, writes_image ? output : "");
     // No shaders: every draw in GL's fixed function.
     const bool fixed = in.vertex.empty() && in.fragment.empty();
-    if (fixed) scene::use_fixed_function(*scene);
+    if (fixed) {
+        if (std::string w = scene::fixed_function_warning(*scene); !w.empty()) fmt::print(stderr, "{}\n", w);
+        scene::use_fixed_function(*scene);
+    }
     auto prog = fixed ? scene::unused_main_program() : compile_program(in, o);
     if (!prog) return fail(prog.error());
     set_exec_options(*prog, o);  // before the passes' programs copy them

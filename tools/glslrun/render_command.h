@@ -52,7 +52,7 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
 Status check_image_name(const std::string& output);
 
 // The program of `in`'s shaders with o.defines; without a vertex shader, an
-// error about a varying notes the fixed-function stand-in that was linked.
+// error about a varying notes that the vertex stage is GL's fixed function.
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o);
 
 // What --stats prints: counts, time per stage, the built-in state read (matrices as rows), the textures.

@@ -113,7 +113,10 @@ int run_trace(const TraceOptions& o) {
     compile.include_dirs = o.include_dirs;
     if (o.check_undefined) return check_undefined(*in, *scene, o.precision, compile);
     // No shaders: every draw in GL's fixed function, as `glslrun scene.toml` draws it.
-    if (fixed) scene::use_fixed_function(*scene);
+    if (fixed) {
+        if (std::string w = scene::fixed_function_warning(*scene); !w.empty()) fmt::print(stderr, "{}\n", w);
+        scene::use_fixed_function(*scene);
+    }
     auto program = fixed ? scene::unused_main_program() : Program::compile(in->vertex, in->fragment, compile);
     if (!program) return fail(program.error());
     program->exec.precision = o.precision;

@@ -75,6 +75,12 @@ private:
 // pass of every object (with their states); passes that would draw with
 // the command line's program become fixed ones.
 void use_fixed_function(Scene& scene);
+// What a scene drawn without shaders (`glslrun scene.toml`) would show as
+// nothing but GL's defaults: no lighting, fog, colour sum, texture unit or
+// texgen on, no colour of its own (an object's, a mesh's, a [current] one)
+// and no `program = "fixed"` pass: every object unlit white. A warning that
+// says what to give, or "" when the scene sets fixed-function state.
+std::string fixed_function_warning(const Scene& scene);
 // The program `glslrun scene.toml` hands ScenePrograms after
 // use_fixed_function: no pass draws with it.
 Result<Program> unused_main_program();
