@@ -206,6 +206,13 @@ def test_http(src, glslrun, out):
     check(any(s.get("where", "").startswith("(generated) fixed-function-1.vert:") for v in t["vertices"]
               for s in v["trace"]["steps"]), "the vertices' steps are not in the generated stage")
     alone.stop()
+    # A vertex shader alone: the fragment stage is generated, and traced.
+    alone = Server(glslrun, [files[0], files[2]], out)
+    check(alone.json("POST", "/api/render", b"")["ok"], "spot_pix_fixed.vert alone did not render")
+    t = alone.json("GET", "/api/trace?x=256&y=256")
+    check("error" not in t and any(s.get("where", "").startswith("(generated) fixed-function-1.frag:")
+                                   for s in t["fragments"][0]["trace"]["steps"]), f"vertex alone: {t}")
+    alone.stop()
     res = subprocess.run([glslrun, "serve", files[0]], capture_output=True, text=True, timeout=30)
     check(res.returncode == 2 and "serve needs" in res.stderr, f"no scene: {res.returncode} {res.stderr}")
     print("serve over HTTP: page files only, Host/Origin checked, errors at their lines, time limit, clean stop")
