@@ -135,6 +135,7 @@ private:
         llvm::AllocaInst *last_prim, *last_nan;
     };
     void store_inputs(const InputsState& state, llvm::Value* index, const Quad& q);
+    llvm::Value* primitive_nan(const InputsState& state, llvm::Value* prim);
     // A quad's depth and colour values to store.
     struct QuadValues {
         llvm::Value* z;
