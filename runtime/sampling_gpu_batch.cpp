@@ -1,11 +1,13 @@
 // The batched sampler of Fast's GPU rules (see sampling_gpu_batch.h). The
 // steps of gpu::sample_complete() with each one's texture state hoisted out
-// of a loop over all kLanes lanes: lambda (one per quad), the level(s) and
-// filter, the wrapped indices and 8-bit weights per axis; then each lane's
-// blends of 16-bit texels, four channels in one register, by the very
-// functions the per-lane path calls. Lanes outside the mask compute too on
-// whatever their registers hold (every step is safe for any float) but are
-// not stored.
+// of a loop over all kLanes lanes: the cube face, lambda (one per quad), the
+// level(s) and filter, the wrapped indices and 8-bit weights per axis, then
+// the 16-bit blends: eight lanes at a time, channel by channel, under AVX2
+// where no texel can be the border's (exact integers in float, so any order
+// of the sums gives gpu::linear16()'s values), else lane by lane through
+// the very functions the per-lane path calls. Lanes outside the mask
+// compute too on whatever their registers hold (every step is safe for any
+// float) but are not stored.
 #include "runtime/sampling_gpu_batch.h"
 
 #include "runtime/interp_kernels.h"
@@ -46,28 +48,26 @@ struct GpuLanes {
 void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
     const SamplerState& st = texture.sampler;
     float* lambda = l.lambda;
-    if (lk.implicit && lod_matters(st) && texture.target() == TextureTarget::Cube) {
-        // On the face each lane's direction selects: rho_of() lane by lane,
-        // with its quad's first lane's derivatives.
-        for (int i = 0; i < kLanes; ++i) {
-            const int q = i & ~3;
-            const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
-            const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]), dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
-            lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
-        }
-        if (lk.bias)
-            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
-    } else if (lk.implicit && lod_matters(st)) {
-        const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
-        const int dims = texture_dims(texture.target());
-        const float* __restrict dxs = lk.ddx[0];
-        const float* __restrict dxt = lk.ddx[1];
-        const float* __restrict dys = lk.ddy[0];
-        const float* __restrict dyt = lk.ddy[1];
-        // One lambda_base per quad (lanes 4q..4q+3), from its first lane's derivatives.
-        for (int q = 0; q < kLanes; q += 4) {
-            const float base = gpu::lambda_of_rho(gpu_rho({dxs[q], dxt[q], 0.0f}, {dys[q], dyt[q], 0.0f}, size, dims));
-            for (int i = q; i < q + 4; ++i) lambda[i] = base;
+    if (lk.implicit && lod_matters(st)) {
+        if (texture.target() == TextureTarget::Cube) {
+            // On the face each lane's direction selects: rho_of() lane by lane,
+            // with its quad's first lane's derivatives.
+            for (int i = 0; i < kLanes; ++i) {
+                const int q = i & ~3;
+                const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
+                const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]);
+                const glm::vec3 dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
+                lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
+            }
+        } else {
+            const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
+            const int dims = texture_dims(texture.target());
+            // One lambda_base per quad (lanes 4q..4q+3), from its first lane's derivatives.
+            for (int q = 0; q < kLanes; q += 4) {
+                const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], 0.0f), dy(lk.ddy[0][q], lk.ddy[1][q], 0.0f);
+                const float base = gpu::lambda_of_rho(gpu_rho(dx, dy, size, dims));
+                for (int i = q; i < q + 4; ++i) lambda[i] = base;
+            }
         }
         if (lk.bias)
             for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
