@@ -267,13 +267,22 @@ GLSLRUN_AVX2 bool linear_axis8(const float* __restrict s, const int* __restrict 
 // The bilinear blends of lanes g..g+7 (none on the border): linear_lane()'s
 // products and sums, exact integers in float, so the same values in any
 // order; the rounding (sum + 128) >> 8 as gpu::round_blend().
-GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const float (*w)[kLanes], int g,
-                            float (*out)[kLanes]) {
+// `on_border` (null where no texel can be the border's): per corner, -1
+// where the lane's texel is the border's, whose 16-bit value `border` is
+// then taken instead of the one at offset 0.
+GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const float (*w)[kLanes],
+                            const int (*on_border)[kLanes], const float* border, int g, float (*out)[kLanes]) {
     __m256 sum[4];
     #pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
         __m256 t[4];
         load16x8(l.texels, at[k], g, t);
+        if (on_border) {
+            const __m256i lanes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&on_border[k][g]));
+            const __m256 take = _mm256_castsi256_ps(lanes);
+            #pragma GCC unroll 4
+            for (int c = 0; c < 4; ++c) t[c] = _mm256_blendv_ps(t[c], _mm256_set1_ps(border[c]), take);
+        }
         const __m256 weight = _mm256_loadu_ps(&w[k][g]);
         #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c)
@@ -339,9 +348,9 @@ void lane_images(const Texture& texture, GpuLanes& l, const int* level, const in
 }
 
 // gpu::level16() of every lane in `take` on its image (l.texels, set by
-// lane_images() or one_image()), as 16-bit values into out[c][i]; `linear` is the same for all of them (the caller
-// splits). Eight lanes at a time where the build has AVX2 and no texel can
-// be the border's; the others lane by lane.
+// lane_images() or one_image()), as 16-bit values into out[c][i]; `linear`
+// is the same for all of them (the caller splits). LINEAR eight lanes at a
+// time where the build has AVX2; the others lane by lane.
 template <bool kAvx2>
 void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* take, bool linear, int dims,
                   float (*out)[kLanes]) {
@@ -356,17 +365,25 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
     const Lookup proto{&texture, &st, 0, dims, glm::vec3(0.0f), false, 0.0f};
     const Texel border = gpu::unorm16(texel_of(border_texel(proto)));
     const bool border_free = !may_border(st.wrap_s) && (dims == 1 || !may_border(st.wrap_t));
+    const glm::vec4 border16 = vec_of(border);
 #if defined(__x86_64__) && defined(__GNUC__)
     if constexpr (kAvx2) {
-        if (linear && border_free) {
-            alignas(32) int at[4][kLanes];
+        if (linear) {
+            alignas(32) int at[4][kLanes], on_border[4][kLanes];
             alignas(32) float w[4][kLanes];
             for (int i = 0; i < kLanes; ++i) {
-                const int row0 = l.y0[i] * l.width[i], row1 = l.y1[i] * l.width[i];  // below 2^28: no overflow
-                at[0][i] = row0 + l.x0[i];
-                at[1][i] = row0 + l.x1[i];
-                at[2][i] = row1 + l.x0[i];
-                at[3][i] = row1 + l.x1[i];
+                // kBorder indices (the only negative ones) read offset 0 and take the border's
+                // value (blend16x8()); i >> 31 is -1 for them, 0 for the others.
+                const int x0 = l.x0[i], x1 = l.x1[i], y0 = l.y0[i], y1 = l.y1[i], width = l.width[i];
+                const int b00 = (x0 | y0) >> 31, b01 = (x1 | y0) >> 31, b10 = (x0 | y1) >> 31, b11 = (x1 | y1) >> 31;
+                on_border[0][i] = b00;
+                on_border[1][i] = b01;
+                on_border[2][i] = b10;
+                on_border[3][i] = b11;
+                at[0][i] = (y0 * width + x0) & ~b00;  // below 2^28: no overflow
+                at[1][i] = (y0 * width + x1) & ~b01;
+                at[2][i] = (y1 * width + x0) & ~b10;
+                at[3][i] = (y1 * width + x1) & ~b11;
                 const int wx = l.wx[i], wy = l.wy[i], w11 = (wx * wy + 128) >> 8;
                 w[0][i] = float(256 - wx - wy + w11);
                 w[1][i] = float(wx - w11);
@@ -378,7 +395,7 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
                 int any = 0;
                 for (int i = g; i < g + 8; ++i) any |= take[i];
                 // Skipped lanes blend too, on indices in their images, and are not kept.
-                if (any) blend16x8(l, at, w, g, out);
+                if (any) blend16x8(l, at, w, border_free ? nullptr : on_border, &border16.x, g, out);
             }
             return;
         }
