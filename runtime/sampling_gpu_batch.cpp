@@ -294,6 +294,18 @@ GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const fl
         _mm256_storeu_ps(&out[c][g],
                          _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum[c], bias), scale))));
 }
+// NEAREST's texels of lanes g..g+7 (at[0]; border lanes as blend16x8()'s)
+// as 16-bit values: gpu::unorm16() of the texel, as load16x8() gives it.
+GLSLRUN_AVX2 void nearest16x8(const GpuLanes& l, const int (*at)[kLanes], const int (*on_border)[kLanes],
+                              const float* border, int g, float (*out)[kLanes]) {
+    __m256 t[4];
+    load16x8(l.texels, at[0], g, t);
+    const __m256i lanes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&on_border[0][g]));
+    const __m256 take = _mm256_castsi256_ps(lanes);
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(t[c], _mm256_set1_ps(border[c]), take));
+}
+
 // store_unorm16() eight lanes at a time.
 GLSLRUN_AVX2 void store_unorm16x8(const float* v, const int* active, float* out) {
     const __m256 scale = _mm256_set1_ps(65535.0f);
@@ -349,8 +361,9 @@ void lane_images(const Texture& texture, GpuLanes& l, const int* level, const in
 
 // gpu::level16() of every lane in `take` on its image (l.texels, set by
 // lane_images() or one_image()), as 16-bit values into out[c][i]; `linear`
-// is the same for all of them (the caller splits). LINEAR eight lanes at a
-// time where the build has AVX2; the others lane by lane.
+// is the same for all of them (the caller splits). Eight lanes at a time
+// where the build has AVX2, else lane by lane; skipped lanes of a group
+// fetch too (their indices are in their images) and are written.
 template <bool kAvx2>
 void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* take, bool linear, int dims,
                   float (*out)[kLanes]) {
@@ -368,7 +381,21 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
     const glm::vec4 border16 = vec_of(border);
 #if defined(__x86_64__) && defined(__GNUC__)
     if constexpr (kAvx2) {
-        if (linear) {
+        if (!linear) {
+            alignas(32) int at[1][kLanes], on_border[1][kLanes];
+            for (int i = 0; i < kLanes; ++i) {
+                const int x = l.x0[i], y = l.y0[i], outside = (x | y) >> 31;  // -1 for kBorder
+                on_border[0][i] = outside;
+                at[0][i] = (y * l.width[i] + x) & ~outside;
+            }
+            for (int g = 0; g < kLanes; g += 8) {
+                int any = 0;
+                for (int i = g; i < g + 8; ++i) any |= take[i];
+                if (any) nearest16x8(l, at, on_border, &border16.x, g, out);
+            }
+            return;
+        }
+        {
             alignas(32) int at[4][kLanes], on_border[4][kLanes];
             alignas(32) float w[4][kLanes];
             for (int i = 0; i < kLanes; ++i) {
@@ -408,10 +435,7 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
 }
 
 // The level pass of `level` for the lanes of `take`, split by filter where
-// the lanes differ (magnified and minified lanes of one batch). Where they
-// do, a lane of one filter keeps its result: the other filter's pass
-// writes only its own lanes (the eight-lane blends write whole groups, so
-// they go first).
+// the lanes differ (magnified and minified lanes of one batch).
 template <bool kAvx2>
 void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* level, const int* take,
                    int dims, float (*out)[kLanes]) {
@@ -424,8 +448,14 @@ void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, c
         any[0] |= by_filter[0][i];
     }
     lane_images(texture, l, level, take);
-    if (any[1]) sample_level<kAvx2>(texture, l, lk, by_filter[1], true, dims, out);
-    if (any[0]) sample_level<kAvx2>(texture, l, lk, by_filter[0], false, dims, out);
+    if (!(any[0] & any[1])) return sample_level<kAvx2>(texture, l, lk, take, any[1] != 0, dims, out);
+    // Both filters: each pass writes whole groups of lanes, so the second goes
+    // to its own arrays and its lanes are merged.
+    alignas(32) float nearest[4][kLanes];
+    sample_level<kAvx2>(texture, l, lk, by_filter[1], true, dims, out);
+    sample_level<kAvx2>(texture, l, lk, by_filter[0], false, dims, nearest);
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) out[c][i] = by_filter[0][i] ? nearest[c][i] : out[c][i];
 }
 
 // out[i] = v[i] / 65535 (gpu::over_unorm16()) for the active lanes, four
