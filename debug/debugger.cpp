@@ -16,6 +16,7 @@
 #include "raster/triangle.h"
 #include "runtime/program_state.h"
 #include "glslrun/scene/render.h"
+#include "scene/ffp.h"
 
 namespace glslrun::debug {
 
@@ -64,7 +65,7 @@ using Words = std::vector<uint32_t>;
 
 // What a draw used: the replays need the same uniforms, textures and vertices.
 struct DrawSnapshot {
-    size_t pass = 0;
+    const PassProbe::PassPrograms* programs = nullptr;  // stable: PassProbe keeps them for the render
     Words uniforms;
     GLState gl;
     std::vector<VertexAttrib> attribs;
@@ -139,7 +140,9 @@ InvocationTrace replay(const Program& debug, const ir::Shader& shader, const Dra
 class Probe : public PassProbe {
 public:
     void begin_draw(const raster::ProbeDraw& d) override {
-        draws_.push_back({pass, state_of(*current().program).uniforms, d.gl, d.attribs, d.vertex_count, d.shaded});
+        enter_draw(d);
+        draws_.push_back({&current(), state_of(*current().program).uniforms, d.gl, d.attribs, d.vertex_count,
+                          d.shaded});
     }
     uint32_t draw_index() const { return uint32_t(draws_.size() - 1); }
     const std::vector<DrawSnapshot>& draws() const { return draws_; }
@@ -399,18 +402,6 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
                     const scene::Scene& scene, int height, PassProbe& probe) {
     auto programs = scene::ScenePrograms::compile(program, scene);
     if (!programs) return programs.error();
-    // A draw with a generated fixed-function stage runs a program the
-    // debugger has no twin of (its outputs differ from the pass program's).
-    for (size_t i = 0; i < programs->size(); ++i) {
-        const auto& st = state_of(programs->of_pass(i));
-        const bool fixed = (!scene.passes.empty() && scene.passes[i].fixed_function) ||
-                           st.vertex_sources.empty() != st.fragment_sources.empty();
-        if (fixed)
-            return Error(fmt::format("{} draws with GL's fixed function for a stage, which the shader debugger "
-                                     "does not trace: give both a vertex and a fragment shader",
-                                     scene.passes.empty() ? std::string("the program")
-                                                          : fmt::format("pass '{}'", scene.passes[i].name)));
-    }
     probe.scene_programs = std::move(*programs);
     probe.passes.clear();
     for (size_t i = 0; i < probe.scene_programs->size(); ++i) {
@@ -423,7 +414,8 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
                 p.height = scene.targets[size_t(pass.target)].height;
                 p.target = scene.targets[size_t(pass.target)].name;
             }
-            if (!pass.vertex.empty()) {
+            // A pass missing a stage draws programs with a generated one: their twins come at their draws.
+            if (!pass.vertex.empty() && !pass.fragment.empty()) {
                 auto twin = debug_twin(pass, debug);
                 if (!twin) return twin.error();
                 probe.debug_programs.push_back(*twin);
@@ -442,7 +434,61 @@ Status attach_probe(Program& program, const Program& debug, const std::string& p
     return Ok{};
 }
 
+// The name a trace gives the generated stage `text`: numbered per stage in
+// the order first drawn, as --dump-fixed-function names its files.
+std::string generated_name(std::vector<GeneratedStage>& generated, const std::string& text, bool vertex) {
+    int count = 0;
+    for (const GeneratedStage& g : generated) {
+        if (g.vertex == vertex && g.text == text) return g.name;
+        count += g.vertex == vertex;
+    }
+    std::string file = fmt::format("fixed-function-{}.{}", count + 1, vertex ? "vert" : "frag");
+    generated.push_back({"(generated) " + file, file, text, vertex});
+    return generated.back().name;
+}
+
+bool is_generated(const std::vector<ShaderSource>& sources, const char* name) {
+    return sources.size() == 1 && sources[0].name == name;
+}
+
 }  // namespace
+
+void PassProbe::enter_draw(const raster::ProbeDraw& draw) {
+    current_ = &passes[pass];
+    if (!draw.program || failed) return;
+    const Program& drawn = *draw.program;
+    const Program::State& st = state_of(drawn);
+    const bool gen_vs = is_generated(st.vertex_sources, scene::ffp::kVertexStageName);
+    const bool gen_fs = is_generated(st.fragment_sources, scene::ffp::kFragmentStageName);
+    if (!gen_vs && !gen_fs) return;
+    auto found = drawn_.find({pass, &drawn});
+    if (found == drawn_.end()) {
+        // The twin compiles the generated sources under the names the trace shows.
+        std::vector<ShaderSource> vertex = st.vertex_sources, fragment = st.fragment_sources;
+        if (gen_vs) vertex[0].name = generated_name(generated, vertex[0].text, true);
+        if (gen_fs) fragment[0].name = generated_name(generated, fragment[0].text, false);
+        const Program& pass_debug = *passes[pass].debug;
+        auto twin = compile_for_debugging(vertex, fragment, pass_debug.exec.precision, st.options);
+        if (!twin) {
+            Error e("the debugging program of a generated fixed-function stage does not compile");
+            for (const Diagnostic& d : twin.error().diagnostics) e.diagnostics.push_back(d);
+            failed = std::move(e);
+            return;
+        }
+        if (state_of(*twin).ir.uniform_words != st.ir.uniform_words) {
+            failed = Error("internal error: a generated stage's debugging program's uniforms differ");
+            return;
+        }
+        twin->exec = pass_debug.exec;
+        debug_programs.push_back(std::make_shared<Program>(std::move(*twin)));
+        PassPrograms p = passes[pass];
+        p.program = &drawn;
+        p.debug = debug_programs.back().get();
+        p.program_name = sources_name(vertex, fragment);
+        found = drawn_.emplace(std::pair{pass, &drawn}, std::move(p)).first;
+    }
+    current_ = &found->second;
+}
 
 Status render_with_probe(Program& program, const Program& debug, const std::string& program_name,
                          const scene::Scene& scene, Framebuffer& fb, PassProbe& probe) {
@@ -452,6 +498,7 @@ Status render_with_probe(Program& program, const Program& debug, const std::stri
     if (st) {
         auto stats = scene::render_scene(*probe.scene_programs, scene, fb);
         if (!stats) st = stats.error();
+        if (st && probe.failed) st = *probe.failed;
     }
     if (probe.scene_programs)
         for (size_t i = 0; i < probe.scene_programs->size(); ++i)
@@ -512,23 +559,25 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
         add_lines(out.source_lines, pass.fragment);
     }
     if (Status st = render_with_probe(program, debug, name, scene, fb, probe); !st) return st.error();
+    out.generated = probe.generated;
+    for (const GeneratedStage& g : out.generated) add_lines(out.source_lines, {{g.name, g.text}});
     const auto& draws = probe.draws();
     if (request.pixel)
         for (uint32_t d = 0; d < draws.size(); ++d)
-            if (probe.passes[draws[d].pass].target == request.target && outside_scissor(draws[d].gl, out.x, wy))
+            if (draws[d].programs->target == request.target && outside_scissor(draws[d].gl, out.x, wy))
                 out.scissored.push_back(d);
     std::optional<FragmentTrace> visible;  // the last one written: the pixel shows it
     size_t steps_left = InvocationTrace::kMaxTraceSteps;
     for (Capture& c : probe.captures_) {
         const DrawSnapshot& draw = draws[c.info.draw];
-        out.fragments.push_back(replay_fragment(*probe.passes[draw.pass].debug, draw, c, steps_left));
+        out.fragments.push_back(replay_fragment(*draw.programs->debug, draw, c, steps_left));
         if (Status st = check_cancel(debug); !st) return st.error();
         if (out.fragments.back().outcome == FragmentTrace::Outcome::Written) visible = out.fragments.back();
     }
     if (visible)
         for (uint32_t v : visible->vertices) {
             const DrawSnapshot& draw = draws[visible->draw];
-            auto vt = replay_vertex(probe.passes[draw.pass], draw, visible->draw, v, steps_left);
+            auto vt = replay_vertex(*draw.programs, draw, visible->draw, v, steps_left);
             if (!vt) return vt.error();
             if (Status st = check_cancel(debug); !st) return st.error();
             out.vertices.push_back(std::move(*vt));
@@ -537,7 +586,7 @@ Result<PixelTrace> trace(Program& program, const Program& debug, const scene::Sc
         if (request.draw >= draws.size())
             return Error(fmt::format("draw {} does not exist ({} draws)", request.draw, draws.size()));
         const DrawSnapshot& draw = draws[request.draw];
-        auto vt = replay_vertex(probe.passes[draw.pass], draw, request.draw, *request.vertex, steps_left);
+        auto vt = replay_vertex(*draw.programs, draw, request.draw, *request.vertex, steps_left);
         if (!vt) return vt.error();
         if (Status st = check_cancel(debug); !st) return st.error();
         out.vertices.push_back(std::move(*vt));

@@ -94,6 +94,15 @@ struct VertexTrace {
     InvocationTrace trace;
 };
 
+// A fixed-function stage generated as GLSL 1.10 for some draws' state
+// (glslrun/scene/render.h): its name in the traces, and its source.
+struct GeneratedStage {
+    std::string name;  // "(generated) fixed-function-1.vert"
+    std::string file;  // "fixed-function-1.vert": the file --dump-fixed-function writes
+    std::string text;
+    bool vertex = true;
+};
+
 struct PixelTrace {
     int x = 0, y = 0;                      // image coordinates, top-left origin
     std::string target;                    // the render target traced (TraceRequest::target); empty: the image
@@ -102,6 +111,7 @@ struct PixelTrace {
     std::vector<VertexTrace> vertices;     // of the fragments' primitives, or --vertex
     // Every program's source lines by file name (ShaderSource::name): the text of each step's line.
     std::map<std::string, std::vector<std::string>> source_lines;
+    std::vector<GeneratedStage> generated;  // the fixed-function stages the scene's draws ran
 };
 
 // Every fragment at each of `pixels` (image coordinates, top-left origin)
@@ -164,10 +174,25 @@ public:
     };
     std::vector<PassPrograms> passes;  // one per pass; one in a scene without passes
     size_t pass = 0;
-    const PassPrograms& current() const { return passes[pass]; }
+    // The programs of the draw under way (begin_draw calls enter_draw first).
+    const PassPrograms& current() const { return current_ ? *current_ : passes[pass]; }
     // The programs compiled for the passes, kept for the replays after the render.
     std::optional<scene::ScenePrograms> scene_programs;
     std::vector<std::shared_ptr<Program>> debug_programs;
+    // The generated fixed-function stages the draws ran, in the order first
+    // drawn, named as the traces name them.
+    std::vector<GeneratedStage> generated;
+    // A twin that did not compile: the render's result is this error.
+    std::optional<Error> failed;
+
+protected:
+    // Makes current() the programs of `draw`: its pass's, or for a draw with
+    // a generated stage, that program and a twin of it (made at its first draw).
+    void enter_draw(const raster::ProbeDraw& draw);
+
+private:
+    const PassPrograms* current_ = nullptr;
+    std::map<std::pair<size_t, const Program*>, PassPrograms> drawn_;  // by pass: drawn programs with a generated stage
 };
 
 // Renders the scene on one thread with `probe` watching every draw of every
@@ -175,6 +200,16 @@ public:
 // compiled here. `program_name` names `program` in the pixel history.
 Status render_with_probe(Program& program, const Program& debug, const std::string& program_name,
                          const scene::Scene& scene, Framebuffer& fb, PassProbe& probe);
+
+// The fixed-function stages generated for the scene's draws, as a trace
+// names them (renders the scene once, on one thread).
+Result<std::vector<GeneratedStage>> generated_stages(Program& program, const Program& debug,
+                                                     const scene::Scene& scene, Framebuffer& fb);
+// Writes each stage to dir/stage.file; returns the paths written.
+Result<std::vector<std::string>> write_generated_stages(const std::vector<GeneratedStage>& stages,
+                                                        const std::string& dir);
+// What the text trace says of the generated stages it names.
+std::string describe_generated(const std::vector<GeneratedStage>& stages);
 
 std::string format_text(const PixelTrace& t);
 std::string format_json(const PixelTrace& t);

@@ -23,14 +23,15 @@ public:
     explicit NanProbe(bool colour_range) : colour_range_(colour_range) {}
 
     void begin_draw(const raster::ProbeDraw& d) override {
+        enter_draw(d);
         ++draw_;
         uniforms_ = state_of(*current().program).uniforms;
         gl_ = d.gl;
-        if (!report.nan && !stopped) check_vertices(d);
+        if (!report.nan && !stopped && !failed) check_vertices(d);
     }
 
     void before_run(const raster::ProbeBatch& b) override {
-        if (report.nan || stopped) return;
+        if (report.nan || stopped || failed) return;
         const Program &program = *current().program, &debug = *current().debug;
         const ir::Shader& fs = state_of(debug).ir.fragment;
         ShaderNames names(fs, state_of(debug).ir);

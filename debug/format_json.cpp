@@ -200,11 +200,17 @@ std::string format_json(const PixelTrace& t) {
                             {"vertex", v.vertex},
                             {"matches_render", v.matches_render},
                             {"trace", invocation(v.trace, t.source_lines)}});
+    // The fixed-function stages generated for the draws, whole: a step's file may be one of them.
+    Json generated = Json::array();
+    for (const GeneratedStage& g : t.generated)
+        generated.push_back({{"name", g.name}, {"file", g.file}, {"stage", g.vertex ? "vertex" : "fragment"},
+                             {"text", g.text}});
     Json out = {{"pixel", {t.x, t.y}},
                 {"target", t.target.empty() ? Json(nullptr) : Json(t.target)},
                 {"scissored", t.scissored},
                 {"fragments", std::move(fragments)},
-                {"vertices", std::move(vertices)}};
+                {"vertices", std::move(vertices)},
+                {"generated", std::move(generated)}};
     // Invalid UTF-8 in a shader's text is replaced, not thrown on.
     return out.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n";
 }

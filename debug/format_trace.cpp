@@ -153,8 +153,11 @@ std::string framebuffer_text(const FragmentTrace& f) {
 
 
 // " (pass 'light', program a.vert + a.frag)"; nothing in a scene without passes.
+// Without passes the program is the command line's, unless a stage of it is generated.
 std::string pass_text(const std::string& pass, const std::string& program) {
-    return pass.empty() ? "" : fmt::format(" (pass '{}', program {})", pass, program);
+    if (pass.empty())
+        return program.find("(generated)") == std::string::npos ? "" : fmt::format(" (program {})", program);
+    return fmt::format(" (pass '{}', program {})", pass, program);
 }
 
 // "name = value" at `pad`; a matrix as rows under its name, as --stats prints it.
@@ -305,6 +308,7 @@ std::string format_text(const PixelTrace& t) {
         text_invocation(out, v.trace, t.source_lines);
         if (!v.matches_render) out += "  WARNING: the replay's outputs differ from the render's\n";
     }
+    if (!t.generated.empty()) out += "\n" + describe_generated(t.generated);
     return out;
 }
 

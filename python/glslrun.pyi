@@ -73,8 +73,8 @@ class Scene:
 class Program:
     @staticmethod
     def compile(
-        vertex: Union[str, Sequence[tuple[str, str]]],
-        fragment: Union[str, Sequence[tuple[str, str]]],
+        vertex: Union[str, Sequence[tuple[str, str]], None],
+        fragment: Union[str, Sequence[tuple[str, str]], None],
         default_version: int = 110,
         optimize: bool = True,
         *,
@@ -82,8 +82,8 @@ class Program:
     ) -> Program: ...
     @staticmethod
     def from_files(
-        vertex: Union[str, Sequence[str]],
-        fragment: Union[str, Sequence[str]],
+        vertex: Union[str, Sequence[str], None],
+        fragment: Union[str, Sequence[str], None],
         default_version: int = 110,
         optimize: bool = True,
         *,
@@ -115,9 +115,9 @@ class Program:
     ) -> _Image: ...
 
 def render(
-    vertex: str,
-    fragment: str,
-    scene: str,
+    vertex: str | None = None,
+    fragment: str | None = None,
+    scene: str | None = None,
     threads: int = 0,
     precision: str = "precise",
     *,
@@ -133,12 +133,18 @@ def read_png(path: str) -> _Image: ...
 def write_png(image: _Image, path: str) -> None: ...
 def compare_images(reference: _Image, actual: _Image, tolerance: int = 1) -> dict[str, Any]: ...
 def error_report(
-    vertex: str, fragment: str, scene: str, mode: str = "fast", threads: int = 0, *, include_dirs: Sequence[str] = ...
+    vertex: str | None = None,
+    fragment: str | None = None,
+    scene: str | None = None,
+    mode: str = "fast",
+    threads: int = 0,
+    *,
+    include_dirs: Sequence[str] = ...,
 ) -> dict[str, Any]: ...
 def check_undefined(
-    vertex: str,
-    fragment: str,
-    scene: str,
+    vertex: str | None = None,
+    fragment: str | None = None,
+    scene: str | None = None,
     precision: str = "precise",
     *,
     backend: str = "auto",

@@ -175,6 +175,7 @@ py::dict run_batch(PyProgram& program, const py::dict& inputs, uint32_t count, c
 }
 
 std::vector<ShaderSource> sources(const py::object& texts, const char* default_name) {
+    if (texts.is_none()) return {};  // the stage is GL's fixed function
     if (py::isinstance<py::str>(texts)) return {{default_name, py::cast<std::string>(texts)}};
     std::vector<ShaderSource> out;
     for (auto item : texts) {
@@ -192,9 +193,21 @@ CompileOptions compile_options(int default_version, bool optimize, const std::ve
     return o;
 }
 
+}  // namespace
+
 std::vector<std::string> paths(const py::object& p) {
+    if (p.is_none()) return {};  // the stage is GL's fixed function
     if (py::isinstance<py::str>(p)) return {py::cast<std::string>(p)};
     return py::cast<std::vector<std::string>>(p);
+}
+
+namespace {
+
+// A program of one shader draws the other stage with GL's fixed function; one of none draws nothing.
+void check_some_shader(const py::object& vertex, const py::object& fragment) {
+    if (vertex.is_none() && fragment.is_none())
+        throw py::value_error("a Program needs a vertex or a fragment shader (None for one stage: GL's fixed "
+                              "function); a scene drawn with GL's fixed function alone: glslrun.render(\"scene.toml\")");
 }
 
 void bind_program(py::module_& m) {
@@ -203,23 +216,27 @@ void bind_program(py::module_& m) {
             "compile",
             [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize,
                const std::vector<std::string>& include_dirs) {
+                check_some_shader(vertex, fragment);
                 return PyProgram(take(Program::compile(sources(vertex, "shader.vert"), sources(fragment, "shader.frag"),
                                                        compile_options(default_version, optimize, include_dirs))));
             },
             py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
             py::kw_only(), py::arg("include_dirs") = std::vector<std::string>{},
-            "Compiles GLSL text: a string per stage, or a list of (name, text) pairs. `include_dirs`: where "
+            "Compiles GLSL text: a string per stage, or a list of (name, text) pairs; None for a stage that GL's "
+            "fixed function draws (generated from the scene at each render). `include_dirs`: where "
             "`#include` looks after the including source's own directory (as the command line's -I).")
         .def_static(
             "from_files",
             [](const py::object& vertex, const py::object& fragment, int default_version, bool optimize,
                const std::vector<std::string>& include_dirs) {
+                check_some_shader(vertex, fragment);
                 return PyProgram(take(scene::compile_files(paths(vertex), paths(fragment),
                                                            compile_options(default_version, optimize, include_dirs))));
             },
             py::arg("vertex"), py::arg("fragment"), py::arg("default_version") = 110, py::arg("optimize") = true,
             py::kw_only(), py::arg("include_dirs") = std::vector<std::string>{},
-            "Compiles shader files: a path per stage, or a list of paths. `include_dirs`: as the command line's "
+            "Compiles shader files: a path per stage, or a list of paths; None for a stage that GL's fixed "
+            "function draws. `include_dirs`: as the command line's "
             "-I.")
         .def("set_uniform", &set_uniform, py::arg("name"), py::arg("value"),
              "Sets a uniform from a number, a sequence or a numpy array (glUniform semantics).")

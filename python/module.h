@@ -39,6 +39,9 @@ struct PyProgram : Program {
     std::vector<scene::UniformSetting> user_uniforms;
 };
 
+// A path, or a list of paths, of a stage's shader files; None: none (GL's fixed function).
+std::vector<std::string> paths(const py::object& p);
+
 // {name: number, sequence or array} as uniform settings (a float uniform
 // takes any number, an int one whole numbers); `what` names them in errors.
 std::vector<scene::UniformSetting> uniform_settings(const py::object& uniforms, const std::string& what);

@@ -107,12 +107,64 @@ void rectangle_options(const std::optional<std::string>& wrap, std::optional<boo
     mipmaps = false;
 }
 
-// a 2D or rectangle texture on `unit`, bottom row first unless `top_down`.
+// set_texture's targets, by their names in scene files.
+TextureTarget parse_texture_target(const std::string& name) {
+    if (name == "2d") return TextureTarget::Tex2D;
+    if (name == "rectangle") return TextureTarget::Rect;
+    if (name == "1d_array") return TextureTarget::Tex1DArray;
+    if (name == "2d_array") return TextureTarget::Tex2DArray;
+    throw py::value_error("target '" + name + "' is not one of 2d, rectangle, 1d_array, 2d_array");
+}
+
+// The image of set_texture as level 0: an H x W picture (2d, rectangle), L
+// layers of a W-texel row (1d_array: layer l is row l) or of an H x W
+// picture (2d_array), each with an optional last axis of 1, 3 or 4
+// channels; a picture's row 0 is its top unless `top_down`. Sizes are
+// checked on the array as given, before anything is copied.
+TextureImage texture_level(TextureTarget target, const py::array& any, bool bytes, bool top_down) {
+    const int grid = target == TextureTarget::Tex2DArray ? 3 : 2;  // the axes before the channels
+    const bool layered = target == TextureTarget::Tex1DArray || target == TextureTarget::Tex2DArray;
+    const char* shape = target == TextureTarget::Tex1DArray   ? "L x W (luminance), L x W x 3 or L x W x 4 (L layers)"
+                        : target == TextureTarget::Tex2DArray ? "L x H x W, L x H x W x 3 or L x H x W x 4 (L layers)"
+                                                              : "H x W, H x W x 3 or H x W x 4";
+    bool ok = any.ndim() == grid || any.ndim() == grid + 1;
+    for (int axis = 0; ok && axis < grid; ++axis) {
+        const bool layers = layered && axis == 0;
+        ok = any.shape(axis) >= 1 && any.shape(axis) <= (layers ? kMaxArrayTextureLayers : kMaxTextureSize);
+    }
+    if (ok && any.ndim() == grid + 1) ok = any.shape(grid) == 1 || any.shape(grid) == 3 || any.shape(grid) == 4;
+    if (!ok)
+        throw py::type_error(std::string("a texture is an ") + shape + " array of uint8 or floats, each side 1.." +
+                             std::to_string(kMaxTextureSize) + (layered ? ", layers 1.." +
+                             std::to_string(kMaxArrayTextureLayers) : std::string()));
+    const int layers = layered ? int(any.shape(0)) : 1;
+    const int h = target == TextureTarget::Tex1DArray ? 1 : int(any.shape(grid - 2));
+    const int w = int(any.shape(grid - 1)), c = any.ndim() == grid + 1 ? int(any.shape(grid)) : 1;
+    if (int64_t(layers) * h * w > scene::kMaxTextureTexels)
+        throw py::value_error("a texture holds at most " + std::to_string(scene::kMaxTextureTexels) +
+                              " texels, layers included (docs/limits.md)");
+    FloatArray a = FloatArray::ensure(any);
+    const float scale = bytes ? 1.0f / 255.0f : 1.0f;
+    TextureImage level{w, target == TextureTarget::Tex1DArray ? layers : h,
+                       target == TextureTarget::Tex2DArray ? layers : 1,
+                       std::vector<glm::vec4>(size_t(layers) * size_t(h) * size_t(w))};
+    for (int l = 0; l < layers; ++l)
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const size_t at = (size_t(l) * size_t(h) + size_t(y)) * size_t(w) + size_t(x);
+                const float* p = a.data() + at * size_t(c);
+                glm::vec4 t = c == 1 ? glm::vec4(p[0], p[0], p[0], 1) : glm::vec4(p[0], p[1], p[2], c == 4 ? p[3] : 1);
+                const size_t row = size_t(top_down ? y : h - 1 - y);
+                level.texels[(size_t(l) * size_t(h) + row) * size_t(w) + size_t(x)] =
+                    t * glm::vec4(scale, scale, scale, c == 4 ? scale : 1);
+            }
+    return level;
+}
+
+// A 2D, rectangle or array texture on `unit`.
 void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear, std::optional<std::string> wrap,
                  std::optional<bool> mipmaps_opt, bool top_down, const std::string& target_name) {
-    if (target_name != "2d" && target_name != "rectangle")
-        throw py::value_error("target '" + target_name + "' is not one of 2d, rectangle");
-    const TextureTarget target = target_name == "rectangle" ? TextureTarget::Rect : TextureTarget::Tex2D;
+    const TextureTarget target = parse_texture_target(target_name);
     if (target == TextureTarget::Rect) rectangle_options(wrap, mipmaps_opt);
     const bool mipmaps = mipmaps_opt.value_or(true);
     if (unit < 0 || unit >= kMaxTextureUnits)
@@ -120,23 +172,10 @@ void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear
     py::array any = py::array::ensure(image);
     char kind = any ? any.dtype().kind() : 'O';
     bool bytes = kind == 'u' && any.itemsize() == 1;
-    if (!any || (!bytes && kind != 'f') || any.ndim() < 2 || any.ndim() > 3 || any.shape(0) < 1 || any.shape(1) < 1 ||
-        any.shape(0) > kMaxTextureSize || any.shape(1) > kMaxTextureSize ||
-        (any.ndim() == 3 && any.shape(2) != 1 && any.shape(2) != 3 && any.shape(2) != 4))
-        throw py::type_error("a texture is an H x W, H x W x 3 or H x W x 4 array of uint8 or floats, each side 1.." +
-                             std::to_string(kMaxTextureSize));
-    FloatArray a = FloatArray::ensure(any);
-    const int h = int(a.shape(0)), w = int(a.shape(1)), c = a.ndim() == 3 ? int(a.shape(2)) : 1;
-    const float scale = bytes ? 1.0f / 255.0f : 1.0f;
-    TextureImage level{w, h, 1, std::vector<glm::vec4>(size_t(w) * size_t(h))};
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const float* p = a.data() + (size_t(y) * size_t(w) + size_t(x)) * size_t(c);
-            glm::vec4 t = c == 1 ? glm::vec4(p[0], p[0], p[0], 1) : glm::vec4(p[0], p[1], p[2], c == 4 ? p[3] : 1);
-            size_t row = size_t(top_down ? y : h - 1 - y);
-            level.texels[row * size_t(w) + size_t(x)] = t * glm::vec4(scale, scale, scale, c == 4 ? scale : 1);
-        }
-    Texture texture = take(Texture::create(target, {std::move(level)},
+    if (!any || (!bytes && kind != 'f'))
+        throw py::type_error("a texture is an array of uint8 or floats (H x W, H x W x 3 or H x W x 4; arrays: a "
+                             "leading axis of layers)");
+    Texture texture = take(Texture::create(target, {texture_level(target, any, bytes, top_down)},
                                            bytes ? TextureFormat::RGBA8 : TextureFormat::RGBA32F));
     if (mipmaps) texture.generate_mipmaps();
     texture.sampler.mag_filter = linear ? TextureFilter::Linear : TextureFilter::Nearest;
@@ -176,7 +215,10 @@ void bind_mesh(py::module_& m) {
               py::arg("target") = "2d",
               "Binds an image array to texture unit `unit` as a 2D texture (target=\"rectangle\": a rectangle "
               "texture, sampler2DRect, addressed in texels, without mipmaps, wrap clamp_to_edge unless given): "
-              "H x W (luminance), H x W x 3 or H x W x 4; "
+              "H x W (luminance), H x W x 3 or H x W x 4; target=\"2d_array\" or \"1d_array\": "
+              "EXT_texture_array's sampler2DArray and sampler1DArray, the array with a leading axis of L layers "
+              "(L x H x W[ x C], a list of L images works too; L x W[ x C] for 1d_array, layer l its row l), "
+              "mipmaps generated per layer; "
               "uint8 as n/255 into RGBA8, floats into RGBA32F. Row 0 of the array is the top of the picture, so "
               "t = 0 is its bottom row (top_down=True: row 0 at t = 0). mipmaps generates every level (GL's default "
               "minifying filter needs them; without, the filter is linear or nearest; default True for 2d); wrap is "

@@ -15,6 +15,8 @@
 #include <string>
 #include <thread>
 
+#include <fmt/format.h>
+
 #include "module.h"
 
 namespace glslrun::python {
@@ -190,25 +192,67 @@ py::dict keys_to_dict(const std::string& lines) {
     return out;
 }
 
-// A scene and its command line's two shader files, as the module-level
-// functions that take paths read them.
+// The files of render(), error_report() and check_undefined(), as the
+// command line takes them: with `scene`, the shaders by position, None for
+// a stage GL's fixed function draws; without it, the files given sorted by
+// their names (a.frag, scene.toml), so that render("scene.toml") and
+// render("a.frag", "scene.toml") read as `glslrun scene.toml` does.
+struct FileArgs {
+    std::vector<std::string> vertex, fragment;  // empty: GL's fixed function
+    std::string scene;
+};
+
+FileArgs file_args(const py::object& vertex, const py::object& fragment, const py::object& scene,
+                   const char* function) {
+    auto text = [](const py::object& o) { return o.is_none() ? std::vector<std::string>{} : paths(o); };
+    FileArgs out;
+    if (!scene.is_none()) {
+        out = {text(vertex), text(fragment), py::cast<std::string>(scene)};
+        return out;
+    }
+    for (const py::object* o : {&vertex, &fragment})
+        for (const std::string& file : text(*o)) {
+            const std::string stage = scene::shader_stage_of(file);
+            if (file.ends_with(".toml") && out.scene.empty())
+                out.scene = file;
+            else if (!stage.empty())
+                (stage == "vert" ? out.vertex : out.fragment).push_back(file);
+            else
+                throw py::value_error(fmt::format(
+                    "{}(): cannot tell what '{}' is from its name: pass {}(vertex, fragment, scene), None for a "
+                    "stage that GL's fixed function draws",
+                    function, file, function));
+        }
+    if (out.scene.empty())
+        throw py::value_error(fmt::format(
+            "{}() needs a scene file (.toml): {}(\"a.vert\", \"a.frag\", \"scene.toml\"); a shader left out "
+            "(None) is drawn with GL's fixed function, generated from the scene",
+            function, function));
+    return out;
+}
+
+// A scene and its shaders, as the module-level functions that take paths read them.
 struct SceneInputs {
     scene::Scene scene;
     std::vector<ShaderSource> vertex, fragment;
 };
 
-SceneInputs read_inputs(const std::string& vertex, const std::string& fragment, const std::string& scene_path) {
-    return {take(scene::load_scene(scene_path)), take(scene::read_shader_files({vertex})),
-            take(scene::read_shader_files({fragment}))};
+SceneInputs read_inputs(const FileArgs& files, const char* function) {
+    if (files.vertex.empty() && files.fragment.empty())
+        throw py::value_error(fmt::format("{}() looks at your shaders: give a vertex or a fragment shader (a scene "
+                                          "without shaders is GL's fixed function alone: render(\"scene.toml\"))",
+                                          function));
+    return {take(scene::load_scene(files.scene)), take(scene::read_shader_files(files.vertex)),
+            take(scene::read_shader_files(files.fragment))};
 }
 
-py::dict error_report(const std::string& vertex, const std::string& fragment, const std::string& scene_path,
+py::dict error_report(const py::object& vertex, const py::object& fragment, const py::object& scene_path,
                       const std::string& mode, unsigned threads, const std::vector<std::string>& include_dirs) {
     scene::ErrorReportOptions options;
     options.mode = take(parse_precision(mode));
     options.threads = threads;
     options.compile.include_dirs = include_dirs;
-    SceneInputs in = read_inputs(vertex, fragment, scene_path);
+    SceneInputs in = read_inputs(file_args(vertex, fragment, scene_path, "error_report"), "error_report");
     scene::ErrorReport report;
     {
         py::gil_scoped_release release;
@@ -222,13 +266,13 @@ py::dict error_report(const std::string& vertex, const std::string& fragment, co
 }
 
 // check_undefined() (glslrun/scene/undefined.h): one dict per finding.
-py::list check_undefined(const std::string& vertex, const std::string& fragment, const std::string& scene_path,
+py::list check_undefined(const py::object& vertex, const py::object& fragment, const py::object& scene_path,
                          const std::string& precision, const std::string& backend,
                          const std::vector<std::string>& include_dirs) {
     ExecOptions exec = exec_options(1, precision, backend);
     CompileOptions compile;
     compile.include_dirs = include_dirs;
-    SceneInputs in = read_inputs(vertex, fragment, scene_path);
+    SceneInputs in = read_inputs(file_args(vertex, fragment, scene_path, "check_undefined"), "check_undefined");
     scene::UndefinedReport report;
     {
         py::gil_scoped_release release;
@@ -301,28 +345,40 @@ void bind_scene(py::module_& m) {
 
     m.def(
         "render",
-        [](const std::string& vertex, const std::string& fragment, const std::string& scene_path, unsigned threads,
+        [](const py::object& vertex, const py::object& fragment, const py::object& scene_path, unsigned threads,
            const std::string& precision, const py::object& uniforms, const std::string& backend,
            double time_limit, const std::string& cache_dir, bool cache, const std::vector<std::string>& include_dirs) {
             ExecOptions exec = exec_options(threads, precision, backend);
             exec.code_cache_dir = cache_dir;
             exec.code_cache = cache;
             warn_about_code_cache(exec);
-            scene::Scene scene = take(scene::load_scene(scene_path));
+            const FileArgs files = file_args(vertex, fragment, scene_path, "render");
+            scene::Scene scene = take(scene::load_scene(files.scene));
             scene::override_uniforms(scene, uniform_settings(uniforms, "uniforms"));
             CompileOptions compile;
             compile.include_dirs = include_dirs;
-            Program program = take(scene::compile_files({vertex}, {fragment}, compile));
+            // No shaders: every draw in GL's fixed function, as `glslrun scene.toml` draws it.
+            const bool fixed = files.vertex.empty() && files.fragment.empty();
+            if (fixed) {
+                const std::string w = scene::fixed_function_warning(scene);
+                if (!w.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 1) < 0) throw py::error_already_set();
+                scene::use_fixed_function(scene);
+            }
+            Program program = take(fixed ? scene::unused_main_program()
+                                         : scene::compile_files(files.vertex, files.fragment, compile));
             program.exec = exec;
             scene::Image image;
             run_interruptibly(program.exec, time_limit, [&] { image = take(scene::render_image(program, scene)); });
             return to_array(image);
         },
-        py::arg("vertex"), py::arg("fragment"), py::arg("scene"), py::arg("threads") = 0,
+        py::arg("vertex") = py::none(), py::arg("fragment") = py::none(), py::arg("scene") = py::none(), py::arg("threads") = 0,
         py::arg("precision") = "precise", py::kw_only(), py::arg("uniforms") = py::none(), py::arg("backend") = "auto",
         py::arg("time_limit") = 0.0, py::arg("cache_dir") = "", py::arg("cache") = true,
         py::arg("include_dirs") = std::vector<std::string>{},
         "glslrun a.vert a.frag scene.toml in memory: an H x W x 4 uint8 array, equal to the command line's PNG.\n\n"
+        "A stage left out is GL's fixed function, generated from the scene's state, as on the command line: "
+        "render(None, \"a.frag\", \"scene.toml\"), or the files by their names, render(\"a.frag\", "
+        "\"scene.toml\") and render(\"scene.toml\") (no shader: every draw in fixed function). "
         "`uniforms` ({name: value}) overrides the scene's [uniforms], as the command line's --uniform does; "
         "`backend` is \"auto\", \"jit\" or \"interp\" (the same bits); time_limit and Ctrl-C as for "
         "Program.render. `cache_dir` and `cache`: the JIT's code cache, as Program.cache_dir and Program.cache "
@@ -336,16 +392,19 @@ void bind_scene(py::module_& m) {
         py::arg("image"), py::arg("path"), "Writes an H x W x 4 uint8 array as an RGBA8 PNG (lossless).");
     m.def("compare_images", &compare, py::arg("reference"), py::arg("actual"), py::arg("tolerance") = 1,
           "Per-channel differences of two H x W x 4 uint8 images (as glslrun --compare).");
-    m.def("error_report", &error_report, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),
+    m.def("error_report", &error_report, py::arg("vertex") = py::none(), py::arg("fragment") = py::none(),
+          py::arg("scene") = py::none(),
           py::arg("mode") = "fast", py::arg("threads") = 0, py::kw_only(),
           py::arg("include_dirs") = std::vector<std::string>{},
           "The scene in `mode` against Reference (glslrun --error-report): the report's keys as a dict, with "
-          "'notes', 'reference_image' and 'mode_image'. `include_dirs`: as the command line's -I.");
+          "'notes', 'reference_image' and 'mode_image'. The files as render() takes them (one shader may be "
+          "left out). `include_dirs`: as the command line's -I.");
     m.def("jit_available", &jit_available,
           "Whether the JIT can run here: LLVM's native code, in the plugin libglslrun-jit.so beside this "
           "module, loaded by this call or the first compile. Without it every backend runs the interpreter, "
           "which computes the same bits.");
-    m.def("check_undefined", &check_undefined, py::arg("vertex"), py::arg("fragment"), py::arg("scene"),
+    m.def("check_undefined", &check_undefined, py::arg("vertex") = py::none(), py::arg("fragment") = py::none(),
+          py::arg("scene") = py::none(),
           py::arg("precision") = "precise", py::kw_only(), py::arg("backend") = "auto",
           py::arg("include_dirs") = std::vector<std::string>{},
           "The operations GLSL 1.10/1.20 leaves undefined that rendering the scene computes (glslrun "
@@ -353,8 +412,8 @@ void bind_scene(py::module_& m) {
           "'stage', 'file', 'line', 'column', 'text' (the line), 'count' (invocations), 'first' (the first "
           "invocation: 'stage', 'draw', 'pass', 'program', 'operands' and 'pixel' or 'vertex'), what each "
           "precision mode returns for its operands ('reference', 'precise', 'fast', 'value_note') and what "
-          "NVIDIA's GPU returned for such operands ('gpu', measured; '' where not measured). `include_dirs`: as the "
-          "command line's -I.");
+          "NVIDIA's GPU returned for such operands ('gpu', measured; '' where not measured). The files as render() "
+          "takes them (one shader may be left out). `include_dirs`: as the command line's -I.");
 }
 
 }  // namespace glslrun::python

@@ -264,7 +264,7 @@ FsVertex window_lerp(const DrawContext& c, SetupOut& out, const FsVertex& a, con
 void emit_stippled(const DrawContext& c, SetupOut& out, const FsPrimitive& line) {
     for_each_stipple_run(line.v[0].win, line.v[1].win, c.gl.line_stipple_pattern, c.gl.line_stipple_repeat,
                          out.stipple_counter, [&](float t0, float t1) {
-                             if (++out.stipple_runs > kMaxStippleRuns) return;  // the draw fails
+                             if (++out.stipple_runs > kMaxStippleRuns || out.count_runs_only) return;
                              FsPrimitive run = line;
                              if (t0 > 0.0f) run.v[0] = window_lerp(c, out, line.v[0], line.v[1], t0);
                              if (t1 < 1.0f) run.v[1] = window_lerp(c, out, line.v[0], line.v[1], t1);
@@ -490,7 +490,8 @@ void set_up_range(const DrawContext& c, SetupOut& out, const std::vector<Assembl
 // Assembles, clips and sets up every primitive, in jobs on the workers when
 // there are many; `outs` keeps the jobs' attribute storage.
 std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint32_t vertex_count,
-                                       std::span<const uint32_t> indices, unsigned threads, DrawScratch& scratch) {
+                                       std::span<const uint32_t> indices, unsigned threads, DrawScratch& scratch,
+                                       bool count_runs_only = false) {
     uint32_t stream = indices.empty() ? vertex_count : uint32_t(indices.size());
     std::vector<AssembledPrim>& assembled = scratch.assembled;
     const bool triangles = prim == Primitive::Triangles;  // the same either way in the unfilled modes
@@ -509,7 +510,10 @@ std::span<SetupOut> set_up_primitives(const DrawContext& c, Primitive prim, uint
     jobs = std::max<size_t>(1, (count + job_size - 1) / job_size);
     if (scratch.setup.size() < jobs) scratch.setup.resize(jobs);
     std::span<SetupOut> outs(scratch.setup.data(), jobs);
-    for (SetupOut& out : outs) out.clear();
+    for (SetupOut& out : outs) {
+        out.clear();
+        out.count_runs_only = count_runs_only;
+    }
     rt::JobQueue queue(jobs);
     rt::run_workers(workers, [&](unsigned) {
         for (size_t job; queue.next(&job);)
@@ -561,7 +565,7 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
         return st.error();
     stats.vertex_seconds = seconds_since(start);
     if (raster::DrawProbe* probe = state_of(program).probe)
-        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded});
+        probe->begin_draw(ProbeDraw{gl, attribs, vertex_count, scratch.shaded, &program});
     auto raster_start = Clock::now();
     stats.vertices = vertex_count;
     const ir::Shader& vs = state_of(program).ir.vertex;
@@ -576,11 +580,19 @@ Result<DrawStats> draw_tiles(Program& program, const GLState& gl, Framebuffer& f
         DrawContext c{gl, stage, scratch.shaded, scratch.vertices, scratch.outcodes, scissor, viewport,
                       {}, sizes.output, sizes.fixed, scratch.front_attrs, scratch.window};
         prepare(c, vs, vertex_count, program.exec.threads, scratch.vertices);
-        auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
-        if (outs[0].stipple_runs > kMaxStippleRuns)  // a stippled draw sets up in one job
+        // Stippled lines' dashes are counted before any is made (a stippled
+        // draw sets up in one job): a draw past the limit fails without
+        // storing them (the dashes of the lines clipped to the view volume,
+        // as the draw makes them: no bound from the unclipped lengths).
+        const bool lines = prim == Primitive::Lines || prim == Primitive::LineStrip || prim == Primitive::LineLoop ||
+                           gl.polygon_mode[0] == PolygonMode::Line || gl.polygon_mode[1] == PolygonMode::Line;
+        if (gl.line_stipple && lines &&
+            set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch, true)[0].stipple_runs >
+                kMaxStippleRuns)
             return Error(fmt::format("the draw's stippled lines make more than {} dashes (runs of the pattern's set "
                                      "bits), glslrun's limit per draw (docs/limits.md); draw fewer or shorter lines",
                                      kMaxStippleRuns));
+        auto outs = set_up_primitives(c, prim, vertex_count, indices, program.exec.threads, scratch);
         scratch.bins.reset(scissor);
         bin_primitives(outs, scratch.bins, &stats.triangles);
         stats.raster_seconds = seconds_since(raster_start);

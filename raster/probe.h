@@ -34,6 +34,9 @@ struct ProbeDraw {
     const std::vector<VertexAttrib>& attribs;
     uint32_t vertex_count = 0;
     const exec::VertexOutputs& shaded;  // the vertex shader's outputs of every vertex
+    // The program drawing: a scene's draw with a generated fixed-function
+    // stage runs another program than the one whose probe this is.
+    const Program* program = nullptr;
 };
 
 // The framebuffer at one pixel, as stored: an RGBA8 channel as its byte n

@@ -34,6 +34,9 @@ struct SetupOut {
     // The runs of stippled lines made so far, bounded by kMaxStippleRuns:
     // past it the draw fails instead of storing more (raster/stipple.h).
     uint64_t stipple_runs = 0;
+    // Counts the stippled lines' runs without making them: the draw's
+    // first setup, which refuses it before any run is stored.
+    bool count_runs_only = false;
 
     void clear() {
         arena.clear();
@@ -43,6 +46,7 @@ struct SetupOut {
         triangles = 0;
         stipple_counter = 0;
         stipple_runs = 0;
+        count_runs_only = false;
     }
 };
 

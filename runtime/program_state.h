@@ -23,7 +23,8 @@ struct Program::State {
     // A program compiled without one of its stages keeps its sources: the
     // scene library links them again with the fixed-function stage it
     // generates from each draw's GL state (scene/ffp_*.cpp). Empty for a
-    // program of both stages.
+    // program of both stages, except one linked with a generated stage
+    // (named ffp::kVertexStageName...): the shader debugger's twin reads them.
     std::vector<ShaderSource> vertex_sources, fragment_sources;
     // The options it was compiled with: the programs a scene's passes name,
     // the generated fixed-function stages' links and the debugger's twins

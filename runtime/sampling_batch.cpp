@@ -6,6 +6,7 @@
 #include "runtime/sampling_batch.h"
 
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling_avx2.h"
 #include "runtime/sampling_direct.h"
 #include "runtime/sampling_rules.h"
 
@@ -291,12 +292,7 @@ template <class Src>
     for (int j = 0; j < 4; ++j)
         r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&texels[at[g + j]].x)),
                                     _mm_loadu_ps(&texels[at[g + 4 + j]].x), 1);
-    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-    ch[0] = _mm256_shuffle_ps(t0, t2, 0x44);
-    ch[1] = _mm256_shuffle_ps(t0, t2, 0xee);
-    ch[2] = _mm256_shuffle_ps(t1, t3, 0x44);
-    ch[3] = _mm256_shuffle_ps(t1, t3, 0xee);
+    transpose8(r, ch);
 }
 
 [[gnu::always_inline]] GLSLRUN_AVX2 inline __m256 mix8(__m256 x, __m256 y, __m256 a, __m256 b) {

@@ -10,6 +10,7 @@
 // lane, as the other samplers do.
 #include "runtime/sampling_direct.h"
 
+#include "runtime/sampling_avx2.h"
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt {
@@ -167,17 +168,6 @@ struct Source {
 // The texels at (x, y) of eight lanes, transposed into channels: ch[c]
 // holds channel c of the eight. `kBorder`: an index may be kBorder, whose
 // lanes take the border colour (and load texel 0).
-// Four registers, r[j] = (texel of lane j | texel of lane 4 + j), transposed
-// into channels: ch[c] holds channel c of lanes 0..7 (a 4x4 transpose per half).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void transpose8(const V* r, V* ch) {
-    const V t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-    const V t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-    ch[0] = _mm256_shuffle_ps(t0, t2, 0x44);
-    ch[1] = _mm256_shuffle_ps(t0, t2, 0xee);
-    ch[2] = _mm256_shuffle_ps(t1, t3, 0x44);
-    ch[3] = _mm256_shuffle_ps(t1, t3, 0xee);
-}
-
 // Each lane's byte offset of texel (x, y) (below 2^28, unsigned: each load
 // takes its offset as it is, with no sign extension or scaling in between).
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void offsets8(I at, uint32_t* off) {

@@ -1,11 +1,13 @@
 // The batched sampler of Fast's GPU rules (see sampling_gpu_batch.h). The
 // steps of gpu::sample_complete() with each one's texture state hoisted out
-// of a loop over all kLanes lanes: lambda (one per quad), the level(s) and
-// filter, the wrapped indices and 8-bit weights per axis; then each lane's
-// blends of 16-bit texels, four channels in one register, by the very
-// functions the per-lane path calls. Lanes outside the mask compute too on
-// whatever their registers hold (every step is safe for any float) but are
-// not stored.
+// of a loop over all kLanes lanes: the cube face, lambda (one per quad), the
+// level(s) and filter, the wrapped indices and 8-bit weights per axis, then
+// the 16-bit blends: eight lanes at a time, channel by channel, under AVX2
+// where no texel can be the border's (exact integers in float, so any order
+// of the sums gives gpu::linear16()'s values), else lane by lane through
+// the very functions the per-lane path calls. Lanes outside the mask
+// compute too on whatever their registers hold (every step is safe for any
+// float) but are not stored.
 #include "runtime/sampling_gpu_batch.h"
 
 #include "runtime/interp_kernels.h"
@@ -46,28 +48,26 @@ struct GpuLanes {
 void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
     const SamplerState& st = texture.sampler;
     float* lambda = l.lambda;
-    if (lk.implicit && lod_matters(st) && texture.target() == TextureTarget::Cube) {
-        // On the face each lane's direction selects: rho_of() lane by lane,
-        // with its quad's first lane's derivatives.
-        for (int i = 0; i < kLanes; ++i) {
-            const int q = i & ~3;
-            const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
-            const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]), dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
-            lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
-        }
-        if (lk.bias)
-            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
-    } else if (lk.implicit && lod_matters(st)) {
-        const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
-        const int dims = texture_dims(texture.target());
-        const float* __restrict dxs = lk.ddx[0];
-        const float* __restrict dxt = lk.ddx[1];
-        const float* __restrict dys = lk.ddy[0];
-        const float* __restrict dyt = lk.ddy[1];
-        // One lambda_base per quad (lanes 4q..4q+3), from its first lane's derivatives.
-        for (int q = 0; q < kLanes; q += 4) {
-            const float base = gpu::lambda_of_rho(gpu_rho({dxs[q], dxt[q], 0.0f}, {dys[q], dyt[q], 0.0f}, size, dims));
-            for (int i = q; i < q + 4; ++i) lambda[i] = base;
+    if (lk.implicit && lod_matters(st)) {
+        if (texture.target() == TextureTarget::Cube) {
+            // On the face each lane's direction selects: rho_of() lane by lane,
+            // with its quad's first lane's derivatives.
+            for (int i = 0; i < kLanes; ++i) {
+                const int q = i & ~3;
+                const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
+                const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]);
+                const glm::vec3 dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
+                lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
+            }
+        } else {
+            const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
+            const int dims = texture_dims(texture.target());
+            // One lambda_base per quad (lanes 4q..4q+3), from its first lane's derivatives.
+            for (int q = 0; q < kLanes; q += 4) {
+                const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], 0.0f), dy(lk.ddy[0][q], lk.ddy[1][q], 0.0f);
+                const float base = gpu::lambda_of_rho(gpu_rho(dx, dy, size, dims));
+                for (int i = q; i < q + 4; ++i) lambda[i] = base;
+            }
         }
         if (lk.bias)
             for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
@@ -267,13 +267,22 @@ GLSLRUN_AVX2 bool linear_axis8(const float* __restrict s, const int* __restrict 
 // The bilinear blends of lanes g..g+7 (none on the border): linear_lane()'s
 // products and sums, exact integers in float, so the same values in any
 // order; the rounding (sum + 128) >> 8 as gpu::round_blend().
-GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const float (*w)[kLanes], int g,
-                            float (*out)[kLanes]) {
+// `on_border` (null where no texel can be the border's): per corner, -1
+// where the lane's texel is the border's, whose 16-bit value `border` is
+// then taken instead of the one at offset 0.
+GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const float (*w)[kLanes],
+                            const int (*on_border)[kLanes], const float* border, int g, float (*out)[kLanes]) {
     __m256 sum[4];
     #pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
         __m256 t[4];
         load16x8(l.texels, at[k], g, t);
+        if (on_border) {
+            const __m256i lanes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&on_border[k][g]));
+            const __m256 take = _mm256_castsi256_ps(lanes);
+            #pragma GCC unroll 4
+            for (int c = 0; c < 4; ++c) t[c] = _mm256_blendv_ps(t[c], _mm256_set1_ps(border[c]), take);
+        }
         const __m256 weight = _mm256_loadu_ps(&w[k][g]);
         #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c)
@@ -285,6 +294,18 @@ GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const fl
         _mm256_storeu_ps(&out[c][g],
                          _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum[c], bias), scale))));
 }
+// NEAREST's texels of lanes g..g+7 (at[0]; border lanes as blend16x8()'s)
+// as 16-bit values: gpu::unorm16() of the texel, as load16x8() gives it.
+GLSLRUN_AVX2 void nearest16x8(const GpuLanes& l, const int (*at)[kLanes], const int (*on_border)[kLanes],
+                              const float* border, int g, float (*out)[kLanes]) {
+    __m256 t[4];
+    load16x8(l.texels, at[0], g, t);
+    const __m256i lanes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&on_border[0][g]));
+    const __m256 take = _mm256_castsi256_ps(lanes);
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(t[c], _mm256_set1_ps(border[c]), take));
+}
+
 // store_unorm16() eight lanes at a time.
 GLSLRUN_AVX2 void store_unorm16x8(const float* v, const int* active, float* out) {
     const __m256 scale = _mm256_set1_ps(65535.0f);
@@ -339,9 +360,10 @@ void lane_images(const Texture& texture, GpuLanes& l, const int* level, const in
 }
 
 // gpu::level16() of every lane in `take` on its image (l.texels, set by
-// lane_images() or one_image()), as 16-bit values into out[c][i]; `linear` is the same for all of them (the caller
-// splits). Eight lanes at a time where the build has AVX2 and no texel can
-// be the border's; the others lane by lane.
+// lane_images() or one_image()), as 16-bit values into out[c][i]; `linear`
+// is the same for all of them (the caller splits). Eight lanes at a time
+// where the build has AVX2, else lane by lane; skipped lanes of a group
+// fetch too (their indices are in their images) and are written.
 template <bool kAvx2>
 void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* take, bool linear, int dims,
                   float (*out)[kLanes]) {
@@ -356,17 +378,39 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
     const Lookup proto{&texture, &st, 0, dims, glm::vec3(0.0f), false, 0.0f};
     const Texel border = gpu::unorm16(texel_of(border_texel(proto)));
     const bool border_free = !may_border(st.wrap_s) && (dims == 1 || !may_border(st.wrap_t));
+    const glm::vec4 border16 = vec_of(border);
 #if defined(__x86_64__) && defined(__GNUC__)
     if constexpr (kAvx2) {
-        if (linear && border_free) {
-            alignas(32) int at[4][kLanes];
+        if (!linear) {
+            alignas(32) int at[1][kLanes], on_border[1][kLanes];
+            for (int i = 0; i < kLanes; ++i) {
+                const int x = l.x0[i], y = l.y0[i], outside = (x | y) >> 31;  // -1 for kBorder
+                on_border[0][i] = outside;
+                at[0][i] = (y * l.width[i] + x) & ~outside;
+            }
+            for (int g = 0; g < kLanes; g += 8) {
+                int any = 0;
+                for (int i = g; i < g + 8; ++i) any |= take[i];
+                if (any) nearest16x8(l, at, on_border, &border16.x, g, out);
+            }
+            return;
+        }
+        {
+            alignas(32) int at[4][kLanes], on_border[4][kLanes];
             alignas(32) float w[4][kLanes];
             for (int i = 0; i < kLanes; ++i) {
-                const int row0 = l.y0[i] * l.width[i], row1 = l.y1[i] * l.width[i];  // below 2^28: no overflow
-                at[0][i] = row0 + l.x0[i];
-                at[1][i] = row0 + l.x1[i];
-                at[2][i] = row1 + l.x0[i];
-                at[3][i] = row1 + l.x1[i];
+                // kBorder indices (the only negative ones) read offset 0 and take the border's
+                // value (blend16x8()); i >> 31 is -1 for them, 0 for the others.
+                const int x0 = l.x0[i], x1 = l.x1[i], y0 = l.y0[i], y1 = l.y1[i], width = l.width[i];
+                const int b00 = (x0 | y0) >> 31, b01 = (x1 | y0) >> 31, b10 = (x0 | y1) >> 31, b11 = (x1 | y1) >> 31;
+                on_border[0][i] = b00;
+                on_border[1][i] = b01;
+                on_border[2][i] = b10;
+                on_border[3][i] = b11;
+                at[0][i] = (y0 * width + x0) & ~b00;  // below 2^28: no overflow
+                at[1][i] = (y0 * width + x1) & ~b01;
+                at[2][i] = (y1 * width + x0) & ~b10;
+                at[3][i] = (y1 * width + x1) & ~b11;
                 const int wx = l.wx[i], wy = l.wy[i], w11 = (wx * wy + 128) >> 8;
                 w[0][i] = float(256 - wx - wy + w11);
                 w[1][i] = float(wx - w11);
@@ -378,7 +422,7 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
                 int any = 0;
                 for (int i = g; i < g + 8; ++i) any |= take[i];
                 // Skipped lanes blend too, on indices in their images, and are not kept.
-                if (any) blend16x8(l, at, w, g, out);
+                if (any) blend16x8(l, at, w, border_free ? nullptr : on_border, &border16.x, g, out);
             }
             return;
         }
@@ -391,10 +435,7 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
 }
 
 // The level pass of `level` for the lanes of `take`, split by filter where
-// the lanes differ (magnified and minified lanes of one batch). Where they
-// do, a lane of one filter keeps its result: the other filter's pass
-// writes only its own lanes (the eight-lane blends write whole groups, so
-// they go first).
+// the lanes differ (magnified and minified lanes of one batch).
 template <bool kAvx2>
 void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* level, const int* take,
                    int dims, float (*out)[kLanes]) {
@@ -407,8 +448,14 @@ void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, c
         any[0] |= by_filter[0][i];
     }
     lane_images(texture, l, level, take);
-    if (any[1]) sample_level<kAvx2>(texture, l, lk, by_filter[1], true, dims, out);
-    if (any[0]) sample_level<kAvx2>(texture, l, lk, by_filter[0], false, dims, out);
+    if (!(any[0] & any[1])) return sample_level<kAvx2>(texture, l, lk, take, any[1] != 0, dims, out);
+    // Both filters: each pass writes whole groups of lanes, so the second goes
+    // to its own arrays and its lanes are merged.
+    alignas(32) float nearest[4][kLanes];
+    sample_level<kAvx2>(texture, l, lk, by_filter[1], true, dims, out);
+    sample_level<kAvx2>(texture, l, lk, by_filter[0], false, dims, nearest);
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) out[c][i] = by_filter[0][i] ? nearest[c][i] : out[c][i];
 }
 
 // out[i] = v[i] / 65535 (gpu::over_unorm16()) for the active lanes, four

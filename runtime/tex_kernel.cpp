@@ -143,6 +143,18 @@ bool use_avx2() {
     return avx2;
 }
 
+// Whether the result registers share no word with the operand block or the units.
+template <class W>
+bool apart(const Step<W>& s, const ir::TexInfo& info) {
+    const auto disjoint = [](const W* a, size_t na, const W* b, size_t nb) {
+        const auto ia = reinterpret_cast<uintptr_t>(a), ib = reinterpret_cast<uintptr_t>(b);
+        return ia + na * sizeof(W) <= ib || ib + nb * sizeof(W) <= ia;
+    };
+    const size_t results = size_t(ir::kTexResults) * kLanes;
+    return disjoint(s.dst, results, s.src[1], size_t(info.operand_count()) * kLanes) &&
+           disjoint(s.dst, results, s.src[0], kLanes);
+}
+
 // `rules`: the precision mode's (SamplingRules).
 template <class W>
 void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
@@ -159,10 +171,10 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
     const bool whole = lookups == kAllLanes;
     // A whole batch of fp32 words goes straight into the destination
     // registers (Machine::write would copy them whole: a tenth of a
-    // nine-tap frame). They may be operand registers: each lane's results
-    // overwrite only that lane's words, after its lookup has read them.
+    // nine-tap frame), unless they reuse an operand's register: a lane may
+    // read another lane's operands (Fast's quads) after that one's result.
     if constexpr (std::is_same_v<F, float>)
-        if (whole) out = reinterpret_cast<float (*)[kLanes]>(s.dst);
+        if (whole && apart(s, info)) out = reinterpret_cast<float (*)[kLanes]>(s.dst);
     if (!whole) fill_defaults(out, m.lookups);
     const FloatOperands<W> floats(info, ops.block);
     BatchLookup batch = floats.lookup(info);

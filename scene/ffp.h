@@ -12,6 +12,11 @@
 
 namespace glslrun::scene::ffp {
 
+// The names of the generated stages' sources in a program (ShaderSource::name):
+// how the shader debugger tells a generated stage from the user's.
+inline constexpr const char* kVertexStageName = "(fixed-function vertex stage)";
+inline constexpr const char* kFragmentStageName = "(fixed-function fragment stage)";
+
 // The texture target fixed-function texturing samples on `unit` for a draw
 // with `gl`'s bindings: the bound texture of the highest-priority target
 // (cube map, 3D, rectangle, 2D, 1D) when [texture_env.unit] enables the

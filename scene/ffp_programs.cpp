@@ -85,6 +85,9 @@ Result<Program*> FixedFunctionPrograms::get(const Program* base, const std::vect
     auto program = Program::compile(vertex, fragment, options);
     if (!program) return program.error();
     state_of(*program).ir.fixed_function_vertex = generated_vertex;
+    // Both stages' sources, the generated one too: the shader debugger compiles its twin from them.
+    state_of(*program).vertex_sources = vertex;
+    state_of(*program).fragment_sources = fragment;
     // A unit whose texel no combiner reads (DECAL of a luminance texture) has no active sampler.
     for (int u = 0; u < 8; ++u)
         if ((samplers >> u & 1) && program->has_uniform(ffp::sampler_uniform(u)))
@@ -106,8 +109,8 @@ Result<Program*> ScenePrograms::for_draw(size_t pass, const Scene& scene, GLStat
     needs.texcoords = gen_fs ? ffp::fragment_units(scene, gl) : texcoords_read(base);
     const uint8_t samplers = gen_fs ? ffp::fragment_units(scene, gl) : 0;
     std::vector<ShaderSource> vertex = st.vertex_sources, fragment = st.fragment_sources;
-    if (gen_vs) vertex = {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}};
-    if (gen_fs) fragment = {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}};
+    if (gen_vs) vertex = {{ffp::kVertexStageName, ffp::vertex_source(scene, gl, needs)}};
+    if (gen_fs) fragment = {{ffp::kFragmentStageName, ffp::fragment_source(scene, gl)}};
     auto program = fixed_->get(fixed ? nullptr : &base, vertex, fragment, fixed ? fixed_->options() : st.options,
                                samplers, gen_vs);
     if (!program) {
@@ -170,8 +173,8 @@ Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>
     gl.texture_units = bound->texture_units;
     uint8_t units = ffp::fragment_units(scene, gl);
     ffp::VertexNeeds needs{units};
-    return cache->get(nullptr, {{"(fixed-function vertex stage)", ffp::vertex_source(scene, gl, needs)}},
-                      {{"(fixed-function fragment stage)", ffp::fragment_source(scene, gl)}}, cache->options(), units,
+    return cache->get(nullptr, {{ffp::kVertexStageName, ffp::vertex_source(scene, gl, needs)}},
+                      {{ffp::kFragmentStageName, ffp::fragment_source(scene, gl)}}, cache->options(), units,
                       true);
 }
 
@@ -193,6 +196,27 @@ void use_fixed_function(Scene& scene) {
     }
     for (Pass& pass : scene.passes)
         if (pass.vertex.empty() && pass.fragment.empty()) pass.fixed_function = true;
+}
+
+std::string fixed_function_warning(const Scene& scene) {
+    const FixedFunction& f = scene.fixed;
+    bool state = f.lighting || f.fog || f.color_sum || f.separate_specular;
+    for (int u = 0; u < 8; ++u) {
+        state = state || f.texture_env[size_t(u)].enabled;
+        for (const TexGen& g : f.texture_gen[size_t(u)]) state = state || g.mode != TexGenMode::Off;
+    }
+    for (const Object& o : scene.objects) {
+        state = state || o.color.has_value();
+        for (const VertexAttrib& a : o.mesh.attribs) state = state || a.name == "gl_Color";
+    }
+    for (const CurrentAttribute& c : scene.current_attributes) state = state || c.name == "gl_Color";
+    for (const Pass& p : scene.passes) state = state || p.fixed_function;
+    if (state) return {};
+    return fmt::format("warning: {}: no shaders were given, and the scene sets no fixed-function state, so GL's "
+                       "fixed function draws every object unlit in white: give the program's shaders (glslrun "
+                       "a.vert a.frag scene.toml), or the state ([fixed_function] lighting, [texture_env.N], "
+                       "[fog], colours: docs/scene-format.md, \"Fixed function\")",
+                       scene.path);
 }
 
 Result<Program> unused_main_program() {

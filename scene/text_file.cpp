@@ -1,5 +1,6 @@
 #include "scene/text_file.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -7,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "glslrun/scene/render.h"
 #include "runtime/api_checks.h"
 
 namespace glslrun::scene {
@@ -45,6 +47,19 @@ Result<std::string> read_text_file(const std::string& path, const char* what, in
     text.resize(size_t(in.gcount()));  // a file that shrank meanwhile
     if (in.bad()) return Error(fmt::format("cannot read {}", what), path);
     return text;
+}
+
+std::string shader_stage_of(const std::string& path) {
+    auto lower = [](std::string text) {
+        for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return text;
+    };
+    std::filesystem::path p(path);
+    std::string ext = lower(p.extension().string());
+    if (ext == ".glsl") ext = lower(p.stem().extension().string());
+    if (ext == ".vert" || ext == ".vs") return "vert";
+    if (ext == ".frag" || ext == ".fs") return "frag";
+    return {};
 }
 
 }  // namespace glslrun::scene

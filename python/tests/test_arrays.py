@@ -86,6 +86,51 @@ def test_a_rectangle_texture_is_addressed_in_texels():
         scene.set_texture(0, picture, target="rect")
 
 
+ARRAY2D_FS = """
+#extension GL_EXT_texture_array : enable
+uniform sampler2DArray t;
+uniform float layer;
+void main() { gl_FragColor = texture2DArray(t, vec3(gl_TexCoord[0].st, layer)); }
+"""
+
+ARRAY1D_FS = """
+#extension GL_EXT_texture_array : enable
+uniform sampler1DArray t;
+uniform float layer;
+void main() { gl_FragColor = texture1DArray(t, vec2(gl_TexCoord[0].s, layer)); }
+"""
+
+
+def test_array_textures_pick_their_layer():
+    """EXT_texture_array from numpy: a leading axis of layers, each layer upright as a 2D picture."""
+    program, scene = textured_square(ARRAY2D_FS)
+    layers = np.stack([PICTURE, 255 - PICTURE[::-1]])  # layer 1: another picture
+    layers[1, :, :, 3] = 255
+    scene.set_texture(0, layers, linear=False, mipmaps=False, target="2d_array")
+    for layer in (0, 1):
+        image = program.render(scene, uniforms={"layer": layer})
+        picture = layers[layer]
+        assert tuple(image[0, 0]) == tuple(picture[0, 0]) and tuple(image[0, 7]) == tuple(picture[0, 1])
+        assert tuple(image[7, 0]) == tuple(picture[1, 0]) and tuple(image[7, 7]) == tuple(picture[1, 1])
+    # A list of images is the same array; with mipmaps, per layer (a layer's average stays its own).
+    scene.set_texture(0, list(layers), target="2d_array")
+    assert tuple(program.render(scene, uniforms={"layer": 1})[0, 0]) != tuple(
+        program.render(scene, uniforms={"layer": 0})[0, 0])
+    # 1D arrays: layer l is row l of the array, never flipped.
+    program, scene = textured_square(ARRAY1D_FS)
+    rows = np.array([[[255, 0, 0, 255], [0, 255, 0, 255]], [[0, 0, 255, 255], [255, 255, 255, 255]]], np.uint8)
+    scene.set_texture(0, rows, linear=False, mipmaps=False, target="1d_array")
+    for layer in (0, 1):
+        image = program.render(scene, uniforms={"layer": layer})
+        assert tuple(image[7, 0]) == tuple(rows[layer, 0]) and tuple(image[0, 7]) == tuple(rows[layer, 1])
+    with pytest.raises(TypeError, match="L x H x W"):
+        scene.set_texture(0, PICTURE[:, :, 0], target="2d_array")  # a picture without its axis of layers
+    with pytest.raises(TypeError, match="layers 1..2048"):
+        scene.set_texture(0, np.zeros((2049, 1, 1), np.uint8), target="2d_array")
+    with pytest.raises(ValueError, match="at most 16777216 texels"):
+        scene.set_texture(0, np.broadcast_to(np.uint8(0), (2048, 4096, 4096)), target="2d_array")
+
+
 def test_array_mistakes_are_errors():
     scene = glslrun.Scene()
     with pytest.raises(ValueError, match="positions"):

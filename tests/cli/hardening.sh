@@ -119,4 +119,16 @@ printf '%s %s %s b3.png\n%s %s %s b3.txt\n' "$vs" "$fs" "$scene" "$vs" "$fs" "$s
 expect 1 "txt_jobs.txt:2: error: cannot write 'b3.txt'" "$glslrun" batch txt_jobs.txt
 [ -e b3.png ] && [ ! -e b3.txt ] || fail "batch: the good job did not run, or the bad one did: $(ls)"
 
+# Stippled lines past 2^20 dashes are refused before any dash is stored: a strip of 2400 diagonals of a
+# 1024x1024 image with every other pixel set makes 1.2M (stored first, they took 300 MB).
+{ printf '[output]\nsize = [1024, 1024]\n[camera]\northo = { left = 0, right = 1024, bottom = 0, top = 1024, '
+  printf 'near = -1, far = 1 }\n[state]\nline_stipple = true\nline_stipple_pattern = 0x5555\n[[objects]]\n'
+  printf 'mesh = "arrays"\nprimitive = "line_strip"\nvertices = ['
+  for i in $(seq 1200); do printf '[0, 0], [1024, 1024], '; done; printf ']\n'; } > dashes.toml
+if [ -x /usr/bin/time ]; then
+    /usr/bin/time -f "%M" -o dashes.rss "$glslrun" "$vs" "$fs" dashes.toml -o dashes.png 2>dashes.err
+    grep -q "stippled lines make more than 1048576 dashes" dashes.err || fail "2^20 dashes: $(cat dashes.err)"
+    [ "$(tail -1 dashes.rss)" -lt 120000 ] || fail "the refused stippled draw peaked at $(tail -1 dashes.rss) KB"
+fi
+
 finish "hardening: every reproducer ends with a message and status 1 or 2"

@@ -155,6 +155,38 @@ printf '%s %s %s %s\n' "$vs" base.frag green.toml b1.png "$vs" base.frag "$scene
 "$glslrun" "$vs" base.frag "$scene" -o b2_alone.png 2>/dev/null || fail "render b2 alone"
 same b2.png b2_alone.png "a batch job saw the previous job's uniform"
 
+# Jobs of one shader or none draw the missing stages with GL's fixed function, as `glslrun` does;
+# one shader's stage comes from its name.
+ff=$src/scenes/fixed_function.toml
+cp "$fs" stage.glsl
+printf '%s %s alone.png\n%s fixed.png\nstage.glsl %s x.png\n' "$fs" "$scene" "$ff" "$scene" > fixed.jobs
+expect 1 "fixed.jobs:3: error: 'stage.glsl': a job of one shader takes its stage from the name" \
+    "$glslrun" batch fixed.jobs
+grep -q "2 jobs, 2 rendered, 0 failed, 1 malformed line; 2 programs compiled" out.txt ||
+    fail "batch fixed.jobs summary: $(cat out.txt)"
+"$glslrun" "$fs" "$scene" -o alone_cli.png 2>/dev/null || fail "render minimal.frag alone"
+"$glslrun" "$ff" -o fixed_cli.png 2>/dev/null || fail "render fixed_function.toml"
+same alone.png alone_cli.png "batch: a job of a fragment shader alone differs from glslrun's image"
+same fixed.png fixed_cli.png "batch: a job without shaders differs from glslrun's image"
+
+# docs/scene-format.md's fixed-function example renders as given, and its unit 1 (a combiner) has a texture to
+# be on: without [textures.1] the image is the same.
+awk '/^A whole scene .*toon\.frag/ { found = 1 } found && /^```$/ { exit } found && on { print }
+     found && /^```toml$/ { on = 1 }' "$src/docs/scene-format.md" > doc_fixed.toml
+grep -q '^fragment = "toon.frag"' doc_fixed.toml || fail "the fixed-function example was not found in docs/scene-format.md"
+printf 'void main() { gl_FragColor = floor(gl_Color * 4.0) / 4.0; }\n' > toon.frag
+"$glslrun" doc_fixed.toml --size 128x96 -o doc_fixed.png 2>err.txt || fail "the docs' fixed-function example: $(cat err.txt)"
+sed '/^\[textures.1\]/,/^$/d' doc_fixed.toml > doc_fixed_no1.toml
+"$glslrun" doc_fixed_no1.toml --size 128x96 -o doc_fixed_no1.png 2>err.txt || fail "the example without unit 1"
+cmp -s doc_fixed.png doc_fixed_no1.png && fail "the docs' example: texture unit 1's combiner changes nothing"
+
+# A scene without shaders and without fixed-function state would be unlit white: said, with what to give.
+"$glslrun" "$scene" --size 32x32 -o white.png 2>err.txt || fail "spot.toml without shaders: $(cat err.txt)"
+grep -q "no shaders were given, and the scene sets no fixed-function state.*give the program's shaders" err.txt ||
+    fail "no warning for a scene without shaders or state: $(cat err.txt)"
+"$glslrun" "$src/scenes/fixed_function.toml" --size 32x32 -o lit.png 2>err.txt || fail "fixed_function.toml"
+[ -s err.txt ] && fail "fixed_function.toml warned: $(cat err.txt)"
+
 # ---- Progress on a terminal (script gives the command one).
 if command -v script > /dev/null; then
     script -qec "$glslrun $vs $fs $scene --size 8x8 --frames 3 -o fr.png" /dev/null > tty.txt 2>&1

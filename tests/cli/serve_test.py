@@ -190,10 +190,28 @@ def test_http(src, glslrun, out):
                          timeout=30)
     check(res.returncode == 2 and "cannot listen" in res.stderr, f"a port in use: {res.returncode} {res.stderr}")
     other.stop(signal.SIGHUP)
-    # Without a vertex shader, as `glslrun` renders: the stand-in's note on a varying it does not write.
+    # Without a vertex shader, as `glslrun` renders: the note on a varying the fixed-function stage does not write.
     alone = Server(glslrun, files[1:], out)
     r = alone.json("POST", "/api/render", b"")
-    check(not r["ok"] and "stand-in" in r["diagnostics"][0]["message"], f"no vertex shader: {r}")
+    check(not r["ok"] and "the vertex stage is GL's fixed function" in r["diagnostics"][0]["message"],
+          f"no vertex shader: {r}")
+    alone.stop()
+    # A fragment shader alone draws with the generated fixed-function vertex stage: traced, its text sent.
+    alone = Server(glslrun, [f"{src}/shaders/minimal.frag", files[2]], out)
+    check(alone.json("POST", "/api/render", b"")["ok"], "minimal.frag alone did not render")
+    t = alone.json("GET", "/api/trace?x=256&y=256")
+    check("error" not in t and t["fragments"] and all(f["matches_render"] for f in t["fragments"]), f"trace: {t}")
+    generated = [g for g in t["generated"] if g["name"] == "(generated) fixed-function-1.vert"]
+    check(generated and "gl_Position" in generated[0]["text"], f"no generated vertex stage: {t['generated']}")
+    check(any(s.get("where", "").startswith("(generated) fixed-function-1.vert:") for v in t["vertices"]
+              for s in v["trace"]["steps"]), "the vertices' steps are not in the generated stage")
+    alone.stop()
+    # A vertex shader alone: the fragment stage is generated, and traced.
+    alone = Server(glslrun, [files[0], files[2]], out)
+    check(alone.json("POST", "/api/render", b"")["ok"], "spot_pix_fixed.vert alone did not render")
+    t = alone.json("GET", "/api/trace?x=256&y=256")
+    check("error" not in t and any(s.get("where", "").startswith("(generated) fixed-function-1.frag:")
+                                   for s in t["fragments"][0]["trace"]["steps"]), f"vertex alone: {t}")
     alone.stop()
     res = subprocess.run([glslrun, "serve", files[0]], capture_output=True, text=True, timeout=30)
     check(res.returncode == 2 and "serve needs" in res.stderr, f"no scene: {res.returncode} {res.stderr}")

@@ -84,6 +84,72 @@ grep -q "no render target 'nope' (it has half, image)" "$tmp/target_err.txt" || 
 "$glslrun" trace --target image $blur 2>"$tmp/target_err.txt" && fail "trace --target without --pixel succeeded"
 grep -q "render target of --pixel X,Y, which is missing" "$tmp/target_err.txt" || fail "trace --target alone: $(cat "$tmp/target_err.txt")"
 
+# A stage left out is GL's fixed function, generated from the scene: the trace follows the generated
+# source, names it as generated, and --dump-fixed-function writes the same text the trace shows.
+"$glslrun" trace --pixel 240,172 "$src/shaders/minimal.frag" "$scene" >"$tmp/alone.txt" 2>&1 ||
+    fail "trace of a fragment shader alone exited with $? ($(head -c 300 "$tmp/alone.txt"))"
+grep -q "^fragment 0 at pixel 240,172: draw 0 (program (generated) fixed-function-1.vert + .*minimal.frag)" \
+    "$tmp/alone.txt" || fail "trace of minimal.frag alone: no generated vertex stage in the header"
+grep -q "^    (generated) fixed-function-1.vert:[0-9]*  gl_Position = " "$tmp/alone.txt" ||
+    fail "trace of minimal.frag alone: no step in the generated vertex stage"
+grep -q "^(generated) fixed-function-1.vert is GL's fixed-function vertex stage, generated .*--dump-fixed-function" \
+    "$tmp/alone.txt" || fail "trace of minimal.frag alone: the generated stage is not explained"
+grep -q WARNING "$tmp/alone.txt" && fail "trace of minimal.frag alone: a replay differs from the render"
+ff=$src/scenes/fixed_function.toml
+"$glslrun" trace --pixel 40,30 --size 128x96 --dump-fixed-function "$tmp/ffp" "$ff" >"$tmp/ffp.txt" 2>&1 ||
+    fail "trace of a scene without shaders exited with $? ($(head -c 300 "$tmp/ffp.txt"))"
+grep -q "^wrote $tmp/ffp/fixed-function-1.frag: GL's fixed-function fragment stage" "$tmp/ffp.txt" ||
+    fail "--dump-fixed-function: $(head -c 300 "$tmp/ffp.txt")"
+grep -q WARNING "$tmp/ffp.txt" && fail "trace of fixed_function.toml: a replay differs from the render"
+# Each step's text is the dumped file's line.
+step=$(grep -m1 "^    (generated) fixed-function-1.frag:[0-9]*  " "$tmp/ffp.txt")
+line=$(echo "$step" | sed 's/^ *(generated) fixed-function-1.frag:\([0-9]*\) .*/\1/')
+text=$(echo "$step" | sed 's/^ *(generated) fixed-function-1.frag:[0-9]*  //')
+[ -n "$line" ] && [ "$(sed -n "${line}p" "$tmp/ffp/fixed-function-1.frag" | sed 's/^ *//')" = "$text" ] ||
+    fail "--dump-fixed-function: line $line of the dump is not the trace's '$text'"
+"$glslrun" "$ff" --size 128x96 -o "$tmp/ff.png" --dump-fixed-function "$tmp/ffp2" >/dev/null || fail "render --dump-fixed-function"
+cmp -s "$tmp/ffp/fixed-function-1.vert" "$tmp/ffp2/fixed-function-1.vert" || fail "render and trace dump different stages"
+"$glslrun" "$ff" -o - --dump-fixed-function "$tmp/ffp3" >/dev/null 2>&1 && fail "-o - took --dump-fixed-function"
+# A fixed-function pass beside a shaded one: each draw replays its own program.
+cat >"$tmp/beside.toml" <<'TOML'
+[output]
+size = [64, 32]
+[camera]
+perspective = { fovy = 40, near = 1, far = 30 }
+[state]
+depth_test = true
+[fixed_function]
+lighting = true
+[lights.0]
+position = [1, 1, 1, 0]
+[[objects]]
+name = "lit"
+mesh = "cube"
+transform = [ { translate = [-1.2, 0, -4] }, { rotate = [30, 1, 1, 0] } ]
+[[objects]]
+name = "shaded"
+mesh = "cube"
+transform = [ { translate = [1.2, 0, -4] }, { rotate = [30, 1, 1, 0] } ]
+[[passes]]
+name = "ffp"
+objects = ["lit"]
+program = "fixed"
+[[passes]]
+name = "mine"
+objects = ["shaded"]
+TOML
+for px in 16,16 48,16; do
+    "$glslrun" trace --pixel $px "$vs" "$fs" "$tmp/beside.toml" >"$tmp/beside-$px.txt" 2>&1 ||
+        fail "trace of a fixed pass beside a shaded one at $px exited with $?"
+    grep -q "^fragment 0 " "$tmp/beside-$px.txt" || fail "beside at $px: no fragment"
+    grep -q WARNING "$tmp/beside-$px.txt" && fail "beside at $px: a replay differs from the render"
+done
+grep -q "(pass 'ffp', program (generated) fixed-function-1.vert + (generated) fixed-function-1.frag)" \
+    "$tmp/beside-16,16.txt" || fail "beside: the fixed pass's program: $(head -c 300 "$tmp/beside-16,16.txt")"
+grep -q "(pass 'mine', program .*spot_pix_oops.vert + .*spot_pix_oops.frag)" "$tmp/beside-48,16.txt" || fail "beside: the shaded pass"
+"$glslrun" trace --find-nan "$src/shaders/minimal.frag" "$scene" --size 64x64 >"$tmp/alone-nan.txt" ||
+    fail "--find-nan of minimal.frag alone exited with $?"
+
 # The replay equals the render whatever the mode, size and program (a loop and calls in multi_light).
 for mode in precise fast reference; do
     for prog in spot_pix_fixed multi_light; do
@@ -128,9 +194,7 @@ expect_error 1 --pixel 600,10 "$vs" "$fs" "$scene"
 expect_error 1 --vertex 999999 "$vs" "$fs" "$scene"
 expect_error 1 --vertex 0 --draw 3 "$vs" "$fs" "$scene"
 expect_error 1 --pixel 1,1 "$vs" "$src/shaders/missing.frag" "$scene"
-# A fragment shader alone draws with a generated fixed-function vertex stage, which trace does not follow: said, not crashed.
-expect_error 1 --pixel 240,172 "$src/shaders/minimal.frag" "$scene"
-grep -q "fixed function" "$tmp/err.txt" || fail "trace of a fragment shader alone: $(cat "$tmp/err.txt")"
+expect_error 2 --check-undefined "$src/scenes/fixed_function.toml"
 expect_error 2 --pixel 10 "$vs" "$fs" "$scene"
 expect_error 2 --pixel 1,1x "$vs" "$fs" "$scene"
 expect_error 2 --pixel 99999999999999,1 "$vs" "$fs" "$scene"

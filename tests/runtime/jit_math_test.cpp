@@ -133,6 +133,28 @@ TEST_CASE("generated built-ins give the kernels' bits", "[runtime][backend][jit_
     CHECK(generated >= 15);  // as many as when this test was written
 }
 
+// Every Fast op over a dense sweep of all 2^32 words (every 1021st: all
+// exponents, signs, denormals, infinities and NaN payloads, the mantissas
+// well mixed); a binary op's second operand from a set that covers its
+// cases (pow's integer, fractional, huge, tiny, negative and NaN exponents).
+TEST_CASE("generated Fast built-ins give the kernels' bits over a dense sweep of floats", "[runtime][backend][jit_math]") {
+    if (!jit_available()) return;
+    const float seconds[] = {2.0f, 0.5f, 48.0f, -1.3f, 1e-3f, 100.0f, -0.0f, 0x1p-130f, INFINITY, NAN};
+    for (size_t o = 0; o < size_t(Op::Count_); ++o) {
+        const Op op = Op(o);
+        if (ir::op_info(op).fast == ir::FastClass::Exact) continue;
+        const bool binary = ir::op_info(op).arity == 2;
+        Inputs in;
+        for (uint64_t w = 0; w < (uint64_t(1) << 32); w += binary ? 16381 : 1021)
+            for (size_t j = 0; j < (binary ? std::size(seconds) : 1); ++j) {
+                in.a.push_back(uint32_t(w));
+                in.b.push_back(bits(seconds[j]));
+            }
+        for (bool avx2 : {false, true})
+            if (!avx2 || rt::cpu_has_avx2()) compare_backends(op, Precision::Fast, avx2, in);
+    }
+}
+
 // Fast's rsqrt class is native code, not generated math: 1/sqrt and a
 // multiply in Fast, Precise's square root and division where the error
 // report's ablation leaves the class out of the fast ops.

@@ -81,6 +81,34 @@ struct ParsedJobs {
     std::vector<std::string> errors;  // "JOBS:line: error: ..." for malformed lines
 };
 
+// A line's fields as a job, or why they are not one: `VERT FRAG SCENE
+// OUTPUT` by position, or with a stage left out (GL's fixed function) the
+// shaders that remain, each by its name's stage.
+std::string job_fields(const std::vector<std::string>& fields, Job& job) {
+    constexpr const char* kForm =
+        "a job is `[VERT] [FRAG] SCENE OUTPUT` (2 to 4 fields, quoted where they hold a blank; a shader left out "
+        "is GL's fixed function)";
+    if (fields.size() < 2 || fields.size() > 4) return fmt::format("{}; this line has {}", kForm, fields.size());
+    const size_t shaders = fields.size() - 2;
+    job.scene = fields[shaders];
+    job.output = fields[shaders + 1];
+    if (!job.scene.ends_with(".toml"))
+        return fmt::format("{}; '{}', the field before the output, is not a scene file (.toml)", kForm, job.scene);
+    if (Status st = check_image_name(job.output); !st) return st.error().diagnostics.front().message;
+    if (shaders == 2) {
+        job.vertex = fields[0];
+        job.fragment = fields[1];
+    } else if (shaders == 1) {
+        const std::string stage = scene::shader_stage_of(fields[0]);
+        if (stage.empty())
+            return fmt::format("'{}': a job of one shader takes its stage from the name (.vert, .frag, "
+                               "a.vert.glsl); give both shaders, VERT FRAG, to name them by position",
+                               fields[0]);
+        (stage == "vert" ? job.vertex : job.fragment) = fields[0];
+    }
+    return {};
+}
+
 ParsedJobs parse_jobs(const std::string& path, const std::string& text) {
     ParsedJobs out;
     std::istringstream in(text);
@@ -89,16 +117,13 @@ ParsedJobs parse_jobs(const std::string& path, const std::string& text) {
         std::string why;
         auto fields = split_job_line(line, why);
         if (fields && fields->empty()) continue;  // blank or comment
-        if (fields && fields->size() != 4)
-            why = fmt::format("a job is `VERT FRAG SCENE OUTPUT` (4 fields, quoted where they hold a blank); "
-                              "this line has {}", fields->size());
-        if (fields && why.empty())
-            if (Status st = check_image_name((*fields)[3]); !st) why = st.error().diagnostics.front().message;
+        Job job{number, {}, {}, {}, {}};
+        if (fields && why.empty()) why = job_fields(*fields, job);
         if (!why.empty()) {
             out.errors.push_back(Error(why, path, number).str());
             continue;
         }
-        out.jobs.push_back({number, (*fields)[0], (*fields)[1], (*fields)[2], (*fields)[3]});
+        out.jobs.push_back(std::move(job));
     }
     return out;
 }
@@ -117,7 +142,10 @@ public:
         auto key = std::pair{job.vertex, job.fragment};
         auto it = cache_.find(key);
         if (it == cache_.end()) {
-            auto compiled = scene::compile_files({job.vertex}, {job.fragment});
+            auto paths = [](const std::string& p) { return p.empty() ? std::vector<std::string>{} : std::vector{p}; };
+            auto compiled = job.vertex.empty() && job.fragment.empty()
+                                ? scene::unused_main_program()
+                                : scene::compile_files(paths(job.vertex), paths(job.fragment));
             std::vector<uint32_t> initial;
             if (compiled) initial = state_of(*compiled).uniforms;
             // Braces: clang 14 (the sanitizer build) has no aggregate init from parentheses.
@@ -138,6 +166,11 @@ private:
 Status run_job(const Job& job, const ExecOptions& exec, ProgramCache& programs, const InputFiles& all_inputs) {
     auto scene = scene::load_scene(job.scene);
     if (!scene) return scene.error();
+    // No shaders: every draw in GL's fixed function, as `glslrun scene.toml` draws it.
+    if (job.vertex.empty() && job.fragment.empty()) {
+        if (std::string w = scene::fixed_function_warning(*scene); !w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
+        scene::use_fixed_function(*scene);
+    }
     InputFiles inputs = all_inputs;
     inputs.add_scene(*scene);
     if (Status st = inputs.check_output(job.output, "the output"); !st) return st;
@@ -167,7 +200,8 @@ int run_batch_command(const std::string& jobs_path, const ExecOptions& exec) {
     InputFiles inputs;
     inputs.add(jobs_path);
     for (const Job& job : parsed.jobs)
-        for (const std::string* p : {&job.vertex, &job.fragment, &job.scene}) inputs.add(*p);
+        for (const std::string* p : {&job.vertex, &job.fragment, &job.scene})
+            if (!p->empty()) inputs.add(*p);
     ProgramCache programs;
     size_t failed = 0;
     {

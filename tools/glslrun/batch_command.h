@@ -20,7 +20,9 @@ namespace glslrun::cli {
 std::optional<std::vector<std::string>> split_job_line(std::string_view line, std::string& why);
 
 // JOBS holds one job per line, `VERT FRAG SCENE OUTPUT` (paths relative to
-// the current directory; the output's format by its name, as -o). Returns the
+// the current directory; the output's format by its name, as -o); a job of
+// one shader (its stage by its name) or none draws the missing stages with
+// GL's fixed function, as the render command does. Returns the
 // exit status: 0 every job rendered; 1 a job failed or a line is malformed
 // (each error names JOBS:line, and every other job still runs); 2 the job
 // file cannot be read or holds no job.

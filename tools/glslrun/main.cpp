@@ -231,9 +231,10 @@ int batch_main(int argc, char** argv) {
     std::string jobs;
     ExecOptions exec;
     app.add_option("jobs", jobs,
-                   "a file of jobs, one `VERT FRAG SCENE OUTPUT` per line: fields separated by blanks, quoted "
-                   "as in a shell ('a b.png' or \"a b.png\") where they hold one; '#' starts a comment; the "
-                   "output's format by its name (.png, .jpg, .bmp, .tga)")
+                   "a file of jobs, one `[VERT] [FRAG] SCENE OUTPUT` per line (a shader left out: GL's fixed "
+                   "function, generated from the scene, as `glslrun` renders; one shader's stage by its name): "
+                   "fields separated by blanks, quoted as in a shell ('a b.png' or \"a b.png\") where they hold "
+                   "one; '#' starts a comment; the output's format by its name (.png, .jpg, .bmp, .tga)")
         ->required();
     app.add_option("--threads", exec.threads, "worker threads for drawing (default: one per core)")
         ->check(CLI::Range(1, 256));
@@ -295,6 +296,10 @@ int program_cli(int argc, char** argv) {
     app.add_flag("--stats", o.stats,
                  "print vertices, triangles, fragments, time per stage and the built-in state read");
     app.add_flag("--dump-ir", o.dump_ir, "print the program's IR");
+    app.add_option("--dump-fixed-function", o.dump_fixed_function,
+                   "also write the fixed-function stages generated for the scene's draws (a stage left out, "
+                   "program = \"fixed\") to DIR as fixed-function-1.vert, fixed-function-1.frag, ...")
+        ->type_name("DIR");
     app.add_flag("--check-undefined", o.check_undefined,
                  "render on one thread with checks of the operations GLSL leaves undefined (pow of x < 0, "
                  "division by zero, an array index out of range, ...) and print each one found: file:line, "

@@ -22,6 +22,8 @@
 #include "image_output.h"
 #include "output_guard.h"
 #include "progress.h"
+#include "trace_command.h"
+#include "debug/debugger.h"
 #include "debug/recorder.h"
 #include "ir/ir.h"
 #include "raster/fused/pipeline.h"
@@ -55,17 +57,6 @@ std::string lower(std::string text) {
     return text;
 }
 
-// A shader's stage by its name: .vert/.vs and .frag/.fs, also before .glsl
-// (a.vert.glsl); "" when the name does not say.
-std::string stage_by_name(const std::string& path) {
-    fs::path p(path);
-    std::string ext = lower(p.extension().string());
-    if (ext == ".glsl") ext = lower(p.stem().extension().string());
-    if (ext == ".vert" || ext == ".vs") return "vert";
-    if (ext == ".frag" || ext == ".fs") return "frag";
-    return {};
-}
-
 }  // namespace
 
 // What each file is, by its name; a file of no known kind is a usage error.
@@ -78,7 +69,7 @@ Result<std::vector<std::pair<std::string, std::string>>> sort_files(const std::v
     for (const std::string& path : files) {
         if (Status st = scene::check_path(path, "input"); !st) return st.error();
         std::string ext = lower(fs::path(path).extension().string());
-        std::string kind = stage_by_name(path);
+        std::string kind = scene::shader_stage_of(path);
         if (ext == ".toml") {
             if (scenes++) return Error("only one scene file may be given", path);
             kind = "scene";
@@ -149,9 +140,9 @@ Status check_output(const std::string& output, const RenderOptions& o, int buffe
             return Error(fmt::format("-o - writes one image, and the scene draws {} colour buffers (draw_buffers); "
                                      "give a file name", buffers));
         if (o.frames > 1) return Error("-o - writes one image; --frames writes one per frame: give a file name");
-        if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty())
+        if (o.stats || o.bench_frames > 0 || o.dump_ir || !o.compare.empty() || !o.dump_fixed_function.empty())
             return Error("-o - writes the PNG to standard output: it does not combine with --stats, --bench, "
-                         "--dump-ir or --compare, which print there too");
+                         "--dump-ir, --dump-fixed-function or --compare, which print there too");
         return Ok{};
     }
     return check_image_name(output);
@@ -196,8 +187,9 @@ Status check_outputs(const InputFiles& inputs, const std::string& output, int bu
 
 }  // namespace
 
-// Without a vertex shader glslrun links a stand-in for GL's fixed-function
-// vertex stage; an error about the vertex stage or a varying says so.
+// Without a vertex shader the draws run GL's fixed-function vertex stage,
+// generated per draw (the compile here links a stand-in, for the checks);
+// an error about the vertex stage or a varying says so.
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
     CompileOptions options;
     options.defines = o.defines;
@@ -207,10 +199,10 @@ Result<Program> compile_program(const Inputs& in, const RenderOptions& o) {
     Error e = prog.error();
     for (Diagnostic& d : e.diagnostics)
         if (d.message.find("vertex") != std::string::npos || d.message.find("varying") != std::string::npos) {
-            d.message += "\n  note: no vertex shader was given, so glslrun linked a stand-in for GL's fixed-function "
-                         "vertex stage (gl_Position = ftransform(), gl_FrontColor = gl_Color, gl_TexCoord[i] = "
-                         "gl_TextureMatrix[i] * gl_MultiTexCoordi, gl_FogFragCoord); a varying of your own needs a "
-                         ".vert file that writes it";
+            d.message += "\n  note: no vertex shader was given, so the vertex stage is GL's fixed function, "
+                         "generated from the scene's state for each draw: it writes gl_Position, gl_FrontColor and "
+                         "gl_BackColor, the secondary colours, gl_TexCoord[] and gl_FogFragCoord; a varying of your "
+                         "own needs a .vert file that writes it";
             break;
         }
     return e;
@@ -538,7 +530,10 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (o.check_undefined) return run_check_undefined(in, o, *scene, *fb, writes_image ? output : "");
     // No shaders: every draw in GL's fixed function.
     const bool fixed = in.vertex.empty() && in.fragment.empty();
-    if (fixed) scene::use_fixed_function(*scene);
+    if (fixed) {
+        if (std::string w = scene::fixed_function_warning(*scene); !w.empty()) fmt::print(stderr, "{}\n", w);
+        scene::use_fixed_function(*scene);
+    }
     auto prog = fixed ? scene::unused_main_program() : compile_program(in, o);
     if (!prog) return fail(prog.error());
     set_exec_options(*prog, o);  // before the passes' programs copy them
@@ -562,6 +557,12 @@ int render(const Inputs& in, const RenderOptions& o) {
     if (o.bench_frames > 0) {
         bench.once_s = {{"output", output_ms / 1e3}, {"llvm_compile", prog->jit_compile_seconds()}};
         std::fputs(scene::format_bench(bench).c_str(), stdout);
+    }
+    if (!o.dump_fixed_function.empty()) {
+        // A render with a probe on the draws' programs names the stages as trace does.
+        auto stages = debug::generated_stages(*prog, *prog, *scene, *fb);
+        if (!stages) return fail(stages.error());
+        if (int status = dump_fixed_function(*stages, o.dump_fixed_function, in, *scene); status != 0) return status;
     }
     if (!o.compare.empty()) return compare_with(scene::read_framebuffer(*fb), o, scene::to_rgba8(scene->clear_color));
     return 0;
@@ -637,7 +638,7 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
     // Two images: no shader or scene in sight, so no message about them.
     bool only_images = !files.empty() && std::none_of(files.begin(), files.end(), [](const std::string& f) {
         std::string ext = lower(fs::path(f).extension().string());
-        return ext == ".toml" || !stage_by_name(f).empty() || ext == ".glsl";
+        return ext == ".toml" || !scene::shader_stage_of(f).empty() || ext == ".glsl";
     });
     if (!o.compare.empty() && only_images && o.stage.empty()) return compare_files(files, o);
     if (auto kinds = sort_files(files, o.stage); !kinds) return fail(kinds.error(), kToolError);
@@ -666,6 +667,11 @@ int run_render_command(const std::vector<std::string>& files, const RenderOption
                               !o.error_report.empty() || in->scene.empty()))
         return fail(Error("--check-undefined renders the scene once with checks (shaders and a scene file): it does "
                           "not combine with --frames, --bench, --compare, --stats, --dump-ir or --error-report"),
+                    kToolError);
+    if (!o.dump_fixed_function.empty() &&
+        (in->scene.empty() || o.frames > 0 || o.check_undefined || !o.error_report.empty()))
+        return fail(Error("--dump-fixed-function writes the stages generated for a scene's draws while it renders "
+                          "the scene once (a scene file; not with --frames, --check-undefined or --error-report)"),
                     kToolError);
     if (o.frames == 0 && (!o.time_uniform.empty() || o.frames_per_second > 0))
         return fail(Error("--time-uniform and --fps set what --frames animates: give --frames N too"), kToolError);

@@ -15,6 +15,7 @@ struct RenderOptions {
     std::vector<std::string> defines;  // -D NAME[=VALUE]
     std::vector<std::string> include_dirs;  // -I DIR
     std::string error_report;  // --error-report DIR: measure `precision` against Reference
+    std::string dump_fixed_function;  // --dump-fixed-function DIR: the generated stages' sources
     int tolerance = 0;
     double min_fraction = 1.0;  // --compare passes when this fraction of the covered pixels is within tolerance
     unsigned threads = 0;  // draw() worker threads; 0: one per core
@@ -51,7 +52,7 @@ Result<scene::Scene> load_sized_scene(const Inputs& in, const RenderOptions& o);
 Status check_image_name(const std::string& output);
 
 // The program of `in`'s shaders with o.defines; without a vertex shader, an
-// error about a varying notes the fixed-function stand-in that was linked.
+// error about a varying notes that the vertex stage is GL's fixed function.
 Result<Program> compile_program(const Inputs& in, const RenderOptions& o);
 
 // What --stats prints: counts, time per stage, the built-in state read (matrices as rows), the textures.

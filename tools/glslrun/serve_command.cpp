@@ -205,9 +205,10 @@ struct ServeArgs {
 int run_serve(const ServeArgs& a) {
     auto in = classify(a.files);
     if (!in) return fail(in.error(), kToolError);
-    if (in->scene.empty() || in->fragment.empty() || !in->image.empty())
-        return fail(Error("serve needs a fragment shader (.frag), optionally a vertex shader (.vert), and a scene "
-                          "file (.toml)"), kToolError);
+    if (in->scene.empty() || (in->fragment.empty() && in->vertex.empty()) || !in->image.empty())
+        return fail(Error("serve needs the shaders to edit (.vert, .frag: a stage left out is GL's fixed function, "
+                          "generated from the scene) and a scene file (.toml)"),
+                    kToolError);
     auto scene_text = scene::read_text_file(in->scene, "scene file", scene::kMaxSceneFileBytes);
     if (!scene_text) return fail(scene_text.error(), kResultError);
     std::string page_dir = a.options.page_dir.empty() ? serve_page_dir() : a.options.page_dir;
@@ -262,7 +263,9 @@ int serve_main(int argc, char** argv) {
                  "a pixel's history and trace, the NaN findings and the error heat map",
                  "glslrun serve"};
     ServeArgs a;
-    app.add_option("files", a.files, "shader.vert shader.frag scene.toml (the user's files are only read)")
+    app.add_option("files", a.files,
+                   "shader.vert shader.frag scene.toml (either shader may be left out: GL's fixed function; the "
+                   "user's files are only read)")
         ->required();
     app.add_option("--port", a.options.port, "the port on 127.0.0.1 (default 8321; 0 picks a free one)")
         ->check(CLI::Range(0, 65535));

@@ -75,6 +75,12 @@ private:
 // pass of every object (with their states); passes that would draw with
 // the command line's program become fixed ones.
 void use_fixed_function(Scene& scene);
+// What a scene drawn without shaders (`glslrun scene.toml`) would show as
+// nothing but GL's defaults: no lighting, fog, colour sum, texture unit or
+// texgen on, no colour of its own (an object's, a mesh's, a [current] one)
+// and no `program = "fixed"` pass: every object unlit white. A warning that
+// says what to give, or "" when the scene sets fixed-function state.
+std::string fixed_function_warning(const Scene& scene);
 // The program `glslrun scene.toml` hands ScenePrograms after
 // use_fixed_function: no pass draws with it.
 Result<Program> unused_main_program();
@@ -100,6 +106,11 @@ Result<DrawStats> render_scene(Program& program, const Scene& scene, Framebuffer
 // of `glslrun a.vert a.frag scene.toml` holds it (top row first): colour
 // buffer 0 when the scene draws to several.
 Result<Image> render_image(Program& program, const Scene& scene);
+
+// The stage a shader file's name gives, as the command line reads it: "vert"
+// for .vert and .vs, "frag" for .frag and .fs (also before .glsl:
+// a.vert.glsl), any case; "" when the name does not say.
+std::string shader_stage_of(const std::string& path);
 
 // Reads shader files; each source is named by its path, so diagnostics say
 // "path:line: error: ...", as on the command line.

@@ -350,34 +350,51 @@ void PipelineEmitter::define_inputs() {
     InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty())};
     b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), state.last_prim);
     b_.CreateStore(b_.getFalse(), state.last_nan);
+    // Quads run together only where their primitive has no NaN inputs:
+    // the strict version is emitted for single quads only (a copy per width
+    // cost LLVM a fifth more time on a program of several pipelines).
     auto same_primitive = [&](llvm::Value* index, llvm::Value* next) {
-        return b_.CreateICmpEQ(batch_field(batch, offsetof(QuadBatch, prim), ptr_, index),
-                               batch_field(batch, offsetof(QuadBatch, prim), ptr_, next));
+        llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
+        llvm::Value* same = b_.CreateICmpEQ(prim, batch_field(batch, offsetof(QuadBatch, prim), ptr_, next));
+        return b_.CreateAnd(same, b_.CreateNot(primitive_nan(state, prim)));
     };
     for_each_quad(batch, [&](llvm::Value* index, const Quad& q) { store_inputs(state, index, q); }, same_primitive);
     b_.CreateRetVoid();
 }
 
-// The inputs of quad `index` (and the next, width_ 8): the primitive's NaN
-// test unless it is the last quad's, then the plain or the strict version.
-void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index, const Quad& q) {
+// Whether `prim` has NaN inputs (nan_inputs()), tested only where it is
+// not the last primitive tested.
+llvm::Value* PipelineEmitter::primitive_nan(const InputsState& state, llvm::Value* prim) {
     llvm::BasicBlock* test = llvm::BasicBlock::Create(b_.getContext(), "nan_test", fn_);
     llvm::BasicBlock* tested = llvm::BasicBlock::Create(b_.getContext(), "nan_tested", fn_);
-    b_.CreateCondBr(b_.CreateICmpEQ(q.prim, b_.CreateLoad(ptr_, state.last_prim)), tested, test);
+    b_.CreateCondBr(b_.CreateICmpEQ(prim, b_.CreateLoad(ptr_, state.last_prim)), tested, test);
     b_.SetInsertPoint(test);
-    b_.CreateStore(nan_inputs(q), state.last_nan);
-    b_.CreateStore(q.prim, state.last_prim);
+    b_.CreateStore(nan_inputs(Quad{prim, nullptr, nullptr, nullptr, nullptr}), state.last_nan);
+    b_.CreateStore(prim, state.last_prim);
     b_.CreateBr(tested);
     b_.SetInsertPoint(tested);
-    // Two versions: the one that orders NaNs (add, mul) runs only for
-    // primitives with NaNs in their inputs.
-    llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
-    llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
+    return b_.CreateLoad(b_.getInt1Ty(), state.last_nan);
+}
+
+// The inputs of quad `index` (and the next one or three, width_ 8 or 16,
+// whose primitive has no NaN inputs: plain): the primitive's NaN test,
+// then the plain or the strict version.
+void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index, const Quad& q) {
     llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
-    b_.CreateCondBr(b_.CreateLoad(b_.getInt1Ty(), state.last_nan), strict, plain);
-    for (llvm::BasicBlock* block : {plain, strict}) {
+    llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
+    std::vector<llvm::BasicBlock*> versions{plain};
+    if (width_ == 4) {
+        // Two versions: the one that orders NaNs (add, mul) runs only for
+        // primitives with NaNs in their inputs.
+        llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
+        b_.CreateCondBr(primitive_nan(state, q.prim), strict, plain);
+        versions.push_back(strict);
+    } else {
+        b_.CreateBr(plain);
+    }
+    for (llvm::BasicBlock* block : versions) {
         b_.SetInsertPoint(block);
-        strict_ = block == strict;
+        strict_ = block != plain;
         // All values before the first store: the stores could alias the
         // primitive for all LLVM knows, which would reload its fields.
         Weights w = weights(q);

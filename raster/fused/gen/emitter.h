@@ -135,6 +135,7 @@ private:
         llvm::AllocaInst *last_prim, *last_nan;
     };
     void store_inputs(const InputsState& state, llvm::Value* index, const Quad& q);
+    llvm::Value* primitive_nan(const InputsState& state, llvm::Value* prim);
     // A quad's depth and colour values to store.
     struct QuadValues {
         llvm::Value* z;
@@ -152,7 +153,8 @@ private:
                                 llvm::Value* upper_slot, llvm::Value* lower_mask, llvm::Value* upper_mask);
     llvm::Value* pack_rgba8(const std::array<llvm::Value*, 4>& rgba);
     llvm::Value* stored_byte(llvm::Value* c);
-    llvm::Value* pack_batch(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels);
+    std::array<llvm::Value*, 4> convert_batch(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels,
+                                              bool pack);
     void load_target(llvm::Value* target) {
         target_.depth = b_.CreateLoad(ptr_, at(target, offsetof(Target, depth)));
         target_.stencil = b_.CreateLoad(ptr_, at(target, offsetof(Target, stencil)));

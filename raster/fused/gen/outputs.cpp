@@ -303,21 +303,31 @@ llvm::Value* PipelineEmitter::stored_byte(llvm::Value* c) {
     return b_.CreateFPToSI(b_.CreateFSub(rounded, f(kRound)), vi);
 }
 
-// The RGBA8 words of every lane of the batch for the colour buffer whose
-// outputs are the `channels` registers of `regs` from `first` on, into a
-// slot of kLanes words: one conversion of whole registers (16 lanes a
-// 512-bit vector) instead of one per quad. Lanes past the batch's quads
-// are converted too, never stored.
-llvm::Value* PipelineEmitter::pack_batch(const std::vector<llvm::Value*>& regs, size_t first, uint32_t channels) {
+// The RGBA8 bytes of every lane of the batch for the colour buffer whose
+// outputs are the `channels` registers of `regs` from `first` on, into
+// slots of kLanes words: one conversion of whole registers (16 lanes a
+// 512-bit vector) instead of one per quad. With `pack`, one slot of the
+// lanes' RGBA8 words ([0]); else one slot per channel. Lanes past the
+// batch's quads are converted too, never stored.
+std::array<llvm::Value*, 4> PipelineEmitter::convert_batch(const std::vector<llvm::Value*>& regs, size_t first,
+                                                           uint32_t channels, bool pack) {
     auto* batch_f = llvm::FixedVectorType::get(f32_, kLanes);
-    std::array<llvm::Value*, 4> rgba;
-    for (uint32_t k = 0; k < 4; ++k)
-        rgba[k] = stored_byte(k < channels ? static_cast<llvm::Value*>(b_.CreateAlignedLoad(batch_f, regs[first + k], llvm::Align(16)))
-                                           : llvm::ConstantFP::get(batch_f, 0.0));
-    llvm::AllocaInst* slot = b_.CreateAlloca(llvm::ArrayType::get(i32_, kLanes));
-    slot->setAlignment(llvm::Align(64));
-    b_.CreateAlignedStore(pack_rgba8(rgba), slot, llvm::Align(64));
-    return slot;
+    std::array<llvm::Value*, 4> bytes;
+    for (uint32_t k = 0; k < 4; ++k) {
+        llvm::Value* c = llvm::ConstantFP::get(batch_f, 0.0);
+        if (k < channels) c = b_.CreateAlignedLoad(batch_f, regs[first + k], llvm::Align(16));
+        bytes[k] = stored_byte(c);
+    }
+    auto slot_of = [&](llvm::Value* words) -> llvm::Value* {
+        llvm::AllocaInst* slot = b_.CreateAlloca(llvm::ArrayType::get(i32_, kLanes));
+        slot->setAlignment(llvm::Align(64));
+        b_.CreateAlignedStore(words, slot, llvm::Align(64));
+        return slot;
+    };
+    if (pack) return {slot_of(pack_rgba8(bytes)), nullptr, nullptr, nullptr};
+    std::array<llvm::Value*, 4> slots;
+    for (size_t k = 0; k < 4; ++k) slots[k] = slot_of(bytes[k]);
+    return slots;
 }
 
 // outputs(batch, regs, alive, target): FragmentStage::write_outputs, quad
@@ -335,17 +345,21 @@ void PipelineEmitter::define_outputs() {
     b_.CreateStore(b_.getInt64(0), written_);
     const bool late_depth = ops_.depth_test && !key_.early_depth;
     const bool rgba8 = !ops_.float_color && writes_color(key_);
-    // Where every live lane's colour is stored as the shader made it (no
-    // test after the shader, nothing read back), the batch's colours are
-    // converted before the quads' stores.
-    const bool ahead = rgba8 && !late_depth && !ops_.alpha_test && !ops_.stencil_test && !reads_color(key_);
-    std::array<llvm::Value*, kMaxDrawBuffers> packed{};
-    for (size_t b = 0, first = key_.color_channels + (key_.depth_output ? 1 : 0); ahead && b < packed.size(); ++b) {
+    // RGBA8 colours are converted for the whole batch before the quads'
+    // writes; where every live lane's colour is stored as the shader made it
+    // (no test after the shader, nothing read back), packed into words too.
+    const bool packed = rgba8 && !late_depth && !ops_.alpha_test && !ops_.stencil_test && !reads_color(key_);
+    std::array<std::array<llvm::Value*, 4>, kMaxDrawBuffers> converted{};
+    for (size_t b = 0, first = key_.color_channels + (key_.depth_output ? 1 : 0); rgba8 && b < converted.size(); ++b) {
         const uint32_t channels = b == 0 ? key_.color_channels : key_.more_channels[b];
         if (channels == 0) continue;
-        packed[b] = pack_batch(regs, b == 0 ? 0 : first, channels);
+        converted[b] = convert_batch(regs, b == 0 ? 0 : first, channels, packed);
         if (b > 0) first += channels;
     }
+    auto quad_words = [&](llvm::Value* slot, llvm::Value* index) -> llvm::Value* {
+        return b_.CreateAlignedLoad(llvm::FixedVectorType::get(i32_, 4),
+                                    b_.CreateInBoundsGEP(i32_, slot, b_.CreateShl(index, 2)), llvm::Align(16));
+    };
     for_each_quad(fn_->getArg(0), [&](llvm::Value* index, const Quad& q) {
         llvm::Value* shift = b_.CreateShl(index, 2);
         llvm::Value* lanes = b_.CreateTrunc(b_.CreateAnd(b_.CreateLShr(fn_->getArg(2), shift), b_.getInt64(0xF)), i32_);
@@ -370,12 +384,12 @@ void PipelineEmitter::define_outputs() {
             const uint32_t channels = b == 0 ? key_.color_channels : key_.more_channels[b];
             if (channels == 0) continue;
             QuadValues colour = v;
-            if (b > 0) colour.rgba = color_values(regs, first, channels, index), first += channels;
             llvm::Value* words = nullptr;
-            if (packed[b])
-                words = b_.CreateAlignedLoad(llvm::FixedVectorType::get(i32_, 4),
-                                             b_.CreateInBoundsGEP(i32_, packed[b], b_.CreateShl(index, 2)),
-                                             llvm::Align(16));
+            if (!rgba8 && b > 0) colour.rgba = color_values(regs, first, channels, index);
+            else if (packed) words = quad_words(converted[b][0], index);
+            else if (rgba8)
+                for (size_t k = 0; k < 4; ++k) colour.rgba[k] = quad_words(converted[b][k], index);
+            if (b > 0) first += channels;
             if (rgba8) write_rgba8_quad(q, colour, lanes, target_.color[b], words);
             else write_float_lanes(q, colour, lanes, target_.color[b]);
         }

@@ -297,7 +297,9 @@ function listing(trace) {
   const out = el("div", {});
   for (const [file, lines] of byFile) {
     const source = state.files.find((f) => f.name === file);
-    const texts = source ? source.text.split("\n") : null;
+    // A generated fixed-function stage is not a file of the page: the trace carries its text.
+    const generated = (state.generated || []).find((g) => g.name === file);
+    const texts = source ? source.text.split("\n") : generated ? generated.text.split("\n") : null;
     const table = el("table", { class: "listing", "data-file": file },
                      el("colgroup", {}, el("col", { class: "n" }), el("col", { class: "src" }), el("col", {})));
     const numbers = texts ? texts.map((_, i) => i + 1) : [...lines.keys()].sort((a, b) => a - b);
@@ -309,7 +311,9 @@ function listing(trace) {
                       el("td", { class: "n" }, n), el("td", { class: "src" }, texts ? texts[n - 1] : ran.text),
                       el("td", { class: "values" }, ran ? ran.notes.join("\n") : "")));
     }
-    out.append(el("div", { class: "kv" }, file), table);
+    const about = generated ? ` (GL's fixed-function ${generated.stage} stage, generated from the scene's state; ` +
+                              `glslrun trace --dump-fixed-function DIR writes it to DIR/${generated.file})` : "";
+    out.append(el("div", { class: "kv" }, file + about), table);
   }
   return out;
 }
@@ -344,6 +348,7 @@ function invocation(trace) {
 function showTrace(t) {
   const panel = $("trace");
   panel.replaceChildren();
+  state.generated = t.generated || [];
   if (t.error) {
     panel.append(el("div", { class: "kv" }, t.error));
     return;
@@ -368,7 +373,7 @@ function showTrace(t) {
     d.append(otherFields(v, ["draw", "vertex", "pass", "program", "matches_render", "trace"]), invocation(v.trace));
     panel.append(d);
   }
-  panel.append(otherFields(t, ["pixel", "scissored", "fragments", "vertices"]));
+  panel.append(otherFields(t, ["pixel", "scissored", "fragments", "vertices", "generated"]));
 }
 
 async function tracePixel(event) {
