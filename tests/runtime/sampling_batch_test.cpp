@@ -389,8 +389,10 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
             } else if (texture && texture->complete()) {
                 rt::LaneLookup lane;
                 lane.coord = {operand_before(0, i), operand_before(1, i), 0.0f};
-                lane.ddx = {operand_before(info.ddx_at(), i), operand_before(info.ddx_at() + 1, i), 0.0f};
-                lane.ddy = {operand_before(info.ddy_at(), i), operand_before(info.ddy_at() + 1, i), 0.0f};
+                // Precise's one level of detail per 2x2 quad: its first lane's derivatives.
+                const int d = rt::derivative_lane(i, rt::SamplingRules::Common, false);
+                lane.ddx = {operand_before(info.ddx_at(), d), operand_before(info.ddx_at() + 1, d), 0.0f};
+                lane.ddy = {operand_before(info.ddy_at(), d), operand_before(info.ddy_at() + 1, d), 0.0f};
                 lane.lod = operand_before(info.lod_at(), i);
                 lane.bias = true;
                 rt::sample_complete_lane(*texture, lane, want);
