@@ -374,6 +374,8 @@ template <TextureWrap kWrap, bool kRect>
     }
 }
 
+#include "runtime/sampling_batch_lanes8.h"  // the eight-lane steps of the direct lookups below
+
 // The bilinear lookup of one 2D image (or rectangle) whose wraps cannot
 // meet the border, without a depth comparison (a full-screen pass's or a
 // magnified surface's common case), eight lanes at a time from the
@@ -385,8 +387,6 @@ GLSLRUN_AVX2 void bilinear_direct(const TextureImage& image, const BatchLookup& 
                                   float (*out)[kLanes]) {
     const int w = image.width, h = image.height;  // w * h below 2^24 (limits.md): no overflow
     const glm::vec4* texels = image.texels.data();
-    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());  // canonical_nan()'s
     alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes], at[4][kLanes];
     alignas(32) float ax[kLanes], ay[kLanes];
     for (int g = 0; g < kLanes; g += 8) {
@@ -394,21 +394,10 @@ GLSLRUN_AVX2 void bilinear_direct(const TextureImage& image, const BatchLookup& 
         if (!bits) continue;
         linear8<kS, kRect>(lk.coord[0], w, g, x0, x1, ax);
         linear8<kT, kRect>(lk.coord[1], h, g, y0, y1, ay);
-        for (int k = g; k < g + 8; ++k) {
-            const int row0 = y0[k] * w, row1 = y1[k] * w;
-            at[0][k] = row0 + x0[k];
-            at[1][k] = row0 + x1[k];
-            at[2][k] = row1 + x0[k];
-            at[3][k] = row1 + x1[k];
-        }
+        corners8(x0, x1, y0, y1, w, g, at);
         __m256 plane[4];
         plane8(texels, at, ax, ay, g, plane);
-        const __m256 take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), bit), bit));
-        #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) {
-            const __m256 v = _mm256_blendv_ps(plane[c], nan, _mm256_cmp_ps(plane[c], plane[c], _CMP_UNORD_Q));
-            _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), v, take));
-        }
+        store8(plane, mask8(bits), g, out);
     }
 }
 
@@ -429,21 +418,14 @@ GLSLRUN_AVX2 bool sample_bilinear_direct(const Texture& texture, const BatchLook
         bilinear_direct<ClampToEdge, ClampToEdge, true>(image, lk, lanes, out);
         return true;
     }
-    const auto with_t = [&]<TextureWrap kS>() {
-        switch (st.wrap_t) {
-        case Repeat: bilinear_direct<kS, Repeat, false>(image, lk, lanes, out); return true;
-        case MirroredRepeat: bilinear_direct<kS, MirroredRepeat, false>(image, lk, lanes, out); return true;
-        case ClampToEdge: bilinear_direct<kS, ClampToEdge, false>(image, lk, lanes, out); return true;
-        default: return false;  // CLAMP and CLAMP_TO_BORDER may meet the border
-        }
-    };
-    switch (st.wrap_s) {
-    case Repeat: return with_t.template operator()<Repeat>();
-    case MirroredRepeat: return with_t.template operator()<MirroredRepeat>();
-    case ClampToEdge: return with_t.template operator()<ClampToEdge>();
-    default: return false;
-    }
+    return with_inner_wraps(st, [&]<TextureWrap kS, TextureWrap kT>() {
+        bilinear_direct<kS, kT, false>(image, lk, lanes, out);
+    });
 }
+
+#include "runtime/sampling_batch_cube.h"  // cube maps, eight lanes at a time
+#include "runtime/sampling_batch_border.h"  // 2D bilinear meeting the border colour, eight lanes at a time
+#include "runtime/sampling_batch_shadow.h"  // shadow maps (2D depth comparisons), eight lanes at a time
 #undef GLSLRUN_AVX2
 #endif
 
@@ -758,7 +740,9 @@ template <bool kAvx2>
                                        float (*out)[kLanes]) {
 #if defined(__x86_64__) && defined(__GNUC__)
     if constexpr (kAvx2)
-        if (sample_bilinear_direct(texture, lk, lanes, out)) return;
+        if (sample_bilinear_direct(texture, lk, lanes, out) || sample_cube_direct(texture, lk, lanes, out) ||
+            sample_shadow_direct(texture, lk, lanes, out) || sample_border_direct(texture, lk, lanes, out))
+            return;
 #endif
     Lanes l;
     if (lk.ref)
