@@ -10,8 +10,10 @@
 // lane, four channels in one register. Under AVX2, a colour texture's
 // bilinear lookup of one 2D image (or rectangle) whose wraps keep every
 // texel in the image goes eight lanes at a time from the coordinates to the
-// result, with no lane array between the steps (bilinear_direct()). Every
-// value comes from the same functions as sample_complete_lane()'s
+// result, with no lane array between the steps (bilinear_direct()); so do
+// cube maps (a pass per face and level a group of eight lanes reads),
+// shadow maps and bilinear lookups that meet the border colour
+// (sampling_batch_cube.h, _shadow.h, _border.h). Every value comes from the same functions as sample_complete_lane()'s
 // (runtime/sampling_rules.h), so both give the same bits;
 // tests/runtime/sampling_batch_test.cpp compares them.
 #pragma once
