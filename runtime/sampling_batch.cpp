@@ -18,7 +18,7 @@ namespace {
 
 // What each lane carries from one step to the next.
 struct Lanes {
-    alignas(32) float s[kLanes], t[kLanes];  // (s, t) on the image (cube: on the face)
+    alignas(32) float s[kLanes], t[kLanes], r[kLanes];  // (s, t, r) on the image (cube: (s, t) on the face)
     alignas(32) int face[kLanes];
     alignas(32) float lambda[kLanes];
     alignas(32) int level[2][kLanes];    // level[1] < 0: one level only
@@ -28,7 +28,7 @@ struct Lanes {
     // Per level pass: the lane's image, its size, and the texel indices and weights.
     const TextureImage* image[kLanes];  // null where the lane is skipped
     const TextureImage* sized[kLanes];  // the image whose size the lane's indices use: never null
-    alignas(32) int width[kLanes], height[kLanes];
+    alignas(32) int width[kLanes], height[kLanes], depth[kLanes];
     alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes], z0[kLanes], z1[kLanes];
     alignas(32) float ax[kLanes], ay[kLanes], az[kLanes];
     alignas(32) float rgba[4][kLanes], second[4][kLanes];  // results, channel by channel
@@ -56,10 +56,12 @@ void cube_coords(const BatchLookup& lk, Lanes& l) {
 void plain_coords(const BatchLookup& lk, Lanes& l) {
     const float* __restrict cs = lk.coord[0];
     const float* __restrict ct = lk.coord[1];
+    const float* __restrict cr = lk.coord[2];
     for (int i = 0; i < kLanes; ++i) {
         l.face[i] = 0;
         l.s[i] = cs[i];
         l.t[i] = ct[i];
+        l.r[i] = cr[i];
     }
 }
 
@@ -80,10 +82,13 @@ void lambdas(const Texture& texture, const BatchLookup& lk, Lanes& l) {
             const int dims = texture_dims(texture.target());
             const float* __restrict dxs = lk.ddx[0];
             const float* __restrict dxt = lk.ddx[1];
+            const float* __restrict dxr = lk.ddx[2];
             const float* __restrict dys = lk.ddy[0];
             const float* __restrict dyt = lk.ddy[1];
+            const float* __restrict dyr = lk.ddy[2];
+            // r's derivatives count for 3D textures only (scaled_length() drops the axes past dims).
             for (int i = 0; i < kLanes; ++i)
-                lambda[i] = lod_rule({dxs[i], dxt[i], 0.0f}, {dys[i], dyt[i], 0.0f}, size, dims);
+                lambda[i] = lod_rule({dxs[i], dxt[i], dxr[i]}, {dys[i], dyt[i], dyr[i]}, size, dims);
         }
         if (lk.bias)
             for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
@@ -339,6 +344,42 @@ GLSLRUN_AVX2 void blend8(const glm::vec4* texels, const int (*at)[kLanes], const
     for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], mix8(near[c], far[c], a, ia));
 }
 
+// One axis's LINEAR indices and weight for lanes g..g+7: linear_lanes()'s
+// (or rect_lanes()'s) values, REPEAT's far lanes (NaN, huge coordinates)
+// through repeat_index() as there.
+template <TextureWrap kWrap, bool kRect>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear8(const float* __restrict s, int n, int g, int* __restrict i0,
+                                                        int* __restrict i1, float* __restrict a) {
+    if constexpr (!kRect && kWrap == TextureWrap::Repeat) {
+        alignas(32) int raw[8];
+        int far = 0;
+        for (int k = 0; k < 8; ++k) {
+            const float u = repeat_position<true>(s[g + k], float(n));
+            raw[k] = floor_int<true>(u);
+            a[g + k] = u - floor_t<true>(u);
+            i0[g + k] = repeat_near(raw[k], n);
+            i1[g + k] = repeat_near(raw[k] + 1, n);
+            far |= int(!repeat_is_near(raw[k], n)) | int(!repeat_is_near(raw[k] + 1, n));
+        }
+        if (far)
+            for (int k = 0; k < 8; ++k) {
+                i0[g + k] = repeat_index(raw[k], n);
+                i1[g + k] = repeat_index(raw[k] + 1, n);
+            }
+    } else {
+        for (int k = g; k < g + 8; ++k) {
+            const LinearAxis axis = kRect ? rect_linear_axis<kWrap, true>(s[k], n) : linear_axis<kWrap, true>(s[k], n);
+            i0[k] = axis.i0;
+            i1[k] = axis.i1;
+            a[k] = axis.a;
+        }
+    }
+}
+
+#include "runtime/sampling_batch_lanes8.h"  // the eight-lane steps of the lookups below
+
+#include "runtime/sampling_batch_cube.h"  // cube maps, eight lanes at a time
+#include "runtime/sampling_batch_shadow.h"  // shadow maps (2D depth comparisons), eight lanes at a time
 #undef GLSLRUN_AVX2
 #endif
 
@@ -362,7 +403,8 @@ GLSLRUN_AVX2 void blend8(const glm::vec4* texels, const int (*at)[kLanes], const
 // the others lane by lane.
 void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const int* level, const int* take,
                    float (*out)[kLanes]) {
-    const bool dims2 = texture_dims(texture.target()) > 1;
+    const int dims = texture_dims(texture.target());
+    const bool dims2 = dims > 1;
     const TextureImage* faces[6] = {};
     for (int f = 0; f < texture.faces() && f < 6; ++f) faces[f] = texture.levels(f).data();
     int any_linear = 0, any_nearest = 0;
@@ -373,21 +415,24 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
         l.sized[i] = image;
         l.width[i] = image->width;
         l.height[i] = image->height;
+        l.depth[i] = image->depth;
         any_linear |= take[i] & l.linear[i];
         any_nearest |= take[i] & (l.linear[i] ^ 1);
     }
     const SamplerState& st = texture.sampler;
-    alignas(32) int nx[kLanes], ny[kLanes];
+    alignas(32) int nx[kLanes], ny[kLanes], nz[kLanes];
     if (any_nearest) {
         axis_indices(st.wrap_s, false, l.s, LaneSizes{l.width}, nx, nullptr, nullptr);
         if (dims2) axis_indices(st.wrap_t, false, l.t, LaneSizes{l.height}, ny, nullptr, nullptr);
+        if (dims > 2) axis_indices(st.wrap_r, false, l.r, LaneSizes{l.depth}, nz, nullptr, nullptr);
     }
     if (any_linear) {
         axis_indices(st.wrap_s, true, l.s, LaneSizes{l.width}, l.x0, l.x1, l.ax);
         if (dims2) axis_indices(st.wrap_t, true, l.t, LaneSizes{l.height}, l.y0, l.y1, l.ay);
+        if (dims > 2) axis_indices(st.wrap_r, true, l.r, LaneSizes{l.depth}, l.z0, l.z1, l.az);
     }
 #if defined(__SSE2__)
-    const bool four = any_linear && dims2 && !proto.compare && !may_border(st.wrap_s) && !may_border(st.wrap_t);
+    const bool four = any_linear && dims == 2 && !proto.compare && !may_border(st.wrap_s) && !may_border(st.wrap_t);
 #else
     const bool four = false;
 #endif
@@ -419,8 +464,8 @@ void sample_levels(const Texture& texture, const Lookup& proto, Lanes& l, const 
             }
             const TextureImage& image = *l.image[i];
             lk.ref = l.ref[i];
-            if (!l.linear[i]) put(out, i, fetch(lk, image, nx[i], dims2 ? ny[i] : 0, 0));
-            else put(out, i, linear_lane(lk, image, l, i, dims2 ? 2 : 1));
+            if (!l.linear[i]) put(out, i, fetch(lk, image, nx[i], dims2 ? ny[i] : 0, dims > 2 ? nz[i] : 0));
+            else put(out, i, linear_lane(lk, image, l, i, dims));
         }
     }
 }
@@ -629,7 +674,7 @@ void sample_levels_of_lanes(const Texture& texture, const BatchLookup& lk, const
     const Lookup proto{&texture, &st, 0, texture_dims(texture.target()), glm::vec3(0.0f),
                        texture.depth() && st.compare, 0.0f};
     const int u = uniform_lane(l, active);
-    const float* const coord[3] = {l.s, l.t, nullptr};
+    const float* const coord[3] = {l.s, l.t, l.r};
     const auto level = [&](int k, const int* take, float (*out)[kLanes]) {
         if (u < 0) return sample_levels(texture, proto, l, l.level[k], take, out);
         const TextureImage& image = texture.levels(l.face[u])[size_t(l.level[k][u])];
@@ -651,6 +696,11 @@ void sample_levels_of_lanes(const Texture& texture, const BatchLookup& lk, const
 template <bool kAvx2>
 [[gnu::always_inline]] inline void run(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
                                        float (*out)[kLanes]) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if constexpr (kAvx2)
+        if (sample_cube_direct(texture, lk, lanes, out) || sample_shadow_direct(texture, lk, lanes, out))
+            return;
+#endif
     Lanes l;
     if (lk.ref)
         for (int i = 0; i < kLanes; ++i) l.ref[i] = unorm(lk.ref[i]);
@@ -688,10 +738,8 @@ __attribute__((target("avx2"), flatten)) void run_avx2(const Texture& texture, c
 }  // namespace
 
 bool batch_samples(const Texture& texture) {
-    // Array textures (a layer per lane) and 3D textures whose lanes choose
-    // their own levels keep the per-lane path.
-    if (texture.target() == TextureTarget::Tex1DArray || texture.target() == TextureTarget::Tex2DArray) return false;
-    return texture.target() != TextureTarget::Tex3D || one_image(texture);
+    // Array textures (a layer per lane) keep the per-lane path.
+    return texture.target() != TextureTarget::Tex1DArray && texture.target() != TextureTarget::Tex2DArray;
 }
 
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2) {

@@ -69,10 +69,6 @@ struct Operands {
     alignas(32) float coord[3][rt::kLanes], ddx[3][rt::kLanes], ddy[3][rt::kLanes], ref[rt::kLanes], lod[rt::kLanes];
 };
 
-// Compares sample_batch() with sample_complete_lane() on one batch.
-// `shared`: every lane has lane 0's derivatives and LOD (a cube map's lanes
-// on the +X face), so that the lanes choose one face and level(s), as on a
-// smooth surface: the batch then samples one image per level.
 // A rectangle's coordinates are in texels: spread over the image and past
 // its edges, often on a texel's edge or centre, sometimes an extreme.
 float rect_coordinate(std::mt19937& rng, int size) {
@@ -83,7 +79,44 @@ float rect_coordinate(std::mt19937& rng, int size) {
     return std::uniform_real_distribution<float>(-2.0f, float(size) + 2.0f)(rng);
 }
 
-void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::TexLod lod_kind, bool shared = false) {
+// Compares sample_batch() with sample_complete_lane() on one batch.
+// How its lanes relate (`spread`): independent; sharing lane 0's derivatives and
+// LOD (a cube map's lanes on the +X face: one face and level(s), one image
+// per level for the batch); or a smooth surface's, whose LOD
+// drifts from lane to lane across level boundaries and whose cube
+// directions fan out around an edge or a corner of the cube, so that groups
+// of lanes straddle levels and faces.
+enum class Spread { Random, Shared, Smooth };
+
+// Lane i's operands of a Smooth batch: lane 0's derivatives scaled by 2^(i * step)
+// (so lambda steps by `step`), cube directions near `corner` spread by `fan`.
+void smooth_lanes(std::mt19937& rng, const Texture& texture, Operands& ops) {
+    const float step = std::uniform_real_distribution<float>(0.0f, 0.3f)(rng);
+    const float fan = std::exp2(std::uniform_real_distribution<float>(-8.0f, 0.0f)(rng));
+    glm::vec3 corner(1.0f);
+    const int axes = std::uniform_int_distribution<int>(1, 3)(rng);  // a face's centre, an edge, a corner
+    for (int c = 0; c < 3; ++c) {
+        if (c >= axes) corner[c] = std::uniform_real_distribution<float>(-0.5f, 0.5f)(rng);
+        if (std::uniform_int_distribution<int>(0, 1)(rng)) corner[c] = -corner[c];
+    }
+    std::uniform_real_distribution<float> jitter(-1.0f, 1.0f);
+    for (int i = 1; i < rt::kLanes; ++i) {
+        const float scale = std::exp2(step * float(i));
+        for (int c = 0; c < 3; ++c) {
+            ops.ddx[c][i] = ops.ddx[c][0] * scale;
+            ops.ddy[c][i] = ops.ddy[c][0] * scale;
+        }
+        ops.lod[i] = ops.lod[0] + step * float(i);
+    }
+    if (texture.target() != TextureTarget::Cube) return;
+    for (int i = 0; i < rt::kLanes; ++i)
+        for (int c = 0; c < 3; ++c)  // now and then an extreme (NaN, infinite, huge, zero) component
+            ops.coord[c][i] = i % 11 == 5 ? coordinate(rng) : corner[c] + fan * jitter(rng);
+}
+
+void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::TexLod lod_kind,
+                 Spread spread = Spread::Random) {
+    const bool shared = spread == Spread::Shared;
     const bool rect = texture.target() == TextureTarget::Rect;
     const int dims = rt::texture_dims(texture.target());
     const int size[2] = {texture.levels(0)[0].width, texture.levels(0)[0].height};
@@ -108,6 +141,7 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
             for (int c = 1; c < 3; ++c) ops.coord[c][i] = std::uniform_real_distribution<float>(-1.9f, 1.9f)(rng);
         }
     }
+    if (spread == Spread::Smooth) smooth_lanes(rng, texture, ops);
     rt::BatchLookup lk;
     lk.implicit = lod_kind != ir::TexLod::Explicit;
     lk.bias = lod_kind == ir::TexLod::ImplicitBias;
@@ -172,7 +206,8 @@ void sweep(std::mt19937& rng, Texture& texture, bool shadow) {
                         texture.sampler.wrap_r = t == s ? TextureWrap::ClampToEdge : s;
                         REQUIRE(texture.complete());
                         if (!rt::batch_samples(texture)) continue;
-                        for (int batch = 0; batch < 4; ++batch) check_batch(rng, texture, shadow, lod, batch >= 2);
+                        for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth})
+                            for (int batch = 0; batch < 2; ++batch) check_batch(rng, texture, shadow, lod, spread);
                     }
 }
 
@@ -220,7 +255,8 @@ TEST_CASE("batched sampling equals per-lane sampling: depth textures and compare
                         depth.sampler.mag_filter = min == TextureFilter::Nearest ? min : TextureFilter::Linear;
                         depth.sampler.wrap_s = depth.sampler.wrap_t = wrap;
                         for (ir::TexLod lod : kLods)
-                            for (bool shared : {false, true}) check_batch(rng, depth, true, lod, shared);
+                            for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth})
+                                check_batch(rng, depth, true, lod, spread);
                     }
             }
 }
@@ -246,7 +282,8 @@ TEST_CASE("batched sampling equals per-lane sampling: rectangles", "[sampling][b
                             t.sampler.wrap_t = w;
                             REQUIRE(t.complete());
                             REQUIRE(rt::batch_samples(t));
-                            for (int batch = 0; batch < 4; ++batch) check_batch(rng, t, shadow, lod, batch >= 2);
+                            for (int batch = 0; batch < 4; ++batch)
+                                check_batch(rng, t, shadow, lod, batch >= 2 ? Spread::Shared : Spread::Random);
                         }
     };
     sweep_rect(rect, false);
@@ -298,8 +335,8 @@ TEST_CASE("batched sampling equals per-lane sampling: one-pass 2D and rectangle 
     }
 }
 
-// The sweep skips what batch_samples() refuses; this says what that is: 3D
-// textures whose lanes choose levels (mipmaps, or two filters).
+// 3D textures, mipmapped too (each lane's lambda from the derivatives of
+// s, t and r); batch_samples() refuses only array textures.
 TEST_CASE("batched sampling equals per-lane sampling: 3D textures", "[sampling][batch]") {
     std::mt19937 rng(5);
     Texture two = make(rng, TextureTarget::Tex2D, TextureFormat::RGBA8, 4, 4);
@@ -311,11 +348,19 @@ TEST_CASE("batched sampling equals per-lane sampling: 3D textures", "[sampling][
         CHECK(rt::batch_samples(three));
     }
     three.sampler.min_filter = TextureFilter::LinearMipmapLinear;
-    CHECK_FALSE(rt::batch_samples(three));
+    CHECK(rt::batch_samples(three));
     three.sampler.min_filter = TextureFilter::Nearest;
     three.sampler.mag_filter = TextureFilter::Linear;
-    CHECK_FALSE(rt::batch_samples(three));
+    CHECK(rt::batch_samples(three));
     sweep(rng, three, false);
+    // The three wraps alike (the sweep's r differs from s and t but for CLAMP_TO_EDGE): a volume's usual state.
+    three.sampler.min_filter = three.sampler.mag_filter = TextureFilter::Linear;
+    for (TextureWrap wrap : kWraps) {
+        three.sampler.wrap_s = three.sampler.wrap_t = three.sampler.wrap_r = wrap;
+        for (ir::TexLod lod : kLods)
+            for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth})
+                for (int batch = 0; batch < 4; ++batch) check_batch(rng, three, false, lod, spread);
+    }
 }
 
 // The `tex` kernel itself: lanes on several units (and on none: unbound, out
