@@ -67,7 +67,11 @@ JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen) {
         full += n * kNanosPerInstruction * (1 + n / kInstructionsDoublingCost);
     }
     JitPlan plan;
-    plan.quick = quick_codegen || full > double(kCompileBudgetNanos);
+    // A vertex shader runs once per vertex, far less often than the fragment
+    // shader per pixel: without code-generation optimizations its compile
+    // costs 4 to 30% less of the program's LLVM time and the corpus's frames
+    // did not change (docs/performance.md).
+    plan.quick = quick_codegen || full > double(kCompileBudgetNanos) || shader.stage == ir::Stage::Vertex;
     plan.nanos = uint64_t(plan.quick ? full * kQuickCodegenShare : full);
     plan.take = plan.nanos <= kDeclineNanos;
     return plan;
