@@ -96,6 +96,7 @@ void hoist_uniform_code(Shader& shader) {
     for (size_t r = 0; r < regs; ++r)
         if (unset[r]) h.pin(Reg(r));
     h.extract(shader.body);
+    for (Function& f : shader.functions) h.extract(f.body);
 }
 
 }  // namespace glslrun::ir

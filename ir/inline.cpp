@@ -1,13 +1,15 @@
 // Inlining: a Call becomes a Scope holding a copy of the callee's body, so
 // Return keeps its meaning. Callees are processed before their callers
 // (innermost calls first) and inlining stops when the shader would grow by
-// the budget: piglit's inline-explosion tests have 2^64 call paths.
+// the budget: piglit's inline-explosion tests have 2^64 call paths. Large
+// functions that main reaches more than once stay calls (kMinCalledNodes).
 //
 // Functions have static frames: parameters and return values are registers
 // that the caller writes and reads around the call, so they are shared by
 // every copy. A callee's private temporaries (registers referenced by no other
 // function, no binding, no indexed range, and written before they are read)
 // get fresh registers in each copy, so copies do not alias each other.
+#include <algorithm>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -19,15 +21,26 @@ namespace glslrun::ir {
 namespace {
 
 constexpr int32_t kNoOwner = -1, kShared = -2;
+// A function of at least this many nodes (its own calls inlined) that main
+// reaches by two call paths or more stays a call: the JIT compiles it once,
+// as a function of its own (runtime/jit/control.cpp), instead of once per
+// copy. Measured on bench/corpus (docs/performance.md): wood's value_noise
+// (about 270 nodes, 3 calls) and the ray tracer's trace (about 200, 2 call
+// sites in loops) halve their fragment shaders' LLVM time and draw as fast
+// or faster (fewer spills); at 100 or 60 nodes, smaller callees left as
+// calls (marble's gradient, the ray tracer's intersect_sphere, which keeps
+// its loop from being unrolled) made frames up to twice as slow.
+constexpr uint64_t kMinCalledNodes = 150;
 
 struct Inliner {
     Shader& shader;
     uint64_t budget;
     uint64_t added = 0;
-    std::vector<int32_t> owner;                    // per register: the one function referencing it
-    std::vector<std::unordered_set<Reg>> private_; // per function: registers renamed in copies
+    std::vector<int32_t> owner{};                    // per register: the one function referencing it
+    std::vector<std::unordered_set<Reg>> private_{}; // per function: registers renamed in copies
     enum class State : uint8_t { Unvisited, InProgress, Done };
-    std::vector<State> state;
+    std::vector<State> state{};
+    std::vector<uint64_t> paths{};  // per function: the copies inlining every call would make
 
     uint32_t main_index() const { return uint32_t(shader.functions.size()); }
 
@@ -127,6 +140,7 @@ struct Inliner {
             }
             if (n.callee >= shader.functions.size() || state[n.callee] != State::Done) continue;
             uint64_t cost = flow::node_count(shader.functions[n.callee].body);
+            if (paths[n.callee] >= 2 && cost >= kMinCalledNodes) continue;
             if (added + cost >= budget) continue;
             added += cost;
             std::unordered_map<Reg, Reg> renamed;
@@ -137,7 +151,35 @@ struct Inliner {
         }
     }
 
+    // The call paths from main to each function (saturating): how many
+    // copies of its body inlining every call would make.
+    void count_paths() {
+        const uint32_t n = main_index();
+        std::vector<std::vector<uint32_t>> sites(n + 1);
+        auto list = [&](const Block& b, std::vector<uint32_t>& out) {
+            flow::walk(b, [&](const Node& node) {
+                if (node.kind == NodeKind::Call && node.callee < n) out.push_back(node.callee);
+            });
+        };
+        for (uint32_t f = 0; f < n; ++f) list(shader.functions[f].body, sites[f]);
+        list(shader.body, sites[n]);
+        std::vector<uint32_t> order;  // post-order from main: callees before callers
+        std::vector<uint8_t> seen(n + 1, 0);
+        auto visit = [&](auto&& self, uint32_t f) -> void {
+            seen[f] = 1;
+            for (uint32_t c : sites[f])
+                if (!seen[c]) self(self, c);
+            order.push_back(f);
+        };
+        visit(visit, n);
+        paths.assign(n + 1, 0);
+        paths[n] = 1;
+        for (auto it = order.rbegin(); it != order.rend(); ++it)
+            for (uint32_t c : sites[*it]) paths[c] = std::min<uint64_t>(paths[c] + paths[*it], UINT32_MAX);
+    }
+
     void run() {
+        count_paths();
         compute_owners();
         private_.assign(shader.functions.size(), {});
         state.assign(shader.functions.size(), State::Unvisited);
@@ -192,7 +234,7 @@ struct Inliner {
 }  // namespace
 
 void inline_calls(Shader& shader, uint32_t budget) {
-    Inliner inliner{shader, budget, 0, {}, {}, {}};
+    Inliner inliner{shader, budget};
     inliner.run();
 }
 

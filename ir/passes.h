@@ -29,7 +29,8 @@ void check_unwritten_reads(Shader& shader);
 
 // ir/inline.cpp: replaces Call nodes by Scope nodes holding a renamed copy of
 // the callee while the shader grows by less than `budget` nodes; the calls
-// beyond the budget stay real calls.
+// beyond the budget, and those to large functions that main reaches more
+// than once, stay real calls.
 void inline_calls(Shader& shader, uint32_t budget);
 // ir/unroll.cpp: a loop of the frontend's shape whose trip count is a
 // constant of at most 8 becomes that many copies of its body (the shader

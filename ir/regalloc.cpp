@@ -8,7 +8,8 @@
 // prologue's (written once per draw), indexed ranges and tex blocks (addressed
 // by position; whole spans stay contiguous), derivative operands (read across
 // lanes), registers that some lane may read before writing them (they see an
-// older value: ir/assigned.h) and registers that functions touch.
+// older value: ir/assigned.h) and registers that functions touch (a
+// function's own temporaries may still be written unmasked).
 //
 // The others get live intervals over the main body in program order (a lane
 // only moves forward through it, except around loops: a register used in a
@@ -38,6 +39,7 @@ struct Interval {
 struct Allocator {
     Shader& shader;
     std::vector<bool> pinned;
+    std::vector<bool> own;  // a function's temporaries: a register of their own, not pinned
     std::vector<Interval> live;
     uint32_t position = 0;
 
@@ -69,8 +71,31 @@ struct Allocator {
             if (n.kind == NodeKind::Instr) flow::for_each_write(n.instr, [&](Reg r) { pin_span(r, 1); });
         };
         flow::walk(shader.prologue, pin_refs);
-        for (const Function& f : shader.functions) flow::walk(f.body, pin_refs);
         pin_block(shader.body);
+        // Registers that functions touch have no interval over the main body:
+        // they keep a register of their own. Those that one function alone
+        // touches are that function's temporaries, which it may write unmasked
+        // as the main body's (its reads follow its writes in each call); the
+        // others (parameters, results, globals) keep their blends too.
+        std::vector<int32_t> owner(pinned.size(), -1);
+        auto claim = [&](Reg r, int32_t unit) {
+            if (r < owner.size()) owner[r] = owner[r] == -1 || owner[r] == unit ? unit : -2;
+        };
+        auto claim_block = [&](const Block& b, int32_t unit) {
+            flow::walk(b, [&](const Node& n) {
+                flow::for_each_read(n, [&](Reg r) { claim(r, unit); });
+                if (n.kind == NodeKind::Instr) flow::for_each_write(n.instr, [&](Reg r) { claim(r, unit); });
+            });
+        };
+        claim_block(shader.body, 0);
+        for (size_t f = 0; f < shader.functions.size(); ++f) {
+            pin_block(shader.functions[f].body);
+            claim_block(shader.functions[f].body, int32_t(f) + 1);
+        }
+        for (size_t r = 0; r < owner.size(); ++r) {
+            if (owner[r] == -2) pinned[r] = true;
+            if (owner[r] > 0) own[r] = true;
+        }
     }
 
     void touch(Reg r) {
@@ -107,13 +132,13 @@ struct Allocator {
     std::vector<Reg> assign(std::vector<Kind>& kinds) {
         std::vector<Reg> map(shader.regs.size(), kNone);
         for (size_t r = 0; r < map.size(); ++r)
-            if (pinned[r]) {
+            if (pinned[r] || own[r]) {
                 map[r] = Reg(kinds.size());
                 kinds.push_back(shader.regs[r]);
             }
         std::vector<Reg> order;
         for (size_t r = 0; r < map.size(); ++r)
-            if (!pinned[r] && live[r].start != kNone) order.push_back(Reg(r));
+            if (!pinned[r] && !own[r] && live[r].start != kNone) order.push_back(Reg(r));
         std::stable_sort(order.begin(), order.end(), [&](Reg a, Reg b) { return live[a].start < live[b].start; });
         // Per new register: the end of the interval it holds now.
         std::vector<uint32_t> busy_until;
@@ -183,7 +208,7 @@ void rename(Block& block, const std::vector<Reg>& map) {
 
 void allocate_registers(Shader& shader) {
     size_t regs = shader.regs.size();
-    Allocator a{shader, std::vector<bool>(regs, false), std::vector<Interval>(regs)};
+    Allocator a{shader, std::vector<bool>(regs, false), std::vector<bool>(regs, false), std::vector<Interval>(regs)};
     a.pin_all();
     a.intervals(shader.body);
     std::vector<uint32_t> writes = count_writes(shader);

@@ -31,6 +31,9 @@ public:
     // prologue) as the interpreter's run() does: the run's call frame
     // changes nothing that anyone reads after it.
     void define(const std::string& name, const ir::Block& block);
+    // Defines the functions that the Call nodes emitted so far call (and
+    // those they call): after define().
+    void define_functions();
 
 private:
     // --- control.cpp: masks are i64 lane bits kept in allocas
@@ -44,8 +47,13 @@ private:
     void emit_if(const ir::Node& node);
     void emit_loop(const ir::Node& node);
     void emit_call(const ir::Block& body);
+    void emit_function_call(uint32_t callee);
+    llvm::Function* function(uint32_t callee);
+    void define_function(uint32_t callee);
+    void start_function();
     void emit_failure(Failure failure, int line);
-    void begin_budget();
+    void begin_budget(llvm::Value* credit);
+    void open_masks(llvm::Value* exec, llvm::Value* alive, llvm::Value* loop_left);
     void end_budget();
     void charge(uint64_t instructions);
     llvm::BasicBlock* new_block(const char* name);
@@ -100,12 +108,22 @@ private:
     llvm::Value* ctx_arg_ = nullptr;
     llvm::Value* regs_ = nullptr;
     llvm::Value* uniforms_ = nullptr;
-    // The main body's registers that only it reads and writes (not the
-    // bindings, the prologue's, indexed arrays): an alloca each, which SROA
-    // turns into values, so that they are never stored (call-outs excepted);
-    // null for those kept in the register file.
+    // The registers that only the function being defined reads and writes
+    // (not the bindings, the prologue's, indexed arrays, nor those of other
+    // functions): an alloca each, which SROA turns into values, so that they
+    // are never stored (call-outs and calls excepted); null for those kept
+    // in the register file. A "unit" is the main body (0) or functions[f]
+    // (f + 1), each one LLVM function; the prologue has no locals.
     std::vector<llvm::AllocaInst*> locals_;
-    void make_locals(const ir::Block& block);
+    std::vector<int32_t> owner_;  // per register: its unit, or kShared
+    void find_owners();
+    void make_locals(int32_t unit);
+    // The LLVM function of each ir::Function (null until called), and those
+    // declared but not yet defined.
+    std::vector<llvm::Function*> functions_;
+    std::vector<uint32_t> undefined_;
+    // Per function being defined: a call's frame (CallFrame, control.cpp).
+    llvm::AllocaInst* call_frame_ = nullptr;
     // The main body's reads of a prologue `konst` that nothing else writes:
     // its value, which LLVM sees (a division by a power of two becomes a
     // multiplication, alu.cpp) instead of a load from the register file.

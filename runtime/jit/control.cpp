@@ -12,6 +12,7 @@
 #include <bit>
 #include <cmath>
 
+#include "ir/assigned.h"
 #include "ir/flow.h"
 
 #include <llvm/IR/Function.h>
@@ -86,34 +87,56 @@ void Emitter::find_constants() {
         if (writes[r] != 1) constants_[r].reset();
 }
 
-void Emitter::make_locals(const ir::Block& block) {
+namespace {
+constexpr int32_t kNobody = -1, kShared = -2;
+// What a call passes to its function and gets back (i64 fields of an
+// alloca): the caller's exec mask on entry, the lanes alive, the loop
+// iterations left and the budget's credit; the last three come back.
+enum CallFrame : uint64_t { kFrameExec, kFrameAlive, kFrameLoopLeft, kFrameCredit, kFrameFields };
+}  // namespace
+
+void Emitter::find_owners() {
     using namespace ir::flow;
-    locals_.clear();
-    constants_.clear();
-    if (&block != &shader_.body) return;
-    find_constants();
-    std::vector<bool> shared(shader_.regs.size());
-    auto share = [&](ir::Reg r) {
-        if (r < shared.size()) shared[r] = true;
+    owner_.assign(shader_.regs.size(), kNobody);
+    auto claim = [&](ir::Reg r, int32_t unit) {
+        if (r < owner_.size()) owner_[r] = owner_[r] == kNobody || owner_[r] == unit ? unit : kShared;
     };
+    auto shared = [&](ir::Reg r) { claim(r, kShared); };
     for (const auto* list : {&shader_.inputs, &shader_.outputs})
         for (const ir::Binding& b : *list)
-            for (uint32_t i = 0; i < b.count; ++i) share(b.first + i);
-    auto all_registers = [&](const ir::Node& n) {
-        for_each_read(n, share);
-        if (n.kind == ir::NodeKind::Instr) for_each_write(n.instr, share);
+            for (uint32_t i = 0; i < b.count; ++i) shared(b.first + i);
+    auto refs = [&](int32_t unit) {
+        return [&claim, unit](const ir::Node& n) {
+            auto mine = [&](ir::Reg r) { claim(r, unit); };
+            for_each_read(n, mine);
+            if (n.kind != ir::NodeKind::Instr) return;
+            for_each_write(n.instr, mine);
+            // Indexed arrays: gathers and scatters reach them through the
+            // register file; a derivative reads its operand's other lanes too.
+            if (reads_range(n.instr.op) || writes_range(n.instr.op))
+                for_each_in_range(n.instr, [&](ir::Reg r) { claim(r, kShared); });
+            if (ir::has(n.instr.op, ir::OpProp::CrossLane)) claim(n.instr.src[0], kShared);
+        };
     };
-    walk(shader_.prologue, all_registers);
-    // Indexed arrays: gathers and scatters reach them through the register file.
-    auto indexed = [&](const ir::Node& n) {
-        if (n.kind == ir::NodeKind::Instr && (reads_range(n.instr.op) || writes_range(n.instr.op)))
-            for_each_in_range(n.instr, share);
-    };
-    walk(shader_.body, indexed);
-    for (const ir::Function& f : shader_.functions) walk(f.body, indexed);
+    walk(shader_.prologue, refs(kShared));
+    // A register that some lane may read before writing it sees what an
+    // earlier run or call left in the register file: it stays there.
+    const std::vector<bool> unset = ir::maybe_read_unset(shader_);
+    for (size_t r = 0; r < unset.size() && r < owner_.size(); ++r)
+        if (unset[r]) owner_[r] = kShared;
+    walk(shader_.body, refs(0));
+    for (size_t f = 0; f < shader_.functions.size(); ++f) walk(shader_.functions[f].body, refs(int32_t(f) + 1));
+}
+
+void Emitter::make_locals(int32_t unit) {
+    locals_.clear();
+    constants_.clear();
+    if (unit < 0) return;  // the prologue writes the constants
+    if (owner_.empty()) find_owners();
+    find_constants();
     locals_.resize(shader_.regs.size());
-    for (size_t r = 0; r < shared.size(); ++r) {
-        if (shared[r]) continue;
+    for (size_t r = 0; r < owner_.size(); ++r) {
+        if (owner_[r] != unit) continue;
         // Starting from the register file's value: what a lane reads
         // before the body writes it is what the interpreter would read.
         llvm::Value* initial = load_reg(ir::Reg(r));
@@ -122,37 +145,34 @@ void Emitter::make_locals(const ir::Block& block) {
     }
 }
 
-void Emitter::define(const std::string& name, const ir::Block& block) {
-    auto* type = llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i64_}, false);
-    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
-    // The executor runs with FTZ and DAZ set (ir::FlushDenormals): tell LLVM,
-    // so that what it folds matches what the CPU computes.
-    fn_->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
-    fn_->addFnAttr("denormal-fp-math-f32", "preserve-sign,preserve-sign");
-    fn_->addFnAttr(llvm::Attribute::NoUnwind);
-    ctx_arg_ = fn_->getArg(0);
-    regs_ = fn_->getArg(1);
-    uniforms_ = fn_->getArg(2);
-    fn_->addParamAttr(1, llvm::Attribute::NoAlias);
-    fn_->addParamAttr(2, llvm::Attribute::NoAlias);
-    llvm::Value* live = fn_->getArg(3);
-
-    b_.SetInsertPoint(new_block("entry"));
-    make_locals(block);
+// The function's masks, as a call frame leaves them (ExecMask::call_begin):
+// brk, cont and ret empty.
+void Emitter::open_masks(llvm::Value* exec, llvm::Value* alive, llvm::Value* loop_left) {
     exec_ = b_.CreateAlloca(i64_, nullptr, "exec");
     alive_ = b_.CreateAlloca(i64_, nullptr, "alive");
     brk_ = b_.CreateAlloca(i64_, nullptr, "brk");
     cont_ = b_.CreateAlloca(i64_, nullptr, "cont");
     ret_ = b_.CreateAlloca(i64_, nullptr, "ret");
     loop_left_ = b_.CreateAlloca(i64_, nullptr, "loop_left");
+    call_frame_ = b_.CreateAlloca(llvm::ArrayType::get(i64_, kFrameFields), nullptr, "call_frame");
+    store_mask(exec_, exec);
+    store_mask(alive_, alive);
+    for (llvm::AllocaInst* m : {brk_, cont_, ret_}) store_mask(m, b_.getInt64(0));
+    b_.CreateStore(loop_left, loop_left_);
+}
+
+void Emitter::define(const std::string& name, const ir::Block& block) {
+    auto* type = llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i64_}, false);
+    fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    start_function();
+    llvm::Value* live = fn_->getArg(3);
+
+    b_.SetInsertPoint(new_block("entry"));
+    make_locals(&block == &shader_.body ? 0 : kNobody);
     live = b_.CreateAnd(live, b_.getInt64(kAllLanes));
     // ExecMask::reset(live), then the run's call frame (call_begin).
-    store_mask(exec_, live);
-    store_mask(alive_, live);
-    for (llvm::AllocaInst* m : {brk_, cont_, ret_}) store_mask(m, b_.getInt64(0));
-    b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kMaxLoopOffset)),
-                   loop_left_);
-    begin_budget();
+    open_masks(live, live, b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kMaxLoopOffset)));
+    begin_budget(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCreditOffset)));
     llvm::BasicBlock* done = new_block("done");
     emit_block(block, done);
     b_.CreateBr(done);
@@ -164,12 +184,96 @@ void Emitter::define(const std::string& name, const ir::Block& block) {
     end_budget();
 }
 
+// The attributes and arguments every generated function shares: (ctx, regs,
+// uniforms, and a last one of its own).
+void Emitter::start_function() {
+    // The executor runs with FTZ and DAZ set (ir::FlushDenormals): tell LLVM,
+    // so that what it folds matches what the CPU computes.
+    fn_->addFnAttr("denormal-fp-math", "preserve-sign,preserve-sign");
+    fn_->addFnAttr("denormal-fp-math-f32", "preserve-sign,preserve-sign");
+    fn_->addFnAttr(llvm::Attribute::NoUnwind);
+    ctx_arg_ = fn_->getArg(0);
+    regs_ = fn_->getArg(1);
+    uniforms_ = fn_->getArg(2);
+    fn_->addParamAttr(1, llvm::Attribute::NoAlias);
+    fn_->addParamAttr(2, llvm::Attribute::NoAlias);
+}
+
+llvm::Function* Emitter::function(uint32_t callee) {
+    if (functions_.empty()) functions_.resize(shader_.functions.size());
+    if (!functions_[callee]) {
+        auto* type = llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, ptr_}, false);
+        functions_[callee] = llvm::Function::Create(type, llvm::Function::InternalLinkage,
+                                                    "glslrun_fn" + std::to_string(callee), module_);
+        undefined_.push_back(callee);
+    }
+    return functions_[callee];
+}
+
+void Emitter::define_functions() {
+    while (!undefined_.empty()) {
+        const uint32_t f = undefined_.back();
+        undefined_.pop_back();
+        define_function(f);
+    }
+}
+
+// functions[callee] as an LLVM function of its own, run as run_call runs it:
+// its call frame's masks (the caller's brk, cont and ret do not reach it),
+// the caller's alive lanes, loop count and credit in and out through the
+// frame; a failure returns its code, which the caller returns too.
+void Emitter::define_function(uint32_t callee) {
+    fn_ = functions_[callee];
+    start_function();
+    fn_->addParamAttr(3, llvm::Attribute::NoAlias);
+    fn_->addParamAttr(3, llvm::Attribute::NoCapture);
+    llvm::Value* frame = fn_->getArg(3);
+    auto field = [&](uint64_t i) { return b_.CreateConstInBoundsGEP1_64(i64_, frame, i); };
+    b_.SetInsertPoint(new_block("entry"));
+    make_locals(int32_t(callee) + 1);
+    open_masks(b_.CreateLoad(i64_, field(kFrameExec)), b_.CreateLoad(i64_, field(kFrameAlive)),
+               b_.CreateLoad(i64_, field(kFrameLoopLeft)));
+    begin_budget(b_.CreateLoad(i64_, field(kFrameCredit)));
+    llvm::BasicBlock* done = new_block("done");
+    emit_block(shader_.functions[callee].body, done);
+    b_.CreateBr(done);
+    b_.SetInsertPoint(done);
+    b_.CreateStore(load_mask(alive_), field(kFrameAlive));
+    b_.CreateStore(b_.CreateLoad(i64_, loop_left_), field(kFrameLoopLeft));
+    b_.CreateStore(b_.CreateLoad(i64_, credit_), field(kFrameCredit));
+    b_.CreateRet(b_.getInt32(int32_t(Failure::None)));
+    end_budget();
+}
+
+// A Call: the function's code is emitted once and called here. Only
+// registers in the register file pass between the two (find_owners).
+void Emitter::emit_function_call(uint32_t callee) {
+    llvm::Function* target = function(callee);
+    llvm::Value* entry = load_mask(exec_);
+    auto field = [&](uint64_t i) { return b_.CreateConstInBoundsGEP2_64(call_frame_->getAllocatedType(), call_frame_, 0, i); };
+    b_.CreateStore(entry, field(kFrameExec));
+    b_.CreateStore(load_mask(alive_), field(kFrameAlive));
+    b_.CreateStore(b_.CreateLoad(i64_, loop_left_), field(kFrameLoopLeft));
+    b_.CreateStore(b_.CreateLoad(i64_, credit_), field(kFrameCredit));
+    llvm::Value* failure = b_.CreateCall(target, {ctx_arg_, regs_, uniforms_, call_frame_});
+    store_mask(alive_, b_.CreateLoad(i64_, field(kFrameAlive)));
+    b_.CreateStore(b_.CreateLoad(i64_, field(kFrameLoopLeft)), loop_left_);
+    b_.CreateStore(b_.CreateLoad(i64_, field(kFrameCredit)), credit_);
+    llvm::BasicBlock* failed = new_block("call_failed");
+    llvm::BasicBlock* returned = new_block("call_returned");
+    b_.CreateCondBr(b_.CreateICmpNE(failure, b_.getInt32(0)), failed, returned);
+    b_.SetInsertPoint(failed);
+    b_.CreateRet(failure);  // the function stored alive and the line (emit_failure, end_budget)
+    b_.SetInsertPoint(returned);
+    store_mask(exec_, remaining(entry));  // ExecMask::call_end
+}
+
 // The run's budget (Context::credit), and the block that its failures
 // (an Instructions or Cancelled code in budget_failure_) return from.
-void Emitter::begin_budget() {
+void Emitter::begin_budget(llvm::Value* credit) {
     credit_ = b_.CreateAlloca(i64_, nullptr, "credit");
     budget_failure_ = b_.CreateAlloca(i32_, nullptr, "budget_failure");
-    b_.CreateStore(b_.CreateLoad(i64_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kCreditOffset)), credit_);
+    b_.CreateStore(credit, credit_);
     over_budget_ = new_block("over_budget");
 }
 
@@ -233,7 +337,7 @@ bool Emitter::emit_node(const ir::Node& node, llvm::BasicBlock* exit) {
             emit_failure(Failure::MissingFunction, node.loc.line);
             return true;
         }
-        emit_call(shader_.functions[node.callee].body);
+        emit_function_call(node.callee);
         return true;
     case ir::NodeKind::Scope: emit_call(node.body); return true;
     }
@@ -302,9 +406,8 @@ void Emitter::emit_loop(const ir::Node& node) {
     store_mask(exec_, remaining(entry));
 }
 
-// A call or an inlined function's scope: Return ends it for the lanes that
-// return (ExecMask::call_begin / call_end). The callee's body is emitted in
-// place: compile() refuses recursive call graphs.
+// An inlined function's scope: Return ends it for the lanes that return
+// (ExecMask::call_begin / call_end).
 void Emitter::emit_call(const ir::Block& body) {
     llvm::Value* entry = load_mask(exec_);
     llvm::Value* saved[3] = {load_mask(brk_), load_mask(cont_), load_mask(ret_)};

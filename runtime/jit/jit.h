@@ -33,10 +33,11 @@ struct CompileStats {
     bool loaded = false;  // out: the code came from the cache
 };
 
-// How the JIT would compile `shader`, from its size with calls written out
-// in place: LLVM's time grows a little faster than linearly with one
-// function's instructions (about 10 LLVM instructions per IR instruction;
-// code generation, register allocation above all, is most of it). Measured
+// How the JIT would compile `shader`, from the size of each function it
+// writes (main, the prologue and each called function, once): LLVM's time
+// grows a little faster than linearly with one function's instructions
+// (about 10 LLVM instructions per IR instruction; code generation is most
+// of it). Measured
 // on the lecture's programs and tests/compile_cost (docs/limits.md): 0.45 ms
 // of CPU per instruction, twice that per 1000 of them, about half of it
 // without LLVM's code-generation optimizations. A shader expected past
@@ -44,8 +45,7 @@ struct CompileStats {
 // past kDeclineNanos even so stays on the interpreter. Between the two, the
 // JIT still pays: multi_light's 1080p frame takes 15.5 ms of CPU compiled so
 // (190 ms of LLVM) against 20.1 interpreted, and Backend::Auto starts such a compile only once
-// the interpreter has spent as long, in the background. The ray tracer of
-// tests/compile_cost (about 1 s quick) ran slower compiled than interpreted.
+// the interpreter has spent as long, in the background.
 inline constexpr uint64_t kCompileBudgetNanos = 100'000'000, kDeclineNanos = 500'000'000;
 inline constexpr double kNanosPerInstruction = 450'000, kInstructionsDoublingCost = 1000, kQuickCodegenShare = 0.55;
 // `quick_codegen`: ExecOptions::jit_quick_codegen.
@@ -54,8 +54,8 @@ JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen);
 // Native code for `shader` in `precision` (Precise or Fast, with Fast's
 // `fast_ops` classes) for the baseline x86-64 ISA or AVX2, with LLVM's
 // code-generation optimizations unless `quick_codegen`. Null where the
-// JIT does not take the shader (a recursive call graph, calls that expand
-// to too much code, or LLVM failed):
+// JIT does not take the shader (a recursive call graph, functions that
+// weigh too much, or LLVM failed):
 // the caller runs the interpreter instead, which computes the same bits.
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                         bool avx2, bool quick_codegen, CompileStats* stats);

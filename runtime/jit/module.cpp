@@ -319,6 +319,7 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
         Emitter emitter(*made.context, module, shader, precision, fast_ops, avx2, code->call_outs);
         emitter.define("glslrun_main", shader.body);
         emitter.define("glslrun_prologue", shader.prologue);
+        emitter.define_functions();
     }
     if (stopped() || llvm::verifyModule(module, &llvm::errs())) return nullptr;
     // GLSLRUN_JIT_DUMP=1 prints the module before and after optimization (a debugging aid).

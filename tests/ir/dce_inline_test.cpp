@@ -142,6 +142,54 @@ TEST_CASE("inline keeps calls beyond the budget", "[ir][inline]") {
     CHECK(count_kind(u, NodeKind::Scope) == 1);
 }
 
+// main calls a function of `size` chained multiplications `calls` times.
+ir::Shader chain_calls(int size, int calls) {
+    Builder b;
+    Reg x = b.reg(Kind::F32), p = b.reg(Kind::F32), r = b.reg(Kind::F32);
+    b.input("x", x);
+    Reg k = b.kf(1.0001f);
+    uint32_t f = b.function("long", [&] {
+        Reg v = p;
+        for (int i = 0; i < size; ++i) v = b.alu(Op::fmul, {v, k});
+        b.mov(r, v);
+    });
+    for (int c = 0; c < calls; ++c) {
+        b.alu_to(p, Op::fadd, {x, b.kf(float(c))});
+        b.call(f);
+        Reg out = b.reg(Kind::F32);
+        b.mov(out, r);
+        b.output("out", out);
+    }
+    return b.sh;
+}
+
+TEST_CASE("inline keeps a large function that main calls more than once as a call", "[ir][inline]") {
+    auto calls_left = [](int size, int calls) {
+        ir::Shader t = check_pass(chain_calls(size, calls), [](ir::Shader& s) { ir::inline_calls(s, 4000); });
+        return count_kind(t, NodeKind::Call);
+    };
+    CHECK(calls_left(200, 2) == 2);  // the JIT compiles it once
+    CHECK(calls_left(200, 3) == 3);
+    CHECK(calls_left(200, 1) == 0);  // one copy: inlined
+    CHECK(calls_left(40, 3) == 0);   // small: inlined
+    // Through a caller that is itself inlined: two paths to `long`.
+    Builder b;
+    Reg x = b.reg(Kind::F32), r = b.reg(Kind::F32);
+    b.input("x", x);
+    uint32_t big = b.function("big", [&] {
+        Reg v = x;
+        for (int i = 0; i < 160; ++i) v = b.alu(Op::fadd, {v, x});
+        b.mov(r, v);
+    });
+    uint32_t mid = b.function("mid", [&] { b.call(big); });
+    b.call(mid);
+    b.call(mid);
+    b.output("r", r);
+    ir::Shader t = check_pass(b.sh, [](ir::Shader& s) { ir::inline_calls(s, 4000); });
+    CHECK(count_kind(t, NodeKind::Call) == 2);
+    CHECK(t.functions.size() == 1);
+}
+
 TEST_CASE("inline does not share a callee's state-carrying registers", "[ir][inline]") {
     // g() { counter = counter + 1; } called three times: counter is read first.
     Builder b;

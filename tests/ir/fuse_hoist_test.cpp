@@ -155,3 +155,28 @@ TEST_CASE("hoist takes invariants out of loops and keeps the loop's results", "[
     CHECK(count_op(t, Op::uniform) == 0);
     CHECK(count_op(t, Op::fadd) == 1);
 }
+
+TEST_CASE("hoist takes a function's constants and uniform code to the prologue", "[ir][hoist]") {
+    Builder b;
+    Reg x = input(b, "x");
+    Reg p = b.reg(Kind::F32), r = b.reg(Kind::F32), k = b.reg(Kind::F32), u = b.reg(Kind::F32);
+    uint32_t f = b.function("f", [&] {
+        b.set_konst(k, bits(128.0f));
+        b.instr(Op::uniform, Kind::F32, u, {}, {1});
+        Reg scale = b.alu(Op::fmul, {k, u});
+        b.alu_to(r, Op::fmul, {p, scale});  // reads a parameter: stays
+    });
+    b.mov(p, x);
+    b.call(f);
+    Reg first = b.reg(Kind::F32);
+    b.mov(first, r);
+    b.alu_to(p, Op::fadd, {x, x});
+    b.call(f);
+    b.output("first", first);
+    b.output("r", r);
+    ir::Shader t = check_pass(b.sh, hoist, kUniforms);
+    CHECK(prologue_writer(t, k));
+    CHECK(prologue_writer(t, u));
+    REQUIRE(t.functions.size() == 1);
+    CHECK(t.functions[0].body.size() == 1);
+}

@@ -179,3 +179,31 @@ TEST_CASE("regalloc lets the single write of a shared register skip the mask", "
     CHECK_FALSE(branch->body[1].instr.unmasked);  // var's second write
     CHECK_FALSE(s.body.back().instr.unmasked);    // the output
 }
+
+TEST_CASE("regalloc lets a function's own temporaries skip the mask", "[ir][regalloc]") {
+    Builder b;
+    Reg x = input(b, "x");
+    Reg cond = input(b, "cond", Kind::Bool);
+    Reg p = b.reg(Kind::F32), r = b.reg(Kind::F32), t = b.reg(Kind::F32);
+    uint32_t f = b.function("f", [&] {
+        b.alu_to(t, Op::fmul, {p, p});  // its own, written once and read after: unmasked
+        b.alu_to(r, Op::fadd, {t, p});  // the result, read by main: masked
+    });
+    Reg out = b.reg(Kind::F32);
+    b.mov(out, x);
+    b.mov(p, x);
+    b.if_(cond, [&] {
+        b.call(f);
+        b.mov(out, r);
+    });
+    b.call(f);
+    Reg sum = b.alu(Op::fadd, {out, r});
+    b.output("sum", sum);
+    ir::Shader s = check_pass(b.sh, regalloc);
+    REQUIRE(s.functions.size() == 1);
+    const ir::Block& body = s.functions[0].body;
+    REQUIRE(body.size() == 2);
+    CHECK(body[0].instr.unmasked);
+    CHECK_FALSE(body[1].instr.unmasked);
+    CHECK(body[0].instr.dst != body[1].instr.dst);
+}

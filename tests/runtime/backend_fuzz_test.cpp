@@ -60,6 +60,12 @@ struct Fuzzer {
     Builder b;
     std::vector<Reg> f, i, bo;  // registers by kind: the program's variables
     int loop_depth = 0, scope_depth = 0;
+    // Functions that Call nodes may call (each calls only earlier ones), and
+    // whether one is being made: its instructions have no random `unmasked`
+    // flags (regalloc sets only true ones: the lanes it leaves out are dead,
+    // as the JIT's functions assume of their own registers' other lanes).
+    std::vector<uint32_t> functions;
+    bool in_function = false;
     // A program to specialize reads uniforms more often (more code to fold)
     // and has no random `unmasked` flags: regalloc sets only true ones (no
     // lane reads what the register held), on which specialization relies.
@@ -146,7 +152,7 @@ struct Fuzzer {
         n.instr.dst = dst;
         for (size_t k = 0; k < src.size(); ++k) n.instr.src[k] = src[k];
         for (size_t k = 0; k < imm.size(); ++k) n.instr.imm[k] = imm[k];
-        n.instr.unmasked = pick(10) == 0 && op != Op::store_ind && !specializing;
+        n.instr.unmasked = pick(10) == 0 && op != Op::store_ind && !specializing && !in_function;
         b.push(std::move(n));
     }
 
@@ -200,6 +206,24 @@ struct Fuzzer {
             if (pick(2)) b.mov(of(Kind::F32), result + c);
     }
 
+    // `count` functions with temporaries of their own (private registers,
+    // some read before any write), returns, discards, loops and calls of the
+    // earlier ones: the JIT compiles each once and calls it.
+    void make_functions(int count) {
+        for (int k = 0; k < count; ++k) {
+            const size_t floats = f.size(), ints = i.size();
+            for (int t = 0; t < 4; ++t) f.push_back(b.reg(Kind::F32));
+            i.push_back(b.reg(Kind::I32));
+            in_function = true;
+            ++scope_depth;
+            functions.push_back(b.function("fn", [&] { block(2, 4 + pick(10)); }));
+            --scope_depth;
+            in_function = false;
+            f.resize(floats);
+            i.resize(ints);
+        }
+    }
+
     void block(int depth, int length) {
         for (int k = 0; k < length; ++k) {
             int roll = pick(100);
@@ -217,6 +241,8 @@ struct Fuzzer {
                     block(depth - 1, 1 + pick(5));
                 }, [&] { b.instr(Op::iadd, Kind::I32, counter, {counter, b.ki(1)}); });
                 --loop_depth;
+            } else if (depth > 0 && roll < 18 && !functions.empty() && pick(2) == 0) {
+                b.call(functions[size_t(pick(int(functions.size())))]);
             } else if (depth > 0 && roll < 15) {
                 // An inlined function: break and continue cannot leave it.
                 const int loops_outside = loop_depth;
@@ -479,6 +505,7 @@ TEST_CASE("backends agree bit for bit on random shaders", "[runtime][backend][fu
         const bool specialize = p % 4 == 2;
         Fuzzer fz(0x5eed0000u + uint32_t(p), stage);
         fz.specializing = specialize;
+        if (p % 3 == 1) fz.make_functions(1 + fz.pick(3));
         fz.block(3, 30);
         ir::Shader& shader = fz.b.sh;
         INFO("program " << p);

@@ -134,12 +134,15 @@ TEST_CASE("a job that throws leaves the compile thread running", "[runtime][tier
 
 namespace {
 
+ir::Program program_ir(const std::string& fragment, const std::string& vertex) {
+    auto program = Program::compile({{"a.vert", vertex}}, {{"a.frag", fragment}});
+    if (!program.ok()) FAIL(program.error().str());
+    return state_of(program.value()).ir;
+}
 // The fragment shader's IR; `vertex` writes its varyings.
 ir::Shader fragment_ir(const std::string& fragment,
                        const std::string& vertex = "varying float v; void main() { v = 1.0; gl_Position = gl_Vertex; }") {
-    auto program = Program::compile({{"a.vert", vertex}}, {{"a.frag", fragment}});
-    if (!program.ok()) FAIL(program.error().str());
-    return state_of(program.value()).ir.fragment;
+    return program_ir(fragment, vertex).fragment;
 }
 
 std::string read_file(const std::string& path) {
@@ -160,11 +163,18 @@ TEST_CASE("the JIT's compile-cost bound: large programs stay on the interpreter"
                                         read_file(GLSLRUN_SOURCE_DIR "/shaders/spot_pix_fixed.vert"));
     CHECK(plan_compile(spot, false).take);
     CHECK_FALSE(plan_compile(spot, false).quick);
-    // A ray tracer with structs, inout struct parameters and calls: 2 s of LLVM's time.
+    // Its vertex shader, far colder, without code-generation optimizations.
+    const ir::Shader spot_vertex = program_ir(read_file(GLSLRUN_SOURCE_DIR "/shaders/spot_pix_fixed.frag"),
+                                              read_file(GLSLRUN_SOURCE_DIR "/shaders/spot_pix_fixed.vert")).vertex;
+    CHECK(plan_compile(spot_vertex, false).take);
+    CHECK(plan_compile(spot_vertex, false).quick);
+    // A ray tracer with structs, inout struct parameters and calls: 2 s of LLVM's time with its
+    // calls written out in place; its trace() and shade() compiled once each as functions of
+    // their own, about 80 ms (docs/performance.md): taken, without code-generation optimizations.
     const ir::Shader raytrace = fragment_ir(read_file(GLSLRUN_SOURCE_DIR "/tests/compile_cost/raytrace.frag"),
                                             read_file(GLSLRUN_SOURCE_DIR "/tests/compile_cost/raytrace.vert"));
-    CHECK_FALSE(plan_compile(raytrace, false).take);
-    CHECK_FALSE(plan_compile(raytrace, true).take);
+    CHECK(plan_compile(raytrace, false).take);
+    CHECK(plan_compile(raytrace, false).quick);
     // 5000 lines of straight-line code.
     std::string straight = "varying float v;\nvoid main() {\n float x = v;\n";
     for (int i = 0; i < 5000; ++i) straight += " x = x * 1.0001 + " + std::to_string(i) + ".0;\n";
@@ -183,7 +193,7 @@ TEST_CASE("the JIT's compile-cost bound: large programs stay on the interpreter"
     const std::vector<uint32_t> uniforms(1 << 16, 0);  // more than either reads
     rt::ExecParams params;
     params.uniforms = uniforms.data();
-    for (const ir::Shader* s : {&raytrace, &deep}) {
+    for (const ir::Shader* s : {&deep}) {
         const auto start = std::chrono::steady_clock::now();
         CHECK(rt::compile_shader(*s, rt::Runner::Jit, Precision::Precise, rt::kAllFastOps, false)
                   ->instantiate(params)->runner() == rt::Runner::Interp);
