@@ -347,6 +347,9 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
         // From round 20 the results overwrite the operand block (a register
         // reused), half of those a whole batch of mixed units.
         const bool alias = round >= 20, mixed_whole = alias && round % 2;
+        // Screen derivatives are shared by a 2x2 quad; the program's own
+        // gradients (texture*GradARB) are each lane's.
+        info.grad = round % 5 == 1;
         std::vector<uint32_t> block(size_t(info.operand_count()) * rt::kLanes);
         auto operand = [&](uint32_t k, int lane) -> float& {
             return *reinterpret_cast<float*>(&block[size_t(k) * rt::kLanes + size_t(lane)]);
@@ -389,8 +392,9 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
             } else if (texture && texture->complete()) {
                 rt::LaneLookup lane;
                 lane.coord = {operand_before(0, i), operand_before(1, i), 0.0f};
-                lane.ddx = {operand_before(info.ddx_at(), i), operand_before(info.ddx_at() + 1, i), 0.0f};
-                lane.ddy = {operand_before(info.ddy_at(), i), operand_before(info.ddy_at() + 1, i), 0.0f};
+                const int d = rt::derivative_lane(i, rt::SamplingRules::Common, info.grad);
+                lane.ddx = {operand_before(info.ddx_at(), d), operand_before(info.ddx_at() + 1, d), 0.0f};
+                lane.ddy = {operand_before(info.ddy_at(), d), operand_before(info.ddy_at() + 1, d), 0.0f};
                 lane.lod = operand_before(info.lod_at(), i);
                 lane.bias = true;
                 rt::sample_complete_lane(*texture, lane, want);
