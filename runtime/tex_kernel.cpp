@@ -189,7 +189,9 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         const Texture* texture = bound_texture(m, s.src[0][first], info.target);
         if (!texture || !texture->complete()) continue;
         sampled |= lanes;
-        if (rules == SamplingRules::Gpu && gpu_batch_samples(*texture)) {
+        // The GPU's batch takes one lambda per quad: gradients the program
+        // gives (texture*GradARB) are each lane's, on the lane path.
+        if (rules == SamplingRules::Gpu && !info.grad && gpu_batch_samples(*texture)) {
             sample_gpu_batch(*texture, batch, lanes, out, use_avx2());
             continue;
         }

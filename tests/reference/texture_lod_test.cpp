@@ -84,6 +84,26 @@ std::string shadow_scene() {
            "transform = [ { translate = [36, 36, 0] }, { scale = [64, 64, 1] } ]\n";
 }
 
+// Gradients that differ between the columns of a quad: each fragment's own
+// choose its level, as GL says and llvmpipe does (the screen's derivatives
+// are shared by a quad, the program's are not).
+const char* kGradPerFragment = R"(
+#extension GL_ARB_shader_texture_lod : require
+uniform sampler2D tex;
+void main() {
+    float texels = mod(floor(gl_FragCoord.x), 2.0) == 1.0 ? 8.0 : 1.0;  // level 3 or level 0
+    vec2 g = vec2(texels / 64.0, 0.0);
+    gl_FragColor = texture2DGradARB(tex, gl_TexCoord[0].st, g, g.yx);
+}
+)";
+
+std::string grad_per_fragment_scene() {
+    return "[output]\nsize = [24, 16]\nclear_color = [0.1, 0.1, 0.1, 1]\n[camera]\n"
+           "ortho = { left = -1, right = 1, bottom = -1, top = 1, near = -1, far = 1 }\n"
+           "[textures.0]\nmin_filter = \"nearest_mipmap_nearest\"\n" + levels() +
+           "[uniforms]\ntex = 0\n[[objects]]\nmesh = \"plane\"\nsize = 2\n";
+}
+
 reference::Inputs inputs(const std::string& name, const std::string& toml, const char* fragment) {
     return reference::scene_inputs(name, toml, reference::kTextureMatrixVertex, fragment);
 }
@@ -96,4 +116,9 @@ TEST_CASE("glslrun matches Mesa on ARB_shader_texture_lod's Lod and Grad lookups
 
 TEST_CASE("glslrun matches Mesa on shadow2DGradARB with a mipmapped depth texture", "[reference][textures][lod]") {
     reference::compare("shadow_grad", inputs("shadow_grad", shadow_scene(), kShadowFragment));
+}
+
+TEST_CASE("texture2DGradARB's gradients are each fragment's, in every mode", "[reference][textures][lod]") {
+    reference::compare_in_every_mode("grad_per_fragment",
+                                     inputs("grad_per_fragment", grad_per_fragment_scene(), kGradPerFragment));
 }

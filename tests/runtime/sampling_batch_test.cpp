@@ -392,6 +392,9 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
         // From round 20 the results overwrite the operand block (a register
         // reused), half of those a whole batch of mixed units.
         const bool alias = round >= 20, mixed_whole = alias && round % 2;
+        // Screen derivatives are shared by a 2x2 quad; the program's own
+        // gradients (texture*GradARB) are each lane's.
+        info.grad = round % 5 == 1;
         std::vector<uint32_t> block(size_t(info.operand_count()) * rt::kLanes);
         auto operand = [&](uint32_t k, int lane) -> float& {
             return *reinterpret_cast<float*>(&block[size_t(k) * rt::kLanes + size_t(lane)]);
@@ -435,7 +438,7 @@ TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sa
                 rt::LaneLookup lane;
                 lane.coord = {operand_before(0, i), operand_before(1, i), 0.0f};
                 // Precise's one level of detail per 2x2 quad: its first lane's derivatives.
-                const int d = rt::derivative_lane(i, rt::SamplingRules::Common, false);
+                const int d = rt::derivative_lane(i, rt::SamplingRules::Common, info.grad);
                 lane.ddx = {operand_before(info.ddx_at(), d), operand_before(info.ddx_at() + 1, d), 0.0f};
                 lane.ddy = {operand_before(info.ddy_at(), d), operand_before(info.ddy_at() + 1, d), 0.0f};
                 lane.lod = operand_before(info.lod_at(), i);
