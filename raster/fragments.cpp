@@ -73,11 +73,33 @@ void load_lanes(rt::Executor& in, ir::Kind kind, ir::Reg r, Lanes& v, int lanes)
 
 }  // namespace
 
+// Vertex i's barycentric weight as a plane, from the unsnapped window
+// positions (in double): coverage uses the positions snapped to the
+// subpixel grid, but attributes interpolated over the snapped triangle are
+// off by the snap (1/512 pixel) over the triangle's size, up to 1e-4 of a
+// texture coordinate's range on small triangles; llvmpipe sets up its
+// attribute planes from the float positions too. False where those
+// positions make no triangle.
+bool set_weight_planes(FsPrimitive& prim) {
+    std::array<glm::dvec2, 3> p;
+    const glm::dvec2 origin(prim.ox + 0.5, prim.oy + 0.5);
+    for (int i = 0; i < 3; ++i) p[size_t(i)] = glm::dvec2(prim.v[size_t(i)].win) - origin;
+    const double area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+    if (!(std::fabs(area2) > 0.0) || !std::isfinite(area2)) return false;
+    for (size_t i = 0; i < 3; ++i) {
+        const glm::dvec2 &pj = p[(i + 1) % 3], &pk = p[(i + 2) % 3];
+        prim.weight[i] = to_plane((pj.y - pk.y) / area2, (pk.x - pj.x) / area2, (pj.x * pk.y - pk.x * pj.y) / area2);
+    }
+    return true;
+}
+
 void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& t) {
     prim.ox = t.bbox.x0;
     prim.oy = t.bbox.y0;
-    // The weights are the edge functions over twice the area, exact at the
-    // origin (integers) and with per-pixel steps of kSubpixelOne.
+    const bool weights_set = set_weight_planes(prim);
+    // Depth (and the weights where the float positions are degenerate): the
+    // edge functions over twice the area, exact at the origin (integers)
+    // and with per-pixel steps of kSubpixelOne.
     std::array<int64_t, 3> e = edge_values(t, prim.ox, prim.oy);
     const double inv_area2 = 1.0 / double(t.area2);
     double za = 0, zb = 0, zc = 0;
@@ -85,7 +107,7 @@ void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& t) {
         double a = double(t.ea[i]) * double(kSubpixelOne) * inv_area2;
         double b = double(t.eb[i]) * double(kSubpixelOne) * inv_area2;
         double c = double(e[i]) * inv_area2;
-        prim.weight[i] = to_plane(a, b, c);
+        if (!weights_set) prim.weight[i] = to_plane(a, b, c);
         za += a * prim.v[i].z;
         zb += b * prim.v[i].z;
         zc += c * prim.v[i].z;

@@ -58,6 +58,18 @@ inline Inputs scene_inputs(const std::string& name, const std::string& toml, con
     return {{{name + ".vert", vertex}}, {{name + ".frag", fragment}}, std::move(*scene)};
 }
 
+// DIR/NAME.toml with its program DIR/NAME.vert and DIR/NAME.frag (the
+// scene's passes may name their own).
+inline Inputs scene_files(const std::string& dir, const std::string& name) {
+    auto scene = scene::load_scene(dir + name + ".toml");
+    if (!scene) FAIL(scene.error().str());
+    auto vs = read_shader(dir + name + ".vert");
+    auto fs = read_shader(dir + name + ".frag");
+    if (!vs) FAIL(vs.error().str());
+    if (!fs) FAIL(fs.error().str());
+    return {{*vs}, {*fs}, std::move(*scene)};
+}
+
 // One image per colour buffer (draw_buffers).
 inline Result<std::vector<scene::Image>> render_glslrun(const Inputs& in) {
     auto program = Program::compile(in.vertex, in.fragment);

@@ -1,0 +1,2 @@
+varying vec4 color;
+void main() { gl_FragColor = vec4(color.rgb, 1.0); }

@@ -1,0 +1,9 @@
+// Cel shading: the lit side quantised into bands by a table of thresholds.
+varying vec3 normal;
+varying vec3 position;
+
+void main() {
+    position = vec3(gl_ModelViewMatrix * gl_Vertex);
+    normal = gl_NormalMatrix * gl_Normal;
+    gl_Position = ftransform();
+}

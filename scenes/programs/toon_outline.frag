@@ -1,0 +1,2 @@
+uniform vec3 ink;
+void main() { gl_FragColor = vec4(ink, 1.0); }
