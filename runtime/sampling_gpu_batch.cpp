@@ -524,10 +524,14 @@ template <bool kAvx2>
         if (two) {
             sample_levels<kAvx2>(texture, l, lk, l.level[1], second, dims, l.second);
             // gpu::blend2() of the two levels in integers (exact in float there too).
+            // The lanes that read one level hold anything in `second` (and
+            // the inactive ones in `first`): zeros there, so that no value
+            // outside int's range is converted.
             for (int c = 0; c < 4; ++c)
                 for (int i = 0; i < kLanes; ++i) {
-                    const int w = l.mip_weight[i];
-                    const int sum = int(l.first[c][i]) * (256 - w) + int(l.second[c][i]) * w;
+                    const int w = second[i] ? l.mip_weight[i] : 0;
+                    const float near = second[i] ? l.first[c][i] : 0.0f, far = second[i] ? l.second[c][i] : 0.0f;
+                    const int sum = int(near) * (256 - w) + int(far) * w;
                     const float blend = float((sum + 128) >> 8);
                     l.first[c][i] = second[i] ? blend : l.first[c][i];
                 }
