@@ -15,6 +15,7 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
 #include "runtime/sampling_gpu_batch.h"
+#include "runtime/sampling_rules.h"
 
 namespace glslrun::rt::kernels {
 
@@ -178,8 +179,12 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
     if (!whole) fill_defaults(out, m.lookups);
     const FloatOperands<W> floats(info, ops.block);
     BatchLookup batch = floats.lookup(info);
+    // The batched sampler reads derivatives only where the texture's level
+    // of detail matters (lod_matters()): the quads' copy is made for the
+    // first such texture, not for every lookup (a tenth of a 3D-texture
+    // frame without mipmaps).
     alignas(32) float quad_derivatives[6][kLanes];
-    if (batch.implicit && derivative_lane(1, rules, info.grad) == 0) share_quad_derivatives(batch, quad_derivatives);
+    bool share = batch.implicit && derivative_lane(1, rules, info.grad) == 0;
     // The lanes' unit is almost always one: each unit's lanes are sampled together.
     LaneMask left = lookups, sampled = 0;
     while (left) {
@@ -196,6 +201,10 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
             continue;
         }
         if (!lanes_only(*texture, rules) && batch_samples(*texture)) {
+            if (share && sampling::lod_matters(texture->sampler)) {
+                share_quad_derivatives(batch, quad_derivatives);
+                share = false;
+            }
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;
         }
