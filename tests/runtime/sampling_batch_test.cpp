@@ -21,13 +21,13 @@
 #include "runtime/sampling_batch.h"
 #include "runtime/sampling_direct.h"
 #include "runtime/texture_levels.h"
+#include "tests/runtime/sampling_inputs.h"
 
 using namespace glslrun;
 
 namespace {
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using namespace sampling_inputs;
 
 TextureImage random_image(std::mt19937& rng, int w, int h, int d = 1) {
     std::uniform_real_distribution<float> value(-0.25f, 1.25f);
@@ -43,26 +43,6 @@ Texture make(std::mt19937& rng, TextureTarget target, TextureFormat format, int 
     if (!t) FAIL(t.error().str());
     t->generate_mipmaps();
     return std::move(*t);
-}
-
-// A coordinate: mostly ordinary, sometimes an edge case.
-float coordinate(std::mt19937& rng) {
-    static constexpr float kSpecial[] = {kNaN, kInf, -kInf, 1e30f, -1e30f, 0.0f, -0.0f, 1e-40f, 0.5f, 1.0f,
-                                         -1.0f, 0.125f, 0.875f, 2.0f, 16777216.0f, -8388609.0f, 3.0e9f};
-    std::uniform_int_distribution<int> pick(0, 9);
-    if (pick(rng) == 0) return kSpecial[std::uniform_int_distribution<size_t>(0, std::size(kSpecial) - 1)(rng)];
-    return std::uniform_real_distribution<float>(-3.0f, 3.0f)(rng);
-}
-
-// A derivative spanning magnification to strong minification.
-float derivative(std::mt19937& rng) {
-    std::uniform_int_distribution<int> pick(0, 19);
-    const int p = pick(rng);
-    if (p == 0) return 0.0f;
-    if (p == 1) return kNaN;
-    if (p == 2) return kInf;
-    const float magnitude = std::exp2(std::uniform_real_distribution<float>(-12.0f, 4.0f)(rng));
-    return pick(rng) < 10 ? magnitude : -magnitude;
 }
 
 struct Operands {
@@ -183,13 +163,6 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
         }
     }
 }
-
-constexpr TextureFilter kFilters[] = {TextureFilter::Nearest,           TextureFilter::Linear,
-                                      TextureFilter::NearestMipmapNearest, TextureFilter::LinearMipmapNearest,
-                                      TextureFilter::NearestMipmapLinear,  TextureFilter::LinearMipmapLinear};
-constexpr TextureWrap kWraps[] = {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::Clamp,
-                                  TextureWrap::ClampToBorder, TextureWrap::MirroredRepeat};
-constexpr ir::TexLod kLods[] = {ir::TexLod::Implicit, ir::TexLod::ImplicitBias, ir::TexLod::Explicit};
 
 // Every filter pair, wrap pair and LOD kind on `texture`, a few batches
 // each; a 3D texture's r takes a wrap mode of its own.

@@ -18,13 +18,13 @@
 #include "runtime/mipmap_gpu.h"
 #include "runtime/sampling_gpu_batch.h"
 #include "runtime/texture_levels.h"
+#include "tests/runtime/sampling_inputs.h"
 
 using namespace glslrun;
 
 namespace {
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using namespace sampling_inputs;
 
 // RGBA8 texels are k/255; the GPU's mipmaps are made from them where the
 // sizes halve exactly, the box filter's otherwise.
@@ -39,24 +39,6 @@ Texture make(std::mt19937& rng, TextureTarget target, int w, int h) {
     if (!t) FAIL(t.error().str());
     if (!rt::generate_gpu_mipmaps(*t)) t->generate_mipmaps();
     return std::move(*t);
-}
-
-float coordinate(std::mt19937& rng) {
-    static constexpr float kSpecial[] = {kNaN, kInf, -kInf, 1e30f, -1e30f, 0.0f, -0.0f, 1e-40f, 0.5f, 1.0f,
-                                         -1.0f, 0.125f, 0.875f, 2.0f, 16777216.0f, -8388609.0f, 3.0e9f};
-    if (std::uniform_int_distribution<int>(0, 9)(rng) == 0)
-        return kSpecial[std::uniform_int_distribution<size_t>(0, std::size(kSpecial) - 1)(rng)];
-    return std::uniform_real_distribution<float>(-3.0f, 3.0f)(rng);
-}
-
-// Magnification to strong minification, in every direction; sometimes 0, NaN or infinite.
-float derivative(std::mt19937& rng) {
-    const int p = std::uniform_int_distribution<int>(0, 19)(rng);
-    if (p == 0) return 0.0f;
-    if (p == 1) return kNaN;
-    if (p == 2) return kInf;
-    const float magnitude = std::exp2(std::uniform_real_distribution<float>(-12.0f, 4.0f)(rng));
-    return p < 11 ? magnitude : -magnitude;
 }
 
 struct Operands {
@@ -113,13 +95,6 @@ void check_batch(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind)
         }
     }
 }
-
-constexpr TextureFilter kFilters[] = {TextureFilter::Nearest,           TextureFilter::Linear,
-                                      TextureFilter::NearestMipmapNearest, TextureFilter::LinearMipmapNearest,
-                                      TextureFilter::NearestMipmapLinear,  TextureFilter::LinearMipmapLinear};
-constexpr TextureWrap kWraps[] = {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::Clamp,
-                                  TextureWrap::ClampToBorder, TextureWrap::MirroredRepeat};
-constexpr ir::TexLod kLods[] = {ir::TexLod::Implicit, ir::TexLod::ImplicitBias, ir::TexLod::Explicit};
 
 void sweep(std::mt19937& rng, Texture& texture) {
     for (TextureFilter min : kFilters)
