@@ -271,8 +271,10 @@ void PipelineEmitter::define_square_depth() {
 // `index` to `index + 3` together (width_ 16, the first one's primitive)
 // where the code is AVX-512's and pairable(index, k) holds for the three
 // others, else `index` and `index + 1` (width_ 8) where pairable(index,
-// index + 1) holds, else quad `index` alone (width_ 4).
-void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable) {
+// index + 1) holds, else quad `index` alone (width_ 4). first(prim), where
+// given, is emitted at the start of each step, for quad `index`'s primitive.
+void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable,
+                                    const std::function<void(llvm::Value* prim)>& first) {
     llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
     llvm::BasicBlock* entry = b_.GetInsertBlock();
     llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
@@ -286,6 +288,8 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, co
     auto x = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, x), i32_, i); };
     auto y = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, y), i32_, i); };
     llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
+    if (first) first(prim);
+    llvm::BasicBlock* step_start = b_.GetInsertBlock();  // `loop`, or where first() left off
     llvm::Value* step = b_.getInt32(1);
     if (pairable) {
         llvm::BasicBlock* after = llvm::BasicBlock::Create(b_.getContext(), "after_quads", fn_);
@@ -320,7 +324,7 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, co
             b_.CreateCondBr(b_.CreateAnd(pairable(index, plus(2)), pairable(index, plus(3))), four, pair);
         }
         llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
-        b_.SetInsertPoint(loop);
+        b_.SetInsertPoint(step_start);
         b_.CreateCondBr(b_.CreateICmpSLT(next, quads), test_pair, single);
         b_.SetInsertPoint(test_pair);
         b_.CreateCondBr(pairable(index, next), pair_or_four, single);
@@ -347,18 +351,22 @@ void PipelineEmitter::define_inputs() {
     // The last quad's primitive and whether it has NaN inputs: the test
     // loads all its interpolated values. Slots in the entry block, which
     // SROA turns into registers.
-    InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty())};
+    InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty()), nullptr};
     b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), state.last_prim);
     b_.CreateStore(b_.getFalse(), state.last_nan);
     // Quads run together only where their primitive has no NaN inputs:
     // the strict version is emitted for single quads only (a copy per width
-    // cost LLVM a fifth more time on a program of several pipelines).
+    // cost LLVM a fifth more time on a program of several pipelines). The
+    // test is emitted once, at the start of each step (once per use, its
+    // four copies were a fifth of the function's LLVM time).
+    auto test_nan = [&](llvm::Value* prim) { state.nan = primitive_nan(state, prim); };
     auto same_primitive = [&](llvm::Value* index, llvm::Value* next) {
         llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
         llvm::Value* same = b_.CreateICmpEQ(prim, batch_field(batch, offsetof(QuadBatch, prim), ptr_, next));
-        return b_.CreateAnd(same, b_.CreateNot(primitive_nan(state, prim)));
+        return b_.CreateAnd(same, b_.CreateNot(state.nan));
     };
-    for_each_quad(batch, [&](llvm::Value* index, const Quad& q) { store_inputs(state, index, q); }, same_primitive);
+    for_each_quad(batch, [&](llvm::Value* index, const Quad& q) { store_inputs(state, index, q); }, same_primitive,
+                  test_nan);
     b_.CreateRetVoid();
 }
 
@@ -377,8 +385,8 @@ llvm::Value* PipelineEmitter::primitive_nan(const InputsState& state, llvm::Valu
 }
 
 // The inputs of quad `index` (and the next one or three, width_ 8 or 16,
-// whose primitive has no NaN inputs: plain): the primitive's NaN test,
-// then the plain or the strict version.
+// whose primitive has no NaN inputs: plain): by the primitive's NaN test
+// (state.nan), the plain or the strict version.
 void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index, const Quad& q) {
     llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
     llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
@@ -387,7 +395,7 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
         // Two versions: the one that orders NaNs (add, mul) runs only for
         // primitives with NaNs in their inputs.
         llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
-        b_.CreateCondBr(primitive_nan(state, q.prim), strict, plain);
+        b_.CreateCondBr(state.nan, strict, plain);
         versions.push_back(strict);
     } else {
         b_.CreateBr(plain);
