@@ -354,4 +354,7 @@ PYBIND11_MODULE(glslrun, m) {
     bind_scene(m);
     bind_mesh(m);
     bind_state(m);
+    // Python's atexit runs before the C exit handlers: a background compile
+    // stops there (glslrun::stop_background_compiles).
+    py::module_::import("atexit").attr("register")(py::cpp_function([] { glslrun::stop_background_compiles(); }));
 }

@@ -1,6 +1,8 @@
 // The process-wide compile queue (runtime/compile_queue.h).
 #include "runtime/compile_queue.h"
 
+#include "glslrun/glslrun.h"
+
 #include <pthread.h>
 
 #include <condition_variable>
@@ -115,3 +117,9 @@ void stop_compiles_before_exit() {
 }
 
 }  // namespace glslrun::rt
+
+namespace glslrun {
+
+void stop_background_compiles() { rt::Queue::get().stop(); }
+
+}  // namespace glslrun

@@ -239,6 +239,15 @@ struct CodeCacheStatus {
 // Creates the directory where it is missing.
 CodeCacheStatus code_cache_status(const ExecOptions& options);
 
+// Stops the JIT's background compiles for good: queued ones are dropped, the
+// running one gives up at its next phase (this waits for it), later ones are
+// not started; programs keep drawing, where their code is not compiled on the
+// interpreter (the same bits). Call it before main returns, when a program may
+// still be compiling: exit handlers registered after the first compile (static
+// locals first used later, LLVM's own) would otherwise run while a compile
+// does. The Python module and the glslrun command call it at exit.
+void stop_background_compiles();
+
 enum class Stage { Vertex, Fragment };
 
 // Compiles one stage alone (glslparsertest-style checks): no link step.

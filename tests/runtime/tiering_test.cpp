@@ -5,7 +5,9 @@
 // compile it will not use, and large programs stay on the interpreter.
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -16,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "glslrun/glslrun.h"
 #include "runtime/backend_cache.h"
 #include "runtime/compile_queue.h"
 #include "runtime/interp_kernels.h"
@@ -217,6 +220,37 @@ TEST_CASE("a forked child has a compile thread of its own", "[runtime][tiering]"
     int status = -1;
     REQUIRE(::waitpid(pid, &status, 0) == pid);
     CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}
+
+namespace {
+
+std::atomic<bool> g_exiting{false};
+
+}  // namespace
+
+// Exit handlers registered after the queue's run before it: a compile still
+// running then (loading LLVM, say) raced them and crashed now and then.
+// stop_background_compiles() waits for it before main returns.
+TEST_CASE("stop_background_compiles: no compile runs once exit begins", "[runtime][tiering]") {
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        std::atomic<bool> started{false};
+        rt::submit_compile([&started] {
+            started = true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            if (g_exiting.load()) ::_exit(3);  // ran on while exit handlers did
+        });
+        while (!started.load()) std::this_thread::yield();
+        std::atexit([] { g_exiting = true; });  // registered after the queue's handler, so run before it
+        glslrun::stop_background_compiles();
+        const bool dropped = rt::submit_compile([] { ::_exit(4); }) && rt::compiles_pending() == 0;
+        std::exit(dropped ? 0 : 5);
+    }
+    int status = -1;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 0);
 }
 

@@ -408,8 +408,9 @@ int main(int argc, char** argv) {
         status = run_command(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fputs("glslrun: error: out of memory\n", stderr);
-        return 2;
+        status = 2;
     }
+    glslrun::stop_background_compiles();  // before any exit handler runs
     // A trace, the IR or a report cut short by a full disk is an error, not a success.
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
         std::fputs("glslrun: error: cannot write standard output\n", stderr);
