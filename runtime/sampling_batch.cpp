@@ -8,6 +8,7 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_avx2.h"
 #include "runtime/sampling_direct.h"
+#include "runtime/sampling_direct3d.h"
 #include "runtime/sampling_levels.h"
 #include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
@@ -733,6 +734,7 @@ void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask la
 #if defined(__x86_64__) && defined(__GNUC__)
     if (avx2 && direct_samples(texture)) return sample_direct(texture, lookup, lanes, out);
     if (avx2 && mip2d_samples(texture)) return sample_mip2d(texture, lookup, lanes, out);
+    if (avx2 && direct3d_samples(texture)) return sample_direct3d(texture, lookup, lanes, out);
     if (avx2) return run_avx2(texture, lookup, lanes, out);
 #endif
     (void)avx2;

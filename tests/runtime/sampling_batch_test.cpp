@@ -14,12 +14,14 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
 #include "runtime/sampling_direct.h"
+#include "runtime/sampling_direct3d.h"
 #include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
 #include "runtime/texture_levels.h"
@@ -388,6 +390,40 @@ TEST_CASE("batched sampling equals per-lane sampling: 3D textures", "[sampling][
             for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth})
                 for (int batch = 0; batch < 4; ++batch) check_batch(rng, three, false, lod, spread);
     }
+}
+
+// The one-pass 3D kernels (sampling_direct3d.h): odd sizes and one-texel
+// axes, every wrap triple that keeps the texels in the image (each axis
+// its own), NEAREST and LINEAR, RGBA8 and float texels. The sweep above
+// reaches them too; this says they are the ones taken, and that a wrap
+// that may meet the border is not.
+TEST_CASE("batched sampling equals per-lane sampling: one-pass 3D kernels", "[sampling][batch]") {
+    std::mt19937 rng(1357);
+    constexpr TextureWrap kInner[] = {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge,
+                                      TextureWrap::Clamp};
+    for (auto [w, h, d] : {std::tuple{1, 1, 1}, {3, 1, 5}, {5, 3, 6}, {1, 7, 2}})
+        for (TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA32F}) {
+            Texture t = make(rng, TextureTarget::Tex3D, format, w, h, d);
+            for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (TextureWrap s : kInner)
+                    for (TextureWrap u : kInner)
+                        for (TextureWrap r : kInner) {
+                            t.sampler.min_filter = t.sampler.mag_filter = filter;
+                            t.sampler.wrap_s = s;
+                            t.sampler.wrap_t = u;
+                            t.sampler.wrap_r = r;
+                            const bool border = filter == TextureFilter::Linear &&
+                                                (s == TextureWrap::Clamp || u == TextureWrap::Clamp ||
+                                                 r == TextureWrap::Clamp);
+#if defined(__x86_64__) && defined(__GNUC__)
+                            REQUIRE(rt::direct3d_samples(t) == !border);
+#endif
+                            check_batch(rng, t, false, ir::TexLod::Implicit);
+                            check_batch(rng, t, false, ir::TexLod::Explicit, Spread::Shared);
+                        }
+            t.sampler.wrap_r = TextureWrap::ClampToBorder;
+            CHECK_FALSE(rt::direct3d_samples(t));
+        }
 }
 
 // The `tex` kernel itself: lanes on several units (and on none: unbound, out
