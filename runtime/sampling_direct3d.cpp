@@ -3,8 +3,8 @@
 // registers, the texel (x, y, z) of an image w x h x d read as texel
 // (x, z * h + y) of a w x (h * d) one (every index in the image: the wraps
 // taken keep it there), LINEAR's four rows (y0, y1 on the planes z0, z1)
-// each one 32-byte load per lane where x1 = x0 + 1, then sample_linear()'s
-// blends: the rows by ax, the planes' rows by ay, the planes by az.
+// blended lane by lane (blend_rows8()) in sample_linear()'s order: the
+// rows by ax, the planes' rows by ay, the planes by az.
 // Before this, 3D lookups went through the batched sampler's lane arrays
 // (indices per axis, eight corner offsets, then the blends).
 #include "runtime/sampling_direct3d.h"
@@ -25,28 +25,6 @@ struct Image3 {
     Axis w, h, d;
 };
 
-// One plane's bilinear blend at rows y0, y1 (already offset by the plane's z * h).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void plane8(const Image3& im, const Linear8& x, V ia, I y0, I y1, V b,
-                                                       V ib, V* plane) {
-    const bool pairs = _mm256_movemask_ps(_mm256_castsi256_ps(
-                           _mm256_cmpeq_epi32(x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
-    V p[4], q[4], row0[4];
-    if (pairs) fetch_pairs8(im.src, x.i0, y0, p, q);
-    else {
-        fetch8<false>(im.src, x.i0, y0, p);
-        fetch8<false>(im.src, x.i1, y0, q);
-    }
-#pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) row0[c] = mix8(p[c], q[c], x.a, ia);
-    if (pairs) fetch_pairs8(im.src, x.i0, y1, p, q);
-    else {
-        fetch8<false>(im.src, x.i0, y1, p);
-        fetch8<false>(im.src, x.i1, y1, q);
-    }
-#pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) plane[c] = mix8(row0[c], mix8(p[c], q[c], x.a, ia), b, ib);
-}
-
 template <bool kLinear, Rule kS, Rule kT, Rule kR>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void lookup3d8(const Image3& im, V s, V t, V r, V* value) {
     const I h = splat_i(im.h.n);
@@ -55,14 +33,15 @@ template <bool kLinear, Rule kS, Rule kT, Rule kR>
         fetch8<false>(im.src, nearest8<kS>(s, im.w), row, value);
     } else {
         const Linear8 x = linear8<kS>(s, im.w), y = linear8<kT>(t, im.h), z = linear8<kR>(r, im.d);
-        const V one = splat(1.0f), ia = _mm256_sub_ps(one, x.a), ib = _mm256_sub_ps(one, y.a);
         const I z0 = _mm256_mullo_epi32(z.i0, h), z1 = _mm256_mullo_epi32(z.i1, h);  // w * h * d below 2^24
-        V near[4], far[4];
-        plane8(im, x, ia, _mm256_add_epi32(z0, y.i0), _mm256_add_epi32(z0, y.i1), y.a, ib, near);
-        plane8(im, x, ia, _mm256_add_epi32(z1, y.i0), _mm256_add_epi32(z1, y.i1), y.a, ib, far);
-        const V ic = _mm256_sub_ps(one, z.a);
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) value[c] = mix8(near[c], far[c], z.a, ic);
+        Row8 rows[4];
+        row_of(im.src.texels, im.w.n, x, _mm256_add_epi32(z0, y.i0), rows[0]);
+        row_of(im.src.texels, im.w.n, x, _mm256_add_epi32(z0, y.i1), rows[1]);
+        row_of(im.src.texels, im.w.n, x, _mm256_add_epi32(z1, y.i0), rows[2]);
+        row_of(im.src.texels, im.w.n, x, _mm256_add_epi32(z1, y.i1), rows[3]);
+        const V ax[2] = {x.a, x.a}, ay[2] = {y.a, y.a};
+        const V all = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+        blend_rows8<2>(rows, ax, ay, z.a, all, value);
     }
 }
 

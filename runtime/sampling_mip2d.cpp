@@ -10,7 +10,8 @@
 //   group's lanes hold (one for a smooth surface: a quad's lanes share
 //   their derivatives), each level's lookup by sampling_direct8.h's steps
 //   with the sizes hoisted, the second level's where a lane has one, mixed
-//   by filter()'s mix().
+//   by filter()'s mix(); LINEAR footprints that stay in the image blended
+//   lane by lane (blend_rows8(): fewer shuffles than transposing each row).
 // Before this, the lookups went through the batched sampler's lane arrays
 // step by step (coordinates, lambda, levels, indices, corners, blends).
 #include "runtime/sampling_mip2d.h"
@@ -103,6 +104,47 @@ template <bool kLinear, Rule kS, Rule kT>
                              {image.height, splat(float(image.height))}, s, t, value);
 }
 
+// choose_level() of eight lanes: the first level, all ones where a second
+// one is mixed in, and its weight. *_MIPMAP_LINEAR (the usual filter) in
+// registers, its selects as choose_level() makes them for a mipmap filter
+// (lambda is finite: clamped); *_MIPMAP_NEAREST lane by lane (as a lane
+// loop, GCC left choose_level() scalar: a tenth of the lookup, perf).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void levels8(const LevelRule& rule, const float* lambda, int* first,
+                                                        int* second, float* weight) {
+    if (rule.nearest_mip) {
+        for (int k = 0; k < 8; ++k) {
+            const LevelChoice d = choose_level(rule, lambda[k]);
+            first[k] = d.d0;
+            second[k] = d.d1 >= 0 ? -1 : 0;
+            weight[k] = d.weight;
+        }
+        return;
+    }
+    const V l = _mm256_loadu_ps(lambda);
+    const V mag = _mm256_cmp_ps(l, splat(rule.c), _CMP_LE_OQ);  // minify = !mag: a mipmap filter
+    const V last = _mm256_cmp_ps(_mm256_add_ps(splat(float(rule.base)), l), splat(float(rule.q)), _CMP_GE_OQ);
+    const V whole = floor8(l);
+    const I linear_level = _mm256_blendv_epi8(_mm256_add_epi32(splat_i(rule.base), _mm256_cvttps_epi32(whole)),
+                                              splat_i(rule.q), _mm256_castps_si256(last));
+    const I d0 = _mm256_blendv_epi8(linear_level, splat_i(rule.base), _mm256_castps_si256(mag));
+    const V two = _mm256_andnot_ps(_mm256_or_ps(mag, last), _mm256_castsi256_ps(splat_i(-1)));
+    _mm256_store_si256(reinterpret_cast<I*>(first), d0);
+    _mm256_store_ps(reinterpret_cast<float*>(second), two);
+    _mm256_store_ps(weight, _mm256_and_ps(two, _mm256_sub_ps(l, whole)));  // else +0
+}
+
+// LINEAR's two rows of one level for lanes g..g+7 at (s, t), and the weights.
+template <Rule kS, Rule kT>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear_rows(const TextureImage& image, V s, V t, Row8* rows, V& ax,
+                                                            V& ay) {
+    const Linear8 x = linear8<kS>(s, {image.width, splat(float(image.width))});
+    const Linear8 y = linear8<kT>(t, {image.height, splat(float(image.height))});
+    row_of(image.texels.data(), image.width, x, y.i0, rows[0]);
+    row_of(image.texels.data(), image.width, x, y.i1, rows[1]);
+    ax = x.a;
+    ay = y.a;
+}
+
 template <bool kLinear, Rule kS, Rule kT>
 GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
     const SamplerState& st = texture.sampler;
@@ -117,12 +159,7 @@ GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask 
         if (!bits) continue;
         alignas(32) float weight[8];
         alignas(32) int first_level[8], second[8];
-        for (int k = 0; k < 8; ++k) {
-            const LevelChoice d = choose_level(rule, lambda[g + k]);
-            first_level[k] = d.d0;
-            second[k] = d.d1 >= 0 ? -1 : 0;
-            weight[k] = d.weight;
-        }
+        levels8(rule, lambda + g, first_level, second, weight);
         const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first_level));
         const int two = _mm256_movemask_ps(_mm256_load_ps(reinterpret_cast<const float*>(second)));
         const V s = load8(lk.coord[0] + g), t = load8(lk.coord[1] + g);
@@ -131,6 +168,21 @@ GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask 
             const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(d0, splat_i(level))));
             left &= ~take;
             V value[4];
+            if constexpr (kLinear && !may_border(kS, true) && !may_border(kT, true)) {
+                // Every texel in the image: the lane-by-lane blends (blend_rows8()).
+                Row8 rows[4];
+                V ax[2], ay[2];
+                linear_rows<kS, kT>(levels[size_t(level)], s, t, rows, ax[0], ay[0]);
+                if (two & take) {  // their second level is level + 1, which exists: level < q
+                    linear_rows<kS, kT>(levels[size_t(level) + 1], s, t, rows + 2, ax[1], ay[1]);
+                    blend_rows8<2>(rows, ax, ay, _mm256_load_ps(weight),
+                                   _mm256_load_ps(reinterpret_cast<const float*>(second)), value);
+                } else {
+                    blend_rows8<1>(rows, ax, ay, ax[0], ax[0], value);
+                }
+                store8(value, take, g, out);
+                continue;
+            }
             level8<kLinear, kS, kT>(levels[size_t(level)], st, s, t, value);
             if (two & take) {  // their second level is level + 1, which exists: level < q
                 V next[4];
