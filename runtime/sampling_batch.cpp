@@ -9,6 +9,7 @@
 #include "runtime/sampling_avx2.h"
 #include "runtime/sampling_direct.h"
 #include "runtime/sampling_direct3d.h"
+#include "runtime/sampling_direct8.h"
 #include "runtime/sampling_levels.h"
 #include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
