@@ -38,8 +38,10 @@ bool direct_samples(const Texture& texture) {
            !lod_matters(texture.sampler);
 }
 
-GLSLRUN_AVX2 void sample_direct(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
-                                float (*out)[kLanes]) {
+namespace {
+
+// The kernel and the image of a texture that direct_samples() takes.
+DirectSampler choose(const Texture& texture) {
     const SamplerState& st = texture.sampler;
     const bool rect = texture.target() == TextureTarget::Rect;
     const TextureImage& image = texture.levels(0)[rect ? 0 : size_t(st.base_level)];
@@ -48,13 +50,50 @@ GLSLRUN_AVX2 void sample_direct(const Texture& texture, const BatchLookup& looku
     const bool linear = linear_within_level(st.mag_filter);
     if (rect) with_rules<true>(st, linear, pick);
     else with_rules<false>(st, linear, pick);
-    k(source_of(image, st), {image.width, splat(float(image.width))}, {image.height, splat(float(image.height))}, lookup, lanes, out);
+    DirectSampler d;
+    d.kernel = reinterpret_cast<void (*)()>(k);
+    d.texels = image.texels.data();
+    d.width = image.width;
+    d.height = image.height;
+    const glm::vec4& b = st.border_color;  // border_texel() of a colour texture
+    for (int c = 0; c < 4; ++c) d.border[c] = unorm(b[c]);
+    return d;
+}
+
+GLSLRUN_AVX2 void run_chosen(const DirectSampler& d, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]) {
+    Source src{static_cast<const glm::vec4*>(d.texels), d.width, {}};
+    for (int c = 0; c < 4; ++c) src.border[c] = splat(d.border[c]);
+    reinterpret_cast<Kernel>(d.kernel)(src, {d.width, splat(float(d.width))}, {d.height, splat(float(d.height))},
+                                       lookup, lanes, out);
+}
+
+GLSLRUN_AVX2 void run_bound(const DirectSampler& d, const float* s, const float* t, LaneMask lanes,
+                            float (*out)[kLanes]) {
+    BatchLookup lookup;  // the kernels read the first two coordinates only
+    lookup.coord[0] = s;
+    lookup.coord[1] = t;
+    run_chosen(d, lookup, lanes, out);
+}
+
+}  // namespace
+
+GLSLRUN_AVX2 void sample_direct(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
+                                float (*out)[kLanes]) {
+    run_chosen(choose(texture), lookup, lanes, out);
+}
+
+DirectSampler bind_direct(const Texture* texture) {
+    if (!texture || !__builtin_cpu_supports("avx2") || !texture->complete() || !direct_samples(*texture)) return {};
+    DirectSampler d = choose(*texture);
+    d.run = run_bound;
+    return d;
 }
 #undef GLSLRUN_AVX2
 
 #else
 bool direct_samples(const Texture&) { return false; }
 void sample_direct(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
+DirectSampler bind_direct(const Texture*) { return {}; }
 #endif
 
 }  // namespace glslrun::rt

@@ -23,4 +23,22 @@ bool direct_samples(const Texture& texture);
 // left as they are. Only for a CPU with AVX2 (cpu_has_avx2()).
 void sample_direct(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]);
 
+// A texture that direct_samples() takes, its kernel chosen once for many
+// lookups: the JIT's generated `tex` code calls `run` through this record
+// (runtime/jit/tex_direct.cpp) with no operand block and no selection per
+// lookup. The texture must stay alive and unchanged while it is used.
+struct DirectSampler {
+    // sample_direct()'s results for the lanes of `lanes` at (s[i], t[i]).
+    using Run = void (*)(const DirectSampler& self, const float* s, const float* t, LaneMask lanes,
+                         float (*out)[kLanes]);
+    Run run = nullptr;      // null: not a texture of sample_direct(), or no AVX2
+    void (*kernel)() = nullptr;  // the state's kernel (sampling_direct.cpp's type)
+    const void* texels = nullptr;
+    int width = 0, height = 0;
+    float border[4] = {};
+};
+
+// `texture` (null, incomplete or any other: `run` is then null) bound for DirectSampler::run.
+DirectSampler bind_direct(const Texture* texture);
+
 }  // namespace glslrun::rt

@@ -13,10 +13,21 @@ const Pipeline* Cache::get(const State& state, bool wait, const ExecOptions& opt
     const rt::JitEntryPoints* jit = rt::jit_plugin();
     if (!jit) return nullptr;
     const std::string key = state_key(state);
-    auto compile = [state, jit, config = rt::code_cache_config(options)](const std::atomic<bool>*) {
-        PipelineCompile done{&config};
+    auto compile = [state, jit, config = rt::code_cache_config(options), shelf = inputs_](const std::atomic<bool>*) {
+        const std::string inputs_key = state_key(inputs_only(state));
+        PipelineCompile done;
+        done.cache = &config;
+        {
+            std::lock_guard hold(shelf->lock);
+            auto found = shelf->made.find(inputs_key);
+            if (found != shelf->made.end()) done.inputs = found->second;
+        }
         Slots::Made made;
         made.code = jit->compile_pipeline(state, &done);
+        if (made.code) {
+            std::lock_guard hold(shelf->lock);
+            shelf->made.emplace(inputs_key, done.inputs);
+        }
         made.seconds = done.seconds;
         made.loaded = done.loaded;
         return made;

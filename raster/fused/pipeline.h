@@ -22,7 +22,9 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,17 @@ struct Target {
     int32_t width = 0, height = 0;
 };
 
+// The inputs function of a pipeline: it depends on State::inputs and
+// State::avx2 alone (inputs_only()), so the states a program draws with
+// share one (mirror draws with four; the inputs function was two thirds of
+// each one's LLVM time).
+struct InputsCode {
+    // Writes the inputs: regs[i] is the register of State::inputs[i].
+    using InputsFn = void (*)(const QuadBatch* batch, uint32_t* const* regs);
+    virtual ~InputsCode() = default;
+    InputsFn inputs = nullptr;
+};
+
 // The fragment functions of one State.
 struct Pipeline {
     // The early depth test (and write) of one quad's lanes in `mask`; returns those that pass.
@@ -66,8 +79,7 @@ struct Pipeline {
     // returns those that pass.
     using SquareDepthFn = uint64_t (*)(const void* prim, int32_t ox, int32_t oy, uint64_t pixels,
                                        const Target* t);
-    // Writes the inputs: regs[i] is the register of State::inputs[i].
-    using InputsFn = void (*)(const QuadBatch* batch, uint32_t* const* regs);
+    using InputsFn = InputsCode::InputsFn;
     // The per-fragment operations of the lanes of `alive` in lane order;
     // regs: colour buffer 0's output's registers (color_channels of them),
     // gl_FragDepth's, then those of buffers 1 and up (State::more_channels). Returns the lanes written.
@@ -76,14 +88,19 @@ struct Pipeline {
     virtual ~Pipeline() = default;
     QuadDepthFn quad_depth = nullptr;  // null unless State::early_depth
     SquareDepthFn square_depth = nullptr;  // null unless State::early_depth
-    InputsFn inputs = nullptr;
+    InputsFn inputs = nullptr;  // shared_inputs's
     OutputsFn outputs = nullptr;
+    std::shared_ptr<const InputsCode> shared_inputs;
 };
 
 // A pipeline's compile: in, the code cache (may be null: none); out,
 // LLVM's time (thread CPU) and whether the code came from the cache.
 struct PipelineCompile {
     const rt::CodeCacheConfig* cache = nullptr;
+    // In: the inputs code of another of the program's states with the same
+    // inputs_only() (null: none yet, made with this pipeline); out: the
+    // pipeline's.
+    std::shared_ptr<const InputsCode> inputs;
     double seconds = 0;
     bool loaded = false;
 };
@@ -118,7 +135,14 @@ public:
 
 private:
     using Slots = rt::CodeSlots<std::string, Pipeline>;
+    // The inputs functions made so far, by state_key(inputs_only(state)):
+    // each state's compile takes its inputs from here.
+    struct Inputs {
+        std::mutex lock;
+        std::map<std::string, std::shared_ptr<const InputsCode>> made;
+    };
     std::shared_ptr<Slots> slots_;
+    std::shared_ptr<Inputs> inputs_ = std::make_shared<Inputs>();
     std::atomic<uint64_t> unfused_{0};
 };
 

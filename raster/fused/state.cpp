@@ -75,6 +75,13 @@ std::string state_key(const State& state) {
     return k.take();
 }
 
+State inputs_only(const State& s) {
+    State only;
+    only.inputs = s.inputs;
+    only.avx2 = s.avx2;
+    return only;
+}
+
 void forget_known_fields(State& s) {
     const State none;
     FragmentState& o = s.ops;

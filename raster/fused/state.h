@@ -49,6 +49,10 @@ struct State {
 // bits), different for different ones.
 std::string state_key(const State& s);
 
+// What a pipeline's inputs function depends on: `s`'s inputs and ISA, the
+// rest default (raster/fused/pipeline.h, InputsCode).
+State inputs_only(const State& s);
+
 // Whether the generated code computes `s`'s bits; otherwise the C++ path
 // (raster/fragments.cpp) draws.
 bool fusable(const State& s);

@@ -160,7 +160,7 @@ void Emitter::emit_instr(const ir::Instr& in) {
         llvm::Value* v = emit_math(b_, in.op, fast, load_float(in.src[0]), binary ? load_float(in.src[1]) : nullptr);
         result = b_.CreateBitCast(v, vi32_);
     } else if (calls_kernel(in.op) || !emit_native(in, &result)) {
-        emit_call_out(in);
+        if (!emit_tex_direct(in)) emit_call_out(in);
         return;
     }
     if (result) write_reg(in.dst, result, write_mode(in.op), in.unmasked);  // store_ind writes none

@@ -72,6 +72,9 @@ private:
     llvm::Value* register_lanes(llvm::Value* regs);     // kLanes x ptr
     void emit_precise_pow(const ir::Instr& in);
     void emit_call_out(const ir::Instr& in);
+    // tex_direct.cpp: a 2D or rectangle lookup that calls its unit's
+    // one-pass sampler where it has one; false where the op is not one.
+    bool emit_tex_direct(const ir::Instr& in);
     llvm::Value* reg_ptr(ir::Reg r);   // its local, or file_ptr(r)
     llvm::Value* file_ptr(ir::Reg r);  // in the register file
     llvm::Value* load_reg(ir::Reg r);  // kLanes x i32

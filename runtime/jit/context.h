@@ -7,6 +7,7 @@
 
 #include "runtime/backend.h"
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling_direct.h"
 
 namespace glslrun::rt::jit {
 
@@ -43,12 +44,26 @@ struct Context {
     // the executor's register file (call_steps[i] for the i-th CallOut).
     Machine<uint32_t> machine;
     const Step<uint32_t>* call_steps = nullptr;
+    // The one-pass samplers of the bound textures (tex_direct.cpp), two per
+    // unit (direct_slot()), which the generated `tex` code calls where its
+    // lanes' unit has one; null: none.
+    const DirectSampler* direct = nullptr;
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
 inline constexpr size_t kCreditOffset = offsetof(Context, credit);
 inline constexpr size_t kAliveOffset = offsetof(Context, alive);
 inline constexpr size_t kErrorLineOffset = offsetof(Context, error_line);
+inline constexpr size_t kDirectOffset = offsetof(Context, direct);
+inline constexpr size_t kLookupsOffset = offsetof(Context, machine) + offsetof(Machine<uint32_t>, lookups);
+
+// Context::direct's entry of a unit's 2D texture (rect false) or rectangle.
+constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2 + (rect ? 1 : 0); }
+inline constexpr size_t kDirectSlots = direct_slot(kMaxTextureUnits, false);
+
+// The units' one-pass samplers into out[kDirectSlots] (all null where
+// `units` is null or the CPU lacks AVX2).
+void bind_direct_samplers(const GLState::TextureUnit* units, DirectSampler* out);
 
 // One instruction that the generated code runs with an interpreter kernel.
 struct CallOut {

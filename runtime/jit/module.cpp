@@ -6,6 +6,7 @@
 #include "runtime/jit/jit.h"
 
 #include <algorithm>
+#include <array>
 #include <ctime>
 #include <cstdlib>
 #include <mutex>
@@ -218,6 +219,8 @@ public:
         call_steps_.reserve(code.call_outs.size());
         for (const CallOut& call : code.call_outs) call_steps_.push_back(call_out_step(call, regs_.data, code.reg_count));
         ctx_.call_steps = call_steps_.data();
+        bind_direct_samplers(p.textures, direct_.data());
+        ctx_.direct = direct_.data();
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
     }
@@ -254,6 +257,7 @@ private:
     RunLimits limits_;
     BudgetShare share_;
     std::vector<Step<uint32_t>> call_steps_;
+    std::array<DirectSampler, kDirectSlots> direct_;
     Context ctx_;
 };
 

@@ -55,11 +55,28 @@ grep -q "1 pipeline compiled, 0 loaded from the code cache" fused_cold.txt || fa
 grep -q "0 shaders compiled, 2 loaded" fused_warm.txt || fail "fused, warm: $(grep backend fused_warm.txt)"
 grep -q "0 pipelines compiled, 1 loaded from the code cache" fused_warm.txt ||
     fail "fused, warm: the pipeline was not loaded: $(grep fragments fused_warm.txt)"
-[ "$(entries "$tmp/fused-cache")" = 3 ] || fail "fused: $(entries "$tmp/fused-cache") entries, not 3 (2 shaders, 1 pipeline)"
+[ "$(entries "$tmp/fused-cache")" = 4 ] ||
+    fail "fused: $(entries "$tmp/fused-cache") entries, not 4 (2 shaders, 1 pipeline: its inputs and the rest)"
 # shellcheck disable=SC2086
 "$glslrun" $quad --backend interp -o fused_interp.png >/dev/null || fail "the quad did not render (interp)"
 cmp -s fused_cold.png fused_warm.png || fail "the image with the cached pipeline differs from the first"
 cmp -s fused_cold.png fused_interp.png || fail "the fused pipeline's image differs from the interpreter's"
+
+# A program drawn with four states (stencil mark and test, colour mask,
+# blending) has four pipelines that share one inputs function: 2 shaders,
+# 1 inputs function and 4 pipelines' rest in the cache, all loaded again.
+mirror="$src/bench/corpus/mirror.vert $src/bench/corpus/mirror.frag $src/bench/corpus/mirror.toml --size 1024x1024 --bench 2"
+for name in mirror_cold mirror_warm; do
+    # shellcheck disable=SC2086
+    "$glslrun" $mirror --backend jit --stats --cache-dir "$tmp/mirror-cache" -o $name.png >$name.txt 2>$name.err ||
+        fail "render $name failed: $(head -c 300 $name.err)"
+done
+grep -q "4 pipelines compiled, 0 loaded from the code cache" mirror_cold.txt ||
+    fail "mirror, cold: $(grep pipelines mirror_cold.txt)"
+grep -q "0 pipelines compiled, 4 loaded from the code cache" mirror_warm.txt ||
+    fail "mirror, warm: $(grep pipelines mirror_warm.txt)"
+[ "$(entries "$tmp/mirror-cache")" = 7 ] || fail "mirror: $(entries "$tmp/mirror-cache") entries, not 7"
+cmp -s mirror_cold.png mirror_warm.png || fail "mirror: the image with the cached pipelines differs"
 
 # The environment: GLSLRUN_CACHE_DIR, and GLSLRUN_NO_CACHE over it.
 [ "$(entries "$tmp/env-cache")" = 0 ] || fail "--no-cache or --cache-dir wrote to GLSLRUN_CACHE_DIR"

@@ -271,8 +271,10 @@ void PipelineEmitter::define_square_depth() {
 // `index` to `index + 3` together (width_ 16, the first one's primitive)
 // where the code is AVX-512's and pairable(index, k) holds for the three
 // others, else `index` and `index + 1` (width_ 8) where pairable(index,
-// index + 1) holds, else quad `index` alone (width_ 4).
-void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable) {
+// index + 1) holds, else quad `index` alone (width_ 4). first(prim), where
+// given, is emitted at the start of each step, for quad `index`'s primitive.
+void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable,
+                                    const std::function<void(llvm::Value* prim)>& first) {
     llvm::Value* quads = load_i(batch, offsetof(QuadBatch, quads));
     llvm::BasicBlock* entry = b_.GetInsertBlock();
     llvm::BasicBlock* loop = llvm::BasicBlock::Create(b_.getContext(), "quad", fn_);
@@ -286,6 +288,8 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, co
     auto x = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, x), i32_, i); };
     auto y = [&](llvm::Value* i) { return batch_field(batch, offsetof(QuadBatch, y), i32_, i); };
     llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
+    if (first) first(prim);
+    llvm::BasicBlock* step_start = b_.GetInsertBlock();  // `loop`, or where first() left off
     llvm::Value* step = b_.getInt32(1);
     if (pairable) {
         llvm::BasicBlock* after = llvm::BasicBlock::Create(b_.getContext(), "after_quads", fn_);
@@ -320,7 +324,7 @@ void PipelineEmitter::for_each_quad(llvm::Value* batch, const QuadBody& body, co
             b_.CreateCondBr(b_.CreateAnd(pairable(index, plus(2)), pairable(index, plus(3))), four, pair);
         }
         llvm::BasicBlock* test_pair = llvm::BasicBlock::Create(b_.getContext(), "test_pair", fn_);
-        b_.SetInsertPoint(loop);
+        b_.SetInsertPoint(step_start);
         b_.CreateCondBr(b_.CreateICmpSLT(next, quads), test_pair, single);
         b_.SetInsertPoint(test_pair);
         b_.CreateCondBr(pairable(index, next), pair_or_four, single);
@@ -347,18 +351,22 @@ void PipelineEmitter::define_inputs() {
     // The last quad's primitive and whether it has NaN inputs: the test
     // loads all its interpolated values. Slots in the entry block, which
     // SROA turns into registers.
-    InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty())};
+    InputsState state{regs, b_.CreateAlloca(ptr_), b_.CreateAlloca(b_.getInt1Ty()), nullptr};
     b_.CreateStore(llvm::ConstantPointerNull::get(llvm::PointerType::getUnqual(b_.getContext())), state.last_prim);
     b_.CreateStore(b_.getFalse(), state.last_nan);
     // Quads run together only where their primitive has no NaN inputs:
     // the strict version is emitted for single quads only (a copy per width
-    // cost LLVM a fifth more time on a program of several pipelines).
+    // cost LLVM a fifth more time on a program of several pipelines). The
+    // test is emitted once, at the start of each step (once per use, its
+    // four copies were a fifth of the function's LLVM time).
+    auto test_nan = [&](llvm::Value* prim) { state.nan = primitive_nan(state, prim); };
     auto same_primitive = [&](llvm::Value* index, llvm::Value* next) {
         llvm::Value* prim = batch_field(batch, offsetof(QuadBatch, prim), ptr_, index);
         llvm::Value* same = b_.CreateICmpEQ(prim, batch_field(batch, offsetof(QuadBatch, prim), ptr_, next));
-        return b_.CreateAnd(same, b_.CreateNot(primitive_nan(state, prim)));
+        return b_.CreateAnd(same, b_.CreateNot(state.nan));
     };
-    for_each_quad(batch, [&](llvm::Value* index, const Quad& q) { store_inputs(state, index, q); }, same_primitive);
+    for_each_quad(batch, [&](llvm::Value* index, const Quad& q) { store_inputs(state, index, q); }, same_primitive,
+                  test_nan);
     b_.CreateRetVoid();
 }
 
@@ -377,8 +385,8 @@ llvm::Value* PipelineEmitter::primitive_nan(const InputsState& state, llvm::Valu
 }
 
 // The inputs of quad `index` (and the next one or three, width_ 8 or 16,
-// whose primitive has no NaN inputs: plain): the primitive's NaN test,
-// then the plain or the strict version.
+// whose primitive has no NaN inputs: plain): by the primitive's NaN test
+// (state.nan), the plain or the strict version.
 void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index, const Quad& q) {
     llvm::BasicBlock* stored = llvm::BasicBlock::Create(b_.getContext(), "stored", fn_);
     llvm::BasicBlock* plain = llvm::BasicBlock::Create(b_.getContext(), "plain", fn_);
@@ -387,7 +395,7 @@ void PipelineEmitter::store_inputs(const InputsState& state, llvm::Value* index,
         // Two versions: the one that orders NaNs (add, mul) runs only for
         // primitives with NaNs in their inputs.
         llvm::BasicBlock* strict = llvm::BasicBlock::Create(b_.getContext(), "strict", fn_);
-        b_.CreateCondBr(primitive_nan(state, q.prim), strict, plain);
+        b_.CreateCondBr(state.nan, strict, plain);
         versions.push_back(strict);
     } else {
         b_.CreateBr(plain);
@@ -414,94 +422,119 @@ namespace {
 using rt::jit::Engine;
 using rt::jit::EngineCode;
 
-// The pipeline's code in the process's LLJIT (engine.h), removed with it.
+// A pipeline's code in the process's LLJIT (engine.h), removed with it:
+// the depth tests and the outputs of its state; its inputs function, shared
+// with the program's other states (InputsCode).
 class CompiledPipeline final : public Pipeline {
 public:
     EngineCode code;
 };
 
-// The code cache's key of `state`'s pipeline: the engine's salt (glslrun's
-// build, LLVM, the target) and the state's bytes (state_key), tagged apart
-// from the shaders' keys (runtime/jit/cached_shader.cpp).
-std::optional<rt::CodeKey> pipeline_key(const Engine& engine, const State& state) {
+class CompiledInputs final : public InputsCode {
+public:
+    EngineCode code;
+};
+
+// The code cache's key of `part` of `state`'s pipeline: the engine's salt
+// (glslrun's build, LLVM, the target) and the state's bytes (state_key),
+// tagged apart from the shaders' keys (runtime/jit/cached_shader.cpp).
+std::optional<rt::CodeKey> part_key(const Engine& engine, const char* part, const State& state) {
     if (engine.cache_salt.empty()) return std::nullopt;
-    const std::string bytes = engine.cache_salt + "\nfused pipeline\n" + state_key(state);
+    const std::string bytes = engine.cache_salt + "\nfused " + part + "\n" + state_key(state);
     return llvm::BLAKE3::hash(llvm::arrayRefFromStringRef(bytes));
 }
 
-// Links `object` into `code` and finds its functions; false where LLVM
-// refused it or a function is missing.
-bool link(Engine& engine, CompiledPipeline& code, std::unique_ptr<llvm::MemoryBuffer> object, bool early_depth) {
-    if (!object || !code.code.add_object(engine, std::move(object))) return false;
+// Finds a part's functions in its linked code; false where one is missing.
+bool find_functions(CompiledPipeline& code, bool early_depth) {
     if (early_depth) {
         code.quad_depth = reinterpret_cast<Pipeline::QuadDepthFn>(code.code.lookup("glslrun_quad_depth"));
         code.square_depth = reinterpret_cast<Pipeline::SquareDepthFn>(code.code.lookup("glslrun_square_depth"));
     }
-    code.inputs = reinterpret_cast<Pipeline::InputsFn>(code.code.lookup("glslrun_inputs"));
     code.outputs = reinterpret_cast<Pipeline::OutputsFn>(code.code.lookup("glslrun_outputs"));
-    return code.inputs && code.outputs && (!early_depth || (code.quad_depth && code.square_depth));
+    return code.outputs && (!early_depth || (code.quad_depth && code.square_depth));
 }
 
-// `state`'s pipeline from the code cache; null where it has none (or none
-// that links: it is then compiled and stored anew).
-std::unique_ptr<CompiledPipeline> load(Engine& engine, const rt::DiskCache& disk, const rt::CodeKey& key,
-                                       const State& state) {
-    std::optional<std::string> payload = disk.load(key);
-    if (!payload) return nullptr;
-    std::optional<rt::jit::CachedShader> cached = rt::jit::parse_cached_shader(*payload, Precision::Precise, 0,
-                                                                              state.avx2);
-    if (!cached || !cached->call_outs.empty()) return nullptr;
-    auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
+bool find_functions(CompiledInputs& code, bool) {
+    code.inputs = reinterpret_cast<InputsCode::InputsFn>(code.code.lookup("glslrun_inputs"));
+    return code.inputs;
+}
+
+// One part of `state`'s functions (those `define` emits): from the code
+// cache (`disk`, may be null) where it has them and they link, else made by
+// LLVM and stored there; `loaded` is cleared where LLVM made them. Null
+// where LLVM failed.
+template <class Code>
+std::unique_ptr<Code> make_part(Engine& engine, const rt::DiskCache* disk, const char* part, const State& state,
+                                const std::function<void(PipelineEmitter&)>& define, bool& loaded) {
+    std::optional<rt::CodeKey> key;
+    if (disk) key = part_key(engine, part, state);
+    std::optional<std::string> payload;
+    if (key) payload = disk->load(*key);
+    std::optional<rt::jit::CachedShader> cached;
+    if (payload) cached = rt::jit::parse_cached_shader(*payload, Precision::Precise, 0, state.avx2);
+    if (cached && cached->call_outs.empty()) {
+        auto code = std::make_unique<Code>();  // before the lock: its destructor takes it
+        std::lock_guard hold(engine.lock);
+        if (code->code.add_object(engine, std::move(cached->object)) && find_functions(*code, state.early_depth))
+            return code;
+    }
+    loaded = false;
+    auto code = std::make_unique<Code>();
     std::lock_guard hold(engine.lock);
-    if (link(engine, *code, std::move(cached->object), state.early_depth)) return code;
-    return nullptr;
-}
-
-// `state`'s machine code: LLVM's passes and code generation, told of the
-// code cache's writer (may be null).
-std::unique_ptr<llvm::MemoryBuffer> generate(Engine& engine, const State& state, llvm::ObjectCache* writer) {
-    Engine::NewModule made = engine.new_module("pipeline");
+    Engine::NewModule made = engine.new_module(part);
     {
         PipelineEmitter emitter(*made.context, *made.module, state);
-        if (state.early_depth) {
-            emitter.define_quad_depth();
-            emitter.define_square_depth();
-        }
-        emitter.define_inputs();
-        emitter.define_outputs();
+        define(emitter);
     }
     if (llvm::verifyModule(*made.module, &llvm::errs())) return nullptr;
     rt::jit::optimise(*made.module, *engine.machine);
-    return rt::jit::compile_object(engine, *made.module, writer);
+    const std::vector<rt::jit::CallOut> none;
+    std::optional<rt::jit::ShaderCacheWriter> writer;
+    if (key) writer.emplace(*disk, *key, none);
+    std::unique_ptr<llvm::MemoryBuffer> object =
+        rt::jit::compile_object(engine, *made.module, writer ? &*writer : nullptr);
+    if (!object || !code->code.add_object(engine, std::move(object)) || !find_functions(*code, state.early_depth))
+        return nullptr;
+    return code;
 }
 
 }  // namespace
 
 // As a shader's (runtime/jit/module.cpp): the code cache is read before any
 // LLVM work and written by the compile; an entry is a cached shader without
-// call-outs (rt::jit::CachedShader).
+// call-outs (rt::jit::CachedShader), one per part: the inputs function (keyed
+// by inputs_only(state)), and the depth tests and outputs (by the state).
 std::unique_ptr<Pipeline> compile(const State& key, PipelineCompile* compile) {
     const double start = rt::jit::thread_cpu_seconds();
     if (!fusable(key)) return nullptr;
     Engine* engine = Engine::of(key.avx2, false);
     if (!engine) return nullptr;
     std::optional<rt::DiskCache> disk;
-    std::optional<rt::CodeKey> code_key;
-    if (compile && compile->cache && !compile->cache->dir.empty()) code_key = pipeline_key(*engine, key);
-    if (code_key) disk.emplace(*compile->cache);
-    if (code_key)
-        if (std::unique_ptr<CompiledPipeline> loaded = load(*engine, *disk, *code_key, key)) {
-            compile->loaded = true;
-            compile->seconds = rt::jit::thread_cpu_seconds() - start;
-            return loaded;
-        }
-    auto code = std::make_unique<CompiledPipeline>();  // before the lock: its destructor takes it
-    std::lock_guard hold(engine->lock);
-    const std::vector<rt::jit::CallOut> none;
-    std::optional<rt::jit::ShaderCacheWriter> writer;
-    if (code_key) writer.emplace(*disk, *code_key, none);
-    if (!link(*engine, *code, generate(*engine, key, writer ? &*writer : nullptr), key.early_depth)) return nullptr;
-    if (compile) compile->seconds = rt::jit::thread_cpu_seconds() - start;
+    if (compile && compile->cache && !compile->cache->dir.empty() && !engine->cache_salt.empty())
+        disk.emplace(*compile->cache);
+    const rt::DiskCache* cache = disk ? &*disk : nullptr;
+    bool loaded = true;
+    std::shared_ptr<const InputsCode> inputs = compile ? compile->inputs : nullptr;
+    if (!inputs)
+        inputs = make_part<CompiledInputs>(*engine, cache, "inputs", inputs_only(key),
+                                           [](PipelineEmitter& e) { e.define_inputs(); }, loaded);
+    if (!inputs) return nullptr;
+    std::unique_ptr<CompiledPipeline> code =
+        make_part<CompiledPipeline>(*engine, cache, "pipeline", key, [&](PipelineEmitter& e) {
+            if (key.early_depth) {
+                e.define_quad_depth();
+                e.define_square_depth();
+            }
+            e.define_outputs();
+        }, loaded);
+    if (!code) return nullptr;
+    code->inputs = inputs->inputs;
+    code->shared_inputs = inputs;
+    if (compile) {
+        compile->inputs = std::move(inputs);
+        compile->seconds = rt::jit::thread_cpu_seconds() - start;
+        compile->loaded = loaded;
+    }
     return code;
 }
 

@@ -124,7 +124,8 @@ private:
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     using QuadBody = std::function<void(llvm::Value* index, const Quad& q)>;
     using PairTest = std::function<llvm::Value*(llvm::Value* index, llvm::Value* next)>;
-    void for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable = nullptr);
+    void for_each_quad(llvm::Value* batch, const QuadBody& body, const PairTest& pairable = nullptr,
+                       const std::function<void(llvm::Value* prim)>& first = nullptr);
     // Element `index` (i32) of the QuadBatch array at `offset`, of `type`.
     llvm::Value* batch_field(llvm::Value* batch, size_t offset, llvm::Type* type, llvm::Value* index) {
         return b_.CreateLoad(type, b_.CreateInBoundsGEP(type, at(batch, offset), b_.CreateZExt(index, i64_)));
@@ -133,6 +134,7 @@ private:
     struct InputsState {
         std::vector<llvm::Value*> regs;
         llvm::AllocaInst *last_prim, *last_nan;
+        llvm::Value* nan = nullptr;  // the step's primitive has NaN inputs (i1)
     };
     void store_inputs(const InputsState& state, llvm::Value* index, const Quad& q);
     llvm::Value* primitive_nan(const InputsState& state, llvm::Value* prim);
