@@ -50,6 +50,12 @@ inline Rule rule_of(TextureWrap wrap, bool rect, bool linear) {
     return Rule::Border;
 }
 
+// rule_of() of a wrap that keeps every LINEAR texel in the image (REPEAT,
+// MIRRORED_REPEAT, CLAMP_TO_EDGE), for template arguments.
+constexpr Rule inner_rule(TextureWrap wrap) {
+    return wrap == TextureWrap::Repeat ? Rule::Repeat : (wrap == TextureWrap::MirroredRepeat ? Rule::Mirror : Rule::Edge);
+}
+
 // Whether an axis's indices can be the border's (kBorder).
 constexpr bool may_border(Rule r, bool linear) {
     if (r == Rule::Border || r == Rule::RectBorder) return true;
