@@ -8,6 +8,10 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_avx2.h"
 #include "runtime/sampling_direct.h"
+#include "runtime/sampling_direct3d.h"
+#include "runtime/sampling_direct8.h"
+#include "runtime/sampling_levels.h"
+#include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt {
@@ -103,28 +107,13 @@ void lambdas(const Texture& texture, const BatchLookup& lk, Lanes& l) {
 // §3.8.8/§3.8.9 for every lane, as filter() decides: magnification or
 // minification, the filter within the level, and the level(s).
 void choose_levels(const Texture& texture, Lanes& l) {
-    const SamplerState& st = texture.sampler;
-    const int base = st.base_level;
-    const float c = mag_threshold(st);
-    const int linear_mag = linear_within_level(st.mag_filter), linear_min = linear_within_level(st.min_filter);
-    const bool mipmap = is_mipmap_filter(st.min_filter);
-    const bool nearest_mip =
-        st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
-    const int q = mipmap ? last_mip_level(texture.levels(0)[size_t(base)], st) : base;
+    const LevelRule rule(texture);
     for (int i = 0; i < kLanes; ++i) {
-        const float lambda = l.lambda[i];
-        const bool mag = lambda <= c;
-        const bool minify = !mag && mipmap;
-        const bool last = float(base) + lambda >= float(q);
-        const float whole = floor_f(lambda);
-        // lambda is finite: every candidate is computed, then selected (the loop vectorises).
-        const int linear_level = last ? q : base + int(whole);
-        const int d0 = !minify ? base : (nearest_mip ? nearest_mip_level(lambda, base, q) : linear_level);
-        const bool two = minify && !nearest_mip && !last;
-        l.linear[i] = mag ? linear_mag : linear_min;
-        l.level[0][i] = d0;
-        l.level[1][i] = two ? d0 + 1 : -1;
-        l.mip_weight[i] = two ? lambda - whole : 0.0f;
+        const LevelChoice d = choose_level(rule, l.lambda[i]);
+        l.linear[i] = d.linear;
+        l.level[0][i] = d.d0;
+        l.level[1][i] = d.d1;
+        l.mip_weight[i] = d.weight;
     }
 }
 
@@ -745,6 +734,8 @@ bool batch_samples(const Texture& texture) {
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2) {
 #if defined(__x86_64__) && defined(__GNUC__)
     if (avx2 && direct_samples(texture)) return sample_direct(texture, lookup, lanes, out);
+    if (avx2 && mip2d_samples(texture)) return sample_mip2d(texture, lookup, lanes, out);
+    if (avx2 && direct3d_samples(texture)) return sample_direct3d(texture, lookup, lanes, out);
     if (avx2) return run_avx2(texture, lookup, lanes, out);
 #endif
     (void)avx2;

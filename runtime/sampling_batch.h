@@ -10,7 +10,9 @@
 // lane, four channels in one register. Under AVX2, a colour texture's
 // NEAREST or LINEAR lookup of one 2D image (or rectangle), any wrap, goes
 // eight lanes at a time from the coordinates to the result in registers,
-// one kernel per texture state (sampling_direct.h); cube maps (a pass per
+// one kernel per texture state (sampling_direct.h), and so does a mipmapped
+// 2D one whose filter within a level is one kind (sampling_mip2d.h, the
+// level of detail and both levels in registers); cube maps (a pass per
 // face and level a group of eight lanes reads) and shadow maps go eight
 // lanes at a time too (sampling_batch_cube.h, _shadow.h). Every
 // value comes from the same functions as sample_complete_lane()'s

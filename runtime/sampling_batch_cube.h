@@ -26,12 +26,16 @@
 template <TextureWrap kS, TextureWrap kT>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void level_plane8(const TextureImage& image, const Lanes& l, int g,
                                                              __m256* plane) {
-    alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes], at[4][kLanes];
-    alignas(32) float ax[kLanes], ay[kLanes];
-    linear8<kS, false>(l.s, image.width, g, x0, x1, ax);
-    linear8<kT, false>(l.t, image.height, g, y0, y1, ay);
-    corners8(x0, x1, y0, y1, image.width, g, at);
-    plane8(image.texels.data(), at, ax, ay, g, plane);
+    // sampling_direct8.h's steps: the indices in registers, the blend lane by lane (blend_rows8()).
+    namespace d8 = direct8;
+    const d8::Axis w{image.width, _mm256_set1_ps(float(image.width))};
+    const d8::Axis h{image.height, _mm256_set1_ps(float(image.height))};
+    const d8::Linear8 x = d8::linear8<d8::inner_rule(kS)>(_mm256_loadu_ps(l.s + g), w);
+    const d8::Linear8 y = d8::linear8<d8::inner_rule(kT)>(_mm256_loadu_ps(l.t + g), h);
+    d8::Row8 rows[2];
+    d8::row_of(image.texels.data(), image.width, x, y.i0, rows[0]);
+    d8::row_of(image.texels.data(), image.width, x, y.i1, rows[1]);
+    d8::blend_rows8<1>(rows, &x.a, &y.a, x.a, x.a, plane);
 }
 
 // The lanes of lanes g..g+7 (bit k: lane g + k) whose `value` is lane first's.

@@ -1,326 +1,34 @@
-// The one-pass lookups of sampling_direct.h. Each axis's rule (the wrap
-// mode as NEAREST or LINEAR, normalized or a rectangle's texels applies it)
-// is a template argument, so one kernel per texture state runs with no
-// branch on the state inside the lane loop. The index arithmetic is
-// sampling_rules.h's written with AVX2 intrinsics, operation for operation:
-//   clamp_or_low(x, lo, hi)  = min(max(x, lo), hi)  (maxps returns lo for NaN)
-//   floor_t<true>(x)         = roundps(x, down) + 0
-//   floor_int<true>(x)       = cvttps(floor of clamp_or_low(x, -2^24, 2^24))
-// REPEAT's far lanes (NaN or huge coordinates) take repeat_index() lane by
-// lane, as the other samplers do.
+// The one-pass lookups of sampling_direct.h: one kernel per texture state,
+// each axis's rule (the wrap mode as NEAREST or LINEAR, normalized or a
+// rectangle's texels applies it) a template argument, so no branch on the
+// state runs inside the lane loop. The eight-lane steps are
+// sampling_direct8.h's.
 #include "runtime/sampling_direct.h"
 
-#include "runtime/sampling_avx2.h"
-#include "runtime/sampling_rules.h"
+#include "runtime/sampling_direct8.h"
 
 namespace glslrun::rt {
-
-using namespace sampling;
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #define GLSLRUN_AVX2 __attribute__((target("avx2")))
 
 namespace {
 
-// How one axis turns a coordinate into texel indices: the wrap mode, for
-// normalized coordinates (s * size) or a rectangle's (u in texels, where
-// only the clamping rules exist: rect_nearest_index(), rect_linear_axis()).
-enum class Rule : uint8_t { Repeat, Mirror, Edge, Clamp, Border, RectEdge, RectClamp, RectBorder };
-
-constexpr bool is_rect(Rule r) { return r == Rule::RectEdge || r == Rule::RectClamp || r == Rule::RectBorder; }
-
-// The rule of a wrap mode; a rectangle's wraps as sampling_rules.h reads them.
-Rule rule_of(TextureWrap wrap, bool rect, bool linear) {
-    using enum TextureWrap;
-    if (rect) {
-        if (wrap == ClampToBorder) return Rule::RectBorder;
-        if (!linear || wrap == ClampToEdge) return Rule::RectEdge;  // NEAREST clamps whatever the wrap
-        return wrap == Clamp ? Rule::RectClamp : Rule::RectBorder;  // REPEAT, MIRRORED_REPEAT: CLAMP_TO_BORDER's
-    }
-    switch (wrap) {
-    case Repeat: return Rule::Repeat;
-    case MirroredRepeat: return Rule::Mirror;
-    case ClampToEdge: return Rule::Edge;
-    case Clamp: return linear ? Rule::Clamp : Rule::Edge;  // NEAREST's CLAMP is CLAMP_TO_EDGE's
-    case ClampToBorder: break;
-    }
-    return Rule::Border;
-}
-
-// Whether an axis's indices can be the border's (kBorder).
-constexpr bool may_border(Rule r, bool linear) {
-    if (r == Rule::Border || r == Rule::RectBorder) return true;
-    return linear && (r == Rule::Clamp || r == Rule::RectClamp);
-}
-
-using V = __m256;
-using I = __m256i;
-
-struct Axis {
-    int n;    // the image's size on the axis
-    V size;   // float(n)
-};
-
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V splat(float x) { return _mm256_set1_ps(x); }
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I splat_i(int x) { return _mm256_set1_epi32(x); }
-
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V clamp_or_low8(V x, V lo, V hi) {
-    return _mm256_min_ps(_mm256_max_ps(x, lo), hi);
-}
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V floor8(V x) {
-    return _mm256_add_ps(_mm256_round_ps(x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC), _mm256_setzero_ps());
-}
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I floor_int8(V x) {
-    const V limit = splat(kIndexLimit);
-    return _mm256_cvttps_epi32(floor8(clamp_or_low8(x, _mm256_sub_ps(_mm256_setzero_ps(), limit), limit)));
-}
-// floor_int8() of an x known to lie within a size of the image (a clamped
-// LINEAR position: never NaN), where the clamp to 2^24 changes nothing.
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I floor_int8_bounded(V x) { return _mm256_cvttps_epi32(floor8(x)); }
-
-// mirror<true>(): frac(s) where floor(s) is even, 1 - frac(s) where odd
-// (floors from 2^24 on, and NaN, count as even).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V mirror8(V s) {
-    const V fl = floor8(s);
-    const V f = _mm256_sub_ps(s, fl);
-    const V abs = _mm256_andnot_ps(splat(-0.0f), fl);
-    const V in_range = _mm256_and_ps(fl, _mm256_cmp_ps(abs, splat(16777216.0f), _CMP_LT_OQ));
-    const I odd = _mm256_slli_epi32(_mm256_cvttps_epi32(in_range), 31);
-    return _mm256_blendv_ps(f, _mm256_sub_ps(splat(1.0f), f), _mm256_castsi256_ps(odd));
-}
-
-// border_or_index(): i where 0 <= i < n, else kBorder (-1).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I border_or_index8(I i, int n) {
-    const I inside = _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), i), _mm256_cmpgt_epi32(splat_i(n), i));
-    return _mm256_or_si256(_mm256_and_si256(inside, i), _mm256_andnot_si256(inside, splat_i(kBorder)));
-}
-
-// repeat_index() of eight raw indices: repeat_near() in registers, lane by
-// lane where some index is far out (NaN or huge coordinates).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I repeat8(I raw, int n) {
-    const I nn = splat_i(n);
-    const I below = _mm256_cmpgt_epi32(_mm256_setzero_si256(), raw);
-    const I above = _mm256_cmpgt_epi32(raw, splat_i(n - 1));
-    const I near = _mm256_blendv_epi8(_mm256_blendv_epi8(raw, _mm256_sub_epi32(raw, nn), above), _mm256_add_epi32(raw, nn),
-                                      below);
-    // repeat_is_near(): -n <= raw < 2n.
-    const I far = _mm256_or_si256(_mm256_cmpgt_epi32(splat_i(-n), raw), _mm256_cmpgt_epi32(raw, splat_i(2 * n - 1)));
-    if (_mm256_testz_si256(far, far)) return near;
-    alignas(32) int lanes[8];
-    _mm256_store_si256(reinterpret_cast<I*>(lanes), raw);
-    for (int& i : lanes) i = repeat_index(i, n);
-    return _mm256_load_si256(reinterpret_cast<const I*>(lanes));
-}
-
-// nearest_index<kWrap, true>() / rect_nearest_index<kWrap, true>() of eight lanes.
-template <Rule kRule>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I nearest8(V s, const Axis& ax) {
-    if constexpr (kRule == Rule::Repeat) return repeat8(floor_int8(_mm256_mul_ps(_mm256_sub_ps(s, floor8(s)), ax.size)), ax.n);
-    const V u = is_rect(kRule) ? s : _mm256_mul_ps(kRule == Rule::Mirror ? mirror8(s) : s, ax.size);
-    const I i = floor_int8(u);
-    if constexpr (kRule == Rule::Border || kRule == Rule::RectBorder) return border_or_index8(i, ax.n);
-    return _mm256_max_epi32(_mm256_min_epi32(i, splat_i(ax.n - 1)), _mm256_setzero_si256());  // std::clamp
-}
-
-struct Linear8 {
-    I i0, i1;
-    V a;
-};
-
-// linear_axis<kWrap, true>() / rect_linear_axis<kWrap, true>() of eight lanes.
-template <Rule kRule>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline Linear8 linear8(V s, const Axis& ax) {
-    const V half = splat(0.5f);
-    V u;
-    if constexpr (kRule == Rule::Repeat) {
-        u = _mm256_sub_ps(_mm256_mul_ps(_mm256_sub_ps(s, floor8(s)), ax.size), half);  // repeat_position()
-        const I i0 = floor_int8(u);
-        return {repeat8(i0, ax.n), repeat8(_mm256_add_epi32(i0, splat_i(1)), ax.n), _mm256_sub_ps(u, floor8(u))};
-    } else if constexpr (kRule == Rule::Mirror || kRule == Rule::Edge || kRule == Rule::RectEdge) {
-        const V x = kRule == Rule::RectEdge ? s : _mm256_mul_ps(kRule == Rule::Mirror ? mirror8(s) : s, ax.size);
-        u = _mm256_sub_ps(clamp_or_low8(x, half, _mm256_sub_ps(ax.size, half)), half);
-        const I i0 = floor_int8_bounded(u), last = splat_i(ax.n - 1);
-        // At u = size - 1/2, i1 is past the image with weight 0: kept on the last texel.
-        return {_mm256_min_epi32(i0, last), _mm256_min_epi32(_mm256_add_epi32(i0, splat_i(1)), last),
-                _mm256_sub_ps(u, floor8(u))};
-    } else {
-        if constexpr (kRule == Rule::Clamp)
-            u = _mm256_sub_ps(_mm256_mul_ps(clamp_or_low8(s, _mm256_setzero_ps(), splat(1.0f)), ax.size), half);
-        else if constexpr (kRule == Rule::RectClamp)
-            u = _mm256_sub_ps(clamp_or_low8(s, _mm256_setzero_ps(), ax.size), half);
-        else  // Border, RectBorder
-            u = _mm256_sub_ps(clamp_or_low8(kRule == Rule::Border ? _mm256_mul_ps(s, ax.size) : s, splat(-0.5f),
-                                            _mm256_add_ps(ax.size, half)),
-                              half);
-        const I i0 = floor_int8_bounded(u);
-        return {border_or_index8(i0, ax.n), border_or_index8(_mm256_add_epi32(i0, splat_i(1)), ax.n),
-                _mm256_sub_ps(u, floor8(u))};
-    }
-}
-
-// The image and its border colour, as fetch() reads them.
-struct Source {
-    const glm::vec4* texels;
-    int width;
-    V border[4];  // border_texel(): the colour clamped to [0, 1]
-};
-
-// The texels at (x, y) of eight lanes, transposed into channels: ch[c]
-// holds channel c of the eight. `kBorder`: an index may be kBorder, whose
-// lanes take the border colour (and load texel 0).
-// Each lane's byte offset of texel (x, y) (below 2^28, unsigned: each load
-// takes its offset as it is, with no sign extension or scaling in between).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void offsets8(I at, uint32_t* off) {
-    _mm256_store_si256(reinterpret_cast<I*>(off), _mm256_slli_epi32(at, 4));
-}
-
-[[gnu::always_inline]] GLSLRUN_AVX2 inline I texel_index8(const Source& src, I x, I y) {
-    return _mm256_add_epi32(_mm256_mullo_epi32(y, splat_i(src.width)), x);  // w * h below 2^24 (limits.md)
-}
-
-// The texels at (x, y) of eight lanes, transposed into channels: ch[c]
-// holds channel c of the eight. `kBorder`: an index may be kBorder, whose
-// lanes take the border colour (and load texel 0).
-template <bool kBorder>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void fetch8(const Source& src, I x, I y, V* ch) {
-    I at = texel_index8(src, x, y);
-    I border = _mm256_setzero_si256();
-    if constexpr (kBorder) {
-        border = _mm256_cmpgt_epi32(_mm256_setzero_si256(), _mm256_or_si256(x, y));  // either index negative
-        at = _mm256_andnot_si256(border, at);
-    }
-    alignas(32) uint32_t off[8];
-    offsets8(at, off);
-    const char* base = reinterpret_cast<const char*>(src.texels);
-    const auto texel = [&](int j) { return _mm_loadu_ps(reinterpret_cast<const float*>(base + off[j])); };
-    V r[4];
-#pragma GCC unroll 4
-    for (int j = 0; j < 4; ++j) r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(texel(j)), texel(4 + j), 1);
-    transpose8(r, ch);
-    if constexpr (kBorder) {
-        const V b = _mm256_castsi256_ps(border);
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) ch[c] = _mm256_blendv_ps(ch[c], src.border[c], b);
-    }
-}
-
-// The texels at (x, y) and (x + 1, y) of eight lanes (every x + 1 in the
-// row), into `left` and `right` by channel: each lane's two texels are one
-// 32-byte load, half the loads of two fetch8() calls.
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void fetch_pairs8(const Source& src, I x, I y, V* left, V* right) {
-    alignas(32) uint32_t off[8];
-    offsets8(texel_index8(src, x, y), off);
-    const char* base = reinterpret_cast<const char*>(src.texels);
-    V l[4], r[4];
-#pragma GCC unroll 4
-    for (int j = 0; j < 4; ++j) {
-        const V a = _mm256_loadu_ps(reinterpret_cast<const float*>(base + off[j]));
-        const V b = _mm256_loadu_ps(reinterpret_cast<const float*>(base + off[4 + j]));
-        l[j] = _mm256_permute2f128_ps(a, b, 0x20);
-        r[j] = _mm256_permute2f128_ps(a, b, 0x31);
-    }
-    transpose8(l, left);
-    transpose8(r, right);
-}
-
-// mix() of eight lanes: x * (1 - a) + y * a, with ia = 1 - a.
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V mix8(V x, V y, V a, V ia) {
-    return _mm256_add_ps(_mm256_mul_ps(x, ia), _mm256_mul_ps(y, a));
-}
-
-// The lookups of lanes g..g+7: `value` gets each channel's result.
-template <bool kLinear, Rule kS, Rule kT>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void lookup8(const Source& src, const Axis& w, const Axis& h, V s, V t,
-                                                        V* value) {
-    constexpr bool kBorder = may_border(kS, kLinear) || may_border(kT, kLinear);
-    if constexpr (!kLinear) {
-        fetch8<kBorder>(src, nearest8<kS>(s, w), nearest8<kT>(t, h), value);
-        return;
-    } else {
-        // sample_linear()'s blend, row by row so that the corners fit in the registers.
-        const Linear8 x = linear8<kS>(s, w), y = linear8<kT>(t, h);
-        const V one = splat(1.0f), ia = _mm256_sub_ps(one, x.a), ib = _mm256_sub_ps(one, y.a);
-        V p[4], q[4], row0[4];
-        // Where every lane's two columns are neighbours (not the edge's
-        // clamp or REPEAT's wrap), each row's two texels are one load.
-        const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
-                                           x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
-        if (pairs) fetch_pairs8(src, x.i0, y.i0, p, q);
-        else {
-            fetch8<kBorder>(src, x.i0, y.i0, p);
-            fetch8<kBorder>(src, x.i1, y.i0, q);
-        }
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) row0[c] = mix8(p[c], q[c], x.a, ia);
-        if (pairs) fetch_pairs8(src, x.i0, y.i1, p, q);
-        else {
-            fetch8<kBorder>(src, x.i0, y.i1, p);
-            fetch8<kBorder>(src, x.i1, y.i1, q);
-        }
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) value[c] = mix8(row0[c], mix8(p[c], q[c], x.a, ia), y.a, ib);
-    }
-}
+using namespace direct8;
 
 template <bool kLinear, Rule kS, Rule kT>
 GLSLRUN_AVX2 void direct(const Source& src, const Axis& w, const Axis& h, const BatchLookup& lk, LaneMask lanes,
                          float (*out)[kLanes]) {
-    const I bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const V nan = splat(std::numeric_limits<float>::quiet_NaN());  // canonical_nan()'s
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
         V value[4];
         lookup8<kLinear, kS, kT>(src, w, h, _mm256_loadu_ps(lk.coord[0] + g), _mm256_loadu_ps(lk.coord[1] + g), value);
-        const V take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(splat_i(bits), bit), bit));
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) {
-            const V v = _mm256_blendv_ps(value[c], nan, _mm256_cmp_ps(value[c], value[c], _CMP_UNORD_Q));
-            _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), v, take));
-        }
+        store8(value, bits, g, out);
     }
 }
 
 using Kernel = void (*)(const Source&, const Axis&, const Axis&, const BatchLookup&, LaneMask, float (*)[kLanes]);
-
-// The kernel of a filter and two axis rules (the rules of one kind:
-// normalized or a rectangle's).
-template <bool kLinear, Rule kS>
-Kernel kernel_t(Rule t) {
-    switch (t) {
-    case Rule::Repeat: return direct<kLinear, kS, Rule::Repeat>;
-    case Rule::Mirror: return direct<kLinear, kS, Rule::Mirror>;
-    case Rule::Edge: return direct<kLinear, kS, Rule::Edge>;
-    case Rule::Clamp: return direct<kLinear, kS, Rule::Clamp>;
-    case Rule::Border: return direct<kLinear, kS, Rule::Border>;
-    default: return nullptr;
-    }
-}
-
-template <bool kLinear, Rule kS>
-Kernel rect_kernel_t(Rule t) {
-    switch (t) {
-    case Rule::RectEdge: return direct<kLinear, kS, Rule::RectEdge>;
-    case Rule::RectClamp: return direct<kLinear, kS, Rule::RectClamp>;
-    case Rule::RectBorder: return direct<kLinear, kS, Rule::RectBorder>;
-    default: return nullptr;
-    }
-}
-
-template <bool kLinear>
-Kernel kernel(Rule s, Rule t) {
-    switch (s) {
-    case Rule::Repeat: return kernel_t<kLinear, Rule::Repeat>(t);
-    case Rule::Mirror: return kernel_t<kLinear, Rule::Mirror>(t);
-    case Rule::Edge: return kernel_t<kLinear, Rule::Edge>(t);
-    case Rule::Clamp: return kernel_t<kLinear, Rule::Clamp>(t);
-    case Rule::Border: return kernel_t<kLinear, Rule::Border>(t);
-    case Rule::RectEdge: return rect_kernel_t<kLinear, Rule::RectEdge>(t);
-    case Rule::RectClamp: return rect_kernel_t<kLinear, Rule::RectClamp>(t);
-    case Rule::RectBorder: return rect_kernel_t<kLinear, Rule::RectBorder>(t);
-    }
-    return nullptr;
-}
 
 }  // namespace
 
@@ -336,10 +44,12 @@ namespace {
 DirectSampler choose(const Texture& texture) {
     const SamplerState& st = texture.sampler;
     const bool rect = texture.target() == TextureTarget::Rect;
-    const bool linear = linear_within_level(st.mag_filter);
     const TextureImage& image = texture.levels(0)[rect ? 0 : size_t(st.base_level)];
-    const Kernel k = linear ? kernel<true>(rule_of(st.wrap_s, rect, true), rule_of(st.wrap_t, rect, true))
-                            : kernel<false>(rule_of(st.wrap_s, rect, false), rule_of(st.wrap_t, rect, false));
+    Kernel k = nullptr;
+    const auto pick = [&]<bool kLinear, Rule kS, Rule kT>() { k = direct<kLinear, kS, kT>; };
+    const bool linear = linear_within_level(st.mag_filter);
+    if (rect) with_rules<true>(st, linear, pick);
+    else with_rules<false>(st, linear, pick);
     DirectSampler d;
     d.kernel = reinterpret_cast<void (*)()>(k);
     d.texels = image.texels.data();

@@ -14,12 +14,16 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
 #include "runtime/sampling_direct.h"
+#include "runtime/sampling_direct3d.h"
+#include "runtime/sampling_mip2d.h"
+#include "runtime/sampling_rules.h"
 #include "runtime/texture_levels.h"
 #include "tests/runtime/sampling_inputs.h"
 
@@ -65,8 +69,10 @@ float rect_coordinate(std::mt19937& rng, int size) {
 // per level for the batch); or a smooth surface's, whose LOD
 // drifts from lane to lane across level boundaries and whose cube
 // directions fan out around an edge or a corner of the cube, so that groups
-// of lanes straddle levels and faces.
-enum class Spread { Random, Shared, Smooth };
+// of lanes straddle levels and faces; or a quad's, each four lanes from a
+// multiple of 4 sharing their first lane's derivatives, as the tex kernel
+// gives them (the mipmapped 2D kernel then takes one log2 per quad).
+enum class Spread { Random, Shared, Smooth, Quads };
 
 // Lane i's operands of a Smooth batch: lane 0's derivatives scaled by 2^(i * step)
 // (so lambda steps by `step`), cube directions near `corner` spread by `fan`.
@@ -116,6 +122,11 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
             }
             ops.lod[i] = ops.lod[0];
         }
+        if (spread == Spread::Quads)
+            for (int c = 0; c < dims; ++c) {
+                ops.ddx[c][i] = ops.ddx[c][i & ~3];
+                ops.ddy[c][i] = ops.ddy[c][i & ~3];
+            }
         if (shared && texture.target() == TextureTarget::Cube) {
             ops.coord[0][i] = 2.0f;
             for (int c = 1; c < 3; ++c) ops.coord[c][i] = std::uniform_real_distribution<float>(-1.9f, 1.9f)(rng);
@@ -179,7 +190,7 @@ void sweep(std::mt19937& rng, Texture& texture, bool shadow) {
                         texture.sampler.wrap_r = t == s ? TextureWrap::ClampToEdge : s;
                         REQUIRE(texture.complete());
                         if (!rt::batch_samples(texture)) continue;
-                        for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth})
+                        for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads})
                             for (int batch = 0; batch < 2; ++batch) check_batch(rng, texture, shadow, lod, spread);
                     }
 }
@@ -308,6 +319,51 @@ TEST_CASE("batched sampling equals per-lane sampling: one-pass 2D and rectangle 
     }
 }
 
+// The mipmapped 2D kernels (sampling_mip2d.h): odd sizes and one-texel
+// levels, every wrap pair, the four mipmap filters with the magnification
+// filter of the same kind, every LOD kind and lane spread (quads sharing
+// derivatives take one log2 per quad), the texture's LOD bias, clamps
+// (min_lod above max_lod, and NaN, too) and base level. The sweeps above reach them
+// too; this says they are the ones taken.
+TEST_CASE("batched sampling equals per-lane sampling: mipmapped 2D kernels", "[sampling][batch]") {
+    std::mt19937 rng(2468);
+    struct Lod {
+        float bias, min, max;
+        int base;
+    };
+    const Lod lods[] = {{0.0f, -1000.0f, 1000.0f, 0}, {0.75f, -0.5f, 2.25f, 1}, {-2.5f, 3.0f, 1.0f, 0},
+                        {1e30f, -1000.0f, 1000.0f, 0}, {0.0f, kNaN, 1000.0f, 0}};
+    for (auto [w, h] : {std::pair{1, 1}, {1, 5}, {7, 1}, {13, 6}, {16, 16}}) {
+        Texture t = make(rng, TextureTarget::Tex2D, TextureFormat::RGBA8, w, h);
+        t.sampler.border_color = {0.5f, 1.5f, -0.25f, 0.75f};
+        for (TextureFilter min : {TextureFilter::LinearMipmapLinear, TextureFilter::LinearMipmapNearest,
+                                  TextureFilter::NearestMipmapLinear, TextureFilter::NearestMipmapNearest})
+            for (TextureWrap s : kWraps)
+                for (TextureWrap u : kWraps)
+                    for (const Lod& lod : lods) {
+                        t.sampler.min_filter = min;
+                        t.sampler.mag_filter = rt::sampling::linear_within_level(min) ? TextureFilter::Linear
+                                                                                      : TextureFilter::Nearest;
+                        t.sampler.wrap_s = s;
+                        t.sampler.wrap_t = u;
+                        t.sampler.lod_bias = lod.bias;
+                        t.sampler.min_lod = lod.min;
+                        t.sampler.max_lod = lod.max;
+                        t.sampler.base_level = std::min(lod.base, rt::levels_below(t.levels(0)[0]));
+                        REQUIRE(t.complete());
+#if defined(__x86_64__) && defined(__GNUC__)
+                        REQUIRE(rt::mip2d_samples(t));
+#endif
+                        for (ir::TexLod kind : kLods)
+                            for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads})
+                                check_batch(rng, t, false, kind, spread);
+                    }
+        t.sampler.min_filter = TextureFilter::LinearMipmapLinear;
+        t.sampler.mag_filter = TextureFilter::Nearest;
+        CHECK_FALSE(rt::mip2d_samples(t));  // the lanes choose a filter: the steps
+    }
+}
+
 // 3D textures, mipmapped too (each lane's lambda from the derivatives of
 // s, t and r); batch_samples() refuses only array textures.
 TEST_CASE("batched sampling equals per-lane sampling: 3D textures", "[sampling][batch]") {
@@ -334,6 +390,40 @@ TEST_CASE("batched sampling equals per-lane sampling: 3D textures", "[sampling][
             for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth})
                 for (int batch = 0; batch < 4; ++batch) check_batch(rng, three, false, lod, spread);
     }
+}
+
+// The one-pass 3D kernels (sampling_direct3d.h): odd sizes and one-texel
+// axes, every wrap triple that keeps the texels in the image (each axis
+// its own), NEAREST and LINEAR, RGBA8 and float texels. The sweep above
+// reaches them too; this says they are the ones taken, and that a wrap
+// that may meet the border is not.
+TEST_CASE("batched sampling equals per-lane sampling: one-pass 3D kernels", "[sampling][batch]") {
+    std::mt19937 rng(1357);
+    constexpr TextureWrap kInner[] = {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge,
+                                      TextureWrap::Clamp};
+    for (auto [w, h, d] : {std::tuple{1, 1, 1}, {3, 1, 5}, {5, 3, 6}, {1, 7, 2}})
+        for (TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA32F}) {
+            Texture t = make(rng, TextureTarget::Tex3D, format, w, h, d);
+            for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (TextureWrap s : kInner)
+                    for (TextureWrap u : kInner)
+                        for (TextureWrap r : kInner) {
+                            t.sampler.min_filter = t.sampler.mag_filter = filter;
+                            t.sampler.wrap_s = s;
+                            t.sampler.wrap_t = u;
+                            t.sampler.wrap_r = r;
+                            const bool border = filter == TextureFilter::Linear &&
+                                                (s == TextureWrap::Clamp || u == TextureWrap::Clamp ||
+                                                 r == TextureWrap::Clamp);
+#if defined(__x86_64__) && defined(__GNUC__)
+                            REQUIRE(rt::direct3d_samples(t) == !border);
+#endif
+                            check_batch(rng, t, false, ir::TexLod::Implicit);
+                            check_batch(rng, t, false, ir::TexLod::Explicit, Spread::Shared);
+                        }
+            t.sampler.wrap_r = TextureWrap::ClampToBorder;
+            CHECK_FALSE(rt::direct3d_samples(t));
+        }
 }
 
 // The `tex` kernel itself: lanes on several units (and on none: unbound, out
