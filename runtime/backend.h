@@ -80,7 +80,7 @@ struct RunLimits {
 // 32-bit word per component) must stay alive and unchanged while the
 // executor lives: uniform-only code (the shader's prologue) runs once, when
 // it is made. `textures` (kMaxTextureUnits units, may be null: nothing
-// bound) must stay alive too.
+// bound) must stay alive and bound as they are: the JIT binds their samplers once (jit/tex_direct.cpp).
 struct ExecParams {
     const uint32_t* uniforms = nullptr;
     RunLimits limits{ExecOptions{}.max_loop_iterations};

@@ -48,14 +48,18 @@ struct Context {
     // unit (direct_slot()), which the generated `tex` code calls where its
     // lanes' unit has one; null: none.
     const DirectSampler* direct = nullptr;
+    // What the generated `tex` code of a 2D or rectangle lookup calls
+    // (run_tex, tex_direct.cpp), loaded from here: the code cache's code
+    // holds no address.
+    void (*tex)(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
+                uint32_t* out) = nullptr;
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
 inline constexpr size_t kCreditOffset = offsetof(Context, credit);
 inline constexpr size_t kAliveOffset = offsetof(Context, alive);
 inline constexpr size_t kErrorLineOffset = offsetof(Context, error_line);
-inline constexpr size_t kDirectOffset = offsetof(Context, direct);
-inline constexpr size_t kLookupsOffset = offsetof(Context, machine) + offsetof(Machine<uint32_t>, lookups);
+inline constexpr size_t kTexOffset = offsetof(Context, tex);
 
 // Context::direct's entry of a unit's 2D texture (rect false) or rectangle.
 constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2 + (rect ? 1 : 0); }
@@ -64,6 +68,14 @@ inline constexpr size_t kDirectSlots = direct_slot(kMaxTextureUnits, false);
 // The units' one-pass samplers into out[kDirectSlots] (all null where
 // `units` is null or the CPU lacks AVX2).
 void bind_direct_samplers(const GLState::TextureUnit* units, DirectSampler* out);
+
+// The `index`-th call-out, a 2D or rectangle `tex`, on the lanes of `exec`:
+// its unit's one-pass sampler where every lane names one unit that has one,
+// else the call-out's kernel, over copies of its registers (`units`, the
+// operand block) into `out` (kTexResults x kLanes words, of which the
+// lanes of `exec` are written).
+void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
+             uint32_t* out);
 
 // One instruction that the generated code runs with an interpreter kernel.
 struct CallOut {

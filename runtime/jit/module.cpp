@@ -221,6 +221,7 @@ public:
         ctx_.call_steps = call_steps_.data();
         bind_direct_samplers(p.textures, direct_.data());
         ctx_.direct = direct_.data();
+        ctx_.tex = run_tex;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
     }

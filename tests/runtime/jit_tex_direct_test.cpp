@@ -1,11 +1,13 @@
 // The JIT's 2D and rectangle lookups that call the unit's one-pass sampler
 // from generated code (runtime/jit/tex_direct.cpp) against the
-// interpreter's `tex` kernel: every filter and wrap pair of both targets,
+// interpreter's `tex` kernel (Precise, and Fast with and without its GPU
+// filtering): every filter and wrap pair of both targets,
 // odd sizes, RGBA8 and float texels, NaN, infinite, huge and denormal
 // coordinates, partial masks, lanes that skip their lookups, lanes of
 // another unit or of none, an incomplete texture; every result word compared.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -40,7 +42,7 @@ std::shared_ptr<const Texture> texture(TextureTarget target, int w, int h, Textu
     return std::make_shared<const Texture>(std::move(*t));
 }
 
-// The coordinates of lane i in round `round`: inside, around and far
+// A coordinate on an axis of `size` (1 when normalized): inside, around and far
 // outside the image, and the special values.
 float coordinate(std::mt19937& rng, float size) {
     static constexpr float kSpecial[] = {std::numeric_limits<float>::quiet_NaN(),
@@ -56,7 +58,7 @@ float coordinate(std::mt19937& rng, float size) {
 
 struct Shader {
     Builder b;
-    Reg s, t, lod, unit, unit_lane, block, explicit_block, result, explicit_result;
+    Reg s, t, lod, unit, unit_lane, cond, block, explicit_block, result, explicit_result;
 };
 
 // Two lookups of one target: an implicit one (derivatives of the
@@ -69,8 +71,8 @@ std::unique_ptr<Shader> make_shader(ir::TexTarget target) {
     sh->t = b.reg(Kind::F32);
     sh->lod = b.reg(Kind::F32);
     sh->unit_lane = b.reg(Kind::I32);
-    const Reg cond = b.reg(Kind::Bool);
-    for (Reg r : {sh->s, sh->t, sh->lod, sh->unit_lane, cond}) b.input("in", r);
+    sh->cond = b.reg(Kind::Bool);
+    for (Reg r : {sh->s, sh->t, sh->lod, sh->unit_lane, sh->cond}) b.input("in", r);
     sh->unit = b.reg(Kind::I32);
     b.instr(Op::uniform, Kind::I32, sh->unit, {}, {0});
     ir::TexInfo implicit;
@@ -83,7 +85,7 @@ std::unique_ptr<Shader> make_shader(ir::TexTarget target) {
     b.instr(Op::ddy, Kind::F32, sh->block + 4, {sh->s});
     b.instr(Op::ddy, Kind::F32, sh->block + 5, {sh->t});
     sh->result = b.range(Kind::F32, ir::kTexResults);
-    b.if_(cond, [&] {
+    b.if_(sh->cond, [&] {
         b.instr(Op::tex, Kind::F32, sh->result, {sh->unit}, {sh->block, implicit.operand_count(), implicit.encode()});
     });
     ir::TexInfo explicit_lod = implicit;
@@ -102,85 +104,109 @@ std::unique_ptr<Shader> make_shader(ir::TexTarget target) {
     return sh;
 }
 
+// Precise; Fast without its GPU filtering (the error report's ablation),
+// which takes the same path; Fast, whose lookups keep the call-out.
+struct Mode {
+    Precision precision;
+    uint32_t fast_ops;
+};
+
+struct Case {
+    Mode mode;
+    bool rect;
+    TextureFilter filter;
+    TextureWrap ws, wt;
+    int w, h;
+    TextureFormat format;
+    uint32_t seed;
+};
+
+// The units of one case: its state on kUnit, and the other units' textures.
+std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const Case& c) {
+    using enum TextureWrap;
+    const TextureTarget target = c.rect ? TextureTarget::Rect : TextureTarget::Tex2D;
+    std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
+    auto bind = [&](int unit, std::shared_ptr<const Texture> t) {
+        units[size_t(unit)].bound[size_t(t->target())] = std::move(t);
+    };
+    bind(kUnit, texture(target, c.w, c.h, c.format, c.filter, c.ws, c.wt, c.seed));
+    bind(kOtherUnit, texture(target, 3, 2, TextureFormat::RGBA8, TextureFilter::Nearest, Repeat, Repeat, 7u));
+    if (!c.rect)  // a rectangle has no mipmap filter: none bound on its unit
+        bind(kIncomplete, texture(target, 4, 4, TextureFormat::RGBA8, TextureFilter::LinearMipmapLinear, Repeat,
+                                  Repeat, 9u));
+    return units;
+}
+
+// Both backends over one case, six rounds: 0-1 whole batches (1: the if
+// taken by two lanes of three); 2 a partial live mask; 3 helper lanes that
+// skip their lookups; 4-5 mixed units per lane (some out of range).
+void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::CompiledShader& jit, const Case& c) {
+    const auto units = units_of(c);
+    const uint32_t uniforms[] = {uint32_t(kUnit)};
+    const rt::ExecParams params{uniforms, 10, units.data(), c.mode.precision, c.mode.fast_ops};
+    auto ia = interp.instantiate(params), ja = jit.instantiate(params);
+    std::mt19937 rng(c.seed * 977u);
+    const float scale_s = c.rect ? float(c.w) : 1.0f, scale_t = c.rect ? float(c.h) : 1.0f;
+    for (int round = 0; round < 6; ++round) {
+        const rt::LaneMask live = round == 2 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
+        const rt::LaneMask skipped = round == 3 ? rt::LaneMask(0x0f0f0f0f0f0f0f0full) & rt::kAllLanes : 0;
+        std::vector<float> s(rt::kLanes), t(rt::kLanes);
+        for (int lane = 0; lane < rt::kLanes; ++lane) {
+            s[size_t(lane)] = coordinate(rng, scale_s);
+            t[size_t(lane)] = coordinate(rng, scale_t);
+        }
+        for (rt::Executor* e : {ia.get(), ja.get()}) {
+            e->skip_lookups(skipped);
+            for (int lane = 0; lane < rt::kLanes; ++lane) {
+                const int mixed[] = {kUnit, kOtherUnit, kIncomplete, -1, 40};
+                const int unit = round < 4 ? kUnit : mixed[(lane + round) % 5];
+                e->lanes(sh.s)[lane] = bits(s[size_t(lane)]);
+                e->lanes(sh.t)[lane] = bits(t[size_t(lane)]);
+                e->lanes(sh.lod)[lane] = bits(float(lane % 3) - 1.0f);
+                e->lanes(sh.unit_lane)[lane] = bits(round == 5 && lane ? kOtherUnit : unit);
+                e->lanes(sh.cond)[lane] = round == 1 ? (lane % 3 != 0) : 1;
+                for (uint32_t k = 0; k < ir::kTexResults; ++k) {
+                    e->lanes(sh.result + k)[lane] = 0xdeadbeefu;
+                    e->lanes(sh.explicit_result + k)[lane] = 0xdeadbeefu;
+                }
+            }
+        }
+        REQUIRE(ia->run(live, nullptr));
+        REQUIRE(ja->run(live, nullptr));
+        for (const ir::Binding& out : sh.b.sh.outputs)
+            for (int lane = 0; lane < rt::kLanes; ++lane) {
+                INFO((c.rect ? "rect" : "2D") << " precision " << int(c.mode.precision) << " fast_ops "
+                     << c.mode.fast_ops << " filter " << int(c.filter) << " wrap " << int(c.ws) << "," << int(c.wt)
+                     << " " << c.w << "x" << c.h << " round " << round << " lane " << lane << " s "
+                     << s[size_t(lane)] << " t " << t[size_t(lane)] << " register " << out.first);
+                REQUIRE(ia->lanes(out.first)[lane] == ja->lanes(out.first)[lane]);
+            }
+    }
+}
+
 }  // namespace
 
 TEST_CASE("generated 2D and rectangle lookups give the tex kernel's words", "[runtime][backend][jit_tex]") {
     if (!jit_available() || !rt::cpu_has_avx2()) return;
     using enum TextureWrap;
     const TextureWrap wraps[] = {Repeat, MirroredRepeat, ClampToEdge, Clamp, ClampToBorder};
-    struct Size {
-        int w, h;
-    };
-    const Size sizes[] = {{5, 3}, {1, 1}, {7, 1}, {1, 6}, {13, 11}};
-    for (const ir::TexTarget target : {ir::TexTarget::T2D, ir::TexTarget::Rect}) {
-        const bool rect = target == ir::TexTarget::Rect;
-        const TextureTarget gl_target = rect ? TextureTarget::Rect : TextureTarget::Tex2D;
-        auto sh = make_shader(target);
-        const Precision precision = Precision::Precise;
-        auto interp_code = rt::compile_shader(sh->b.sh, rt::Runner::Interp, precision, rt::kAllFastOps, true);
-        auto jit_code = rt::compile_shader(sh->b.sh, rt::Runner::Jit, precision, rt::kAllFastOps, true);
-        REQUIRE(jit_code);
-        int state = 0;
-        for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
-            for (const TextureWrap ws : wraps)
-                for (const TextureWrap wt : wraps) {
-                    const Size size = sizes[size_t(state % 5)];
-                    const TextureFormat format = state % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8;
-                    ++state;
-                    std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
-                    auto bind = [&](int unit, std::shared_ptr<const Texture> t) {
-                        units[size_t(unit)].bound[size_t(t->target())] = std::move(t);
-                    };
-                    bind(kUnit, texture(gl_target, size.w, size.h, format, filter, ws, wt, uint32_t(state)));
-                    bind(kOtherUnit, texture(gl_target, 3, 2, TextureFormat::RGBA8, TextureFilter::Nearest, Repeat,
-                                             Repeat, 7u));
-                    bind(kIncomplete, texture(gl_target, 4, 4, TextureFormat::RGBA8,
-                                              rect ? TextureFilter::Linear : TextureFilter::LinearMipmapLinear,
-                                              Repeat, Repeat, 9u));
-                    if (rect) units[kIncomplete].bound[size_t(TextureTarget::Rect)].reset();  // none bound
-                    const uint32_t uniforms[] = {uint32_t(kUnit)};
-                    rt::ExecParams params{uniforms, 10, units.data(), precision, rt::kAllFastOps};
-                    auto ia = interp_code->instantiate(params), ja = jit_code->instantiate(params);
-                    std::mt19937 rng(uint32_t(state) * 977u);
-                    const float scale_s = rect ? float(size.w) : 1.0f, scale_t = rect ? float(size.h) : 1.0f;
-                    for (int round = 0; round < 6; ++round) {
-                        // Rounds 0-1 whole batches; 2 a partial live mask; 3 helper
-                        // lanes that skip their lookups; 4-5 mixed units per lane.
-                        const rt::LaneMask live =
-                            round == 2 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
-                        const rt::LaneMask skipped = round == 3 ? rt::LaneMask(0x0f0f0f0f0f0f0f0full) & rt::kAllLanes : 0;
-                        std::vector<float> s(rt::kLanes), t(rt::kLanes);
-                        for (int lane = 0; lane < rt::kLanes; ++lane) {
-                            s[size_t(lane)] = coordinate(rng, scale_s);
-                            t[size_t(lane)] = coordinate(rng, scale_t);
-                        }
-                        for (rt::Executor* e : {ia.get(), ja.get()}) {
-                            e->skip_lookups(skipped);
-                            for (int lane = 0; lane < rt::kLanes; ++lane) {
-                                const int units_of[] = {kUnit, kOtherUnit, kIncomplete, -1, 40};
-                                const int unit = round < 4 ? kUnit : units_of[(lane + round) % 5];
-                                e->lanes(sh->s)[lane] = bits(s[size_t(lane)]);
-                                e->lanes(sh->t)[lane] = bits(t[size_t(lane)]);
-                                e->lanes(sh->lod)[lane] = bits(float(lane % 3) - 1.0f);
-                                e->lanes(sh->unit_lane)[lane] = bits(round == 5 && lane ? kOtherUnit : unit);
-                                e->lanes(sh->b.sh.inputs[4].first)[lane] = round == 1 ? (lane % 3 != 0) : 1;
-                                for (uint32_t c = 0; c < ir::kTexResults; ++c) {
-                                    e->lanes(sh->result + c)[lane] = 0xdeadbeefu;
-                                    e->lanes(sh->explicit_result + c)[lane] = 0xdeadbeefu;
-                                }
-                            }
-                        }
-                        REQUIRE(ia->run(live, nullptr));
-                        REQUIRE(ja->run(live, nullptr));
-                        for (const ir::Binding& out : sh->b.sh.outputs)
-                            for (int lane = 0; lane < rt::kLanes; ++lane) {
-                                INFO((rect ? "rect" : "2D") << " filter " << int(filter) << " wrap " << int(ws) << ","
-                                     << int(wt) << " " << size.w << "x" << size.h << " round " << round << " lane "
-                                     << lane << " s " << s[size_t(lane)] << " t " << t[size_t(lane)] << " register "
-                                     << out.first);
-                                REQUIRE(ia->lanes(out.first)[lane] == ja->lanes(out.first)[lane]);
-                            }
+    const int sizes[][2] = {{5, 3}, {1, 1}, {7, 1}, {1, 6}, {13, 11}};
+    const Mode modes[] = {{Precision::Precise, rt::kAllFastOps},
+                          {Precision::Fast, rt::kAllFastOps & ~uint32_t(rt::kFastTexture)},
+                          {Precision::Fast, rt::kAllFastOps}};
+    for (const Mode& mode : modes)
+        for (const bool rect : {false, true}) {
+            auto sh = make_shader(rect ? ir::TexTarget::Rect : ir::TexTarget::T2D);
+            auto interp = rt::compile_shader(sh->b.sh, rt::Runner::Interp, mode.precision, mode.fast_ops, true);
+            auto jit = rt::compile_shader(sh->b.sh, rt::Runner::Jit, mode.precision, mode.fast_ops, true);
+            REQUIRE(jit);
+            uint32_t state = 0;
+            for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (const TextureWrap ws : wraps)
+                    for (const TextureWrap wt : wraps) {
+                        const int* size = sizes[state % 5];
+                        const TextureFormat format = state % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8;
+                        compare(*sh, *interp, *jit, {mode, rect, filter, ws, wt, size[0], size[1], format, ++state});
                     }
-                }
-    }
+        }
 }
