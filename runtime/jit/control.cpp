@@ -165,7 +165,11 @@ void Emitter::define(const std::string& name, const ir::Block& block) {
     auto* type = llvm::FunctionType::get(i32_, {ptr_, ptr_, ptr_, i64_}, false);
     fn_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
     start_function();
+    // The prologue runs once for all lanes (the executor passes kAllLanes,
+    // as the interpreter's run_prologue): a constant mask, so LLVM drops its
+    // writes' blends under the mask (a third of a vertex shader's code was them).
     llvm::Value* live = fn_->getArg(3);
+    if (&block == &shader_.prologue) live = b_.getInt64(kAllLanes);
 
     b_.SetInsertPoint(new_block("entry"));
     make_locals(&block == &shader_.body ? 0 : kNobody);

@@ -499,7 +499,7 @@ void warm_up_compiler(Backend backend) {
         CompileOptions options;
         options.default_version = version;
         auto program = Program::compile({vs}, {fs}, options);
-        if (!program || backend == Backend::Interp || version != 110) continue;
+        if (!program || backend != Backend::Jit || version != 110) continue;
         program->exec.backend = Backend::Jit;
         program->exec.jit_quick_codegen = true;  // as run_test_file's
         program->exec.threads = 1;

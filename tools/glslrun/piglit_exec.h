@@ -36,8 +36,10 @@ TestResult run_parser_test(const std::string& text, const std::string& ext, cons
 // built-in symbol tables (built once per process on first use, per version and
 // stage, and read-only afterwards) exist before run_isolated forks: each
 // test's child inherits them instead of building them again. With `backend`
-// Jit or Auto it also draws one pixel through the JIT: LLVM's one-time set-up
-// (its engine, and about 10 ms of first-compile work) is then inherited too.
+// Jit it also draws one pixel through the JIT: LLVM's one-time set-up (its
+// engine, and about 10 ms of first-compile work) is then inherited too. Not
+// with Auto, whose short tests never compile: a parent with LLVM loaded made
+// every fork dearer (the suite took 30% more CPU than with Interp).
 void warm_up_compiler(Backend backend);
 
 }  // namespace glslrun::piglit
