@@ -46,7 +46,10 @@ Plane to_plane(double a, double b, double c) { return {float(a), float(b), float
 // (raster/fused/gen/emit.cpp) computes the same expressions with the same rule.
 QuadF add(QuadF a, QuadF b) { return ir::a_nan_first(a, a + b); }
 QuadF mul(QuadF a, QuadF b) { return ir::a_nan_first(a, a * b); }
-QuadF splat(float v) { return QuadF{} + v; }
+// A broadcast, which keeps -0 and denormals as they are (0 + v would make
+// -0 of both, and flushed, of a negative denormal +0), as the fused
+// pipeline's vector splat does.
+QuadF splat(float v) { return QuadF{v, v, v, v}; }
 
 // A plane at a quad's pixels, x and y relative to its origin: (c + a x) + b y.
 QuadF plane_at(const Plane& p, QuadF x, QuadF y) {
@@ -257,6 +260,15 @@ void FragmentStage::prefetch(const Rect& r) const {
 
 ProbeBatch FragmentStage::probe_batch(rt::LaneMask covered) {
     return ProbeBatch{*interp_, quads_ * 4, lane_x_, lane_y_, lane_z_, quad_prim_.data(), covered};
+}
+
+FragmentStage::Walk::Walk(FragmentStage& stage) : stage_(stage) {
+    if (stage_.interp_->hold_denormal_mode(true)) flushed_.emplace();
+}
+
+FragmentStage::Walk::~Walk() {
+    flushed_.reset();
+    stage_.interp_->hold_denormal_mode(false);
 }
 
 FragmentStage::~FragmentStage() { state_of(program_).pipelines->count_unfused(shaded_ - fused_); }

@@ -11,6 +11,7 @@
 
 #include "glslrun/glslrun.h"
 #include "ir/ir.h"
+#include "ir/scalar_ops.h"
 #include "raster/fragment_ops.h"
 #include "raster/probe.h"
 #include "raster/quad_lanes.h"
@@ -76,6 +77,25 @@ class FragmentStage {
 public:
     FragmentStage(const Program& program, const GLState& gl, Framebuffer& fb, rt::DrawBudget* budget);
     ~FragmentStage();
+
+    // A tile walk: while it lives, the stage's batches run with denormals
+    // flushed (ir::FlushDenormals), their inputs and per-fragment operations
+    // as well as the shader, as llvmpipe's fragment threads run; the mode is
+    // switched once per walk, not twice per batch (rt::Executor::
+    // hold_denormal_mode). Where the shader keeps denormals (Reference),
+    // nothing is flushed. Both the C++ and the fused path run inside it,
+    // and the quads queued in a walk are flushed in it (render_tile does).
+    class Walk {
+    public:
+        explicit Walk(FragmentStage& stage);
+        ~Walk();
+        Walk(const Walk&) = delete;
+        Walk& operator=(const Walk&) = delete;
+
+    private:
+        FragmentStage& stage_;
+        std::optional<ir::FlushDenormals> flushed_;
+    };
 
     uint32_t attr_count() const { return attr_count_; }
     // The attribute vector of one vertex from its VS outputs; colours clamped

@@ -132,6 +132,7 @@ TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsi
     rt::run_workers(workers, [&](unsigned k) {
         if (k > 0) stages[k] = std::make_unique<FragmentStage>(target.program, target.gl, target.fb, target.budget);
         FragmentStage& s = k > 0 ? *stages[k] : stage;
+        FragmentStage::Walk walk(s);
         for (size_t i; queue.next(&i);) {
             const Job& job = todo[i];
             started[i] = 1;

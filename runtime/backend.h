@@ -114,6 +114,16 @@ public:
     // The following runs' check_undef instructions report to `sink`
     // (runtime/undef_sink.h; null: to no one).
     virtual void watch_undefined(UndefSink* sink) = 0;
+    // With `held`, the caller holds ir::FlushDenormals around the following
+    // runs (a tile walk), so run() leaves the control register alone: its
+    // two switches cost 20 ns a batch on AMD's cores, a tenth of a small
+    // shader's frame. Without, run() sets the mode itself again. Returns
+    // whether the executor takes the request; one whose runs do not flush
+    // denormals (Reference) does not, and its caller must not flush them.
+    virtual bool hold_denormal_mode(bool held) {
+        (void)held;
+        return false;
+    }
 };
 
 // A shader compiled for one specialization key, shared by the workers.

@@ -47,6 +47,7 @@ public:
     void skip_lookups(LaneMask lanes) override { inner_->skip_lookups(lanes); }
     Runner runner() const override { return inner_->runner(); }
     void watch_undefined(UndefSink* sink) override { inner_->watch_undefined(sink); }
+    bool hold_denormal_mode(bool held) override { return inner_->hold_denormal_mode(held); }
 
 private:
     std::unique_ptr<Executor> inner_;

@@ -321,6 +321,8 @@ public:
     virtual LaneMask alive() const = 0;
     virtual void skip_lookups(LaneMask lanes) = 0;
     virtual void watch_undefined(UndefSink* sink) = 0;
+    // Executor::hold_denormal_mode; Reference's runs keep denormals.
+    virtual bool hold_denormal_mode(bool) { return false; }
 };
 
 namespace {
@@ -333,7 +335,8 @@ public:
         : core_(s, uniforms, limits, textures, precision, fast_ops, hook) {}
     uint32_t* lanes(ir::Reg r) override { return core_.reg(r); }
     bool run(LaneMask live, RunError* error) override {
-        ir::FlushDenormals ftz;
+        std::optional<ir::FlushDenormals> ftz;
+        if (!held_) ftz.emplace();
         bool ok = core_.run(live);
         if (!ok && error) *error = core_.error;
         return ok;
@@ -341,9 +344,14 @@ public:
     LaneMask alive() const override { return core_.machine.mask.alive(); }
     void skip_lookups(LaneMask lanes) override { core_.machine.lookups = ~lanes; }
     void watch_undefined(UndefSink* sink) override { core_.machine.undef = sink; }
+    bool hold_denormal_mode(bool held) override {
+        held_ = held;
+        return true;
+    }
 
 private:
     Core<uint32_t, kTraced> core_;
+    bool held_ = false;  // the caller holds ir::FlushDenormals around run()
 };
 
 // Reference mode: the shader runs on doubles; callers exchange 32-bit words
@@ -409,6 +417,8 @@ LaneMask Interpreter::alive() const { return engine_->alive(); }
 void Interpreter::skip_lookups(LaneMask lanes) { engine_->skip_lookups(lanes); }
 
 void Interpreter::watch_undefined(UndefSink* sink) { engine_->watch_undefined(sink); }
+
+bool Interpreter::hold_denormal_mode(bool held) { return engine_->hold_denormal_mode(held); }
 
 }  // namespace glslrun::rt
 

@@ -43,6 +43,7 @@ public:
     void skip_lookups(LaneMask lanes) override;
     Runner runner() const override { return Runner::Interp; }
     void watch_undefined(UndefSink* sink) override;
+    bool hold_denormal_mode(bool held) override;
 
 private:
     std::unique_ptr<Engine> engine_;

@@ -9,9 +9,10 @@
 // shader (runtime/backend.h), run by the fragment stage's executor.
 // The emitter is raster/fused/gen/.
 //
-// Why three functions and not one: the shader runs with denormals flushed
-// (ir::FlushDenormals) and the plumbing around it, like the C++ path it
-// replaces (raster/fragments.cpp), does not; the MXCSR switch stays in C++.
+// The shader and the plumbing around it run under one denormal mode, held
+// by the tile walk (FragmentStage::Walk: denormals flushed, as
+// ir::FlushDenormals, except in Reference), for the C++ path
+// (raster/fragments.cpp) as for these functions.
 //
 // The generated code computes the C++ path's bits: the same float operations
 // in the same order, no FMA, the same clamps and NaN handling. It reads

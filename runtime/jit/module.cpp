@@ -10,6 +10,7 @@
 #include <ctime>
 #include <cstdlib>
 #include <mutex>
+#include <optional>
 
 #include <llvm/ExecutionEngine/JITEventListener.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
@@ -229,7 +230,8 @@ public:
         return regs_.data + size_t(r == ir::kNoReg || r >= code_.reg_count ? code_.reg_count : r) * kLanes;
     }
     bool run(LaneMask live, RunError* error) override {
-        ir::FlushDenormals ftz;
+        std::optional<ir::FlushDenormals> ftz;
+        if (!held_) ftz.emplace();
         ctx_.start_budget(limits_.max_instructions, limits_.cancel, share_.active() ? &share_ : nullptr);
         Failure failure = Failure(code_.main(&ctx_, regs_.data, uniforms_, live));
         // What the run left unreported counts after a failure too (as the interpreter's).
@@ -250,6 +252,10 @@ public:
     void skip_lookups(LaneMask lanes) override { ctx_.machine.lookups = ~lanes; }
     Runner runner() const override { return Runner::Jit; }
     void watch_undefined(UndefSink* sink) override { ctx_.machine.undef = sink; }
+    bool hold_denormal_mode(bool held) override {
+        held_ = held;
+        return true;
+    }
 
 private:
     const JitShader& code_;
@@ -260,6 +266,7 @@ private:
     std::vector<Step<uint32_t>> call_steps_;
     std::array<DirectSampler, kDirectSlots> direct_;
     Context ctx_;
+    bool held_ = false;  // the caller holds ir::FlushDenormals around run()
 };
 
 std::unique_ptr<Executor> JitShader::instantiate(const ExecParams& params) const {
