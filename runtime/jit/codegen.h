@@ -10,6 +10,7 @@
 #include <llvm/IR/Module.h>
 
 #include "ir/ir.h"
+#include "runtime/jit/charges.h"
 #include "runtime/jit/context.h"
 
 namespace glslrun::rt::jit {
@@ -138,6 +139,7 @@ private:
     llvm::AllocaInst* credit_ = nullptr;
     llvm::AllocaInst* budget_failure_ = nullptr;
     llvm::BasicBlock* over_budget_ = nullptr;  // where charge()'s failures return
+    Charges charges_{shader_};  // which blocks' charges an enclosing block's entry makes
 };
 
 }  // namespace glslrun::rt::jit
