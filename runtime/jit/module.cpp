@@ -35,6 +35,7 @@
 #include "runtime/jit/cached_shader.h"
 #include "runtime/jit/codegen.h"
 #include "runtime/jit/engine.h"
+#include "runtime/jit/flushed.h"
 
 namespace glslrun::rt::jit {
 
@@ -186,6 +187,7 @@ void optimise(llvm::Module& module, llvm::TargetMachine& machine) {
     pipeline.addPass(llvm::SimplifyCFGPass());
     pipeline.addPass(llvm::GVNPass());
     pipeline.addPass(llvm::DSEPass());
+    pipeline.addPass(DropNeedlessFlushes());
     pipeline.addPass(llvm::ADCEPass());
     pipeline.addPass(llvm::SimplifyCFGPass());
     llvm::ModulePassManager module_pipeline;
