@@ -86,7 +86,21 @@ llvm::Value* Emitter::exec_lanes() {
 // the parts (measured: one statement per op made multi_light's frame 10%
 // slower). SSE's two-operand forms keep one statement per instruction (a
 // tied output must not meet another input).
+//
+// Where a and b cannot be two NaNs, which operand names the NaN does not
+// matter, and the op is plain IR, which LLVM schedules, folds into memory
+// and broadcast operands, and compiles without an assembly parser: b == a
+// (the same NaN twice), or one of them a constant that is no NaN (the
+// other no constant: the IRBuilder would fold two, not as the CPU under
+// FTZ).
+// Half of marble's multiplications and additions are by a literal.
 llvm::Value* Emitter::first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b, llvm::Value* c) {
+    if (at_most_one_nan(a, b)) {
+        llvm::Value* r = multiply ? b_.CreateFMul(a, b) : b_.CreateFAdd(a, b);
+        if (!c) return r;
+        return at_most_one_nan(r, c) ? b_.CreateFAdd(r, c) : first_operand_op(false, r, c);
+    }
+    if (c && non_nan_constant(c)) return b_.CreateFAdd(first_operand_op(multiply, a, b), c);
     const bool wide = avx2_ && avx512();  // zmm registers, and all 32 of them ("v")
     const unsigned width = std::min<unsigned>(kLanes, wide ? 16 : avx2_ ? 8 : 4);
     auto* part_type = llvm::FixedVectorType::get(f32_, width);
@@ -131,6 +145,22 @@ llvm::Value* Emitter::first_operand_op(bool multiply, llvm::Value* a, llvm::Valu
         parts = std::move(joined);
     }
     return parts[0];
+}
+
+bool Emitter::non_nan_constant(llvm::Value* v) {
+    auto* constant = llvm::dyn_cast<llvm::Constant>(v);
+    if (!constant || llvm::isa<llvm::ConstantExpr>(constant)) return false;
+    const unsigned n = llvm::cast<llvm::FixedVectorType>(v->getType())->getNumElements();
+    for (unsigned i = 0; i < n; ++i) {
+        auto* lane = llvm::dyn_cast_or_null<llvm::ConstantFP>(constant->getAggregateElement(i));
+        if (!lane || lane->isNaN()) return false;
+    }
+    return true;
+}
+
+bool Emitter::at_most_one_nan(llvm::Value* a, llvm::Value* b) {
+    const bool ca = llvm::isa<llvm::Constant>(a), cb = llvm::isa<llvm::Constant>(b);
+    return (a == b && !ca) || (ca != cb && (ca ? non_nan_constant(a) : non_nan_constant(b)));
 }
 
 void Emitter::write_reg(ir::Reg r, llvm::Value* words, WriteMode mode, bool unmasked) {

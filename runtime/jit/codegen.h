@@ -10,6 +10,7 @@
 #include <llvm/IR/Module.h>
 
 #include "ir/ir.h"
+#include "runtime/jit/charges.h"
 #include "runtime/jit/context.h"
 
 namespace glslrun::rt::jit {
@@ -63,6 +64,8 @@ private:
     bool emit_native(const ir::Instr& in, llvm::Value** result);
     llvm::Value* emit_float_op(ir::Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c);
     llvm::Value* first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b, llvm::Value* c = nullptr);
+    static bool non_nan_constant(llvm::Value* v);  // a float vector constant without NaNs
+    static bool at_most_one_nan(llvm::Value* a, llvm::Value* b);  // a, b cannot be two different NaNs
     llvm::Constant* exact_reciprocal(llvm::Value* b);
     llvm::Value* emit_int_op(ir::Op op, llvm::Value* a, llvm::Value* b);
     llvm::Value* emit_compare(ir::Op op, llvm::Value* a, llvm::Value* b);
@@ -141,6 +144,7 @@ private:
     llvm::AllocaInst* credit_ = nullptr;
     llvm::AllocaInst* budget_failure_ = nullptr;
     llvm::BasicBlock* over_budget_ = nullptr;  // where charge()'s failures return
+    Charges charges_{shader_};  // which blocks' charges an enclosing block's entry makes
 };
 
 }  // namespace glslrun::rt::jit

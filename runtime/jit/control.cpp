@@ -306,10 +306,11 @@ void Emitter::charge(uint64_t instructions) {
     b_.SetInsertPoint(charged);
 }
 
-// Leaves the block on `exit` when no lane is active, as run_block does.
+// Leaves the block on `exit` when no lane is active, as run_block does,
+// and charges it there (with the blocks that entering it enters: Charges).
 void Emitter::emit_block(const ir::Block& block, llvm::BasicBlock* exit) {
     branch_unless_active(exit);
-    if (!block.empty()) charge(block.size());
+    if (!block.empty() && !charges_.charged(block)) charge(charges_.on_entry(block));
     for (const ir::Node& node : block) {
         if (!emit_node(node, exit)) {
             b_.CreateBr(exit);

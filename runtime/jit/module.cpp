@@ -37,6 +37,7 @@
 #include "runtime/jit/cached_shader.h"
 #include "runtime/jit/codegen.h"
 #include "runtime/jit/engine.h"
+#include "runtime/jit/flushed.h"
 
 namespace glslrun::rt::jit {
 
@@ -188,6 +189,7 @@ void optimise(llvm::Module& module, llvm::TargetMachine& machine) {
     pipeline.addPass(llvm::SimplifyCFGPass());
     pipeline.addPass(llvm::GVNPass());
     pipeline.addPass(llvm::DSEPass());
+    pipeline.addPass(DropNeedlessFlushes());
     pipeline.addPass(llvm::ADCEPass());
     pipeline.addPass(llvm::SimplifyCFGPass());
     llvm::ModulePassManager module_pipeline;
