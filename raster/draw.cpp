@@ -119,7 +119,7 @@ void add_triangle(const DrawContext& c, SetupOut& out, const FsVertex& v0, const
     p.front = front;
     p.primitive = out.current_primitive;
     p.vertex_ids = out.current_ids;
-    set_triangle_planes(p, setup);
+    set_triangle_planes(p, setup, c.stage.snapped_planes());
     out.bounds.push_back(setup.bbox);
 }
 

@@ -96,11 +96,11 @@ bool set_weight_planes(FsPrimitive& prim) {
     return true;
 }
 
-void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& t) {
+void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& t, bool snapped) {
     prim.ox = t.bbox.x0;
     prim.oy = t.bbox.y0;
-    const bool weights_set = set_weight_planes(prim);
-    // Depth (and the weights where the float positions are degenerate): the
+    const bool weights_set = !snapped && set_weight_planes(prim);
+    // Depth (and the weights when snapped or where the float positions are degenerate): the
     // edge functions over twice the area, exact at the origin (integers)
     // and with per-pixel steps of kSubpixelOne.
     std::array<int64_t, 3> e = edge_values(t, prim.ox, prim.oy);

@@ -61,7 +61,10 @@ struct FsPrimitive {
     std::array<uint32_t, 3> vertex_ids{};
 };
 
-void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& setup);
+// `snapped`: the attribute weights from the positions snapped to the
+// subpixel grid, as NVIDIA's driver interpolates (Precision::Fast); else from
+// the unsnapped positions, as llvmpipe does.
+void set_triangle_planes(FsPrimitive& prim, const TriangleSetup& setup, bool snapped = false);
 void set_line_planes(FsPrimitive& prim);
 void set_point_planes(FsPrimitive& prim);
 
@@ -122,6 +125,9 @@ public:
     // Fragment counts of this stage so far.
     uint64_t fragments_shaded() const { return shaded_; }
     uint64_t fragments_written() const { return written_; }
+    // Fast interpolates over the snapped triangle, as NVIDIA's driver does
+    // (docs/precision.md, "The GPU's interpolation").
+    bool snapped_planes() const { return program_.exec.precision == Precision::Fast; }
     // Of the fragments shaded, those the fused pipeline (raster/fused/pipeline.h) handled.
     uint64_t fragments_fused() const { return fused_; }
 

@@ -2,6 +2,7 @@
 // exactly once, whatever the subpixel positions of the shared vertices.
 #include <catch2/catch.hpp>
 
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -145,22 +146,21 @@ TEST_CASE("plane equations give the screen-space weights and depth at pixel cent
         }
 }
 
-// Coverage snaps the vertices to 1/256 pixel, but the attributes follow the
-// triangle the vertex stage computed, as llvmpipe's: from the snapped
-// positions a small triangle's weights were off by the snap over its size
-// (here up to 5e-4; a texture coordinate 5e-5 off on the era programs).
-TEST_CASE("plane equations weigh the unsnapped vertex positions", "[raster][coverage]") {
+// A small triangle's weight planes (set_triangle_planes with `snapped`)
+// against the exact barycentric weights with respect to `expected`'s
+// positions, at the pixel centres it covers.
+static void check_weight_planes(bool snapped, const std::function<glm::dvec2(glm::vec2)>& expected) {
     Rect scissor{0, 0, 16, 16};
     FsPrimitive prim;
     const glm::vec2 win[3] = {glm::vec2(0.5013f, 0.4991f), glm::vec2(4.5017f, 0.5021f), glm::vec2(0.4987f, 4.4981f)};
     for (int i = 0; i < 3; ++i) prim.v[size_t(i)].win = win[i];
     auto t = setup_triangle({win[0], win[1], win[2]}, scissor);
     REQUIRE(t);
-    set_triangle_planes(prim, *t);
+    set_triangle_planes(prim, *t, snapped);
     auto at = [&](const Plane& p, int x, int y) { return p.c + p.a * float(x - prim.ox) + p.b * float(y - prim.oy); };
-    // The exact barycentric weight of vertex i at (px, py).
+    const glm::dvec2 pos[3] = {expected(win[0]), expected(win[1]), expected(win[2])};
     auto exact = [&](int i, double px, double py) {
-        const glm::dvec2 a = win[size_t(i)], b = win[size_t((i + 1) % 3)], c = win[size_t((i + 2) % 3)];
+        const glm::dvec2 a = pos[i], b = pos[(i + 1) % 3], c = pos[(i + 2) % 3];
         auto cross = [](glm::dvec2 u, glm::dvec2 v) { return u.x * v.y - u.y * v.x; };
         return cross(b - glm::dvec2(px, py), c - glm::dvec2(px, py)) / cross(b - a, c - a);
     };
@@ -168,6 +168,23 @@ TEST_CASE("plane equations weigh the unsnapped vertex positions", "[raster][cove
         for (int x = 0; x < 4 - y; ++x)
             for (int i = 0; i < 3; ++i)
                 CHECK(at(prim.weight[size_t(i)], x, y) == Approx(exact(i, x + 0.5, y + 0.5)).margin(1e-6));
+}
+
+// Coverage snaps the vertices to 1/256 pixel, but the attributes follow the
+// triangle the vertex stage computed, as llvmpipe's: from the snapped
+// positions a small triangle's weights were off by the snap over its size
+// (here up to 5e-4; a texture coordinate 5e-5 off on the era programs).
+TEST_CASE("plane equations weigh the unsnapped vertex positions", "[raster][coverage]") {
+    check_weight_planes(false, [](glm::vec2 w) { return glm::dvec2(w); });
+}
+
+// Fast's planes (snapped = true) weigh the vertices as snapped to the
+// subpixel grid, the triangle the coverage test draws, as NVIDIA's driver
+// interpolates (docs/precision.md, "The GPU's interpolation").
+TEST_CASE("snapped plane equations weigh the snapped vertex positions", "[raster][coverage]") {
+    check_weight_planes(true, [](glm::vec2 w) {
+        return glm::dvec2(double(snap(w.x)), double(snap(w.y))) / double(kSubpixelOne);
+    });
 }
 
 TEST_CASE("8x8 blocks inside or outside a triangle cover what the per-pixel test covers", "[raster][coverage]") {

@@ -1,5 +1,6 @@
 #include "tools/glref/gl_context.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include <EGL/eglext.h>
@@ -21,9 +22,59 @@ DisplayState& display_state() {
     return state;
 }
 
-// Software rasterisers only: a GPU driver would make the reference depend on
-// the machine.
-bool known_driver(const std::string& driver) { return driver == "llvmpipe" || driver == "softpipe"; }
+// Mesa's software rasterisers are the oracle; "gpu" (the first EGL device, e.g.
+// NVIDIA's driver) is a second anchor for Fast's GPU rules, never the tests'
+// oracle, since its images depend on the machine.
+bool known_driver(const std::string& driver) {
+    return driver == "llvmpipe" || driver == "softpipe" || driver == "gpu";
+}
+
+// The first EGL device (EGL_EXT_platform_device) that initialises, else the
+// surfaceless platform, else the default display. GLREF_EGL_DEVICE=N picks device N.
+Result<EGLDisplay> open_gpu_display() {
+    auto get_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    auto query_device_string =
+        reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
+    EGLint major = 0, minor = 0;
+    if (get_display && query_devices) {
+        EGLDeviceEXT devices[16];
+        EGLint count = 0;
+        if (query_devices(16, devices, &count)) {
+            std::fprintf(stderr, "glref: %d EGL device(s)\n", count);
+            const char* pick = std::getenv("GLREF_EGL_DEVICE");
+            for (EGLint i = 0; i < count; ++i) {
+                if (pick && std::atoi(pick) != i) continue;
+                const char* ext = query_device_string ? query_device_string(devices[i], EGL_EXTENSIONS) : nullptr;
+                std::fprintf(stderr, "glref: EGL device %d extensions: %s\n", i, ext ? ext : "(none)");
+                EGLDisplay dpy = get_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                if (dpy != EGL_NO_DISPLAY && eglInitialize(dpy, &major, &minor)) {
+                    const char* vendor = eglQueryString(dpy, EGL_VENDOR);
+                    const char* version = eglQueryString(dpy, EGL_VERSION);
+                    std::fprintf(stderr, "glref: EGL device %d: EGL_VENDOR=%s EGL_VERSION=%s\n", i,
+                                 vendor ? vendor : "?", version ? version : "?");
+                    return dpy;
+                }
+                std::fprintf(stderr, "glref: EGL device %d does not initialise (0x%x)\n", i, eglGetError());
+            }
+        }
+    }
+    if (get_display) {
+        EGLDisplay dpy = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (dpy != EGL_NO_DISPLAY && eglInitialize(dpy, &major, &minor)) {
+            std::fprintf(stderr, "glref: surfaceless platform\n");
+            return dpy;
+        }
+    }
+    EGLDisplay dpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+    if (dpy != EGL_NO_DISPLAY && eglInitialize(dpy, &major, &minor)) {
+        std::fprintf(stderr, "glref: default display\n");
+        return dpy;
+    }
+    return Error(fmt::format("no EGL device, surfaceless or default display initialises (EGL error 0x{:x})",
+                             eglGetError()));
+}
 
 Result<EGLDisplay> open_display(const std::string& driver) {
     DisplayState& s = display_state();
@@ -32,6 +83,13 @@ Result<EGLDisplay> open_display(const std::string& driver) {
         return Error(fmt::format("Mesa already runs {} in this process and reads GALLIUM_DRIVER only once; "
                                  "render with {} in a separate process",
                                  s.driver, driver));
+    }
+    if (driver == "gpu") {
+        auto dpy = open_gpu_display();
+        if (!dpy) return dpy.error();
+        s.display = *dpy;
+        s.driver = driver;
+        return *dpy;
     }
     // Read by Mesa's loader when the display initialises, never again.
     setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
@@ -90,7 +148,7 @@ Status load_functions(GLFunctions& gl) {
 
 Result<std::unique_ptr<MesaContext>> MesaContext::create(const std::string& driver) {
     if (!known_driver(driver))
-        return Error(fmt::format("unknown driver '{}': use llvmpipe or softpipe", driver));
+        return Error(fmt::format("unknown driver '{}': use llvmpipe, softpipe or gpu", driver));
     auto dpy = open_display(driver);
     if (!dpy) return dpy.error();
     auto ctx = create_context(*dpy);
@@ -101,6 +159,16 @@ Result<std::unique_ptr<MesaContext>> MesaContext::create(const std::string& driv
     if (Status st = load_functions(c->gl_); !st) return st.error();
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     c->renderer_ = renderer ? renderer : "";
+    if (driver == "gpu") {
+        auto str = [](GLenum name) {
+            const char* v = reinterpret_cast<const char*>(glGetString(name));
+            return std::string(v ? v : "?");
+        };
+        std::fprintf(stderr, "glref: GL_VENDOR=%s | GL_RENDERER=%s | GL_VERSION=%s | GLSL=%s\n",
+                     str(GL_VENDOR).c_str(), str(GL_RENDERER).c_str(), str(GL_VERSION).c_str(),
+                     str(GL_SHADING_LANGUAGE_VERSION).c_str());
+        return c;
+    }
     // A hardware or wrong software driver would compare against the wrong oracle.
     if (c->renderer_.find(driver) == std::string::npos)
         return Error(fmt::format("asked Mesa for {} but got renderer '{}'", driver, c->renderer_));

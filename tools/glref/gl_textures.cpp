@@ -1,8 +1,10 @@
 #include "tools/glref/gl_textures.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -108,22 +110,66 @@ void tex_image(const GLFunctions& gl, const Texture& t, int face, int level) {
     }
 }
 
-void tex_parameters(GLenum target, const SamplerState& s) {
-    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GLint(gl_filter(s.min_filter)));
-    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GLint(gl_filter(s.mag_filter)));
-    glTexParameteri(target, GL_TEXTURE_WRAP_S, GLint(gl_wrap(s.wrap_s)));
-    glTexParameteri(target, GL_TEXTURE_WRAP_T, GLint(gl_wrap(s.wrap_t)));
-    glTexParameteri(target, GL_TEXTURE_WRAP_R, GLint(gl_wrap(s.wrap_r)));
-    glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(s.border_color));
-    glTexParameterf(target, GL_TEXTURE_MIN_LOD, s.min_lod);
-    glTexParameterf(target, GL_TEXTURE_MAX_LOD, s.max_lod);
-    glTexParameterf(target, GL_TEXTURE_LOD_BIAS, s.lod_bias);
-    glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, s.base_level);
-    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, s.max_level);
-    glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, s.compare ? GL_COMPARE_R_TO_TEXTURE : GL_NONE);
+// One glTexParameter: its value for a sampler state (an integer or enum in
+// [0], or the border colour's four floats).
+struct Parameter {
+    const char* name;
+    GLenum pname;
+    enum Kind { Int, Float, Vec4 } kind;
+    std::array<float, 4> (*value)(const SamplerState&);
+};
+
+std::array<float, 4> one(float v) { return {v, 0, 0, 0}; }
+
+constexpr Parameter kParameters[] = {
+    {"GL_TEXTURE_MIN_FILTER", GL_TEXTURE_MIN_FILTER, Parameter::Int, [](const SamplerState& s) { return one(float(gl_filter(s.min_filter))); }},
+    {"GL_TEXTURE_MAG_FILTER", GL_TEXTURE_MAG_FILTER, Parameter::Int, [](const SamplerState& s) { return one(float(gl_filter(s.mag_filter))); }},
+    {"GL_TEXTURE_WRAP_S", GL_TEXTURE_WRAP_S, Parameter::Int, [](const SamplerState& s) { return one(float(gl_wrap(s.wrap_s))); }},
+    {"GL_TEXTURE_WRAP_T", GL_TEXTURE_WRAP_T, Parameter::Int, [](const SamplerState& s) { return one(float(gl_wrap(s.wrap_t))); }},
+    {"GL_TEXTURE_WRAP_R", GL_TEXTURE_WRAP_R, Parameter::Int, [](const SamplerState& s) { return one(float(gl_wrap(s.wrap_r))); }},
+    {"GL_TEXTURE_BORDER_COLOR", GL_TEXTURE_BORDER_COLOR, Parameter::Vec4,
+     [](const SamplerState& s) { return std::array<float, 4>{s.border_color.r, s.border_color.g, s.border_color.b, s.border_color.a}; }},
+    {"GL_TEXTURE_MIN_LOD", GL_TEXTURE_MIN_LOD, Parameter::Float, [](const SamplerState& s) { return one(s.min_lod); }},
+    {"GL_TEXTURE_MAX_LOD", GL_TEXTURE_MAX_LOD, Parameter::Float, [](const SamplerState& s) { return one(s.max_lod); }},
+    {"GL_TEXTURE_LOD_BIAS", GL_TEXTURE_LOD_BIAS, Parameter::Float, [](const SamplerState& s) { return one(s.lod_bias); }},
+    {"GL_TEXTURE_BASE_LEVEL", GL_TEXTURE_BASE_LEVEL, Parameter::Int, [](const SamplerState& s) { return one(float(s.base_level)); }},
+    {"GL_TEXTURE_MAX_LEVEL", GL_TEXTURE_MAX_LEVEL, Parameter::Int, [](const SamplerState& s) { return one(float(s.max_level)); }},
+    {"GL_TEXTURE_COMPARE_MODE", GL_TEXTURE_COMPARE_MODE, Parameter::Int,
+     [](const SamplerState& s) { return one(float(s.compare ? GL_COMPARE_R_TO_TEXTURE : GL_NONE)); }},
     // CompareFunc lists the functions in GL's enum order (GL_NEVER..GL_ALWAYS).
-    glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GLint(GL_NEVER + int(s.compare_func)));
-    glTexParameteri(target, GL_DEPTH_TEXTURE_MODE, GLint(gl_depth_mode(s.depth_mode)));
+    {"GL_TEXTURE_COMPARE_FUNC", GL_TEXTURE_COMPARE_FUNC, Parameter::Int,
+     [](const SamplerState& s) { return one(float(GL_NEVER + int(s.compare_func))); }},
+    {"GL_DEPTH_TEXTURE_MODE", GL_DEPTH_TEXTURE_MODE, Parameter::Int,
+     [](const SamplerState& s) { return one(float(gl_depth_mode(s.depth_mode))); }},
+};
+
+// A new texture object's state (GL 2.1 table 6.20): a rectangle texture
+// starts LINEAR and clamped to its edges (ARB_texture_rectangle).
+SamplerState initial_state(GLenum target) {
+    SamplerState s;
+    if (target == GL_TEXTURE_RECTANGLE) {
+        s.min_filter = TextureFilter::Linear;
+        s.wrap_s = s.wrap_t = s.wrap_r = TextureWrap::ClampToEdge;
+    }
+    return s;
+}
+
+// Only the parameters that differ from a new texture's are set: drivers
+// differ in which mipmap parameters they accept on a rectangle texture
+// (NVIDIA's refuses one that Mesa takes), and setting an initial value
+// changes nothing. Each is checked on its own, so that a refusal names it.
+// Empty when the driver took every parameter, else what it said.
+std::string tex_parameters(GLenum target, const SamplerState& s) {
+    const SamplerState initial = initial_state(target);
+    for (const Parameter& p : kParameters) {
+        const std::array<float, 4> v = p.value(s);
+        if (v == p.value(initial)) continue;
+        if (p.kind == Parameter::Int) glTexParameteri(target, p.pname, GLint(v[0]));
+        else if (p.kind == Parameter::Float) glTexParameterf(target, p.pname, v[0]);
+        else glTexParameterfv(target, p.pname, v.data());
+        if (GLenum e = glGetError(); e != GL_NO_ERROR) return fmt::format("{} setting {}", gl_error_name(e), p.name);
+    }
+    return {};
 }
 
 Result<GLuint> upload_one(const GLFunctions& gl, const scene::TextureSetting& setting, bool upload_generated_levels) {
@@ -136,7 +182,9 @@ Result<GLuint> upload_one(const GLFunctions& gl, const scene::TextureSetting& se
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     // The parameters first: mipmap generation makes levels base_level+1 ..
     // max_level from base_level, in GL as in glslrun's generate_mipmaps().
-    tex_parameters(target, t.sampler);
+    if (std::string refused = tex_parameters(target, t.sampler); !refused.empty())
+        return Error(fmt::format("the driver reported {} on the texture of unit {}", refused, setting.unit),
+                     setting.where.file, setting.where.line);
     bool generate = setting.generate_mipmap && !upload_generated_levels;
     for (int face = 0; face < t.faces(); ++face) {
         int levels = generate ? std::min(t.sampler.base_level + 1, int(t.levels(face).size()))
@@ -161,7 +209,8 @@ constexpr GLenum kTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_T
 
 // An empty 2D texture of the target's size, attached to the bound FBO; the
 // unit of a [textures.N] that samples it gets it with the file's sampler state.
-void attach_texture(const GLFunctions& gl, const scene::Scene& scene, int target, int attachment) {
+// Empty, else the parameter the driver refused.
+std::string attach_texture(const GLFunctions& gl, const scene::Scene& scene, int target, int attachment) {
     const scene::RenderTarget& t = scene.targets[size_t(target)];
     const scene::TextureSetting* sampled = nullptr;
     for (const scene::TextureSetting& s : scene.textures)
@@ -170,7 +219,7 @@ void attach_texture(const GLFunctions& gl, const scene::Scene& scene, int target
     glGenTextures(1, &id);
     gl.ActiveTexture(GLenum(GL_TEXTURE0 + (sampled ? sampled->unit : 0)));
     glBindTexture(GL_TEXTURE_2D, id);
-    tex_parameters(GL_TEXTURE_2D, sampled ? sampled->texture->sampler : SamplerState{});
+    std::string refused = tex_parameters(GL_TEXTURE_2D, sampled ? sampled->texture->sampler : SamplerState{});
     if (attachment < 0) {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, t.width, t.height, 0, GL_DEPTH_STENCIL,
                      GL_UNSIGNED_INT_24_8, nullptr);
@@ -180,6 +229,7 @@ void attach_texture(const GLFunctions& gl, const scene::Scene& scene, int target
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + attachment), GL_TEXTURE_2D, id, 0);
     }
     if (!sampled) glBindTexture(GL_TEXTURE_2D, 0);  // unit 0 keeps what the file bound there
+    return refused;
 }
 
 }  // namespace
@@ -193,7 +243,10 @@ Result<std::vector<GLTarget>> make_render_targets(const GLFunctions& gl, const s
         GLTarget made{0, t.width, t.height, t.color_buffers};
         gl.GenFramebuffers(1, &made.fbo);
         gl.BindFramebuffer(GL_FRAMEBUFFER, made.fbo);
-        for (int a = -1; a < t.color_buffers; ++a) attach_texture(gl, scene, int(i), a);
+        for (int a = -1; a < t.color_buffers; ++a)
+            if (std::string refused = attach_texture(gl, scene, int(i), a); !refused.empty())
+                return Error(fmt::format("the driver reported {} on render target '{}'", refused, t.name), t.where.file,
+                             t.where.line);
         GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE)
             return Error(fmt::format("Mesa's FBO for render target '{}' is incomplete (0x{:x})", t.name, status),

@@ -1,7 +1,7 @@
 // glref: renders a scene file with Mesa (llvmpipe or softpipe) through EGL,
 // as the oracle for glslrun's images.
 //
-//   glref [--driver llvmpipe|softpipe] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]
+//   glref [--driver llvmpipe|softpipe|gpu] shader.vert shader.frag scene.toml [-o out.png] [--size WxH]
 //         [--upload-mipmaps] [--frames N | --bench N]
 #include <cstdio>
 #include <cstdlib>
@@ -25,11 +25,12 @@ namespace {
 using namespace glslrun;
 
 constexpr const char* kUsage =
-    "usage: glref [--driver llvmpipe|softpipe] [shader.vert] [shader.frag] scene.toml [-o out.png] [--size WxH]\n"
+    "usage: glref [--driver llvmpipe|softpipe|gpu] [shader.vert] [shader.frag] scene.toml [-o out.png] [--size WxH]\n"
     "             [--upload-mipmaps] [--frames N | --bench N]\n"
     "Renders the scene with Mesa through EGL (no X server) the way a GL 2.1 program would,\n"
     "for comparison with glslrun's image (glslrun --compare). A shader left out is Mesa's fixed function.\n"
-    "  --driver D   Mesa's software rasteriser: llvmpipe (default) or softpipe\n"
+    "  --driver D   Mesa's software rasteriser: llvmpipe (default) or softpipe; gpu: the first\n"
+    "               EGL device (a hardware driver, e.g. NVIDIA's; GLREF_EGL_DEVICE=N picks device N)\n"
     "  -o FILE      output PNG (default: <scene>-<driver>.png)\n"
     "  --size WxH   override the scene's size\n"
     "  --upload-mipmaps  give Mesa glslrun's generated mipmap levels instead of calling\n"
@@ -82,8 +83,8 @@ std::string parse_options(int argc, char** argv, Options& o) {
             o.inputs.push_back(a);
         }
     }
-    if (o.driver != "llvmpipe" && o.driver != "softpipe")
-        return fmt::format("--driver '{}': use llvmpipe or softpipe", o.driver);
+    if (o.driver != "llvmpipe" && o.driver != "softpipe" && o.driver != "gpu")
+        return fmt::format("--driver '{}': use llvmpipe, softpipe or gpu", o.driver);
     if (o.inputs.empty() || o.inputs.size() > 3 || !o.inputs.back().ends_with(".toml"))
         return fmt::format("expected [shader.vert] [shader.frag] scene.toml, got {} file(s)", o.inputs.size());
     if (o.output.empty()) o.output = std::filesystem::path(o.inputs.back()).stem().string() + "-" + o.driver + ".png";

@@ -2,6 +2,7 @@
 """Decode the GPU probes of this folder (rendered by run_gpu.sh, or by glslrun/glref on the CPU).
 
 usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|mipgen|cube|funcs2 LABEL=IMG.png ...
+       decode.py textured LABEL=DIR   (textured_texel, _lod, _s, _t from run_gpu.sh in DIR)
 Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
 """
 import sys
@@ -422,6 +423,76 @@ def texkinds(images):
         d = np.abs(model.astype(np.float64) - v)
         print(f"  RGBA32F 16x16 random, red: integer weights summed in float: exact (2^-31) {100 * np.mean(d < 2 ** -31):.2f}%, "
               f"within 2^-16 {100 * np.mean(d < 2 ** -16):.2f}%, largest difference {d.max():.3g}")
+
+
+def textured_levels():
+    """scenes/textures/wood.png and its generated levels by the GPU's rule (runtime/mipmap_gpu.cpp), bytes."""
+    a = np.asarray(Image.open(HERE + "/../../scenes/textures/wood.png").convert("RGBA"), dtype=np.int64)[::-1]
+    levels = [a]
+    while levels[-1].shape[0] > 1:
+        b = levels[-1]
+        r16 = (257 * (b[0::2, 0::2] + b[1::2, 0::2] + b[0::2, 1::2] + b[1::2, 1::2]) * 64 + 128) >> 8
+        t = np.floor((r16.astype(f32) / f32(65535)) * f32(4096)).astype(np.int64)
+        levels.append((t * 510 + 4095) >> 13)
+    return levels
+
+
+def textured_bilinear(level, s, t):
+    """One level's 16-bit bilinear result (red, green) under REPEAT: 8-bit weights, texels as 257 b."""
+    h, w = level.shape[:2]
+    u = (s - np.floor(s)).astype(f32) * f32(w) - f32(0.5)
+    v = (t - np.floor(t)).astype(f32) * f32(h) - f32(0.5)
+    i0, j0 = np.floor(u).astype(np.int64), np.floor(v).astype(np.int64)
+    wx, wy = (QUANT["round8"](u - np.floor(u)) * 256).astype(np.int64), (QUANT["round8"](v - np.floor(v)) * 256).astype(np.int64)
+    w11 = (wx * wy + 128) >> 8
+    tex = lambda j, i: 257 * level[j % h, i % w][..., :2]
+    total = (tex(j0, i0) * (256 - wx - wy + w11)[..., None] + tex(j0, i0 + 1) * (wx - w11)[..., None]
+             + tex(j0 + 1, i0) * (wy - w11)[..., None] + tex(j0 + 1, i0 + 1) * w11[..., None])
+    return (total + 128) >> 8
+
+
+def textured(images):
+    """textured_texel/_lod/_s/_t (one folder: LABEL=DIR): the GPU's 16-bit texels of textured_pix's trilinear
+    lookup against its bilinear levels at the GPU's own coordinates and lambda (textureQueryLod)."""
+    for label, d in images:
+        def img(name):
+            return load(f"{d}/textured_{name}.png")
+        def bits(a):
+            return ((a[..., 0] << 24) | (a[..., 1] << 16) | (a[..., 2] << 8) | a[..., 3]).astype(np.uint32).view(f32)
+        tex, lod, s, t = img("texel"), img("lod"), bits(img("s")), bits(img("t"))
+        cov = (img("s")[..., :3] != 0).any(-1)
+        got = np.stack([tex[..., 0] * 256 + tex[..., 1], tex[..., 2] * 256 + tex[..., 3]], -1)[cov]
+        lam = (lod[..., 0] * 256 + lod[..., 1] - 32768)[cov] / 256.0
+        s, t = s[cov], t[cov]
+        levels = [textured_bilinear(lv, s, t) for lv in textured_levels()]
+        q = len(levels) - 1
+        whole = np.clip(np.floor(lam), 0, q).astype(np.int64)
+        w = ((lam - np.floor(lam)) * 256).astype(np.int64)
+        stack = np.stack(levels)
+        idx = np.arange(len(lam))
+        first, second = stack[whole, idx], stack[np.minimum(whole + 1, q), idx]
+        blend = (first * (256 - w)[:, None] + second * w[:, None] + 128) >> 8
+        model = np.where((lam <= 0)[:, None], stack[0, idx], np.where((w == 0)[:, None], first, blend))
+        ok = (model == got).all(-1)
+        print(f"textured {label}: {cov.sum()} covered pixels")
+        for name, k in (("magnified (lambda <= 0)", lam <= 0), ("one level (lambda a whole number)", (lam > 0) & (w == 0)),
+                        ("trilinear blend", (lam > 0) & (w > 0))):
+            print(f"  {name}: {k.sum()} pixels, the model's 16-bit texel {100 * ok[k].mean():.2f}%")
+        # Is a trilinear texel a blend of two adjacent levels' results by any one weight (both channels)?
+        tri = (lam > 0) & (w > 0)
+        fits = np.zeros(tri.sum(), bool)
+        for d1 in range(q):
+            a, b = stack[d1][tri].astype(float), stack[d1 + 1][tri].astype(float)
+            lo, hi = np.zeros(len(a)), np.ones(len(a))
+            for c in range(2):
+                diff, g = b[:, c] - a[:, c], got[tri][:, c] - a[:, c]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    l1, h1 = (g - 0.5) / diff, (g + 0.5) / diff
+                flat = diff == 0
+                lo = np.maximum(lo, np.where(flat, np.where(np.abs(g) <= 0.5, 0, 2), np.minimum(l1, h1)))
+                hi = np.minimum(hi, np.where(flat, np.where(np.abs(g) <= 0.5, 1, -1), np.maximum(l1, h1)))
+            fits |= lo <= hi
+        print(f"  trilinear texels that any weight of two adjacent levels gives: {100 * fits.mean():.2f}%")
 
 
 if __name__ == "__main__":

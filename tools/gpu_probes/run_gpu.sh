@@ -15,16 +15,27 @@ if [[ ! -e /usr/share/glvnd/egl_vendor.d/10_nvidia.json && -e /usr/local/nvidia/
 fi
 cd tools/gpu_probes || exit 1
 rc=0
-for p in texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs2 textured_lin; do
-  frag=$p.frag; [[ $p == textured_lin ]] && frag=../../shaders/textured_pix.frag
-  vert=probe.vert; [[ $p == textured_lin ]] && vert=../../shaders/textured_pix.vert
-  if "$G" --driver gpu "$vert" "$frag" "$p.toml" -o "$O/$p.png" >"$O/$p.log" 2>&1; then
+# NAME or NAME=VERT:FRAG:SCENE (the default: probe.vert, NAME.frag, NAME.toml).
+PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs2
+  textured_lin=../../shaders/textured_pix.vert:../../shaders/textured_pix.frag:textured_lin.toml
+  textured_texel=../../shaders/textured_pix.vert:textured_texel.frag:textured_probe.toml
+  textured_lod=textured_400.vert:textured_lod.frag:textured_probe.toml
+  textured_s=textured_400.vert:textured_coord.frag:textured_s.toml
+  textured_t=textured_400.vert:textured_coord.frag:textured_t.toml
+  bloom_s0=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s0.toml
+  bloom_s1=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s1.toml
+  bloom_s2=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s2.toml
+  bloom_s3=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s3.toml"}
+for job in $PROBES; do
+  p=${job%%=*}; vert=probe.vert; frag=$p.frag; scene=$p.toml
+  [[ $job == *=* ]] && IFS=: read -r vert frag scene <<<"${job#*=}"
+  if "$G" --driver gpu "$vert" "$frag" "$scene" -o "$O/$p.png" >"$O/$p.log" 2>&1; then
     echo "$p OK: $(tail -n 2 "$O/$p.log" | tr '\n' ' ')" >>"$O/info.txt"
   else
     echo "$p FAILED: $(tr '\n' ' ' <"$O/$p.log" | tail -c 600)" >>"$O/info.txt"; rc=1
   fi
 done
-head -n 12 "$O/texfilter.log" >>"$O/info.txt"
+head -n 12 "$O/${PROBES%%[= ]*}.log" >>"$O/info.txt" 2>/dev/null
 cat "$O/info.txt"
 tar -cf "$D/probes.tar" -C "$O" .
 exit $rc
