@@ -187,6 +187,53 @@ Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>
                                     const Pass& pass);
 Status check_fixed_state_builtins(const Program& program, const Scene& scene);
 
+namespace {
+
+// The scene's, objects' and passes' uniform entries that no program they go
+// to has as an active uniform: GL ignores glUniform at location -1, so they
+// are warnings (with the nearest name the programs have), not errors. One
+// with no line, from the command line (--uniform) or code (Python's
+// uniforms=), was typed for this render: an error.
+Result<std::vector<Diagnostic>> unused_uniform_warnings(const ScenePrograms& programs, const Scene& scene) {
+    std::vector<std::vector<UniformInfo>> infos;
+    for (size_t i = 0; i < programs.size(); ++i) infos.push_back(programs.of_pass(i).uniforms());
+    std::vector<Diagnostic> warnings;
+    auto check = [&](const std::vector<UniformSetting>& settings, std::optional<size_t> pass) -> Status {
+        std::vector<const std::vector<UniformInfo>*> lists;
+        for (size_t i = 0; i < infos.size(); ++i)
+            if (!pass || *pass == i) lists.push_back(&infos[i]);
+        for (const UniformSetting& s : settings) {
+            bool found = false;
+            for (const auto* list : lists) found = found || find_declaration(*list, s.name);
+            if (found) continue;
+            const bool all_fixed = !scene.passes.empty() && std::all_of(scene.passes.begin(), scene.passes.end(),
+                                                                         [](const Pass& p) { return p.fixed_function; });
+            const std::string hint =
+                all_fixed ? " (every draw is GL's fixed function, which has no uniforms of its own)"
+                          : no_uniform_hint(lists, s.name);
+            const std::string missing =
+                pass ? fmt::format("pass '{}': its program has no active uniform '{}'", scene.passes[*pass].name,
+                                   s.name)
+                : lists.size() > 1 ? fmt::format("no pass's program has an active uniform '{}'", s.name)
+                                   : fmt::format("the program has no active uniform '{}'", s.name);
+            if (s.where.line == 0) return error_at(s.where, missing + hint);  // typed for this render
+            warnings.push_back(Diagnostic{s.where.file, s.where.line,
+                                          missing + ": the entry is ignored, as GL ignores glUniform at location -1" +
+                                              hint,
+                                          true});
+        }
+        return Ok{};
+    };
+    if (Status st = check(scene.uniforms, std::nullopt); !st) return st.error();
+    for (const Object& o : scene.objects)
+        if (Status st = check(o.uniforms, std::nullopt); !st) return st.error();
+    for (size_t i = 0; i < scene.passes.size(); ++i)
+        if (Status st = check(scene.passes[i].uniforms, i); !st) return st.error();
+    return warnings;
+}
+
+}  // namespace
+
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
     return compile(main, scene, state_of(main).options);
 }
@@ -228,34 +275,13 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, 
         programs.own_.push_back(std::make_shared<Program>(std::move(*program)));
         programs.by_pass_.push_back(programs.own_.back().get());
     }
+    auto warnings = unused_uniform_warnings(programs, scene);
+    if (!warnings) return warnings.error();
+    programs.warnings_ = std::move(*warnings);
     return programs;
 }
 
 namespace {
-
-// With passes, a scene or object uniform goes to the programs that declare
-// it; one that none declares is a mistake in the file.
-Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scene) {
-    std::vector<std::vector<UniformInfo>> infos;
-    for (size_t i = 0; i < programs.size(); ++i) infos.push_back(programs.of_pass(i).uniforms());
-    auto check = [&](const std::vector<UniformSetting>& settings) -> Status {
-        for (const UniformSetting& s : settings) {
-            bool found = false;
-            for (const auto& list : infos) found = found || find_declaration(list, s.name);
-            if (!found) {
-                std::vector<const std::vector<UniformInfo>*> lists;
-                for (const auto& list : infos) lists.push_back(&list);
-                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}'{}", s.name,
-                                                     no_uniform_hint(lists, s.name)));
-            }
-        }
-        return Ok{};
-    };
-    if (Status st = check(scene.uniforms); !st) return st;
-    for (const Object& o : scene.objects)
-        if (Status st = check(o.uniforms); !st) return st;
-    return Ok{};
-}
 
 // The mesh's arrays, and for each [current] value the mesh has no array of,
 // that value at every vertex: what GL's current attribute gives the shader.
@@ -278,10 +304,12 @@ std::vector<VertexAttrib> attribs_with_current(const Scene& scene, const Mesh& m
 Result<DrawStats> draw_pass(const ScenePrograms& programs, size_t index, const Scene& scene, GLState& bound,
                             const Pass* pass, Framebuffer& fb, ClearValues& pending) {
     Program& program = programs.of_pass(index);
-    const bool lenient = pass != nullptr;
+    // An entry that no program uses is ignored, as GL ignores glUniform at location -1
+    // (ScenePrograms::warnings names it); each program takes the entries it has.
+    const bool lenient = true;
     if (Status st = apply_uniforms(program, scene.uniforms, lenient); !st) return st.error();
     if (pass)
-        if (Status st = apply_uniforms(program, pass->uniforms); !st) return st.error();
+        if (Status st = apply_uniforms(program, pass->uniforms, lenient); !st) return st.error();
     DrawStats total;
     // The program's uniforms, listed once for all its objects: a list of
     // strings made and freed per object was most of a small draw's CPU time
@@ -430,8 +458,6 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
                               ClearValues& pending) {
     RenderCount count(programs);
     if (Status st = check_gl_copies(scene); !st) return st.error();
-    if (!scene.passes.empty())
-        if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
     // (the scene's own textures through the programs' GPU-mipmapped copies)

@@ -138,6 +138,7 @@ std::string ServeSession::render_json() {
     prog->exec.set_time_limit(options_.time_limit);
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return failed(programs.error());
+    warnings.insert(warnings.end(), programs->warnings().begin(), programs->warnings().end());
     const double compile_ms = ms_since(start);
     auto fb = Framebuffer::create(scene->width, scene->height, false, scene::color_buffers(*scene));
     if (!fb) return failed(fb.error());
