@@ -175,6 +175,14 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     // A pass with a camera of its own keeps its projection; the others draw with the scene's.
     if (!(pass && pass->own_projection)) gl.projection = scene.projection;
     gl.lights = eye_space_lights(scene);
+    // The texgen planes and environment colours that shaders read as built-ins.
+    for (size_t unit = 0; unit < 8; ++unit) {
+        gl.texture_env_color[unit] = scene.fixed.texture_env[unit].color;
+        for (size_t c = 0; c < 4; ++c) {
+            gl.object_planes[unit][c] = scene.fixed.texture_gen[unit][c].object_plane;
+            gl.eye_planes[unit][c] = scene.fixed.texture_gen[unit][c].eye_plane;
+        }
+    }
     if (object.front_material) gl.front_material = *object.front_material;
     if (object.back_material) gl.back_material = *object.back_material;
     if (object.color) gl.current_color = *object.color;
@@ -185,7 +193,6 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
 std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options);
 Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
                                     const Pass& pass);
-Status check_fixed_state_builtins(const Program& program, const Scene& scene);
 
 namespace {
 
@@ -242,7 +249,6 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, 
     ScenePrograms programs;
     programs.fixed_ = make_fixed_function_programs(options);
     programs.gpu_mipmaps_ = std::make_shared<GpuMipmaps>();
-    if (Status st = check_fixed_state_builtins(main, scene); !st) return st.error();
     if (scene.passes.empty()) programs.by_pass_.push_back(&main);
     for (const Pass& pass : scene.passes) {
         if (pass.fixed_function) {
@@ -268,9 +274,6 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, 
             for (const Diagnostic& d : program.error().diagnostics) e.diagnostics.push_back(d);
             return e;
         }
-        if (Status st = check_fixed_state_builtins(*program, scene); !st)
-            return Error(fmt::format("pass '{}': {}", pass.name, st.error().diagnostics[0].message), pass.where.file,
-                         pass.where.line);
         program->exec = main.exec;
         programs.own_.push_back(std::make_shared<Program>(std::move(*program)));
         programs.by_pass_.push_back(programs.own_.back().get());
