@@ -86,8 +86,11 @@ Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const 
         st = program.set_uniform(s.name, floats);
     }
     if (!st) {
+        // The declaration beside set_uniform's count: what the entry must give.
         std::string why = st.error().diagnostics.empty() ? "rejected" : st.error().diagnostics[0].message;
-        return error_at(s.where, why);
+        return error_at(s.where, fmt::format("{} (the program declares 'uniform {} {}{}')", why, info->type,
+                                             info->name, info->array_size > 1 ? fmt::format("[{}]", info->array_size)
+                                                                              : ""));
     }
     return Ok{};
 }
