@@ -91,6 +91,9 @@ printf '[output]\nsize = [8, 8]\n[uniforms]\nbaseColor = [1, 0, 0]\nbasecolour =
 "$glslrun" "$vs" base.frag unused.toml -o unused.png 2>err.txt || fail "an unused [uniforms] entry: $(cat err.txt)"
 grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour': the entry is ignored, as GL ignores glUniform at location -1; did you mean 'baseColor'?" err.txt ||
     fail "an unused [uniforms] entry's warning: $(cat err.txt)"
+"$glslrun" trace --pixel 4,4 "$vs" base.frag unused.toml >/dev/null 2>err.txt || fail "trace, unused entry: $(cat err.txt)"
+grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour'" err.txt ||
+    fail "trace does not warn of an unused [uniforms] entry: $(cat err.txt)"
 
 # ---- .glsl and --stage, glslrun check, the pass-through vertex shader.
 cp "$fs" plain.glsl
