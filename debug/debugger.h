@@ -153,6 +153,9 @@ struct NanFinding {
 struct NanReport {
     std::optional<NanFinding> nan;
     std::optional<NanFinding> out_of_range;  // the first colour output outside [0,1], when asked
+    // The generated fixed-function stages a finding is in, so that the text
+    // says the NaN comes from GL's fixed function and not the user's file.
+    std::vector<GeneratedStage> generated;
 };
 
 // Renders the scene (one thread) and finds the first invocation, in draw and

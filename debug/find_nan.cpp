@@ -141,6 +141,12 @@ Result<NanReport> find_nan(Program& program, const Program& debug, const scene::
     NanProbe probe(colour_range);
     if (Status st = render_with_probe(program, debug, "", scene, fb, probe); !st) return st.error();
     if (probe.stopped && !probe.report.nan) return *probe.stopped;
+    auto in_stage = [](const std::optional<NanFinding>& f, const GeneratedStage& g) {
+        return f && f->event.where.starts_with(g.name + ":");
+    };
+    for (const GeneratedStage& g : probe.generated)
+        if (in_stage(probe.report.nan, g) || in_stage(probe.report.out_of_range, g))
+            probe.report.generated.push_back(g);
     return std::move(probe.report);
 }
 

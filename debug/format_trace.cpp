@@ -332,6 +332,7 @@ std::string format_text(const NanReport& r) {
     std::string out = r.nan ? finding("first NaN/Inf", *r.nan) : "no NaN or infinity in any invocation (operations that GLSL leaves undefined, such as pow(x, y) "
                                   "with x < 0, can still return garbage on a GPU: try --check-undefined)\n";
     if (r.out_of_range) out += finding("first colour outside [0,1]", *r.out_of_range);
+    if (!r.generated.empty()) out += "\n" + describe_generated(r.generated);
     return out;
 }
 

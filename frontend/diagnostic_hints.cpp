@@ -315,6 +315,33 @@ bool explain_array_sampler(Diagnostic& d, const std::string& source) {
     return false;
 }
 
+// glslang says only "'constructor' : not enough data provided for
+// construction" (or "too many arguments") for `vec4(1, 0, 0)`: name the
+// type the line constructs and what it needs.
+void explain_constructor(Diagnostic& d, const std::string& source) {
+    const bool too_few = d.message.find("not enough data provided for construction") != std::string::npos;
+    const bool too_many = d.message.find("'constructor' : too many arguments") != std::string::npos;
+    if (!too_few && !too_many) return;
+    std::vector<std::string> lines = split_lines(source);
+    if (d.line < 1 || d.line > int(lines.size())) return;
+    const std::string line = strip_line_comment(lines[size_t(d.line - 1)]);
+    std::vector<std::pair<std::string, int>> types;  // the constructors on the line, with their component counts
+    for (const char* prefix : {"vec", "ivec", "bvec", "mat"})
+        for (int n = 2; n <= 4; ++n) {
+            std::string type = fmt::format("{}{}", prefix, n);
+            if (line_has_word(line, type)) types.emplace_back(type, prefix == std::string_view("mat") ? n * n : n);
+        }
+    if (types.size() != 1) {
+        d.message += too_few ? " (a constructor needs as many components as its type has, or a single scalar)"
+                             : " (a constructor takes at most as many components as its type has)";
+        return;
+    }
+    const auto& [type, components] = types[0];
+    d.message += too_few ? fmt::format(" ({} takes {} components, or one scalar for all of them: the arguments give "
+                                       "fewer)", type, components)
+                         : fmt::format(" ({} takes {} components: the arguments give more)", type, components);
+}
+
 }  // namespace
 
 void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource& source) {
@@ -333,6 +360,8 @@ void add_hints(std::vector<Diagnostic>& diags, size_t first, const ShaderSource&
             explain_int_float_operands(d);
         } else if (m.find("cannot convert") != std::string::npos && mixes_int_and_float(m)) {
             d.message += kNoImplicitConversion;
+        } else if (m.rfind("'constructor' : ", 0) == 0) {
+            explain_constructor(d, source.text);
         } else if (m.find("expecting COMMA or SEMICOLON") != std::string::npos ||
                    m.find("expecting SEMICOLON") != std::string::npos) {
             explain_missing_semicolon(d, source.text);

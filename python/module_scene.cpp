@@ -133,6 +133,24 @@ ExecOptions exec_options(unsigned threads, const std::string& precision, const s
 // The variable a uniform name sets: "arr" for "arr[2]", "s" for "s.f".
 std::string_view variable_of(std::string_view name) { return name.substr(0, name.find_first_of("[.")); }
 
+// render_image, but the [uniforms] entries that no program uses, which the
+// render skips as GL does, are raised as RuntimeWarning afterwards (the
+// command line prints them), with the GIL held.
+scene::Image render_warning(Program& program, const scene::Scene& scene, double time_limit) {
+    std::vector<Diagnostic> warnings;
+    scene::Image image;
+    run_interruptibly(program.exec, time_limit, [&] {
+        scene::ScenePrograms programs = take(scene::ScenePrograms::compile(program, scene));
+        warnings = programs.warnings();
+        Framebuffer fb = take(Framebuffer::create(scene.width, scene.height, false, scene::color_buffers(scene)));
+        take(scene::render_scene(programs, scene, fb));
+        image = scene::read_framebuffer(fb);
+    });
+    for (const Diagnostic& w : warnings)
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, w.str().c_str(), 1) < 0) throw py::error_already_set();
+    return image;
+}
+
 // Whether the scene sets anything of what `settings` set: only then must the
 // settings be applied again after the scene's (a copy per render; a scene
 // with passes always, since its passes' own programs need them too).
@@ -165,10 +183,7 @@ py::array_t<uint8_t> render_program(PyProgram& program, const scene::Scene& scen
         overridden = scene;
         scene::override_uniforms(*overridden, settings);
     }
-    scene::Image image;
-    run_interruptibly(program.exec, time_limit,
-                      [&] { image = take(scene::render_image(program, overridden ? *overridden : scene)); });
-    return to_array(image);
+    return to_array(render_warning(program, overridden ? *overridden : scene, time_limit));
 }
 
 // "key value" lines (scene::format_error_keys) as a dict; numbers as numbers.
@@ -367,9 +382,7 @@ void bind_scene(py::module_& m) {
             Program program = take(fixed ? scene::unused_main_program()
                                          : scene::compile_files(files.vertex, files.fragment, compile));
             program.exec = exec;
-            scene::Image image;
-            run_interruptibly(program.exec, time_limit, [&] { image = take(scene::render_image(program, scene)); });
-            return to_array(image);
+            return to_array(render_warning(program, scene, time_limit));
         },
         py::arg("vertex") = py::none(), py::arg("fragment") = py::none(), py::arg("scene") = py::none(), py::arg("threads") = 0,
         py::arg("precision") = "precise", py::kw_only(), py::arg("uniforms") = py::none(), py::arg("backend") = "auto",

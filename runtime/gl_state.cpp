@@ -159,16 +159,25 @@ void emit_fixed_defaults(const Emit& emit, const Wants& wants, const GLState& gl
     }
     emit_vec(emit, "gl_LightModel.ambient", gl.light_model_ambient);
     if (wants.name("gl_TextureEnvColor")) {
-        std::vector<float> zeros(kMaxUnits * 4, 0.0f);
-        emit("gl_TextureEnvColor", zeros.data(), zeros.size());
+        // glslang may size the array beyond GLState's 8 units: those keep GL's default, zero.
+        std::vector<float> words(kMaxUnits * 4, 0.0f);
+        std::memcpy(words.data(), &gl.texture_env_color[0][0], sizeof gl.texture_env_color);
+        emit("gl_TextureEnvColor", words.data(), words.size());
     }
-    const glm::vec4 planes[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
     const char* coord = "STRQ";
     for (int c = 0; c < 4 && (wants.prefix("gl_EyePlane") || wants.prefix("gl_ObjectPlane")); ++c) {
-        std::vector<float> words;
-        for (int unit = 0; unit < kMaxUnits; ++unit) words.insert(words.end(), &planes[c][0], &planes[c][0] + 4);
-        emit(fmt::format("gl_EyePlane{}", coord[c]), words.data(), words.size());
-        emit(fmt::format("gl_ObjectPlane{}", coord[c]), words.data(), words.size());
+        const std::array<std::array<glm::vec4, 4>, 8> defaults = GLState::default_texgen_planes();
+        auto planes = [&](const std::array<std::array<glm::vec4, 4>, 8>& units) {
+            std::vector<float> words;
+            for (int unit = 0; unit < kMaxUnits; ++unit) {
+                const glm::vec4& p = unit < 8 ? units[size_t(unit)][size_t(c)] : defaults[0][size_t(c)];
+                words.insert(words.end(), &p[0], &p[0] + 4);
+            }
+            return words;
+        };
+        std::vector<float> eye = planes(gl.eye_planes), object = planes(gl.object_planes);
+        emit(fmt::format("gl_EyePlane{}", coord[c]), eye.data(), eye.size());
+        emit(fmt::format("gl_ObjectPlane{}", coord[c]), object.data(), object.size());
     }
     if (!wants.prefix("gl_Fog.")) return;
     emit_vec(emit, "gl_Fog.color", gl.fog.color);

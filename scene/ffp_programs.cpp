@@ -137,33 +137,6 @@ Result<Program*> ScenePrograms::for_draw(size_t pass, const Scene& scene, GLStat
     return &drawn;
 }
 
-// gl_TextureEnvColor, gl_EyePlane* and gl_ObjectPlane* keep GL's defaults
-// in a shader (GLState has no such state); a shader that reads one the scene
-// sets would silently see another value than GL's, so it is refused.
-Status check_fixed_state_builtins(const Program& program, const Scene& scene) {
-    const FixedFunction& f = scene.fixed;
-    const FixedFunction defaults;
-    auto sets = [&](std::string_view name) {
-        for (int u = 0; u < 8; ++u) {
-            if (name == "gl_TextureEnvColor" && f.texture_env[size_t(u)].color != defaults.texture_env[0].color)
-                return true;
-            for (int c = 0; c < 4; ++c) {
-                const TexGen &g = f.texture_gen[size_t(u)][size_t(c)], &d = defaults.texture_gen[size_t(u)][size_t(c)];
-                if (name == fmt::format("gl_EyePlane{}", "STRQ"[c]) && g.eye_plane != d.eye_plane) return true;
-                if (name == fmt::format("gl_ObjectPlane{}", "STRQ"[c]) && g.object_plane != d.object_plane) return true;
-            }
-        }
-        return false;
-    };
-    for (const UniformInfo& u : program.uniforms())
-        if (u.builtin && u.read && sets(u.name))
-            return Error(fmt::format("the program reads {}, which the scene sets for fixed function "
-                                     "([texture_env.N] color, [texture_gen.N] planes); glslrun gives shaders GL's "
-                                     "default value of it, so this program would not see the scene's: not supported",
-                                     u.name));
-    return Ok{};
-}
-
 // A `program = "fixed"` pass's program: the stages generated for the pass's state.
 Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
                                     const Pass& pass) {

@@ -86,8 +86,11 @@ Status apply_one(Program& program, const std::vector<UniformInfo>& infos, const 
         st = program.set_uniform(s.name, floats);
     }
     if (!st) {
+        // The declaration beside set_uniform's count: what the entry must give.
         std::string why = st.error().diagnostics.empty() ? "rejected" : st.error().diagnostics[0].message;
-        return error_at(s.where, why);
+        return error_at(s.where, fmt::format("{} (the program declares 'uniform {} {}{}')", why, info->type,
+                                             info->name, info->array_size > 1 ? fmt::format("[{}]", info->array_size)
+                                                                              : ""));
     }
     return Ok{};
 }
@@ -175,6 +178,14 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
     // A pass with a camera of its own keeps its projection; the others draw with the scene's.
     if (!(pass && pass->own_projection)) gl.projection = scene.projection;
     gl.lights = eye_space_lights(scene);
+    // The texgen planes and environment colours that shaders read as built-ins.
+    for (size_t unit = 0; unit < 8; ++unit) {
+        gl.texture_env_color[unit] = scene.fixed.texture_env[unit].color;
+        for (size_t c = 0; c < 4; ++c) {
+            gl.object_planes[unit][c] = scene.fixed.texture_gen[unit][c].object_plane;
+            gl.eye_planes[unit][c] = scene.fixed.texture_gen[unit][c].eye_plane;
+        }
+    }
     if (object.front_material) gl.front_material = *object.front_material;
     if (object.back_material) gl.back_material = *object.back_material;
     if (object.color) gl.current_color = *object.color;
@@ -185,7 +196,53 @@ GLState object_gl_state(const Scene& scene, const GLState& bound, const Object& 
 std::shared_ptr<FixedFunctionPrograms> make_fixed_function_programs(const CompileOptions& options);
 Result<Program*> fixed_pass_program(const std::shared_ptr<FixedFunctionPrograms>& cache, const Scene& scene,
                                     const Pass& pass);
-Status check_fixed_state_builtins(const Program& program, const Scene& scene);
+
+namespace {
+
+// The scene's, objects' and passes' uniform entries that no program they go
+// to has as an active uniform: GL ignores glUniform at location -1, so they
+// are warnings (with the nearest name the programs have), not errors. One
+// with no line, from the command line (--uniform) or code (Python's
+// uniforms=), was typed for this render: an error.
+Result<std::vector<Diagnostic>> unused_uniform_warnings(const ScenePrograms& programs, const Scene& scene) {
+    std::vector<std::vector<UniformInfo>> infos;
+    for (size_t i = 0; i < programs.size(); ++i) infos.push_back(programs.of_pass(i).uniforms());
+    std::vector<Diagnostic> warnings;
+    auto check = [&](const std::vector<UniformSetting>& settings, std::optional<size_t> pass) -> Status {
+        std::vector<const std::vector<UniformInfo>*> lists;
+        for (size_t i = 0; i < infos.size(); ++i)
+            if (!pass || *pass == i) lists.push_back(&infos[i]);
+        for (const UniformSetting& s : settings) {
+            bool found = false;
+            for (const auto* list : lists) found = found || find_declaration(*list, s.name);
+            if (found) continue;
+            const bool all_fixed = !scene.passes.empty() && std::all_of(scene.passes.begin(), scene.passes.end(),
+                                                                         [](const Pass& p) { return p.fixed_function; });
+            const std::string hint =
+                all_fixed ? " (every draw is GL's fixed function, which has no uniforms of its own)"
+                          : no_uniform_hint(lists, s.name);
+            const std::string missing =
+                pass ? fmt::format("pass '{}': its program has no active uniform '{}'", scene.passes[*pass].name,
+                                   s.name)
+                : lists.size() > 1 ? fmt::format("no pass's program has an active uniform '{}'", s.name)
+                                   : fmt::format("the program has no active uniform '{}'", s.name);
+            if (s.where.line == 0) return error_at(s.where, missing + hint);  // typed for this render
+            warnings.push_back(Diagnostic{s.where.file, s.where.line,
+                                          missing + ": the entry is ignored, as GL ignores glUniform at location -1" +
+                                              hint,
+                                          true});
+        }
+        return Ok{};
+    };
+    if (Status st = check(scene.uniforms, std::nullopt); !st) return st.error();
+    for (const Object& o : scene.objects)
+        if (Status st = check(o.uniforms, std::nullopt); !st) return st.error();
+    for (size_t i = 0; i < scene.passes.size(); ++i)
+        if (Status st = check(scene.passes[i].uniforms, i); !st) return st.error();
+    return warnings;
+}
+
+}  // namespace
 
 Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene) {
     return compile(main, scene, state_of(main).options);
@@ -195,7 +252,6 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, 
     ScenePrograms programs;
     programs.fixed_ = make_fixed_function_programs(options);
     programs.gpu_mipmaps_ = std::make_shared<GpuMipmaps>();
-    if (Status st = check_fixed_state_builtins(main, scene); !st) return st.error();
     if (scene.passes.empty()) programs.by_pass_.push_back(&main);
     for (const Pass& pass : scene.passes) {
         if (pass.fixed_function) {
@@ -221,41 +277,17 @@ Result<ScenePrograms> ScenePrograms::compile(Program& main, const Scene& scene, 
             for (const Diagnostic& d : program.error().diagnostics) e.diagnostics.push_back(d);
             return e;
         }
-        if (Status st = check_fixed_state_builtins(*program, scene); !st)
-            return Error(fmt::format("pass '{}': {}", pass.name, st.error().diagnostics[0].message), pass.where.file,
-                         pass.where.line);
         program->exec = main.exec;
         programs.own_.push_back(std::make_shared<Program>(std::move(*program)));
         programs.by_pass_.push_back(programs.own_.back().get());
     }
+    auto warnings = unused_uniform_warnings(programs, scene);
+    if (!warnings) return warnings.error();
+    programs.warnings_ = std::move(*warnings);
     return programs;
 }
 
 namespace {
-
-// With passes, a scene or object uniform goes to the programs that declare
-// it; one that none declares is a mistake in the file.
-Status check_declared_somewhere(const ScenePrograms& programs, const Scene& scene) {
-    std::vector<std::vector<UniformInfo>> infos;
-    for (size_t i = 0; i < programs.size(); ++i) infos.push_back(programs.of_pass(i).uniforms());
-    auto check = [&](const std::vector<UniformSetting>& settings) -> Status {
-        for (const UniformSetting& s : settings) {
-            bool found = false;
-            for (const auto& list : infos) found = found || find_declaration(list, s.name);
-            if (!found) {
-                std::vector<const std::vector<UniformInfo>*> lists;
-                for (const auto& list : infos) lists.push_back(&list);
-                return error_at(s.where, fmt::format("no pass's program has an active uniform '{}'{}", s.name,
-                                                     no_uniform_hint(lists, s.name)));
-            }
-        }
-        return Ok{};
-    };
-    if (Status st = check(scene.uniforms); !st) return st;
-    for (const Object& o : scene.objects)
-        if (Status st = check(o.uniforms); !st) return st;
-    return Ok{};
-}
 
 // The mesh's arrays, and for each [current] value the mesh has no array of,
 // that value at every vertex: what GL's current attribute gives the shader.
@@ -278,10 +310,12 @@ std::vector<VertexAttrib> attribs_with_current(const Scene& scene, const Mesh& m
 Result<DrawStats> draw_pass(const ScenePrograms& programs, size_t index, const Scene& scene, GLState& bound,
                             const Pass* pass, Framebuffer& fb, ClearValues& pending) {
     Program& program = programs.of_pass(index);
-    const bool lenient = pass != nullptr;
+    // An entry that no program uses is ignored, as GL ignores glUniform at location -1
+    // (ScenePrograms::warnings names it); each program takes the entries it has.
+    const bool lenient = true;
     if (Status st = apply_uniforms(program, scene.uniforms, lenient); !st) return st.error();
     if (pass)
-        if (Status st = apply_uniforms(program, pass->uniforms); !st) return st.error();
+        if (Status st = apply_uniforms(program, pass->uniforms, lenient); !st) return st.error();
     DrawStats total;
     // The program's uniforms, listed once for all its objects: a list of
     // strings made and freed per object was most of a small draw's CPU time
@@ -430,8 +464,6 @@ Result<DrawStats> draw_passes(const ScenePrograms& programs, const Scene& scene,
                               ClearValues& pending) {
     RenderCount count(programs);
     if (Status st = check_gl_copies(scene); !st) return st.error();
-    if (!scene.passes.empty())
-        if (Status st = check_declared_somewhere(programs, scene); !st) return st.error();
     // glActiveTexture + glBindTexture per [textures.N], once: texture
     // bindings are context state that every object's draw sees.
     // (the scene's own textures through the programs' GPU-mipmapped copies)

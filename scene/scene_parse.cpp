@@ -87,6 +87,25 @@ Scene build_scene(const toml::table& root, const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// toml++'s "Error while parsing array: expected comma or closing ']', saw '0'"
+// after "scene.toml:3: error:" reads as two errors and says not where on the
+// line: "TOML syntax error at column 20 (in an array): expected comma ...".
+std::string toml_syntax_message(const toml::parse_error& e) {
+    std::string what(e.description()), context;
+    constexpr std::string_view kPrefix = "Error while parsing ";
+    if (size_t colon = what.find(": "); what.starts_with(kPrefix) && colon != std::string::npos) {
+        std::string noun = what.substr(kPrefix.size(), colon - kPrefix.size());
+        const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun[0]) != std::string_view::npos;
+        context = fmt::format(" (in {} {})", vowel ? "an" : "a", noun);
+        what = what.substr(colon + 2);
+    }
+    return fmt::format("TOML syntax error at column {}{}: {}", e.source().begin.column, context, what);
+}
+
+}  // namespace
+
 Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
     if (toml_text.size() > uint64_t(kMaxSceneFileBytes))
         return Error(fmt::format("a scene is {} bytes; the limit is {} MiB (its TOML tree takes about 45 bytes per "
@@ -96,7 +115,7 @@ Result<Scene> parse_scene(std::string_view toml_text, const std::string& path) {
         toml::table root = toml::parse(toml_text, path);
         return build_scene(root, path);
     } catch (const toml::parse_error& e) {
-        return Error(std::string(e.description()), path, int(e.source().begin.line));
+        return Error(toml_syntax_message(e), path, int(e.source().begin.line));
     } catch (const detail::SceneFailure& f) {
         return f.error;
     } catch (const std::bad_alloc&) {
@@ -136,7 +155,7 @@ Status update_scene_state(Scene& scene, std::string_view toml_text, const std::s
         derive_eye_space_lights(scene);
         return Ok{};
     } catch (const toml::parse_error& e) {
-        return Error(std::string(e.description()), what, int(e.source().begin.line));
+        return Error(toml_syntax_message(e), what, int(e.source().begin.line));
     } catch (const detail::SceneFailure& f) {
         restore();
         return f.error;

@@ -514,6 +514,20 @@ struct GLState {
     bool polygon_stipple = false;
     std::array<uint32_t, 32> polygon_stipple_pattern = filled_stipple();
     struct Fog { glm::vec4 color{0, 0, 0, 0}; float density = 1, start = 0, end = 1; } fog;
+    // glTexGen's GL_OBJECT_PLANE and GL_EYE_PLANE per texture unit and
+    // coordinate (s, t, r, q), the eye plane as glTexGen stores it (the given
+    // plane times the inverse of the modelview at that call, GL 2.1 §2.12.4),
+    // and glTexEnv's GL_TEXTURE_ENV_COLOR per unit: the values of
+    // gl_ObjectPlaneS..Q[], gl_EyePlaneS..Q[] and gl_TextureEnvColor[]. GL's
+    // defaults: s (1, 0, 0, 0), t (0, 1, 0, 0), r, q and the colour zero.
+    static std::array<std::array<glm::vec4, 4>, 8> default_texgen_planes() {
+        std::array<std::array<glm::vec4, 4>, 8> units{};
+        for (auto& coords : units) coords = {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0), glm::vec4(0)};
+        return units;
+    }
+    std::array<std::array<glm::vec4, 4>, 8> object_planes = default_texgen_planes();
+    std::array<std::array<glm::vec4, 4>, 8> eye_planes = default_texgen_planes();
+    std::array<glm::vec4, 8> texture_env_color{};
     bool light_model_local_viewer = false, light_model_two_side = false;  // fixed function only
     glm::vec4 current_color{1, 1, 1, 1};     // glColor, for gl_Color without an array
     glm::vec4 current_secondary_color{0, 0, 0, 1};

@@ -119,3 +119,17 @@ def test_batch_inputs_are_checked():
     np.testing.assert_allclose(out["gl_FragColor"], 0.5)
     out = program.run_vertices({"gl_Vertex": vertices, "weight": np.arange(4)})
     np.testing.assert_allclose(out["v"][:, 0], [0, 1, 2, 3])
+
+
+def test_a_scene_uniform_that_no_program_uses_is_a_warning(tmp_path):
+    # GL ignores glUniform at location -1: the scene renders; the entry's line and the name meant are named.
+    text = SCENE.replace("tint = [0.5, 0.5, 0.5, 1]\n", "tint = [0.5, 0.5, 0.5, 1]\ntnit = [1, 0, 0, 1]\n")
+    program = glslrun.Program.compile(VS, FS)
+    meant = r":6: warning: the program has no active uniform 'tnit'.*did you mean 'tint'\?"
+    with pytest.warns(RuntimeWarning, match=meant):
+        assert centre(program.render(glslrun.Scene.parse(text))) == (128, 128, 128, 255)
+    for name, source in (("a.vert", VS), ("a.frag", FS), ("s.toml", text)):
+        (tmp_path / name).write_text(source)
+    with pytest.warns(RuntimeWarning, match=meant):
+        image = glslrun.render(*(str(tmp_path / n) for n in ("a.vert", "a.frag", "s.toml")))
+    assert centre(image) == (128, 128, 128, 255)

@@ -74,6 +74,9 @@ for word in "glslrun trace" "glslrun batch" "glslrun check" "glslrun test" "--qu
 done
 expect 2 "did you mean 'glslrun trace'?" "$glslrun" trac
 expect 2 "did you mean 'glslrun batch'?" "$glslrun" bach
+# A misspelt option names the one meant (CLI11 alone says "was not expected").
+expect 2 "glslrun: error: unknown option '--treads'; did you mean '--threads'?" "$glslrun" "$vs" "$fs" "$scene" --treads 2
+expect 2 "unknown option '--pixle'; did you mean '--pixel'?" "$glslrun" trace --pixle=1,1 "$vs" "$fs" "$scene"
 printf 'uniform vec3 baseColor;\nvoid main() { gl_FragColor = vec4(baseColor, 1.0); }\n' > base.frag
 expect 1 "did you mean 'baseColor'?" "$glslrun" "$vs" base.frag "$scene" --size 8x8 --uniform basecolor=1,0,0 -o u.png
 "$glslrun" "$vs" base.frag "$scene" --size 8x8 --uniform baseColor=1,0,0 -o list.png 2>err.txt ||
@@ -82,6 +85,15 @@ expect 1 "did you mean 'baseColor'?" "$glslrun" "$vs" base.frag "$scene" --size 
 same list.png array.png "--uniform 1,0,0 and [1, 0, 0] differ"
 expect 2 "is not a value" "$glslrun" "$vs" base.frag "$scene" --uniform 'baseColor=1,,0'
 grep -qi "toml\|expected" err.txt && fail "--uniform's message is toml++'s: $(cat err.txt)"
+# A [uniforms] entry no program has is what GL ignores (location -1): the scene renders, with a warning at
+# the entry's line naming the uniform the program does have.
+printf '[output]\nsize = [8, 8]\n[uniforms]\nbaseColor = [1, 0, 0]\nbasecolour = [0, 1, 0]\n[[objects]]\nmesh = "quad"\n' > unused.toml
+"$glslrun" "$vs" base.frag unused.toml -o unused.png 2>err.txt || fail "an unused [uniforms] entry: $(cat err.txt)"
+grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour': the entry is ignored, as GL ignores glUniform at location -1; did you mean 'baseColor'?" err.txt ||
+    fail "an unused [uniforms] entry's warning: $(cat err.txt)"
+"$glslrun" trace --pixel 4,4 "$vs" base.frag unused.toml >/dev/null 2>err.txt || fail "trace, unused entry: $(cat err.txt)"
+grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour'" err.txt ||
+    fail "trace does not warn of an unused [uniforms] entry: $(cat err.txt)"
 
 # ---- .glsl and --stage, glslrun check, the pass-through vertex shader.
 cp "$fs" plain.glsl

@@ -213,6 +213,23 @@ def test_http(src, glslrun, out):
     check("error" not in t and any(s.get("where", "").startswith("(generated) fixed-function-1.frag:")
                                    for s in t["fragments"][0]["trace"]["steps"]), f"vertex alone: {t}")
     alone.stop()
+    # No shader at all: every draw is GL's fixed function, rendered, traced and searched for NaNs in the
+    # generated stages; the heat map, which measures the user's shaders, says why there is none.
+    fixed = Server(glslrun, [f"{src}/scenes/fixed_function.toml"], out)
+    r = fixed.json("POST", "/api/render", b"")
+    check(r["ok"] and r["width"] > 0, f"no shader: {r}")
+    check([f["kind"] for f in fixed.json("GET", "/api/files")["files"]] == ["scene"], "no shader: the files")
+    t = fixed.json("GET", f"/api/trace?x={r['width'] // 2}&y={r['height'] // 2}")
+    check("error" not in t and t["fragments"] and all(f["matches_render"] for f in t["fragments"]),
+          f"no shader, trace: {t}")
+    check({g["name"] for g in t["generated"]} >= {"(generated) fixed-function-1.vert",
+                                                    "(generated) fixed-function-1.frag"},
+          f"no shader, generated stages: {t['generated']}")
+    n = fixed.json("GET", "/api/findings")
+    check("error" not in n and "no NaN or infinity" in n["summary"], f"no shader, findings: {n}")
+    h = fixed.json("GET", "/api/heat")
+    check("fixed function" in h.get("error", ""), f"no shader, heat map: {h}")
+    fixed.stop()
     res = subprocess.run([glslrun, "serve", files[0]], capture_output=True, text=True, timeout=30)
     check(res.returncode == 2 and "serve needs" in res.stderr, f"no scene: {res.returncode} {res.stderr}")
     print("serve over HTTP: page files only, Host/Origin checked, errors at their lines, time limit, clean stop")

@@ -149,6 +149,27 @@ grep -q "(pass 'ffp', program (generated) fixed-function-1.vert + (generated) fi
 grep -q "(pass 'mine', program .*spot_pix_oops.vert + .*spot_pix_oops.frag)" "$tmp/beside-48,16.txt" || fail "beside: the shaded pass"
 "$glslrun" trace --find-nan "$src/shaders/minimal.frag" "$scene" --size 64x64 >"$tmp/alone-nan.txt" ||
     fail "--find-nan of minimal.frag alone exited with $?"
+# A NaN made by a generated stage (GL_NORMALIZE of a zero normal) is said to be in GL's fixed function,
+# not in the user's file.
+cat >"$tmp/zero_normal.toml" <<'TOML'
+[output]
+size = [16, 16]
+[fixed_function]
+lighting = true
+normalize = true
+[current]
+normal = [0, 0, 0]
+[[objects]]
+mesh = "arrays"
+primitive = "triangles"
+vertices = [[-1, -1], [1, -1], [0, 1]]
+TOML
+"$glslrun" trace --find-nan "$src/shaders/minimal.frag" "$tmp/zero_normal.toml" >"$tmp/ffp-nan.txt" ||
+    fail "--find-nan in a generated stage exited with $?"
+grep -q "^first NaN/Inf: vertex 0 of draw 0: (generated) fixed-function-1.vert:[0-9]*: " "$tmp/ffp-nan.txt" ||
+    fail "--find-nan in a generated stage: $(cat "$tmp/ffp-nan.txt")"
+grep -q "^(generated) fixed-function-1.vert is GL's fixed-function vertex stage, generated " "$tmp/ffp-nan.txt" ||
+    fail "--find-nan in a generated stage does not say it is generated: $(cat "$tmp/ffp-nan.txt")"
 
 # The replay equals the render whatever the mode, size and program (a loop and calls in multi_light).
 for mode in precise fast reference; do

@@ -80,6 +80,15 @@ TEST_CASE("lecture typo: intensity > 0") {
     CHECK_THAT(err, Catch::StartsWith("t.vert:12: error: '>' : no operator float > int exists"));
 }
 
+TEST_CASE("a constructor given too few or too many components names its type") {
+    CHECK_THAT(compile_error(kPassVs, "void main() {\n gl_FragColor = vec4(1.0, 0.0, 0.0);\n}\n"),
+               Catch::StartsWith("t.frag:2: error: 'constructor' : not enough data provided for construction (vec4 "
+                                 "takes 4 components, or one scalar for all of them: the arguments give fewer)\n"));
+    CHECK_THAT(compile_error(kPassVs, "void main() {\n vec2 v = vec2(1.0, 2.0, 3.0);\n gl_FragColor = vec4(v, v);\n}\n"),
+               Catch::StartsWith("t.frag:2: error: 'constructor' : too many arguments (vec2 takes 2 components: "
+                                 "the arguments give more)"));
+}
+
 TEST_CASE("diagnostics name the right unit when a stage has several") {
     CompileOptions opt;
     auto r = frontend::compile_program({{"a.vert", "void f() {}\n"}, {"b.vert", "void main() {\n\n x = 1.0; }\n"}},

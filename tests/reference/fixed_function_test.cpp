@@ -399,6 +399,58 @@ t = { mode = "eye_linear", eye_plane = [0, 0.4, 0, 0.5] }
 )", nullptr, fragment);
 }
 
+// GL's built-in uniforms of glTexGen and glTexEnv state (GLSL 1.10 §7.5): a
+// program computes texgen and an environment blend from them, as programs
+// moving off the fixed function did. The camera turns and moves, so that the
+// world-space eye planes differ from the eye-space ones Mesa stores.
+TEST_CASE("shaders read the scene's texgen planes and texture environment colours as Mesa gives them",
+          "[reference][fixed]") {
+    const char* vertex = R"(
+varying vec4 planes;
+void main() {
+    vec4 eye = gl_ModelViewMatrix * gl_Vertex;
+    planes = vec4(dot(gl_Vertex, gl_ObjectPlaneS[0]), dot(gl_Vertex, gl_ObjectPlaneT[0]),
+                  dot(eye, gl_EyePlaneR[1]), dot(eye, gl_EyePlaneQ[3]) + gl_ObjectPlaneQ[2].w);
+    gl_Position = ftransform();
+}
+)";
+    const char* fragment = R"(
+varying vec4 planes;
+void main() {
+    vec4 env = gl_TextureEnvColor[0] + 0.5 * gl_TextureEnvColor[5];
+    gl_FragColor = vec4(mix(env.rgb, planes.xyz, 0.6) + 0.1 * gl_EyePlaneS[2].xyz, planes.w);
+}
+)";
+    compare_fixed("shader-texgen-env", R"(
+[output]
+size = [72, 72]
+clear_color = [0.05, 0.05, 0.1, 1]
+[camera]
+look_at = { eye = [1.5, 1, 3.5], center = [0, 0, 0], up = [0, 1, 0] }
+perspective = { fovy = 40, near = 1, far = 10 }
+[state]
+depth_test = true
+[texture_env.0]
+color = [0.8, 0.2, 0.1, 1]
+[texture_env.5]
+color = [0, 0.4, 0.6, 0.5]
+[texture_gen.0]
+s = { mode = "object_linear", object_plane = [0.5, 0, 0.25, 0.5] }
+t = { mode = "object_linear", object_plane = [0, 0.5, 0, 0.5] }
+[texture_gen.1]
+r = { mode = "eye_linear", eye_plane = [0.1, 0.3, 0.4, 0.2] }
+[texture_gen.2]
+space = "eye"
+s = { mode = "eye_linear", eye_plane = [1, 0.5, 0.25, 0] }
+q = { mode = "object_linear", object_plane = [0, 0, 0, 0.75] }
+[texture_gen.3]
+q = { mode = "eye_linear", eye_plane = [0, 0, 0.2, 0.9] }
+[[objects]]
+mesh = "cube"
+transform = [ { rotate = [25, 0, 1, 0] }, { scale = [0.8, 0.8, 0.8] } ]
+)", vertex, fragment);
+}
+
 TEST_CASE("a fixed-function object beside a shaded one", "[reference][fixed]") {
     const char* vertex =
         "void main() { gl_FrontColor = vec4(1.0, 0.5, 0.25, 1.0) * gl_Color; gl_Position = ftransform(); }\n";

@@ -6,6 +6,8 @@
 // implementation's rounding (glslrun and llvmpipe then differ by a pixel).
 #include "tests/reference/helpers.h"
 
+#include <fmt/format.h>
+
 using namespace glslrun;
 
 namespace {
@@ -158,4 +160,47 @@ TEST_CASE("glslrun matches Mesa on inline arrays of every primitive type", "[ref
     auto scene = scene::parse_scene(kScene, "arrays.toml");
     if (!scene) FAIL(scene.error().str());
     reference::compare("geometry-arrays", {{{"arrays.vert", kVertex}}, {{"arrays.frag", kFragment}}, std::move(*scene)});
+}
+
+// Clipping where the spec leaves the precision open: llvmpipe clips x and y
+// at the viewport (no guard band) and snaps the new vertex, which lies on
+// the window's edge, to 1/256 pixel; glslrun clips x and y against a guard
+// band 2^19 pixels wide, so an edge that crosses the window's side is the
+// line between its own two snapped vertices. The transparency scene's ground
+// (scenes/app/transparency.toml, its left edge seen crossing the window's
+// left side at y = 44.3) is such a triangle, in clip coordinates here: the
+// exact edge passes 0.002 pixel right of pixel (0, 44)'s centre, so GL's
+// point-sampling rule leaves that pixel out; llvmpipe's snapped clip vertex
+// moves the edge 0.003 pixel left of it and covers it. glslrun keeps the
+// exact answer (docs/semantics.md, "clipping"); every other pixel is the same.
+TEST_CASE("a triangle clipped at the window's side covers the pixels of its exact edge", "[reference]") {
+    const double a[4] = {-5.01050968, 0.57151669, 5.9878302, 7.32232256};
+    const double b[4] = {-5.82302476, -2.25369453, -0.49745329, 1.45468512};
+    const double d[4] = {5.82302476, 0.35962584, 5.50143393, 6.88224975};
+    const reference::Inputs in = reference::scene_inputs("clipped_edge", fmt::format(R"(
+[output]
+size = [128, 96]
+clear_color = [0, 0, 0, 1]
+[[objects]]
+mesh = "arrays"
+primitive = "triangles"
+vertices = [[{}, {}, {}, {}], [{}, {}, {}, {}], [{}, {}, {}, {}]]
+)", a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3], d[0], d[1], d[2], d[3]),
+        "void main() { gl_Position = gl_Vertex; }", "void main() { gl_FragColor = vec4(1.0); }");
+    // The exact edge a-b in window coordinates, at pixel row 44's centre.
+    auto window = [](const double* p) { return std::pair{(p[0] / p[3] + 1) * 64, (p[1] / p[3] + 1) * 48}; };
+    auto [ax, ay] = window(a);
+    auto [bx, by] = window(b);
+    const double edge_x = ax + (44.5 - ay) / (by - ay) * (bx - ax);
+    CHECK(edge_x > 0.5);
+    CHECK(edge_x < 0.5 + 1.0 / 256);  // within the snap: the two clippings may differ here
+    const scene::Image ours = reference::check_same_everywhere(in);
+    auto mesa = glref::render_with_mesa(reference::kDriver, in.vertex, in.fragment, in.scene);
+    REQUIRE(mesa);
+    const int row = 95 - 44;  // top-left origin
+    CHECK(ours.pixel(0, row)[0] == 0);
+    CHECK(mesa->image.pixel(0, row)[0] == 255);
+    int differ = 0;
+    for (size_t i = 0; i < ours.rgba.size(); ++i) differ += ours.rgba[i] != mesa->image.rgba[i];
+    CHECK(differ == 3);  // that pixel's R, G and B
 }

@@ -1,6 +1,6 @@
 // The programs of draws with a generated fixed-function stage: one per
-// distinct state, holding the pass program's uniforms; and what a shader
-// cannot see of the fixed-function state is refused rather than wrong.
+// distinct state, holding the pass program's uniforms; and the
+// fixed-function state that shaders read as built-in uniforms.
 #include <catch2/catch.hpp>
 
 #include "glslrun/scene/render.h"
@@ -71,14 +71,35 @@ TEST_CASE("a vertex shader alone gets a fixed-function fragment stage per draw s
     CHECK(*c != *a);  // another texture state, another fragment stage
 }
 
-TEST_CASE("a shader that reads fixed-function state the scene sets is refused, not drawn wrong",
-          "[scene][render][fixed]") {
-    auto program = Program::compile({}, {{"env.frag", "void main() { gl_FragColor = gl_TextureEnvColor[0]; }\n"}});
+// GL's built-in uniforms of glTexEnv and glTexGen state: a shader reads the
+// scene's values, the eye plane as glTexGen stores it (in eye space: the
+// world-space plane times the inverse view).
+TEST_CASE("a shader reads the scene's texture environment colour and texgen planes", "[scene][render][fixed]") {
+    auto program = Program::compile(
+        {}, {{"planes.frag", "void main() { gl_FragColor = vec4(gl_TextureEnvColor[2].rg, gl_ObjectPlaneR[1].z,"
+                             " gl_EyePlaneS[0].w + 0.5); }\n"}});
     REQUIRE(program);
-    Scene plain = parse_ok("[[objects]]\nmesh = \"quad\"\n");
-    CHECK(scene::render_image(*program, plain));  // GL's default, which glslrun gives
-    Scene sets = parse_ok("[texture_env.0]\ncolor = [1, 0, 0, 1]\n[[objects]]\nmesh = \"quad\"\n");
-    auto refused = scene::render_image(*program, sets);
-    REQUIRE_FALSE(refused);
-    CHECK_THAT(refused.error().str(), Catch::Contains("gl_TextureEnvColor"));
+    auto at_centre = [&](const std::string& toml) {
+        auto image = scene::render_image(*program, parse_ok(toml + "[[objects]]\nmesh = \"quad\"\n"));
+        REQUIRE(image);
+        return pixel(*image, image->width / 2, image->height / 2);
+    };
+    // GL's defaults: colour zero, r planes zero, s = (1, 0, 0, 0).
+    CHECK(at_centre("[output]\nsize = [4, 4]\n") == std::array<uint8_t, 4>{0, 0, 0, 128});
+    // The camera looks from z = 4 (view = translate(0, 0, -4)): the world-space plane (0, 0, 1, -3.75) is
+    // (0, 0, 1, -3.75) * inverse(view) = (0, 0, 1, 0.25) in eye space. With space = "eye" it is stored as given.
+    const std::string sets = R"([output]
+size = [4, 4]
+[camera]
+look_at = { eye = [0, 0, 4], center = [0, 0, 0], up = [0, 1, 0] }
+ortho = { left = -1, right = 1, bottom = -1, top = 1, near = 1, far = 10 }
+[texture_env.2]
+color = [0.2, 0.6, 0, 0]
+[texture_gen.1]
+r = { mode = "object_linear", object_plane = [0, 0, 0.4, 0] }
+)";
+    CHECK(at_centre(sets + "[texture_gen.0]\ns = { mode = \"eye_linear\", eye_plane = [0, 0, 1, -3.75] }\n") ==
+          std::array<uint8_t, 4>{51, 153, 102, 191});
+    CHECK(at_centre(sets + "[texture_gen.0]\nspace = \"eye\"\ns = { mode = \"eye_linear\", eye_plane = [0, 0, 1, "
+                           "-0.25] }\n") == std::array<uint8_t, 4>{51, 153, 102, 64});
 }

@@ -13,7 +13,9 @@ TEST_CASE("errors print as file:line: error: message", "[scene][errors]") {
 
 TEST_CASE("TOML syntax errors cite their line", "[scene][errors]") {
     check_cases({
-        {"[output]\nsize = [512, 512\n", 2, "Error while parsing array: encountered end-of-file"},
+        {"[output]\nsize = [512, 512\n", 2, "TOML syntax error at column 18 (in an array): encountered end-of-file"},
+        {"[output]\nclear_color = [0.1 0.2]\n", 2,
+         "TOML syntax error at column 20 (in an array): expected comma or closing ']', saw '0'"},
         {"[output\nsize = 1\n", 1, "expected ']'"},
         {"[state]\ndepth_test = true\ndepth_test = false\n", 3, "cannot redefine existing boolean 'depth_test'"},
         {"a = 1 2\n", 1, "expected a comment or whitespace"},

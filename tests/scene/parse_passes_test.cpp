@@ -95,24 +95,42 @@ TEST_CASE("mistakes in passes cite their line", "[scene][parse]") {
     check_error(objects + "[[passes]]\nobjects = [\"a\", 3]\n", 11, "must list object names");
 }
 
-TEST_CASE("a scene uniform that no pass's program declares is an error at its line", "[scene][render]") {
-    Scene s = parse_ok(R"([uniforms]
-tint = [1, 1, 1, 1]
-nothing = 1.0
+// GL ignores glUniform at location -1: an entry no program uses is drawn
+// past, with a warning at its line naming the nearest uniform there is; one
+// typed for the render (--uniform, no line) is an error.
+TEST_CASE("a scene uniform that no program uses is a warning at its line", "[scene][render]") {
+    const std::string text = R"([uniforms]
+tint = [1, 0, 0, 1]
+tnit = 1.0
 [[objects]]
 mesh = "quad"
-[[passes]]
-[[passes]]
-)");
+)";
     auto program = glslrun::Program::compile(
         {{"v.vert", "void main() { gl_Position = ftransform(); }"}},
         {{"f.frag", "uniform vec4 tint; void main() { gl_FragColor = tint; }"}});
     REQUIRE(program);
-    glslrun::Framebuffer fb(8, 8);
-    auto r = glslrun::scene::render_scene(*program, s, fb);
-    REQUIRE_FALSE(r);
-    CHECK(r.error().diagnostics[0].line == 3);
-    CHECK_THAT(r.error().str(), Catch::Contains("no pass's program has an active uniform 'nothing'"));
+    for (const char* passes : {"", "[[passes]]\n[[passes]]\n"}) {
+        INFO(passes);
+        Scene s = parse_ok(text + passes);
+        auto programs = glslrun::scene::ScenePrograms::compile(*program, s);
+        REQUIRE(programs);
+        REQUIRE(programs->warnings().size() == 1);
+        const glslrun::Diagnostic& w = programs->warnings()[0];
+        CHECK((w.warning && w.line == 3 && w.file == "scene.toml"));
+        CHECK_THAT(w.message, Catch::Contains("active uniform 'tnit'") && Catch::Contains("did you mean 'tint'?") &&
+                                  Catch::Contains("ignored"));
+        glslrun::Framebuffer fb(8, 8);
+        REQUIRE(glslrun::scene::render_scene(*programs, s, fb));
+        CHECK(fb.pixel(4, 4) == glm::vec4(1, 0, 0, 1));  // the entries it has are set
+        // The same name from the command line was typed for this render: an error.
+        auto overrides = glslrun::scene::parse_uniform_override("tnit=1");
+        REQUIRE(overrides);
+        glslrun::scene::override_uniforms(s, *overrides);
+        auto refused = glslrun::scene::ScenePrograms::compile(*program, s);
+        REQUIRE_FALSE(refused);
+        CHECK_THAT(refused.error().str(), Catch::StartsWith("--uniform tnit=1: error: ") &&
+                                              Catch::Contains("did you mean 'tint'?"));
+    }
 }
 
 TEST_CASE("primitive state keys: polygon mode and offset, line width, point sprites, culling", "[scene][parse]") {

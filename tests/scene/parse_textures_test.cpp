@@ -548,6 +548,21 @@ mesh = "quad"
     check_vec(fb.pixel(1, 1), {0.2 + 0.25, 0.4 + 0.15, 0.6 + 0.05, 1}, 1.0 / 255);
 }
 
+TEST_CASE("a uniform given the wrong number of values names its declaration, at the scene's line", "[scene]") {
+    const char* fs = "uniform vec3 color; uniform vec2 points[3];\n"
+                     "void main() { gl_FragColor = vec4(color + points[2].xyx, 1.0); }";
+    auto program = glslrun::Program::compile({{"v.vert", "void main() { gl_Position = gl_Vertex; }"}},
+                                             {{"f.frag", fs}});
+    REQUIRE(program);
+    glslrun::Status st = glslrun::scene::apply_uniforms(*program, parse_ok("[uniforms]\ncolor = 1.0\n").uniforms);
+    REQUIRE_FALSE(st);
+    CHECK(st.error().diagnostics[0].line == 2);
+    CHECK_THAT(st.error().diagnostics[0].message, Catch::EndsWith("(the program declares 'uniform vec3 color')"));
+    st = glslrun::scene::apply_uniforms(*program, parse_ok("[uniforms]\npoints = [1, 2, 3]\n").uniforms);
+    REQUIRE_FALSE(st);
+    CHECK_THAT(st.error().diagnostics[0].message, Catch::EndsWith("(the program declares 'uniform vec2 points[3]')"));
+}
+
 TEST_CASE("a sampler uniform takes an integer, at the scene's line", "[scene][textures]") {
     Scene s = parse_ok("[uniforms]\ntex = 0.0\n");
     const char* fs = "uniform sampler2D tex; void main() { gl_FragColor = texture2D(tex, vec2(0.5)); }";

@@ -177,9 +177,15 @@ Status run_job(const Job& job, const ExecOptions& exec, ProgramCache& programs, 
     auto program = programs.get(job);
     if (!program) return program.error();
     (*program)->exec = exec;
-    auto image = scene::render_image(**program, *scene);
-    if (!image) return image.error();
-    return write_image(*image, job.output);
+    // Legal but likely unintended, printed as when rendering one scene.
+    for (const Diagnostic& w : scene->warnings) std::fprintf(stderr, "%s\n", w.str().c_str());
+    auto drawn = scene::ScenePrograms::compile(**program, *scene);
+    if (!drawn) return drawn.error();
+    for (const Diagnostic& w : drawn->warnings()) std::fprintf(stderr, "%s\n", w.str().c_str());
+    auto fb = Framebuffer::create(scene->width, scene->height, false, scene::color_buffers(*scene));
+    if (!fb) return fb.error();
+    if (auto stats = scene::render_scene(*drawn, *scene, *fb); !stats) return stats.error();
+    return write_image(scene::read_framebuffer(*fb), job.output);
 }
 
 }  // namespace

@@ -7,8 +7,10 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "runtime/jit_plugin.h"
+#include "scene/scene_reader.h"
 
 namespace glslrun::cli {
 
@@ -94,9 +96,36 @@ std::optional<std::pair<int, int>> parse_int_pair(std::string_view text, std::st
     return std::pair{a, b};
 }
 
+namespace {
+
+// CLI11 says only "The following argument was not expected: --treads": name
+// the option the user probably meant. "" when no argument looks like one.
+std::string misspelt_option(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* o : app.get_options())
+        for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+    std::vector<std::string_view> views(names.begin(), names.end());
+    for (const std::string& arg : app.remaining()) {
+        if (!arg.starts_with("--")) continue;
+        std::string written = arg.substr(0, arg.find('='));
+        std::string best = scene::detail::closest(written, views);
+        return fmt::format("{}: error: unknown option '{}'{} ({} --help lists the options)", app.get_name(), written,
+                           best.empty() ? "" : fmt::format("; did you mean '{}'?", best), app.get_name());
+    }
+    return {};
+}
+
+}  // namespace
+
 int parse_command_line(CLI::App& app, int argc, char** argv) {
     try {
         app.parse(argc, argv);
+    } catch (const CLI::ExtrasError& e) {
+        if (std::string message = misspelt_option(app); !message.empty()) {
+            std::fprintf(stderr, "%s\n", message.c_str());
+            return kToolError;
+        }
+        return app.exit(e) == 0 ? 0 : kToolError;
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : kToolError;
     }

@@ -539,6 +539,7 @@ int render(const Inputs& in, const RenderOptions& o) {
     set_exec_options(*prog, o);  // before the passes' programs copy them
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
+    for (const Diagnostic& w : programs->warnings()) fmt::print(stderr, "{}\n", w.str());
     double compile_ms = ms_since(start);
     if (o.dump_ir) std::fputs(prog->dump_ir().c_str(), stdout);
     start = Clock::now();
@@ -592,6 +593,7 @@ int render_frames(const Inputs& in, const RenderOptions& o) {
     prog->exec.render_instructions = &instructions;
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return fail(programs.error());
+    for (const Diagnostic& w : programs->warnings()) fmt::print(stderr, "{}\n", w.str());
     const std::string time = o.time_uniform.empty() ? scene->animation.time_uniform : o.time_uniform;
     const double fps = o.frames_per_second > 0 ? o.frames_per_second : scene->animation.frames_per_second;
     const bool timed = any_program_has(*programs, time);

@@ -205,9 +205,9 @@ struct ServeArgs {
 int run_serve(const ServeArgs& a) {
     auto in = classify(a.files);
     if (!in) return fail(in.error(), kToolError);
-    if (in->scene.empty() || (in->fragment.empty() && in->vertex.empty()) || !in->image.empty())
-        return fail(Error("serve needs the shaders to edit (.vert, .frag: a stage left out is GL's fixed function, "
-                          "generated from the scene) and a scene file (.toml)"),
+    if (in->scene.empty() || !in->image.empty())
+        return fail(Error("serve needs a scene file (.toml) and the shaders to edit (.vert, .frag: a stage left out, "
+                          "or both, is GL's fixed function, generated from the scene)"),
                     kToolError);
     auto scene_text = scene::read_text_file(in->scene, "scene file", scene::kMaxSceneFileBytes);
     if (!scene_text) return fail(scene_text.error(), kResultError);
@@ -264,7 +264,7 @@ int serve_main(int argc, char** argv) {
                  "glslrun serve"};
     ServeArgs a;
     app.add_option("files", a.files,
-                   "shader.vert shader.frag scene.toml (either shader may be left out: GL's fixed function; the "
+                   "shader.vert shader.frag scene.toml (either shader or both may be left out: GL's fixed function; the "
                    "user's files are only read)")
         ->required();
     app.add_option("--port", a.options.port, "the port on 127.0.0.1 (default 8321; 0 picks a free one)")

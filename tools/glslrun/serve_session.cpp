@@ -81,6 +81,15 @@ std::vector<ShaderSource> ServeSession::sources(const char* kind) const {
     return out;
 }
 
+bool ServeSession::fixed_function() const { return sources("vert").empty() && sources("frag").empty(); }
+
+// The scene of the current text; with no shader, every draw in GL's fixed function (as `glslrun scene.toml`).
+Result<scene::Scene> ServeSession::scene_to_draw() const {
+    auto scene = parse_scene_text();
+    if (scene && fixed_function()) scene::use_fixed_function(*scene);
+    return scene;
+}
+
 std::string ServeSession::scratch_path(const std::string& stem) {
     return (fs::path(scratch_) / fmt::format("{}-{}.png", stem, ++generation_)).string();
 }
@@ -108,11 +117,20 @@ std::string ServeSession::render_json() {
     };
     auto scene = parse_scene_text();
     if (!scene) return failed(scene.error());
+    std::vector<Diagnostic> warnings = scene->warnings;
+    if (fixed_function()) {
+        // The command line's text is "warning: PATH: message"; the page shows the file and kind itself.
+        const std::string prefix = fmt::format("warning: {}: ", scene->path);
+        if (std::string w = scene::fixed_function_warning(*scene); !w.empty())
+            warnings.push_back(Diagnostic{scene->path, 0, w.starts_with(prefix) ? w.substr(prefix.size()) : w, true});
+        scene::use_fixed_function(*scene);
+    }
     auto start = Clock::now();
     Inputs in;
     in.vertex = sources("vert");
     in.fragment = sources("frag");
-    auto prog = compile_program(in, RenderOptions{});  // as `glslrun` compiles: its notes too
+    // As `glslrun` compiles: its notes too.
+    auto prog = fixed_function() ? scene::unused_main_program() : compile_program(in, RenderOptions{});
     if (!prog) return failed(prog.error());
     prog->exec.threads = options_.threads;
     prog->exec.precision = options_.precision;
@@ -120,6 +138,7 @@ std::string ServeSession::render_json() {
     prog->exec.set_time_limit(options_.time_limit);
     auto programs = scene::ScenePrograms::compile(*prog, *scene);
     if (!programs) return failed(programs.error());
+    warnings.insert(warnings.end(), programs->warnings().begin(), programs->warnings().end());
     const double compile_ms = ms_since(start);
     auto fb = Framebuffer::create(scene->width, scene->height, false, scene::color_buffers(*scene));
     if (!fb) return failed(fb.error());
@@ -136,20 +155,21 @@ std::string ServeSession::render_json() {
                      {"width", scene->width},
                      {"height", scene->height},
                      {"stats", format_stats(*prog, *scene, *stats, compile_ms, ms_since(start))},
-                     {"diagnostics", diagnostics_json(scene->warnings, files_)}});
+                     {"diagnostics", diagnostics_json(warnings, files_)}});
 }
 
 // The scene and the program with its debugging twin, under the time limit
 // (`cancel`: the replays poll it, not the deadline).
 Result<ServeSession::Parsed> ServeSession::parse_for_debugging(const std::atomic<bool>* cancel) const {
-    auto scene = parse_scene_text();
+    auto scene = scene_to_draw();
     if (!scene) return scene.error();
     const auto vertex = sources("vert"), fragment = sources("frag");
-    auto program = Program::compile(vertex, fragment);
+    auto program = fixed_function() ? scene::unused_main_program() : Program::compile(vertex, fragment);
     if (!program) return program.error();
     program->exec.precision = options_.precision;
     program->exec.set_time_limit(options_.time_limit);
-    auto debug = debug::compile_for_debugging(vertex, fragment, options_.precision);
+    auto debug = fixed_function() ? scene::unused_main_program()
+                                  : debug::compile_for_debugging(vertex, fragment, options_.precision);
     if (!debug) return debug.error();
     debug->exec.cancel = cancel;
     return Parsed{std::move(*scene), std::move(*program), std::move(*debug)};
@@ -204,6 +224,7 @@ std::string ServeSession::findings_json() {
     if (report->nan) findings.push_back(finding_json("nan", *report->nan));
     if (report->out_of_range) findings.push_back(finding_json("colour_range", *report->out_of_range));
     std::string summary = debug::format_text(*report);
+    if (fixed_function()) return dump(json{{"findings", findings}, {"summary", summary}});  // no shader to check
     // GLSL's undefined operations (glslrun --check-undefined), each at its first invocation's pixel.
     ExecOptions exec;
     exec.precision = options_.precision;
@@ -216,6 +237,9 @@ std::string ServeSession::findings_json() {
 }
 
 std::string ServeSession::heat_json() {
+    if (fixed_function())
+        return error_json(Error("the error heat map measures the precision of your shaders: without a shader every "
+                                "draw is GL's fixed function"));
     auto scene = parse_scene_text();
     if (!scene) return error_json(scene.error());
     scene::ErrorReportOptions options;

@@ -58,6 +58,8 @@ private:
     };
     struct Parsed;  // the scene and program of the current texts
     Result<scene::Scene> parse_scene_text() const;
+    bool fixed_function() const;  // no shader: every draw is GL's fixed function
+    Result<scene::Scene> scene_to_draw() const;
     Result<Parsed> parse_for_debugging(const std::atomic<bool>* cancel) const;
     std::vector<ShaderSource> sources(const char* kind) const;
     std::string scratch_path(const std::string& stem);

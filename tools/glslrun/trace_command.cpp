@@ -123,6 +123,9 @@ int run_trace(const TraceOptions& o) {
     auto debug = fixed ? scene::unused_main_program()
                        : debug::compile_for_debugging(in->vertex, in->fragment, o.precision, compile);
     if (!debug) return fail(debug.error());
+    // The [uniforms] entries that no program uses, as a render prints them (an error here the trace reports).
+    if (auto programs = scene::ScenePrograms::compile(*program, *scene); programs)
+        for (const Diagnostic& w : programs->warnings()) fmt::print(stderr, "{}\n", w.str());
     Framebuffer fb(scene->width, scene->height, false, scene::color_buffers(*scene));
     if (!o.dump_fixed_function.empty()) {
         auto stages = debug::generated_stages(*program, *debug, *scene, fb);

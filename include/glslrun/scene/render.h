@@ -62,7 +62,14 @@ public:
     // generated once per texture for these programs' renders (every frame
     // and object binds the same copy).
     std::shared_ptr<const Texture> texture_for(const TextureSetting& t, ColorRounding rounding) const;
+    // The scene's, objects' and passes' [uniforms] entries that no program
+    // they go to has as an active uniform, each at its file:line with the
+    // nearest name the programs have. GL ignores glUniform at location -1,
+    // so renders skip them; the command line prints these warnings. An
+    // entry with no line (--uniform, or one set in code) is an error of compile().
+    const std::vector<Diagnostic>& warnings() const { return warnings_; }
 private:
+    std::vector<Diagnostic> warnings_;
     std::vector<std::shared_ptr<Program>> own_;
     std::vector<Program*> by_pass_;
     std::shared_ptr<FixedFunctionPrograms> fixed_;
@@ -88,7 +95,8 @@ Result<Program> unused_main_program();
 // Draws every pass's objects into fb as it is, or cleared first to `clear`
 // (by the first draw's tiles: draw() with ClearValues). With passes, the
 // scene's and objects' uniforms are set on each pass's program that declares
-// them; a name that no pass's program declares is an error. fb.rounding is
+// them; a name that no program declares is skipped, as GL skips location -1
+// (ScenePrograms::warnings lists them). fb.rounding is
 // set from the programs' precision (color_rounding_for: Fast stores colours
 // as the GPU does).
 Result<DrawStats> draw_scene_objects(const ScenePrograms& programs, const Scene& scene, Framebuffer& fb,
