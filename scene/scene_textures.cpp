@@ -16,7 +16,7 @@ namespace {
 
 // Each list is in its enum's order (glslrun.h), so a choice's index is the value.
 const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map", "rectangle", "1d_array", "2d_array"};
-const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component"};
+const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component", "rgba16f"};
 const std::vector<std::string_view> kFilters = {"nearest", "linear", "nearest_mipmap_nearest",
                                                 "linear_mipmap_nearest", "nearest_mipmap_linear",
                                                 "linear_mipmap_linear"};
@@ -96,14 +96,16 @@ Size3 read_size(const Section& s, const Context& c) {
 
 // A colour for texels: 3 or 4 numbers, or one number for a grey (L, L, L, 1)
 // as GL_LUMINANCE expands it (for a depth texture: the depth). Normalized
-// formats store [0, 1] only, so other values would be silently clamped.
+// formats store [0, 1] only, so other values would be silently clamped; the
+// float formats store any (rgba16f rounds each to a half, past 65504 to
+// infinity, as GL does).
 glm::vec4 texel_color(const toml::node& n, const std::string& what, const Context& c) {
     glm::dvec4 v = n.is_number() ? glm::dvec4(glm::dvec3(number(n, what)), 1.0) : color(n, what);
-    if (c.format == TextureFormat::RGBA32F) return glm::vec4(v);
+    if (c.format == TextureFormat::RGBA32F || c.format == TextureFormat::RGBA16F) return glm::vec4(v);
     for (int i = 0; i < 4; ++i)
         if (v[i] < 0 || v[i] > 1)
             fail(n, fmt::format("'{}' must be in [0, 1]: {} stores no other values (internal_format = "
-                                "\"rgba32f\" does); got {}", what, kFormats[size_t(c.format)], v[i]));
+                                "\"rgba16f\" and \"rgba32f\" do); got {}", what, kFormats[size_t(c.format)], v[i]));
     return glm::vec4(v);
 }
 

@@ -68,7 +68,7 @@ struct Upload {
 };
 
 // RGBA8 texels are already k/255 in glslrun, so the bytes are exact; depth
-// goes as floats (.r), as does RGBA32F.
+// goes as floats (.r), as do RGBA32F and RGBA16F.
 Upload texel_data(TextureFormat format, const TextureImage& image) {
     Upload u;
     if (format == TextureFormat::RGBA8) {
@@ -76,8 +76,9 @@ Upload texel_data(TextureFormat format, const TextureImage& image) {
         for (const glm::vec4& t : image.texels)
             for (int c = 0; c < 4; ++c)
                 u.bytes.push_back(uint8_t(std::lround(std::clamp(t[c], 0.0f, 1.0f) * 255.0f)));
-    } else if (format == TextureFormat::RGBA32F) {
-        u.internal_format = GL_RGBA32F;
+    } else if (format == TextureFormat::RGBA32F || format == TextureFormat::RGBA16F) {
+        // Halves go as the floats they are: Mesa's conversion keeps them exactly.
+        u.internal_format = format == TextureFormat::RGBA16F ? GL_RGBA16F : GL_RGBA32F;
         u.type = GL_FLOAT;
         for (const glm::vec4& t : image.texels) u.floats.insert(u.floats.end(), {t.r, t.g, t.b, t.a});
     } else {
@@ -176,7 +177,10 @@ void attach_texture(const GLFunctions& gl, const scene::Scene& scene, int target
                      GL_UNSIGNED_INT_24_8, nullptr);
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, id, 0);
     } else {
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        const GLint format = t.format == TextureFormat::RGBA16F   ? GL_RGBA16F
+                             : t.format == TextureFormat::RGBA32F ? GL_RGBA32F
+                                                                  : GL_RGBA8;
+        glTexImage2D(GL_TEXTURE_2D, 0, format, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + attachment), GL_TEXTURE_2D, id, 0);
     }
     if (!sampled) glBindTexture(GL_TEXTURE_2D, 0);  // unit 0 keeps what the file bound there

@@ -168,6 +168,9 @@ struct RenderTarget {
     std::string name;
     int width = 0, height = 0;
     int color_buffers = 1;  // GL_COLOR_ATTACHMENT0 .. n-1
+    // The colour attachments' internal format: RGBA8, RGBA16F or RGBA32F
+    // (ARB_texture_float; float ones are drawn unclamped, ARB_color_buffer_float).
+    TextureFormat format = TextureFormat::RGBA8;
     SourceLoc where;
 };
 
