@@ -13,6 +13,7 @@
 
 #include <immintrin.h>
 
+#include "raster/fragment_ops.h"
 #include "raster/framebuffer.h"
 #include "runtime/half_float.h"
 
@@ -106,4 +107,22 @@ TEST_CASE("a half-float framebuffer stores clears and pixels truncated to halves
     CHECK(full.pixel(3, 1) == c);
     raster::write_color(half, 1, 0, glm::vec4(2.5f, 1e-9f, 1000.3f, 1.0f));
     CHECK(half.pixel(1, 0) == glm::vec4(2.5f, 0.0f, 1000.0f, 1.0f));
+}
+
+TEST_CASE("float buffers keep the blend colour and alpha reference unclamped, RGBA8 ones clamp them", "[raster][half]") {
+    // GL_CLAMP_FRAGMENT_COLOR_ARB's FIXED_ONLY (Mesa's BlendColorUnclamped, AlphaRefUnclamped).
+    GLState gl;
+    gl.blend = true;
+    gl.blend_state.color = {1.7f, -0.2f, 0.5f, 2.0f};
+    gl.alpha_test = true;
+    gl.alpha_ref = 1.5f;
+    const raster::FragmentOps fixed(gl, Framebuffer(2, 2)), floats(gl, Framebuffer(2, 2, true));
+    CHECK(fixed.blend_state.color == glm::vec4(1.0f, 0.0f, 0.5f, 1.0f));
+    CHECK(fixed.alpha_ref == 1.0f);
+    CHECK(floats.blend_state.color == gl.blend_state.color);
+    CHECK(floats.alpha_ref == 1.5f);
+    CHECK_FALSE(floats.half_float);
+    Framebuffer half(2, 2, true);
+    half.half_float = true;
+    CHECK(raster::FragmentOps(gl, half).half_float);
 }

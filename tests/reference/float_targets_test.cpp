@@ -16,7 +16,60 @@ namespace {
 
 const std::string kScenes = std::string(GLSLRUN_SOURCE_DIR) + "/scenes/";
 
+// One program for both passes, picked by a pass uniform: colours past
+// [0, 1] into an RGBA32F target under an alpha test that compares the
+// unclamped alpha (1.5 fails EQUAL 1.0, which its clamped value would pass),
+// then read back onto the output.
+const char* kAlphaVertex = R"(
+void main() {
+    gl_TexCoord[0] = gl_MultiTexCoord0;
+    gl_Position = gl_Vertex;
+}
+)";
+const char* kAlphaFragment = R"(
+uniform float mode;
+uniform sampler2D image;
+void main() {
+    if (mode < 0.5) {
+        float a = gl_FragCoord.x < 16.0 ? 1.5 : 1.0;
+        gl_FragColor = vec4(gl_FragCoord.y < 16.0 ? 3.0 : -2.0, 0.5, 0.5, a);
+    } else {
+        vec4 t = texture2D(image, gl_TexCoord[0].st);
+        gl_FragColor = vec4(t.r * 0.25 + 0.5, t.a, 0.0, 1.0);
+    }
+}
+)";
+const char* kAlphaScene = R"(
+[output]
+size = [32, 32]
+clear_color = [0, 0, 0, 1]
+[render_targets.wide]
+size = [32, 32]
+internal_format = "rgba32f"
+[textures.0]
+render_target = "wide"
+min_filter = "nearest"
+mag_filter = "nearest"
+[[objects]]
+name = "screen"
+mesh = "quad"
+[[passes]]
+target = "wide"
+objects = ["screen"]
+clear = { color = [0.25, 0.25, 0.25, 0.25] }
+uniforms = { mode = 0.0, image = 1 }
+state = { alpha_test = true, alpha_test_func = "equal", alpha_test_ref = 1.0 }
+[[passes]]
+objects = ["screen"]
+uniforms = { mode = 1.0, image = 0 }
+)";
+
 }  // namespace
+
+TEST_CASE("glslrun matches Mesa on unclamped colours and the alpha test in a float target", "[reference][float]") {
+    reference::compare_in_every_mode("float-alpha-test",
+                                     reference::scene_inputs("float-alpha-test", kAlphaScene, kAlphaVertex, kAlphaFragment));
+}
 
 TEST_CASE("glslrun matches Mesa on half-float targets' stores, clears, blends and texel uploads", "[reference][float]") {
     reference::compare_in_every_mode("float-half-stores", reference::scene_files(kScenes + "app/", "half_float"));
