@@ -8,6 +8,10 @@
 // draws an HDR bloom through half- and single-float targets tone-mapped onto
 // the RGBA8 output. Both against Mesa in Precise and Fast, each mode's image
 // the same on both backends at 1 and 2 threads.
+#include <iterator>
+
+#include <fmt/format.h>
+
 #include "tests/reference/helpers.h"
 
 using namespace glslrun;
@@ -64,7 +68,38 @@ objects = ["screen"]
 uniforms = { mode = 1.0, image = 0 }
 )";
 
+// Every float format of fewer channels, one 8-pixel column each, sampled
+// from a 2x2 texture of (2.5, 0.6, 0.9, 0.45): what each keeps and what GL
+// returns for the rest (glref uploads each in its real format).
+const char* const kChannelFormats[] = {"rgb16f", "rgb32f", "rg16f", "rg32f", "r16f", "r32f", "luminance16f",
+                                       "luminance32f", "luminance_alpha16f", "luminance_alpha32f", "intensity16f",
+                                       "intensity32f", "alpha16f", "alpha32f"};
+
+reference::Inputs channel_formats_inputs() {
+    const size_t n = std::size(kChannelFormats);
+    std::string scene = fmt::format("[output]\nsize = [{}, 16]\nclear_color = [0, 0, 0, 0]\n[[objects]]\n"
+                                    "mesh = \"quad\"\n[uniforms]\n", 8 * n);
+    std::string fragment = "uniform sampler2D t0";
+    std::string lookups;
+    for (size_t i = 0; i < n; ++i) {
+        scene += fmt::format("t{} = {}\n", i, i);
+        if (i) fragment += fmt::format(", t{}", i);
+        lookups += fmt::format("    {}if (k < {}.5) t = texture2D(t{}, vec2(0.5));\n", i ? "else " : "", i, i);
+    }
+    for (size_t i = 0; i < n; ++i)
+        scene += fmt::format("[textures.{}]\ninternal_format = \"{}\"\nmin_filter = \"nearest\"\n"
+                             "solid = {{ size = [2, 2], color = [2.5, 0.6, 0.9, 0.45] }}\n", i, kChannelFormats[i]);
+    fragment += ";\nvoid main() {\n    float k = floor(gl_FragCoord.x / 8.0);\n    vec4 t = vec4(0.0);\n" + lookups +
+                "    gl_FragColor = t * 0.3;\n}\n";
+    return reference::scene_inputs("float-channel-formats", scene, "void main() { gl_Position = gl_Vertex; }\n",
+                                   fragment.c_str());
+}
+
 }  // namespace
+
+TEST_CASE("glslrun matches Mesa on float textures of one, two and three channels", "[reference][float]") {
+    reference::compare_in_every_mode("float-channel-formats", channel_formats_inputs());
+}
 
 TEST_CASE("glslrun matches Mesa on unclamped colours and the alpha test in a float target", "[reference][float]") {
     reference::compare_in_every_mode("float-alpha-test",
