@@ -7,6 +7,7 @@
 
 #include "ir/scalar_ops.h"
 #include "raster/framebuffer.h"
+#include "runtime/half_float.h"
 
 namespace glslrun::raster {
 
@@ -203,10 +204,17 @@ bool stencil_depth_one(const FragmentOps& ops, const StencilFace& face, uint8_t&
 
 }  // namespace
 
+// ARB_color_buffer_float's CLAMP_FRAGMENT_COLOR is FIXED_ONLY in a GL 2.1
+// context: the fragment's colour, the alpha test's reference and the blend
+// colour are clamped to [0, 1] for RGBA8 buffers and kept as they are for
+// float ones (Mesa picks AlphaRef or AlphaRefUnclamped, BlendColor or
+// BlendColorUnclamped, by the same rule).
 FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb) {
+    float_color = fb.float_color();
+    half_float = float_color && fb.half_float;
     alpha_test = gl.alpha_test;
     alpha_func = gl.alpha_func;
-    alpha_ref = std::clamp(gl.alpha_ref, 0.0f, 1.0f);
+    alpha_ref = float_color ? gl.alpha_ref : std::clamp(gl.alpha_ref, 0.0f, 1.0f);
     alpha_ref8 = unorm8_steps(alpha_ref);
     stencil_test = gl.stencil_test;
     stencil = gl.stencil;
@@ -214,14 +222,13 @@ FragmentOps::FragmentOps(const GLState& gl, const Framebuffer& fb) {
     depth_write = gl.depth_mask;
     depth_func = gl.depth_func;
     blend = gl.blend;
-    logic_op = gl.color_logic_op && !fb.float_color();
-    float_color = fb.float_color();
+    logic_op = gl.color_logic_op && !float_color;
     rounding = fb.rounding;
     blend_state = gl.blend_state;
     logic = gl.logic_op;
     color_mask = gl.color_mask;
     draw_buffers = gl.draw_buffers;
-    blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
+    if (!float_color) blend_state.color = glm::clamp(blend_state.color, 0.0f, 1.0f);
     resolved_blend = resolve_blend(blend_state, rounding);
     for (StencilFace& f : stencil) f.value_mask &= kStencilMax, f.write_mask &= kStencilMax;
     bool all_channels = color_mask == std::array<bool, 4>{true, true, true, true};
@@ -354,7 +361,7 @@ void write_float(const FragmentOps& ops, float* buffer, int width, const LanePix
         glm::vec4 s{rgba[0][size_t(lane)], rgba[1][size_t(lane)], rgba[2][size_t(lane)], rgba[3][size_t(lane)]};
         glm::vec4 out = ops.blend ? blend(ops.blend_state, s, glm::vec4{dst[0], dst[1], dst[2], dst[3]}) : s;
         for (int k = 0; k < 4; ++k)
-            if (ops.color_mask[size_t(k)]) dst[k] = out[k];
+            if (ops.color_mask[size_t(k)]) dst[k] = ops.half_float ? rt::truncate_to_half(out[k]) : out[k];
     }
 }
 

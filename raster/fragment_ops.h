@@ -57,14 +57,15 @@ ResolvedBlend resolve_blend(const BlendState& s, ColorRounding rounding = ColorR
 struct FragmentState {
     bool alpha_test = false;
     CompareFunc alpha_func = CompareFunc::Always;
-    float alpha_ref = 0;     // clamped to [0, 1]; compared as is with float buffers
+    float alpha_ref = 0;     // clamped to [0, 1] with RGBA8 buffers; compared as is with float buffers
     bool stencil_test = false;
     std::array<StencilFace, 2> stencil;  // front, back
     bool depth_test = false, depth_write = true;
     CompareFunc depth_func = CompareFunc::Less;
     bool blend = false, logic_op = false, float_color = false;
     ColorRounding rounding = ColorRounding::Nearest;  // the framebuffer's, for RGBA8 stores
-    BlendState blend_state;  // its colour clamped to [0, 1]
+    bool half_float = false;  // float stores truncated to binary16 (Framebuffer::half_float)
+    BlendState blend_state;  // its colour clamped to [0, 1] with RGBA8 buffers
     LogicOp logic = LogicOp::Copy;
     std::array<bool, 4> color_mask{true, true, true, true};
     int draw_buffers = 1;  // colour buffers written (gl_FragData[i] to buffer i)

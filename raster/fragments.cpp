@@ -11,6 +11,7 @@
 #include "raster/framebuffer.h"
 #include "runtime/backend_factory.h"
 #include "runtime/execute.h"
+#include "runtime/half_float.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/program_state.h"
 
@@ -594,7 +595,10 @@ void FragmentStage::store_color_quad(int base, const std::array<Lanes, 4>& rgba,
         float* buffer = fb_.color_data<float>(0).data();
         for (unsigned bits = mask; bits; bits &= bits - 1) {
             int lane = std::countr_zero(bits);
-            for (size_t k = 0; k < 4; ++k) buffer[offset(lane) + k] = rgba[k][size_t(base + lane)];
+            for (size_t k = 0; k < 4; ++k) {
+                const float c = rgba[k][size_t(base + lane)];
+                buffer[offset(lane) + k] = ops_.half_float ? rt::truncate_to_half(c) : c;
+            }
         }
         return;
     }

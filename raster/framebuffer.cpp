@@ -138,7 +138,8 @@ StoredClear stored_clear(const Framebuffer& fb, const ClearValues& clear) {
         const glm::vec4 c = *clear.color;
         const uint8_t bytes[4] = {to_unorm8(c.r, fb.rounding), to_unorm8(c.g, fb.rounding), to_unorm8(c.b, fb.rounding),
                                  to_unorm8(c.a, fb.rounding)};
-        out.color_pattern = fb.float_color() ? repeated(&c[0], 4) : repeated(bytes, 4);
+        const glm::vec4 stored = stored_float(fb, c);
+        out.color_pattern = fb.float_color() ? repeated(&stored[0], 4) : repeated(bytes, 4);
     }
     if (clear.depth) out.d = std::isnan(*clear.depth) ? 0.0f : std::clamp(*clear.depth, 0.0f, 1.0f);
     return out;
@@ -170,6 +171,7 @@ void clear_rect(Framebuffer& fb, const StoredClear& clear, int x0, int y0, int x
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c) {
     if (fb.float_color()) {
+        c = stored_float(fb, c);
         std::memcpy(color_at(fb, 0, x, y), &c[0], sizeof c);
         return;
     }

@@ -10,6 +10,7 @@
 #endif
 
 #include "glslrun/glslrun.h"
+#include "runtime/half_float.h"
 
 namespace glslrun::raster {
 
@@ -46,6 +47,14 @@ inline I gpu_unorm8(T v) {
 // The stored byte of one channel under `rounding`.
 inline uint8_t to_unorm8(float v, ColorRounding rounding) {
     return rounding == ColorRounding::Gpu ? uint8_t(gpu_unorm8<int32_t>(v)) : to_unorm8(v);
+}
+
+// A colour as a float colour buffer stores it: halves where fb.half_float,
+// truncated as llvmpipe stores them (runtime/half_float.h).
+inline glm::vec4 stored_float(const Framebuffer& fb, glm::vec4 c) {
+    if (!fb.half_float) return c;
+    return {rt::truncate_to_half(c.r), rt::truncate_to_half(c.g), rt::truncate_to_half(c.b),
+            rt::truncate_to_half(c.a)};
 }
 
 void write_color(Framebuffer& fb, int x, int y, glm::vec4 c);

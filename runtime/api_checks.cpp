@@ -50,8 +50,9 @@ Status check_texture_enums(TextureTarget target, TextureFormat format) {
         return Error(fmt::format("texture target {} is not Tex1D, Tex2D, Tex3D, Cube, Rect, Tex1DArray or "
                                  "Tex2DArray (GL_INVALID_ENUM)",
                                  int(target)));
-    if (!enum_in_range(format, TextureFormat::Depth))
-        return Error(fmt::format("texture format {} is not RGBA8, RGBA32F or Depth (GL_INVALID_ENUM)", int(format)));
+    if (!enum_in_range(format, TextureFormat::RGBA16F))
+        return Error(fmt::format("texture format {} is not RGBA8, RGBA32F, Depth or RGBA16F (GL_INVALID_ENUM)",
+                                 int(format)));
     return Ok{};
 }
 

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "runtime/api_checks.h"
+#include "runtime/half_float.h"
 #include "runtime/texture_levels.h"
 
 namespace glslrun {
@@ -63,7 +64,8 @@ float unorm(float x) { return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f; }
 
 // How the internal format stores a texel (§3.8.1): GL_RGBA8 keeps the nearest
 // k/255 (round half to even, as Mesa's float-to-unorm does), GL_RGBA32F the
-// float, a depth format a depth clamped to [0, 1] (only .r is meaningful).
+// float, GL_RGBA16F the nearest binary16 value, a depth format a depth
+// clamped to [0, 1] (only .r is meaningful).
 glm::vec4 store_texel(TextureFormat format, const glm::vec4& v) {
     switch (format) {
     case TextureFormat::RGBA8: {
@@ -72,6 +74,8 @@ glm::vec4 store_texel(TextureFormat format, const glm::vec4& v) {
         return out;
     }
     case TextureFormat::Depth: return {unorm(v.r), 0.0f, 0.0f, 1.0f};
+    case TextureFormat::RGBA16F:
+        return {rt::round_to_half(v.r), rt::round_to_half(v.g), rt::round_to_half(v.b), rt::round_to_half(v.a)};
     case TextureFormat::RGBA32F: break;
     }
     return v;

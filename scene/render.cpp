@@ -380,13 +380,15 @@ Status check_gl_copies(const Scene& scene) {
 }
 
 // The render targets' framebuffers, as glref's FBOs start: colour (0, 0, 0, 0),
-// depth 1, stencil 0; colours stored as the output's are (`rounding`).
+// depth 1, stencil 0; RGBA8 colours stored as the output's are (`rounding`),
+// float ones as floats or halves.
 Result<std::vector<Framebuffer>> make_targets(const Scene& scene, ColorRounding rounding) {
     std::vector<Framebuffer> targets;
     for (const RenderTarget& t : scene.targets) {
-        auto fb = Framebuffer::create(t.width, t.height, false, t.color_buffers);
+        auto fb = Framebuffer::create(t.width, t.height, t.format != TextureFormat::RGBA8, t.color_buffers);
         if (!fb) return fb.error();
         fb->rounding = rounding;
+        fb->half_float = t.format == TextureFormat::RGBA16F;
         fb->clear_color(glm::vec4(0));
         fb->clear_depth(1);
         fb->clear_stencil(0);

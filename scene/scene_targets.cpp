@@ -15,7 +15,7 @@ namespace {
 constexpr size_t kMaxRenderTargets = 16;
 
 RenderTarget read_target(const Section& s, std::string name) {
-    s.allow({"size", "color_buffers"});
+    s.allow({"size", "color_buffers", "internal_format"});
     RenderTarget t;
     t.name = std::move(name);
     t.where = location(s.table());
@@ -30,6 +30,10 @@ RenderTarget read_target(const Section& s, std::string name) {
     t.height = int(h);
     if (const toml::node* c = s.get("color_buffers"))
         t.color_buffers = int(integer(*c, s.name("color_buffers") + " (GL_MAX_DRAW_BUFFERS)", 1, kMaxDrawBuffers));
+    if (const toml::node* f = s.get("internal_format")) {
+        constexpr TextureFormat kColorFormats[] = {TextureFormat::RGBA8, TextureFormat::RGBA16F, TextureFormat::RGBA32F};
+        t.format = kColorFormats[choice(*f, s.name("internal_format"), {"rgba8", "rgba16f", "rgba32f"})];
+    }
     return t;
 }
 
@@ -58,16 +62,19 @@ void read_render_targets(const toml::node& n, Scene& scene) {
                                 kMaxRenderTargets));
         scene.targets.push_back(read_target(Section(table(v, what), what), std::string(k.str())));
         const RenderTarget& t = scene.targets.back();
-        pixels += int64_t(t.width) * t.height * (t.color_buffers + 1);
+        // A float colour pixel takes 16 bytes, an RGBA8 one 4: counted as 4 pixels, the bound stays one of memory.
+        const int64_t color_weight = t.format == TextureFormat::RGBA8 ? 1 : 4;
+        pixels += int64_t(t.width) * t.height * (t.color_buffers * color_weight + 1);
         if (pixels > kMaxFramebufferPixels)
-            fail(v, fmt::format("the render targets up to [{}] hold {} pixels in all (colour buffers and depth); "
+            fail(v, fmt::format("the render targets up to [{}] hold {} pixels in all (colour buffers, float ones "
+                                "counted 4 times, and depth); "
                                 "a scene may hold at most {} (docs/limits.md)", what, pixels, kMaxFramebufferPixels));
     }
 }
 
 // `render_target = "NAME"` with `attachment = "color"` (colour buffer 0),
 // "color1".."color7", or "depth". The texture has the target's size and
-// GL_RGBA8 or depth texels, cleared (0, 0, 0, 0) and depth 1 until a pass
+// format (or depth texels), cleared (0, 0, 0, 0) and depth 1 until a pass
 // draws into the target.
 Texture target_texture(const Section& s, const Scene& scene, TextureSetting& setting) {
     const toml::node& n = *s.get("render_target");
@@ -91,7 +98,7 @@ Texture target_texture(const Section& s, const Scene& scene, TextureSetting& set
                        std::vector<glm::vec4>(size_t(t.width) * size_t(t.height),
                                               depth ? glm::vec4(1, 0, 0, 1) : glm::vec4(0))};
     Result<Texture> texture = Texture::create(TextureTarget::Tex2D, {std::move(image)},
-                                              depth ? TextureFormat::Depth : TextureFormat::RGBA8);
+                                              depth ? TextureFormat::Depth : t.format);
     if (!texture) fail(n, fmt::format("[{}]: {}", s.path(), texture.error().str()));
     return std::move(*texture);
 }

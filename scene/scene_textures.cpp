@@ -16,7 +16,7 @@ namespace {
 
 // Each list is in its enum's order (glslrun.h), so a choice's index is the value.
 const std::vector<std::string_view> kTargets = {"1d", "2d", "3d", "cube_map", "rectangle", "1d_array", "2d_array"};
-const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component"};
+const std::vector<std::string_view> kFormats = {"rgba8", "rgba32f", "depth_component", "rgba16f"};
 const std::vector<std::string_view> kFilters = {"nearest", "linear", "nearest_mipmap_nearest",
                                                 "linear_mipmap_nearest", "nearest_mipmap_linear",
                                                 "linear_mipmap_linear"};
@@ -40,10 +40,50 @@ const std::vector<std::string_view> kTargetTextureKeys = {
     "render_target", "attachment", "min_filter", "mag_filter", "wrap_s", "wrap_t", "border_color", "min_lod",
     "max_lod", "lod_bias", "compare_mode", "compare_func", "depth_texture_mode"};
 
+// The float formats of fewer channels: their storage and what they keep.
+struct ChannelFormat {
+    std::string_view name;
+    TextureFormat storage;
+    TextureChannels channels;
+};
+constexpr ChannelFormat kChannelFormats[] = {
+    {"rgb16f", TextureFormat::RGBA16F, TextureChannels::Rgb},
+    {"rgb32f", TextureFormat::RGBA32F, TextureChannels::Rgb},
+    {"rg16f", TextureFormat::RGBA16F, TextureChannels::Rg},
+    {"rg32f", TextureFormat::RGBA32F, TextureChannels::Rg},
+    {"r16f", TextureFormat::RGBA16F, TextureChannels::Red},
+    {"r32f", TextureFormat::RGBA32F, TextureChannels::Red},
+    {"luminance16f", TextureFormat::RGBA16F, TextureChannels::Luminance},
+    {"luminance32f", TextureFormat::RGBA32F, TextureChannels::Luminance},
+    {"luminance_alpha16f", TextureFormat::RGBA16F, TextureChannels::LuminanceAlpha},
+    {"luminance_alpha32f", TextureFormat::RGBA32F, TextureChannels::LuminanceAlpha},
+    {"intensity16f", TextureFormat::RGBA16F, TextureChannels::Intensity},
+    {"intensity32f", TextureFormat::RGBA32F, TextureChannels::Intensity},
+    {"alpha16f", TextureFormat::RGBA16F, TextureChannels::Alpha},
+    {"alpha32f", TextureFormat::RGBA32F, TextureChannels::Alpha},
+};
+
+// A texel as a format of `channels` keeps it and GL returns it (red for
+// luminance and intensity, as glTexImage takes them from RGBA data).
+glm::vec4 keep_channels(TextureChannels channels, glm::vec4 v) {
+    switch (channels) {
+    case TextureChannels::Rgba: return v;
+    case TextureChannels::Rgb: return {v.r, v.g, v.b, 1.0f};
+    case TextureChannels::Rg: return {v.r, v.g, 0.0f, 1.0f};
+    case TextureChannels::Red: return {v.r, 0.0f, 0.0f, 1.0f};
+    case TextureChannels::Luminance: return {v.r, v.r, v.r, 1.0f};
+    case TextureChannels::LuminanceAlpha: return {v.r, v.r, v.r, v.a};
+    case TextureChannels::Intensity: return glm::vec4(v.r);
+    case TextureChannels::Alpha: return {0.0f, 0.0f, 0.0f, v.a};
+    }
+    return v;
+}
+
 // What every source of one texture needs to know.
 struct Context {
     TextureTarget target = TextureTarget::Tex2D;
     TextureFormat format = TextureFormat::RGBA8;
+    TextureChannels channels = TextureChannels::Rgba;
     std::string dir;  // the scene file's directory: image paths are relative to it
     std::vector<std::string>* files = nullptr;  // the image files read are added here
 };
@@ -96,14 +136,16 @@ Size3 read_size(const Section& s, const Context& c) {
 
 // A colour for texels: 3 or 4 numbers, or one number for a grey (L, L, L, 1)
 // as GL_LUMINANCE expands it (for a depth texture: the depth). Normalized
-// formats store [0, 1] only, so other values would be silently clamped.
+// formats store [0, 1] only, so other values would be silently clamped; the
+// float formats store any (rgba16f rounds each to a half, past 65504 to
+// infinity, as GL does).
 glm::vec4 texel_color(const toml::node& n, const std::string& what, const Context& c) {
     glm::dvec4 v = n.is_number() ? glm::dvec4(glm::dvec3(number(n, what)), 1.0) : color(n, what);
-    if (c.format == TextureFormat::RGBA32F) return glm::vec4(v);
+    if (c.format == TextureFormat::RGBA32F || c.format == TextureFormat::RGBA16F) return glm::vec4(v);
     for (int i = 0; i < 4; ++i)
         if (v[i] < 0 || v[i] > 1)
             fail(n, fmt::format("'{}' must be in [0, 1]: {} stores no other values (internal_format = "
-                                "\"rgba32f\" does); got {}", what, kFormats[size_t(c.format)], v[i]));
+                                "\"rgba16f\" and \"rgba32f\" do); got {}", what, kFormats[size_t(c.format)], v[i]));
     return glm::vec4(v);
 }
 
@@ -196,14 +238,20 @@ const toml::key* source_key(const Section& s, const std::vector<std::string_view
     return found;
 }
 
+TextureImage with_channels(TextureImage image, const Context& c) {
+    if (c.channels != TextureChannels::Rgba)
+        for (glm::vec4& t : image.texels) t = keep_channels(c.channels, t);
+    return image;
+}
+
 TextureImage read_image_source(const Section& s, std::string_view key, const Context& c) {
     const toml::node& n = *s.get(key);
     std::string what = s.name(key);
-    if (key == "image") return read_image_file(n, what, c);
+    if (key == "image") return with_channels(read_image_file(n, what, c), c);
     Section sub(table(n, what), what);
-    if (key == "checkerboard") return read_checkerboard(sub, c);
-    if (key == "rgbw") return read_rgbw(sub, c);
-    return read_solid(sub, c);
+    if (key == "checkerboard") return with_channels(read_checkerboard(sub, c), c);
+    if (key == "rgbw") return with_channels(read_rgbw(sub, c), c);
+    return with_channels(read_solid(sub, c), c);
 }
 
 // All images of one texture together (faces, levels) stay within the limit
@@ -216,7 +264,7 @@ void check_total(const toml::node& at, const std::string& texture, int64_t texel
 
 // An element of `faces` or `levels`: a file name, or a table with one source.
 TextureImage read_element(const toml::node& n, const std::string& what, const Context& c) {
-    if (n.is_string()) return read_image_file(n, what, c);
+    if (n.is_string()) return with_channels(read_image_file(n, what, c), c);
     Section s(table(n, what), what);
     s.allow(kImageSources);
     const toml::key* k = source_key(s, kImageSources, "one of image, checkerboard, rgbw or solid");
@@ -256,8 +304,13 @@ Context read_context(const Section& s, const std::string& dir) {
     if (s.get("layers") && !arrayed(c.target))
         fail(*s.get("layers"), fmt::format("'{}' is for target = \"1d_array\" or \"2d_array\" (this is \"{}\")",
                                            s.name("layers"), kTargets[size_t(c.target)]));
-    if (const toml::node* n = s.get("internal_format"))
-        c.format = TextureFormat(choice(*n, s.name("internal_format"), kFormats));
+    if (const toml::node* n = s.get("internal_format")) {
+        std::vector<std::string_view> names = kFormats;
+        for (const ChannelFormat& f : kChannelFormats) names.push_back(f.name);
+        const size_t i = choice(*n, s.name("internal_format"), names);
+        c.format = i < kFormats.size() ? TextureFormat(i) : kChannelFormats[i - kFormats.size()].storage;
+        if (i >= kFormats.size()) c.channels = kChannelFormats[i - kFormats.size()].channels;
+    }
     return c;
 }
 
@@ -459,6 +512,7 @@ TextureSetting read_texture(const Section& s, int unit, const std::string& dir, 
     SamplerState sampler = read_sampler(s, c);  // before the texels: cheap mistakes first
     if (c.target == TextureTarget::Rect) check_rectangle(s, sampler);
     Texture texture = build_texture(s, c);
+    setting.channels = c.channels;
     texture.sampler = sampler;
     if (setting.generate_mipmap) texture.generate_mipmaps();
     warn_if_incomplete(texture, unit, setting.where, scene);

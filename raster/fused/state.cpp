@@ -58,7 +58,7 @@ std::string state_key(const State& state) {
         k.add(f.fail), k.add(f.depth_fail), k.add(f.depth_pass);
     }
     k.add(o.depth_test), k.add(o.depth_write), k.add(o.depth_func);
-    k.add(o.blend), k.add(o.logic_op), k.add(o.float_color), k.add(o.rounding);
+    k.add(o.blend), k.add(o.logic_op), k.add(o.float_color), k.add(o.rounding), k.add(o.half_float);
     const BlendState& b = o.blend_state;
     k.add(b.src_rgb), k.add(b.dst_rgb), k.add(b.src_alpha), k.add(b.dst_alpha);
     k.add(b.equation_rgb), k.add(b.equation_alpha);

@@ -45,6 +45,7 @@ const std::vector<Change>& refused_changes() {
         {"the shader debugger", [](fused::State& s) { s.probe = true; }},
         {"an int input", [](fused::State& s) { s.inputs[0].kind = ir::Kind::I32; }},
         {"a non-float output", [](fused::State& s) { s.float_outputs = false; }},
+        {"half-float storage", [](fused::State& s) { s.ops.float_color = true, s.ops.half_float = true; }},
     };
     return changes;
 }

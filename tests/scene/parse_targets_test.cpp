@@ -1,6 +1,8 @@
 // [render_targets.NAME], the passes that draw into them (target, clear,
 // camera), the textures that sample them, [state] viewport, and the
 // projection entries of transform lists; and their mistakes.
+#include <limits>
+
 #include "glslrun/scene/render.h"
 #include "parse_helpers.h"
 
@@ -66,6 +68,49 @@ clear = { color = [1, 0, 0] }
     CHECK(glslrun::scene::color_buffers(s) == 1);
 }
 
+TEST_CASE("float render targets: rgba16f and rgba32f attachments, sampled in their format", "[scene][parse]") {
+    Scene s = parse_ok(R"([render_targets.hdr]
+size = [8, 4]
+internal_format = "rgba16f"
+color_buffers = 2
+[render_targets.wide]
+size = [4, 4]
+internal_format = "rgba32f"
+[render_targets.plain]
+size = [4, 4]
+[textures.0]
+render_target = "hdr"
+attachment = "color1"
+min_filter = "linear"
+[textures.1]
+render_target = "wide"
+min_filter = "nearest"
+[textures.2]
+render_target = "plain"
+min_filter = "nearest"
+[textures.3]
+internal_format = "rgba16f"
+solid = { size = [2, 2], color = [1.0001, 70000, -2.5, 0.5] }
+min_filter = "nearest"
+)");
+    REQUIRE(s.targets.size() == 3);
+    auto format_of = [&](const std::string& name) {
+        for (const auto& t : s.targets)
+            if (t.name == name) return t.format;
+        FAIL("no target " << name);
+        return glslrun::TextureFormat::Depth;
+    };
+    CHECK(format_of("hdr") == glslrun::TextureFormat::RGBA16F);
+    CHECK(format_of("wide") == glslrun::TextureFormat::RGBA32F);
+    CHECK(format_of("plain") == glslrun::TextureFormat::RGBA8);
+    CHECK(s.textures[0].texture->format() == glslrun::TextureFormat::RGBA16F);
+    CHECK(s.textures[1].texture->format() == glslrun::TextureFormat::RGBA32F);
+    CHECK(s.textures[2].texture->format() == glslrun::TextureFormat::RGBA8);
+    // Texels from data are stored as halves: 1.0001 to 1, 70000 to infinity.
+    const glm::vec4 t = s.textures[3].texture->levels(0)[0].texels[0];
+    CHECK(t == glm::vec4(1.0f, std::numeric_limits<float>::infinity(), -2.5f, 0.5f));
+}
+
 TEST_CASE("transform lists take gluLookAt, glOrtho, glFrustum, gluPerspective and inverses", "[scene][parse]") {
     Scene s = parse_ok(R"(
 [texture_matrix.1]
@@ -85,6 +130,8 @@ TEST_CASE("render target mistakes cite their line", "[scene][parse]") {
         {"[render_targets.a]\ncolor_buffers = 1\n", 1, "needs its size"},
         {"[render_targets.a]\nsize = [0, 4]\n", 2, "size 0x4 is not allowed"},
         {"[render_targets.a]\nsize = [4, 4]\ncolor_buffers = 9\n", 3, "must be"},
+        {"[render_targets.a]\nsize = [4, 4]\ninternal_format = \"rgb16f\"\n", 3, "rgba16f"},
+        {"[render_targets.a]\nsize = [4096, 4096]\ninternal_format = \"rgba32f\"\n", 1, "float ones counted 4 times"},
         {"[render_targets.a]\nsize = [8192, 4096]\n[render_targets.b]\nsize = [16, 16]\n", 3, "hold 67109376 pixels"},
         {"[textures.0]\nrender_target = \"nope\"\nmin_filter = \"linear\"\n", 2, "no [render_targets.nope]"},
         {"[render_targets.a]\nsize = [4, 4]\n[textures.0]\nrender_target = \"a\"\n", 4, "min_filter must be"},

@@ -24,6 +24,7 @@ using glslrun::TextureFormat;
 using glslrun::TextureImage;
 using glslrun::TextureTarget;
 using glslrun::TextureWrap;
+using glslrun::scene::TextureChannels;
 namespace fs = std::filesystem;
 
 namespace {
@@ -517,6 +518,27 @@ TEST_CASE("a float texture keeps values outside [0, 1]", "[scene][textures]") {
     const Texture& t = texture(s, 0);
     CHECK(t.format() == TextureFormat::RGBA32F);
     check_vec(texel(t, 0, 0), {2, -1, 0.3, 1});
+}
+
+TEST_CASE("float formats of fewer channels keep theirs and read GL's values for the rest", "[scene][textures]") {
+    const char* kSource = "min_filter = \"nearest\"\nsolid = { size = [1, 1], color = [2.5, 0.6, 0.9, 0.45] }\n";
+    const std::pair<const char*, glm::vec4> kCases[] = {
+        {"rgb32f", {2.5f, 0.6f, 0.9f, 1}},   {"rg32f", {2.5f, 0.6f, 0, 1}},
+        {"r32f", {2.5f, 0, 0, 1}},           {"luminance32f", {2.5f, 2.5f, 2.5f, 1}},
+        {"intensity32f", glm::vec4(2.5f)},    {"luminance_alpha32f", {2.5f, 2.5f, 2.5f, 0.45f}},
+        {"alpha32f", {0, 0, 0, 0.45f}},
+    };
+    for (const auto& [name, expected] : kCases) {
+        INFO(name);
+        Scene s = parse_ok(std::string("[textures.0]\ninternal_format = \"") + name + "\"\n" + kSource);
+        CHECK(texture(s, 0).format() == TextureFormat::RGBA32F);
+        CHECK(texel(texture(s, 0), 0, 0) == expected);
+        CHECK(s.textures[0].channels != TextureChannels::Rgba);
+    }
+    // The 16f forms store halves of what they keep: 0.6 to 0.60009765625.
+    Scene half = parse_ok(std::string("[textures.0]\ninternal_format = \"rg16f\"\n") + kSource);
+    CHECK(texture(half, 0).format() == TextureFormat::RGBA16F);
+    CHECK(texel(texture(half, 0), 0, 0).g == 0.60009765625f);
 }
 
 TEST_CASE("render_scene binds every [textures.N]; sampler uniforms pick the unit", "[scene][textures]") {

@@ -70,16 +70,31 @@ struct Upload {
 };
 
 // RGBA8 texels are already k/255 in glslrun, so the bytes are exact; depth
-// goes as floats (.r), as does RGBA32F.
-Upload texel_data(TextureFormat format, const TextureImage& image) {
+// goes as floats (.r), as do RGBA32F and RGBA16F.
+// A float format's GL internalformat: [channels][0 for 16F, 1 for 32F]
+// (ARB_texture_float, ARB_texture_rg), in scene::TextureChannels' order.
+constexpr GLint kFloatFormats[][2] = {
+    {GL_RGBA16F, GL_RGBA32F},
+    {GL_RGB16F, GL_RGB32F},
+    {GL_RG16F, GL_RG32F},
+    {GL_R16F, GL_R32F},
+    {GL_LUMINANCE16F_ARB, GL_LUMINANCE32F_ARB},
+    {GL_LUMINANCE_ALPHA16F_ARB, GL_LUMINANCE_ALPHA32F_ARB},
+    {GL_INTENSITY16F_ARB, GL_INTENSITY32F_ARB},
+    {GL_ALPHA16F_ARB, GL_ALPHA32F_ARB},
+};
+static_assert(std::size(kFloatFormats) == size_t(scene::TextureChannels::Alpha) + 1);
+
+Upload texel_data(TextureFormat format, scene::TextureChannels channels, const TextureImage& image) {
     Upload u;
     if (format == TextureFormat::RGBA8) {
         u.bytes.reserve(image.texels.size() * 4);
         for (const glm::vec4& t : image.texels)
             for (int c = 0; c < 4; ++c)
                 u.bytes.push_back(uint8_t(std::lround(std::clamp(t[c], 0.0f, 1.0f) * 255.0f)));
-    } else if (format == TextureFormat::RGBA32F) {
-        u.internal_format = GL_RGBA32F;
+    } else if (format == TextureFormat::RGBA32F || format == TextureFormat::RGBA16F) {
+        // Halves go as the floats they are: Mesa's conversion keeps them exactly.
+        u.internal_format = kFloatFormats[size_t(channels)][format == TextureFormat::RGBA16F ? 0 : 1];
         u.type = GL_FLOAT;
         for (const glm::vec4& t : image.texels) u.floats.insert(u.floats.end(), {t.r, t.g, t.b, t.a});
     } else {
@@ -91,9 +106,9 @@ Upload texel_data(TextureFormat format, const TextureImage& image) {
     return u;
 }
 
-void tex_image(const GLFunctions& gl, const Texture& t, int face, int level) {
+void tex_image(const GLFunctions& gl, const Texture& t, scene::TextureChannels channels, int face, int level) {
     const TextureImage& image = t.levels(face)[size_t(level)];
-    Upload u = texel_data(t.format(), image);
+    Upload u = texel_data(t.format(), channels, image);
     GLenum target = gl_target(t.target());
     if (t.target() == TextureTarget::Cube) target = GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
     switch (t.target()) {
@@ -190,7 +205,7 @@ Result<GLuint> upload_one(const GLFunctions& gl, const scene::TextureSetting& se
         int levels = generate ? std::min(t.sampler.base_level + 1, int(t.levels(face).size()))
                               : int(t.levels(face).size());
         for (int level = 0; level < levels; ++level)
-            if (t.levels(face)[size_t(level)].width > 0) tex_image(gl, t, face, level);  // width 0: never given
+            if (t.levels(face)[size_t(level)].width > 0) tex_image(gl, t, setting.channels, face, level);  // width 0: never given
     }
     // Without a base_level image GL refuses to generate and glslrun generates nothing.
     size_t base = size_t(t.sampler.base_level);
@@ -225,7 +240,10 @@ std::string attach_texture(const GLFunctions& gl, const scene::Scene& scene, int
                      GL_UNSIGNED_INT_24_8, nullptr);
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, id, 0);
     } else {
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        const GLint format = t.format == TextureFormat::RGBA16F   ? GL_RGBA16F
+                             : t.format == TextureFormat::RGBA32F ? GL_RGBA32F
+                                                                  : GL_RGBA8;
+        glTexImage2D(GL_TEXTURE_2D, 0, format, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + attachment), GL_TEXTURE_2D, id, 0);
     }
     if (!sampled) glBindTexture(GL_TEXTURE_2D, 0);  // unit 0 keeps what the file bound there

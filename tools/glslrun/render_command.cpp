@@ -256,7 +256,8 @@ std::string describe_textures(const scene::Scene& scene) {
     static constexpr std::array<const char*, size_t(TextureTarget::Tex2DArray) + 1> kTargets = {
         "1D", "2D", "3D", "cube", "rectangle", "1D array", "2D array"};
     static_assert(kTargets.back() != nullptr);
-    static constexpr const char* kFormats[] = {"RGBA8", "RGBA32F", "depth"};
+    static constexpr std::array<const char*, size_t(TextureFormat::RGBA16F) + 1> kFormats = {"RGBA8", "RGBA32F", "depth",
+                                                                                             "RGBA16F"};
     std::string out;
     for (const scene::TextureSetting& t : scene.textures) {
         const TextureImage& base = t.texture->levels(0).front();

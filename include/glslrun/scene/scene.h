@@ -79,9 +79,17 @@ struct CurrentAttribute {
 // final (read, generated, rounded to the internal format) and shared by every
 // renderer: render_scene binds the object itself, tools/glref uploads its
 // texels to Mesa, so both sample identical data.
+// The channels a float texture's internal format keeps (ARB_texture_float's
+// luminance, intensity and alpha formats, ARB_texture_rg's red and
+// red-green, RGB): the texels are stored expanded to RGBA as GL returns them
+// (missing green and blue 0, alpha 1; luminance and intensity repeat red),
+// and glref uploads them in the real format.
+enum class TextureChannels : uint8_t { Rgba, Rgb, Rg, Red, Luminance, LuminanceAlpha, Intensity, Alpha };
+
 struct TextureSetting {
     int unit = 0;
     std::shared_ptr<const Texture> texture;
+    TextureChannels channels = TextureChannels::Rgba;  // the float formats' (internal_format)
     // GL_GENERATE_MIPMAP: levels 1.. were generated from level 0. glref then
     // uploads level 0 only and lets Mesa generate the rest (glGenerateMipmap),
     // so the comparison also covers glslrun's mipmap generation.
@@ -168,6 +176,9 @@ struct RenderTarget {
     std::string name;
     int width = 0, height = 0;
     int color_buffers = 1;  // GL_COLOR_ATTACHMENT0 .. n-1
+    // The colour attachments' internal format: RGBA8, RGBA16F or RGBA32F
+    // (ARB_texture_float; float ones are drawn unclamped, ARB_color_buffer_float).
+    TextureFormat format = TextureFormat::RGBA8;
     SourceLoc where;
 };
 

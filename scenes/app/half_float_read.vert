@@ -1,0 +1,1 @@
+void main() { gl_TexCoord[0] = gl_MultiTexCoord0; gl_Position = gl_Vertex; }
