@@ -183,7 +183,8 @@ void set_texture(scene::Scene& s, int unit, const py::object& image, bool linear
                                          : texture.sampler.mag_filter;
     texture.sampler.wrap_s = texture.sampler.wrap_t =
         wrap ? parse_wrap(*wrap) : target == TextureTarget::Rect ? TextureWrap::ClampToEdge : TextureWrap::Repeat;
-    scene::TextureSetting setting{unit, std::make_shared<const Texture>(std::move(texture)), mipmaps, -1, 0,
+    scene::TextureSetting setting{unit, std::make_shared<const Texture>(std::move(texture)),
+                                  scene::TextureChannels::Rgba, mipmaps, -1, 0,
                                   {"set_texture", 0}};
     for (scene::TextureSetting& t : s.textures)
         if (t.unit == unit) {
