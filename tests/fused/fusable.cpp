@@ -8,24 +8,12 @@
 #include <vector>
 
 #include "raster/fused/state.h"
+#include "tests/fused/states.h"
 
 using namespace glslrun;
 using namespace glslrun::raster;
 
 namespace {
-
-// A state the generated code has always taken: a varying, gl_FragColor, an
-// early depth test.
-fused::State plain_state() {
-    fused::State s;
-    s.inputs = {{fused::InputSource::Varying, 0, ir::Kind::F32, false},
-                {fused::InputSource::FrontFacing, 0, ir::Kind::Bool, false}};
-    s.color_channels = 4;
-    s.ops.depth_test = true;
-    s.early_depth = true;
-    s.avx2 = true;
-    return s;
-}
 
 // A State with a field that nobody taught the generated code, as a new GL
 // state would be.
@@ -69,7 +57,7 @@ const std::vector<Change>& generated_changes() {
 }  // namespace
 
 TEST_CASE("fusable takes the states the generated code knows", "[fused]") {
-    fused::State s = plain_state();
+    fused::State s = fused_test::plain_state(true);
     CHECK(fused::fusable(s));
     s.ops.blend = true;
     s.ops.blend_state.src_rgb = BlendFactor::SrcAlpha;
@@ -79,7 +67,7 @@ TEST_CASE("fusable takes the states the generated code knows", "[fused]") {
     s.ops.float_color = true;
     CHECK(fused::fusable(s));
     // A disabled test's settings do not matter.
-    fused::State off = plain_state();
+    fused::State off = fused_test::plain_state(true);
     off.ops.alpha_func = CompareFunc::Never;
     off.ops.stencil[1].func = CompareFunc::Equal;
     off.ops.logic = LogicOp::Xor;
@@ -88,7 +76,7 @@ TEST_CASE("fusable takes the states the generated code knows", "[fused]") {
 
 TEST_CASE("fusable takes each state the generated code implements", "[fused]") {
     for (const Change& change : generated_changes()) {
-        fused::State s = plain_state();
+        fused::State s = fused_test::plain_state(true);
         change.apply(s);
         INFO(change.name);
         CHECK(fused::fusable(s));
@@ -97,7 +85,7 @@ TEST_CASE("fusable takes each state the generated code implements", "[fused]") {
 
 TEST_CASE("fusable refuses each state the generated code does not implement", "[fused]") {
     for (const Change& change : refused_changes()) {
-        fused::State s = plain_state();
+        fused::State s = fused_test::plain_state(true);
         change.apply(s);
         INFO(change.name);
         CHECK_FALSE(fused::fusable(s));
@@ -108,15 +96,15 @@ TEST_CASE("fusable refuses a state field that nobody taught it", "[fused]") {
     // The rule resets what it knows and compares the rest with a default
     // state: a new field set away from its default is left over.
     FutureState s;
-    static_cast<fused::State&>(s) = plain_state();
+    static_cast<fused::State&>(s) = fused_test::plain_state(true);
     CHECK(fused::only_known_fields(s));
     s.new_operation = 1;
     CHECK_FALSE(fused::only_known_fields(s));
 }
 
 TEST_CASE("state_key tells states apart and keeps equal ones together", "[fused]") {
-    const fused::State base = plain_state();
-    CHECK(fused::state_key(base) == fused::state_key(plain_state()));
+    const fused::State base = fused_test::plain_state(true);
+    CHECK(fused::state_key(base) == fused::state_key(fused_test::plain_state(true)));
     // NaN's bits: a state's key is its own.
     fused::State nan = base;
     nan.ops.alpha_test = true;

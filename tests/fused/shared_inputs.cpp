@@ -5,25 +5,10 @@
 
 #include "glslrun/glslrun.h"
 #include "raster/fused/pipeline.h"
+#include "tests/fused/states.h"
 
 using namespace glslrun;
 using namespace glslrun::raster;
-
-namespace {
-
-// A varying and gl_FrontFacing, gl_FragColor, an early depth test.
-fused::State early_state() {
-    fused::State s;
-    s.inputs = {{fused::InputSource::Varying, 0, ir::Kind::F32, false},
-                {fused::InputSource::FrontFacing, 0, ir::Kind::Bool, false}};
-    s.color_channels = 4;
-    s.ops.depth_test = true;
-    s.early_depth = true;
-    s.avx2 = __builtin_cpu_supports("avx2");
-    return s;
-}
-
-}  // namespace
 
 TEST_CASE("a program's fused pipelines share one inputs function", "[fused]") {
     if (!jit_available()) return;  // no pipelines without the JIT
@@ -31,7 +16,7 @@ TEST_CASE("a program's fused pipelines share one inputs function", "[fused]") {
     cache.count_unfused(fused::kPipelineAfterFragments);
     ExecOptions options;
     options.code_cache = false;
-    const fused::State early = early_state();
+    const fused::State early = fused_test::plain_state(__builtin_cpu_supports("avx2"));
     fused::State blended = early;  // another state, the same inputs
     blended.ops.blend = true;
     blended.early_depth = false;
