@@ -220,7 +220,9 @@ Result<UndefinedReport> check_undefined(const std::vector<ShaderSource>& vertex,
         lists.push_back(&pass.vertex);
         lists.push_back(&pass.fragment);
     }
-    return build_report(probe, lists);
+    UndefinedReport report = build_report(probe, lists);
+    report.warnings = programs->warnings();
+    return report;
 }
 
 Result<UndefinedReport> check_undefined(const std::vector<ShaderSource>& vertex,

@@ -494,6 +494,7 @@ int run_check_undefined(const Inputs& in, const RenderOptions& o, const scene::S
     compile.include_dirs = o.include_dirs;
     auto report = scene::check_undefined(in.vertex, in.fragment, scene, exec, fb, compile);
     if (!report) return fail(report.error());
+    for (const Diagnostic& w : report->warnings) fmt::print(stderr, "{}\n", w.str());
     if (!output.empty())
         if (Status st = write_buffers(fb, output); !st) return fail(st.error(), kToolError);
     std::fputs(scene::format_undefined(*report).c_str(), stdout);

@@ -55,6 +55,7 @@ struct UndefinedFinding {
 struct UndefinedReport {
     std::vector<UndefinedFinding> findings;  // by file, line, column
     uint32_t draws = 0;                      // draws looked at
+    std::vector<Diagnostic> warnings;        // the scene's (ScenePrograms::warnings)
 };
 
 // Renders `scene` with the programs of `vertex` and `fragment` (and its
