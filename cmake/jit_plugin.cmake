@@ -28,7 +28,10 @@ add_library(glslrun_jit MODULE ${GLSLRUN_JIT_SOURCES})
 set_target_properties(glslrun_jit PROPERTIES OUTPUT_NAME glslrun-jit PREFIX lib
   LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR} POSITION_INDEPENDENT_CODE ON)
 target_compile_options(glslrun_jit PRIVATE ${GLSLRUN_WARNINGS} -fvisibility=hidden -fvisibility-inlines-hidden)
-target_compile_definitions(glslrun_jit PRIVATE GLSLRUN_LANES=${GLSLRUN_LANES}
+target_compile_definitions(glslrun_jit PRIVATE GLSLRUN_LANES=${GLSLRUN_LANES})
+# The key on its one user only: the plugin's other objects stay the same from one
+# build directory to the next, so ccache shares them.
+set_property(SOURCE ${PROJECT_SOURCE_DIR}/runtime/jit/entry.cpp APPEND PROPERTY COMPILE_DEFINITIONS
   GLSLRUN_JIT_BUILD_KEY="${GLSLRUN_JIT_BUILD_KEY}")
 target_include_directories(glslrun_jit PRIVATE ${PROJECT_SOURCE_DIR})
 target_include_directories(glslrun_jit SYSTEM PRIVATE ${GLSLRUN_LLVM_INCLUDE})

@@ -41,12 +41,28 @@ cmake --build build -j "$(nproc)"
 cmake --install build > /dev/null  # prefix /usr/local: glslrun is on PATH, `import glslrun` works
 ldconfig
 
+# A build whose output would drown the log: kept in DIR/build.log, and its end
+# printed (with the free disk space, the usual cause on a shared machine) if it fails.
+quiet_build() {
+    local dir=$1; shift
+    cmake --build "$dir" -j "$(nproc)" --target "$@" > "$dir/build.log" 2>&1 || {
+        tail -n 40 "$dir/build.log" >&2
+        df -h "$dir" >&2
+        echo "the build in $dir failed (its whole output: $dir/build.log)" >&2
+        exit 1
+    }
+}
+
 case "$mode" in
 demo)
     glslrun shaders/spot_pix_fixed.vert shaders/spot_pix_fixed.frag scenes/spot.toml -o spot.png --stats
     echo "wrote spot.png with $(command -v glslrun)"
     ;;
 test)
+    # This run's build trees and ccache take about 10 GB: a disk that fills up
+    # shows as a failed build, so say so first.
+    avail_kb=$(df -Pk . | awk 'NR == 2 {print $4}')
+    [ "$avail_kb" -gt $((10 * 1024 * 1024)) ] || echo "warning: $((avail_kb / 1024)) MB free on $(pwd)'s disk; the builds below need about 10 GB" >&2
     # The IR verifier after every pass, in every run below (ctest sets it for its tests too).
     export GLSLRUN_VERIFY=1
     # The JIT's code cache of every run below: a directory of this run's own,
@@ -66,8 +82,10 @@ test)
     # with 8 and 64 lanes and compare every scene image in every mode.
     bash tools/image_hashes.sh build/glslrun > build/hashes-default.txt
     for lanes in 8 64; do
-        cmake -S . -B "build-lanes$lanes" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLSLRUN_LANES=$lanes "${launcher[@]}" > /dev/null
-        cmake --build "build-lanes$lanes" -j "$(nproc)" --target glslrun test_fused test_runtime > /dev/null
+        # No debug information: these trees are only run, and -g made each of them about 1 GB.
+        cmake -S . -B "build-lanes$lanes" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+              -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -DNDEBUG" -DGLSLRUN_LANES=$lanes "${launcher[@]}" > /dev/null
+        quiet_build "build-lanes$lanes" glslrun test_fused test_runtime
         bash tools/image_hashes.sh "build-lanes$lanes/glslrun" > "build/hashes-$lanes.txt"
         diff build/hashes-default.txt "build/hashes-$lanes.txt" || { echo "images differ with $lanes lanes" >&2; exit 1; }
         echo "batch width $lanes: $(wc -l < build/hashes-default.txt) images identical to the default build (32 lanes)"
