@@ -17,8 +17,9 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 
 launcher=()
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# -g1: line tables are all a sanitizer's report needs (full debug information made this tree 1.1 GB).
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-      -DGLSLRUN_SANITIZE=ON -DGLSLRUN_FUZZ=ON "${launcher[@]}" > /dev/null
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DGLSLRUN_SANITIZE=ON -DGLSLRUN_FUZZ=ON "${launcher[@]}" > /dev/null
 tests=(test_frontend test_runtime test_api test_raster test_piglit)
 cmake --build build-asan -j "$(nproc)" --target glslrun "${tests[@]}" fuzz_compile fuzz_scene fuzz_piglit fuzz_api
 (cd build-asan && ctest --output-on-failure -j "$(nproc)" -R '^(frontend|runtime|api|raster|piglit|cli_hardening)$')
