@@ -146,8 +146,10 @@ GLState object_state(PyProgram& program, const scene::Scene& scene, size_t objec
         throw py::index_error("the scene has " + std::to_string(scene.objects.size()) + " objects");
     const scene::Object& o = scene.objects[object];
     GLState gl = scene::object_gl_state(scene, take(scene::bind_scene_textures(scene)), o);
-    check(scene::apply_uniforms(program, scene.uniforms));
-    check(scene::apply_uniforms(program, o.uniforms));
+    // The scene's entries that the program does not declare are skipped, as render() skips them.
+    const bool skip_undeclared = true;
+    check(scene::apply_uniforms(program, scene.uniforms, skip_undeclared));
+    check(scene::apply_uniforms(program, o.uniforms, skip_undeclared));
     check(scene::apply_uniforms(program, program.user_uniforms));  // the user's win, as on render()
     check(apply_builtin_uniforms(program, gl));
     return gl;

@@ -103,14 +103,17 @@ Image to_image(const FloatImage& color, ColorRounding rounding) {
 }
 
 // Every vertex output of every object, objects one after the other.
+// Scene entries the program does not declare are skipped, as the renders skip
+// them (ErrorReport::warnings names them).
 Result<std::vector<std::vector<ShaderOutput>>> shade_scene_vertices(Program& prog, const Scene& scene) {
-    if (Status st = apply_uniforms(prog, scene.uniforms); !st) return st.error();
+    const bool skip_undeclared = true;
+    if (Status st = apply_uniforms(prog, scene.uniforms, skip_undeclared); !st) return st.error();
     auto bound = bind_scene_textures(scene);
     if (!bound) return bound.error();
     std::vector<std::vector<ShaderOutput>> objects;
     for (const Object& object : scene.objects) {
         GLState gl = object_gl_state(scene, *bound, object);
-        if (Status st = apply_uniforms(prog, object.uniforms); !st) return st.error();
+        if (Status st = apply_uniforms(prog, object.uniforms, skip_undeclared); !st) return st.error();
         if (Status st = apply_builtin_uniforms(prog, gl); !st) return st.error();
         auto out = run_vertices(prog, object.mesh.attribs, object.mesh.vertex_count, &gl);
         if (!out) return out.error();
@@ -211,6 +214,10 @@ Result<ErrorReport> measure_error(const std::vector<ShaderSource>& vertex, const
     auto actual = compile_for(vertex, fragment, options.mode, options);
     if (!actual) return actual.error();
     ErrorReport report;
+    // What a render of the scene warns of (an entry no program uses), and its errors first.
+    auto programs = ScenePrograms::compile(*actual, scene, options.compile);
+    if (!programs) return programs.error();
+    report.warnings = programs->warnings();
     report.mode = options.mode;
     report.scene = scene.path;
     report.width = scene.width;

@@ -133,3 +133,6 @@ def test_a_scene_uniform_that_no_program_uses_is_a_warning(tmp_path):
     with pytest.warns(RuntimeWarning, match=meant):
         image = glslrun.render(*(str(tmp_path / n) for n in ("a.vert", "a.frag", "s.toml")))
     assert centre(image) == (128, 128, 128, 255)
+    # The scene's state for one object, as run_fragments applies it: the entry is skipped there too.
+    out = program.run_fragments({}, count=4, scene=glslrun.Scene.parse(text))
+    np.testing.assert_allclose(out["gl_FragColor"][0], [0.5, 0.5, 0.5, 1])

@@ -97,6 +97,9 @@ grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour'
 "$glslrun" "$vs" base.frag unused.toml --check-undefined >/dev/null 2>err.txt || fail "--check-undefined, unused entry: $(cat err.txt)"
 grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour'" err.txt ||
     fail "--check-undefined does not warn of an unused [uniforms] entry: $(cat err.txt)"
+"$glslrun" "$vs" base.frag unused.toml --error-report er_unused >/dev/null 2>err.txt || fail "--error-report, unused entry: $(cat err.txt)"
+grep -qF "unused.toml:5: warning: the program has no active uniform 'basecolour'" err.txt ||
+    fail "--error-report does not warn of an unused [uniforms] entry: $(cat err.txt)"
 
 # ---- .glsl and --stage, glslrun check, the pass-through vertex shader.
 cp "$fs" plain.glsl

@@ -50,6 +50,7 @@ int run_error_report(const std::vector<ShaderSource>& vertex, const std::vector<
     options.compile.include_dirs = o.include_dirs;
     auto report = scene::measure_error(vertex, fragment, scene, options);
     if (!report) return fail(report.error());
+    for (const Diagnostic& w : report->warnings) fmt::print(stderr, "{}\n", w.str());
     auto files = scene::write_error_images(*report, o.error_report, [&](const std::string& path) {
         return inputs.check_output(path, "--error-report");
     });

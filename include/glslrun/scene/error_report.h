@@ -46,6 +46,7 @@ struct ErrorReport {
     std::vector<AblationRow> ablation;     // mode Fast only
     Image reference_image, mode_image;     // as the PNGs of a normal render would hold them
     std::vector<std::string> notes;        // what is not compared, and why
+    std::vector<Diagnostic> warnings;      // the scene's, as a render prints them (ScenePrograms::warnings)
 };
 
 struct ErrorReportOptions {
