@@ -196,6 +196,14 @@ void sweep(std::mt19937& rng, Texture& texture, bool shadow) {
                     }
 }
 
+// One filter for minification and magnification, and the wraps of s, t and r.
+void set_filter_wraps(Texture& t, TextureFilter filter, TextureWrap s, TextureWrap u, TextureWrap r) {
+    t.sampler.min_filter = t.sampler.mag_filter = filter;
+    t.sampler.wrap_s = s;
+    t.sampler.wrap_t = u;
+    t.sampler.wrap_r = r;
+}
+
 }  // namespace
 
 TEST_CASE("batched sampling equals per-lane sampling: 1D and 2D, every filter and wrap", "[sampling][batch]") {
@@ -409,10 +417,7 @@ TEST_CASE("batched sampling equals per-lane sampling: one-pass 3D kernels", "[sa
                 for (TextureWrap s : kInner)
                     for (TextureWrap u : kInner)
                         for (TextureWrap r : kInner) {
-                            t.sampler.min_filter = t.sampler.mag_filter = filter;
-                            t.sampler.wrap_s = s;
-                            t.sampler.wrap_t = u;
-                            t.sampler.wrap_r = r;
+                            set_filter_wraps(t, filter, s, u, r);
                             const bool border = filter == TextureFilter::Linear &&
                                                 (s == TextureWrap::Clamp || u == TextureWrap::Clamp ||
                                                  r == TextureWrap::Clamp);
@@ -446,9 +451,7 @@ TEST_CASE("batched sampling equals per-lane sampling: shadow-map kernels", "[sam
                 for (TextureWrap s : kWraps)
                     for (TextureWrap u : kWraps)
                         for (CompareFunc func : kFuncs) {
-                            t.sampler.min_filter = t.sampler.mag_filter = filter;
-                            t.sampler.wrap_s = s;
-                            t.sampler.wrap_t = u;
+                            set_filter_wraps(t, filter, s, u, TextureWrap::Repeat);
                             t.sampler.compare_func = func;
                             t.sampler.depth_mode = DepthTextureMode(int(func) % 3);
                             const bool linear = filter == TextureFilter::Linear;
