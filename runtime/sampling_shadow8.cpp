@@ -49,6 +49,7 @@ template <CompareFunc kFunc>
 
 template <bool kLinear, Rule kS, Rule kT, CompareFunc kFunc>
 GLSLRUN_AVX2 void shadow8(const Map& map, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+    static_assert(kLanes % 8 == 0, "eight lanes at a time");
     const V zero = _mm256_setzero_ps(), one = splat(1.0f);
     const I width = splat_i(map.w.n);
     for (int g = 0; g < kLanes; g += 8) {
