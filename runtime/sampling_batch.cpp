@@ -13,6 +13,7 @@
 #include "runtime/sampling_levels.h"
 #include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
+#include "runtime/sampling_shadow8.h"
 
 namespace glslrun::rt {
 
@@ -368,7 +369,6 @@ template <TextureWrap kWrap, bool kRect>
 #include "runtime/sampling_batch_lanes8.h"  // the eight-lane steps of the lookups below
 
 #include "runtime/sampling_batch_cube.h"  // cube maps, eight lanes at a time
-#include "runtime/sampling_batch_shadow.h"  // shadow maps (2D depth comparisons), eight lanes at a time
 #undef GLSLRUN_AVX2
 #endif
 
@@ -687,8 +687,7 @@ template <bool kAvx2>
                                        float (*out)[kLanes]) {
 #if defined(__x86_64__) && defined(__GNUC__)
     if constexpr (kAvx2)
-        if (sample_cube_direct(texture, lk, lanes, out) || sample_shadow_direct(texture, lk, lanes, out))
-            return;
+        if (sample_cube_direct(texture, lk, lanes, out)) return;
 #endif
     Lanes l;
     if (lk.ref)
@@ -736,6 +735,7 @@ void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask la
     if (avx2 && direct_samples(texture)) return sample_direct(texture, lookup, lanes, out);
     if (avx2 && mip2d_samples(texture)) return sample_mip2d(texture, lookup, lanes, out);
     if (avx2 && direct3d_samples(texture)) return sample_direct3d(texture, lookup, lanes, out);
+    if (avx2 && shadow8_samples(texture, lookup)) return sample_shadow8(texture, lookup, lanes, out);
     if (avx2) return run_avx2(texture, lookup, lanes, out);
 #endif
     (void)avx2;

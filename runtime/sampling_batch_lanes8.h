@@ -1,7 +1,6 @@
 // Part of sampling_batch.cpp's translation unit, included inside its
 // anonymous namespace after the AVX2 blends: the small eight-lane steps
-// that the AVX2 lookups of cube maps and shadow maps share
-// (sampling_batch_cube.h, sampling_batch_shadow.h).
+// of the AVX2 lookups of cube maps (sampling_batch_cube.h).
 
 // An eight-lane mask from bits 0..7 (bit k: lane g + k).
 [[gnu::always_inline]] GLSLRUN_AVX2 inline __m256 mask8(int bits) {
@@ -11,20 +10,6 @@
 
 [[gnu::always_inline]] GLSLRUN_AVX2 inline __m256i ints8(const int* p) {
     return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
-}
-
-// The offsets of a bilinear footprint's corners (x0, y0), (x1, y0), (x0, y1),
-// (x1, y1) in an image of width w, for lanes g..g+7 (indices in the image:
-// w * h below 2^24, limits.md, so no overflow).
-[[gnu::always_inline]] inline void corners8(const int* x0, const int* x1, const int* y0, const int* y1, int w, int g,
-                                            int (*at)[kLanes]) {
-    for (int k = g; k < g + 8; ++k) {
-        const int row0 = y0[k] * w, row1 = y1[k] * w;
-        at[0][k] = row0 + x0[k];
-        at[1][k] = row0 + x1[k];
-        at[2][k] = row1 + x0[k];
-        at[3][k] = row1 + x1[k];
-    }
 }
 
 // Lanes g..g+7's four channels into out where `store` (all ones) says so,

@@ -24,6 +24,7 @@
 #include "runtime/sampling_direct3d.h"
 #include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
+#include "runtime/sampling_shadow8.h"
 #include "runtime/texture_levels.h"
 #include "tests/runtime/sampling_inputs.h"
 
@@ -193,6 +194,14 @@ void sweep(std::mt19937& rng, Texture& texture, bool shadow) {
                         for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads})
                             for (int batch = 0; batch < 2; ++batch) check_batch(rng, texture, shadow, lod, spread);
                     }
+}
+
+// One filter for minification and magnification, and the wraps of s, t and r.
+void set_filter_wraps(Texture& t, TextureFilter filter, TextureWrap s, TextureWrap u, TextureWrap r) {
+    t.sampler.min_filter = t.sampler.mag_filter = filter;
+    t.sampler.wrap_s = s;
+    t.sampler.wrap_t = u;
+    t.sampler.wrap_r = r;
 }
 
 }  // namespace
@@ -408,10 +417,7 @@ TEST_CASE("batched sampling equals per-lane sampling: one-pass 3D kernels", "[sa
                 for (TextureWrap s : kInner)
                     for (TextureWrap u : kInner)
                         for (TextureWrap r : kInner) {
-                            t.sampler.min_filter = t.sampler.mag_filter = filter;
-                            t.sampler.wrap_s = s;
-                            t.sampler.wrap_t = u;
-                            t.sampler.wrap_r = r;
+                            set_filter_wraps(t, filter, s, u, r);
                             const bool border = filter == TextureFilter::Linear &&
                                                 (s == TextureWrap::Clamp || u == TextureWrap::Clamp ||
                                                  r == TextureWrap::Clamp);
@@ -426,9 +432,45 @@ TEST_CASE("batched sampling equals per-lane sampling: one-pass 3D kernels", "[sa
         }
 }
 
-// The `tex` kernel itself: lanes on several units (and on none: unbound, out
-// of range, an incomplete texture), some inactive, some skipping their
-// lookups; each lane must read what sample_complete_lane() gives it.
+// The shadow-map kernels (sampling_shadow8.h): odd sizes and a one-texel
+// axis, every compare function and depth mode, NEAREST and LINEAR, every
+// wrap pair (those that may meet the border refused), a base level above 0
+// (the depths of the level read, not level 0's).
+TEST_CASE("batched sampling equals per-lane sampling: shadow-map kernels", "[sampling][batch]") {
+    std::mt19937 rng(2468);
+    constexpr CompareFunc kFuncs[] = {CompareFunc::Never,   CompareFunc::Less,     CompareFunc::Equal,
+                                      CompareFunc::Lequal,  CompareFunc::Greater,  CompareFunc::Notequal,
+                                      CompareFunc::Gequal,  CompareFunc::Always};
+    for (auto [w, h] : {std::pair{13, 7}, {1, 5}, {6, 1}}) {
+        Texture t = make(rng, TextureTarget::Tex2D, TextureFormat::Depth, w, h);
+        t.sampler.compare = true;
+        t.sampler.border_color = {0.4f, 0.0f, 0.0f, 0.0f};
+        for (int base : {0, 1}) {
+            t.sampler.base_level = base;
+            for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+                for (TextureWrap s : kWraps)
+                    for (TextureWrap u : kWraps)
+                        for (CompareFunc func : kFuncs) {
+                            set_filter_wraps(t, filter, s, u, TextureWrap::Repeat);
+                            t.sampler.compare_func = func;
+                            t.sampler.depth_mode = DepthTextureMode(int(func) % 3);
+                            const bool linear = filter == TextureFilter::Linear;
+                            const auto border = [&](TextureWrap wrap) {
+                                return wrap == TextureWrap::ClampToBorder || (linear && wrap == TextureWrap::Clamp);
+                            };
+#if defined(__x86_64__) && defined(__GNUC__)
+                            rt::BatchLookup lk;
+                            float ref[rt::kLanes] = {};
+                            lk.ref = ref;
+                            REQUIRE(rt::shadow8_samples(t, lk) == !(border(s) || border(u)));
+#endif
+                            check_batch(rng, t, true, ir::TexLod::Implicit);
+                            check_batch(rng, t, true, ir::TexLod::Explicit, Spread::Shared);
+                        }
+        }
+    }
+}
+
 TEST_CASE("the tex kernel samples each unit's lanes and leaves the others", "[sampling][batch][kernel]") {
     std::mt19937 rng(31);
     std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
