@@ -82,9 +82,12 @@ TEST_CASE("auto: a short render compiles nothing; a long one compiles and keeps 
         CHECK(meter.lanes[0].load() == uint64_t(rt::kLanes));
         CHECK_FALSE(meter.queued.load());
         CHECK(cache->jit_compile_seconds() == 0);
-        // Interpreting as long as the compile would take queues it.
+        // Interpreting as long as the compile would take queues it. The interpreter
+        // serves meanwhile, unless the compile thread (a small shader) has already
+        // finished when the queueing call looks for its code.
         meter.nanos[0] = 1'000'000'000;
-        CHECK(cache->auto_executor(shader, jit, interp, params)->runner() == rt::Runner::Interp);
+        if (cache->auto_executor(shader, jit, interp, params)->runner() == rt::Runner::Jit)
+            CHECK(cache->jit_compile_seconds() > 0);  // kept, with its compile time
         CHECK(meter.queued.load());
         wait_for_queue();
         CHECK(cache->jit_compile_seconds() > 0);
