@@ -63,6 +63,7 @@ private:
     Rect scissor_;
     int columns_ = 0, rows_ = 0;
     std::vector<std::vector<const FsPrimitive*>> bins_;  // per tile, in submission order
+    std::vector<size_t> touched_;                        // the bins filled since reset(), each once
     uint64_t area_ = 0;                                  // sum of the primitives' bounds, in pixels
 };
 
