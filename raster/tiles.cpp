@@ -125,8 +125,8 @@ TileResult TileBins::render(const TileTarget& target, FragmentStage& stage, unsi
     // pipeline (1080p spot, 1 thread, 2026-11-26): 9.6 -> 10.6 ms CPU per frame with the clear
     // in the tile jobs, 10.1 with streaming stores for the tiles no primitive touches, while the
     // early depth test's share of the profile stayed the same (docs/performance.md, #12).
-    constexpr unsigned kFusedClearMinThreads = 4;
-    if (clear && rt::thread_count(threads, SIZE_MAX) < kFusedClearMinThreads) {
+    // (kTileClearMinThreads; with 2 or 3, draw() may clear ahead on a thread of its own.)
+    if (clear && rt::thread_count(threads, SIZE_MAX) < kTileClearMinThreads) {
         clear_rect(target.fb, *clear, 0, 0, target.fb.width, target.fb.height);
         clear = nullptr;
     }

@@ -18,6 +18,10 @@ namespace glslrun::raster {
 inline constexpr int kTileSize = 64;
 static_assert(kTileSize % kBlockSize == 0);
 
+// From this many threads render() clears in its tile jobs; with fewer it
+// clears the whole target first, on the calling thread (TileBins::render).
+inline constexpr unsigned kTileClearMinThreads = 4;
+
 struct TileTarget {
     const Program& program;
     const GLState& gl;

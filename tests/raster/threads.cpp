@@ -486,3 +486,55 @@ TEST_CASE("a draw that clears and fails leaves no pixel uncleared", "[raster][th
         CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
     }
 }
+
+TEST_CASE("a large draw clears on a thread of its own at 2 or 3 threads: the same pixels", "[raster][threads][clear]") {
+    // 640x520 pixels and 9,000 vertices: over the sizes from which draw()
+    // clears ahead, while the vertices and setup run (raster/draw.cpp).
+    constexpr int kWidth = 640, kHeight = 520;
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    Geometry g = small_triangles(21, 3000);
+    const ClearValues both{glm::vec4(0.1f, 0.25f, 0.5f, 1.0f), 0.9f, std::nullopt};
+    const ClearValues kinds[] = {both, {both.color, std::nullopt, std::nullopt}, {std::nullopt, 0.6f, std::nullopt}};
+    for (size_t kind = 0; kind < std::size(kinds); ++kind)
+        for (unsigned threads : {1u, 2u, 3u, 7u}) {
+            INFO("clear " << kind << " threads " << threads);
+            const ClearValues& clear = kinds[kind];
+            GLState gl;
+            gl.depth_test = true;
+            p.exec.threads = threads;
+            Framebuffer eager = dirty_framebuffer(kWidth, kHeight, false);
+            if (clear.color) eager.clear_color(*clear.color);
+            if (clear.depth) eager.clear_depth(*clear.depth);
+            REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+            Framebuffer fused = dirty_framebuffer(kWidth, kHeight, false);
+            REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+            CHECK(distinct_colors(fused) > 20u);
+            CHECK(color_differences(eager, fused) == 0u);
+            CHECK(differences<float>(eager.depth, fused.depth) == 0u);
+        }
+    // Failing draws, in the tiles (the fragment shader's loop cap) and before
+    // them (the vertex shader's): every pixel is cleared all the same.
+    Program fs_fails = compile(kColorVs, kRunawayFs);
+    Program vs_fails = compile(R"(
+void main() {
+    float x = 0.0;
+    while (x < 1.0) { x += gl_Vertex.x > 0.9 ? 0.0 : 0.5; }
+    gl_Position = gl_Vertex * x;
+    gl_FrontColor = gl_Color;
+})", "void main() { gl_FragColor = gl_Color; }");
+    for (Program* failing : {&fs_fails, &vs_fails})
+        for (unsigned threads : {2u, 3u}) {
+            INFO((failing == &fs_fails ? "fragment" : "vertex") << " shader fails, threads " << threads);
+            failing->exec.max_loop_iterations = 1000;
+            failing->exec.threads = threads;
+            Framebuffer fb = dirty_framebuffer(kWidth, kHeight, false);
+            auto stats = draw(*failing, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f, std::nullopt},
+                              Primitive::Triangles, {g.pos, g.color}, g.count);
+            REQUIRE_FALSE(stats.ok());
+            int dirty = 0;
+            for (int y = 0; y < fb.height; ++y)
+                for (int x = 0; x < fb.width; ++x) dirty += fb.pixel(x, y) == glm::vec4(kDirtyByte / 255.0f);
+            CHECK(dirty == 0);
+            CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+        }
+}
