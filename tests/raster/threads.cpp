@@ -436,6 +436,30 @@ Framebuffer dirty_framebuffer(int w, int h, bool float_color) {
     return fb;
 }
 
+// draw() with `clear` against the same clear made eagerly, then the draw:
+// both from a dirty framebuffer; returns the former.
+Framebuffer check_clear_then_draw(Program& p, const GLState& gl, const Geometry& g, const ClearValues& clear, int w,
+                                  int h, bool float_color) {
+    Framebuffer eager = dirty_framebuffer(w, h, float_color);
+    if (clear.color) eager.clear_color(*clear.color);
+    if (clear.depth) eager.clear_depth(*clear.depth);
+    REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+    Framebuffer fused = dirty_framebuffer(w, h, float_color);
+    REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+    CHECK(color_differences(eager, fused) == 0u);
+    CHECK(differences<float>(eager.depth, fused.depth) == 0u);
+    return fused;
+}
+
+// No pixel of fb is left dirty: the clear is 51, the shader writes alpha 255.
+void check_no_dirty_pixel(const Framebuffer& fb) {
+    int dirty = 0;
+    for (int y = 0; y < fb.height; ++y)
+        for (int x = 0; x < fb.width; ++x) dirty += fb.pixel(x, y) == glm::vec4(kDirtyByte / 255.0f);
+    CHECK(dirty == 0);
+    CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("a draw that clears gives the pixels of a clear, then the draw", "[raster][threads][clear]") {
@@ -456,14 +480,7 @@ TEST_CASE("a draw that clears gives the pixels of a clear, then the draw", "[ras
                         gl.depth_test = true;
                         gl.viewport = viewport;
                         p.exec.threads = threads;
-                        Framebuffer eager = dirty_framebuffer(w, h, float_color);
-                        if (clear.color) eager.clear_color(*clear.color);
-                        if (clear.depth) eager.clear_depth(*clear.depth);
-                        REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
-                        Framebuffer fused = dirty_framebuffer(w, h, float_color);
-                        REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
-                        CHECK(color_differences(eager, fused) == 0u);
-                        CHECK(differences<float>(eager.depth, fused.depth) == 0u);
+                        check_clear_then_draw(p, gl, g, clear, w, h, float_color);
                     }
 }
 
@@ -478,12 +495,7 @@ TEST_CASE("a draw that clears and fails leaves no pixel uncleared", "[raster][th
         auto stats = draw(p, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f, std::nullopt}, Primitive::Triangles,
                           {g.pos, g.color}, g.count);
         REQUIRE_FALSE(stats.ok());
-        // Pixels still wholly dirty: the clear is 51, the shader writes alpha 255.
-        int dirty = 0;
-        for (int y = 0; y < fb.height; ++y)
-            for (int x = 0; x < fb.width; ++x) dirty += fb.pixel(x, y) == glm::vec4(kDirtyByte / 255.0f);
-        CHECK(dirty == 0);
-        CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+        check_no_dirty_pixel(fb);
     }
 }
 
@@ -502,15 +514,7 @@ TEST_CASE("a large draw clears on a thread of its own at 2 or 3 threads: the sam
             GLState gl;
             gl.depth_test = true;
             p.exec.threads = threads;
-            Framebuffer eager = dirty_framebuffer(kWidth, kHeight, false);
-            if (clear.color) eager.clear_color(*clear.color);
-            if (clear.depth) eager.clear_depth(*clear.depth);
-            REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
-            Framebuffer fused = dirty_framebuffer(kWidth, kHeight, false);
-            REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
-            CHECK(distinct_colors(fused) > 20u);
-            CHECK(color_differences(eager, fused) == 0u);
-            CHECK(differences<float>(eager.depth, fused.depth) == 0u);
+            CHECK(distinct_colors(check_clear_then_draw(p, gl, g, clear, kWidth, kHeight, false)) > 20u);
         }
     // Failing draws, in the tiles (the fragment shader's loop cap) and before
     // them (the vertex shader's): every pixel is cleared all the same.
@@ -531,10 +535,6 @@ void main() {
             auto stats = draw(*failing, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f, std::nullopt},
                               Primitive::Triangles, {g.pos, g.color}, g.count);
             REQUIRE_FALSE(stats.ok());
-            int dirty = 0;
-            for (int y = 0; y < fb.height; ++y)
-                for (int x = 0; x < fb.width; ++x) dirty += fb.pixel(x, y) == glm::vec4(kDirtyByte / 255.0f);
-            CHECK(dirty == 0);
-            CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+            check_no_dirty_pixel(fb);
         }
 }
