@@ -18,6 +18,10 @@ namespace glslrun::raster {
 inline constexpr int kTileSize = 64;
 static_assert(kTileSize % kBlockSize == 0);
 
+// From this many threads render() clears in its tile jobs; with fewer it
+// clears the whole target first, on the calling thread (TileBins::render).
+inline constexpr unsigned kTileClearMinThreads = 4;
+
 struct TileTarget {
     const Program& program;
     const GLState& gl;
@@ -63,6 +67,7 @@ private:
     Rect scissor_;
     int columns_ = 0, rows_ = 0;
     std::vector<std::vector<const FsPrimitive*>> bins_;  // per tile, in submission order
+    std::vector<size_t> touched_;                        // the bins filled since reset(), each once
     uint64_t area_ = 0;                                  // sum of the primitives' bounds, in pixels
 };
 

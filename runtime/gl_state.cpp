@@ -1,6 +1,7 @@
 // GLState defaults and the derivation of GLSL 1.10's built-in uniforms (§7.5)
 // from it. Derived values follow Mesa's state tracker (prog_statevars.c) where
 // the GL specification leaves the built-in's value open.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -78,45 +79,65 @@ glm::vec3 normalize_or_zero(glm::vec3 v) {
     return len > 0.0f ? v / len : v;
 }
 
+// A prefix and a field's name, without a heap string per field: every draw
+// names a light's 13 fields (many_draws: a string made and freed per name
+// was most of the built-ins' cost, perf).
+class FieldName {
+public:
+    explicit FieldName(std::string_view prefix) : size_(std::min(prefix.size(), sizeof text_)) {
+        std::memcpy(text_, prefix.data(), size_);
+    }
+    std::string_view operator()(std::string_view field) {
+        const size_t n = std::min(field.size(), sizeof text_ - size_);
+        std::memcpy(text_ + size_, field.data(), n);
+        return {text_, size_ + n};
+    }
+
+private:
+    char text_[64];
+    size_t size_;
+};
+
 void emit_light(const Emit& emit, int i, const LightState& l) {
-    std::string p = fmt::format("gl_LightSource[{}].", i);
-    emit_vec(emit, p + "ambient", l.ambient);
-    emit_vec(emit, p + "diffuse", l.diffuse);
-    emit_vec(emit, p + "specular", l.specular);
-    emit_vec(emit, p + "position", l.position);
+    FieldName p(fmt::format("gl_LightSource[{}].", i));
+    emit_vec(emit, p("ambient"), l.ambient);
+    emit_vec(emit, p("diffuse"), l.diffuse);
+    emit_vec(emit, p("specular"), l.specular);
+    emit_vec(emit, p("position"), l.position);
     // Mesa: normalize(normalize(position.xyz) + (0,0,1)) for the infinite viewer, w = 1.
     glm::vec3 half = normalize_or_zero(normalize_or_zero(glm::vec3(l.position)) + glm::vec3(0, 0, 1));
-    emit_vec(emit, p + "halfVector", glm::vec4(half, 1.0f));
-    emit_vec3(emit, p + "spotDirection", l.spot_direction);
-    emit_float(emit, p + "spotExponent", l.spot_exponent);
-    emit_float(emit, p + "spotCutoff", l.spot_cutoff);
+    emit_vec(emit, p("halfVector"), glm::vec4(half, 1.0f));
+    emit_vec3(emit, p("spotDirection"), l.spot_direction);
+    emit_float(emit, p("spotExponent"), l.spot_exponent);
+    emit_float(emit, p("spotCutoff"), l.spot_cutoff);
     // math::cos, not libm: the uniform reaches the image, so it must not depend on the libm version.
     float cos_cutoff = l.spot_cutoff == 180.0f ? -1.0f : math::cos(glm::radians(l.spot_cutoff));
-    emit_float(emit, p + "spotCosCutoff", cos_cutoff);
-    emit_float(emit, p + "constantAttenuation", l.constant_attenuation);
-    emit_float(emit, p + "linearAttenuation", l.linear_attenuation);
-    emit_float(emit, p + "quadraticAttenuation", l.quadratic_attenuation);
+    emit_float(emit, p("spotCosCutoff"), cos_cutoff);
+    emit_float(emit, p("constantAttenuation"), l.constant_attenuation);
+    emit_float(emit, p("linearAttenuation"), l.linear_attenuation);
+    emit_float(emit, p("quadraticAttenuation"), l.quadratic_attenuation);
 }
 
 void emit_material(const Emit& emit, const Wants& wants, const std::string& side, const MaterialState& m,
                    const GLState& gl) {
-    std::string p = "gl_" + side + "Material.";
-    emit_vec(emit, p + "emission", m.emission);
-    emit_vec(emit, p + "ambient", m.ambient);
-    emit_vec(emit, p + "diffuse", m.diffuse);
-    emit_vec(emit, p + "specular", m.specular);
-    emit_float(emit, p + "shininess", m.shininess);
+    FieldName p("gl_" + side + "Material.");
+    emit_vec(emit, p("emission"), m.emission);
+    emit_vec(emit, p("ambient"), m.ambient);
+    emit_vec(emit, p("diffuse"), m.diffuse);
+    emit_vec(emit, p("specular"), m.specular);
+    emit_float(emit, p("shininess"), m.shininess);
     // Mesa: rgb = emission + ambient * model ambient, alpha = diffuse alpha.
     glm::vec4 scene = m.emission + m.ambient * gl.light_model_ambient;
     scene.a = m.diffuse.a;
     emit_vec(emit, "gl_" + side + "LightModelProduct.sceneColor", scene);
     for (int i = 0; i < 8; ++i) {
         const LightState& l = gl.lights[i];
-        std::string lp = fmt::format("gl_{}LightProduct[{}].", side, i);
-        if (!wants.prefix(lp)) continue;
-        emit_vec(emit, lp + "ambient", l.ambient * m.ambient);
-        emit_vec(emit, lp + "diffuse", l.diffuse * m.diffuse);
-        emit_vec(emit, lp + "specular", l.specular * m.specular);
+        std::string prefix = fmt::format("gl_{}LightProduct[{}].", side, i);
+        if (!wants.prefix(prefix)) continue;
+        FieldName lp(prefix);
+        emit_vec(emit, lp("ambient"), l.ambient * m.ambient);
+        emit_vec(emit, lp("diffuse"), l.diffuse * m.diffuse);
+        emit_vec(emit, lp("specular"), l.specular * m.specular);
     }
 }
 

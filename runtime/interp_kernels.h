@@ -352,11 +352,17 @@ inline Kernel<uint32_t> kernel_for(ir::Op op, bool avx2) {
 inline Kernel<uint64_t> kernel_for(ir::Op op) { return kernel_for<uint64_t, false>(op); }
 
 // GLSLRUN_NO_AVX2=1 forces the baseline kernels: images must not change.
+// Read once per process, as cpu_has_avx512() does: every draw asks several
+// times (its executors, the fused pipeline's state), and getenv's scan of
+// the environment was 0.5% of many_draws' frame (perf).
 inline bool cpu_has_avx2() {
 #ifdef GLSLRUN_HAVE_AVX2_KERNELS
-    const char* off = std::getenv("GLSLRUN_NO_AVX2");
-    if (off && off[0] == '1') return false;
-    return __builtin_cpu_supports("avx2");
+    static const bool on = [] {
+        const char* off = std::getenv("GLSLRUN_NO_AVX2");
+        if (off && off[0] == '1') return false;
+        return bool(__builtin_cpu_supports("avx2"));
+    }();
+    return on;
 #else
     return false;
 #endif

@@ -35,15 +35,23 @@ while read -r shader scene; do
 done < "$tmp/cases"
 # The fused fragment pipeline: a program takes it once it has shaded 2^20
 # fragments (raster/fused/pipeline.h), so several frames of three scenes,
-# the last of which it must have drawn (multi_pass: its light passes blend).
+# the last of which it must have drawn (multi_pass: its light passes blend);
+# at 1, 2 and 3 threads (with 2 or 3, a large draw clears on a thread of its
+# own while its vertices and setup run: raster/draw.cpp's ClearAhead).
 for case in "spot_pix_fixed spot 1920x1080 6" "colors quad 1024x1024 8" "minimal multi_pass 1280x720 3"; do
     set -- $case
-    for backend in interp jit; do
+    for run in interp:1 jit:1 jit:2 jit:3; do
+        backend=${run%:*} threads=${run#*:}
         "$glslrun" "$src/shaders/$1.vert" "$src/shaders/$1.frag" "$src/scenes/$2.toml" --size $3 --bench $4 \
-            --backend $backend -o "$tmp/$backend.png" > "$tmp/$backend.txt" || fail "$1 on $2 did not render ($backend)"
+            --backend $backend --threads $threads -o "$tmp/$backend$threads.png" > "$tmp/$backend$threads.txt" ||
+            fail "$1 on $2 did not render ($backend, $threads threads)"
     done
-    grep -q '^fused_fragments  *[1-9]' "$tmp/jit.txt" || fail "$1 on $2: the fused pipeline drew no fragment"
-    cmp -s "$tmp/interp.png" "$tmp/jit.png" || fail "$1 on $2 at $3: the fused pipeline's image differs"
-    compared=$((compared + 1))
+    for threads in 1 2 3; do
+        grep -q '^fused_fragments  *[1-9]' "$tmp/jit$threads.txt" ||
+            fail "$1 on $2: the fused pipeline drew no fragment ($threads threads)"
+        cmp -s "$tmp/interp1.png" "$tmp/jit$threads.png" ||
+            fail "$1 on $2 at $3: the fused pipeline's image at $threads threads differs from the interpreter's at 1"
+        compared=$((compared + 1))
+    done
 done
 finish "$compared image pairs identical"

@@ -234,18 +234,83 @@ TEST_CASE("a later triangle at equal depth wins with GL_LEQUAL, on every tile", 
 
 TEST_CASE("large draws set up primitives on the workers, with identical results", "[raster][threads]") {
     Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
-    Geometry g = small_triangles(13, 40000);  // several setup jobs
-    GLState gl;
-    gl.depth_test = true;
-    for (bool flat : {false, true}) {
-        gl.flat_shading = flat;  // attribute vectors made per primitive
-        Frame one = draw_geometry(p, g, Primitive::Triangles, 1, gl);
-        CHECK(one.stats.triangles == 40000u);
-        CHECK(distinct_colors(one.fb) > 20u);
-        for (unsigned threads : kThreadCounts) {
-            INFO("flat " << flat << ", threads " << threads);
-            check_same(one, draw_geometry(p, g, Primitive::Triangles, threads, gl));
+    // 40,000 triangles: many setup jobs; 5,000: a few (a teapot's size, set
+    // up on the workers too), with 15,000 vertices' clip vertices in jobs.
+    for (uint32_t count : {40000u, 5000u}) {
+        Geometry g = small_triangles(13, count);
+        GLState gl;
+        gl.depth_test = true;
+        for (bool flat : {false, true}) {
+            gl.flat_shading = flat;  // attribute vectors made per primitive
+            Frame one = draw_geometry(p, g, Primitive::Triangles, 1, gl);
+            CHECK(one.stats.triangles == count);
+            CHECK(distinct_colors(one.fb) > 20u);
+            for (unsigned threads : kThreadCounts) {
+                INFO("triangles " << count << ", flat " << flat << ", threads " << threads);
+                check_same(one, draw_geometry(p, g, Primitive::Triangles, threads, gl));
+            }
         }
+    }
+}
+
+TEST_CASE("many small overlapping draws across tile borders keep draw order", "[raster][threads]") {
+    // 150 draws of one opaque rectangle each, without a depth test, over a
+    // 300x200 target (5x4 tiles of 64): the last draw that covers a pixel
+    // decides its colour, whatever the threads. Rectangles have whole-pixel
+    // edges, so which pixel centres they cover is known exactly; most are
+    // small (one thread per draw), some large enough for the workers.
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    constexpr int kWidth = 300, kHeight = 200, kDraws = 150;
+    struct Box {
+        int x0, y0, x1, y1;
+        glm::u8vec4 color;
+    };
+    std::mt19937 rng(29);
+    std::vector<Box> boxes;
+    for (int i = 0; i < kDraws; ++i) {
+        std::uniform_int_distribution<int> size(4, i % 10 == 0 ? 190 : 40);
+        int w = size(rng), h = size(rng);
+        int x0 = std::uniform_int_distribution<int>(0, kWidth - std::min(w, kWidth))(rng);
+        int y0 = std::uniform_int_distribution<int>(0, kHeight - std::min(h, kHeight))(rng);
+        auto channel = [&] { return uint8_t(std::uniform_int_distribution<int>(0, 255)(rng)); };
+        boxes.push_back({x0, y0, std::min(x0 + w, kWidth), std::min(y0 + h, kHeight),
+                         {channel(), channel(), uint8_t(i), 255}});
+    }
+    // The expected image: each pixel the colour of the last box over its centre.
+    std::vector<glm::u8vec4> expected(size_t(kWidth * kHeight), glm::u8vec4(0, 0, 0, 255));
+    for (const Box& b : boxes)
+        for (int y = b.y0; y < b.y1; ++y)
+            for (int x = b.x0; x < b.x1; ++x) expected[size_t(y * kWidth + x)] = b.color;
+    // The order matters: drawn in reverse, thousands of pixels would differ.
+    std::vector<glm::u8vec4> reversed(expected.size(), glm::u8vec4(0, 0, 0, 255));
+    for (auto b = boxes.rbegin(); b != boxes.rend(); ++b)
+        for (int y = b->y0; y < b->y1; ++y)
+            for (int x = b->x0; x < b->x1; ++x) reversed[size_t(y * kWidth + x)] = b->color;
+    size_t order_sensitive = 0;
+    for (size_t i = 0; i < expected.size(); ++i) order_sensitive += expected[i] != reversed[i];
+    CHECK(order_sensitive > 5000u);
+    GLState gl;
+    gl.flat_shading = true;  // the provoking vertex's colour, exactly k / 255
+    for (unsigned threads : {1u, 2u, 3u, 7u}) {
+        p.exec.threads = threads;
+        Framebuffer fb(kWidth, kHeight);
+        fb.clear_color({0, 0, 0, 1});
+        for (const Box& b : boxes) {
+            Geometry q;
+            auto ndc = [](int pixel, int size) { return 2.0f * float(pixel) / float(size) - 1.0f; };
+            const int corners[4][2] = {{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}};
+            for (const auto& c : corners) {
+                q.pos.data.insert(q.pos.data.end(), {ndc(c[0], kWidth), ndc(c[1], kHeight), 0.0f, 1.0f});
+                q.color.data.insert(q.color.data.end(), {b.color.r / 255.0f, b.color.g / 255.0f, b.color.b / 255.0f, 1.0f});
+            }
+            REQUIRE(draw(p, gl, fb, Primitive::Quads, {q.pos, q.color}, 4).ok());
+        }
+        std::span<const uint8_t> bytes = fb.color_data<uint8_t>();
+        size_t wrong = 0;
+        for (size_t i = 0; i < expected.size(); ++i)
+            wrong += std::memcmp(&bytes[4 * i], &expected[i], 4) != 0;
+        INFO("threads " << threads);
+        CHECK(wrong == 0u);
     }
 }
 
@@ -371,6 +436,30 @@ Framebuffer dirty_framebuffer(int w, int h, bool float_color) {
     return fb;
 }
 
+// draw() with `clear` against the same clear made eagerly, then the draw:
+// both from a dirty framebuffer; returns the former.
+Framebuffer check_clear_then_draw(Program& p, const GLState& gl, const Geometry& g, const ClearValues& clear, int w,
+                                  int h, bool float_color) {
+    Framebuffer eager = dirty_framebuffer(w, h, float_color);
+    if (clear.color) eager.clear_color(*clear.color);
+    if (clear.depth) eager.clear_depth(*clear.depth);
+    REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+    Framebuffer fused = dirty_framebuffer(w, h, float_color);
+    REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
+    CHECK(color_differences(eager, fused) == 0u);
+    CHECK(differences<float>(eager.depth, fused.depth) == 0u);
+    return fused;
+}
+
+// No pixel of fb is left dirty: the clear is 51, the shader writes alpha 255.
+void check_no_dirty_pixel(const Framebuffer& fb) {
+    int dirty = 0;
+    for (int y = 0; y < fb.height; ++y)
+        for (int x = 0; x < fb.width; ++x) dirty += fb.pixel(x, y) == glm::vec4(kDirtyByte / 255.0f);
+    CHECK(dirty == 0);
+    CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("a draw that clears gives the pixels of a clear, then the draw", "[raster][threads][clear]") {
@@ -391,14 +480,7 @@ TEST_CASE("a draw that clears gives the pixels of a clear, then the draw", "[ras
                         gl.depth_test = true;
                         gl.viewport = viewport;
                         p.exec.threads = threads;
-                        Framebuffer eager = dirty_framebuffer(w, h, float_color);
-                        if (clear.color) eager.clear_color(*clear.color);
-                        if (clear.depth) eager.clear_depth(*clear.depth);
-                        REQUIRE(draw(p, gl, eager, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
-                        Framebuffer fused = dirty_framebuffer(w, h, float_color);
-                        REQUIRE(draw(p, gl, fused, clear, Primitive::Triangles, {g.pos, g.color}, g.count).ok());
-                        CHECK(color_differences(eager, fused) == 0u);
-                        CHECK(differences<float>(eager.depth, fused.depth) == 0u);
+                        check_clear_then_draw(p, gl, g, clear, w, h, float_color);
                     }
 }
 
@@ -413,11 +495,46 @@ TEST_CASE("a draw that clears and fails leaves no pixel uncleared", "[raster][th
         auto stats = draw(p, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f, std::nullopt}, Primitive::Triangles,
                           {g.pos, g.color}, g.count);
         REQUIRE_FALSE(stats.ok());
-        // Pixels still wholly dirty: the clear is 51, the shader writes alpha 255.
-        int dirty = 0;
-        for (int y = 0; y < fb.height; ++y)
-            for (int x = 0; x < fb.width; ++x) dirty += fb.pixel(x, y) == glm::vec4(kDirtyByte / 255.0f);
-        CHECK(dirty == 0);
-        CHECK(std::count(fb.depth.begin(), fb.depth.end(), 0.33f) == 0);
+        check_no_dirty_pixel(fb);
     }
+}
+
+TEST_CASE("a large draw clears on a thread of its own at 2 or 3 threads: the same pixels", "[raster][threads][clear]") {
+    // 640x520 pixels and 9,000 vertices: over the sizes from which draw()
+    // clears ahead, while the vertices and setup run (raster/draw.cpp).
+    constexpr int kWidth = 640, kHeight = 520;
+    Program p = compile(kColorVs, "void main() { gl_FragColor = gl_Color; }");
+    Geometry g = small_triangles(21, 3000);
+    const ClearValues both{glm::vec4(0.1f, 0.25f, 0.5f, 1.0f), 0.9f, std::nullopt};
+    const ClearValues kinds[] = {both, {both.color, std::nullopt, std::nullopt}, {std::nullopt, 0.6f, std::nullopt}};
+    for (size_t kind = 0; kind < std::size(kinds); ++kind)
+        for (unsigned threads : {1u, 2u, 3u, 7u}) {
+            INFO("clear " << kind << " threads " << threads);
+            const ClearValues& clear = kinds[kind];
+            GLState gl;
+            gl.depth_test = true;
+            p.exec.threads = threads;
+            CHECK(distinct_colors(check_clear_then_draw(p, gl, g, clear, kWidth, kHeight, false)) > 20u);
+        }
+    // Failing draws, in the tiles (the fragment shader's loop cap) and before
+    // them (the vertex shader's): every pixel is cleared all the same.
+    Program fs_fails = compile(kColorVs, kRunawayFs);
+    Program vs_fails = compile(R"(
+void main() {
+    float x = 0.0;
+    while (x < 1.0) { x += gl_Vertex.x > 0.9 ? 0.0 : 0.5; }
+    gl_Position = gl_Vertex * x;
+    gl_FrontColor = gl_Color;
+})", "void main() { gl_FragColor = gl_Color; }");
+    for (Program* failing : {&fs_fails, &vs_fails})
+        for (unsigned threads : {2u, 3u}) {
+            INFO((failing == &fs_fails ? "fragment" : "vertex") << " shader fails, threads " << threads);
+            failing->exec.max_loop_iterations = 1000;
+            failing->exec.threads = threads;
+            Framebuffer fb = dirty_framebuffer(kWidth, kHeight, false);
+            auto stats = draw(*failing, GLState{}, fb, ClearValues{glm::vec4(0.2f), 1.0f, std::nullopt},
+                              Primitive::Triangles, {g.pos, g.color}, g.count);
+            REQUIRE_FALSE(stats.ok());
+            check_no_dirty_pixel(fb);
+        }
 }
