@@ -1,0 +1,285 @@
+// The kernels of sampling_gpu_direct.h. Per group of eight lanes:
+// - lambda as sample_gpu_batch()'s lambdas() gives it: one lambda_base per
+//   quad (gpu_rho() and gpu::lambda_of_rho() of its first lane's
+//   derivatives), then each lane's bias, the texture's bias and clamps and
+//   gpu::quantize_lambda(), lane by lane (scalar: two quads a group);
+// - each lane's level(s) and 8-bit mipmap weight as gpu::filter16() picks
+//   them, then one pass per first level the group's lanes hold (one on a
+//   smooth surface), as sampling_mip2d.cpp does;
+// - each level's indices by sampling_direct8.h's steps (the GPU's indices
+//   are the Common rules'), the texels as 16-bit values (gpu::unorm16():
+//   257 k for an RGBA8 texel k/255, rounded to nearest in one instruction,
+//   as sampling_gpu_batch.cpp's load16x8(); the border's value computed
+//   once as the per-lane path does), the 8-bit bilinear weights and the
+//   (sum + 128) >> 8 blends as float integers below 2^24, so exact in any
+//   order, then the mipmap blend likewise and r / 65535.
+// Before this, Fast's lookups went through the batched sampler's lane
+// arrays step by step: two thirds of two_units' frame (perf), and Fast was
+// 0.6x to 0.9x Precise's speed on textured programs.
+#include "runtime/sampling_gpu_direct.h"
+
+#include <bit>
+
+#include "runtime/interp_kernels.h"
+#include "runtime/sampling_direct8.h"
+#include "runtime/sampling_gpu.h"
+#include "runtime/sampling_gpu_batch.h"
+
+namespace glslrun::rt {
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GLSLRUN_AVX2 __attribute__((target("avx2")))
+
+namespace {
+
+using namespace direct8;
+
+// One level's image as the GPU's fetches read it.
+struct Image16 {
+    Source src;    // its border is unused: the 16-bit `border` replaces the texel
+    Axis w, h;
+    V border[4];   // gpu::unorm16() of border_texel()
+};
+
+[[gnu::always_inline]] GLSLRUN_AVX2 inline Image16 image16(const TextureImage& image, const V* border) {
+    Image16 im{{image.texels.data(), image.width, {}}, {image.width, splat(float(image.width))},
+               {image.height, splat(float(image.height))}, {border[0], border[1], border[2], border[3]}};
+    return im;
+}
+
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V unorm16x8(V t) {
+    return _mm256_round_ps(_mm256_mul_ps(t, splat(65535.0f)), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+
+// The texels at (x, y) of eight lanes as 16-bit values by channel; where
+// kBorder, lanes whose index is kBorder take the border's value (and load texel 0).
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void fetch16(const Image16& im, I x, I y, V* ch) {
+    if constexpr (!kBorder) {
+        fetch8<false>(im.src, x, y, ch);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) ch[c] = unorm16x8(ch[c]);
+    } else {
+        const I outside = _mm256_cmpgt_epi32(_mm256_setzero_si256(), _mm256_or_si256(x, y));
+        fetch8<false>(im.src, _mm256_andnot_si256(outside, x), _mm256_andnot_si256(outside, y), ch);
+        const V take = _mm256_castsi256_ps(outside);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) ch[c] = _mm256_blendv_ps(unorm16x8(ch[c]), im.border[c], take);
+    }
+}
+
+// gpu::weight8() of eight lanes: a NaN or a <= 0 weighs 0.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline I weight8x8(V a) {
+    const V zero = _mm256_setzero_ps();
+    const V c = _mm256_blendv_ps(zero, _mm256_min_ps(a, splat(1.0f)), _mm256_cmp_ps(a, zero, _CMP_GT_OQ));
+    return _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(c, splat(256.0f)), splat(0.5f)));
+}
+
+// (sum + 128) >> 8 of exact float integers (gpu::round_blend()).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V round_blend8(V sum) {
+    return _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f))));
+}
+
+// A row's two texels of LINEAR (columns x.i0 and x.i1, row y) as 16-bit
+// values into `left` and `right`; `pairs`: every lane's two columns are
+// neighbours, so each lane's two texels are one load.
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void row16x8(const Image16& im, const Linear8& x, I y, bool pairs, V* left,
+                                                        V* right) {
+    if (pairs) {
+        fetch_pairs8(im.src, x.i0, y, left, right);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) {
+            left[c] = unorm16x8(left[c]);
+            right[c] = unorm16x8(right[c]);
+        }
+    } else {
+        fetch16<kBorder>(im, x.i0, y, left);
+        fetch16<kBorder>(im, x.i1, y, right);
+    }
+}
+
+// gpu::level16() of one image for eight lanes at (s, t): 16-bit values by channel.
+template <bool kLinear, Rule kS, Rule kT>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void level16x8(const Image16& im, V s, V t, V* value) {
+    constexpr bool kBorder = may_border(kS, kLinear) || may_border(kT, kLinear);
+    if constexpr (!kLinear) {
+        fetch16<kBorder>(im, nearest8<kS>(s, im.w), nearest8<kT>(t, im.h), value);
+    } else {
+        const Linear8 x = linear8<kS>(s, im.w), y = linear8<kT>(t, im.h);
+        const I wx = weight8x8(x.a), wy = weight8x8(y.a);
+        const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
+        const V w00f = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11));
+        const V w01f = _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11));
+        const V w10f = _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11));
+        const V w11f = _mm256_cvtepi32_ps(w11);
+        // Where every lane's two columns are neighbours, each row's two texels are one load.
+        const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                                           x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
+        V p[4], q[4], row0[4];
+        row16x8<kBorder>(im, x, y.i0, pairs, p, q);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], w00f), _mm256_mul_ps(q[c], w01f));
+        row16x8<kBorder>(im, x, y.i1, pairs, p, q);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) {
+            const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], w10f), _mm256_mul_ps(q[c], w11f));
+            value[c] = round_blend8(_mm256_add_ps(row0[c], row1));
+        }
+    }
+}
+
+// The texture's state that every group reads.
+struct State {
+    const SamplerState* st;
+    const std::vector<TextureImage>* levels;
+    V border[4];
+    int base, q;
+    bool nearest_mip;
+    glm::vec3 size;  // level_base's
+};
+
+// clamp_lambda() of eight lanes, its selects in its order (as sampling_mip2d.cpp's).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V clamp_lambda8(V lambda, const SamplerState& st) {
+    const V min = splat(st.min_lod), max = splat(st.max_lod);
+    V x = _mm256_blendv_ps(min, lambda, _mm256_cmp_ps(lambda, min, _CMP_GE_OQ));  // !(lambda >= min_lod): min_lod
+    x = _mm256_blendv_ps(x, max, _mm256_cmp_ps(x, max, _CMP_GT_OQ));
+    const V clamped = clamp_or_low8(x, splat(-kLodLimit), splat(kLodLimit));
+    return _mm256_blendv_ps(clamped, _mm256_setzero_ps(), _mm256_cmp_ps(x, x, _CMP_UNORD_Q));
+}
+
+// Lanes g..g+7's lambda (see the file's comment), as sample_gpu_batch()'s
+// lambdas(). gpu::quantize_lambda()'s floor_f() is floor8()'s there: the
+// clamped lambda is finite and small.
+GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, int g) {
+    V l = _mm256_setzero_ps();
+    if (lk.implicit) {
+        float quad[2];
+        for (int k = 0; k < 2; ++k) {
+            const int f = g + 4 * k;
+            const glm::vec3 dx(lk.ddx[0][f], lk.ddx[1][f], 0.0f), dy(lk.ddy[0][f], lk.ddy[1][f], 0.0f);
+            quad[k] = gpu::lambda_of_rho(gpu_rho(dx, dy, s.size, 2));
+        }
+        l = _mm256_set_m128(_mm_set1_ps(quad[1]), _mm_set1_ps(quad[0]));
+        if (lk.bias) l = _mm256_add_ps(l, _mm256_loadu_ps(lk.lod + g));
+    } else if (lk.lod) {
+        l = _mm256_loadu_ps(lk.lod + g);
+    }
+    l = clamp_lambda8(_mm256_add_ps(l, splat(s.st->lod_bias)), *s.st);
+    return _mm256_mul_ps(floor8(_mm256_add_ps(_mm256_mul_ps(l, splat(256.0f)), splat(0.5f))), splat(1.0f / 256.0f));
+}
+
+// gpu::filter16()'s levels of eight lanes (a mipmap filter): the first,
+// all ones where a second one (first + 1) is mixed in, and its 8-bit
+// weight. *_MIPMAP_LINEAR in registers (lambda is finite), *_MIPMAP_NEAREST
+// lane by lane.
+GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int* weight) {
+    if (s.nearest_mip) {
+        alignas(32) float l[8];
+        _mm256_store_ps(l, lambda);
+        for (int k = 0; k < 8; ++k) {
+            first[k] = l[k] <= 0.0f ? s.base : gpu::nearest_level(l[k], s.base, s.q);
+            second[k] = weight[k] = 0;
+        }
+        return;
+    }
+    const V mag = _mm256_cmp_ps(lambda, _mm256_setzero_ps(), _CMP_LE_OQ);
+    const V last = _mm256_cmp_ps(_mm256_add_ps(splat(float(s.base)), lambda), splat(float(s.q)), _CMP_GE_OQ);
+    const V whole = floor8(lambda);
+    const I linear_level = _mm256_blendv_epi8(_mm256_add_epi32(splat_i(s.base), _mm256_cvttps_epi32(whole)),
+                                              splat_i(s.q), _mm256_castps_si256(last));
+    const I d0 = _mm256_blendv_epi8(linear_level, splat_i(s.base), _mm256_castps_si256(mag));
+    const I two = _mm256_castps_si256(_mm256_andnot_ps(_mm256_or_ps(mag, last), _mm256_castsi256_ps(splat_i(-1))));
+    _mm256_store_si256(reinterpret_cast<I*>(first), d0);
+    _mm256_store_si256(reinterpret_cast<I*>(second), two);
+    _mm256_store_si256(reinterpret_cast<I*>(weight), _mm256_and_si256(two, weight8x8(_mm256_sub_ps(lambda, whole))));
+}
+
+// r / 65535 (gpu::over_unorm16()) of the lanes of `bits` into out. For
+// every integer r in [0, 65535] (each 16-bit result), r 2^-16 + r (2^-32 +
+// 2^-48) rounds to the quotient's float (checked over all of them:
+// r 2^-16 + r 2^-32 alone misses 512), in two products and a sum instead
+// of a division (a tenth of a nine-tap frame: perf).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void store16(V* value, int bits, int g, float (*out)[kLanes]) {
+    const V hi = splat(0x1p-16f), lo = splat(0x1p-32f + 0x1p-48f);
+#pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) value[c] = _mm256_add_ps(_mm256_mul_ps(value[c], hi), _mm256_mul_ps(value[c], lo));
+    store8(value, bits, g, out);
+}
+
+template <bool kLinear, Rule kS, Rule kT>
+GLSLRUN_AVX2 void gpu_direct(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+    const std::vector<TextureImage>& levels = *s.levels;
+    const bool mipmap = is_mipmap_filter(s.st->min_filter);
+    const Image16 base = image16(levels[size_t(s.base)], s.border);
+    for (int g = 0; g < kLanes; g += 8) {
+        const int bits = int(uint32_t(lanes >> g) & 0xffu);
+        if (!bits) continue;
+        const V sc = _mm256_loadu_ps(lk.coord[0] + g), tc = _mm256_loadu_ps(lk.coord[1] + g);
+        V value[4];
+        if (!mipmap) {  // one image and one filter whatever lambda is
+            level16x8<kLinear, kS, kT>(base, sc, tc, value);
+            store16(value, bits, g, out);
+            continue;
+        }
+        alignas(32) int first[8], second[8], weight[8];
+        levels8(s, lambdas8(s, lk, g), first, second, weight);
+        const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
+        const V mixed = _mm256_load_ps(reinterpret_cast<const float*>(second));
+        const int two = _mm256_movemask_ps(mixed);
+        for (int left = bits; left;) {
+            const int level = first[std::countr_zero(unsigned(left))];
+            const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(d0, splat_i(level))));
+            left &= ~take;
+            level16x8<kLinear, kS, kT>(image16(levels[size_t(level)], s.border), sc, tc, value);
+            if (two & take) {  // their second level is level + 1, which exists: level < q
+                V next[4];
+                level16x8<kLinear, kS, kT>(image16(levels[size_t(level) + 1], s.border), sc, tc, next);
+                const V w = _mm256_cvtepi32_ps(_mm256_load_si256(reinterpret_cast<const I*>(weight)));
+                const V iw = _mm256_sub_ps(splat(256.0f), w);
+#pragma GCC unroll 4
+                for (int c = 0; c < 4; ++c) {
+                    const V blend = round_blend8(_mm256_add_ps(_mm256_mul_ps(value[c], iw), _mm256_mul_ps(next[c], w)));
+                    value[c] = _mm256_blendv_ps(value[c], blend, mixed);
+                }
+            }
+            store16(value, take, g, out);
+        }
+    }
+}
+
+}  // namespace
+
+bool gpu_direct_samples(const Texture& texture) {
+    const SamplerState& st = texture.sampler;
+    if (texture.target() != TextureTarget::Tex2D || !gpu_batch_samples(texture)) return false;
+    if (!lod_matters(st)) return true;
+    return is_mipmap_filter(st.min_filter) && linear_within_level(st.mag_filter) == linear_within_level(st.min_filter);
+}
+
+GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
+                                    float (*out)[kLanes]) {
+    const SamplerState& st = texture.sampler;
+    State s;  // each field set below (zeroing it first, rep stos, was half of this function: perf)
+    s.st = &st;
+    s.levels = &texture.levels(0);
+    s.base = st.base_level;
+    const TextureImage& base = (*s.levels)[size_t(s.base)];
+    s.q = is_mipmap_filter(st.min_filter) ? last_mip_level(base, st) : s.base;
+    s.nearest_mip =
+        st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
+    s.size = image_size(base);
+    const Lookup proto{&texture, &st, 0, 2, glm::vec3(0.0f), false, 0.0f};
+    const glm::vec4 border = vec_of(gpu::unorm16(texel_of(border_texel(proto))));
+    for (int c = 0; c < 4; ++c) s.border[c] = splat(border[c]);
+    with_rules<false>(st, linear_within_level(st.mag_filter),
+                      [&]<bool kLinear, Rule kS, Rule kT>() { gpu_direct<kLinear, kS, kT>(s, lookup, lanes, out); });
+}
+#undef GLSLRUN_AVX2
+
+#else
+bool gpu_direct_samples(const Texture&) { return false; }
+void sample_gpu_direct(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
+#endif
+
+}  // namespace glslrun::rt
