@@ -207,21 +207,29 @@ GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int
     store8(value, bits, g, out);
 }
 
+// The lookups of a texture without mipmaps (one image and one filter whatever lambda is) at (s[i], t[i]).
 template <bool kLinear, Rule kS, Rule kT>
-GLSLRUN_AVX2 void gpu_direct(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+GLSLRUN_AVX2 void gpu_one(const Image16& im, const float* s, const float* t, LaneMask lanes, float (*out)[kLanes]) {
+    for (int g = 0; g < kLanes; g += 8) {
+        const int bits = int(uint32_t(lanes >> g) & 0xffu);
+        if (!bits) continue;
+        V value[4];
+        level16x8<kLinear, kS, kT>(im, _mm256_loadu_ps(s + g), _mm256_loadu_ps(t + g), value);
+        store16(value, bits, g, out);
+    }
+}
+
+using OneKernel = void (*)(const Image16&, const float*, const float*, LaneMask, float (*)[kLanes]);
+
+// A mipmapped texture's lookups.
+template <bool kLinear, Rule kS, Rule kT>
+GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
     const std::vector<TextureImage>& levels = *s.levels;
-    const bool mipmap = is_mipmap_filter(s.st->min_filter);
-    const Image16 base = image16(levels[size_t(s.base)], s.border);
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
         const V sc = _mm256_loadu_ps(lk.coord[0] + g), tc = _mm256_loadu_ps(lk.coord[1] + g);
         V value[4];
-        if (!mipmap) {  // one image and one filter whatever lambda is
-            level16x8<kLinear, kS, kT>(base, sc, tc, value);
-            store16(value, bits, g, out);
-            continue;
-        }
         alignas(32) int first[8], second[8], weight[8];
         levels8(s, lambdas8(s, lk, g), first, second, weight);
         const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
@@ -248,6 +256,28 @@ GLSLRUN_AVX2 void gpu_direct(const State& s, const BatchLookup& lk, LaneMask lan
     }
 }
 
+// The kernel of a texture without mipmaps that gpu_direct_samples() takes.
+OneKernel one_kernel(const SamplerState& st) {
+    OneKernel k = nullptr;
+    with_rules<false>(st, linear_within_level(st.mag_filter),
+                      [&]<bool kLinear, Rule kS, Rule kT>() { k = gpu_one<kLinear, kS, kT>; });
+    return k;
+}
+
+// gpu::unorm16() of border_texel() of a colour texture.
+glm::vec4 border16(const Texture& texture) {
+    const Lookup proto{&texture, &texture.sampler, 0, 2, glm::vec3(0.0f), false, 0.0f};
+    return vec_of(gpu::unorm16(texel_of(border_texel(proto))));
+}
+
+GLSLRUN_AVX2 void run_bound(const DirectSampler& d, const float* s, const float* t, LaneMask lanes,
+                            float (*out)[kLanes]) {
+    Image16 im{{static_cast<const glm::vec4*>(d.texels), d.width, {}}, {d.width, splat(float(d.width))},
+               {d.height, splat(float(d.height))}, {}};
+    for (int c = 0; c < 4; ++c) im.border[c] = splat(d.border[c]);
+    reinterpret_cast<OneKernel>(d.kernel)(im, s, t, lanes, out);
+}
+
 }  // namespace
 
 bool gpu_direct_samples(const Texture& texture) {
@@ -265,21 +295,39 @@ GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& l
     s.levels = &texture.levels(0);
     s.base = st.base_level;
     const TextureImage& base = (*s.levels)[size_t(s.base)];
-    s.q = is_mipmap_filter(st.min_filter) ? last_mip_level(base, st) : s.base;
+    const glm::vec4 border = border16(texture);
+    for (int c = 0; c < 4; ++c) s.border[c] = splat(border[c]);
+    if (!is_mipmap_filter(st.min_filter))
+        return one_kernel(st)(image16(base, s.border), lookup.coord[0], lookup.coord[1], lanes, out);
+    s.q = last_mip_level(base, st);
     s.nearest_mip =
         st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
     s.size = image_size(base);
-    const Lookup proto{&texture, &st, 0, 2, glm::vec3(0.0f), false, 0.0f};
-    const glm::vec4 border = vec_of(gpu::unorm16(texel_of(border_texel(proto))));
-    for (int c = 0; c < 4; ++c) s.border[c] = splat(border[c]);
     with_rules<false>(st, linear_within_level(st.mag_filter),
-                      [&]<bool kLinear, Rule kS, Rule kT>() { gpu_direct<kLinear, kS, kT>(s, lookup, lanes, out); });
+                      [&]<bool kLinear, Rule kS, Rule kT>() { gpu_mip<kLinear, kS, kT>(s, lookup, lanes, out); });
+}
+
+DirectSampler bind_gpu_direct(const Texture* texture) {
+    if (!texture || !cpu_has_avx2() || !texture->complete()) return {};
+    if (!gpu_batch_samples(*texture)) return bind_direct(texture);  // the Common rules', as the tex kernel's
+    if (!gpu_direct_samples(*texture) || lod_matters(texture->sampler)) return {};
+    const TextureImage& image = texture->levels(0)[size_t(texture->sampler.base_level)];
+    DirectSampler d;
+    d.run = run_bound;
+    d.kernel = reinterpret_cast<void (*)()>(one_kernel(texture->sampler));
+    d.texels = image.texels.data();
+    d.width = image.width;
+    d.height = image.height;
+    const glm::vec4 border = border16(*texture);
+    for (int c = 0; c < 4; ++c) d.border[c] = border[c];
+    return d;
 }
 #undef GLSLRUN_AVX2
 
 #else
 bool gpu_direct_samples(const Texture&) { return false; }
 void sample_gpu_direct(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
+DirectSampler bind_gpu_direct(const Texture*) { return {}; }
 #endif
 
 }  // namespace glslrun::rt

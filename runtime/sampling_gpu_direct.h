@@ -8,7 +8,7 @@
 // (tests/runtime/sampling_gpu_direct_test.cpp compares). The batched path
 // (sampling_gpu_batch.h) keeps 1D and cube maps and the mixed filters.
 #pragma once
-#include "runtime/sampling_batch.h"
+#include "runtime/sampling_direct.h"
 
 namespace glslrun::rt {
 
@@ -25,5 +25,13 @@ bool gpu_direct_samples(const Texture& texture);
 // left as they are. The implicit LOD takes each quad's first lane's
 // derivatives (lanes 4q..4q+3 are a 2x2 quad).
 void sample_gpu_direct(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]);
+
+// Fast's one-pass sampler of a 2D texture for the JIT's generated `tex`
+// code (as bind_direct() is Precise's): the GPU's rules for a texture
+// without mipmaps that gpu_direct_samples() takes, bind_direct()'s for a
+// texture outside the GPU's rules (float texels: the tex kernel samples
+// those by the Common rules under Fast too), `run` null otherwise
+// (mipmaps, mixed filters, incomplete, no AVX2).
+DirectSampler bind_gpu_direct(const Texture* texture);
 
 }  // namespace glslrun::rt
