@@ -99,14 +99,18 @@ template <bool kBorder>
     }
 }
 
-// gpu::level16() of one image for eight lanes at (s, t): 16-bit values by channel.
-template <bool kLinear, Rule kS, Rule kT>
+// gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
+// channel. `kOneD`: a 1D image (row 0; t and kT unused), whose LINEAR blend
+// is gpu::blend2() of the row's two texels: the bilinear sum with wy = 0.
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void level16x8(const Image16& im, V s, V t, V* value) {
-    constexpr bool kBorder = may_border(kS, kLinear) || may_border(kT, kLinear);
+    constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
+    const I zero = _mm256_setzero_si256();
     if constexpr (!kLinear) {
-        fetch16<kBorder>(im, nearest8<kS>(s, im.w), nearest8<kT>(t, im.h), value);
+        fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? zero : nearest8<kT>(t, im.h), value);
     } else {
-        const Linear8 x = linear8<kS>(s, im.w), y = linear8<kT>(t, im.h);
+        const Linear8 x = linear8<kS>(s, im.w);
+        const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
         const I wx = weight8x8(x.a), wy = weight8x8(y.a);
         const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
         const V w00f = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11));
@@ -120,6 +124,11 @@ template <bool kLinear, Rule kS, Rule kT>
         row16x8<kBorder>(im, x, y.i0, pairs, p, q);
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], w00f), _mm256_mul_ps(q[c], w01f));
+        if constexpr (kOneD) {
+#pragma GCC unroll 4
+            for (int c = 0; c < 4; ++c) value[c] = round_blend8(row0[c]);
+            return;
+        }
         row16x8<kBorder>(im, x, y.i1, pairs, p, q);
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) {
@@ -137,6 +146,7 @@ struct State {
     int base, q;
     bool nearest_mip;
     glm::vec3 size;  // level_base's
+    int dims;        // 1 or 2
 };
 
 // clamp_lambda() of eight lanes, its selects in its order (as sampling_mip2d.cpp's).
@@ -158,7 +168,7 @@ GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, int g) {
         for (int k = 0; k < 2; ++k) {
             const int f = g + 4 * k;
             const glm::vec3 dx(lk.ddx[0][f], lk.ddx[1][f], 0.0f), dy(lk.ddy[0][f], lk.ddy[1][f], 0.0f);
-            quad[k] = gpu::lambda_of_rho(gpu_rho(dx, dy, s.size, 2));
+            quad[k] = gpu::lambda_of_rho(gpu_rho(dx, dy, s.size, s.dims));
         }
         l = _mm256_set_m128(_mm_set1_ps(quad[1]), _mm_set1_ps(quad[0]));
         if (lk.bias) l = _mm256_add_ps(l, _mm256_loadu_ps(lk.lod + g));
@@ -208,13 +218,13 @@ GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int
 }
 
 // The lookups of a texture without mipmaps (one image and one filter whatever lambda is) at (s[i], t[i]).
-template <bool kLinear, Rule kS, Rule kT>
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 GLSLRUN_AVX2 void gpu_one(const Image16& im, const float* s, const float* t, LaneMask lanes, float (*out)[kLanes]) {
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
         V value[4];
-        level16x8<kLinear, kS, kT>(im, _mm256_loadu_ps(s + g), _mm256_loadu_ps(t + g), value);
+        level16x8<kLinear, kS, kT, kOneD>(im, _mm256_loadu_ps(s + g), _mm256_loadu_ps(t + g), value);
         store16(value, bits, g, out);
     }
 }
@@ -222,7 +232,7 @@ GLSLRUN_AVX2 void gpu_one(const Image16& im, const float* s, const float* t, Lan
 using OneKernel = void (*)(const Image16&, const float*, const float*, LaneMask, float (*)[kLanes]);
 
 // A mipmapped texture's lookups.
-template <bool kLinear, Rule kS, Rule kT>
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
     const std::vector<TextureImage>& levels = *s.levels;
     for (int g = 0; g < kLanes; g += 8) {
@@ -239,10 +249,10 @@ GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes,
             const int level = first[std::countr_zero(unsigned(left))];
             const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(d0, splat_i(level))));
             left &= ~take;
-            level16x8<kLinear, kS, kT>(image16(levels[size_t(level)], s.border), sc, tc, value);
+            level16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level)], s.border), sc, tc, value);
             if (two & take) {  // their second level is level + 1, which exists: level < q
                 V next[4];
-                level16x8<kLinear, kS, kT>(image16(levels[size_t(level) + 1], s.border), sc, tc, next);
+                level16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, next);
                 const V w = _mm256_cvtepi32_ps(_mm256_load_si256(reinterpret_cast<const I*>(weight)));
                 const V iw = _mm256_sub_ps(splat(256.0f), w);
 #pragma GCC unroll 4
@@ -256,11 +266,25 @@ GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes,
     }
 }
 
+// f.template operator()<kLinear, kS, kT, kOneD>() for the texture's
+// filter within the level and wraps; a 1D texture's kT is fixed (unused).
+template <class F>
+[[gnu::always_inline]] inline void with_gpu_rules(const Texture& texture, F&& f) {
+    const SamplerState& st = texture.sampler;
+    const bool linear = linear_within_level(st.mag_filter);
+    if (texture.target() == TextureTarget::Tex2D) {
+        with_rules<false>(st, linear, [&]<bool kLinear, Rule kS, Rule kT>() { f.template operator()<kLinear, kS, kT, false>(); });
+        return;
+    }
+    const auto one_d = [&]<bool kLinear, Rule kS, Rule>() { f.template operator()<kLinear, kS, Rule::Edge, true>(); };
+    if (linear) with_rules_of<false, true>(rule_of(st.wrap_s, false, true), Rule::Edge, one_d);
+    else with_rules_of<false, false>(rule_of(st.wrap_s, false, false), Rule::Edge, one_d);
+}
+
 // The kernel of a texture without mipmaps that gpu_direct_samples() takes.
-OneKernel one_kernel(const SamplerState& st) {
+OneKernel one_kernel(const Texture& texture) {
     OneKernel k = nullptr;
-    with_rules<false>(st, linear_within_level(st.mag_filter),
-                      [&]<bool kLinear, Rule kS, Rule kT>() { k = gpu_one<kLinear, kS, kT>; });
+    with_gpu_rules(texture, [&]<bool kLinear, Rule kS, Rule kT, bool kOneD>() { k = gpu_one<kLinear, kS, kT, kOneD>; });
     return k;
 }
 
@@ -282,7 +306,8 @@ GLSLRUN_AVX2 void run_bound(const DirectSampler& d, const float* s, const float*
 
 bool gpu_direct_samples(const Texture& texture) {
     const SamplerState& st = texture.sampler;
-    if (texture.target() != TextureTarget::Tex2D || !gpu_batch_samples(texture)) return false;
+    const TextureTarget target = texture.target();
+    if ((target != TextureTarget::Tex2D && target != TextureTarget::Tex1D) || !gpu_batch_samples(texture)) return false;
     if (!lod_matters(st)) return true;
     return is_mipmap_filter(st.min_filter) && linear_within_level(st.mag_filter) == linear_within_level(st.min_filter);
 }
@@ -298,23 +323,26 @@ GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& l
     const glm::vec4 border = border16(texture);
     for (int c = 0; c < 4; ++c) s.border[c] = splat(border[c]);
     if (!is_mipmap_filter(st.min_filter))
-        return one_kernel(st)(image16(base, s.border), lookup.coord[0], lookup.coord[1], lanes, out);
+        return one_kernel(texture)(image16(base, s.border), lookup.coord[0], lookup.coord[1], lanes, out);
     s.q = last_mip_level(base, st);
     s.nearest_mip =
         st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
     s.size = image_size(base);
-    with_rules<false>(st, linear_within_level(st.mag_filter),
-                      [&]<bool kLinear, Rule kS, Rule kT>() { gpu_mip<kLinear, kS, kT>(s, lookup, lanes, out); });
+    s.dims = texture_dims(texture.target());
+    with_gpu_rules(texture, [&]<bool kLinear, Rule kS, Rule kT, bool kOneD>() {
+        gpu_mip<kLinear, kS, kT, kOneD>(s, lookup, lanes, out);
+    });
 }
 
 DirectSampler bind_gpu_direct(const Texture* texture) {
     if (!texture || !cpu_has_avx2() || !texture->complete()) return {};
     if (!gpu_batch_samples(*texture)) return bind_direct(texture);  // the Common rules', as the tex kernel's
-    if (!gpu_direct_samples(*texture) || lod_matters(texture->sampler)) return {};
+    if (texture->target() != TextureTarget::Tex2D || !gpu_direct_samples(*texture) || lod_matters(texture->sampler))
+        return {};
     const TextureImage& image = texture->levels(0)[size_t(texture->sampler.base_level)];
     DirectSampler d;
     d.run = run_bound;
-    d.kernel = reinterpret_cast<void (*)()>(one_kernel(texture->sampler));
+    d.kernel = reinterpret_cast<void (*)()>(one_kernel(*texture));
     d.texels = image.texels.data();
     d.width = image.width;
     d.height = image.height;

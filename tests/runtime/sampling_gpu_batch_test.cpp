@@ -5,7 +5,7 @@
 // 1D, 2D and cube-map textures with the GPU's mipmaps, every filter pair and wrap
 // mode, implicit, biased and explicit LODs, the texture's bias and clamps,
 // lanes partly masked; the baseline and the AVX2 builds of its loops.
-// Fast's one-pass 2D kernels (runtime/sampling_gpu_direct.h) against the
+// Fast's one-pass 1D and 2D kernels (runtime/sampling_gpu_direct.h) against the
 // batched sampler's baseline build over the same sweep.
 #include <catch2/catch.hpp>
 
@@ -187,7 +187,7 @@ int sweep_direct(std::mt19937& rng, Texture& texture) {
 
 }  // namespace
 
-TEST_CASE("Fast's one-pass 2D lookups equal its batched ones", "[sampling][batch][gpu]") {
+TEST_CASE("Fast's one-pass 1D and 2D lookups equal its batched ones", "[sampling][batch][gpu]") {
     if (!rt::cpu_has_avx2()) return;  // the one-pass kernels need AVX2
     std::mt19937 rng(1924);
     Texture square = make(rng, TextureTarget::Tex2D, 16, 8);
@@ -203,8 +203,12 @@ TEST_CASE("Fast's one-pass 2D lookups equal its batched ones", "[sampling][batch
     odd.sampler.base_level = 1;
     odd.sampler.max_level = 2;
     sweep_direct(rng, odd);
-    // 1D and cube maps keep the batched path.
-    CHECK_FALSE(rt::gpu_direct_samples(make(rng, TextureTarget::Tex1D, 8, 1)));
+    Texture one = make(rng, TextureTarget::Tex1D, 8, 1);
+    CHECK(sweep_direct(rng, one) == 6 * 25);
+    Texture odd_one = make(rng, TextureTarget::Tex1D, 7, 1);
+    odd_one.sampler.border_color = {1.0f, 0.5f, 0.0f, 0.25f};
+    sweep_direct(rng, odd_one);
+    // Cube maps keep the batched path.
     CHECK_FALSE(rt::gpu_direct_samples(make(rng, TextureTarget::Cube, 4, 4)));
 }
 
