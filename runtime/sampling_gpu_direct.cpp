@@ -80,31 +80,56 @@ template <bool kBorder>
     return _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f))));
 }
 
-// A row's two texels of LINEAR (columns x.i0 and x.i1, row y) as 16-bit
-// values into `left` and `right`; `pairs`: every lane's two columns are
-// neighbours, so each lane's two texels are one load.
-template <bool kBorder>
+// A row's two texels of LINEAR (columns x.i0 and x.i1, row y) into `left`
+// and `right`: as 16-bit values, or as stored where kRaw (no index is the
+// border's then); `pairs`: every lane's two columns are neighbours, so each
+// lane's two texels are one load.
+template <bool kBorder, bool kRaw>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void row16x8(const Image16& im, const Linear8& x, I y, bool pairs, V* left,
                                                         V* right) {
+    static_assert(!(kRaw && kBorder));
     if (pairs) {
         fetch_pairs8(im.src, x.i0, y, left, right);
+        if constexpr (!kRaw) {
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) {
-            left[c] = unorm16x8(left[c]);
-            right[c] = unorm16x8(right[c]);
+            for (int c = 0; c < 4; ++c) {
+                left[c] = unorm16x8(left[c]);
+                right[c] = unorm16x8(right[c]);
+            }
         }
+    } else if constexpr (kRaw) {
+        fetch8<false>(im.src, x.i0, y, left);
+        fetch8<false>(im.src, x.i1, y, right);
     } else {
         fetch16<kBorder>(im, x.i0, y, left);
         fetch16<kBorder>(im, x.i1, y, right);
     }
 }
 
+// The 16-bit blend of a bilinear sum: of 16-bit values as it is, or of
+// stored texels (kRaw, level16x8()) 257 K from the bytes' sum.
+template <bool kRaw>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V blend16x8(V sum) {
+    if constexpr (kRaw)
+        sum = _mm256_mul_ps(_mm256_round_ps(sum, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC), splat(257.0f));
+    return round_blend8(sum);
+}
+
 // gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
 // channel. `kOneD`: a 1D image (row 0; t and kT unused), whose LINEAR blend
 // is gpu::blend2() of the row's two texels: the bilinear sum with wy = 0.
+//
+// LINEAR where no texel is the border's sums the stored texels instead:
+// each is k/255 for its byte k (store_texel() keeps RGBA8 so), and the
+// blend's sum of 16-bit values, sum w_i 257 k_i, is 257 K for the bytes'
+// K = sum w_i k_i, which sum (255 w_i) t_i gives within 0.02 (each t_i is
+// within 2^-24 relative of k_i / 255; each product and partial sum, below
+// 2^16, is rounded within 2^-9): rounded to nearest, exactly K. One
+// rounding per channel instead of one per texel, the same bits.
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void level16x8(const Image16& im, V s, V t, V* value) {
     constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
+    constexpr bool kRaw = !kBorder;
     const I zero = _mm256_setzero_si256();
     if constexpr (!kLinear) {
         fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? zero : nearest8<kT>(t, im.h), value);
@@ -113,27 +138,29 @@ template <bool kLinear, Rule kS, Rule kT, bool kOneD>
         const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
         const I wx = weight8x8(x.a), wy = weight8x8(y.a);
         const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
-        const V w00f = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11));
-        const V w01f = _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11));
-        const V w10f = _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11));
-        const V w11f = _mm256_cvtepi32_ps(w11);
+        const V scale = splat(kRaw ? 255.0f : 1.0f);  // 255 w_i: exact
+        const V w00f = _mm256_mul_ps(
+            _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11)), scale);
+        const V w01f = _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11)), scale);
+        const V w10f = _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11)), scale);
+        const V w11f = _mm256_mul_ps(_mm256_cvtepi32_ps(w11), scale);
         // Where every lane's two columns are neighbours, each row's two texels are one load.
         const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
                                            x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
         V p[4], q[4], row0[4];
-        row16x8<kBorder>(im, x, y.i0, pairs, p, q);
+        row16x8<kBorder, kRaw>(im, x, y.i0, pairs, p, q);
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], w00f), _mm256_mul_ps(q[c], w01f));
         if constexpr (kOneD) {
 #pragma GCC unroll 4
-            for (int c = 0; c < 4; ++c) value[c] = round_blend8(row0[c]);
+            for (int c = 0; c < 4; ++c) value[c] = blend16x8<kRaw>(row0[c]);
             return;
         }
-        row16x8<kBorder>(im, x, y.i1, pairs, p, q);
+        row16x8<kBorder, kRaw>(im, x, y.i1, pairs, p, q);
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) {
             const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], w10f), _mm256_mul_ps(q[c], w11f));
-            value[c] = round_blend8(_mm256_add_ps(row0[c], row1));
+            value[c] = blend16x8<kRaw>(_mm256_add_ps(row0[c], row1));
         }
     }
 }
@@ -148,15 +175,6 @@ struct State {
     glm::vec3 size;  // level_base's
     int dims;        // 1 or 2
 };
-
-// clamp_lambda() of eight lanes, its selects in its order (as sampling_mip2d.cpp's).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V clamp_lambda8(V lambda, const SamplerState& st) {
-    const V min = splat(st.min_lod), max = splat(st.max_lod);
-    V x = _mm256_blendv_ps(min, lambda, _mm256_cmp_ps(lambda, min, _CMP_GE_OQ));  // !(lambda >= min_lod): min_lod
-    x = _mm256_blendv_ps(x, max, _mm256_cmp_ps(x, max, _CMP_GT_OQ));
-    const V clamped = clamp_or_low8(x, splat(-kLodLimit), splat(kLodLimit));
-    return _mm256_blendv_ps(clamped, _mm256_setzero_ps(), _mm256_cmp_ps(x, x, _CMP_UNORD_Q));
-}
 
 // Lanes g..g+7's lambda (see the file's comment), as sample_gpu_batch()'s
 // lambdas(). gpu::quantize_lambda()'s floor_f() is floor8()'s there: the

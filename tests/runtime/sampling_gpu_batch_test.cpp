@@ -45,6 +45,15 @@ Texture make(std::mt19937& rng, TextureTarget target, int w, int h) {
     return std::move(*t);
 }
 
+// The texture object's LOD bias and clamps, and a base level above 0.
+void bias_and_clamp(Texture& texture) {
+    texture.sampler.lod_bias = 0.75f;
+    texture.sampler.min_lod = -0.5f;
+    texture.sampler.max_lod = 2.25f;
+    texture.sampler.base_level = 1;
+    texture.sampler.max_level = 2;
+}
+
 struct Operands {
     alignas(32) float coord[3][rt::kLanes], ddx[3][rt::kLanes], ddy[3][rt::kLanes], lod[rt::kLanes];
 };
@@ -134,11 +143,7 @@ TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling", "[sam
     Texture two = make(rng, TextureTarget::Tex2D, 13, 6);
     two.sampler.border_color = {0.25f, 0.0f, 1.0f, 0.5f};
     sweep(rng, two);
-    two.sampler.lod_bias = 0.75f;
-    two.sampler.min_lod = -0.5f;
-    two.sampler.max_lod = 2.25f;
-    two.sampler.base_level = 1;
-    two.sampler.max_level = 2;
+    bias_and_clamp(two);
     sweep(rng, two);
 }
 
@@ -197,11 +202,7 @@ TEST_CASE("Fast's one-pass 1D and 2D lookups equal its batched ones", "[sampling
     Texture odd = make(rng, TextureTarget::Tex2D, 13, 6);
     odd.sampler.border_color = {0.25f, 0.0f, 1.0f, 0.5f};
     sweep_direct(rng, odd);
-    odd.sampler.lod_bias = 0.75f;
-    odd.sampler.min_lod = -0.5f;
-    odd.sampler.max_lod = 2.25f;
-    odd.sampler.base_level = 1;
-    odd.sampler.max_level = 2;
+    bias_and_clamp(odd);
     sweep_direct(rng, odd);
     Texture one = make(rng, TextureTarget::Tex1D, 8, 1);
     CHECK(sweep_direct(rng, one) == 6 * 25);
