@@ -80,56 +80,61 @@ template <bool kBorder>
     return _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f))));
 }
 
-// A row's two texels of LINEAR (columns x.i0 and x.i1, row y) into `left`
-// and `right`: as 16-bit values, or as stored where kRaw (no index is the
-// border's then); `pairs`: every lane's two columns are neighbours, so each
-// lane's two texels are one load.
-template <bool kBorder, bool kRaw>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void row16x8(const Image16& im, const Linear8& x, I y, bool pairs, V* left,
-                                                        V* right) {
-    static_assert(!(kRaw && kBorder));
-    if (pairs) {
-        fetch_pairs8(im.src, x.i0, y, left, right);
-        if constexpr (!kRaw) {
-#pragma GCC unroll 4
-            for (int c = 0; c < 4; ++c) {
-                left[c] = unorm16x8(left[c]);
-                right[c] = unorm16x8(right[c]);
-            }
-        }
-    } else if constexpr (kRaw) {
-        fetch8<false>(im.src, x.i0, y, left);
-        fetch8<false>(im.src, x.i1, y, right);
+// The stored texels at (x, y) of eight lanes by channel; where kBorder, a
+// lane whose index is kBorder reads 0 (and texel 0's address), and
+// `outside` gets its mask (all ones).
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void raw8(const Image16& im, I x, I y, V* ch, V& outside) {
+    if constexpr (!kBorder) {
+        fetch8<false>(im.src, x, y, ch);
     } else {
-        fetch16<kBorder>(im, x.i0, y, left);
-        fetch16<kBorder>(im, x.i1, y, right);
+        const I o = _mm256_cmpgt_epi32(_mm256_setzero_si256(), _mm256_or_si256(x, y));
+        fetch8<false>(im.src, _mm256_andnot_si256(o, x), _mm256_andnot_si256(o, y), ch);
+        outside = _mm256_castsi256_ps(o);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) ch[c] = _mm256_andnot_ps(outside, ch[c]);
     }
 }
 
-// The 16-bit blend of a bilinear sum: of 16-bit values as it is, or of
-// stored texels (kRaw, level16x8()) 257 K from the bytes' sum.
-template <bool kRaw>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V blend16x8(V sum) {
-    if constexpr (kRaw)
-        sum = _mm256_mul_ps(_mm256_round_ps(sum, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC), splat(257.0f));
-    return round_blend8(sum);
+// A row's two texels of LINEAR (columns x.i0 and x.i1, row y) as raw8()
+// gives them, into `left` and `right` (their border masks into `out_left`,
+// `out_right`); `pairs` (never with kBorder): every lane's two columns are
+// neighbours, so each lane's two texels are one load.
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void raw_row8(const Image16& im, const Linear8& x, I y, bool pairs,
+                                                         V* left, V* right, V& out_left, V& out_right) {
+    if (!kBorder && pairs) return fetch_pairs8(im.src, x.i0, y, left, right);
+    raw8<kBorder>(im, x.i0, y, left, out_left);
+    raw8<kBorder>(im, x.i1, y, right, out_right);
+}
+
+// The 16-bit blend (gpu::round_blend()) of a bilinear footprint from the
+// sum S of its stored texels by weights 255 w (border texels 0), the sum
+// `wb` of its border texels' weights w and the border's 16-bit value b:
+// 257 K + wb b, K = S rounded (see level16x8()); every term an integer
+// below 2^24 (the weights sum to 256), so exact.
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V blend16x8(V sum, V wb, V b) {
+    V total = _mm256_mul_ps(_mm256_round_ps(sum, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC), splat(257.0f));
+    if constexpr (kBorder) total = _mm256_add_ps(total, _mm256_mul_ps(wb, b));
+    return round_blend8(total);
 }
 
 // gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
 // channel. `kOneD`: a 1D image (row 0; t and kT unused), whose LINEAR blend
 // is gpu::blend2() of the row's two texels: the bilinear sum with wy = 0.
 //
-// LINEAR where no texel is the border's sums the stored texels instead:
-// each is k/255 for its byte k (store_texel() keeps RGBA8 so), and the
-// blend's sum of 16-bit values, sum w_i 257 k_i, is 257 K for the bytes'
-// K = sum w_i k_i, which sum (255 w_i) t_i gives within 0.02 (each t_i is
-// within 2^-24 relative of k_i / 255; each product and partial sum, below
-// 2^16, is rounded within 2^-9): rounded to nearest, exactly K. One
-// rounding per channel instead of one per texel, the same bits.
+// LINEAR sums the stored texels, not their 16-bit values: each is k/255
+// for its byte k (store_texel() keeps RGBA8 so), and the blend's sum of
+// 16-bit values, sum w_i 257 k_i, is 257 K for the bytes' K = sum w_i k_i,
+// which S = sum (255 w_i) t_i gives within 0.02 (each t_i is within 2^-24
+// relative of k_i / 255; each product and partial sum, below 2^16, is
+// rounded within 2^-9): rounded to nearest, exactly K. A border texel's
+// 16-bit value b (not a byte's 257 k) is added apart, b times its weight.
+// One rounding per channel instead of one per texel, the same bits.
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void level16x8(const Image16& im, V s, V t, V* value) {
     constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
-    constexpr bool kRaw = !kBorder;
     const I zero = _mm256_setzero_si256();
     if constexpr (!kLinear) {
         fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? zero : nearest8<kT>(t, im.h), value);
@@ -137,30 +142,34 @@ template <bool kLinear, Rule kS, Rule kT, bool kOneD>
         const Linear8 x = linear8<kS>(s, im.w);
         const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
         const I wx = weight8x8(x.a), wy = weight8x8(y.a);
-        const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
-        const V scale = splat(kRaw ? 255.0f : 1.0f);  // 255 w_i: exact
-        const V w00f = _mm256_mul_ps(
-            _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11)), scale);
-        const V w01f = _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11)), scale);
-        const V w10f = _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11)), scale);
-        const V w11f = _mm256_mul_ps(_mm256_cvtepi32_ps(w11), scale);
+        const I w11i = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
+        const V w00 = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11i));
+        const V w01 = _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11i));
+        const V w10 = _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11i));
+        const V w11 = _mm256_cvtepi32_ps(w11i);
+        const V k = splat(255.0f);  // 255 w: exact
         // Where every lane's two columns are neighbours, each row's two texels are one load.
         const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
                                            x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
         V p[4], q[4], row0[4];
-        row16x8<kBorder, kRaw>(im, x, y.i0, pairs, p, q);
+        V op = _mm256_setzero_ps(), oq = _mm256_setzero_ps();
+        raw_row8<kBorder>(im, x, y.i0, pairs, p, q, op, oq);
+        const V a00 = _mm256_mul_ps(w00, k), a01 = _mm256_mul_ps(w01, k);
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], w00f), _mm256_mul_ps(q[c], w01f));
+        for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], a00), _mm256_mul_ps(q[c], a01));
+        V wb = _mm256_add_ps(_mm256_and_ps(op, w00), _mm256_and_ps(oq, w01));
         if constexpr (kOneD) {
 #pragma GCC unroll 4
-            for (int c = 0; c < 4; ++c) value[c] = blend16x8<kRaw>(row0[c]);
+            for (int c = 0; c < 4; ++c) value[c] = blend16x8<kBorder>(row0[c], wb, im.border[c]);
             return;
         }
-        row16x8<kBorder, kRaw>(im, x, y.i1, pairs, p, q);
+        raw_row8<kBorder>(im, x, y.i1, pairs, p, q, op, oq);
+        wb = _mm256_add_ps(wb, _mm256_add_ps(_mm256_and_ps(op, w10), _mm256_and_ps(oq, w11)));
+        const V a10 = _mm256_mul_ps(w10, k), a11 = _mm256_mul_ps(w11, k);
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) {
-            const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], w10f), _mm256_mul_ps(q[c], w11f));
-            value[c] = blend16x8<kRaw>(_mm256_add_ps(row0[c], row1));
+            const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], a10), _mm256_mul_ps(q[c], a11));
+            value[c] = blend16x8<kBorder>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
         }
     }
 }
