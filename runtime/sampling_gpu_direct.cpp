@@ -1,8 +1,10 @@
-// The kernels of sampling_gpu_direct.h. Per group of eight lanes:
-// - lambda as sample_gpu_batch()'s lambdas() gives it: one lambda_base per
-//   quad (gpu_rho() and gpu::lambda_of_rho() of its first lane's
-//   derivatives), then each lane's bias, the texture's bias and clamps and
-//   gpu::quantize_lambda(), lane by lane (scalar: two quads a group);
+// The kernels of sampling_gpu_direct.h. Per batch, one lambda_base per
+// quad (gpu_rho() and gpu::lambda_of_rho() of its first lane's
+// derivatives), eight quads a register (as two scalar calls per group of
+// eight lanes, a tenth of two_units' Fast frame: perf); then per group of
+// eight lanes:
+// - lambda as sample_gpu_batch()'s lambdas() gives it: each lane's bias,
+//   the texture's bias and clamps and gpu::quantize_lambda();
 // - each lane's level(s) and 8-bit mipmap weight as gpu::filter16() picks
 //   them, then one pass per first level the group's lanes hold (one on a
 //   smooth surface), as sampling_mip2d.cpp does;
@@ -18,6 +20,7 @@
 // 0.6x to 0.9x Precise's speed on textured programs.
 #include "runtime/sampling_gpu_direct.h"
 
+#include <array>
 #include <bit>
 
 #include "runtime/interp_kernels.h"
@@ -185,19 +188,61 @@ struct State {
     int dims;        // 1 or 2
 };
 
+// float(kLog2Fraction[k]) / 256, as gpu::lambda_of_rho() adds it.
+constexpr std::array<float, 256> kLog2Table = [] {
+    std::array<float, 256> t{};
+    for (size_t k = 0; k < t.size(); ++k) t[k] = float(gpu::kLog2Fraction[k]) * (1.0f / 256.0f);
+    return t;
+}();
+
+// gpu_length() of eight lanes; std::max(a, b) is maxps(b, a), std::min(a, b) minps(b, a) (NaN and
+// signed zeros alike).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V gpu_length8(V du, V dv) {
+    const V u = _mm256_andnot_ps(splat(-0.0f), du), v = _mm256_andnot_ps(splat(-0.0f), dv);
+    return _mm256_add_ps(_mm256_max_ps(v, u), _mm256_mul_ps(splat(0.34375f), _mm256_min_ps(v, u)));
+}
+
+// gpu::lambda_of_rho(gpu_rho()) of eight quads' derivatives (u = s * width, v = t * height).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V quad_lambda8(V dxs, V dxt, V dys, V dyt, V w, V h, bool two_d) {
+    const V ux = _mm256_mul_ps(dxs, w), uy = _mm256_mul_ps(dys, w);
+    const V vx = two_d ? _mm256_mul_ps(dxt, h) : _mm256_setzero_ps();
+    const V vy = two_d ? _mm256_mul_ps(dyt, h) : _mm256_setzero_ps();
+    const V axes = _mm256_max_ps(gpu_length8(uy, vy), gpu_length8(ux, vx));
+    const V diagonals = _mm256_max_ps(gpu_length8(_mm256_sub_ps(ux, uy), _mm256_sub_ps(vx, vy)),
+                                      gpu_length8(_mm256_add_ps(ux, uy), _mm256_add_ps(vx, vy)));
+    const V rho = _mm256_max_ps(_mm256_mul_ps(splat(0.6875f), diagonals), axes);
+    const I bits = _mm256_castps_si256(rho);
+    const V exponent = _mm256_cvtepi32_ps(_mm256_sub_epi32(_mm256_srli_epi32(bits, 23), splat_i(127)));
+    const I k = _mm256_and_si256(_mm256_srli_epi32(bits, 15), splat_i(255));
+    const V lambda = _mm256_min_ps(splat(kLodLimit), _mm256_add_ps(exponent, _mm256_i32gather_ps(kLog2Table.data(), k, 4)));
+    const V small = _mm256_cmp_ps(rho, splat(0x1p-126f), _CMP_NGE_UQ);  // !(rho >= 2^-126): NaN too
+    return _mm256_blendv_ps(lambda, splat(-kLodLimit), small);
+}
+
+// Every quad's lambda_base (lanes 4q..4q+3 take quad q's first lane's derivatives).
+constexpr int kQuads = (kLanes / 4 + 7) / 8 * 8;  // whole registers
+
+GLSLRUN_AVX2 void quad_lambdas(const State& s, const BatchLookup& lk, float* quad) {
+    alignas(32) float d[4][kQuads] = {};
+    for (int q = 0; q < kLanes / 4; ++q) {
+        d[0][q] = lk.ddx[0][4 * q];
+        d[1][q] = lk.ddx[1][4 * q];
+        d[2][q] = lk.ddy[0][4 * q];
+        d[3][q] = lk.ddy[1][4 * q];
+    }
+    const V w = splat(s.size.x), h = splat(s.size.y);
+    for (int q = 0; q < kQuads; q += 8)
+        _mm256_store_ps(quad + q, quad_lambda8(_mm256_load_ps(d[0] + q), _mm256_load_ps(d[1] + q),
+                                              _mm256_load_ps(d[2] + q), _mm256_load_ps(d[3] + q), w, h, s.dims > 1));
+}
+
 // Lanes g..g+7's lambda (see the file's comment), as sample_gpu_batch()'s
-// lambdas(). gpu::quantize_lambda()'s floor_f() is floor8()'s there: the
-// clamped lambda is finite and small.
-GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, int g) {
+// lambdas(), from the quads' lambda_base. gpu::quantize_lambda()'s
+// floor_f() is floor8()'s there: the clamped lambda is finite and small.
+GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, const float* quad, int g) {
     V l = _mm256_setzero_ps();
     if (lk.implicit) {
-        float quad[2];
-        for (int k = 0; k < 2; ++k) {
-            const int f = g + 4 * k;
-            const glm::vec3 dx(lk.ddx[0][f], lk.ddx[1][f], 0.0f), dy(lk.ddy[0][f], lk.ddy[1][f], 0.0f);
-            quad[k] = gpu::lambda_of_rho(gpu_rho(dx, dy, s.size, s.dims));
-        }
-        l = _mm256_set_m128(_mm_set1_ps(quad[1]), _mm_set1_ps(quad[0]));
+        l = _mm256_set_m128(_mm_set1_ps(quad[g / 4 + 1]), _mm_set1_ps(quad[g / 4]));
         if (lk.bias) l = _mm256_add_ps(l, _mm256_loadu_ps(lk.lod + g));
     } else if (lk.lod) {
         l = _mm256_loadu_ps(lk.lod + g);
@@ -262,13 +307,15 @@ using OneKernel = void (*)(const Image16&, const float*, const float*, LaneMask,
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
     const std::vector<TextureImage>& levels = *s.levels;
+    alignas(32) float quad[kQuads];
+    if (lk.implicit) quad_lambdas(s, lk, quad);
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
         const V sc = _mm256_loadu_ps(lk.coord[0] + g), tc = _mm256_loadu_ps(lk.coord[1] + g);
         V value[4];
         alignas(32) int first[8], second[8], weight[8];
-        levels8(s, lambdas8(s, lk, g), first, second, weight);
+        levels8(s, lambdas8(s, lk, quad, g), first, second, weight);
         const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
         const V mixed = _mm256_load_ps(reinterpret_cast<const float*>(second));
         const int two = _mm256_movemask_ps(mixed);
