@@ -219,6 +219,8 @@ constexpr std::array<float, 256> kLog2Table = [] {
     return _mm256_blendv_ps(lambda, splat(-kLodLimit), small);
 }
 
+static_assert(kLanes % 8 == 0, "the kernels take lanes eight at a time");
+
 // Every quad's lambda_base (lanes 4q..4q+3 take quad q's first lane's derivatives).
 constexpr int kQuads = (kLanes / 4 + 7) / 8 * 8;  // whole registers
 
