@@ -78,9 +78,10 @@ template <bool kBorder>
     return _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(c, splat(256.0f)), splat(0.5f)));
 }
 
-// (sum + 128) >> 8 of exact float integers (gpu::round_blend()).
+// (sum + 128) >> 8 of exact non-negative float integers (gpu::round_blend()): a floor, in one rounding.
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V round_blend8(V sum) {
-    return _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f))));
+    return _mm256_round_ps(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f)),
+                           _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
 }
 
 // The stored texels at (x, y) of eight lanes by channel; where kBorder, a
@@ -283,12 +284,17 @@ GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int
 // every integer r in [0, 65535] (each 16-bit result), r 2^-16 + r (2^-32 +
 // 2^-48) rounds to the quotient's float (checked over all of them:
 // r 2^-16 + r 2^-32 alone misses 512), in two products and a sum instead
-// of a division (a tenth of a nine-tap frame: perf).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void store16(V* value, int bits, int g, float (*out)[kLanes]) {
+// of a division (a tenth of a nine-tap frame: perf). The results are
+// finite: no NaN to make canonical, as store8() would.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void store16(const V* value, int bits, int g, float (*out)[kLanes]) {
     const V hi = splat(0x1p-16f), lo = splat(0x1p-32f + 0x1p-48f);
+    const I bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const V take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(splat_i(bits), bit), bit));
 #pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) value[c] = _mm256_add_ps(_mm256_mul_ps(value[c], hi), _mm256_mul_ps(value[c], lo));
-    store8(value, bits, g, out);
+    for (int c = 0; c < 4; ++c) {
+        const V r = _mm256_add_ps(_mm256_mul_ps(value[c], hi), _mm256_mul_ps(value[c], lo));
+        _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), r, take));
+    }
 }
 
 // The lookups of a texture without mipmaps (one image and one filter whatever lambda is) at (s[i], t[i]).
