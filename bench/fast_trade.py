@@ -10,7 +10,7 @@ runs of a run's median frame (CPU ms of the process per frame). Then:
   difference, and the mean byte difference over all channels of all pixels;
 - the built-ins Fast approximates, counted in the program's source (pow, exp, exp2, log, log2,
   sin, cos, inversesqrt, normalize; calls in a loop count once), and its texture lookups (Fast
-  filters them as NVIDIA's GPU does, docs/precision.md).
+  filters them as NVIDIA's GPU does, docs/precision.md); docs/precision_measured.md holds the table.
 The load average is read before every program's runs; on a shared machine the CPU times are the
 numbers to trust.
 

@@ -39,17 +39,6 @@ using namespace direct8;
     return _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(u, u), _mm256_mul_ps(v, v)));
 }
 
-// clamp_lambda() of eight lanes, its selects in its order (as a lane loop
-// its branches and isnan() kept GCC from vectorising it: perf, a third of
-// the level of detail's time).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V clamp_lambda8(V lambda, const SamplerState& st) {
-    const V min = splat(st.min_lod), max = splat(st.max_lod);
-    V x = _mm256_blendv_ps(min, lambda, _mm256_cmp_ps(lambda, min, _CMP_GE_OQ));  // !(lambda >= min_lod): min_lod
-    x = _mm256_blendv_ps(x, max, _mm256_cmp_ps(x, max, _CMP_GT_OQ));
-    const V clamped = clamp_or_low8(x, splat(-kLodLimit), splat(kLodLimit));
-    return _mm256_blendv_ps(clamped, _mm256_setzero_ps(), _mm256_cmp_ps(x, x, _CMP_UNORD_Q));
-}
-
 // lod_from_rho() of every lane. Where each quad's four lanes have one rho
 // (the tex kernel gives a quad its first lane's derivatives: Precise's one
 // LOD per quad), the double log2 runs once per quad, a quarter of the work

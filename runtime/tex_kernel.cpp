@@ -15,6 +15,7 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
 #include "runtime/sampling_gpu_batch.h"
+#include "runtime/sampling_gpu_direct.h"
 #include "runtime/sampling_rules.h"
 
 namespace glslrun::rt::kernels {
@@ -197,7 +198,8 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         // The GPU's batch takes one lambda per quad: gradients the program
         // gives (texture*GradARB) are each lane's, on the lane path.
         if (rules == SamplingRules::Gpu && !info.grad && gpu_batch_samples(*texture)) {
-            sample_gpu_batch(*texture, batch, lanes, out, use_avx2());
+            if (use_avx2() && gpu_direct_samples(*texture)) sample_gpu_direct(*texture, batch, lanes, out);
+            else sample_gpu_batch(*texture, batch, lanes, out, use_avx2());
             continue;
         }
         if (!lanes_only(*texture, rules) && batch_samples(*texture)) {

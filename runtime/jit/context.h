@@ -66,8 +66,9 @@ constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2
 inline constexpr size_t kDirectSlots = direct_slot(kMaxTextureUnits, false);
 
 // The units' one-pass samplers into out[kDirectSlots] (all null where
-// `units` is null or the CPU lacks AVX2).
-void bind_direct_samplers(const GLState::TextureUnit* units, DirectSampler* out);
+// `units` is null or the CPU lacks AVX2); `gpu`: Fast's GPU filtering
+// (the tex kernel's SamplingRules::Gpu).
+void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSampler* out);
 
 // The `index`-th call-out, a 2D or rectangle `tex`, on the lanes of `exec`:
 // its unit's one-pass sampler where every lane names one unit that has one,

@@ -205,6 +205,7 @@ public:
     std::vector<CallOut> call_outs;  // the generated code calls the i-th by its index
     ShaderFn main = nullptr, prologue = nullptr;
     uint32_t reg_count = 0;
+    bool gpu_textures = false;  // Fast with its GPU filtering: the units' samplers are bind_gpu_direct()'s
 
     std::unique_ptr<Executor> instantiate(const ExecParams& params) const override;
 };
@@ -222,7 +223,7 @@ public:
         call_steps_.reserve(code.call_outs.size());
         for (const CallOut& call : code.call_outs) call_steps_.push_back(call_out_step(call, regs_.data, code.reg_count));
         ctx_.call_steps = call_steps_.data();
-        bind_direct_samplers(p.textures, direct_.data());
+        bind_direct_samplers(p.textures, code.gpu_textures, direct_.data());
         ctx_.direct = direct_.data();
         ctx_.tex = run_tex;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
@@ -294,6 +295,7 @@ std::unique_ptr<JitShader> load(Engine& engine, const DiskCache& disk, const Cod
     auto code = std::make_unique<JitShader>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine.lock);
     code->reg_count = uint32_t(shader.regs.size());
+    code->gpu_textures = precision == Precision::Fast && (fast_ops & kFastTexture);
     code->call_outs = std::move(cached->call_outs);
     if (link(engine, *code, std::move(cached->object))) return code;
     return nullptr;
@@ -325,6 +327,7 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     auto code = std::make_unique<JitShader>();  // before the lock: its destructor takes it
     std::lock_guard hold(engine->lock);
     code->reg_count = uint32_t(shader.regs.size());
+    code->gpu_textures = precision == Precision::Fast && (fast_ops & kFastTexture);
 
     // Its own names: the code lives in a JITDylib of its own (EngineCode).
     Engine::NewModule made = engine->new_module("shader");

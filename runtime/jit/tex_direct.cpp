@@ -6,7 +6,8 @@
 // (perf). Here the generated code copies the units and the operand block
 // into its stack frame and calls run_tex(), which, where every lane names
 // one unit whose texture has a one-pass sampler (runtime/sampling_direct.h,
-// bound when the executor is made), calls that sampler with the lookup
+// or Fast's runtime/sampling_gpu_direct.h under its GPU filtering; bound
+// when the executor is made), calls that sampler with the lookup
 // lanes; anything else (another unit per lane, a unit out of range, an
 // incomplete texture, a mipmapped or a depth one) runs the call-out's kernel
 // over the copies. The sampler is the one the kernel would pick, the
@@ -18,6 +19,7 @@
 
 #include "runtime/backend.h"
 #include "runtime/fast_kernels.h"
+#include "runtime/sampling_gpu_direct.h"
 
 namespace glslrun::rt::jit {
 
@@ -25,25 +27,24 @@ namespace {
 
 constexpr unsigned kRegAlign = kLanes * 4 < 64 ? kLanes * 4 : 64;  // as a register's (alu.cpp)
 
-// Whether an op's lookups go through sample_lanes()'s common rules to the
-// one-pass sampler where the texture allows: 2D and rectangle colour
-// lookups (a shadow lookup's texture is a depth one) outside Fast's GPU
-// arithmetic.
-bool direct_candidate(const ir::Instr& in, Precision precision, uint32_t fast_ops) {
+// Whether an op's lookups go to the one-pass sampler where the texture
+// allows: 2D and rectangle colour lookups (a shadow lookup's texture is a
+// depth one); Fast's GPU arithmetic has its own (bind_gpu_direct()).
+bool direct_candidate(const ir::Instr& in) {
     if (in.op != ir::Op::tex) return false;
-    if (precision == Precision::Fast && (fast_ops & kFastTexture)) return false;
     const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
     return (info.target == ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && !info.shadow;
 }
 
 }  // namespace
 
-void bind_direct_samplers(const GLState::TextureUnit* units, DirectSampler* out) {
+void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSampler* out) {
     for (size_t i = 0; i < kDirectSlots; ++i) out[i] = {};
     if (!units || !cpu_has_avx2()) return;
     for (uint32_t unit = 0; unit < uint32_t(kMaxTextureUnits); ++unit) {
         const auto& bound = units[unit].bound;
-        out[direct_slot(unit, false)] = bind_direct(bound[size_t(ir::TexTarget::T2D)].get());
+        const Texture* t2d = bound[size_t(ir::TexTarget::T2D)].get();
+        out[direct_slot(unit, false)] = gpu ? bind_gpu_direct(t2d) : bind_direct(t2d);
         out[direct_slot(unit, true)] = bind_direct(bound[size_t(ir::TexTarget::Rect)].get());
     }
 }
@@ -80,7 +81,7 @@ void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units,
 }
 
 bool Emitter::emit_tex_direct(const ir::Instr& in) {
-    if (!avx2_ || !direct_candidate(in, precision_, fast_ops_)) return false;
+    if (!avx2_ || !direct_candidate(in)) return false;
     call_outs_.push_back({kernel_for(in.op, avx2_, precision_, fast_ops_), in});
     const uint32_t operands = ir::TexInfo::decode(in.imm[2]).operand_count();
     // The copies in the function's stack frame: the registers stay values.

@@ -5,6 +5,8 @@
 // 1D, 2D and cube-map textures with the GPU's mipmaps, every filter pair and wrap
 // mode, implicit, biased and explicit LODs, the texture's bias and clamps,
 // lanes partly masked; the baseline and the AVX2 builds of its loops.
+// Fast's one-pass 1D and 2D kernels (runtime/sampling_gpu_direct.h) against the
+// batched sampler's baseline build over the same sweep.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -17,6 +19,8 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/mipmap_gpu.h"
 #include "runtime/sampling_gpu_batch.h"
+#include "runtime/sampling_gpu_direct.h"
+#include "runtime/sampling_rules.h"
 #include "runtime/texture_levels.h"
 #include "tests/runtime/sampling_inputs.h"
 
@@ -41,14 +45,23 @@ Texture make(std::mt19937& rng, TextureTarget target, int w, int h) {
     return std::move(*t);
 }
 
+// The texture object's LOD bias and clamps, and a base level above 0.
+void bias_and_clamp(Texture& texture) {
+    texture.sampler.lod_bias = 0.75f;
+    texture.sampler.min_lod = -0.5f;
+    texture.sampler.max_lod = 2.25f;
+    texture.sampler.base_level = 1;
+    texture.sampler.max_level = 2;
+}
+
 struct Operands {
     alignas(32) float coord[3][rt::kLanes], ddx[3][rt::kLanes], ddy[3][rt::kLanes], lod[rt::kLanes];
 };
 
-void check_batch(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind) {
+// Random operands of one batch; `lk` points into `ops`.
+rt::BatchLookup random_lookup(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind, Operands& ops) {
     // A cube map's lookup takes a direction and its derivatives.
     const int dims = texture.target() == TextureTarget::Cube ? 3 : rt::texture_dims(texture.target());
-    Operands ops{};
     for (int i = 0; i < rt::kLanes; ++i) {
         for (int c = 0; c < dims; ++c) {
             ops.coord[c][i] = coordinate(rng);
@@ -66,6 +79,12 @@ void check_batch(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind)
         lk.ddy[c] = ops.ddy[c];
     }
     if (lod_kind != ir::TexLod::Implicit) lk.lod = ops.lod;
+    return lk;
+}
+
+void check_batch(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind) {
+    Operands ops{};
+    const rt::BatchLookup lk = random_lookup(rng, texture, lod_kind, ops);
     const rt::LaneMask lanes = std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng) | 1;
     for (bool avx2 : {false, true}) {
         if (avx2 && !rt::cpu_has_avx2()) continue;
@@ -124,12 +143,74 @@ TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling", "[sam
     Texture two = make(rng, TextureTarget::Tex2D, 13, 6);
     two.sampler.border_color = {0.25f, 0.0f, 1.0f, 0.5f};
     sweep(rng, two);
-    two.sampler.lod_bias = 0.75f;
-    two.sampler.min_lod = -0.5f;
-    two.sampler.max_lod = 2.25f;
-    two.sampler.base_level = 1;
-    two.sampler.max_level = 2;
+    bias_and_clamp(two);
     sweep(rng, two);
+}
+
+namespace {
+
+// sample_gpu_direct() against the batched baseline, bit for bit, where it takes the texture.
+void check_direct(std::mt19937& rng, const Texture& texture, ir::TexLod lod_kind) {
+    Operands ops{};
+    const rt::BatchLookup lk = random_lookup(rng, texture, lod_kind, ops);
+    const rt::LaneMask lanes = std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng) | 1;
+    alignas(64) float got[4][rt::kLanes], want[4][rt::kLanes];
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < rt::kLanes; ++i) got[c][i] = want[c][i] = -7.0f;  // kept outside the mask
+    rt::sample_gpu_direct(texture, lk, lanes, got);
+    rt::sample_gpu_batch(texture, lk, lanes, want, false);
+    for (int i = 0; i < rt::kLanes; ++i)
+        for (int c = 0; c < 4; ++c) {
+            INFO("lane " << i << " channel " << c << " coord (" << ops.coord[0][i] << ", " << ops.coord[1][i]
+                         << ") lod " << ops.lod[i] << " got " << got[c][i] << " want " << want[c][i]);
+            REQUIRE(std::bit_cast<uint32_t>(got[c][i]) == std::bit_cast<uint32_t>(want[c][i]));
+        }
+}
+
+// Every filter pair and wrap pair: the direct kernels where they take the
+// texture (and they must take every same-filter pair), returning how many.
+int sweep_direct(std::mt19937& rng, Texture& texture) {
+    int taken = 0;
+    for (TextureFilter min : kFilters)
+        for (TextureFilter mag : {TextureFilter::Nearest, TextureFilter::Linear})
+            for (TextureWrap s : kWraps)
+                for (TextureWrap t : kWraps) {
+                    texture.sampler.min_filter = min;
+                    texture.sampler.mag_filter = mag;
+                    texture.sampler.wrap_s = s;
+                    texture.sampler.wrap_t = t;
+                    REQUIRE(texture.complete());
+                    const bool same = rt::sampling::linear_within_level(min) == rt::sampling::linear_within_level(mag);
+                    REQUIRE(rt::gpu_direct_samples(texture) == same);
+                    if (!same) continue;
+                    ++taken;
+                    for (ir::TexLod lod : kLods)
+                        for (int batch = 0; batch < 3; ++batch) check_direct(rng, texture, lod);
+                }
+    return taken;
+}
+
+}  // namespace
+
+TEST_CASE("Fast's one-pass 1D and 2D lookups equal its batched ones", "[sampling][batch][gpu]") {
+    if (!rt::cpu_has_avx2()) return;  // the one-pass kernels need AVX2
+    std::mt19937 rng(1924);
+    Texture square = make(rng, TextureTarget::Tex2D, 16, 8);
+    CHECK(sweep_direct(rng, square) == 6 * 25);
+    // Not a power of two (the box filter's mipmaps), a border colour whose
+    // 16-bit value is a tie, the object's bias and clamps, a base level above 0.
+    Texture odd = make(rng, TextureTarget::Tex2D, 13, 6);
+    odd.sampler.border_color = {0.25f, 0.0f, 1.0f, 0.5f};
+    sweep_direct(rng, odd);
+    bias_and_clamp(odd);
+    sweep_direct(rng, odd);
+    Texture one = make(rng, TextureTarget::Tex1D, 8, 1);
+    CHECK(sweep_direct(rng, one) == 6 * 25);
+    Texture odd_one = make(rng, TextureTarget::Tex1D, 7, 1);
+    odd_one.sampler.border_color = {1.0f, 0.5f, 0.0f, 0.25f};
+    sweep_direct(rng, odd_one);
+    // Cube maps keep the batched path.
+    CHECK_FALSE(rt::gpu_direct_samples(make(rng, TextureTarget::Cube, 4, 4)));
 }
 
 TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling: cube maps", "[sampling][batch][gpu]") {

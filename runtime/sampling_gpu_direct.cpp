@@ -1,0 +1,443 @@
+// The kernels of sampling_gpu_direct.h. Per batch, one lambda_base per
+// quad (gpu_rho() and gpu::lambda_of_rho() of its first lane's
+// derivatives), eight quads a register (as two scalar calls per group of
+// eight lanes, a tenth of two_units' Fast frame: perf); then per group of
+// eight lanes:
+// - lambda as sample_gpu_batch()'s lambdas() gives it: each lane's bias,
+//   the texture's bias and clamps and gpu::quantize_lambda();
+// - each lane's level(s) and 8-bit mipmap weight as gpu::filter16() picks
+//   them, then one pass per first level the group's lanes hold (one on a
+//   smooth surface), as sampling_mip2d.cpp does;
+// - each level's indices by sampling_direct8.h's steps (the GPU's indices
+//   are the Common rules'), the texels as 16-bit values (gpu::unorm16():
+//   257 k for an RGBA8 texel k/255, rounded to nearest in one instruction,
+//   as sampling_gpu_batch.cpp's load16x8(); the border's value computed
+//   once as the per-lane path does), the 8-bit bilinear weights and the
+//   (sum + 128) >> 8 blends as float integers below 2^24, so exact in any
+//   order, then the mipmap blend likewise and r / 65535.
+// Before this, Fast's lookups went through the batched sampler's lane
+// arrays step by step: two thirds of two_units' frame (perf), and Fast was
+// 0.6x to 0.9x Precise's speed on textured programs.
+#include "runtime/sampling_gpu_direct.h"
+
+#include <array>
+#include <bit>
+
+#include "runtime/interp_kernels.h"
+#include "runtime/sampling_direct8.h"
+#include "runtime/sampling_gpu.h"
+#include "runtime/sampling_gpu_batch.h"
+
+namespace glslrun::rt {
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GLSLRUN_AVX2 __attribute__((target("avx2")))
+
+namespace {
+
+using namespace direct8;
+
+// One level's image as the GPU's fetches read it.
+struct Image16 {
+    Source src;    // its border is unused: the 16-bit `border` replaces the texel
+    Axis w, h;
+    V border[4];   // gpu::unorm16() of border_texel()
+};
+
+[[gnu::always_inline]] GLSLRUN_AVX2 inline Image16 image16(const TextureImage& image, const V* border) {
+    Image16 im{{image.texels.data(), image.width, {}}, {image.width, splat(float(image.width))},
+               {image.height, splat(float(image.height))}, {border[0], border[1], border[2], border[3]}};
+    return im;
+}
+
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V unorm16x8(V t) {
+    return _mm256_round_ps(_mm256_mul_ps(t, splat(65535.0f)), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+
+// The texels at (x, y) of eight lanes as 16-bit values by channel; where
+// kBorder, lanes whose index is kBorder take the border's value (and load texel 0).
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void fetch16(const Image16& im, I x, I y, V* ch) {
+    if constexpr (!kBorder) {
+        fetch8<false>(im.src, x, y, ch);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) ch[c] = unorm16x8(ch[c]);
+    } else {
+        const I outside = _mm256_cmpgt_epi32(_mm256_setzero_si256(), _mm256_or_si256(x, y));
+        fetch8<false>(im.src, _mm256_andnot_si256(outside, x), _mm256_andnot_si256(outside, y), ch);
+        const V take = _mm256_castsi256_ps(outside);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) ch[c] = _mm256_blendv_ps(unorm16x8(ch[c]), im.border[c], take);
+    }
+}
+
+// gpu::weight8() of eight lanes: a NaN or a <= 0 weighs 0.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline I weight8x8(V a) {
+    const V zero = _mm256_setzero_ps();
+    const V c = _mm256_blendv_ps(zero, _mm256_min_ps(a, splat(1.0f)), _mm256_cmp_ps(a, zero, _CMP_GT_OQ));
+    return _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(c, splat(256.0f)), splat(0.5f)));
+}
+
+// (sum + 128) >> 8 of exact non-negative float integers (gpu::round_blend()): a floor, in one rounding.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V round_blend8(V sum) {
+    return _mm256_round_ps(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f)),
+                           _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+
+// The stored texels at (x, y) of eight lanes by channel; where kBorder, a
+// lane whose index is kBorder reads 0 (and texel 0's address), and
+// `outside` gets its mask (all ones).
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void raw8(const Image16& im, I x, I y, V* ch, V& outside) {
+    if constexpr (!kBorder) {
+        fetch8<false>(im.src, x, y, ch);
+    } else {
+        const I o = _mm256_cmpgt_epi32(_mm256_setzero_si256(), _mm256_or_si256(x, y));
+        fetch8<false>(im.src, _mm256_andnot_si256(o, x), _mm256_andnot_si256(o, y), ch);
+        outside = _mm256_castsi256_ps(o);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) ch[c] = _mm256_andnot_ps(outside, ch[c]);
+    }
+}
+
+// A row's two texels of LINEAR (columns x.i0 and x.i1, row y) as raw8()
+// gives them, into `left` and `right` (their border masks into `out_left`,
+// `out_right`); `pairs` (never with kBorder): every lane's two columns are
+// neighbours, so each lane's two texels are one load.
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void raw_row8(const Image16& im, const Linear8& x, I y, bool pairs,
+                                                         V* left, V* right, V& out_left, V& out_right) {
+    if (!kBorder && pairs) return fetch_pairs8(im.src, x.i0, y, left, right);
+    raw8<kBorder>(im, x.i0, y, left, out_left);
+    raw8<kBorder>(im, x.i1, y, right, out_right);
+}
+
+// The 16-bit blend (gpu::round_blend()) of a bilinear footprint from the
+// sum S of its stored texels by weights 255 w (border texels 0), the sum
+// `wb` of its border texels' weights w and the border's 16-bit value b:
+// 257 K + wb b, K = S rounded (see level16x8()); every term an integer
+// below 2^24 (the weights sum to 256), so exact.
+template <bool kBorder>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V blend16x8(V sum, V wb, V b) {
+    V total = _mm256_mul_ps(_mm256_round_ps(sum, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC), splat(257.0f));
+    if constexpr (kBorder) total = _mm256_add_ps(total, _mm256_mul_ps(wb, b));
+    return round_blend8(total);
+}
+
+// gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
+// channel. `kOneD`: a 1D image (row 0; t and kT unused), whose LINEAR blend
+// is gpu::blend2() of the row's two texels: the bilinear sum with wy = 0.
+//
+// LINEAR sums the stored texels, not their 16-bit values: each is k/255
+// for its byte k (store_texel() keeps RGBA8 so), and the blend's sum of
+// 16-bit values, sum w_i 257 k_i, is 257 K for the bytes' K = sum w_i k_i,
+// which S = sum (255 w_i) t_i gives within 0.02 (each t_i is within 2^-24
+// relative of k_i / 255; each product and partial sum, below 2^16, is
+// rounded within 2^-9): rounded to nearest, exactly K. A border texel's
+// 16-bit value b (not a byte's 257 k) is added apart, b times its weight.
+// One rounding per channel instead of one per texel, the same bits.
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void level16x8(const Image16& im, V s, V t, V* value) {
+    constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
+    const I zero = _mm256_setzero_si256();
+    if constexpr (!kLinear) {
+        fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? zero : nearest8<kT>(t, im.h), value);
+    } else {
+        const Linear8 x = linear8<kS>(s, im.w);
+        const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
+        const I wx = weight8x8(x.a), wy = weight8x8(y.a);
+        const I w11i = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
+        const V w00 = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11i));
+        const V w01 = _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11i));
+        const V w10 = _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11i));
+        const V w11 = _mm256_cvtepi32_ps(w11i);
+        const V k = splat(255.0f);  // 255 w: exact
+        // Where every lane's two columns are neighbours, each row's two texels are one load.
+        const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                                           x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
+        V p[4], q[4], row0[4];
+        V op = _mm256_setzero_ps(), oq = _mm256_setzero_ps();
+        raw_row8<kBorder>(im, x, y.i0, pairs, p, q, op, oq);
+        const V a00 = _mm256_mul_ps(w00, k), a01 = _mm256_mul_ps(w01, k);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], a00), _mm256_mul_ps(q[c], a01));
+        V wb = _mm256_add_ps(_mm256_and_ps(op, w00), _mm256_and_ps(oq, w01));
+        if constexpr (kOneD) {
+#pragma GCC unroll 4
+            for (int c = 0; c < 4; ++c) value[c] = blend16x8<kBorder>(row0[c], wb, im.border[c]);
+            return;
+        }
+        raw_row8<kBorder>(im, x, y.i1, pairs, p, q, op, oq);
+        wb = _mm256_add_ps(wb, _mm256_add_ps(_mm256_and_ps(op, w10), _mm256_and_ps(oq, w11)));
+        const V a10 = _mm256_mul_ps(w10, k), a11 = _mm256_mul_ps(w11, k);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) {
+            const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], a10), _mm256_mul_ps(q[c], a11));
+            value[c] = blend16x8<kBorder>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
+        }
+    }
+}
+
+// The texture's state that every group reads.
+struct State {
+    const SamplerState* st;
+    const std::vector<TextureImage>* levels;
+    V border[4];
+    int base, q;
+    bool nearest_mip;
+    glm::vec3 size;  // level_base's
+    int dims;        // 1 or 2
+};
+
+// float(kLog2Fraction[k]) / 256, as gpu::lambda_of_rho() adds it.
+constexpr std::array<float, 256> kLog2Table = [] {
+    std::array<float, 256> t{};
+    for (size_t k = 0; k < t.size(); ++k) t[k] = float(gpu::kLog2Fraction[k]) * (1.0f / 256.0f);
+    return t;
+}();
+
+// gpu_length() of eight lanes; std::max(a, b) is maxps(b, a), std::min(a, b) minps(b, a) (NaN and
+// signed zeros alike).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V gpu_length8(V du, V dv) {
+    const V u = _mm256_andnot_ps(splat(-0.0f), du), v = _mm256_andnot_ps(splat(-0.0f), dv);
+    return _mm256_add_ps(_mm256_max_ps(v, u), _mm256_mul_ps(splat(0.34375f), _mm256_min_ps(v, u)));
+}
+
+// gpu::lambda_of_rho(gpu_rho()) of eight quads' derivatives (u = s * width, v = t * height).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V quad_lambda8(V dxs, V dxt, V dys, V dyt, V w, V h, bool two_d) {
+    const V ux = _mm256_mul_ps(dxs, w), uy = _mm256_mul_ps(dys, w);
+    const V vx = two_d ? _mm256_mul_ps(dxt, h) : _mm256_setzero_ps();
+    const V vy = two_d ? _mm256_mul_ps(dyt, h) : _mm256_setzero_ps();
+    const V axes = _mm256_max_ps(gpu_length8(uy, vy), gpu_length8(ux, vx));
+    const V diagonals = _mm256_max_ps(gpu_length8(_mm256_sub_ps(ux, uy), _mm256_sub_ps(vx, vy)),
+                                      gpu_length8(_mm256_add_ps(ux, uy), _mm256_add_ps(vx, vy)));
+    const V rho = _mm256_max_ps(_mm256_mul_ps(splat(0.6875f), diagonals), axes);
+    const I bits = _mm256_castps_si256(rho);
+    const V exponent = _mm256_cvtepi32_ps(_mm256_sub_epi32(_mm256_srli_epi32(bits, 23), splat_i(127)));
+    const I k = _mm256_and_si256(_mm256_srli_epi32(bits, 15), splat_i(255));
+    const V lambda = _mm256_min_ps(splat(kLodLimit), _mm256_add_ps(exponent, _mm256_i32gather_ps(kLog2Table.data(), k, 4)));
+    const V small = _mm256_cmp_ps(rho, splat(0x1p-126f), _CMP_NGE_UQ);  // !(rho >= 2^-126): NaN too
+    return _mm256_blendv_ps(lambda, splat(-kLodLimit), small);
+}
+
+static_assert(kLanes % 8 == 0, "the kernels take lanes eight at a time");
+
+// Every quad's lambda_base (lanes 4q..4q+3 take quad q's first lane's derivatives).
+constexpr int kQuads = (kLanes / 4 + 7) / 8 * 8;  // whole registers
+
+GLSLRUN_AVX2 void quad_lambdas(const State& s, const BatchLookup& lk, float* quad) {
+    alignas(32) float d[4][kQuads] = {};
+    for (int q = 0; q < kLanes / 4; ++q) {
+        d[0][q] = lk.ddx[0][4 * q];
+        d[1][q] = lk.ddx[1][4 * q];
+        d[2][q] = lk.ddy[0][4 * q];
+        d[3][q] = lk.ddy[1][4 * q];
+    }
+    const V w = splat(s.size.x), h = splat(s.size.y);
+    for (int q = 0; q < kQuads; q += 8)
+        _mm256_store_ps(quad + q, quad_lambda8(_mm256_load_ps(d[0] + q), _mm256_load_ps(d[1] + q),
+                                              _mm256_load_ps(d[2] + q), _mm256_load_ps(d[3] + q), w, h, s.dims > 1));
+}
+
+// Lanes g..g+7's lambda (see the file's comment), as sample_gpu_batch()'s
+// lambdas(), from the quads' lambda_base. gpu::quantize_lambda()'s
+// floor_f() is floor8()'s there: the clamped lambda is finite and small.
+GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, const float* quad, int g) {
+    V l = _mm256_setzero_ps();
+    if (lk.implicit) {
+        l = _mm256_set_m128(_mm_set1_ps(quad[g / 4 + 1]), _mm_set1_ps(quad[g / 4]));
+        if (lk.bias) l = _mm256_add_ps(l, _mm256_loadu_ps(lk.lod + g));
+    } else if (lk.lod) {
+        l = _mm256_loadu_ps(lk.lod + g);
+    }
+    l = clamp_lambda8(_mm256_add_ps(l, splat(s.st->lod_bias)), *s.st);
+    return _mm256_mul_ps(floor8(_mm256_add_ps(_mm256_mul_ps(l, splat(256.0f)), splat(0.5f))), splat(1.0f / 256.0f));
+}
+
+// gpu::filter16()'s levels of eight lanes (a mipmap filter): the first,
+// all ones where a second one (first + 1) is mixed in, and its 8-bit
+// weight. *_MIPMAP_LINEAR in registers (lambda is finite), *_MIPMAP_NEAREST
+// lane by lane.
+GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int* weight) {
+    if (s.nearest_mip) {
+        alignas(32) float l[8];
+        _mm256_store_ps(l, lambda);
+        for (int k = 0; k < 8; ++k) {
+            first[k] = l[k] <= 0.0f ? s.base : gpu::nearest_level(l[k], s.base, s.q);
+            second[k] = weight[k] = 0;
+        }
+        return;
+    }
+    const V mag = _mm256_cmp_ps(lambda, _mm256_setzero_ps(), _CMP_LE_OQ);
+    const V last = _mm256_cmp_ps(_mm256_add_ps(splat(float(s.base)), lambda), splat(float(s.q)), _CMP_GE_OQ);
+    const V whole = floor8(lambda);
+    const I linear_level = _mm256_blendv_epi8(_mm256_add_epi32(splat_i(s.base), _mm256_cvttps_epi32(whole)),
+                                              splat_i(s.q), _mm256_castps_si256(last));
+    const I d0 = _mm256_blendv_epi8(linear_level, splat_i(s.base), _mm256_castps_si256(mag));
+    const I two = _mm256_castps_si256(_mm256_andnot_ps(_mm256_or_ps(mag, last), _mm256_castsi256_ps(splat_i(-1))));
+    _mm256_store_si256(reinterpret_cast<I*>(first), d0);
+    _mm256_store_si256(reinterpret_cast<I*>(second), two);
+    _mm256_store_si256(reinterpret_cast<I*>(weight), _mm256_and_si256(two, weight8x8(_mm256_sub_ps(lambda, whole))));
+}
+
+// r / 65535 (gpu::over_unorm16()) of the lanes of `bits` into out. For
+// every integer r in [0, 65535] (each 16-bit result), r 2^-16 + r (2^-32 +
+// 2^-48) rounds to the quotient's float (checked over all of them:
+// r 2^-16 + r 2^-32 alone misses 512), in two products and a sum instead
+// of a division (a tenth of a nine-tap frame: perf). The results are
+// finite: no NaN to make canonical, as store8() would.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void store16(const V* value, int bits, int g, float (*out)[kLanes]) {
+    const V hi = splat(0x1p-16f), lo = splat(0x1p-32f + 0x1p-48f);
+    const I bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const V take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(splat_i(bits), bit), bit));
+#pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) {
+        const V r = _mm256_add_ps(_mm256_mul_ps(value[c], hi), _mm256_mul_ps(value[c], lo));
+        _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), r, take));
+    }
+}
+
+// The lookups of a texture without mipmaps (one image and one filter whatever lambda is) at (s[i], t[i]).
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
+GLSLRUN_AVX2 void gpu_one(const Image16& im, const float* s, const float* t, LaneMask lanes, float (*out)[kLanes]) {
+    for (int g = 0; g < kLanes; g += 8) {
+        const int bits = int(uint32_t(lanes >> g) & 0xffu);
+        if (!bits) continue;
+        V value[4];
+        level16x8<kLinear, kS, kT, kOneD>(im, _mm256_loadu_ps(s + g), _mm256_loadu_ps(t + g), value);
+        store16(value, bits, g, out);
+    }
+}
+
+using OneKernel = void (*)(const Image16&, const float*, const float*, LaneMask, float (*)[kLanes]);
+
+// A mipmapped texture's lookups.
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
+GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+    const std::vector<TextureImage>& levels = *s.levels;
+    alignas(32) float quad[kQuads];
+    if (lk.implicit) quad_lambdas(s, lk, quad);
+    for (int g = 0; g < kLanes; g += 8) {
+        const int bits = int(uint32_t(lanes >> g) & 0xffu);
+        if (!bits) continue;
+        const V sc = _mm256_loadu_ps(lk.coord[0] + g), tc = _mm256_loadu_ps(lk.coord[1] + g);
+        V value[4];
+        alignas(32) int first[8], second[8], weight[8];
+        levels8(s, lambdas8(s, lk, quad, g), first, second, weight);
+        const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
+        const V mixed = _mm256_load_ps(reinterpret_cast<const float*>(second));
+        const int two = _mm256_movemask_ps(mixed);
+        for (int left = bits; left;) {
+            const int level = first[std::countr_zero(unsigned(left))];
+            const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(d0, splat_i(level))));
+            left &= ~take;
+            level16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level)], s.border), sc, tc, value);
+            if (two & take) {  // their second level is level + 1, which exists: level < q
+                V next[4];
+                level16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, next);
+                const V w = _mm256_cvtepi32_ps(_mm256_load_si256(reinterpret_cast<const I*>(weight)));
+                const V iw = _mm256_sub_ps(splat(256.0f), w);
+#pragma GCC unroll 4
+                for (int c = 0; c < 4; ++c) {
+                    const V blend = round_blend8(_mm256_add_ps(_mm256_mul_ps(value[c], iw), _mm256_mul_ps(next[c], w)));
+                    value[c] = _mm256_blendv_ps(value[c], blend, mixed);
+                }
+            }
+            store16(value, take, g, out);
+        }
+    }
+}
+
+// f.template operator()<kLinear, kS, kT, kOneD>() for the texture's
+// filter within the level and wraps; a 1D texture's kT is fixed (unused).
+template <class F>
+[[gnu::always_inline]] inline void with_gpu_rules(const Texture& texture, F&& f) {
+    const SamplerState& st = texture.sampler;
+    const bool linear = linear_within_level(st.mag_filter);
+    if (texture.target() == TextureTarget::Tex2D) {
+        with_rules<false>(st, linear, [&]<bool kLinear, Rule kS, Rule kT>() { f.template operator()<kLinear, kS, kT, false>(); });
+        return;
+    }
+    const auto one_d = [&]<bool kLinear, Rule kS, Rule>() { f.template operator()<kLinear, kS, Rule::Edge, true>(); };
+    if (linear) with_rules_of<false, true>(rule_of(st.wrap_s, false, true), Rule::Edge, one_d);
+    else with_rules_of<false, false>(rule_of(st.wrap_s, false, false), Rule::Edge, one_d);
+}
+
+// The kernel of a texture without mipmaps that gpu_direct_samples() takes.
+OneKernel one_kernel(const Texture& texture) {
+    OneKernel k = nullptr;
+    with_gpu_rules(texture, [&]<bool kLinear, Rule kS, Rule kT, bool kOneD>() { k = gpu_one<kLinear, kS, kT, kOneD>; });
+    return k;
+}
+
+// gpu::unorm16() of border_texel() of a colour texture.
+glm::vec4 border16(const Texture& texture) {
+    const Lookup proto{&texture, &texture.sampler, 0, 2, glm::vec3(0.0f), false, 0.0f};
+    return vec_of(gpu::unorm16(texel_of(border_texel(proto))));
+}
+
+GLSLRUN_AVX2 void run_bound(const DirectSampler& d, const float* s, const float* t, LaneMask lanes,
+                            float (*out)[kLanes]) {
+    Image16 im{{static_cast<const glm::vec4*>(d.texels), d.width, {}}, {d.width, splat(float(d.width))},
+               {d.height, splat(float(d.height))}, {}};
+    for (int c = 0; c < 4; ++c) im.border[c] = splat(d.border[c]);
+    reinterpret_cast<OneKernel>(d.kernel)(im, s, t, lanes, out);
+}
+
+}  // namespace
+
+bool gpu_direct_samples(const Texture& texture) {
+    const SamplerState& st = texture.sampler;
+    const TextureTarget target = texture.target();
+    if ((target != TextureTarget::Tex2D && target != TextureTarget::Tex1D) || !gpu_batch_samples(texture)) return false;
+    if (!lod_matters(st)) return true;
+    return is_mipmap_filter(st.min_filter) && linear_within_level(st.mag_filter) == linear_within_level(st.min_filter);
+}
+
+GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
+                                    float (*out)[kLanes]) {
+    const SamplerState& st = texture.sampler;
+    State s;  // each field set below (zeroing it first, rep stos, was half of this function: perf)
+    s.st = &st;
+    s.levels = &texture.levels(0);
+    s.base = st.base_level;
+    const TextureImage& base = (*s.levels)[size_t(s.base)];
+    const glm::vec4 border = border16(texture);
+    for (int c = 0; c < 4; ++c) s.border[c] = splat(border[c]);
+    if (!is_mipmap_filter(st.min_filter))
+        return one_kernel(texture)(image16(base, s.border), lookup.coord[0], lookup.coord[1], lanes, out);
+    s.q = last_mip_level(base, st);
+    s.nearest_mip =
+        st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
+    s.size = image_size(base);
+    s.dims = texture_dims(texture.target());
+    with_gpu_rules(texture, [&]<bool kLinear, Rule kS, Rule kT, bool kOneD>() {
+        gpu_mip<kLinear, kS, kT, kOneD>(s, lookup, lanes, out);
+    });
+}
+
+DirectSampler bind_gpu_direct(const Texture* texture) {
+    if (!texture || !cpu_has_avx2() || !texture->complete()) return {};
+    if (!gpu_batch_samples(*texture)) return bind_direct(texture);  // the Common rules', as the tex kernel's
+    if (texture->target() != TextureTarget::Tex2D || !gpu_direct_samples(*texture) || lod_matters(texture->sampler))
+        return {};
+    const TextureImage& image = texture->levels(0)[size_t(texture->sampler.base_level)];
+    DirectSampler d;
+    d.run = run_bound;
+    d.kernel = reinterpret_cast<void (*)()>(one_kernel(*texture));
+    d.texels = image.texels.data();
+    d.width = image.width;
+    d.height = image.height;
+    const glm::vec4 border = border16(*texture);
+    for (int c = 0; c < 4; ++c) d.border[c] = border[c];
+    return d;
+}
+#undef GLSLRUN_AVX2
+
+#else
+bool gpu_direct_samples(const Texture&) { return false; }
+void sample_gpu_direct(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
+DirectSampler bind_gpu_direct(const Texture*) { return {}; }
+#endif
+
+}  // namespace glslrun::rt
