@@ -25,7 +25,14 @@ PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs
   bloom_s0=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s0.toml
   bloom_s1=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s1.toml
   bloom_s2=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s2.toml
-  bloom_s3=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s3.toml"}
+  bloom_s3=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s3.toml
+  trilin_w=trilin.vert:trilin.frag:trilin_w.toml trilin_1=trilin.vert:trilin.frag:trilin_1.toml
+  trilin_2=trilin.vert:trilin.frag:trilin_2.toml trilin_3=trilin.vert:trilin.frag:trilin_3.toml
+  trilin_4=trilin.vert:trilin.frag:trilin_4.toml
+  $(for t in trimp_l*_m*_w*.toml; do echo "${t%.toml}=trilin.vert:trimp.frag:$t"; done)
+  textured_raw_s=textured_400.vert:textured_raw.frag:textured_s.toml
+  textured_raw_t=textured_400.vert:textured_raw.frag:textured_t.toml
+  textured_qraw=textured_400.vert:textured_qraw.frag:textured_probe.toml"}
 for job in $PROBES; do
   p=${job%%=*}; vert=probe.vert; frag=$p.frag; scene=$p.toml
   [[ $job == *=* ]] && IFS=: read -r vert frag scene <<<"${job#*=}"

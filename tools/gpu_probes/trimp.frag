@@ -40,9 +40,8 @@ void main()
     } else if (mode == 1) {
         c = textureGrad(tex, st, vec2(g, 0.0), vec2(0.0, g));
     } else {
-        // The quad's first pixel at st, so its four stay within the taps above
-        // when the quad starts low enough (g up to 1/2 texel... of level 0 is
-        // 1/8 here: kept within by the decoder, which skips a quad whose taps move).
+        // The quad's first pixel at st, the others g further along s and t:
+        // the decoder keeps the pixels whose taps stay on those texels.
         c = texture(tex, st + vec2(float(p.x & 1u), float(p.y & 1u)) * g);
     }
     gl_FragColor = which == 0 ? vec4(bytes16(c.r), bytes16(c.g)) : vec4(bytes16(c.b), bytes16(c.a));
