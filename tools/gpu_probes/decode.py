@@ -4,6 +4,7 @@
 usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|mipgen|cube|funcs2 LABEL=IMG.png ...
        decode.py textured LABEL=DIR   (textured_texel, _lod, _s, _t from run_gpu.sh in DIR)
        decode.py trilin|trimp LABEL=DIR   (trilin_w, _1 .. _4 / trimp_l*_m*_w* from run_gpu.sh in DIR)
+       decode.py trigrad LABEL=IMG.png
 Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
 """
 import sys
@@ -608,6 +609,37 @@ def trimp(images):
             ok = (want == got).all(1)
             print(f"trimp {label} mode {mode}: all eight weights as level_weights() at "
                   f"{100 * ok[inside].mean():.3f}% of {inside.sum()} samples")
+
+
+def trigrad(images):
+    """trigrad.frag: textureGrad's lambda for random derivative vectors against gpu_rho()'s rule and the table."""
+    table = log2_fraction_table()
+    i = np.arange(512 * 512, dtype=np.int64)
+    hs = [pcg_hash(i)]
+    for salt in (0x5BD1E995, 0x1B873593, 0x85EBCA6B):
+        hs.append(pcg_hash(hs[-1] ^ salt))
+
+    def component(h):  # in texels of level 0 (256 wide)
+        v = ((1024 + ((h >> 2) & 1023)) / 1024.0 * 2.0 ** (((h >> 12) & 7) - 1.0) / 256).astype(f32)
+        return np.where(h & 3 == 0, f32(0), np.where((h >> 15) & 1 == 1, -v, v)).astype(f32) * f32(256)
+
+    ux, vx, uy, vy = (component(h) for h in hs)
+    axes = np.maximum(gpu_length(ux, vx), gpu_length(uy, vy))
+    diag = np.maximum(gpu_length(ux + uy, vx + vy), gpu_length(ux - uy, vx - vy))
+    rho = np.maximum(axes, f32(0.6875) * diag)
+    model = np.clip(lambda_of_rho(np.maximum(rho, f32(1e-30)), table), 0, 8)
+    nonzero = sum((c != 0).astype(int) for c in (ux, vx, uy, vy))
+    for label, path in images:
+        a = load(path).reshape(-1, 4)
+        got = np.rint((a[:, 0] * 256 + a[:, 1]) / (257 * 28 / 256.0)) / 256  # level + 8-bit weight
+        inner = (model > 0.01) & (model < 7.99)
+        steps = np.rint((model - got) * 256)
+        print(f"trigrad {label}: the rule's lambda {100 * np.mean(steps[inner] == 0):.2f}% of {inner.sum()} lookups, "
+              f"within one table step {100 * np.mean(np.abs(steps[inner]) <= 1):.2f}%, one step high "
+              f"{100 * np.mean(steps[inner] == 1):.2f}%")
+        for k in range(1, 5):
+            sel = inner & (nonzero == k)
+            print(f"  {k} nonzero derivative components: {100 * np.mean(steps[sel] == 0):.2f}% of {sel.sum()}")
 
 
 if __name__ == "__main__":

@@ -32,7 +32,9 @@ PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs
   $(for t in trimp_l*_m*_w*.toml; do echo "${t%.toml}=trilin.vert:trimp.frag:$t"; done)
   textured_raw_s=textured_400.vert:textured_raw.frag:textured_s.toml
   textured_raw_t=textured_400.vert:textured_raw.frag:textured_t.toml
-  textured_qraw=textured_400.vert:textured_qraw.frag:textured_probe.toml"}
+  textured_qraw=textured_400.vert:textured_qraw.frag:textured_probe.toml
+  trigrad=trilin.vert:trigrad.frag:trigrad.toml
+  $(for w in 0 1 2 3 4 5; do echo "textured_grad_$w=textured_400.vert:textured_grad.frag:textured_grad_$w.toml"; done)"}
 for job in $PROBES; do
   p=${job%%=*}; vert=probe.vert; frag=$p.frag; scene=$p.toml
   [[ $job == *=* ]] && IFS=: read -r vert frag scene <<<"${job#*=}"
