@@ -91,6 +91,9 @@ TEST_CASE("Fast filters textures as NVIDIA's driver: the GPU probes' images", "[
         INFO("backend " << int(backend));
         // Bilinear weights, 16-bit blends, NEAREST ties, wraps: every pixel.
         CHECK(differing("texfilter", backend, Precision::Fast).empty());
+        // The mipmap blend of 1D and cube-map textures at explicit lambdas: every pixel
+        // (blending each level's 16-bit result, 13% and 25% of them).
+        CHECK(differing("trilod", backend, Precision::Fast).empty());
         // The level of detail: all bands but band 2 (gl_FragCoord.y in [128, 192)).
         for (auto [x, y] : differing("lod", backend, Precision::Fast)) {
             INFO("lod.frag pixel " << x << ", " << y << " from the top");
