@@ -72,13 +72,14 @@ void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
             }
         }
         if (lk.bias)
-            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
+            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + gpu::quantize_bias(lk.lod[i]);
     } else if (lk.lod) {
         for (int i = 0; i < kLanes; ++i) lambda[i] = lk.lod[i];
     } else {
         for (int i = 0; i < kLanes; ++i) lambda[i] = 0.0f;
     }
-    for (int i = 0; i < kLanes; ++i) lambda[i] = gpu::quantize_lambda(clamp_lambda(lambda[i] + st.lod_bias, st));
+    const float texture_bias = gpu::quantize_bias(st.lod_bias);
+    for (int i = 0; i < kLanes; ++i) lambda[i] = gpu::quantize_lambda(clamp_lambda(lambda[i] + texture_bias, st));
 }
 
 // gpu::filter16()'s choices for every lane: magnification or minification,

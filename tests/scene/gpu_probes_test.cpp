@@ -94,6 +94,9 @@ TEST_CASE("Fast filters textures as NVIDIA's driver: the GPU probes' images", "[
         // The mipmap blend of 1D and cube-map textures at explicit lambdas: every pixel
         // (blending each level's 16-bit result, 13% and 25% of them).
         CHECK(differing("trilod", backend, Precision::Fast).empty());
+        // Biased implicit lookups, with and without the texture object's bias: every pixel
+        // (the biases truncated toward -infinity, 84% and 78% of them).
+        CHECK(differing("tribias", backend, Precision::Fast).empty());
         // The level of detail: all bands but band 2 (gl_FragCoord.y in [128, 192)).
         for (auto [x, y] : differing("lod", backend, Precision::Fast)) {
             INFO("lod.frag pixel " << x << ", " << y << " from the top");
