@@ -34,6 +34,11 @@ float implicit_lambda(const Texture& texture, const LaneLookup& lookup) {
     return lod_of(texture, lookup.coord, lookup.ddx, lookup.ddy);
 }
 
+// The shader's LOD bias as the lookup's rules add it (the GPU's: 8 fraction bits, toward zero).
+float shader_bias(const Texture& texture, const LaneLookup& lookup) {
+    return gpu_lookup(texture, lookup) ? gpu::quantize_bias(lookup.lod) : lookup.lod;
+}
+
 template <class Obs>
 glm::vec4 sample_by_rules(const Texture& texture, const LaneLookup& lookup, float lod, Obs&& obs) {
     if (gpu_lookup(texture, lookup)) return gpu::sample_complete(texture, lookup.coord, lookup.ref, lod, obs);
@@ -62,7 +67,7 @@ void sample_complete_lane(const Texture& texture, const LaneLookup& lookup, floa
     float lod = lookup.lod;
     const bool lod_matters = sampling::lod_matters(texture.sampler);
     if (lookup.implicit && lod_matters)
-        lod = lookup.bias ? implicit_lambda(texture, lookup) + lookup.lod : implicit_lambda(texture, lookup);
+        lod = lookup.bias ? implicit_lambda(texture, lookup) + shader_bias(texture, lookup) : implicit_lambda(texture, lookup);
     const glm::vec4 v = sample_by_rules(texture, lookup, lod, NoObserver{});
     for (int c = 0; c < 4; ++c) rgba[c] = canonical_nan(v[c]);
 }
@@ -101,7 +106,7 @@ LookupDetails explain_lookup(const Texture* texture, const LaneLookup& lookup) {
     d.lod_implicit = lookup.implicit ? implicit_lambda(*texture, lookup) : std::numeric_limits<float>::quiet_NaN();
     d.lod_used = !lookup.implicit || sampling::lod_matters(texture->sampler);
     float lod = lookup.lod;
-    if (lookup.implicit && d.lod_used) lod = lookup.bias ? d.lod_implicit + lookup.lod : d.lod_implicit;
+    if (lookup.implicit && d.lod_used) lod = lookup.bias ? d.lod_implicit + shader_bias(*texture, lookup) : d.lod_implicit;
     const glm::vec4 v = sample_by_rules(*texture, lookup, lod, Recorder{d});
     // The filters fetch in the order the compiler evaluates their operands
     // (GCC and clang differ): each level's texels are listed sorted instead.

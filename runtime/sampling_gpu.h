@@ -11,9 +11,14 @@
 // - Texels enter as 16-bit values (byte b as 257 b, 1.0 as 65535); a blend is
 //   rounded to 16 bits ((sum + 128) >> 8), and the lookup returns r / 65535.
 // - lambda = log2(rho) from a table: the exponent of rho plus T[k] / 256 for
-//   the top 8 bits k of its significand (kLog2Fraction). A mipmap blend
-//   weighs its two levels by frac(lambda) in 8 bits, rounded like a bilinear
-//   blend.
+//   the top 8 bits k of its significand (kLog2Fraction). The LOD biases are
+//   added in 8 fraction bits (toward zero), and lambda after the clamps is
+//   truncated to 8 fraction bits.
+// - A mipmap blend is one sum over both levels' texels: level d1 weighs
+//   256 - w and d1 + 1 weighs w = floor(256 frac(lambda)), each level's
+//   share split among its texels by level_weights(), and the sum of 16-bit
+//   texels times those integers (256 in all) is rounded once
+//   (trilin.frag, trimp.frag: every sample).
 //
 // - One lambda per 2x2 quad: the implicit LOD takes the quad's first lane's
 //   derivatives (its lower row's d/dx, its left column's d/dy) for all four
@@ -73,8 +78,18 @@ inline float lambda_of_rho(float rho) {
     return std::min(float(exponent) + float(kLog2Fraction[(bits >> 15) & 255u]) * (1.0f / 256.0f), kLodLimit);
 }
 
-// lambda after the biases and clamps, in the GPU's 8 fraction bits (ties up).
-inline float quantize_lambda(float lambda) { return floor_f(lambda * 256.0f + 0.5f) * (1.0f / 256.0f); }
+// lambda after the biases and clamps, truncated to the GPU's 8 fraction bits
+// (trilin.frag mode 0: textureLod at every 1/65536 in [-1/2, 7/2) takes
+// level floor(lambda) and weight floor(256 frac(lambda)); rounding to
+// nearest gave half of them).
+inline float quantize_lambda(float lambda) { return floor_f(lambda * 256.0f) * (1.0f / 256.0f); }
+
+// A LOD bias (the shader's, the texture object's) as the GPU adds it: in 8
+// fraction bits, truncated toward zero (tribias.frag: shader biases in 1/1024
+// steps over [-1, 3), with and without GL_TEXTURE_LOD_BIAS 0.3, every pixel;
+// truncating toward -infinity, 84% and 78%; negative object biases were not
+// measured). A NaN stays NaN.
+inline float quantize_bias(float bias) { return std::trunc(bias * 256.0f) * (1.0f / 256.0f); }
 
 // An 8-bit weight 0..256 for a fraction a in [0, 1]. A NaN coordinate's
 // fraction (NaN) weighs 0: the first texel, on every backend (a NaN cast to
@@ -101,33 +116,59 @@ inline Texel unorm16(Texel t) { return floor_nonneg(plus(scaled(t, 65535.0f), sp
 // (sum + 128) >> 8: a blend of 16-bit values by weights summing to 256.
 inline Texel round_blend(Texel sum) { return floor_nonneg(scaled(plus(sum, splat_texel(128.0f)), 1.0f / 256.0f)); }
 
-inline Texel blend2(Texel a, Texel b, int w) {
-    return round_blend(plus(scaled(a, float(256 - w)), scaled(b, float(w))));
+// The integer weights of a level's 2x2 texels (t00, t01 in the first row,
+// t10, t11 in the second) when the level weighs `share` (0..256) of the
+// lookup, from its 8-bit weights wx, wy: the columns take round(wx share /
+// 256) and the rest, then each column's second row round(column wy / 256),
+// ties up in the second column and down in the first. wx = 256 starts the
+// footprint at the second column (its first is then t01's), which rounds as
+// a first column. trimp.frag read each texel's weight of a two-level lookup
+// (all 8 weights of 262,144 samples at each of textureLod, textureGrad and
+// texture() on quads); share 256 gives linear16()'s bilinear weights exactly.
+struct TexelWeights {
+    int w00, w01, w10, w11;
+};
+inline TexelWeights level_weights(int wx, int wy, int share) {
+    const int x1 = (wx * share + 128) >> 8, x0 = share - x1;
+    const int w11 = (x1 * wy + (wx == 256 ? 127 : 128)) >> 8, w10 = (x0 * wy + 127) >> 8;
+    return {x0 - w10, x1 - w11, w10, w11};
 }
 
+// A level's LINEAR texels as 16-bit values times level_weights(): the sum,
+// not yet rounded (exact: below 65535 * 256 < 2^24).
 template <class Obs>
-[[gnu::always_inline]] inline Texel linear16(const Lookup& lk, const TextureImage& image, Obs&& obs) {
+[[gnu::always_inline]] inline Texel linear_sum(const Lookup& lk, const TextureImage& image, int share, Obs&& obs) {
     const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
     const int wx = weight8(x.a);
-    if (lk.dims == 1)
-        return blend2(unorm16(fetch(lk, image, x.i0, 0, 0, obs)), unorm16(fetch(lk, image, x.i1, 0, 0, obs)), wx);
+    if (lk.dims == 1) {
+        const TexelWeights w = level_weights(wx, 0, share);
+        return plus(scaled(unorm16(fetch(lk, image, x.i0, 0, 0, obs)), float(w.w00)),
+                    scaled(unorm16(fetch(lk, image, x.i1, 0, 0, obs)), float(w.w01)));
+    }
     const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
-    const int wy = weight8(y.a);
-    const int w11 = (wx * wy + 128) >> 8;
+    const TexelWeights w = level_weights(wx, weight8(y.a), share);
     const Texel t00 = unorm16(fetch(lk, image, x.i0, y.i0, 0, obs));
     const Texel t01 = unorm16(fetch(lk, image, x.i1, y.i0, 0, obs));
     const Texel t10 = unorm16(fetch(lk, image, x.i0, y.i1, 0, obs));
     const Texel t11 = unorm16(fetch(lk, image, x.i1, y.i1, 0, obs));
-    const Texel row0 = plus(scaled(t00, float(256 - wx - wy + w11)), scaled(t01, float(wx - w11)));
-    const Texel row1 = plus(scaled(t10, float(wy - w11)), scaled(t11, float(w11)));
-    return round_blend(plus(row0, row1));
+    const Texel row0 = plus(scaled(t00, float(w.w00)), scaled(t01, float(w.w01)));
+    const Texel row1 = plus(scaled(t10, float(w.w10)), scaled(t11, float(w.w11)));
+    return plus(row0, row1);
 }
 
+// A level's texels (LINEAR or NEAREST) weighing `share` of the lookup, not yet rounded.
 template <class Obs>
-[[gnu::always_inline]] inline Texel level16(const Lookup& lk, int level, bool linear, Obs&& obs) {
+[[gnu::always_inline]] inline Texel level_sum(const Lookup& lk, int level, bool linear, int share, Obs&& obs) {
     const TextureImage& image = lk.texture->levels(lk.face)[size_t(level)];
     obs.level(level, image, linear);
-    return linear ? linear16(lk, image, obs) : unorm16(sampling::sample_nearest(lk, image, obs));
+    return linear ? linear_sum(lk, image, share, obs)
+                  : scaled(unorm16(sampling::sample_nearest(lk, image, obs)), float(share));
+}
+
+// One level's 16-bit result.
+template <class Obs>
+[[gnu::always_inline]] inline Texel level16(const Lookup& lk, int level, bool linear, Obs&& obs) {
+    return round_blend(level_sum(lk, level, linear, 256, obs));
 }
 
 // *_MIPMAP_NEAREST's level: level_base + floor(lambda + 1/2), so that
@@ -154,8 +195,9 @@ template <class Obs>
     if (float(base) + lambda >= float(q)) return level16(lk, q, linear, obs);
     const float whole = floor_f(lambda);
     const int d1 = base + int(whole);
-    const Texel first = level16(lk, d1, linear, obs);
-    return blend2(first, level16(lk, d1 + 1, linear, obs), weight8(lambda - whole));
+    const int w = weight8(lambda - whole);
+    const Texel first = level_sum(lk, d1, linear, 256 - w, obs);
+    return round_blend(plus(first, level_sum(lk, d1 + 1, linear, w, obs)));
 }
 
 // sample_complete() for a texture that filtered() takes.
@@ -164,7 +206,7 @@ template <class Obs = NoObserver>
                                                          float lod, Obs&& obs = Obs{}) {
     const SamplerState& st = texture.sampler;
     const Lookup lk = make_lookup(texture, coord, ref, SamplingRules::Gpu);
-    return vec_of(over_unorm16(filter16(lk, clamp_lambda(lod + st.lod_bias, st), obs)));
+    return vec_of(over_unorm16(filter16(lk, clamp_lambda(lod + quantize_bias(st.lod_bias), st), obs)));
 }
 
 }  // namespace glslrun::rt::sampling::gpu

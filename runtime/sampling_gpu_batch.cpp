@@ -38,7 +38,9 @@ struct GpuLanes {
     alignas(32) int width[kLanes], height[kLanes];
     alignas(32) int x0[kLanes], x1[kLanes], y0[kLanes], y1[kLanes];
     alignas(32) int wx[kLanes], wy[kLanes];
-    // Each level's 16-bit result (an integer in a float), channel by channel.
+    // Each level's weight of the lookup (gpu::level_weights()'s share) and
+    // its texels' sum by it, not yet rounded (an integer in a float), channel by channel.
+    alignas(32) int share[2][kLanes];
     alignas(32) float first[4][kLanes], second[4][kLanes];
 };
 
@@ -70,13 +72,14 @@ void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
             }
         }
         if (lk.bias)
-            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
+            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + gpu::quantize_bias(lk.lod[i]);
     } else if (lk.lod) {
         for (int i = 0; i < kLanes; ++i) lambda[i] = lk.lod[i];
     } else {
         for (int i = 0; i < kLanes; ++i) lambda[i] = 0.0f;
     }
-    for (int i = 0; i < kLanes; ++i) lambda[i] = gpu::quantize_lambda(clamp_lambda(lambda[i] + st.lod_bias, st));
+    const float texture_bias = gpu::quantize_bias(st.lod_bias);
+    for (int i = 0; i < kLanes; ++i) lambda[i] = gpu::quantize_lambda(clamp_lambda(lambda[i] + texture_bias, st));
 }
 
 // gpu::filter16()'s choices for every lane: magnification or minification,
@@ -145,20 +148,19 @@ inline void put(float (*out)[kLanes], int i, Texel t) {
     for (int c = 0; c < 4; ++c) out[c][i] = v[c];
 }
 
-// gpu::linear16() of lane i from its indices and weights: the same calls.
-[[gnu::always_inline]] inline Texel linear_lane(const GpuLanes& l, int i, Texel border) {
+// gpu::linear_sum() of lane i from its indices and weights: the same calls.
+[[gnu::always_inline]] inline Texel linear_lane(const GpuLanes& l, int i, int share, Texel border) {
     const glm::vec4* texels = l.texels[i];
     const int w = l.width[i];
     // A 1D lane has wy = 0: its second row weighs 0, and the sum is the 1D blend's exactly.
-    const int wx = l.wx[i], wy = l.wy[i];
-    const int w11 = (wx * wy + 128) >> 8;
+    const gpu::TexelWeights k = gpu::level_weights(l.wx[i], l.wy[i], share);
     const Texel t00 = texel16(texels, w, l.x0[i], l.y0[i], border);
     const Texel t01 = texel16(texels, w, l.x1[i], l.y0[i], border);
     const Texel t10 = texel16(texels, w, l.x0[i], l.y1[i], border);
     const Texel t11 = texel16(texels, w, l.x1[i], l.y1[i], border);
-    const Texel row0 = gpu::plus(gpu::scaled(t00, float(256 - wx - wy + w11)), gpu::scaled(t01, float(wx - w11)));
-    const Texel row1 = gpu::plus(gpu::scaled(t10, float(wy - w11)), gpu::scaled(t11, float(w11)));
-    return gpu::round_blend(gpu::plus(row0, row1));
+    const Texel row0 = gpu::plus(gpu::scaled(t00, float(k.w00)), gpu::scaled(t01, float(k.w01)));
+    const Texel row1 = gpu::plus(gpu::scaled(t10, float(k.w10)), gpu::scaled(t11, float(k.w11)));
+    return gpu::plus(row0, row1);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -264,9 +266,9 @@ GLSLRUN_AVX2 bool linear_axis8(const float* __restrict s, const int* __restrict 
     }
 }
 
-// The bilinear blends of lanes g..g+7 (none on the border): linear_lane()'s
+// The bilinear sums of lanes g..g+7 (none on the border): linear_lane()'s
 // products and sums, exact integers in float, so the same values in any
-// order; the rounding (sum + 128) >> 8 as gpu::round_blend().
+// order (run() rounds them, as gpu::round_blend()).
 // `on_border` (null where no texel can be the border's): per corner, -1
 // where the lane's texel is the border's, whose 16-bit value `border` is
 // then taken instead of the one at offset 0.
@@ -288,22 +290,22 @@ GLSLRUN_AVX2 void blend16x8(const GpuLanes& l, const int (*at)[kLanes], const fl
         for (int c = 0; c < 4; ++c)
             sum[c] = k == 0 ? _mm256_mul_ps(t[c], weight) : _mm256_add_ps(sum[c], _mm256_mul_ps(t[c], weight));
     }
-    const __m256 bias = _mm256_set1_ps(128.0f), scale = _mm256_set1_ps(1.0f / 256.0f);
     #pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c)
-        _mm256_storeu_ps(&out[c][g],
-                         _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_mul_ps(_mm256_add_ps(sum[c], bias), scale))));
+    for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], sum[c]);
 }
 // NEAREST's texels of lanes g..g+7 (at[0]; border lanes as blend16x8()'s)
-// as 16-bit values: gpu::unorm16() of the texel, as load16x8() gives it.
+// as 16-bit values (gpu::unorm16() of the texel, as load16x8() gives it)
+// times each lane's share.
 GLSLRUN_AVX2 void nearest16x8(const GpuLanes& l, const int (*at)[kLanes], const int (*on_border)[kLanes],
-                              const float* border, int g, float (*out)[kLanes]) {
+                              const float* border, const int* share, int g, float (*out)[kLanes]) {
     __m256 t[4];
     load16x8(l.texels, at[0], g, t);
     const __m256i lanes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&on_border[0][g]));
     const __m256 take = _mm256_castsi256_ps(lanes);
+    const __m256 weight = _mm256_cvtepi32_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(share + g)));
     #pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(t[c], _mm256_set1_ps(border[c]), take));
+    for (int c = 0; c < 4; ++c)
+        _mm256_storeu_ps(&out[c][g], _mm256_mul_ps(_mm256_blendv_ps(t[c], _mm256_set1_ps(border[c]), take), weight));
 }
 
 // store_unorm16() eight lanes at a time.
@@ -359,14 +361,15 @@ void lane_images(const Texture& texture, GpuLanes& l, const int* level, const in
     }
 }
 
-// gpu::level16() of every lane in `take` on its image (l.texels, set by
-// lane_images() or one_image()), as 16-bit values into out[c][i]; `linear`
+// gpu::level_sum() of every lane in `take` on its image (l.texels, set by
+// lane_images() or one_image()) with its weight share[i], not yet rounded,
+// into out[c][i]; `linear`
 // is the same for all of them (the caller splits). Eight lanes at a time
 // where the build has AVX2, else lane by lane; skipped lanes of a group
 // fetch too (their indices are in their images) and are written.
 template <bool kAvx2>
-void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* take, bool linear, int dims,
-                  float (*out)[kLanes]) {
+void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* take, const int* share,
+                  bool linear, int dims, float (*out)[kLanes]) {
     const bool cube = texture.target() == TextureTarget::Cube;
     const SamplerState& st = texture.sampler;
     axis<kAvx2>(st.wrap_s, linear, cube ? l.s : lk.coord[0], l.width, l.x0, l.x1, l.wx);
@@ -391,7 +394,7 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
             for (int g = 0; g < kLanes; g += 8) {
                 int any = 0;
                 for (int i = g; i < g + 8; ++i) any |= take[i];
-                if (any) nearest16x8(l, at, on_border, &border16.x, g, out);
+                if (any) nearest16x8(l, at, on_border, &border16.x, share, g, out);
             }
             return;
         }
@@ -411,11 +414,11 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
                 at[1][i] = (y0 * width + x1) & ~b01;
                 at[2][i] = (y1 * width + x0) & ~b10;
                 at[3][i] = (y1 * width + x1) & ~b11;
-                const int wx = l.wx[i], wy = l.wy[i], w11 = (wx * wy + 128) >> 8;
-                w[0][i] = float(256 - wx - wy + w11);
-                w[1][i] = float(wx - w11);
-                w[2][i] = float(wy - w11);
-                w[3][i] = float(w11);
+                const gpu::TexelWeights k = gpu::level_weights(l.wx[i], l.wy[i], share[i]);
+                w[0][i] = float(k.w00);
+                w[1][i] = float(k.w01);
+                w[2][i] = float(k.w10);
+                w[3][i] = float(k.w11);
             }
             static_assert(kLanes % 8 == 0, "the blends take lanes 8 at a time");
             for (int g = 0; g < kLanes; g += 8) {
@@ -430,7 +433,9 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
 #endif
     for (int i = 0; i < kLanes; ++i) {
         if (!take[i]) continue;
-        put(out, i, linear ? linear_lane(l, i, border) : texel16(l.texels[i], l.width[i], l.x0[i], l.y0[i], border));
+        put(out, i,
+            linear ? linear_lane(l, i, share[i], border)
+                   : gpu::scaled(texel16(l.texels[i], l.width[i], l.x0[i], l.y0[i], border), float(share[i])));
     }
 }
 
@@ -438,7 +443,7 @@ void sample_level(const Texture& texture, GpuLanes& l, const BatchLookup& lk, co
 // the lanes differ (magnified and minified lanes of one batch).
 template <bool kAvx2>
 void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, const int* level, const int* take,
-                   int dims, float (*out)[kLanes]) {
+                   const int* share, int dims, float (*out)[kLanes]) {
     alignas(32) int by_filter[2][kLanes];
     int any[2] = {0, 0};
     for (int i = 0; i < kLanes; ++i) {
@@ -448,12 +453,12 @@ void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, c
         any[0] |= by_filter[0][i];
     }
     lane_images(texture, l, level, take);
-    if (!(any[0] & any[1])) return sample_level<kAvx2>(texture, l, lk, take, any[1] != 0, dims, out);
+    if (!(any[0] & any[1])) return sample_level<kAvx2>(texture, l, lk, take, share, any[1] != 0, dims, out);
     // Both filters: each pass writes whole groups of lanes, so the second goes
     // to its own arrays and its lanes are merged.
     alignas(32) float nearest[4][kLanes];
-    sample_level<kAvx2>(texture, l, lk, by_filter[1], true, dims, out);
-    sample_level<kAvx2>(texture, l, lk, by_filter[0], false, dims, nearest);
+    sample_level<kAvx2>(texture, l, lk, by_filter[1], share, true, dims, out);
+    sample_level<kAvx2>(texture, l, lk, by_filter[0], share, false, dims, nearest);
     for (int c = 0; c < 4; ++c)
         for (int i = 0; i < kLanes; ++i) out[c][i] = by_filter[0][i] ? nearest[c][i] : out[c][i];
 }
@@ -472,6 +477,18 @@ void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, c
 #else
     for (int i = 0; i < kLanes; ++i) out[i] = active[i] ? v[i] / 65535.0f : out[i];
 #endif
+}
+
+// gpu::round_blend() of each lane's sum in place: first + second where
+// `second` (else null) has the lane's second level. The sums are integers
+// below 2^24 in float, exact; a skipped lane's may be anything, and any
+// float gives some value here that is not kept.
+[[gnu::always_inline]] inline void round_sums(float (*first)[kLanes], const float (*second)[kLanes], const int* two) {
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < kLanes; ++i) {
+            const float sum = second && two[i] ? first[c][i] + second[c][i] : first[c][i];
+            first[c][i] = floor_f((sum + 128.0f) * (1.0f / 256.0f));
+        }
 }
 
 template <bool kAvx2>
@@ -502,7 +519,9 @@ template <bool kAvx2>
         // One image and one filter whatever lambda is (gpu::filter16()'s
         // magnified and unmipmapped branches sample level_base alike).
         one_image(texture.levels(0)[size_t(st.base_level)], l);
-        sample_level<kAvx2>(texture, l, lk, active, linear_within_level(st.min_filter), dims, l.first);
+        for (int i = 0; i < kLanes; ++i) l.share[0][i] = 256;
+        sample_level<kAvx2>(texture, l, lk, active, l.share[0], linear_within_level(st.min_filter), dims, l.first);
+        round_sums(l.first, nullptr, nullptr);
     } else {
         if (lod_matters(st)) {
             lambdas(texture, lk, l);
@@ -519,23 +538,13 @@ template <bool kAvx2>
         for (int i = 0; i < kLanes; ++i) {
             second[i] = active[i] & int(l.level[1][i] >= 0);
             two |= second[i];
+            // gpu::filter16()'s shares: 256 - w and w of a mipmap blend, else all.
+            l.share[0][i] = second[i] ? 256 - l.mip_weight[i] : 256;
+            l.share[1][i] = second[i] ? l.mip_weight[i] : 0;
         }
-        sample_levels<kAvx2>(texture, l, lk, l.level[0], active, dims, l.first);
-        if (two) {
-            sample_levels<kAvx2>(texture, l, lk, l.level[1], second, dims, l.second);
-            // gpu::blend2() of the two levels in integers (exact in float there too).
-            // The lanes that read one level hold anything in `second` (and
-            // the inactive ones in `first`): zeros there, so that no value
-            // outside int's range is converted.
-            for (int c = 0; c < 4; ++c)
-                for (int i = 0; i < kLanes; ++i) {
-                    const int w = second[i] ? l.mip_weight[i] : 0;
-                    const float near = second[i] ? l.first[c][i] : 0.0f, far = second[i] ? l.second[c][i] : 0.0f;
-                    const int sum = int(near) * (256 - w) + int(far) * w;
-                    const float blend = float((sum + 128) >> 8);
-                    l.first[c][i] = second[i] ? blend : l.first[c][i];
-                }
-        }
+        sample_levels<kAvx2>(texture, l, lk, l.level[0], active, l.share[0], dims, l.first);
+        if (two) sample_levels<kAvx2>(texture, l, lk, l.level[1], second, l.share[1], dims, l.second);
+        round_sums(l.first, two ? l.second : nullptr, second);
     }
     // gpu::over_unorm16(); the results are finite, canonical_nan() keeps them.
 #if defined(__x86_64__) && defined(__GNUC__)

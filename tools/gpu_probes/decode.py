@@ -3,6 +3,8 @@
 
 usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|mipgen|cube|funcs2 LABEL=IMG.png ...
        decode.py textured LABEL=DIR   (textured_texel, _lod, _s, _t from run_gpu.sh in DIR)
+       decode.py trilin|trimp LABEL=DIR   (trilin_w, _1 .. _4 / trimp_l*_m*_w* from run_gpu.sh in DIR)
+       decode.py trigrad LABEL=IMG.png
 Needs numpy and PIL (Debian 12: python3-numpy, python3-pil).
 """
 import sys
@@ -493,6 +495,151 @@ def textured(images):
                 hi = np.minimum(hi, np.where(flat, np.where(np.abs(g) <= 0.5, 1, -1), np.maximum(l1, h1)))
             fits |= lo <= hi
         print(f"  trilinear texels that any weight of two adjacent levels gives: {100 * fits.mean():.2f}%")
+
+
+def floatbits(a):
+    """trilin.frag / textured_raw.frag: a float's bits as four bytes, most significant first."""
+    return ((a[..., 0] << 24) | (a[..., 1] << 16) | (a[..., 2] << 8) | a[..., 3]).astype(np.uint32).view(f32)
+
+
+def pcg_hash(h):
+    """trilin.frag's and trimp.frag's hash in uint32 arithmetic."""
+    h = (h.astype(np.uint64) * 747796405 + 2891336453) & 0xFFFFFFFF
+    h = (((h >> ((h >> 28) + 4)) ^ h) * 277803737) & 0xFFFFFFFF
+    return ((h >> 22) ^ h) & 0xFFFFFFFF
+
+
+def level_weights(wx, wy, share):
+    """runtime/sampling_gpu.h's level_weights(): a level's 2x2 texel weights when it weighs `share` of 256."""
+    x1 = (wx * share + 128) >> 8
+    x0 = share - x1
+    w11 = (x1 * wy + np.where(wx == 256, 127, 128)) >> 8
+    w10 = (x0 * wy + 127) >> 8
+    return [(0, 0, x0 - w10), (0, 1, x1 - w11), (1, 0, w10), (1, 1, w11)]  # (row, column, weight)
+
+
+def level_taps(n, s, t, share):
+    """Texel rows, columns (REPEAT) and weights of an n x n level at (s, t): the GPU's 8-bit weights."""
+    u = (s - np.floor(s)).astype(f32) * f32(n) - f32(0.5)
+    v = (t - np.floor(t)).astype(f32) * f32(n) - f32(0.5)
+    i0, j0 = np.floor(u).astype(np.int64), np.floor(v).astype(np.int64)
+    wx = np.where(u - np.floor(u) > 0, (np.minimum(u - np.floor(u), f32(1)) * f32(256) + f32(0.5)).astype(np.int64), 0)
+    wy = np.where(v - np.floor(v) > 0, (np.minimum(v - np.floor(v), f32(1)) * f32(256) + f32(0.5)).astype(np.int64), 0)
+    return [((j0 + dj) % n, (i0 + di) % n, w) for dj, di, w in level_weights(wx, wy, share)], i0, j0
+
+
+def trilinear16(levels, s, t, lam):
+    """The GPU's 16-bit result of a LINEAR_MIPMAP_LINEAR lookup at lambda (every level square, REPEAT)."""
+    q = len(levels) - 1
+    lam = np.floor(np.asarray(lam) * 256) / 256  # 8 fraction bits, truncated
+    d = np.clip(np.floor(lam), 0, q).astype(np.int64)
+    w = np.where((lam > 0) & (lam < q), np.round((lam - np.floor(lam)) * 256), 0).astype(np.int64)
+    total = np.zeros(len(s), np.int64)
+    for lv in range(q + 1):
+        for near, share in ((d == lv, 256 - w), ((d + 1 == lv) & (w > 0), w)):
+            taps, _, _ = level_taps(levels[lv].shape[0], s, t, share)
+            for j, i, wt in taps:
+                total += np.where(near, wt * 257 * levels[lv][j, i], 0)
+    return (total + 128) >> 8
+
+
+def trilin(images):
+    """trilin_w, trilin_1 .. _4 in DIR: textureLod's level weight of lambda, and the eight-texel rule on random levels."""
+    for label, d in images:
+        i = np.arange(512 * 512, dtype=np.int64)
+        v = np.rint(floatbits(load(f"{d}/trilin_w.png")).ravel().astype(np.float64) * 65535).astype(np.int64)
+        lam = i / 65536.0 - 0.5
+        up = np.floor(np.maximum(lam, 0)) % 2 == 0  # blending from a level of 0 towards one of 1
+        w = np.floor((np.maximum(lam, 0) % 1) * 256).astype(np.int64)
+        want = (65535 * np.where(up, w, 256 - w) + 128) >> 8
+        inner = (lam > 0) & (lam < 3)
+        print(f"trilin {label}: mode 0, weight floor(256 frac(lambda)): {100 * np.mean((want == v)[inner]):.3f}% "
+              f"of {inner.sum()} lambdas in (0, 3)")
+        levels = [np.asarray(Image.open(f"{HERE}/rand_l{n}.png").convert("RGBA"), dtype=np.int64)[::-1, :, 0]
+                  for n in (8, 4, 2, 1)]
+        table = log2_fraction_table()
+        for mode in (1, 2, 3):
+            x, y = i % 512, i // 512
+            key = (x >> 1) + 256 * (y >> 1) if mode == 3 else i
+            h1 = pcg_hash(key)
+            h2 = pcg_hash(h1 ^ 0x5BD1E995)
+            h3 = pcg_hash(h2 ^ 0x1B873593)
+            s = ((h1 & 0xFFFF) / 65536.0).astype(f32)
+            t = ((h1 >> 16) / 65536.0).astype(f32)
+            g = ((1024 + (h3 & 1023)) / 1024.0 * 2.0 ** (((h3 >> 10) & 3) - 1.0) / 8).astype(f32)
+            if mode == 3:
+                s, t = (s + (x & 1).astype(f32) * g).astype(f32), (t + (y & 1).astype(f32) * g).astype(f32)
+            lam = (h2 & 4095) / 1024.0 - 0.5 if mode == 1 else lambda_of_rho(g * f32(8), table)
+            got = np.rint(floatbits(load(f"{d}/trilin_{mode}.png")).ravel().astype(np.float64) * 65535)
+            blend = (lam > 0) & (lam < 3) & (np.floor(lam * 256) % 256 != 0)
+            ok = trilinear16(levels, s, t, lam) == got
+            print(f"  mode {mode}: the eight-texel rule {100 * ok.mean():.3f}% of all, {100 * ok[blend].mean():.3f}% "
+                  f"of the {blend.sum()} blends")
+        q = floatbits(load(f"{d}/trilin_4.png")).ravel()
+        print(f"  mode 4: textureQueryLod = the table's lambda at {100 * np.mean(q == lam):.3f}% of the pixels")
+
+
+def trimp(images):
+    """trimp_l{0,1}_m{0,1,2}_w{0,1} in DIR: each texel's weight of a two-level lookup against level_weights()."""
+    table = log2_fraction_table()
+    for label, d in images:
+        i = np.arange(512 * 512, dtype=np.int64)
+        x, y = i % 512, i // 512
+        for mode in (0, 1, 2):
+            cols = []
+            for lv in (0, 1):
+                for which in (0, 1):
+                    a = load(f"{d}/trimp_l{lv}_m{mode}_w{which}.png").reshape(-1, 4)
+                    cols += [a[:, 0] * 256 + a[:, 1], a[:, 2] * 256 + a[:, 3]]
+            got = np.rint(np.stack(cols, 1) * 256 / 65535).astype(np.int64)  # 8-bit weights, 65535 w / 256 read back
+            key = (x >> 1) + 256 * (y >> 1) if mode == 2 else i
+            h1 = pcg_hash(key)
+            h2 = pcg_hash(h1 ^ 0x5BD1E995)
+            s = (0.375 + (h1 & 0x3FFF) / 65536.0).astype(f32)
+            t = (0.375 + ((h1 >> 16) & 0x3FFF) / 65536.0).astype(f32)
+            g = ((1024 + (h2 & 1023)) / 4096.0).astype(f32)
+            if mode == 2:
+                s, t = (s + (x & 1).astype(f32) * g).astype(f32), (t + (y & 1).astype(f32) * g).astype(f32)
+            lam = (h2 >> 20) / 4096.0 if mode == 0 else lambda_of_rho(g * f32(4), table)
+            w = np.floor(np.clip(lam, 0, 1) * 256).astype(np.int64)
+            t0, i0, j0 = level_taps(4, s, t, 256 - w)
+            t1, k0, l0 = level_taps(2, s, t, w)
+            want = np.stack([wt for _, _, wt in t0] + [wt for _, _, wt in t1], 1)
+            inside = (i0 == 1) & (j0 == 1) & (k0 == 0) & (l0 == 0) & (lam > 0) & (lam < 1)
+            ok = (want == got).all(1)
+            print(f"trimp {label} mode {mode}: all eight weights as level_weights() at "
+                  f"{100 * ok[inside].mean():.3f}% of {inside.sum()} samples")
+
+
+def trigrad(images):
+    """trigrad.frag: textureGrad's lambda for random derivative vectors against gpu_rho()'s rule and the table."""
+    table = log2_fraction_table()
+    i = np.arange(512 * 512, dtype=np.int64)
+    hs = [pcg_hash(i)]
+    for salt in (0x5BD1E995, 0x1B873593, 0x85EBCA6B):
+        hs.append(pcg_hash(hs[-1] ^ salt))
+
+    def component(h):  # in texels of level 0 (256 wide)
+        v = ((1024 + ((h >> 2) & 1023)) / 1024.0 * 2.0 ** (((h >> 12) & 7) - 1.0) / 256).astype(f32)
+        return np.where(h & 3 == 0, f32(0), np.where((h >> 15) & 1 == 1, -v, v)).astype(f32) * f32(256)
+
+    ux, vx, uy, vy = (component(h) for h in hs)
+    axes = np.maximum(gpu_length(ux, vx), gpu_length(uy, vy))
+    diag = np.maximum(gpu_length(ux + uy, vx + vy), gpu_length(ux - uy, vx - vy))
+    rho = np.maximum(axes, f32(0.6875) * diag)
+    model = np.clip(lambda_of_rho(np.maximum(rho, f32(1e-30)), table), 0, 8)
+    nonzero = sum((c != 0).astype(int) for c in (ux, vx, uy, vy))
+    for label, path in images:
+        a = load(path).reshape(-1, 4)
+        got = np.rint((a[:, 0] * 256 + a[:, 1]) / (257 * 28 / 256.0)) / 256  # level + 8-bit weight
+        inner = (model > 0.01) & (model < 7.99)
+        steps = np.rint((model - got) * 256)
+        print(f"trigrad {label}: the rule's lambda {100 * np.mean(steps[inner] == 0):.2f}% of {inner.sum()} lookups, "
+              f"within one table step {100 * np.mean(np.abs(steps[inner]) <= 1):.2f}%, one step high "
+              f"{100 * np.mean(steps[inner] == 1):.2f}%")
+        for k in range(1, 5):
+            sel = inner & (nonzero == k)
+            print(f"  {k} nonzero derivative components: {100 * np.mean(steps[sel] == 0):.2f}% of {sel.sum()}")
 
 
 if __name__ == "__main__":

@@ -16,7 +16,7 @@ fi
 cd tools/gpu_probes || exit 1
 rc=0
 # NAME or NAME=VERT:FRAG:SCENE (the default: probe.vert, NAME.frag, NAME.toml).
-PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs2
+PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs2 trilod tribias
   textured_lin=../../shaders/textured_pix.vert:../../shaders/textured_pix.frag:textured_lin.toml
   textured_texel=../../shaders/textured_pix.vert:textured_texel.frag:textured_probe.toml
   textured_lod=textured_400.vert:textured_lod.frag:textured_probe.toml
@@ -25,7 +25,16 @@ PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs
   bloom_s0=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s0.toml
   bloom_s1=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s1.toml
   bloom_s2=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s2.toml
-  bloom_s3=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s3.toml"}
+  bloom_s3=../../scenes/programs/bloom.vert:../../scenes/programs/bloom.frag:bloom_s3.toml
+  trilin_w=trilin.vert:trilin.frag:trilin_w.toml trilin_1=trilin.vert:trilin.frag:trilin_1.toml
+  trilin_2=trilin.vert:trilin.frag:trilin_2.toml trilin_3=trilin.vert:trilin.frag:trilin_3.toml
+  trilin_4=trilin.vert:trilin.frag:trilin_4.toml
+  $(for t in trimp_l*_m*_w*.toml; do echo "${t%.toml}=trilin.vert:trimp.frag:$t"; done)
+  textured_raw_s=textured_400.vert:textured_raw.frag:textured_s.toml
+  textured_raw_t=textured_400.vert:textured_raw.frag:textured_t.toml
+  textured_qraw=textured_400.vert:textured_qraw.frag:textured_probe.toml
+  trigrad=trilin.vert:trigrad.frag:trigrad.toml
+  $(for w in 0 1 2 3 4 5; do echo "textured_grad_$w=textured_400.vert:textured_grad.frag:textured_grad_$w.toml"; done)"}
 for job in $PROBES; do
   p=${job%%=*}; vert=probe.vert; frag=$p.frag; scene=$p.toml
   [[ $job == *=* ]] && IFS=: read -r vert frag scene <<<"${job#*=}"
