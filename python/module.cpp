@@ -283,9 +283,12 @@ void bind_program(py::module_& m) {
                 py::dict d;
                 d["compiled"] = c.compiled;
                 d["loaded"] = c.loaded;
+                d["optimised"] = c.optimised;
                 return d;
             },
-            "The shaders the JIT compiled so far ('compiled') and loaded from the code cache ('loaded').")
+            "The shaders the JIT compiled so far ('compiled') and loaded from the code cache ('loaded'); of "
+            "those, its second tier's ('optimised': a stage that kept drawing, compiled again with every "
+            "optimization in the background).")
         .def_property(
             "max_loop_iterations", [](const PyProgram& p) { return p.exec.max_loop_iterations; },
             [](PyProgram& p, uint64_t n) { p.exec.max_loop_iterations = n; },

@@ -71,8 +71,8 @@ constexpr uint64_t kMeasureNanos = 2'000'000;
 
 // LLVM's expected CPU time for `shader`, in nanoseconds; 0 where the JIT
 // does not take it.
-uint64_t expected_compile_nanos(const ir::Shader& shader, bool quick_codegen) {
-    const JitPlan plan = plan_jit(shader, quick_codegen);
+uint64_t expected_compile_nanos(const ir::Shader& shader, bool quick_codegen, bool optimised) {
+    const JitPlan plan = plan_jit(shader, quick_codegen, optimised);
     return plan.take ? std::max<uint64_t>(1, plan.nanos) : 0;
 }
 
@@ -254,7 +254,8 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
         return get(shader, interp).instantiate(params);
     }
     if (!meter.queued.load()) {
-        if (meter.expected_nanos == Meter::kUnknown) meter.expected_nanos = expected_compile_nanos(shader, key.quick_codegen);
+        if (meter.expected_nanos == Meter::kUnknown)
+            meter.expected_nanos = expected_compile_nanos(shader, key.quick_codegen, key.optimised);
         if (meter.expected_nanos == 0) {
             meter.choice.store(int(Runner::Interp));  // the JIT does not take it
         } else if (meter.nanos[0].load() >= meter.expected_nanos) {
