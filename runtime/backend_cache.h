@@ -96,12 +96,15 @@ public:
         uint64_t expected_nanos = kUnknown;  // LLVM's expected time (0: not taken); under the cache's lock
         // The second tier's: lanes the first tier's JIT code ran untimed
         // (nanos[1] and lanes[1] time a first part of them), and LLVM's
-        // expected time for it (0: it would make the same code). Under the
-        // cache's lock but the lanes.
+        // expected time for it (0: it would make the same code; once the
+        // first tier was compiled here, that compile's time over
+        // jit::kQuickCodegenShare where less). Under the cache's lock but
+        // the lanes.
         std::atomic<uint64_t> hot_lanes{0};
         uint64_t optimise_nanos = kUnknown;
         bool optimise_queued = false;  // or done, or loaded from the code cache
         bool optimise_probed = false;  // the code cache was asked for it
+        bool optimise_measured = false;  // optimise_nanos from the first tier's measured compile
     };
 
     Meter& meter(ir::Stage stage) { return meters_[size_t(stage)]; }

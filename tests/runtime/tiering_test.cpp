@@ -23,6 +23,7 @@
 #include "runtime/backend_cache.h"
 #include "runtime/compile_queue.h"
 #include "runtime/interp_kernels.h"
+#include "runtime/jit/jit.h"
 #include "runtime/program_state.h"
 #include "tests/runtime/ir_builder.h"
 
@@ -342,6 +343,10 @@ TEST_CASE("the second tier: a hot stage is compiled again in the background and 
     // Not hot yet: a batch's time is far less than the compile's.
     CHECK(hot_lanes_of_one_run(*cache, shader) == uint64_t(rt::kLanes));
     CHECK_FALSE(meter.optimise_queued);
+    // The compile expected from the first tier's, measured, where the plan's estimate is more.
+    CHECK(meter.optimise_measured);
+    CHECK(meter.optimise_nanos <= uint64_t(cache->jit_compile_seconds() * 1e9 / rt::jit::kQuickCodegenShare) + 1);
+    CHECK(meter.optimise_nanos <= rt::plan_jit(shader, false, true).nanos);
     // Hot: the timed part's cost per lane times the untimed lanes reaches LLVM's expected time.
     meter.nanos[1] = 1000;
     meter.lanes[1] = 1;
