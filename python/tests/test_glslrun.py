@@ -288,6 +288,29 @@ def test_code_cache(tmp_path):
     np.testing.assert_array_equal(image, glslrun.render(*SPOT, backend="interp", cache=False))
 
 
+def test_jit_tiers(tmp_path):
+    """The JIT's tiers: the first tier's code and the second's draw the interpreter's bits."""
+    if not glslrun.jit_available():
+        assert not os.environ.get("GLSLRUN_TEST_JIT_BUILT"), "the JIT plugin did not load"
+        pytest.skip("built without the JIT")
+    scene = glslrun.Scene.parse("[output]\nsize = [32, 32]\n[[objects]]\nmesh = \"quad\"\n",
+                                path("scenes", "inline.toml"))
+    images = {}
+    for backend, tier in (("interp", "tiered"), ("jit", "first"), ("jit", "optimised")):
+        program = glslrun.Program.from_files(path("shaders", "colors.vert"), path("shaders", "colors.frag"))
+        program.backend = backend
+        program.jit_tier = tier
+        assert program.jit_tier == tier
+        program.cache = False
+        images[tier] = program.render(scene)
+        if tier == "optimised":
+            assert program.jit_compiles["optimised"] == 2
+    np.testing.assert_array_equal(images["first"], images["tiered"])
+    np.testing.assert_array_equal(images["optimised"], images["tiered"])
+    with pytest.raises(ValueError, match="unknown JIT tier 'fastest'"):
+        program.jit_tier = "fastest"
+
+
 def test_include_dirs(tmp_path):
     # As the command line's -I: `#include` looks beside the including file, then in include_dirs.
     lib = tmp_path / "lib"
