@@ -104,12 +104,11 @@ BackendCache::Slots::Made BackendCache::compile(const ir::Shader& shader, const 
 }
 
 const CompiledShader& BackendCache::get(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache) {
-    Slots& slots = key.optimised ? *optimised_ : *slots_;
-    return *slots.get(key, [&](const std::atomic<bool>*) { return compile(shader, key, nullptr, {cache}); });
+    return *slots_of(key).get(key, [&](const std::atomic<bool>*) { return compile(shader, key, nullptr, {cache}); });
 }
 
 void BackendCache::queue(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache) {
-    Slots& slots = key.optimised ? *optimised_ : *slots_;
+    Slots& slots = slots_of(key);
     if (slots.requested(key)) return;
     auto copy = std::make_shared<const ir::Shader>(shader);
     auto config = std::make_shared<const CodeCacheConfig>(cache ? *cache : CodeCacheConfig{});
@@ -134,7 +133,7 @@ bool BackendCache::probe(const ir::Shader& shader, const Key& plain, const CodeC
     meter.probed = true;
     Slots::Made made = compile(shader, plain, nullptr, {cache, true});
     if (!made.code || !made.loaded) return false;
-    (plain.optimised ? *optimised_ : *slots_).put(plain, std::move(made));
+    slots_of(plain).put(plain, std::move(made));
     meter.queued.store(true);
     return true;
 }
@@ -229,7 +228,7 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
         tiered && key.specialization.empty() ? optimised(shader, plain, cache, chosen == int(Runner::Jit)) : nullptr;
     const bool first_tier = jit == nullptr;
     if (!meter.queued.load()) probe(shader, plain, cache);
-    if (!jit) jit = (plain.optimised ? *optimised_ : *slots_).ready(plain);
+    if (!jit) jit = slots_of(plain).ready(plain);
     if (jit && first_tier && !key.specialization.empty() && chosen == int(Runner::Jit)) {
         // The JIT won: specialize as ExecOptions::jit_specialize_after asks,
         // with the unspecialized code meanwhile.
@@ -271,7 +270,7 @@ std::unique_ptr<Executor> BackendCache::auto_executor(const ir::Shader& shader, 
         } else if (meter.nanos[0].load() >= meter.expected_nanos) {
             meter.queued.store(true);
             queue(shader, plain, cache);
-            if ((plain.optimised ? *optimised_ : *slots_).ready(plain)) {  // compiled here, without a thread
+            if (slots_of(plain).ready(plain)) {  // compiled here, without a thread
                 lock.unlock();
                 return auto_executor(shader, key, interp, params, cache, tiered);
             }

@@ -143,6 +143,7 @@ private:
     mutable std::mutex mutex_;  // the policy's: the streaks, a Meter's probed and expected_nanos
     std::shared_ptr<Slots> slots_;
     std::shared_ptr<Slots> optimised_;  // the second tier's code, kept apart to count its LLVM time apart
+    Slots& slots_of(const Key& key) const { return key.optimised ? *optimised_ : *slots_; }
 };
 
 }  // namespace glslrun::rt
