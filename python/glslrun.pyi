@@ -96,6 +96,7 @@ class Program:
     threads: int
     precision: str
     backend: str
+    jit_tier: str
     cache_dir: str
     cache: bool
     @property

@@ -269,6 +269,22 @@ void bind_program(py::module_& m) {
             "Who runs the shaders: \"auto\" (the default: the LLVM JIT where built in), \"jit\" or \"interp\"; "
             "both give the same bits.")
         .def_property(
+            "jit_tier",
+            [](const PyProgram& p) {
+                return std::string(p.exec.jit_tier == JitTier::First       ? "first"
+                                   : p.exec.jit_tier == JitTier::Optimised ? "optimised"
+                                                                           : "tiered");
+            },
+            [](PyProgram& p, const std::string& name) {
+                if (name == "tiered") p.exec.jit_tier = JitTier::Tiered;
+                else if (name == "first") p.exec.jit_tier = JitTier::First;
+                else if (name == "optimised") p.exec.jit_tier = JitTier::Optimised;
+                else throw py::value_error("unknown JIT tier '" + name + "': use tiered, first or optimised");
+            },
+            "The JIT's code: \"tiered\" (the default: quick code first; a stage that keeps drawing is compiled "
+            "again with every optimization in the background), \"first\" or \"optimised\" (from the first "
+            "draw); the same bits.")
+        .def_property(
             "cache_dir", [](const PyProgram& p) { return p.exec.code_cache_dir; },
             [](PyProgram& p, const std::string& dir) { p.exec.code_cache_dir = dir; },
             "The JIT's code cache directory: compiled code kept there is loaded by later programs and runs "
@@ -285,9 +301,12 @@ void bind_program(py::module_& m) {
                 py::dict d;
                 d["compiled"] = c.compiled;
                 d["loaded"] = c.loaded;
+                d["optimised"] = c.optimised;
                 return d;
             },
-            "The shaders the JIT compiled so far ('compiled') and loaded from the code cache ('loaded').")
+            "The shaders the JIT compiled so far ('compiled') and loaded from the code cache ('loaded'); of "
+            "those, its second tier's ('optimised': a stage that kept drawing, compiled again with every "
+            "optimization in the background).")
         .def_property(
             "max_loop_iterations", [](const PyProgram& p) { return p.exec.max_loop_iterations; },
             [](PyProgram& p, uint64_t n) { p.exec.max_loop_iterations = n; },

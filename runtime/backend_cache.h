@@ -13,6 +13,14 @@
 // whichever backend shaded a lane faster. Backend::Jit compiles at the first
 // draw and waits. The images are the same either way (the backends compute
 // the same bits).
+//
+// The JIT's second tier (JitPlan): once a stage's JIT code has run about as
+// long as LLVM is expected to take to compile it with every optimization
+// (the stage is hot: optimise_due() decides), it is compiled so on the
+// compile thread, and the stage's next executors run that code. A short
+// render never starts it; the code cache holds it under a key of its own,
+// and a later run loads it at the stage's first draw where the JIT's plugin
+// is loaded, as the first tier's.
 #pragma once
 #include <atomic>
 #include <memory>
@@ -38,10 +46,13 @@ public:
         // A specialized shader's uniform words (those the stage reads, in
         // order: ir::uniform_words_read); empty for the unspecialized one.
         std::vector<uint32_t> specialization = {};
-        auto tie() const { return std::tie(stage, runner, precision, fast_ops, avx2, quick_codegen, specialization); }
+        bool optimised = false;  // the JIT's second tier (JitPlan)
+        auto tie() const {
+            return std::tie(stage, runner, precision, fast_ops, avx2, quick_codegen, specialization, optimised);
+        }
         bool operator<(const Key& o) const { return tie() < o.tie(); }
     };
-    BackendCache() : slots_(Slots::make()) {}
+    BackendCache() : slots_(Slots::make()), optimised_(Slots::make()) {}
     BackendCache(const BackendCache&) = delete;
     BackendCache& operator=(const BackendCache&) = delete;
     ~BackendCache() = default;  // waits for nothing: queued compiles find it gone
@@ -52,11 +63,19 @@ public:
     // Backend::Auto: an executor of `key`'s JIT code where the policy above
     // has chosen it, else of the interpreter's; `interp` is the same key for
     // the interpreter. Where `cache` (may be null) holds the stage's code,
-    // the JIT serves from the first draw.
+    // the JIT serves from the first draw. `tiered`: JitTier::Tiered (else
+    // `key`'s tier alone).
     std::unique_ptr<Executor> auto_executor(const ir::Shader& shader, const Key& key, const Key& interp,
-                                            const ExecParams& params, const CodeCacheConfig* cache = nullptr);
-    // Seconds LLVM spent compiling this program's shaders so far.
+                                            const ExecParams& params, const CodeCacheConfig* cache = nullptr,
+                                            bool tiered = true);
+    // Backend::Jit: an executor of `key`'s code, compiled now where it is not
+    // yet, or of the second tier's where it is made (or in `cache`).
+    std::unique_ptr<Executor> jit_executor(const ir::Shader& shader, const Key& key, const ExecParams& params,
+                                           const CodeCacheConfig* cache = nullptr, bool tiered = true);
+    // Seconds LLVM spent compiling this program's shaders so far, both tiers.
     double jit_compile_seconds() const;
+    // Of those, the second tier's (in the background).
+    double optimise_seconds() const;
     // Its shaders compiled by LLVM so far, and loaded from the code cache.
     Program::JitCompiles jit_compiles() const;
     // The specialization policy (ExecOptions::jit_specialize_after): the
@@ -75,6 +94,17 @@ public:
         std::atomic<int> choice{-1};      // the Runner kept, once measured; -1 while measuring
         static constexpr uint64_t kUnknown = ~uint64_t(0);
         uint64_t expected_nanos = kUnknown;  // LLVM's expected time (0: not taken); under the cache's lock
+        // The second tier's: lanes the first tier's JIT code ran untimed
+        // (nanos[1] and lanes[1] time a first part of them), and LLVM's
+        // expected time for it (0: it would make the same code; once the
+        // first tier was compiled here, that compile's time over
+        // jit::kQuickCodegenShare where less). Under the cache's lock but
+        // the lanes.
+        std::atomic<uint64_t> hot_lanes{0};
+        uint64_t optimise_nanos = kUnknown;
+        bool optimise_queued = false;  // or done, or loaded from the code cache
+        bool optimise_probed = false;  // the code cache was asked for it
+        bool optimise_measured = false;  // optimise_nanos from the first tier's measured compile
     };
 
     Meter& meter(ir::Stage stage) { return meters_[size_t(stage)]; }
@@ -89,6 +119,17 @@ private:
     // Queues `key`'s compile on the compile thread (or compiles it here where
     // there is none), with a copy of `shader`.
     void queue(const ir::Shader& shader, const Key& key, const CodeCacheConfig* cache);
+    // The second tier's code of `plain` (an unspecialized JIT key) where it is
+    // made, else null: found in `cache` once the JIT's plugin is loaded,
+    // queued once the stage is hot where `may_queue`. With the lock held.
+    const CompiledShader* optimised(const ir::Shader& shader, const Key& plain, const CodeCacheConfig* cache,
+                                    bool may_queue);
+    // Whether the stage's first-tier JIT code has run long enough that its
+    // second tier is due (the one place that says when a stage is hot).
+    static bool optimise_due(const Meter& meter);
+    // `code` (first-tier JIT code of `plain`), timed or counted for
+    // optimise_due() while the second tier may still come; with the lock held.
+    std::unique_ptr<Executor> watch(std::unique_ptr<Executor> code, const Key& plain);
     struct Streak {
         bool surveyed = false;
         std::vector<uint32_t> read;  // the word indices the stage reads
@@ -101,6 +142,8 @@ private:
 
     mutable std::mutex mutex_;  // the policy's: the streaks, a Meter's probed and expected_nanos
     std::shared_ptr<Slots> slots_;
+    std::shared_ptr<Slots> optimised_;  // the second tier's code, kept apart to count its LLVM time apart
+    Slots& slots_of(const Key& key) const { return key.optimised ? *optimised_ : *slots_; }
 };
 
 }  // namespace glslrun::rt

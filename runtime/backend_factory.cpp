@@ -63,7 +63,7 @@ private:
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Runner runner, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds,
                                                bool quick_codegen, const std::atomic<bool>* stop,
-                                               CodeCacheUse cache) {
+                                               CodeCacheUse cache, bool optimised) {
     if (llvm_seconds) *llvm_seconds = 0;
     if (cache.loaded) *cache.loaded = false;
     const JitEntryPoints* jit = runner == Runner::Jit ? jit_plugin() : nullptr;
@@ -72,6 +72,7 @@ std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Runner 
         stats.stop = stop;
         stats.cache = cache.config;
         stats.only_load = cache.only_load;
+        stats.optimised = optimised;
         std::unique_ptr<CompiledShader> code = jit->compile(shader, precision, fast_ops, avx2, quick_codegen, &stats);
         if (llvm_seconds) *llvm_seconds = stats.seconds;
         if (cache.loaded) *cache.loaded = stats.loaded;
@@ -81,9 +82,9 @@ std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Runner 
     return std::make_unique<InterpretedShader>(shader);
 }
 
-JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen) {
+JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen, bool optimised) {
     if (!jit_plugin_present()) return {};
-    return jit::plan_compile(shader, quick_codegen);
+    return jit::plan_compile(shader, quick_codegen, optimised);
 }
 
 std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
@@ -96,6 +97,9 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
     if (budget) params.limits.cancel = nullptr;  // the budget polls it
     BackendCache::Key key{stage, runner_for(program.exec.backend, params.precision), params.precision,
                           params.fast_ops, cpu_has_avx2(), program.exec.jit_quick_codegen};
+    const bool tiered = program.exec.jit_tier == JitTier::Tiered;
+    key.optimised = key.runner == Runner::Jit && program.exec.jit_tier == JitTier::Optimised &&
+                    !program.exec.jit_quick_codegen;
     std::unique_ptr<Executor> executor;
     if (key.runner != Runner::Jit) {
         executor = st.backends->get(shader, key).instantiate(params);
@@ -104,12 +108,13 @@ std::unique_ptr<Executor> make_executor(const Program& program, ir::Stage stage,
             st.backends->specialization(shader, st.uniforms, st.uses, program.exec.jit_specialize_after);
         const CodeCacheConfig cache = code_cache_config(program.exec);
         if (program.exec.backend == Backend::Jit) {
-            executor = st.backends->get(shader, key, &cache).instantiate(params);
+            executor = st.backends->jit_executor(shader, key, params, &cache, tiered);
         } else {
             BackendCache::Key interp = key;
             interp.runner = Runner::Interp;
             interp.specialization.clear();
-            executor = st.backends->auto_executor(shader, key, interp, params, &cache);
+            interp.optimised = false;
+            executor = st.backends->auto_executor(shader, key, interp, params, &cache, tiered);
         }
     }
     if (st.undef) executor->watch_undefined(st.undef);

@@ -38,20 +38,29 @@ Runner runner_for(Backend requested, Precision precision);
 // *llvm_seconds (may be null) receives LLVM's compile time; `quick_codegen`:
 // ExecOptions::jit_quick_codegen; `stop` (may be null): the JIT gives up
 // between its phases once it is set (the interpreter then serves); `cache`:
-// the code cache, and with only_load, null where it has no code.
+// the code cache, and with only_load, null where it has no code;
+// `optimised`: the JIT's second tier (JitPlan below).
 std::unique_ptr<CompiledShader> compile_shader(const ir::Shader& shader, Runner runner, Precision precision,
                                                uint32_t fast_ops, bool avx2, double* llvm_seconds = nullptr,
                                                bool quick_codegen = false, const std::atomic<bool>* stop = nullptr,
-                                               CodeCacheUse cache = {});
+                                               CodeCacheUse cache = {}, bool optimised = false);
 
 // How the JIT would compile `shader` (runtime/jit/jit.h: plan_compile; not
-// at all without the JIT).
+// at all without the JIT). The JIT has two tiers: the first keeps a
+// compile near its time budget (a draw may wait for it), so large shaders
+// and every vertex shader get quick code generation; the second,
+// `optimised`, compiles a stage whose draws keep running again with all of
+// LLVM's code-generation optimizations, in the background
+// (runtime/backend_cache.h). Both compute the same bits.
 struct JitPlan {
     bool take = false;   // whether the JIT compiles it at all
     bool quick = false;  // without code-generation optimizations (same bits)
     uint64_t nanos = 0;  // LLVM's expected CPU time
+    // The first tier's plan: whether the optimised tier would make other
+    // code (this plan is quick, and ExecOptions::jit_quick_codegen is off).
+    bool optimisable = false;
 };
-JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen);
+JitPlan plan_jit(const ir::Shader& shader, bool quick_codegen, bool optimised = false);
 
 // An executor of `program`'s shader for `stage`, from the code cached on the
 // program (compiled at the first call for its key; thread-safe). The

@@ -51,7 +51,7 @@ bool reach(const ir::Shader& s, const ir::Block& block, std::vector<uint8_t>& st
 
 }  // namespace
 
-JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen) {
+JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen, bool optimised) {
     std::vector<uint8_t> state(shader.functions.size(), 0);
     if (!reach(shader, shader.body, state) || !reach(shader, shader.prologue, state)) return {};
     std::vector<const ir::Block*> units{&shader.body, &shader.prologue};
@@ -71,9 +71,13 @@ JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen) {
     // shader per pixel: without code-generation optimizations its compile
     // costs 4 to 30% less of the program's LLVM time and the corpus's frames
     // did not change (docs/performance.md).
-    plan.quick = quick_codegen || full > double(kCompileBudgetNanos) || shader.stage == ir::Stage::Vertex;
+    const bool quick = quick_codegen || full > double(kCompileBudgetNanos) || shader.stage == ir::Stage::Vertex;
+    // Whether the JIT takes a shader is the first tier's decision: the
+    // second only recompiles what the first runs.
+    plan.take = uint64_t(quick ? full * kQuickCodegenShare : full) <= kDeclineNanos;
+    plan.optimisable = quick && !quick_codegen;
+    plan.quick = quick && !optimised;
     plan.nanos = uint64_t(plan.quick ? full * kQuickCodegenShare : full);
-    plan.take = plan.nanos <= kDeclineNanos;
     return plan;
 }
 

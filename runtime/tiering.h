@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "glslrun/glslrun.h"
 #include "runtime/compile_queue.h"
@@ -61,6 +62,16 @@ public:
         const bool done = found != slots_.end() && found->second.made;
         if (made) *made = done;
         return done ? found->second.code.get() : nullptr;
+    }
+
+    // LLVM's seconds for `key`'s code where a compile made it here (not
+    // loaded from the code cache, not declined), else nothing.
+    std::optional<double> compile_seconds(const Key& key) const {
+        std::lock_guard lock(mutex_);
+        auto found = slots_.find(key);
+        if (found == slots_.end() || !found->second.code || found->second.loaded || found->second.seconds <= 0)
+            return std::nullopt;
+        return found->second.seconds;
     }
 
     // Whether `key`'s code was asked for (made, being made or queued).
@@ -120,6 +131,8 @@ private:
     struct Slot {
         bool requested = false;
         bool made = false;
+        bool loaded = false;  // from the code cache
+        double seconds = 0;  // LLVM's, for the code kept
         std::unique_ptr<Code> code;
     };
     CodeSlots() = default;
@@ -132,6 +145,8 @@ private:
         if (slot.made) return;
         slot.code = std::move(made.code);
         slot.made = true;
+        slot.loaded = made.loaded;
+        slot.seconds = made.seconds;
     }
 
     mutable std::mutex mutex_;

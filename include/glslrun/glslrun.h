@@ -145,6 +145,18 @@ enum class Backend { Interp, Jit, Auto };
 // "interp", "jit", "auto" (the command line's --backend names).
 const char* backend_name(Backend b);
 Result<Backend> parse_backend(std::string_view name);
+
+// The JIT's tiers (docs/architecture.md), the same bits in each:
+//   Tiered:    the default. The first draws run code compiled to keep each
+//              compile near 100 ms (large shaders and vertex shaders with
+//              LLVM's quick code generation); a stage whose draws keep
+//              running is compiled again in the background with all of
+//              LLVM's code-generation optimizations, and its later draws run
+//              that code. A short render never starts that compile.
+//   First:     the first tier's code only.
+//   Optimised: the second tier's code only, from the first draw
+//              (Backend::Jit waits for it to compile).
+enum class JitTier { Tiered, First, Optimised };
 // Whether this build has the JIT.
 bool jit_available();
 // The backend that runs `requested` in `precision`: Auto is the JIT where
@@ -203,6 +215,9 @@ struct ExecOptions {
     // about 40% less compile time, code up to 8% slower, the same bits. For
     // runs that compile many programs and draw little (`glslrun test`).
     bool jit_quick_codegen = false;
+    // The JIT's tiers (JitTier above). With jit_quick_codegen, the first
+    // tier's code only.
+    JitTier jit_tier = JitTier::Tiered;
     // Once a program has drawn this many times in a row with the same values
     // of the uniforms a stage reads, the JIT compiles that stage again with
     // those values as constants (ir/specialize.cpp: folding, dead branches;
@@ -323,6 +338,7 @@ public:
     struct JitCompiles {
         uint32_t compiled = 0;
         uint32_t loaded = 0;
+        uint32_t optimised = 0;  // of those, the JIT's second tier (JitTier)
     };
     JitCompiles jit_compiles() const;
     std::string dump_ir() const;  // the IR printer's text for both stages

@@ -279,13 +279,36 @@ def test_code_cache(tmp_path):
         images.append(program.render(scene))
         counts.append(program.jit_compiles)
     assert counts[0]["compiled"] > 0 and counts[0]["loaded"] == 0
-    assert counts[1] == {"compiled": 0, "loaded": counts[0]["compiled"]}
+    assert counts[1] == {"compiled": 0, "loaded": counts[0]["compiled"], "optimised": 0}
     np.testing.assert_array_equal(images[0], images[1])
     blocker = tmp_path / "file"
     blocker.write_text("not a directory")
     with pytest.warns(RuntimeWarning, match="cannot be written"):
         image = glslrun.render(*SPOT, backend="jit", cache_dir=str(blocker / "cache"))
     np.testing.assert_array_equal(image, glslrun.render(*SPOT, backend="interp", cache=False))
+
+
+def test_jit_tiers(tmp_path):
+    """The JIT's tiers: the first tier's code and the second's draw the interpreter's bits."""
+    if not glslrun.jit_available():
+        assert not os.environ.get("GLSLRUN_TEST_JIT_BUILT"), "the JIT plugin did not load"
+        pytest.skip("built without the JIT")
+    scene = glslrun.Scene.parse("[output]\nsize = [32, 32]\n[[objects]]\nmesh = \"quad\"\n",
+                                path("scenes", "inline.toml"))
+    images = {}
+    for backend, tier in (("interp", "tiered"), ("jit", "first"), ("jit", "optimised")):
+        program = glslrun.Program.from_files(path("shaders", "colors.vert"), path("shaders", "colors.frag"))
+        program.backend = backend
+        program.jit_tier = tier
+        assert program.jit_tier == tier
+        program.cache = False
+        images[tier] = program.render(scene)
+        if tier == "optimised":
+            assert program.jit_compiles["optimised"] == 2
+    np.testing.assert_array_equal(images["first"], images["tiered"])
+    np.testing.assert_array_equal(images["optimised"], images["tiered"])
+    with pytest.raises(ValueError, match="unknown JIT tier 'fastest'"):
+        program.jit_tier = "fastest"
 
 
 def test_include_dirs(tmp_path):

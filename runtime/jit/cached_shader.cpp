@@ -98,10 +98,10 @@ std::string glslrun_build_id() {
 }
 
 std::optional<CodeKey> shader_key(const Engine& engine, const ir::Shader& shader, Precision precision,
-                                  uint32_t fast_ops) {
+                                  uint32_t fast_ops, bool optimised) {
     if (engine.cache_salt.empty()) return std::nullopt;
     std::string bytes = engine.cache_salt;
-    bytes += fmt::format("\nshader precision {} fast_ops {}\n", int(precision), fast_ops);
+    bytes += fmt::format("\nshader precision {} fast_ops {} tier {}\n", int(precision), fast_ops, optimised ? 2 : 1);
     append_shader_bytes(bytes, shader);
     return llvm::BLAKE3::hash(llvm::arrayRefFromStringRef(bytes));
 }

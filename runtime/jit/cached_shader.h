@@ -16,9 +16,11 @@
 namespace glslrun::rt::jit {
 
 // The key of `shader`'s code from `engine` in `precision` with Fast's
-// `fast_ops`; nothing where the engine has no cache salt.
+// `fast_ops`, of the JIT's first tier or the `optimised` one (whose code
+// may differ in more than the engine's code-generation level); nothing
+// where the engine has no cache salt.
 std::optional<CodeKey> shader_key(const Engine& engine, const ir::Shader& shader, Precision precision,
-                                  uint32_t fast_ops);
+                                  uint32_t fast_ops, bool optimised);
 
 // A cached shader: its call-outs with their kernels picked for (precision,
 // fast_ops, avx2) and its machine code; nothing where the payload is not

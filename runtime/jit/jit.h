@@ -30,6 +30,9 @@ struct CompileStats {
     // written after a compile; `only_load`: null code rather than a compile.
     const CodeCacheConfig* cache = nullptr;
     bool only_load = false;
+    // In: the JIT's second tier (JitPlan): all of code generation's
+    // optimizations, cached under a key of its own.
+    bool optimised = false;
     bool loaded = false;  // out: the code came from the cache
 };
 
@@ -48,8 +51,9 @@ struct CompileStats {
 // the interpreter has spent as long, in the background.
 inline constexpr uint64_t kCompileBudgetNanos = 100'000'000, kDeclineNanos = 500'000'000;
 inline constexpr double kNanosPerInstruction = 450'000, kInstructionsDoublingCost = 1000, kQuickCodegenShare = 0.55;
-// `quick_codegen`: ExecOptions::jit_quick_codegen.
-JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen);
+// `quick_codegen`: ExecOptions::jit_quick_codegen. `optimised`: the second
+// tier's plan (JitPlan), which takes what the first takes, never quick.
+JitPlan plan_compile(const ir::Shader& shader, bool quick_codegen, bool optimised = false);
 
 // Native code for `shader` in `precision` (Precise or Fast, with Fast's
 // `fast_ops` classes) for the baseline x86-64 ISA or AVX2, with LLVM's

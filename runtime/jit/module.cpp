@@ -305,7 +305,8 @@ std::unique_ptr<JitShader> load(Engine& engine, const DiskCache& disk, const Cod
 
 std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision precision, uint32_t fast_ops,
                                         bool avx2, bool quick_codegen, CompileStats* stats) {
-    const JitPlan plan = plan_compile(shader, quick_codegen);
+    const bool optimised = stats && stats->optimised;
+    const JitPlan plan = plan_compile(shader, quick_codegen, optimised);
     if (precision == Precision::Reference || !plan.take) return nullptr;
     quick_codegen = plan.quick;
     auto stopped = [&] { return stats && stats->stop && stats->stop->load(std::memory_order_relaxed); };
@@ -314,7 +315,7 @@ std::unique_ptr<CompiledShader> compile(const ir::Shader& shader, Precision prec
     if (!engine) return nullptr;
     std::optional<DiskCache> disk;
     std::optional<CodeKey> key;
-    if (stats && stats->cache && !stats->cache->dir.empty()) key = shader_key(*engine, shader, precision, fast_ops);
+    if (stats && stats->cache && !stats->cache->dir.empty()) key = shader_key(*engine, shader, precision, fast_ops, optimised);
     if (key) {
         disk.emplace(*stats->cache);
         if (auto loaded = load(*engine, *disk, *key, shader, precision, fast_ops, avx2)) {

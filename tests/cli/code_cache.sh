@@ -5,7 +5,8 @@
 # uncached render; --no-cache and
 # GLSLRUN_NO_CACHE write nothing; GLSLRUN_CACHE_DIR and --cache-dir choose
 # the directory; an unwritable one is a warning, not an error; damaged
-# entries are compiled and written again.
+# entries are compiled and written again; the JIT's second tier is cached
+# apart (--jit-tier).
 #   tests/cli/code_cache.sh SOURCE_DIR GLSLRUN
 set -u
 src=$1
@@ -41,6 +42,25 @@ render interp interp
 for name in warm auto uncached interp; do
     cmp -s cold.png $name.png || fail "the $name image differs from the first render's"
 done
+
+# The JIT's second tier (--jit-tier) is cached under keys of its own; a tiered run loads it at the
+# first draw where it is there (spot's vertex shader: quick in the first tier, so it has a second;
+# its fragment shader has every optimization in the first already). The same images.
+render tier_first --jit-tier first --cache-dir "$tmp/tier-cache"
+grep -q "2 shaders compiled, 0 loaded from the code cache; 0 of them optimised" tier_first.txt ||
+    fail "--jit-tier first: $(grep 'JIT code' tier_first.txt)"
+render tier_optimised --jit-tier optimised --cache-dir "$tmp/tier-cache"
+grep -q "2 shaders compiled, 0 loaded from the code cache; 2 of them optimised" tier_optimised.txt ||
+    fail "--jit-tier optimised: $(grep 'JIT code' tier_optimised.txt)"
+render tier_tiered --cache-dir "$tmp/tier-cache"
+grep -q "0 shaders compiled, 2 loaded from the code cache; 1 of them optimised" tier_tiered.txt ||
+    fail "tiered, warm: $(grep 'JIT code' tier_tiered.txt)"
+for name in tier_first tier_optimised tier_tiered; do
+    cmp -s cold.png $name.png || fail "the $name image differs from the first render's"
+done
+# shellcheck disable=SC2086
+if "$glslrun" $spot --jit-tier fastest -o bad.png >bad.txt 2>&1; then fail "--jit-tier fastest was accepted"; fi
+grep -q "unknown JIT tier 'fastest': use tiered, first or optimised" bad.txt || fail "--jit-tier fastest: $(cat bad.txt)"
 
 # The fused fragment pipeline (compiled once a program has shaded 2^20
 # fragments, raster/fused/pipeline.h: the sixth frame of this quad) is cached too.
@@ -100,4 +120,4 @@ grep -q "2 shaders compiled, 0 loaded" damaged.txt || fail "damaged entries: $(g
 cmp -s cold.png damaged.png || fail "the image after damaged entries differs"
 render repaired --cache-dir "$tmp/cache"
 grep -q "0 shaders compiled, 2 loaded" repaired.txt || fail "rewritten entries: $(grep backend repaired.txt)"
-finish "code cache: a second run compiles nothing (shaders and fused pipeline), the same images, unwritable and damaged caches handled"
+finish "code cache: a second run compiles nothing (shaders, the second tier and fused pipeline), the same images, unwritable and damaged caches handled"

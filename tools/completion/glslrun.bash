@@ -9,6 +9,7 @@ _glslrun() {
     case $prev in
     --precision) mapfile -t COMPREPLY < <(compgen -W "reference precise fast" -- "$cur"); return ;;
     --backend) mapfile -t COMPREPLY < <(compgen -W "interp jit auto" -- "$cur"); return ;;
+    --jit-tier) mapfile -t COMPREPLY < <(compgen -W "tiered first optimised" -- "$cur"); return ;;
     --error-report | --cache-dir | --dump-fixed-function)
         compopt -o filenames 2> /dev/null || true  # outside a completion (tests) it fails
         mapfile -t COMPREPLY < <(compgen -d -- "$cur")

@@ -324,6 +324,20 @@ int program_cli(int argc, char** argv) {
                    "the JIT compiles a stage's uniforms in as constants once this many draws in a row had the "
                    "same values (default 0: never); the images do not change")
         ->type_name("N");
+    app.add_option_function<std::string>(
+           "--jit-tier",
+           [&o](const std::string& name) {
+               o.jit_tier = name == "first" ? JitTier::First : name == "optimised" ? JitTier::Optimised : JitTier::Tiered;
+           },
+           "the JIT's code: tiered (the default: quick code first; a stage that keeps drawing is compiled again "
+           "with every optimization in the background), first (the quick code only) or optimised (the "
+           "optimised code from the first draw; --backend jit waits for it); the images do not change")
+        ->check([](const std::string& name) {
+            return name == "tiered" || name == "first" || name == "optimised"
+                       ? std::string()
+                       : "unknown JIT tier '" + name + "': use tiered, first or optimised";
+        })
+        ->type_name("TIER");
     app.add_option("--bench", o.bench_frames,
                    "render N more frames into the same framebuffer and print `key value` lines: the "
                    "first frame (compile_ms, first_draw_ms), then median_ms, cpu_median_ms (process CPU "

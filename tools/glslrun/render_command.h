@@ -30,6 +30,7 @@ struct RenderOptions {
     Precision precision = Precision::Precise;  // --precision
     Backend backend = Backend::Auto;           // --backend
     uint32_t specialize_after = ExecOptions{}.jit_specialize_after;  // --specialize-after
+    JitTier jit_tier = JitTier::Tiered;  // --jit-tier
     double time_limit = 0;  // --time-limit SECONDS: the draws' deadline (ExecOptions::deadline); 0: none
     bool check_undefined = false;  // --check-undefined: report GLSL's undefined operations
     // --max-instructions N: the render's instruction budget, all its draws
