@@ -3,8 +3,9 @@
 // derivatives), eight quads a register (as two scalar calls per group of
 // eight lanes, a tenth of two_units' Fast frame: perf); then per group of
 // eight lanes:
-// - lambda as sample_gpu_batch()'s lambdas() gives it: each lane's bias,
-//   the texture's bias and clamps and gpu::quantize_lambda();
+// - lambda as sample_gpu_batch()'s lambdas() gives it: each lane's bias
+//   and the texture's, each gpu::quantize_bias()'d, the clamps and
+//   gpu::quantize_lambda() (truncated to 8 fraction bits);
 // - each lane's level(s) and 8-bit mipmap weight as gpu::filter16() picks
 //   them, then one pass per first level the group's lanes hold (one on a
 //   smooth surface), as sampling_mip2d.cpp does;
@@ -14,7 +15,9 @@
 //   as sampling_gpu_batch.cpp's load16x8(); the border's value computed
 //   once as the per-lane path does), the 8-bit bilinear weights and the
 //   (sum + 128) >> 8 blends as float integers below 2^24, so exact in any
-//   order, then the mipmap blend likewise and r / 65535.
+//   order; a blend of two levels is one sum over both levels' texels, each
+//   level's share (256 - w, w) split by gpu::level_weights(), rounded
+//   once; then r / 65535.
 // Before this, Fast's lookups went through the batched sampler's lane
 // arrays step by step: two thirds of two_units' frame (perf), and Fast was
 // 0.6x to 0.9x Precise's speed on textured programs.
@@ -112,69 +115,116 @@ template <bool kBorder>
     raw8<kBorder>(im, x.i1, y, right, out_right);
 }
 
-// The 16-bit blend (gpu::round_blend()) of a bilinear footprint from the
-// sum S of its stored texels by weights 255 w (border texels 0), the sum
-// `wb` of its border texels' weights w and the border's 16-bit value b:
-// 257 K + wb b, K = S rounded (see level16x8()); every term an integer
-// below 2^24 (the weights sum to 256), so exact.
+// The 16-bit sum (not yet rounded) of a bilinear footprint from the sum S
+// of its stored texels by weights 255 w (border texels 0), the sum `wb` of
+// its border texels' weights w and the border's 16-bit value b: 257 K +
+// wb b, K = S rounded (see linear_sum16x8()); every term an integer below
+// 2^24 (the weights sum to 256 at most), so exact.
 template <bool kBorder>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V blend16x8(V sum, V wb, V b) {
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V sum16x8(V sum, V wb, V b) {
     V total = _mm256_mul_ps(_mm256_round_ps(sum, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC), splat(257.0f));
     if constexpr (kBorder) total = _mm256_add_ps(total, _mm256_mul_ps(wb, b));
-    return round_blend8(total);
+    return total;
+}
+
+// A footprint's four integer weights, as floats.
+struct Weights8 {
+    V w00, w01, w10, w11;
+};
+
+// gpu::level_weights(wx, wy, share) of eight lanes. Without kShare the
+// share is 256, whose weights are the bilinear ones (w11 = round(wx wy /
+// 256), the rest by difference: level_weights()'s exactly, in fewer steps).
+template <bool kShare>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline Weights8 weights8(I wx, I wy, I share) {
+    if constexpr (!kShare) {
+        const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
+        return {_mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11)),
+                _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11)), _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11)),
+                _mm256_cvtepi32_ps(w11)};
+    } else {
+        const I x1 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, share), splat_i(128)), 8);
+        const I x0 = _mm256_sub_epi32(share, x1);
+        // Ties down in the second column where wx = 256 (then a first column): 128 - 1.
+        const I tie = _mm256_add_epi32(splat_i(128), _mm256_cmpeq_epi32(wx, splat_i(256)));
+        const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(x1, wy), tie), 8);
+        const I w10 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(x0, wy), splat_i(127)), 8);
+        return {_mm256_cvtepi32_ps(_mm256_sub_epi32(x0, w10)), _mm256_cvtepi32_ps(_mm256_sub_epi32(x1, w11)),
+                _mm256_cvtepi32_ps(w10), _mm256_cvtepi32_ps(w11)};
+    }
+}
+
+// gpu::linear_sum() of one image for eight lanes at (s, t) with each
+// lane's share (kShare; else 256): 16-bit sums by channel, not yet
+// rounded. `kOneD`: a 1D image (row 0; t and kT unused), whose blend is
+// the bilinear one with wy = 0.
+//
+// It sums the stored texels, not their 16-bit values: each is k/255 for
+// its byte k (store_texel() keeps RGBA8 so), and the sum of 16-bit values,
+// sum w_i 257 k_i, is 257 K for the bytes' K = sum w_i k_i, which S = sum
+// (255 w_i) t_i gives within 0.02 (each t_i is within 2^-24 relative of
+// k_i / 255; each product and partial sum, below 2^16, is rounded within
+// 2^-9): rounded to nearest, exactly K. A border texel's 16-bit value b
+// (not a byte's 257 k) is added apart, b times its weight. One rounding
+// per channel instead of one per texel, the same bits.
+template <Rule kS, Rule kT, bool kOneD, bool kShare>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear_sum16x8(const Image16& im, V s, V t, I share, V* sum) {
+    constexpr bool kBorder = may_border(kS, true) || (!kOneD && may_border(kT, true));
+    const I zero = _mm256_setzero_si256();
+    const Linear8 x = linear8<kS>(s, im.w);
+    const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
+    const Weights8 w = weights8<kShare>(weight8x8(x.a), kOneD ? zero : weight8x8(y.a), share);
+    const V k = splat(255.0f);  // 255 w: exact
+    // Where every lane's two columns are neighbours, each row's two texels are one load.
+    const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                                       x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
+    V p[4], q[4], row0[4];
+    V op = _mm256_setzero_ps(), oq = _mm256_setzero_ps();
+    raw_row8<kBorder>(im, x, y.i0, pairs, p, q, op, oq);
+    const V a00 = _mm256_mul_ps(w.w00, k), a01 = _mm256_mul_ps(w.w01, k);
+#pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], a00), _mm256_mul_ps(q[c], a01));
+    V wb = _mm256_add_ps(_mm256_and_ps(op, w.w00), _mm256_and_ps(oq, w.w01));
+    if constexpr (kOneD) {
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) sum[c] = sum16x8<kBorder>(row0[c], wb, im.border[c]);
+        return;
+    }
+    raw_row8<kBorder>(im, x, y.i1, pairs, p, q, op, oq);
+    wb = _mm256_add_ps(wb, _mm256_add_ps(_mm256_and_ps(op, w.w10), _mm256_and_ps(oq, w.w11)));
+    const V a10 = _mm256_mul_ps(w.w10, k), a11 = _mm256_mul_ps(w.w11, k);
+#pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) {
+        const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], a10), _mm256_mul_ps(q[c], a11));
+        sum[c] = sum16x8<kBorder>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
+    }
 }
 
 // gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
-// channel. `kOneD`: a 1D image (row 0; t and kT unused), whose LINEAR blend
-// is gpu::blend2() of the row's two texels: the bilinear sum with wy = 0.
-//
-// LINEAR sums the stored texels, not their 16-bit values: each is k/255
-// for its byte k (store_texel() keeps RGBA8 so), and the blend's sum of
-// 16-bit values, sum w_i 257 k_i, is 257 K for the bytes' K = sum w_i k_i,
-// which S = sum (255 w_i) t_i gives within 0.02 (each t_i is within 2^-24
-// relative of k_i / 255; each product and partial sum, below 2^16, is
-// rounded within 2^-9): rounded to nearest, exactly K. A border texel's
-// 16-bit value b (not a byte's 257 k) is added apart, b times its weight.
-// One rounding per channel instead of one per texel, the same bits.
+// channel (a 1D image as linear_sum16x8()'s kOneD).
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void level16x8(const Image16& im, V s, V t, V* value) {
-    constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
-    const I zero = _mm256_setzero_si256();
     if constexpr (!kLinear) {
-        fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? zero : nearest8<kT>(t, im.h), value);
+        constexpr bool kBorder = may_border(kS, false) || (!kOneD && may_border(kT, false));
+        fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? _mm256_setzero_si256() : nearest8<kT>(t, im.h), value);
     } else {
-        const Linear8 x = linear8<kS>(s, im.w);
-        const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
-        const I wx = weight8x8(x.a), wy = weight8x8(y.a);
-        const I w11i = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
-        const V w00 = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11i));
-        const V w01 = _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11i));
-        const V w10 = _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11i));
-        const V w11 = _mm256_cvtepi32_ps(w11i);
-        const V k = splat(255.0f);  // 255 w: exact
-        // Where every lane's two columns are neighbours, each row's two texels are one load.
-        const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
-                                           x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
-        V p[4], q[4], row0[4];
-        V op = _mm256_setzero_ps(), oq = _mm256_setzero_ps();
-        raw_row8<kBorder>(im, x, y.i0, pairs, p, q, op, oq);
-        const V a00 = _mm256_mul_ps(w00, k), a01 = _mm256_mul_ps(w01, k);
+        linear_sum16x8<kS, kT, kOneD, false>(im, s, t, _mm256_setzero_si256(), value);
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) row0[c] = _mm256_add_ps(_mm256_mul_ps(p[c], a00), _mm256_mul_ps(q[c], a01));
-        V wb = _mm256_add_ps(_mm256_and_ps(op, w00), _mm256_and_ps(oq, w01));
-        if constexpr (kOneD) {
+        for (int c = 0; c < 4; ++c) value[c] = round_blend8(value[c]);
+    }
+}
+
+// gpu::level_sum() of one image for eight lanes with each lane's share:
+// 16-bit sums by channel, not yet rounded.
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void level_sum16x8(const Image16& im, V s, V t, I share, V* sum) {
+    if constexpr (kLinear) {
+        linear_sum16x8<kS, kT, kOneD, true>(im, s, t, share, sum);
+    } else {
+        level16x8<false, kS, kT, kOneD>(im, s, t, sum);
+        const V k = _mm256_cvtepi32_ps(share);
 #pragma GCC unroll 4
-            for (int c = 0; c < 4; ++c) value[c] = blend16x8<kBorder>(row0[c], wb, im.border[c]);
-            return;
-        }
-        raw_row8<kBorder>(im, x, y.i1, pairs, p, q, op, oq);
-        wb = _mm256_add_ps(wb, _mm256_add_ps(_mm256_and_ps(op, w10), _mm256_and_ps(oq, w11)));
-        const V a10 = _mm256_mul_ps(w10, k), a11 = _mm256_mul_ps(w11, k);
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) {
-            const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], a10), _mm256_mul_ps(q[c], a11));
-            value[c] = blend16x8<kBorder>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
-        }
+        for (int c = 0; c < 4; ++c) sum[c] = _mm256_mul_ps(sum[c], k);
     }
 }
 
@@ -184,6 +234,7 @@ struct State {
     const std::vector<TextureImage>* levels;
     V border[4];
     int base, q;
+    float texture_bias;  // gpu::quantize_bias() of the sampler's lod_bias
     bool nearest_mip;
     glm::vec3 size;  // level_base's
     int dims;        // 1 or 2
@@ -239,19 +290,27 @@ GLSLRUN_AVX2 void quad_lambdas(const State& s, const BatchLookup& lk, float* qua
                                               _mm256_load_ps(d[2] + q), _mm256_load_ps(d[3] + q), w, h, s.dims > 1));
 }
 
+// gpu::quantize_bias() of eight lanes: roundps toward zero is std::trunc()
+// for every float (NaN and infinities kept).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V quantize_bias8(V bias) {
+    return _mm256_mul_ps(_mm256_round_ps(_mm256_mul_ps(bias, splat(256.0f)), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC),
+                         splat(1.0f / 256.0f));
+}
+
 // Lanes g..g+7's lambda (see the file's comment), as sample_gpu_batch()'s
-// lambdas(), from the quads' lambda_base. gpu::quantize_lambda()'s
+// lambdas(), from the quads' lambda_base; `texture_bias` is
+// gpu::quantize_bias() of the texture's. gpu::quantize_lambda()'s
 // floor_f() is floor8()'s there: the clamped lambda is finite and small.
 GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, const float* quad, int g) {
     V l = _mm256_setzero_ps();
     if (lk.implicit) {
         l = _mm256_set_m128(_mm_set1_ps(quad[g / 4 + 1]), _mm_set1_ps(quad[g / 4]));
-        if (lk.bias) l = _mm256_add_ps(l, _mm256_loadu_ps(lk.lod + g));
+        if (lk.bias) l = _mm256_add_ps(l, quantize_bias8(_mm256_loadu_ps(lk.lod + g)));
     } else if (lk.lod) {
         l = _mm256_loadu_ps(lk.lod + g);
     }
-    l = clamp_lambda8(_mm256_add_ps(l, splat(s.st->lod_bias)), *s.st);
-    return _mm256_mul_ps(floor8(_mm256_add_ps(_mm256_mul_ps(l, splat(256.0f)), splat(0.5f))), splat(1.0f / 256.0f));
+    l = clamp_lambda8(_mm256_add_ps(l, splat(s.texture_bias)), *s.st);
+    return _mm256_mul_ps(floor8(_mm256_mul_ps(l, splat(256.0f))), splat(1.0f / 256.0f));
 }
 
 // gpu::filter16()'s levels of eight lanes (a mipmap filter): the first,
@@ -325,23 +384,25 @@ GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes,
         alignas(32) int first[8], second[8], weight[8];
         levels8(s, lambdas8(s, lk, quad, g), first, second, weight);
         const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
-        const V mixed = _mm256_load_ps(reinterpret_cast<const float*>(second));
-        const int two = _mm256_movemask_ps(mixed);
+        const int two = _mm256_movemask_ps(_mm256_load_ps(reinterpret_cast<const float*>(second)));
         for (int left = bits; left;) {
             const int level = first[std::countr_zero(unsigned(left))];
             const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(d0, splat_i(level))));
             left &= ~take;
-            level16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level)], s.border), sc, tc, value);
-            if (two & take) {  // their second level is level + 1, which exists: level < q
+            const Image16 im = image16(levels[size_t(level)], s.border);
+            if (!(two & take)) {
+                level16x8<kLinear, kS, kT, kOneD>(im, sc, tc, value);
+            } else {
+                // Their second level is level + 1, which exists (level < q).
+                // One sum over both levels' texels, rounded once: level
+                // weighs 256 - w, level + 1 w (0 in the lanes without a
+                // second level, whose sum is then level16()'s).
+                const I w = _mm256_load_si256(reinterpret_cast<const I*>(weight));
                 V next[4];
-                level16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, next);
-                const V w = _mm256_cvtepi32_ps(_mm256_load_si256(reinterpret_cast<const I*>(weight)));
-                const V iw = _mm256_sub_ps(splat(256.0f), w);
+                level_sum16x8<kLinear, kS, kT, kOneD>(im, sc, tc, _mm256_sub_epi32(splat_i(256), w), value);
+                level_sum16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, w, next);
 #pragma GCC unroll 4
-                for (int c = 0; c < 4; ++c) {
-                    const V blend = round_blend8(_mm256_add_ps(_mm256_mul_ps(value[c], iw), _mm256_mul_ps(next[c], w)));
-                    value[c] = _mm256_blendv_ps(value[c], blend, mixed);
-                }
+                for (int c = 0; c < 4; ++c) value[c] = round_blend8(_mm256_add_ps(value[c], next[c]));
             }
             store16(value, take, g, out);
         }
@@ -407,6 +468,7 @@ GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& l
     if (!is_mipmap_filter(st.min_filter))
         return one_kernel(texture)(image16(base, s.border), lookup.coord[0], lookup.coord[1], lanes, out);
     s.q = last_mip_level(base, st);
+    s.texture_bias = gpu::quantize_bias(st.lod_bias);
     s.nearest_mip =
         st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
     s.size = image_size(base);

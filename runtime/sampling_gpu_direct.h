@@ -5,7 +5,7 @@
 // weights and 16-bit blends in registers, one kernel per texture state.
 // Every value comes from sampling_gpu.h's operations, so the bits are
 // sample_complete_lane()'s under SamplingRules::Gpu and sample_gpu_batch()'s
-// (tests/runtime/sampling_gpu_direct_test.cpp compares). The batched path
+// (tests/runtime/sampling_gpu_batch_test.cpp compares). The batched path
 // (sampling_gpu_batch.h) keeps cube maps and the mixed filters.
 #pragma once
 #include "runtime/sampling_direct.h"

@@ -213,6 +213,20 @@ TEST_CASE("Fast's one-pass 1D and 2D lookups equal its batched ones", "[sampling
     CHECK_FALSE(rt::gpu_direct_samples(make(rng, TextureTarget::Cube, 4, 4)));
 }
 
+TEST_CASE("Fast's one-pass lookups add the texture's LOD bias in 8 bits as its batched ones", "[sampling][batch][gpu]") {
+    if (!rt::cpu_has_avx2()) return;
+    std::mt19937 rng(311);
+    // Off the 1/256 grid on both sides of zero (gpu::quantize_bias() truncates toward zero).
+    for (float bias : {0.3f, -0.3f}) {
+        Texture square = make(rng, TextureTarget::Tex2D, 16, 8);
+        square.sampler.lod_bias = bias;
+        CHECK(sweep_direct(rng, square) == 6 * 25);
+        Texture one = make(rng, TextureTarget::Tex1D, 8, 1);
+        one.sampler.lod_bias = bias;
+        CHECK(sweep_direct(rng, one) == 6 * 25);
+    }
+}
+
 TEST_CASE("Fast's batched GPU-rule sampling equals its per-lane sampling: cube maps", "[sampling][batch][gpu]") {
     std::mt19937 rng(66);
     Texture cube = make(rng, TextureTarget::Cube, 8, 8);
