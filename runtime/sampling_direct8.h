@@ -178,7 +178,9 @@ struct Source {
 // An image as fetch8() reads it: the border colour is border_texel()'s of a
 // colour texture (clamped to [0, 1]).
 [[gnu::always_inline]] GLSLRUN_AVX2 inline Source source_of(const TextureImage& image, const SamplerState& st) {
-    Source src{image.texels.data(), image.width, {}};
+    Source src;  // each member set once: no zero fill (sampling_direct.cpp's run_chosen())
+    src.texels = image.texels.data();
+    src.width = image.width;
     for (int c = 0; c < 4; ++c) src.border[c] = splat(unorm(st.border_color[c]));
     return src;
 }
