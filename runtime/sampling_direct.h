@@ -36,6 +36,7 @@ struct DirectSampler {
     const void* texels = nullptr;
     int width = 0, height = 0;
     float border[4] = {};
+    bool finite = false;  // every texel finite (RGBA8): no NaN to canonicalise
 };
 
 // `texture` (null, incomplete or any other: `run` is then null) bound for DirectSampler::run.

@@ -182,13 +182,16 @@ template <Rule kRule>
 struct Source {
     const glm::vec4* texels;
     int width;
-    V border[4];  // border_texel(): the colour clamped to [0, 1]
+    V border[4];          // border_texel(): the colour clamped to [0, 1]
+    bool finite = false;  // every texel finite (RGBA8's are k/255)
 };
 
 // An image as fetch8() reads it: the border colour is border_texel()'s of a
 // colour texture (clamped to [0, 1]).
 [[gnu::always_inline]] GLSLRUN_AVX2 inline Source source_of(const TextureImage& image, const SamplerState& st) {
-    Source src{image.texels.data(), image.width, {}};
+    Source src;  // each member set once: no zero fill (sampling_direct.cpp's run_chosen())
+    src.texels = image.texels.data();
+    src.width = image.width;
     for (int c = 0; c < 4; ++c) src.border[c] = splat(unorm(st.border_color[c]));
     return src;
 }
@@ -319,16 +322,36 @@ template <int kPlanes>
 
 // Lanes g..g+7's channels into out[c][g..g+7] where bit k of `bits` is
 // set (lane g + k), a NaN as canonical_nan()'s; the other lanes' entries
-// are left as they are.
+// are left as they are. kMayNaN false: the values are known not to be NaN
+// (finite texels and weights), so none is replaced.
+template <bool kMayNaN = true>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void store8(const V* value, int bits, int g, float (*out)[kLanes]) {
     const I bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     const V nan = splat(std::numeric_limits<float>::quiet_NaN());  // canonical_nan()'s
     const V take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(splat_i(bits), bit), bit));
 #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) {
-        const V v = _mm256_blendv_ps(value[c], nan, _mm256_cmp_ps(value[c], value[c], _CMP_UNORD_Q));
-        _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), v, take));
+        V v = value[c];
+        if constexpr (kMayNaN) v = _mm256_blendv_ps(v, nan, _mm256_cmp_ps(v, v, _CMP_UNORD_Q));
+        if (bits == 0xff) _mm256_storeu_ps(&out[c][g], v);  // every lane: nothing to keep
+        else _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), v, take));
     }
+}
+
+// Whether LINEAR's weights on an axis of this rule may be NaN: REPEAT's and
+// MIRRORED_REPEAT's fraction of an infinite or NaN coordinate. The
+// clamping rules clamp the position first (a NaN to the low bound).
+constexpr bool weight_may_be_nan(Rule r) { return r == Rule::Repeat || r == Rule::Mirror; }
+
+// store8() of a lookup's values, with no NaN to canonicalise where the
+// texels are finite (`finite_texels`) and so are the filter's weights: a
+// blend of finite values by finite weights in [0, 1] is finite.
+template <bool kLinear, Rule kS, Rule kT>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void store_lookup8(bool finite_texels, const V* value, int bits, int g,
+                                                              float (*out)[kLanes]) {
+    constexpr bool kWeightsFinite = !kLinear || (!weight_may_be_nan(kS) && !weight_may_be_nan(kT));
+    if (kWeightsFinite && finite_texels) store8<false>(value, bits, g, out);
+    else store8(value, bits, g, out);
 }
 
 // The lookups of lanes g..g+7: `value` gets each channel's result.

@@ -139,6 +139,7 @@ GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask 
     const SamplerState& st = texture.sampler;
     const std::vector<TextureImage>& levels = texture.levels(0);
     const LevelRule rule(texture);
+    const bool finite = texture.format() == TextureFormat::RGBA8;  // k/255: no NaN to canonicalise
     const TextureImage& base = levels[size_t(rule.base)];
     const V w = splat(float(base.width)), h = splat(float(base.height));
     alignas(32) float lambda[kLanes];
@@ -169,7 +170,7 @@ GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask 
                 } else {
                     blend_rows8<1>(rows, ax, ay, ax[0], ax[0], value);
                 }
-                store8(value, take, g, out);
+                store_lookup8<kLinear, kS, kT>(finite, value, take, g, out);
                 continue;
             }
             level8<kLinear, kS, kT>(levels[size_t(level)], st, s, t, value);
@@ -181,7 +182,7 @@ GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask 
 #pragma GCC unroll 4
                 for (int c = 0; c < 4; ++c) value[c] = _mm256_blendv_ps(value[c], mix8(value[c], next[c], wt, iw), mixed);
             }
-            store8(value, take, g, out);
+            store_lookup8<kLinear, kS, kT>(finite, value, take, g, out);
         }
     }
 }

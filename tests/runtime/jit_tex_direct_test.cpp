@@ -5,6 +5,9 @@
 // odd sizes, RGBA8 and float texels, NaN, infinite, huge and denormal
 // coordinates, partial masks, lanes that skip their lookups, lanes of
 // another unit or of none, an incomplete texture; every result word compared.
+// Both run the same one-pass kernels, so batches of close lanes (a magnified
+// image's, as the rasterizer packs them) are also compared with the lane
+// sampler, which shares no code with them.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -16,6 +19,7 @@
 
 #include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling.h"
 #include "tests/runtime/ir_builder.h"
 
 using namespace glslrun;
@@ -137,9 +141,30 @@ std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const Case& c) {
     return units;
 }
 
-// Both backends over one case, six rounds: 0-1 whole batches (1: the if
+// Lane i's coordinate on one axis of a magnified image, as the rasterizer
+// packs lanes (quad i / 4 at (2 (q % 4), 2 (q / 4)) of an 8x4 block, the
+// lane at (i & 1, i >> 1 & 1) in it): each pixel `scale` texels from
+// `origin`; divided by `size` where normalized.
+float close_coordinate(int lane, int axis, float origin, float scale, float size) {
+    const int q = lane / 4;
+    const int pixel = axis == 0 ? 2 * (q % 4) + (lane & 1) : 2 * (q / 4) + ((lane >> 1) & 1);
+    return (origin + (float(pixel) + 0.5f) * scale) / size;
+}
+
+// The lane sampler's words for the implicit lookup of kUnit at (s, t).
+std::array<uint32_t, 4> lane_sample(const Texture& texture, float s, float t) {
+    rt::LaneLookup lane;
+    lane.coord = {s, t, 0.0f};
+    float rgba[4];
+    if (texture.target() == TextureTarget::Rect) rt::sample_rect_lane(texture, lane, rgba);
+    else rt::sample_complete_lane(texture, lane, rgba);
+    return {bits(rgba[0]), bits(rgba[1]), bits(rgba[2]), bits(rgba[3])};
+}
+
+// Both backends over one case, eight rounds: 0-1 whole batches (1: the if
 // taken by two lanes of three); 2 a partial live mask; 3 helper lanes that
-// skip their lookups; 4-5 mixed units per lane (some out of range).
+// skip their lookups; 4-5 mixed units per lane (some out of range); 6-7
+// close lanes (0.3 and 0.6 texels a pixel), Precise's also against the lane sampler.
 void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::CompiledShader& jit, const Case& c) {
     const auto units = units_of(c);
     const uint32_t uniforms[] = {uint32_t(kUnit)};
@@ -147,19 +172,25 @@ void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::Compi
     auto ia = interp.instantiate(params), ja = jit.instantiate(params);
     std::mt19937 rng(c.seed * 977u);
     const float scale_s = c.rect ? float(c.w) : 1.0f, scale_t = c.rect ? float(c.h) : 1.0f;
-    for (int round = 0; round < 6; ++round) {
+    for (int round = 0; round < 8; ++round) {
         const rt::LaneMask live = round == 2 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
         const rt::LaneMask skipped = round == 3 ? rt::LaneMask(0x0f0f0f0f0f0f0f0full) & rt::kAllLanes : 0;
         std::vector<float> s(rt::kLanes), t(rt::kLanes);
+        const bool close = round >= 6;
+        const float origin_s = std::uniform_real_distribution<float>(-2.0f, float(c.w) + 2.0f)(rng);
+        const float origin_t = std::uniform_real_distribution<float>(-2.0f, float(c.h) + 2.0f)(rng);
         for (int lane = 0; lane < rt::kLanes; ++lane) {
-            s[size_t(lane)] = coordinate(rng, scale_s);
-            t[size_t(lane)] = coordinate(rng, scale_t);
+            const float texels = round == 6 ? 0.3f : 0.6f;
+            s[size_t(lane)] = close ? close_coordinate(lane, 0, origin_s, texels, c.rect ? 1.0f : float(c.w))
+                                    : coordinate(rng, scale_s);
+            t[size_t(lane)] = close ? close_coordinate(lane, 1, origin_t, texels, c.rect ? 1.0f : float(c.h))
+                                    : coordinate(rng, scale_t);
         }
         for (rt::Executor* e : {ia.get(), ja.get()}) {
             e->skip_lookups(skipped);
             for (int lane = 0; lane < rt::kLanes; ++lane) {
                 const int mixed[] = {kUnit, kOtherUnit, kIncomplete, -1, 40};
-                const int unit = round < 4 ? kUnit : mixed[(lane + round) % 5];
+                const int unit = round < 4 || close ? kUnit : mixed[(lane + round) % 5];
                 e->lanes(sh.s)[lane] = bits(s[size_t(lane)]);
                 e->lanes(sh.t)[lane] = bits(t[size_t(lane)]);
                 e->lanes(sh.lod)[lane] = bits(float(lane % 3) - 1.0f);
@@ -181,6 +212,17 @@ void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::Compi
                      << s[size_t(lane)] << " t " << t[size_t(lane)] << " register " << out.first);
                 REQUIRE(ia->lanes(out.first)[lane] == ja->lanes(out.first)[lane]);
             }
+        const Texture& tex = *units[size_t(kUnit)].bound[size_t(c.rect ? TextureTarget::Rect : TextureTarget::Tex2D)];
+        if (!close || c.mode.precision != Precision::Precise || !tex.complete()) continue;  // incomplete: (0, 0, 0, 1)
+        for (int lane = 0; lane < rt::kLanes; ++lane) {
+            const std::array<uint32_t, 4> want = lane_sample(tex, s[size_t(lane)], t[size_t(lane)]);
+            for (uint32_t k = 0; k < ir::kTexResults; ++k) {
+                INFO((c.rect ? "rect" : "2D") << " filter " << int(c.filter) << " wrap " << int(c.ws) << ","
+                     << int(c.wt) << " " << c.w << "x" << c.h << " round " << round << " lane " << lane << " s "
+                     << s[size_t(lane)] << " t " << t[size_t(lane)] << " channel " << k);
+                REQUIRE(ja->lanes(sh.result + k)[lane] == want[k]);
+            }
+        }
     }
 }
 
@@ -190,7 +232,7 @@ TEST_CASE("generated 2D and rectangle lookups give the tex kernel's words", "[ru
     if (!jit_available() || !rt::cpu_has_avx2()) return;
     using enum TextureWrap;
     const TextureWrap wraps[] = {Repeat, MirroredRepeat, ClampToEdge, Clamp, ClampToBorder};
-    const int sizes[][2] = {{5, 3}, {1, 1}, {7, 1}, {1, 6}, {13, 11}};
+    const int sizes[][2] = {{5, 3}, {1, 1}, {7, 1}, {1, 6}, {13, 11}, {4, 4}, {9, 6}};
     const Mode modes[] = {{Precision::Precise, rt::kAllFastOps},
                           {Precision::Fast, rt::kAllFastOps & ~uint32_t(rt::kFastTexture)},
                           {Precision::Fast, rt::kAllFastOps}};
@@ -204,7 +246,7 @@ TEST_CASE("generated 2D and rectangle lookups give the tex kernel's words", "[ru
             for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
                 for (const TextureWrap ws : wraps)
                     for (const TextureWrap wt : wraps) {
-                        const int* size = sizes[state % 5];
+                        const int* size = sizes[state % 7];
                         const TextureFormat format = state % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8;
                         compare(*sh, *interp, *jit, {mode, rect, filter, ws, wt, size[0], size[1], format, ++state});
                     }

@@ -328,6 +328,132 @@ TEST_CASE("batched sampling equals per-lane sampling: one-pass 2D and rectangle 
     }
 }
 
+namespace {
+
+// A magnified image's lanes, as the rasterizer packs them: quad q = i / 4
+// at pixel (2 (q % 4), 2 (q / 4)) of an 8x4 block, lane i at (i & 1, i >> 1
+// & 1) within it, each pixel `scale` texels wide from `origin` (in texels;
+// a rectangle's coordinates, else divided by the size). Neighbouring lanes
+// then share texels and rows, and groups of eight take the kernels' paired
+// row loads (random coordinates seldom do), straddle the image's edges and
+// corners, or under magnification all read one texel.
+void close_lanes(std::mt19937& rng, const Texture& texture, float scale, float (*coord)[rt::kLanes]) {
+    const bool rect = texture.target() == TextureTarget::Rect;
+    const int size[2] = {texture.levels(0)[0].width, texture.levels(0)[0].height};
+    for (int c = 0; c < 2; ++c) {
+        // Around the image, past its edges by up to two texels, often on a texel's edge.
+        float origin = std::uniform_real_distribution<float>(-2.0f, float(size[c]) + 2.0f)(rng);
+        if (std::uniform_int_distribution<int>(0, 3)(rng) == 0) origin = std::floor(origin);
+        for (int i = 0; i < rt::kLanes; ++i) {
+            const int q = i / 4;
+            const int pixel = c == 0 ? 2 * (q % 4) + (i & 1) : 2 * (q / 4) + ((i >> 1) & 1);
+            const float u = origin + (float(pixel) + 0.5f) * scale;
+            coord[c][i] = rect ? u : u / float(size[c]);
+        }
+    }
+    if (std::uniform_int_distribution<int>(0, 7)(rng) == 0)  // now and then an extreme lane
+        coord[std::uniform_int_distribution<int>(0, 1)(rng)][std::uniform_int_distribution<int>(0, rt::kLanes - 1)(rng)] =
+            coordinate(rng);
+}
+
+// sample_direct() (or, for a mipmapped texture, sample_mip2d()) against
+// the lane sampler on one batch of close lanes; the derivatives are the
+// magnification's (lambda log2(scale)), every lane's the same.
+void check_close_batch(std::mt19937& rng, const Texture& texture, float scale) {
+    const bool rect = texture.target() == TextureTarget::Rect;
+    const bool mip = rt::mip2d_samples(texture);
+    Operands ops{};
+    close_lanes(rng, texture, scale, ops.coord);
+    for (int i = 0; i < rt::kLanes; ++i) {
+        ops.ddx[0][i] = rect ? scale : scale / float(texture.levels(0)[0].width);
+        ops.ddy[1][i] = rect ? scale : scale / float(texture.levels(0)[0].height);
+    }
+    rt::BatchLookup lk;
+    lk.implicit = true;
+    for (int c = 0; c < 3; ++c) {
+        lk.coord[c] = ops.coord[c];
+        lk.ddx[c] = ops.ddx[c];
+        lk.ddy[c] = ops.ddy[c];
+    }
+    // Every lane; some; whole groups of eight on and others off.
+    rt::LaneMask lanes = rt::kAllLanes;
+    const int kind = std::uniform_int_distribution<int>(0, 2)(rng);
+    if (kind == 1) lanes = std::uniform_int_distribution<rt::LaneMask>(0, rt::kAllLanes)(rng) | 1;
+    if (kind == 2) {
+        lanes = 0;
+        while (!lanes)
+            for (int g = 0; g < rt::kLanes; g += 8)
+                if (rng() & 1) lanes |= rt::LaneMask(0xff) << g;
+    }
+    {
+        alignas(64) float out[4][rt::kLanes];
+        for (auto& channel : out)
+            for (float& v : channel) v = -7.0f;  // what lanes outside the mask must keep
+        if (mip) rt::sample_mip2d(texture, lk, lanes, out);
+        else rt::sample_direct(texture, lk, lanes, out);
+        for (int i = 0; i < rt::kLanes; ++i) {
+            float want[4] = {-7.0f, -7.0f, -7.0f, -7.0f};
+            if ((lanes >> i) & 1) {
+                rt::LaneLookup lane;
+                lane.coord = {ops.coord[0][i], ops.coord[1][i], 0.0f};
+                lane.ddx = {ops.ddx[0][i], ops.ddx[1][i], 0.0f};
+                lane.ddy = {ops.ddy[0][i], ops.ddy[1][i], 0.0f};
+                lane.implicit = true;
+                if (rect) rt::sample_rect_lane(texture, lane, want);
+                else rt::sample_complete_lane(texture, lane, want);
+            }
+            for (int c = 0; c < 4; ++c) {
+                INFO("scale " << scale << " lane " << i << " channel " << c << " coord ("
+                               << ops.coord[0][i] << ", " << ops.coord[1][i] << ") got " << out[c][i] << " want "
+                               << want[c]);
+                REQUIRE(std::bit_cast<uint32_t>(out[c][i]) == std::bit_cast<uint32_t>(want[c]));
+            }
+        }
+    }
+}
+
+}  // namespace
+
+// The one-pass and mipmapped kernels' LINEAR lookups of close lanes, as a
+// magnified or slightly minified image's are (the sweeps above draw every
+// lane apart): at the image's edges and corners and inside, the kernels'
+// four groups of eight sampled together with some groups masked off; sizes
+// of four texels, odd ones and under four; every wrap pair, normalized and
+// rectangle; RGBA8 texels (whose results the kernels store with no NaN
+// test where the weights are finite); a mipmap's one and two levels.
+TEST_CASE("LINEAR lookups of close lanes equal per-lane sampling", "[sampling][batch][close]") {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (!rt::cpu_has_avx2()) return;
+    std::mt19937 rng(8642);
+    for (auto [w, h] : {std::pair{4, 4}, {5, 9}, {16, 16}, {37, 21}, {3, 12}}) {
+        for (TextureTarget target : {TextureTarget::Tex2D, TextureTarget::Rect}) {
+            Texture t = make(rng, target, TextureFormat::RGBA8, w, h);
+            t.sampler.border_color = {0.5f, 1.5f, -0.25f, 0.75f};
+            t.sampler.min_filter = t.sampler.mag_filter = TextureFilter::Linear;
+            const bool rect = target == TextureTarget::Rect;
+            for (TextureWrap s : kWraps)
+                for (TextureWrap u : kWraps) {
+                    if (rect && (s == TextureWrap::Repeat || s == TextureWrap::MirroredRepeat ||
+                                 u == TextureWrap::Repeat || u == TextureWrap::MirroredRepeat))
+                        continue;  // incomplete rectangles
+                    t.sampler.wrap_s = s;
+                    t.sampler.wrap_t = u;
+                    REQUIRE(t.complete());
+                    REQUIRE(rt::direct_samples(t));
+                    for (float scale : {0.0f, 0.1f, 0.27f, 0.45f, 0.7f, 1.5f})
+                        for (int batch = 0; batch < 6; ++batch) check_close_batch(rng, t, scale);
+                    if (rect) continue;
+                    t.sampler.min_filter = TextureFilter::LinearMipmapLinear;
+                    REQUIRE(rt::mip2d_samples(t));
+                    for (float scale : {0.3f, 0.7f, 1.2f, 1.6f, 2.5f, 5.0f})
+                        for (int batch = 0; batch < 6; ++batch) check_close_batch(rng, t, scale);
+                    t.sampler.min_filter = TextureFilter::Linear;
+                }
+        }
+    }
+#endif
+}
+
 // The mipmapped 2D kernels (sampling_mip2d.h): odd sizes and one-texel
 // levels, every wrap pair, the four mipmap filters with the magnification
 // filter of the same kind, every LOD kind and lane spread (quads sharing
