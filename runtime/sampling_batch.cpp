@@ -7,6 +7,7 @@
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_avx2.h"
+#include "runtime/sampling_cube8.h"
 #include "runtime/sampling_direct.h"
 #include "runtime/sampling_direct3d.h"
 #include "runtime/sampling_direct8.h"

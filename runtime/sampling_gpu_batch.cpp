@@ -11,6 +11,7 @@
 #include "runtime/sampling_gpu_batch.h"
 
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling_cube8.h"
 #include "runtime/sampling_gpu.h"
 #include "runtime/sampling_rules.h"
 
@@ -491,6 +492,24 @@ void sample_levels(const Texture& texture, GpuLanes& l, const BatchLookup& lk, c
         }
 }
 
+// make_lookup()'s face and cube_coord() for every lane; eight lanes at a
+// time in the AVX2 build, where GCC leaves the lane loop scalar (Fast's
+// cube_refract frame: 0.59x -> 0.70x Precise's speed), the same bits.
+template <bool kAvx2>
+[[gnu::always_inline]] inline void cube_lanes(const BatchLookup& lk, GpuLanes& l) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if constexpr (kAvx2) return cube_coords8(lk, l.face, l.s, l.t);
+#endif
+    for (int i = 0; i < kLanes; ++i) {
+        const glm::vec3 r(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
+        const int face = cube_face(r);
+        const glm::vec3 st = cube_coord(kCubeFaces[face], r);
+        l.face[i] = face;
+        l.s[i] = st.x;
+        l.t[i] = st.y;
+    }
+}
+
 template <bool kAvx2>
 [[gnu::always_inline]] inline void run(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
                                        float (*out)[kLanes]) {
@@ -501,15 +520,7 @@ template <bool kAvx2>
         for (int i = 0; i < std::min(32, kLanes - base); ++i) active[base + i] = (bits & kLaneBit[size_t(i)]) != 0;
     }
     if (texture.target() == TextureTarget::Cube) {
-        // make_lookup()'s face and cube_coord() for every lane.
-        for (int i = 0; i < kLanes; ++i) {
-            const glm::vec3 r(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
-            const int face = cube_face(r);
-            const glm::vec3 st = cube_coord(kCubeFaces[face], r);
-            l.face[i] = face;
-            l.s[i] = st.x;
-            l.t[i] = st.y;
-        }
+        cube_lanes<kAvx2>(lk, l);
     } else {
         for (int i = 0; i < kLanes; ++i) l.face[i] = 0;
     }
