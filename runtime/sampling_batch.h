@@ -47,4 +47,18 @@ bool batch_samples(const Texture& texture);
 // (the same bits as the baseline one).
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2);
 
+// A lookup kernel chosen once for a texture's state (its filter, wraps and
+// comparison are the kernel's template arguments): sample_batch()'s
+// result for the lanes of `lanes` into out[c][i], the other lanes' entries
+// left as they are. The JIT's generated lookups call one straight
+// (runtime/jit/tex_direct.cpp) with no selection per lookup.
+using BatchKernel = void (*)(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
+                             float (*out)[kLanes]);
+
+// The eight-lane cube map kernel (sampling_batch_cube.h) of a complete
+// texture that it takes (a colour cube map, LINEAR within every level,
+// wraps that keep every texel in the image), else null. Only for a CPU
+// with AVX2; it reads the lookup's derivatives where lod_matters().
+BatchKernel cube_kernel(const Texture& texture);
+
 }  // namespace glslrun::rt

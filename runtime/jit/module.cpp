@@ -225,6 +225,8 @@ public:
         ctx_.call_steps = call_steps_.data();
         bind_direct_samplers(p.textures, code.gpu_textures, direct_.data());
         ctx_.direct = direct_.data();
+        bind_kernels(p.textures, code.gpu_textures, kernels_.data());
+        ctx_.kernels = kernels_.data();
         ctx_.tex = run_tex;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
@@ -268,6 +270,7 @@ private:
     BudgetShare share_;
     std::vector<Step<uint32_t>> call_steps_;
     std::array<DirectSampler, kDirectSlots> direct_;
+    std::array<BoundKernel, kKernelSlots> kernels_;
     Context ctx_;
     bool held_ = false;  // the caller holds ir::FlushDenormals around run()
 };
