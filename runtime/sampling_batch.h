@@ -35,6 +35,10 @@ struct BatchLookup {
     const float* ref = nullptr;
     const float* lod = nullptr;  // the explicit LOD, or the bias
     bool implicit = true, bias = false;
+    // Every quad's derivatives are its first lane's (lanes 4q..4q+3 read
+    // lane 4q's; the others' rows hold anything): the tex kernel's Precise
+    // lookups, for a sampler that reads them so (batch_reads_quad_leaders()).
+    bool quad_derivatives = false;
 };
 
 // Whether sample_batch() takes lookups of this (complete) texture; the
@@ -46,5 +50,10 @@ bool batch_samples(const Texture& texture);
 // entries are left as they are. `avx2`: the AVX2 build of the lane loops
 // (the same bits as the baseline one).
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2);
+
+// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
+// from its first lane alone where BatchLookup::quad_derivatives says they
+// are that lane's (the others' need every lane's rows filled).
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
 
 }  // namespace glslrun::rt
