@@ -35,6 +35,10 @@ struct BatchLookup {
     const float* ref = nullptr;
     const float* lod = nullptr;  // the explicit LOD, or the bias
     bool implicit = true, bias = false;
+    // Every quad's derivatives are its first lane's (lanes 4q..4q+3 read
+    // lane 4q's; the others' rows hold anything): the tex kernel's Precise
+    // lookups, for a sampler that reads them so (batch_reads_quad_leaders()).
+    bool quad_derivatives = false;
 };
 
 // Whether sample_batch() takes lookups of this (complete) texture; the
@@ -60,5 +64,10 @@ using BatchKernel = void (*)(const Texture& texture, const BatchLookup& lookup, 
 // wraps that keep every texel in the image), else null. Only for a CPU
 // with AVX2; it reads the lookup's derivatives where lod_matters().
 BatchKernel cube_kernel(const Texture& texture);
+
+// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
+// from its first lane alone where BatchLookup::quad_derivatives says they
+// are that lane's (the others' need every lane's rows filled).
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
 
 }  // namespace glslrun::rt

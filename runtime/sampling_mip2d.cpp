@@ -2,9 +2,9 @@
 // - lambda of every lane as lambdas() (sampling_batch.cpp) computes it: rho
 //   from the derivatives in registers (glm::length()'s products, sum and
 //   sqrt, the larger of the two as std::max picks it), lod_from_rho()'s
-//   double log2 in a lane loop over the same inline function (vectorised:
-//   no branch in it), once per quad where the quad's lanes share rho, then
-//   the biases and clamp_lambda()'s selects in registers;
+//   double log2 in registers (sampling_lod8.h), once per quad where the
+//   quad's lanes share rho (read from each quad's first lane where the
+//   lookup says they do), then the biases and clamp_lambda()'s selects;
 // - per group of eight lanes, each lane's levels and weight from
 //   choose_level() (sampling_levels.h), then one pass per first level the
 //   group's lanes hold (one for a smooth surface: a quad's lanes share
@@ -20,6 +20,7 @@
 
 #include "runtime/sampling_direct8.h"
 #include "runtime/sampling_levels.h"
+#include "runtime/sampling_lod8.h"
 
 namespace glslrun::rt {
 
@@ -39,25 +40,54 @@ using namespace direct8;
     return _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(u, u), _mm256_mul_ps(v, v)));
 }
 
-// lod_from_rho() of every lane. Where each quad's four lanes have one rho
-// (the tex kernel gives a quad its first lane's derivatives: Precise's one
-// LOD per quad), the double log2 runs once per quad, a quarter of the work
-// (perf: the log2 was a third of mip_floor's lookup); the same function of
-// the same rho, so the same bits.
-GLSLRUN_AVX2 void lod_lanes(const float* rho, float* lambda) {
-    static_assert(kLanes % 8 == 0);
-    alignas(32) uint32_t bits[kLanes];
-    std::memcpy(bits, rho, sizeof bits);
-    uint32_t differ = 0;
-    for (int i = 0; i < kLanes; ++i) differ |= bits[i] ^ bits[i & ~3];
-    if (differ) {
-        for (int i = 0; i < kLanes; ++i) lambda[i] = lod_from_rho(rho[i]);
-        return;
+// The quads' lambda_base, lanes q..q+7 of `quad` for quads q..q+7 (each
+// quad's first lane, lanes 4q..4q+31), lod_from_rho8() of rho: the same
+// function of the same rho as each of the quad's lanes would take.
+GLSLRUN_AVX2 void quad_lods(const float* const* ddx, const float* const* ddy, V w, V h, float* quad) {
+    const I first = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
+    for (int q = 0; q < kLanes / 4; q += 8) {
+        const V lx = length8(_mm256_i32gather_ps(ddx[0] + 4 * q, first, 4), _mm256_i32gather_ps(ddx[1] + 4 * q, first, 4), w, h);
+        const V ly = length8(_mm256_i32gather_ps(ddy[0] + 4 * q, first, 4), _mm256_i32gather_ps(ddy[1] + 4 * q, first, 4), w, h);
+        _mm256_store_ps(quad + q, lod_from_rho8(_mm256_blendv_ps(lx, ly, _mm256_cmp_ps(lx, ly, _CMP_LT_OQ))));
     }
-    alignas(32) float quad_rho[kLanes / 4], quad[kLanes / 4];
-    for (int q = 0; q < kLanes / 4; ++q) quad_rho[q] = rho[4 * q];
-    for (int q = 0; q < kLanes / 4; ++q) quad[q] = lod_from_rho(quad_rho[q]);
-    for (int i = 0; i < kLanes; ++i) lambda[i] = quad[i / 4];
+}
+
+// Every lane's lambda_base, lod_from_rho() of its rho (glm::length()'s
+// products, sum and sqrt, the larger of the two as std::max picks it).
+// Where each quad's four lanes have one rho (the tex kernel gives a quad
+// its first lane's derivatives: Precise's one LOD per quad), the log2 runs
+// once per quad: read from the first lanes alone where the lookup says so
+// (BatchLookup::quad_derivatives: the tex kernel then makes no copy of
+// them), else where every quad's rho bits agree.
+GLSLRUN_AVX2 void lambda_bases(const BatchLookup& lk, V w, V h, float* lambda) {
+    static_assert(kLanes % 32 == 0);
+    alignas(32) float quad[kLanes / 4];
+    if (lk.quad_derivatives) {
+        quad_lods(lk.ddx, lk.ddy, w, h, quad);
+    } else {
+        alignas(32) float rho[kLanes];
+        for (int g = 0; g < kLanes; g += 8) {
+            const V lx = length8(load8(lk.ddx[0] + g), load8(lk.ddx[1] + g), w, h);
+            const V ly = length8(load8(lk.ddy[0] + g), load8(lk.ddy[1] + g), w, h);
+            _mm256_store_ps(rho + g, _mm256_blendv_ps(lx, ly, _mm256_cmp_ps(lx, ly, _CMP_LT_OQ)));  // std::max(lx, ly)
+        }
+        alignas(32) uint32_t bits[kLanes];
+        std::memcpy(bits, rho, sizeof bits);
+        uint32_t differ = 0;
+        for (int i = 0; i < kLanes; ++i) differ |= bits[i] ^ bits[i & ~3];
+        if (differ) {
+            for (int g = 0; g < kLanes; g += 8) _mm256_store_ps(lambda + g, lod_from_rho8(_mm256_load_ps(rho + g)));
+            return;
+        }
+        const I first = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
+        for (int q = 0; q < kLanes / 4; q += 8)
+            _mm256_store_ps(quad + q, lod_from_rho8(_mm256_i32gather_ps(rho + 4 * q, first, 4)));
+    }
+    for (int g = 0; g < kLanes; g += 8) {  // quads g/4 and g/4 + 1
+        const V q = _mm256_load_ps(quad + (g / 32) * 8);
+        const int k = (g % 32) / 4;
+        _mm256_store_ps(lambda + g, _mm256_permutevar8x32_ps(q, _mm256_setr_epi32(k, k, k, k, k + 1, k + 1, k + 1, k + 1)));
+    }
 }
 
 // Every lane's lambda, clamped: clamp_lambda(lambda_base + bias +
@@ -65,24 +95,18 @@ GLSLRUN_AVX2 void lod_lanes(const float* rho, float* lambda) {
 // skipped compute too, on whatever their operands hold (every step is safe
 // for any float).
 GLSLRUN_AVX2 void lambdas(const BatchLookup& lk, const SamplerState& st, V w, V h, float* lambda) {
-    if (lk.implicit) {
-        alignas(32) float rho[kLanes];
-        for (int g = 0; g < kLanes; g += 8) {
-            const V lx = length8(load8(lk.ddx[0] + g), load8(lk.ddx[1] + g), w, h);
-            const V ly = length8(load8(lk.ddy[0] + g), load8(lk.ddy[1] + g), w, h);
-            _mm256_store_ps(rho + g, _mm256_blendv_ps(lx, ly, _mm256_cmp_ps(lx, ly, _CMP_LT_OQ)));  // std::max(lx, ly)
-        }
-        lod_lanes(rho, lambda);
-        if (lk.bias)
-            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
-    } else if (lk.lod) {
-        for (int i = 0; i < kLanes; ++i) lambda[i] = lk.lod[i];
-    } else {
-        for (int i = 0; i < kLanes; ++i) lambda[i] = 0.0f;
-    }
+    if (lk.implicit) lambda_bases(lk, w, h, lambda);
     const V bias = splat(st.lod_bias);
-    for (int g = 0; g < kLanes; g += 8)
-        _mm256_store_ps(lambda + g, clamp_lambda8(_mm256_add_ps(_mm256_load_ps(lambda + g), bias), st));
+    for (int g = 0; g < kLanes; g += 8) {
+        V x = _mm256_setzero_ps();
+        if (lk.implicit) {
+            x = _mm256_load_ps(lambda + g);
+            if (lk.bias) x = _mm256_add_ps(x, load8(lk.lod + g));
+        } else if (lk.lod) {
+            x = load8(lk.lod + g);
+        }
+        _mm256_store_ps(lambda + g, clamp_lambda8(_mm256_add_ps(x, bias), st));
+    }
 }
 
 // One level's lookups of lanes g..g+7 at (s, t).
