@@ -1,7 +1,7 @@
 // The fused fragment pipeline: per (program, fragment draw state), native
 // code made by the JIT for the per-lane work around the fragment shader, as
 // llvmpipe's fragment functions do it: depth from the plane equation and the
-// early depth test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
+// early depth (and stencil) test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
 // (perspective-correct interpolation from the plane equations,
 // gl_FragCoord, gl_FrontFacing, gl_PointCoord); after the shader, the late
 // depth test, the depth write, the colour conversion and the colour write
@@ -73,9 +73,10 @@ struct InputsCode {
 
 // The fragment functions of one State.
 struct Pipeline {
-    // The early depth test (and write) of one quad's lanes in `mask`; returns those that pass.
+    // The early depth test, and the stencil test where it is on (and their
+    // writes), of one quad's lanes in `mask`; returns those that pass.
     using QuadDepthFn = uint32_t (*)(const void* prim, int32_t x, int32_t y, uint32_t mask, const Target* t);
-    // The same test on the pixels of the 8x8 square at (ox, oy) in `pixels`
+    // The same tests on the pixels of the 8x8 square at (ox, oy) in `pixels`
     // (bit j * 8 + i: pixel (ox + i, oy + j)), which must lie in the buffer;
     // returns those that pass.
     using SquareDepthFn = uint64_t (*)(const void* prim, int32_t ox, int32_t oy, uint64_t pixels,
@@ -87,8 +88,8 @@ struct Pipeline {
     using OutputsFn = LaneMask (*)(const QuadBatch* batch, const uint32_t* const* regs, LaneMask alive,
                                    const Target* t);
     virtual ~Pipeline() = default;
-    QuadDepthFn quad_depth = nullptr;  // null unless State::early_depth
-    SquareDepthFn square_depth = nullptr;  // null unless State::early_depth
+    QuadDepthFn quad_depth = nullptr;  // null unless State::early_depth (with the stencil test: both tests)
+    SquareDepthFn square_depth = nullptr;  // null unless State::early_depth (with the stencil test: both tests)
     InputsFn inputs = nullptr;  // shared_inputs's
     OutputsFn outputs = nullptr;
     std::shared_ptr<const InputsCode> shared_inputs;
