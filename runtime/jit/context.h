@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <atomic>
 #include <cstdint>
+#include <vector>
 
 #include "runtime/backend.h"
 #include "runtime/interp_kernels.h"
@@ -60,6 +61,10 @@ struct Context {
     // The kernels of the bound 1D, 3D, cube and 2D depth-comparing textures
     // (bind_kernels()), per unit and kind (kernel_slot()); null: none.
     const BoundKernel* kernels = nullptr;
+    // Per call-out, a `tex` one's coordinates and reference in the register
+    // file (tex_lookups()), which a BoundKernel reads: made once per
+    // executor, not per lookup.
+    const BatchLookup* lookups = nullptr;
     // What the generated `tex` code calls
     // (run_tex, tex_direct.cpp), loaded from here: the code cache's code
     // holds no address.
@@ -110,6 +115,10 @@ struct CallOut {
     Kernel<uint32_t> kernel;
     ir::Instr instr;
 };
+
+// The BatchLookup of each `tex` call-out among `calls` (its Step in
+// `steps`) over the register file: its coordinates and reference.
+std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps);
 
 // The generated functions: a batch (`live` lanes), and the prologue (all
 // lanes, before any batch). `regs` is the executor's register file.

@@ -223,6 +223,8 @@ public:
         call_steps_.reserve(code.call_outs.size());
         for (const CallOut& call : code.call_outs) call_steps_.push_back(call_out_step(call, regs_.data, code.reg_count));
         ctx_.call_steps = call_steps_.data();
+        lookups_ = tex_lookups(code.call_outs, call_steps_);
+        ctx_.lookups = lookups_.data();
         bind_direct_samplers(p.textures, code.gpu_textures, direct_.data());
         ctx_.direct = direct_.data();
         bind_kernels(p.textures, code.gpu_textures, kernels_.data());
@@ -269,6 +271,7 @@ private:
     RunLimits limits_;
     BudgetShare share_;
     std::vector<Step<uint32_t>> call_steps_;
+    std::vector<BatchLookup> lookups_;
     std::array<DirectSampler, kDirectSlots> direct_;
     std::array<BoundKernel, kKernelSlots> kernels_;
     Context ctx_;

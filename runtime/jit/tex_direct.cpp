@@ -32,6 +32,14 @@
 
 namespace glslrun::rt::jit {
 
+// run_tex() runs only where the generated code is AVX2's (emit_tex_direct()):
+// built for it, the units' test goes eight lanes at a time.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GLSLRUN_AVX2 __attribute__((target("avx2")))
+#else
+#define GLSLRUN_AVX2
+#endif
+
 namespace {
 
 constexpr unsigned kRegAlign = kLanes * 4 < 64 ? kLanes * 4 : 64;  // as a register's (alu.cpp)
@@ -63,7 +71,7 @@ bool direct_candidate(const ir::Instr& in) {
 
 // fill_defaults() of the lanes that skip their lookups (the sampler writes
 // the others): a third of run_tex() when done for every batch.
-void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
+GLSLRUN_AVX2 void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
     if (lookups == kAllLanes) return;
     for (uint32_t c = 0; c < ir::kTexResults; ++c)
         for (int i = 0; i < kLanes; ++i) result[c][i] = 0.0f;
@@ -71,8 +79,8 @@ void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
 
 // The lookup through the unit's bound sampler or kernel where it has one
 // (true); false where the call-out's kernel must run.
-bool run_bound(const Context& ctx, const ir::TexInfo& info, uint32_t unit, LaneMask lookups, const float* operands,
-               float (*result)[kLanes]) {
+GLSLRUN_AVX2 bool run_bound(const Context& ctx, uint64_t index, const ir::TexInfo& info, uint32_t unit,
+                            LaneMask lookups, const float* operands, float (*result)[kLanes]) {
     if (one_pass_lookup(info)) {
         if (!ctx.direct) return false;
         const DirectSampler& sampler = ctx.direct[direct_slot(unit, info.target == ir::TexTarget::Rect)];
@@ -82,18 +90,30 @@ bool run_bound(const Context& ctx, const ir::TexInfo& info, uint32_t unit, LaneM
         return true;
     }
     const KernelKind kind = kind_of(info);
-    if (kind == KernelKind::Count || !ctx.kernels) return false;
+    if (kind == KernelKind::Count || !ctx.kernels || !ctx.lookups) return false;
     const BoundKernel& kernel = ctx.kernels[kernel_slot(unit, kind)];
     if (!kernel.run) return false;
-    BatchLookup lookup;  // the bound kernels read the coordinates and the reference only
-    for (uint32_t c = 0; c < info.dims(); ++c) lookup.coord[c] = operands + size_t(c) * kLanes;
-    if (info.shadow) lookup.ref = operands + size_t(info.ref_at()) * kLanes;
+    // Its operands: made at each lookup, the record's zero fill was a `rep
+    // stos` that the next store waited on (perf: a third of run_tex() in
+    // the shadow-map frame).
     zero_skipped(result, lookups);
-    kernel.run(*kernel.texture, lookup, lookups, result);
+    kernel.run(*kernel.texture, ctx.lookups[index], lookups, result);
     return true;
 }
 
 }  // namespace
+
+std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps) {
+    std::vector<BatchLookup> out(calls.size());
+    for (size_t i = 0; i < calls.size(); ++i) {
+        if (calls[i].instr.op != ir::Op::tex) continue;
+        const ir::TexInfo info = ir::TexInfo::decode(calls[i].instr.imm[2]);
+        const auto* block = reinterpret_cast<const float*>(steps[i].src[1]);  // the operand block
+        for (uint32_t c = 0; c < info.dims() && c < 3; ++c) out[i].coord[c] = block + size_t(c) * kLanes;
+        if (info.shadow) out[i].ref = block + size_t(info.ref_at()) * kLanes;
+    }
+    return out;
+}
 
 void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSampler* out) {
     for (size_t i = 0; i < kDirectSlots; ++i) out[i] = {};
@@ -128,14 +148,14 @@ void bind_kernels(const GLState::TextureUnit* units, bool gpu, BoundKernel* out)
     }
 }
 
-void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
-             uint32_t* out) {
+GLSLRUN_AVX2 void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units,
+                          const uint32_t* operands, uint32_t* out) {
     const Step<uint32_t>& call = ctx->call_steps[index];
     const uint32_t unit = units[0];
     uint32_t differ = 0;  // as the kernel's same_unit(): every lane, active or not
     for (int i = 0; i < kLanes; ++i) differ |= units[i] ^ unit;
     if (!differ && unit < uint32_t(kMaxTextureUnits) &&
-        run_bound(*ctx, ir::TexInfo::decode(call.imm[2]), unit, exec & ctx->machine.lookups,
+        run_bound(*ctx, index, ir::TexInfo::decode(call.imm[2]), unit, exec & ctx->machine.lookups,
                   reinterpret_cast<const float*>(operands), reinterpret_cast<float (*)[kLanes]>(out)))
         return;
     Step<uint32_t> step = call;  // the results into `out`, not the register file
@@ -174,5 +194,7 @@ bool Emitter::emit_tex_direct(const ir::Instr& in) {
                   WriteMode::Blends, false);
     return true;
 }
+
+#undef GLSLRUN_AVX2
 
 }  // namespace glslrun::rt::jit
