@@ -41,6 +41,11 @@ struct BatchLookup {
     bool quad_derivatives = false;
 };
 
+// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
+// from its first lane alone where BatchLookup::quad_derivatives says they
+// are that lane's (the others' need every lane's rows filled).
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
+
 // Whether sample_batch() takes lookups of this (complete) texture; the
 // others go through sample_complete_lane(). Decided here only.
 bool batch_samples(const Texture& texture);
@@ -50,10 +55,5 @@ bool batch_samples(const Texture& texture);
 // entries are left as they are. `avx2`: the AVX2 build of the lane loops
 // (the same bits as the baseline one).
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2);
-
-// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
-// from its first lane alone where BatchLookup::quad_derivatives says they
-// are that lane's (the others' need every lane's rows filled).
-bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
 
 }  // namespace glslrun::rt
