@@ -741,16 +741,6 @@ BatchKernel cube_kernel(const Texture& texture) {
 #endif
 }
 
-bool batch_reads_quad_leaders(const Texture& texture, bool avx2) {
-#if defined(__x86_64__) && defined(__GNUC__)
-    return avx2 && !direct_samples(texture) && mip2d_samples(texture);  // sample_batch()'s order
-#else
-    (void)texture;
-    (void)avx2;
-    return false;
-#endif
-}
-
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2) {
 #if defined(__x86_64__) && defined(__GNUC__)
     if (avx2 && direct_samples(texture)) return sample_direct(texture, lookup, lanes, out);
@@ -763,6 +753,16 @@ void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask la
 #endif
     (void)avx2;
     run_baseline(texture, lookup, lanes, out);
+}
+
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    return avx2 && !direct_samples(texture) && mip2d_samples(texture);  // sample_batch()'s order
+#else
+    (void)texture;
+    (void)avx2;
+    return false;
+#endif
 }
 
 }  // namespace glslrun::rt

@@ -41,6 +41,11 @@ struct BatchLookup {
     bool quad_derivatives = false;
 };
 
+// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
+// from its first lane alone where BatchLookup::quad_derivatives says they
+// are that lane's (the others' need every lane's rows filled).
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
+
 // Whether sample_batch() takes lookups of this (complete) texture; the
 // others go through sample_complete_lane(). Decided here only.
 bool batch_samples(const Texture& texture);
@@ -64,10 +69,5 @@ using BatchKernel = void (*)(const Texture& texture, const BatchLookup& lookup, 
 // wraps that keep every texel in the image), else null. Only for a CPU
 // with AVX2; it reads the lookup's derivatives where lod_matters().
 BatchKernel cube_kernel(const Texture& texture);
-
-// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
-// from its first lane alone where BatchLookup::quad_derivatives says they
-// are that lane's (the others' need every lane's rows filled).
-bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
 
 }  // namespace glslrun::rt
