@@ -26,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@
 
 namespace glslrun::rt {
 struct CodeCacheConfig;  // runtime/code_cache.h
+struct JitEntryPoints;   // runtime/jit_plugin.h
 }
 
 namespace glslrun::raster::fused {
@@ -103,6 +105,8 @@ struct PipelineCompile {
     // inputs_only() (null: none yet, made with this pipeline); out: the
     // pipeline's.
     std::shared_ptr<const InputsCode> inputs;
+    // In: only the code cache's code (null where it has none): no LLVM.
+    bool load_only = false;
     double seconds = 0;
     bool loaded = false;
 };
@@ -112,6 +116,7 @@ struct PipelineCompile {
 // CPU, docs/performance.md), which it saves back over about a million
 // fragments (the 1080p spot frame: 400,000 fragments, 2 ms saved). Piglit's
 // programs, which draw a few small rectangles each, never compile one.
+// A pipeline the code cache holds costs no LLVM time: it is taken at once.
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
 // The pipelines of one Program, by state_key(), compiled once and shared by
@@ -125,8 +130,9 @@ public:
     ~Cache() = default;  // waits for nothing: queued compiles find it gone
 
     // Null where the JIT is not built in or declined the key, and until the
-    // program has shaded kPipelineAfterFragments fragments without one.
-    // `options`: the code cache's (code_cache_config), read only to compile.
+    // program has shaded kPipelineAfterFragments fragments without one,
+    // unless the code cache holds its code (looked up once per key).
+    // `options`: the code cache's (code_cache_config), read only to compile or load.
     const Pipeline* get(const State& state, bool wait, const ExecOptions& options);
     // Counts fragments the program shaded without a pipeline.
     void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
@@ -143,8 +149,17 @@ private:
         std::mutex lock;
         std::map<std::string, std::shared_ptr<const InputsCode>> made;
     };
+    // The keys whose code was looked for in the code cache before it was due.
+    struct Probed {
+        std::mutex lock;
+        std::set<std::string> keys;
+    };
+    const Pipeline* cached(const std::string& key, const State& state, const ExecOptions& options);
+    static Slots::Made make(const rt::JitEntryPoints& jit, const State& state, const rt::CodeCacheConfig& config,
+                            Inputs& shelf, bool load_only);
     std::shared_ptr<Slots> slots_;
     std::shared_ptr<Inputs> inputs_ = std::make_shared<Inputs>();
+    std::shared_ptr<Probed> probed_ = std::make_shared<Probed>();
     std::atomic<uint64_t> unfused_{0};
 };
 

@@ -101,6 +101,9 @@ inline Program compile(Backend backend, const char* fs, const char* vs = kVs) {
     auto p = Program::compile({{"vs", vs}}, {{"fs", fs}});
     if (!p) FAIL(p.error().str());
     p->exec.backend = backend;
+    // Pipelines compiled when due (warm_up), never an earlier run's taken
+    // at the first draw (tests/fused/code_cache.cpp tests that).
+    p->exec.code_cache = false;
     return std::move(*p);
 }
 

@@ -493,10 +493,11 @@ bool find_functions(CompiledInputs& code, bool) {
 // One part of `state`'s functions (those `define` emits): from the code
 // cache (`disk`, may be null) where it has them and they link, else made by
 // LLVM and stored there; `loaded` is cleared where LLVM made them. Null
-// where LLVM failed.
+// where LLVM failed, or with `load_only` where the cache has no such part.
 template <class Code>
 std::unique_ptr<Code> make_part(Engine& engine, const rt::DiskCache* disk, const char* part, const State& state,
-                                const std::function<void(PipelineEmitter&)>& define, bool& loaded) {
+                                const std::function<void(PipelineEmitter&)>& define, bool& loaded,
+                                bool load_only) {
     std::optional<rt::CodeKey> key;
     if (disk) key = part_key(engine, part, state);
     std::optional<std::string> payload;
@@ -509,6 +510,7 @@ std::unique_ptr<Code> make_part(Engine& engine, const rt::DiskCache* disk, const
         if (code->code.add_object(engine, std::move(cached->object)) && find_functions(*code, state.early_depth))
             return code;
     }
+    if (load_only) return nullptr;
     loaded = false;
     auto code = std::make_unique<Code>();
     std::lock_guard hold(engine.lock);
@@ -544,11 +546,13 @@ std::unique_ptr<Pipeline> compile(const State& key, PipelineCompile* compile) {
     if (compile && compile->cache && !compile->cache->dir.empty() && !engine->cache_salt.empty())
         disk.emplace(*compile->cache);
     const rt::DiskCache* cache = disk ? &*disk : nullptr;
+    const bool load_only = compile && compile->load_only;
+    if (load_only && !cache) return nullptr;
     bool loaded = true;
     std::shared_ptr<const InputsCode> inputs = compile ? compile->inputs : nullptr;
     if (!inputs)
         inputs = make_part<CompiledInputs>(*engine, cache, "inputs", inputs_only(key),
-                                           [](PipelineEmitter& e) { e.define_inputs(); }, loaded);
+                                           [](PipelineEmitter& e) { e.define_inputs(); }, loaded, load_only);
     if (!inputs) return nullptr;
     std::unique_ptr<CompiledPipeline> code =
         make_part<CompiledPipeline>(*engine, cache, "pipeline", key, [&](PipelineEmitter& e) {
@@ -557,7 +561,7 @@ std::unique_ptr<Pipeline> compile(const State& key, PipelineCompile* compile) {
                 e.define_square_depth();
             }
             e.define_outputs();
-        }, loaded);
+        }, loaded, load_only);
     if (!code) return nullptr;
     code->inputs = inputs->inputs;
     code->shared_inputs = inputs;
