@@ -118,7 +118,7 @@ glm::vec4 blend(const BlendState& s, glm::vec4 src, glm::vec4 dst);
 // combines them. Float arithmetic rounded once at the end differed from
 // Mesa by 2/255 on 1.6% of a blended scene (subtractions of rounded terms).
 // With ColorRounding::Gpu the products are exact and only the result is
-// rounded, by the GPU's rule (combine8_gpu in fragment_ops.cpp).
+// rounded, to the nearest byte (combine8_gpu in fragment_ops.cpp).
 Unorm8 blend_unorm8(const BlendState& s, const Unorm8& src, const Unorm8& dst,
                     ColorRounding rounding = ColorRounding::Nearest);
 // One 8-bit channel's logic op (§4.1.10).

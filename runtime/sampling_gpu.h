@@ -33,10 +33,16 @@
 //   quad whose derivatives are half texels; 92% of those in steps of 11/16,
 //   the rest one or two table steps off).
 //
-// The switch-over (c = 0) and texel indices are the Common rules'. 3D,
-// float and depth textures keep those rules (their probes, texkinds.frag and
-// lod3d.frag, showed 8-bit weights but not yet every blend), and so do the
-// unmeasured rectangles: filtered() says which follow this file.
+// - A 3D LINEAR lookup is one sum of its eight texels: the planes z0 and z1
+//   weigh 256 - wz and wz, each split among its 2x2 texels by
+//   level_weights(), as two mipmap levels are (tex3dw.frag: every sample).
+//
+// The switch-over (c = 0) and texel indices are the Common rules'. Float
+// and depth textures keep those rules (their probe, texkinds.frag, showed
+// 8-bit weights but not every blend), and so do the unmeasured rectangles:
+// filtered() says which follow this file. A 3D texture's lambda is the
+// table's of the Common rules' rho (lod3d.frag fits another rho, not
+// modelled).
 #pragma once
 #include <bit>
 #include <cstdint>
@@ -48,8 +54,7 @@ namespace glslrun::rt::sampling::gpu {
 // Whether a lookup of `texture` follows the GPU's rules.
 inline bool filtered(const Texture& texture) {
     const TextureTarget target = texture.target();
-    return texture.format() == TextureFormat::RGBA8 && target != TextureTarget::Tex3D &&
-           target != TextureTarget::Rect;
+    return texture.format() == TextureFormat::RGBA8 && target != TextureTarget::Rect;
 }
 
 // 256 * frac(lambda) for a significand 1 + k/256 of rho, as the GPU's level
@@ -134,26 +139,41 @@ inline TexelWeights level_weights(int wx, int wy, int share) {
     return {x0 - w10, x1 - w11, w10, w11};
 }
 
+// Plane k's 2x2 texels (columns x, rows y) as 16-bit values times `w`.
+template <class Obs>
+[[gnu::always_inline]] inline Texel plane_sum(const Lookup& lk, const TextureImage& image, const LinearAxis& x,
+                                              const LinearAxis& y, int k, const TexelWeights& w, Obs&& obs) {
+    const Texel t00 = unorm16(fetch(lk, image, x.i0, y.i0, k, obs));
+    const Texel t01 = unorm16(fetch(lk, image, x.i1, y.i0, k, obs));
+    const Texel t10 = unorm16(fetch(lk, image, x.i0, y.i1, k, obs));
+    const Texel t11 = unorm16(fetch(lk, image, x.i1, y.i1, k, obs));
+    const Texel row0 = plus(scaled(t00, float(w.w00)), scaled(t01, float(w.w01)));
+    const Texel row1 = plus(scaled(t10, float(w.w10)), scaled(t11, float(w.w11)));
+    return plus(row0, row1);
+}
+
 // A level's LINEAR texels as 16-bit values times level_weights(): the sum,
-// not yet rounded (exact: below 65535 * 256 < 2^24).
+// not yet rounded (exact: below 65535 * 256 < 2^24). A 3D image's planes z0
+// and z1 take share - z1 and z1 = round(wz share / 256) (ties up), each
+// split over its 2x2 texels as a mipmap level's share is (tex3dw.frag: all
+// eight weights of 524,288 lookups of one level; a 3D mipmap blend's
+// shares below 256 were not measured).
 template <class Obs>
 [[gnu::always_inline]] inline Texel linear_sum(const Lookup& lk, const TextureImage& image, int share, Obs&& obs) {
     const LinearAxis x = linear_axis(lk.st->wrap_s, lk.str.x, image.width);
     const int wx = weight8(x.a);
     if (lk.dims == 1) {
         const TexelWeights w = level_weights(wx, 0, share);
-        return plus(scaled(unorm16(fetch(lk, image, x.i0, 0, 0, obs)), float(w.w00)),
-                    scaled(unorm16(fetch(lk, image, x.i1, 0, 0, obs)), float(w.w01)));
+        return plus(scaled(unorm16(fetch(lk, image, x.i0, lk.layer_j, lk.layer_k, obs)), float(w.w00)),
+                    scaled(unorm16(fetch(lk, image, x.i1, lk.layer_j, lk.layer_k, obs)), float(w.w01)));
     }
     const LinearAxis y = linear_axis(lk.st->wrap_t, lk.str.y, image.height);
-    const TexelWeights w = level_weights(wx, weight8(y.a), share);
-    const Texel t00 = unorm16(fetch(lk, image, x.i0, y.i0, 0, obs));
-    const Texel t01 = unorm16(fetch(lk, image, x.i1, y.i0, 0, obs));
-    const Texel t10 = unorm16(fetch(lk, image, x.i0, y.i1, 0, obs));
-    const Texel t11 = unorm16(fetch(lk, image, x.i1, y.i1, 0, obs));
-    const Texel row0 = plus(scaled(t00, float(w.w00)), scaled(t01, float(w.w01)));
-    const Texel row1 = plus(scaled(t10, float(w.w10)), scaled(t11, float(w.w11)));
-    return plus(row0, row1);
+    const int wy = weight8(y.a);
+    if (lk.dims == 2) return plane_sum(lk, image, x, y, lk.layer_k, level_weights(wx, wy, share), obs);
+    const LinearAxis z = linear_axis(lk.st->wrap_r, lk.str.z, image.depth);
+    const int z1 = (weight8(z.a) * share + 128) >> 8;
+    return plus(plane_sum(lk, image, x, y, z.i0, level_weights(wx, wy, share - z1), obs),
+                plane_sum(lk, image, x, y, z.i1, level_weights(wx, wy, z1), obs));
 }
 
 // A level's texels (LINEAR or NEAREST) weighing `share` of the lookup, not yet rounded.

@@ -14,6 +14,7 @@
 
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
+#include "runtime/sampling_gpu3d.h"
 #include "runtime/sampling_gpu_batch.h"
 #include "runtime/sampling_gpu_direct.h"
 #include "runtime/sampling_rules.h"
@@ -197,6 +198,10 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         sampled |= lanes;
         // The GPU's batch takes one lambda per quad: gradients the program
         // gives (texture*GradARB) are each lane's, on the lane path.
+        if (rules == SamplingRules::Gpu && use_avx2() && gpu3d_samples(*texture)) {
+            sample_gpu3d(*texture, batch, lanes, out);  // no level of detail: gradients change nothing
+            continue;
+        }
         if (rules == SamplingRules::Gpu && !info.grad && gpu_batch_samples(*texture)) {
             if (use_avx2() && gpu_direct_samples(*texture)) sample_gpu_direct(*texture, batch, lanes, out);
             else sample_gpu_batch(*texture, batch, lanes, out, use_avx2());

@@ -113,6 +113,11 @@ TEST_CASE("Fast filters textures as NVIDIA's driver: the GPU probes' images", "[
             right += x >= 512;
         }
         CHECK(right <= 17056);
+        // 3D LINEAR's eight weights (two planes split as two mipmap levels): every pixel.
+        CHECK(differing("tex3dw", backend, Precision::Fast).empty());
+        // RGBA8 blending, SRC_ALPHA over ONE_MINUS_SRC_ALPHA: every pixel (storing the
+        // result by the GPU's truncating rule, not to nearest, 3% of the channels one low).
+        CHECK(differing("blendover", backend, Precision::Fast).empty());
         // Mipmap generation: every texel of the levels down to 2x2.
         for (auto [x, y] : differing("mipgen", backend, Precision::Fast)) {
             INFO("mipgen.frag pixel " << x << ", " << y << " from the top");

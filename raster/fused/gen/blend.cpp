@@ -93,12 +93,9 @@ std::array<llvm::Value*, 4> emit_blend_and_mask(llvm::IRBuilder<>& builder, cons
         return builder.CreateLShr(builder.CreateAdd(t, builder.CreateLShr(t, constant(8))), constant(8));
     };
     // raster's combine8_gpu: exact products (units of 1/65025), the result
-    // stored by the GPU's rule, floor(c * 4096 / 65025) then (510 t + 4095) >> 13.
+    // rounded to the nearest byte, (c + 127) / 255.
     constexpr uint32_t kOne = 255 * 255;
-    auto stored = [&](llvm::Value* c) {
-        llvm::Value* t = builder.CreateUDiv(builder.CreateMul(c, constant(4096)), constant(kOne));
-        return builder.CreateLShr(builder.CreateAdd(builder.CreateMul(t, constant(510)), constant(4095)), constant(13));
-    };
+    auto stored = [&](llvm::Value* c) { return builder.CreateUDiv(builder.CreateAdd(c, constant(127)), constant(255)); };
     const uint32_t one = gpu_rounding ? kOne : 255;
     std::array<llvm::Value*, 4> out;
     for (size_t k = 0; k < 4; ++k) {
