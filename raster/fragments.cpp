@@ -172,15 +172,26 @@ FragmentStage::FragmentStage(const Program& program, const GLState& gl, Framebuf
         color_out_[size_t(i)] = frag_color ? frag_color : find_binding(fs.outputs, {element.c_str()});
     }
     depth_out_ = find_binding(fs.outputs, {"gl_FragDepth"});
-    // Without discard, gl_FragDepth, the alpha test and the stencil test
-    // (whose depth-fail update needs the fragment to survive the alpha test)
-    // the depth test cannot depend on the shader, so it runs before shading
-    // and culls hidden quads.
-    // The shader debugger sees every fragment shaded: the late test gives the
+    // Without discard, gl_FragDepth and the alpha test (which a fragment
+    // must survive to reach the stencil test, whose depth-fail update
+    // depends on it) the stencil and depth tests cannot depend on the
+    // shader, so they run before shading and cull hidden quads and those
+    // the stencil rejects (a mirror's room drawn around its mark: a fifth of
+    // the fragments shaded, perf). Their updates of a pixel stay in
+    // submission order, and the colour writes after shading in lane order.
+    // The shader debugger sees every fragment shaded: the late tests give the
     // same image (the same tests in the same order), only with more shading.
     probe_ = st.probe;
     if (probe_) probe_tests_ = std::make_unique<ProbeTests>();
-    early_depth_ = gl.depth_test && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !gl.stencil_test && !probe_;
+    early_depth_ = (gl.depth_test || gl.stencil_test) && !fs.uses_discard && !depth_out_ && !gl.alpha_test && !probe_;
+    // After the early tests a shader whose colours no buffer takes (every
+    // channel masked, or no colour output) has nothing left to do: its
+    // fragments are counted as written and not shaded (a mirror's stencil
+    // mark, a depth-only pass).
+    bool colour_written = false;
+    for (int b = 0; b < ops_.draw_buffers && b < kMaxDrawBuffers; ++b) colour_written |= color_out_[size_t(b)] != nullptr;
+    colour_written &= ops_.color_mask != std::array<bool, 4>{false, false, false, false};
+    tests_only_ = early_depth_ && !colour_written;
     // The debugger shows every lane's values, helpers' lookups too.
     skip_helper_lookups_ = !fs.helper_lookups_matter && !probe_;
     pipeline_ = fused_pipeline();
@@ -256,6 +267,10 @@ void FragmentStage::prefetch(const Rect& r) const {
                                             : reinterpret_cast<const char*>(fb_.color_row<uint8_t>(0, y));
         if (color)
             for (size_t i = 0; i < pixels * color_bytes; i += kLine) __builtin_prefetch(row + size_t(r.x0) * color_bytes + i, 1);
+        // A tile's row of stencil bytes is one line or two (the stencil test's
+        // loads waited on them: perf, a mirror's frame).
+        if (ops_.stencil_test)
+            for (size_t i = 0; i < pixels; i += kLine) __builtin_prefetch(&fb_.stencil[first] + i, 1);
     }
 }
 
@@ -322,12 +337,24 @@ unsigned FragmentStage::depth_test_quad(int base, const float* z_lanes, unsigned
     return mask;
 }
 
+// The early stencil and depth tests of the quad at lane `base` (its
+// positions and depths stored), with their buffer updates.
+unsigned FragmentStage::early_tests_quad(const FsPrimitive& prim, int base, unsigned mask) {
+    if (ops_.stencil_test) {
+        const LanePixels px{lane_x_.data(), lane_y_.data(), lane_z_.data(), prim.front ? 0 : rt::LaneMask(0xF) << base};
+        return unsigned(stencil_depth_test(ops_, fb_, px, rt::LaneMask(mask) << base) >> base);
+    }
+    return ops_.depth_write ? depth_test_quad<true>(base, lane_z_.data(), mask)
+                            : depth_test_quad<false>(base, lane_z_.data(), mask);
+}
+
 void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mask) {
     if (error_) return;
     int base = quads_ * 4;
     if (pipeline_) {
         if (early_depth_) mask = pipeline_->quad_depth(&prim, x, y, mask, &target_);
-        if (!mask) return;
+        if (tests_only_) written_ += uint64_t(std::popcount(mask));
+        if (!mask || tests_only_) return;
         batch_.prim[quads_] = &prim;
         batch_.x[quads_] = x;
         batch_.y[quads_] = y;
@@ -340,10 +367,9 @@ void FragmentStage::add_quad(const FsPrimitive& prim, int x, int y, unsigned mas
     const QuadF px = float(x - prim.ox) + kQuadDxF, py = float(y - prim.oy) + kQuadDyF;
     const QuadF z = clamp01(plane_at(prim.z, px, py));
     store_quad(&lane_z_[base], z);
-    if (early_depth_)
-        mask = ops_.depth_write ? depth_test_quad<true>(base, lane_z_.data(), mask)
-                                : depth_test_quad<false>(base, lane_z_.data(), mask);
-    if (!mask) return;
+    if (early_depth_) mask = early_tests_quad(prim, base, mask);
+    if (tests_only_) written_ += uint64_t(std::popcount(mask));
+    if (!mask || tests_only_) return;
     quad_prim_[size_t(quads_)] = &prim;
     covered_ |= rt::LaneMask(mask) << base;
     if (++quads_ == rt::kLanes / 4) flush();
@@ -356,9 +382,13 @@ void FragmentStage::add_quads(const FsPrimitive& prim, uint64_t pixels, uint64_t
     }
     if (error_) return;
     // The parts' edges are even (triangle.h), so the part's pixels are its
-    // quads' pixels. Early depth tests and writes only depth: testing all
-    // of them before the batches they fill are shaded changes nothing.
+    // quads' pixels. The early tests write only depth and stencil: testing
+    // all of them before the batches they fill are shaded changes nothing.
     if (early_depth_) pixels = pipeline_->square_depth(&prim, ox, oy, pixels & part, &target_);
+    if (tests_only_) {
+        written_ += uint64_t(std::popcount(pixels & part));
+        return;
+    }
     visit_quads(pixels, part, ox, oy, [&](int x, int y, unsigned mask) {
         if (error_) return;
         batch_.prim[quads_] = &prim;
@@ -649,7 +679,7 @@ rt::LaneMask FragmentStage::write_with_ops(rt::LaneMask alive, const Lanes& z, P
         alive = alpha_test(ops_, rgba[3], alive, tests ? &tests->alpha : nullptr);
         if (tests) tests->alpha_failed |= tested & ~alive;
     }
-    if (ops_.stencil_test || (ops_.depth_test && !early_depth_))
+    if ((ops_.stencil_test || ops_.depth_test) && !early_depth_)
         alive = tests ? stencil_depth_probed(px, alive, *tests) : stencil_depth_test(ops_, fb_, px, alive);
     written_ += uint64_t(std::popcount(alive));
     for (int b = 0; b < ops_.draw_buffers && alive; ++b) {

@@ -108,7 +108,7 @@ public:
     void copy_colors(const float* from, float* to) const;
 
     // Queues a quad of `prim` (which must stay alive until flush()). With the
-    // early depth test, the depth test and depth write happen here.
+    // early tests, the stencil and depth tests and their writes happen here.
     void add_quad(const FsPrimitive& prim, int x, int y, unsigned mask);
     // add_quad() for each quad visit_quads(pixels, part, ox, oy) visits; the
     // fused pipeline tests the early depth of the part's pixels in one call.
@@ -136,6 +136,7 @@ private:
     struct Weights;
     template <bool kWrite>
     unsigned depth_test_quad(int base, const float* z_lanes, unsigned mask);
+    unsigned early_tests_quad(const FsPrimitive& prim, int base, unsigned mask);
     void compute_weights(Weights& w) const;
     void interpolate(uint32_t attr, const Weights& w, float* v) const;
     void builtin_input(fused::InputSource source, uint32_t c, const Weights& w, Lanes& v) const;
@@ -166,8 +167,10 @@ private:
     // Per colour buffer: gl_FragData[i], or gl_FragColor for all; null: not written.
     std::array<const ir::Binding*, kMaxDrawBuffers> color_out_{};
     const ir::Binding* depth_out_ = nullptr;
-    // Depth tested in add_quad: no discard, gl_FragDepth, alpha or stencil test.
+    // Depth and stencil tested in add_quad: no discard, gl_FragDepth or alpha test.
     bool early_depth_ = false;
+    // The early tests are all the draw does: no colour is written, nothing shaded.
+    bool tests_only_ = false;
     int quads_ = 0;
     std::array<const FsPrimitive*, rt::kLanes / 4> quad_prim_{};
     std::array<int, rt::kLanes> lane_x_{}, lane_y_{};

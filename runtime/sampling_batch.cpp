@@ -9,6 +9,7 @@
 #include "runtime/sampling_avx2.h"
 #include "runtime/sampling_cube8.h"
 #include "runtime/sampling_direct.h"
+#include "runtime/sampling_direct1d.h"
 #include "runtime/sampling_direct3d.h"
 #include "runtime/sampling_direct8.h"
 #include "runtime/sampling_levels.h"
@@ -731,9 +732,20 @@ bool batch_samples(const Texture& texture) {
     return texture.target() != TextureTarget::Tex1DArray && texture.target() != TextureTarget::Tex2DArray;
 }
 
+BatchKernel cube_kernel(const Texture& texture) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    return cube_direct_kernel(texture);
+#else
+    (void)texture;
+    return nullptr;
+#endif
+}
+
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2) {
 #if defined(__x86_64__) && defined(__GNUC__)
     if (avx2 && direct_samples(texture)) return sample_direct(texture, lookup, lanes, out);
+    if (avx2)
+        if (const BatchKernel kernel = direct1d_kernel(texture)) return kernel(texture, lookup, lanes, out);
     if (avx2 && mip2d_samples(texture)) return sample_mip2d(texture, lookup, lanes, out);
     if (avx2 && direct3d_samples(texture)) return sample_direct3d(texture, lookup, lanes, out);
     if (avx2 && shadow8_samples(texture, lookup)) return sample_shadow8(texture, lookup, lanes, out);
@@ -741,6 +753,16 @@ void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask la
 #endif
     (void)avx2;
     run_baseline(texture, lookup, lanes, out);
+}
+
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    return avx2 && !direct_samples(texture) && mip2d_samples(texture);  // sample_batch()'s order
+#else
+    (void)texture;
+    (void)avx2;
+    return false;
+#endif
 }
 
 }  // namespace glslrun::rt

@@ -35,7 +35,16 @@ struct BatchLookup {
     const float* ref = nullptr;
     const float* lod = nullptr;  // the explicit LOD, or the bias
     bool implicit = true, bias = false;
+    // Every quad's derivatives are its first lane's (lanes 4q..4q+3 read
+    // lane 4q's; the others' rows hold anything): the tex kernel's Precise
+    // lookups, for a sampler that reads them so (batch_reads_quad_leaders()).
+    bool quad_derivatives = false;
 };
+
+// Whether sample_batch(texture, ..., avx2) reads each quad's derivatives
+// from its first lane alone where BatchLookup::quad_derivatives says they
+// are that lane's (the others' need every lane's rows filled).
+bool batch_reads_quad_leaders(const Texture& texture, bool avx2);
 
 // Whether sample_batch() takes lookups of this (complete) texture; the
 // others go through sample_complete_lane(). Decided here only.
@@ -46,5 +55,19 @@ bool batch_samples(const Texture& texture);
 // entries are left as they are. `avx2`: the AVX2 build of the lane loops
 // (the same bits as the baseline one).
 void sample_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes], bool avx2);
+
+// A lookup kernel chosen once for a texture's state (its filter, wraps and
+// comparison are the kernel's template arguments): sample_batch()'s
+// result for the lanes of `lanes` into out[c][i], the other lanes' entries
+// left as they are. The JIT's generated lookups call one straight
+// (runtime/jit/tex_direct.cpp) with no selection per lookup.
+using BatchKernel = void (*)(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
+                             float (*out)[kLanes]);
+
+// The eight-lane cube map kernel (sampling_batch_cube.h) of a complete
+// texture that it takes (a colour cube map, LINEAR within every level,
+// wraps that keep every texel in the image), else null. Only for a CPU
+// with AVX2; it reads the lookup's derivatives where lod_matters().
+BatchKernel cube_kernel(const Texture& texture);
 
 }  // namespace glslrun::rt

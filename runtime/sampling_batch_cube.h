@@ -85,14 +85,23 @@ GLSLRUN_AVX2 void cube_direct(const Texture& texture, const BatchLookup& lk, Lan
     }
 }
 
-// cube_direct() where the texture takes it: a cube map, colour (no
-// depth), LINEAR within every level (both filters), wraps that keep every
-// texel in the image. False: the steps of sample_levels_of_lanes().
-GLSLRUN_AVX2 bool sample_cube_direct(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
-                                     float (*out)[kLanes]) {
+// cube_direct()'s kernel where the texture takes it: a cube map, colour
+// (no depth), LINEAR within every level (both filters), wraps that keep
+// every texel in the image; else null (the steps of
+// sample_levels_of_lanes()).
+BatchKernel cube_direct_kernel(const Texture& texture) {
     const SamplerState& st = texture.sampler;
     if (texture.target() != TextureTarget::Cube || texture.depth() || !linear_within_level(st.mag_filter) ||
         !linear_within_level(st.min_filter))
-        return false;
-    return with_inner_wraps(st, [&]<TextureWrap kS, TextureWrap kT>() { cube_direct<kS, kT>(texture, lk, lanes, out); });
+        return nullptr;
+    BatchKernel kernel = nullptr;
+    with_inner_wraps(st, [&]<TextureWrap kS, TextureWrap kT>() { kernel = cube_direct<kS, kT>; });
+    return kernel;
+}
+
+GLSLRUN_AVX2 bool sample_cube_direct(const Texture& texture, const BatchLookup& lk, LaneMask lanes,
+                                     float (*out)[kLanes]) {
+    const BatchKernel kernel = cube_direct_kernel(texture);
+    if (kernel) kernel(texture, lk, lanes, out);
+    return kernel != nullptr;
 }

@@ -91,7 +91,13 @@ template <bool kLinear, Rule kS, Rule kT, Rule kR>
 }
 
 template <bool kLinear, Rule kS, Rule kT, Rule kR>
-GLSLRUN_AVX2 void direct3d(const Image3& im, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+GLSLRUN_AVX2 void direct3d(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+    const SamplerState& st = texture.sampler;
+    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
+    const Image3 im{source_of(image, st),
+                    {image.width, splat(float(image.width))},
+                    {image.height, splat(float(image.height))},
+                    {image.depth, splat(float(image.depth))}};
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
@@ -124,24 +130,25 @@ bool direct3d_samples(const Texture& texture) {
     return true;
 }
 
-GLSLRUN_AVX2 void sample_direct3d(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
-                                  float (*out)[kLanes]) {
+BatchKernel direct3d_kernel(const Texture& texture) {
+    if (!direct3d_samples(texture)) return nullptr;
     const SamplerState& st = texture.sampler;
-    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
-    const Image3 im{source_of(image, st),
-                    {image.width, splat(float(image.width))},
-                    {image.height, splat(float(image.height))},
-                    {image.depth, splat(float(image.depth))}};
-    const bool linear = linear_within_level(st.mag_filter);
-    with_rules<false>(st, linear, [&]<bool kLinear, Rule kS, Rule kT>() {
+    BatchKernel kernel = nullptr;
+    with_rules<false>(st, linear_within_level(st.mag_filter), [&]<bool kLinear, Rule kS, Rule kT>() {
         if constexpr (!may_border(kS, kLinear) && !may_border(kT, kLinear))
             with_inner_rule(rule_of(st.wrap_r, false, kLinear),
-                            [&]<Rule kR>() { direct3d<kLinear, kS, kT, kR>(im, lookup, lanes, out); });
+                            [&]<Rule kR>() { kernel = direct3d<kLinear, kS, kT, kR>; });
     });
+    return kernel;
+}
+
+void sample_direct3d(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]) {
+    direct3d_kernel(texture)(texture, lookup, lanes, out);
 }
 #undef GLSLRUN_AVX2
 
 #else
+BatchKernel direct3d_kernel(const Texture&) { return nullptr; }
 bool direct3d_samples(const Texture&) { return false; }
 void sample_direct3d(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
 #endif

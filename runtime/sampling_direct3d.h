@@ -15,6 +15,10 @@ namespace glslrun::rt {
 // Whether sample_direct3d() takes lookups of this (complete) texture.
 bool direct3d_samples(const Texture& texture);
 
+// The kernel of a texture that direct3d_samples() takes, else null. Only
+// for a CPU with AVX2 (cpu_has_avx2()).
+BatchKernel direct3d_kernel(const Texture& texture);
+
 // sample_batch()'s result for the lanes of `lanes` of a texture that
 // direct3d_samples() takes, into out[c][i]; the other lanes' entries are
 // left as they are. Only for a CPU with AVX2 (cpu_has_avx2()).

@@ -153,8 +153,14 @@ template <bool kLinear, Rule kS, Rule kT, Rule kR>
     }
 }
 
+// One texture state's kernel (a BatchKernel: gpu3d_kernel() picks it once per state).
 template <bool kLinear, Rule kS, Rule kT, Rule kR>
-GLSLRUN_AVX2 void gpu3d(const Image3& im, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+GLSLRUN_AVX2 void gpu3d(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+    const TextureImage& image = texture.levels(0)[size_t(texture.sampler.base_level)];
+    const Image3 im{source_of(image, texture.sampler),
+                    {image.width, splat(float(image.width))},
+                    {image.height, splat(float(image.height))},
+                    {image.depth, splat(float(image.depth))}};
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
@@ -176,13 +182,14 @@ template <class F>
 }
 
 template <bool kLinear>
-GLSLRUN_AVX2 void dispatch(const Image3& im, const SamplerState& st, const BatchLookup& lk, LaneMask lanes,
-                           float (*out)[kLanes]) {
+BatchKernel kernel_of(const SamplerState& st) {
+    BatchKernel kernel = nullptr;
     with_inner(st.wrap_s, [&]<Rule kS>() {
         with_inner(st.wrap_t, [&]<Rule kT>() {
-            with_inner(st.wrap_r, [&]<Rule kR>() { gpu3d<kLinear, kS, kT, kR>(im, lk, lanes, out); });
+            with_inner(st.wrap_r, [&]<Rule kR>() { kernel = gpu3d<kLinear, kS, kT, kR>; });
         });
     });
+    return kernel;
 }
 
 }  // namespace
@@ -191,20 +198,20 @@ bool gpu3d_samples(const Texture& texture) {
     return direct3d_samples(texture) && sampling::gpu::filtered(texture);  // Precise's one-pass cases, RGBA8
 }
 
-GLSLRUN_AVX2 void sample_gpu3d(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]) {
+BatchKernel gpu3d_kernel(const Texture& texture) {
+    if (!gpu3d_samples(texture)) return nullptr;
     const SamplerState& st = texture.sampler;
-    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
-    const Image3 im{source_of(image, st),
-                    {image.width, splat(float(image.width))},
-                    {image.height, splat(float(image.height))},
-                    {image.depth, splat(float(image.depth))}};
-    if (linear_within_level(st.mag_filter)) dispatch<true>(im, st, lookup, lanes, out);
-    else dispatch<false>(im, st, lookup, lanes, out);
+    return linear_within_level(st.mag_filter) ? kernel_of<true>(st) : kernel_of<false>(st);
+}
+
+void sample_gpu3d(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]) {
+    gpu3d_kernel(texture)(texture, lookup, lanes, out);
 }
 #undef GLSLRUN_AVX2
 
 #else
 bool gpu3d_samples(const Texture&) { return false; }
+BatchKernel gpu3d_kernel(const Texture&) { return nullptr; }
 void sample_gpu3d(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
 #endif
 

@@ -16,6 +16,10 @@ namespace glslrun::rt {
 // Whether sample_gpu3d() takes lookups of this complete texture under SamplingRules::Gpu.
 bool gpu3d_samples(const Texture& texture);
 
+// sample_gpu3d()'s kernel for the texture's state (the generated code binds
+// it per texture unit); null where gpu3d_samples() is false.
+BatchKernel gpu3d_kernel(const Texture& texture);
+
 // sample_complete_lane() with SamplingRules::Gpu for the lanes of `lanes`
 // of a texture that gpu3d_samples() takes, into out[c][i]; the other lanes'
 // entries are left as they are. Only for a CPU with AVX2 (cpu_has_avx2()).

@@ -2,9 +2,9 @@
 // - lambda of every lane as lambdas() (sampling_batch.cpp) computes it: rho
 //   from the derivatives in registers (glm::length()'s products, sum and
 //   sqrt, the larger of the two as std::max picks it), lod_from_rho()'s
-//   double log2 in a lane loop over the same inline function (vectorised:
-//   no branch in it), once per quad where the quad's lanes share rho, then
-//   the biases and clamp_lambda()'s selects in registers;
+//   double log2 in registers (sampling_lod8.h), once per quad where the
+//   quad's lanes share rho (read from each quad's first lane where the
+//   lookup says they do), then the biases and clamp_lambda()'s selects;
 // - per group of eight lanes, each lane's levels and weight from
 //   choose_level() (sampling_levels.h), then one pass per first level the
 //   group's lanes hold (one for a smooth surface: a quad's lanes share
@@ -20,6 +20,7 @@
 
 #include "runtime/sampling_direct8.h"
 #include "runtime/sampling_levels.h"
+#include "runtime/sampling_lod8.h"
 
 namespace glslrun::rt {
 
@@ -32,32 +33,60 @@ using namespace direct8;
 
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V load8(const float* p) { return _mm256_loadu_ps(p); }
 
-// |(du, dv, 0)| of eight lanes: scaled_length()'s for 2D (u = s * width,
-// v = t * height; the third product is +0, which adds nothing to a sum of squares).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V length8(V ds, V dt, V w, V h) {
-    const V u = _mm256_mul_ps(ds, w), v = _mm256_mul_ps(dt, h);
-    return _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(u, u), _mm256_mul_ps(v, v)));
+// The first lanes of the eight quads of lanes p[0..31], in the order
+// (0, 2, 4, 6, 1, 3, 5, 7): three shuffles of the four groups' registers
+// (perf: four gathers a lookup were a fifth of the level of detail).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V quad_leaders8(const float* p) {
+    const V q01 = _mm256_shuffle_ps(load8(p), load8(p + 8), 0x00);  // (0, 0, 2, 2 | 1, 1, 3, 3)
+    const V q23 = _mm256_shuffle_ps(load8(p + 16), load8(p + 24), 0x00);
+    return _mm256_shuffle_ps(q01, q23, _MM_SHUFFLE(2, 0, 2, 0));
 }
 
-// lod_from_rho() of every lane. Where each quad's four lanes have one rho
-// (the tex kernel gives a quad its first lane's derivatives: Precise's one
-// LOD per quad), the double log2 runs once per quad, a quarter of the work
-// (perf: the log2 was a third of mip_floor's lookup); the same function of
-// the same rho, so the same bits.
-GLSLRUN_AVX2 void lod_lanes(const float* rho, float* lambda) {
-    static_assert(kLanes % 8 == 0);
-    alignas(32) uint32_t bits[kLanes];
-    std::memcpy(bits, rho, sizeof bits);
-    uint32_t differ = 0;
-    for (int i = 0; i < kLanes; ++i) differ |= bits[i] ^ bits[i & ~3];
-    if (differ) {
-        for (int i = 0; i < kLanes; ++i) lambda[i] = lod_from_rho(rho[i]);
-        return;
+// rho of eight lanes: max(|ddx|, |ddy|) as std::max picks it, taken on the
+// squares: sqrt is monotonic and correctly rounded, so the larger root is
+// the root of the larger square (a NaN picks as before: |ddx| where either is NaN).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V square8(V u, V v) {
+    return _mm256_add_ps(_mm256_mul_ps(u, u), _mm256_mul_ps(v, v));
+}
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V rho8(V xs, V xt, V ys, V yt, V w, V h) {
+    const V lx = square8(_mm256_mul_ps(xs, w), _mm256_mul_ps(xt, h));
+    const V ly = square8(_mm256_mul_ps(ys, w), _mm256_mul_ps(yt, h));
+    return _mm256_sqrt_ps(_mm256_blendv_ps(lx, ly, _mm256_cmp_ps(lx, ly, _CMP_LT_OQ)));
+}
+
+// Every lane's lambda_base, lod_from_rho() of its rho. Where each quad's
+// four lanes have one rho (the tex kernel gives a quad its first lane's
+// derivatives: Precise's one LOD per quad), the log2 runs once per quad:
+// read from the first lanes alone where the lookup says so
+// (BatchLookup::quad_derivatives: the tex kernel then makes no copy of
+// them), else where every quad's rho bits agree.
+GLSLRUN_AVX2 void lambda_bases(const BatchLookup& lk, V w, V h, float* lambda) {
+    static_assert(kLanes % 32 == 0);
+    alignas(32) float quad[kLanes / 4];  // quad_leaders8()'s order in each eight
+    if (lk.quad_derivatives) {
+        for (int g = 0; g < kLanes; g += 32)
+            _mm256_store_ps(quad + g / 4, lod_from_rho8(rho8(quad_leaders8(lk.ddx[0] + g), quad_leaders8(lk.ddx[1] + g),
+                                                             quad_leaders8(lk.ddy[0] + g), quad_leaders8(lk.ddy[1] + g), w, h)));
+    } else {
+        alignas(32) float rho[kLanes];
+        for (int g = 0; g < kLanes; g += 8)
+            _mm256_store_ps(rho + g, rho8(load8(lk.ddx[0] + g), load8(lk.ddx[1] + g), load8(lk.ddy[0] + g),
+                                          load8(lk.ddy[1] + g), w, h));
+        alignas(32) uint32_t bits[kLanes];
+        std::memcpy(bits, rho, sizeof bits);
+        uint32_t differ = 0;
+        for (int i = 0; i < kLanes; ++i) differ |= bits[i] ^ bits[i & ~3];
+        if (differ) {
+            for (int g = 0; g < kLanes; g += 8) _mm256_store_ps(lambda + g, lod_from_rho8(_mm256_load_ps(rho + g)));
+            return;
+        }
+        for (int g = 0; g < kLanes; g += 32) _mm256_store_ps(quad + g / 4, lod_from_rho8(quad_leaders8(rho + g)));
     }
-    alignas(32) float quad_rho[kLanes / 4], quad[kLanes / 4];
-    for (int q = 0; q < kLanes / 4; ++q) quad_rho[q] = rho[4 * q];
-    for (int q = 0; q < kLanes / 4; ++q) quad[q] = lod_from_rho(quad_rho[q]);
-    for (int i = 0; i < kLanes; ++i) lambda[i] = quad[i / 4];
+    for (int g = 0; g < kLanes; g += 8) {  // quads g/4 and g/4 + 1: at k and 4 + k of their eight
+        const int k = (g % 32) / 8;
+        _mm256_store_ps(lambda + g, _mm256_permutevar8x32_ps(_mm256_load_ps(quad + (g / 32) * 8),
+                                                             _mm256_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4)));
+    }
 }
 
 // Every lane's lambda, clamped: clamp_lambda(lambda_base + bias +
@@ -65,24 +94,18 @@ GLSLRUN_AVX2 void lod_lanes(const float* rho, float* lambda) {
 // skipped compute too, on whatever their operands hold (every step is safe
 // for any float).
 GLSLRUN_AVX2 void lambdas(const BatchLookup& lk, const SamplerState& st, V w, V h, float* lambda) {
-    if (lk.implicit) {
-        alignas(32) float rho[kLanes];
-        for (int g = 0; g < kLanes; g += 8) {
-            const V lx = length8(load8(lk.ddx[0] + g), load8(lk.ddx[1] + g), w, h);
-            const V ly = length8(load8(lk.ddy[0] + g), load8(lk.ddy[1] + g), w, h);
-            _mm256_store_ps(rho + g, _mm256_blendv_ps(lx, ly, _mm256_cmp_ps(lx, ly, _CMP_LT_OQ)));  // std::max(lx, ly)
-        }
-        lod_lanes(rho, lambda);
-        if (lk.bias)
-            for (int i = 0; i < kLanes; ++i) lambda[i] = lambda[i] + lk.lod[i];
-    } else if (lk.lod) {
-        for (int i = 0; i < kLanes; ++i) lambda[i] = lk.lod[i];
-    } else {
-        for (int i = 0; i < kLanes; ++i) lambda[i] = 0.0f;
-    }
+    if (lk.implicit) lambda_bases(lk, w, h, lambda);
     const V bias = splat(st.lod_bias);
-    for (int g = 0; g < kLanes; g += 8)
-        _mm256_store_ps(lambda + g, clamp_lambda8(_mm256_add_ps(_mm256_load_ps(lambda + g), bias), st));
+    for (int g = 0; g < kLanes; g += 8) {
+        V x = _mm256_setzero_ps();
+        if (lk.implicit) {
+            x = _mm256_load_ps(lambda + g);
+            if (lk.bias) x = _mm256_add_ps(x, load8(lk.lod + g));
+        } else if (lk.lod) {
+            x = load8(lk.lod + g);
+        }
+        _mm256_store_ps(lambda + g, clamp_lambda8(_mm256_add_ps(x, bias), st));
+    }
 }
 
 // One level's lookups of lanes g..g+7 at (s, t).
@@ -122,9 +145,11 @@ template <bool kLinear, Rule kS, Rule kT>
     _mm256_store_ps(weight, _mm256_and_ps(two, _mm256_sub_ps(l, whole)));  // else +0
 }
 
-// LINEAR's two rows of one level for lanes g..g+7 at (s, t), and the weights.
+// LINEAR's two rows of one level for lanes g..g+7 at (s, t), and the
+// weights; true where every lane's x1 is x0 + 1 (no edge clamp or REPEAT
+// wrap between its two columns: blend_pairs8() may read them as one pair).
 template <Rule kS, Rule kT>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear_rows(const TextureImage& image, V s, V t, Row8* rows, V& ax,
+[[gnu::always_inline]] GLSLRUN_AVX2 inline bool linear_rows(const TextureImage& image, V s, V t, Row8* rows, V& ax,
                                                             V& ay) {
     const Linear8 x = linear8<kS>(s, {image.width, splat(float(image.width))});
     const Linear8 y = linear8<kT>(t, {image.height, splat(float(image.height))});
@@ -132,6 +157,43 @@ template <Rule kS, Rule kT>
     row_of(image.texels.data(), image.width, x, y.i1, rows[1]);
     ax = x.a;
     ay = y.a;
+    const I next = _mm256_cmpeq_epi32(x.i1, _mm256_add_epi32(x.i0, splat_i(1)));
+    return _mm256_movemask_ps(_mm256_castsi256_ps(next)) == 0xff;
+}
+
+// Lane j's and lane j + 4's texels (x0, y) into `left` and (x0 + 1, y) into
+// `right`, as texel_pair() of x0 and x1 would give them where x1 is x0 + 1:
+// each lane's two texels are one 32-byte load (texel x0 + 1 is in the row).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void texel_pairs(const Row8& row, int j, V& left, V& right) {
+    const V a = _mm256_loadu_ps(reinterpret_cast<const float*>(row.base + row.x0[j]));
+    const V b = _mm256_loadu_ps(reinterpret_cast<const float*>(row.base + row.x0[j + 4]));
+    left = _mm256_permute2f128_ps(a, b, 0x20);
+    right = _mm256_permute2f128_ps(a, b, 0x31);
+}
+
+// blend_rows8<kPlanes>() where linear_rows() said every row's columns are
+// neighbours: the same products and sums from half the loads and offsets
+// (perf: the texel loads' offsets and inserts were the kernel's hottest
+// instructions).
+template <int kPlanes>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void blend_pairs8(const Row8* rows, const V* ax, const V* ay, V az, V mixed,
+                                                             V* value) {
+    V lanes[4];
+#pragma GCC unroll 4
+    for (int j = 0; j < 4; ++j) {
+        V plane[kPlanes];
+#pragma GCC unroll 2
+        for (int p = 0; p < kPlanes; ++p) {
+            const V a = splat_pair(ax[p], j);
+            V l0, r0, l1, r1;
+            texel_pairs(rows[2 * p], j, l0, r0);
+            texel_pairs(rows[2 * p + 1], j, l1, r1);
+            plane[p] = lerp_pair(lerp_pair(l0, r0, a), lerp_pair(l1, r1, a), splat_pair(ay[p], j));
+        }
+        if constexpr (kPlanes == 1) lanes[j] = plane[0];
+        else lanes[j] = _mm256_blendv_ps(plane[0], lerp_pair(plane[0], plane[1], splat_pair(az, j)), splat_pair(mixed, j));
+    }
+    transpose8(lanes, value);
 }
 
 template <bool kLinear, Rule kS, Rule kT>
@@ -162,11 +224,14 @@ GLSLRUN_AVX2 void mip2d(const Texture& texture, const BatchLookup& lk, LaneMask 
                 // Every texel in the image: the lane-by-lane blends (blend_rows8()).
                 Row8 rows[4];
                 V ax[2], ay[2];
-                linear_rows<kS, kT>(levels[size_t(level)], s, t, rows, ax[0], ay[0]);
+                const bool pairs = linear_rows<kS, kT>(levels[size_t(level)], s, t, rows, ax[0], ay[0]);
                 if (two & take) {  // their second level is level + 1, which exists: level < q
-                    linear_rows<kS, kT>(levels[size_t(level) + 1], s, t, rows + 2, ax[1], ay[1]);
-                    blend_rows8<2>(rows, ax, ay, _mm256_load_ps(weight),
-                                   _mm256_load_ps(reinterpret_cast<const float*>(second)), value);
+                    const bool next_pairs = linear_rows<kS, kT>(levels[size_t(level) + 1], s, t, rows + 2, ax[1], ay[1]);
+                    const V wt = _mm256_load_ps(weight), mixed = _mm256_load_ps(reinterpret_cast<const float*>(second));
+                    if (pairs && next_pairs) blend_pairs8<2>(rows, ax, ay, wt, mixed, value);
+                    else blend_rows8<2>(rows, ax, ay, wt, mixed, value);
+                } else if (pairs) {
+                    blend_pairs8<1>(rows, ax, ay, ax[0], ax[0], value);
                 } else {
                     blend_rows8<1>(rows, ax, ay, ax[0], ax[0], value);
                 }

@@ -48,8 +48,14 @@ template <CompareFunc kFunc>
 }
 
 template <bool kLinear, Rule kS, Rule kT, CompareFunc kFunc>
-GLSLRUN_AVX2 void shadow8(const Map& map, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+GLSLRUN_AVX2 void shadow8(const Texture& texture, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
     static_assert(kLanes % 8 == 0, "eight lanes at a time");
+    const SamplerState& st = texture.sampler;
+    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
+    const Map map{image.texels.data(),
+                  {image.width, splat(float(image.width))},
+                  {image.height, splat(float(image.height))},
+                  st.depth_mode};
     const V zero = _mm256_setzero_ps(), one = splat(1.0f);
     const I width = splat_i(map.w.n);
     for (int g = 0; g < kLanes; g += 8) {
@@ -79,47 +85,45 @@ GLSLRUN_AVX2 void shadow8(const Map& map, const BatchLookup& lk, LaneMask lanes,
 }
 
 template <bool kLinear, Rule kS, Rule kT>
-void with_func(const Map& map, CompareFunc func, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
+BatchKernel with_func(CompareFunc func) {
     using enum CompareFunc;
     switch (func) {
-    case Never: return shadow8<kLinear, kS, kT, Never>(map, lk, lanes, out);
-    case Less: return shadow8<kLinear, kS, kT, Less>(map, lk, lanes, out);
-    case Equal: return shadow8<kLinear, kS, kT, Equal>(map, lk, lanes, out);
-    case Lequal: return shadow8<kLinear, kS, kT, Lequal>(map, lk, lanes, out);
-    case Greater: return shadow8<kLinear, kS, kT, Greater>(map, lk, lanes, out);
-    case Notequal: return shadow8<kLinear, kS, kT, Notequal>(map, lk, lanes, out);
-    case Gequal: return shadow8<kLinear, kS, kT, Gequal>(map, lk, lanes, out);
-    case Always: return shadow8<kLinear, kS, kT, Always>(map, lk, lanes, out);
+    case Never: return shadow8<kLinear, kS, kT, Never>;
+    case Less: return shadow8<kLinear, kS, kT, Less>;
+    case Equal: return shadow8<kLinear, kS, kT, Equal>;
+    case Lequal: return shadow8<kLinear, kS, kT, Lequal>;
+    case Greater: return shadow8<kLinear, kS, kT, Greater>;
+    case Notequal: return shadow8<kLinear, kS, kT, Notequal>;
+    case Gequal: return shadow8<kLinear, kS, kT, Gequal>;
+    case Always: return shadow8<kLinear, kS, kT, Always>;
     }
+    return nullptr;
 }
 
 }  // namespace
 
-bool shadow8_samples(const Texture& texture, const BatchLookup& lookup) {
+BatchKernel shadow8_kernel(const Texture& texture) {
     const SamplerState& st = texture.sampler;
-    if (texture.target() != TextureTarget::Tex2D || !texture.depth() || !st.compare || !lookup.ref ||
-        lod_matters(st))
-        return false;
-    const bool linear = linear_within_level(st.mag_filter);
-    return !may_border(rule_of(st.wrap_s, false, linear), linear) && !may_border(rule_of(st.wrap_t, false, linear), linear);
-}
-
-GLSLRUN_AVX2 void sample_shadow8(const Texture& texture, const BatchLookup& lookup, LaneMask lanes,
-                                 float (*out)[kLanes]) {
-    const SamplerState& st = texture.sampler;
-    const TextureImage& image = texture.levels(0)[size_t(st.base_level)];
-    const Map map{image.texels.data(),
-                  {image.width, splat(float(image.width))},
-                  {image.height, splat(float(image.height))},
-                  st.depth_mode};
+    if (texture.target() != TextureTarget::Tex2D || !texture.depth() || !st.compare || lod_matters(st)) return nullptr;
+    BatchKernel kernel = nullptr;
     with_rules<false>(st, linear_within_level(st.mag_filter), [&]<bool kLinear, Rule kS, Rule kT>() {
         if constexpr (!may_border(kS, kLinear) && !may_border(kT, kLinear))
-            with_func<kLinear, kS, kT>(map, st.compare_func, lookup, lanes, out);
+            kernel = with_func<kLinear, kS, kT>(st.compare_func);
     });
+    return kernel;
+}
+
+bool shadow8_samples(const Texture& texture, const BatchLookup& lookup) {
+    return lookup.ref && shadow8_kernel(texture);
+}
+
+void sample_shadow8(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes]) {
+    shadow8_kernel(texture)(texture, lookup, lanes, out);
 }
 #undef GLSLRUN_AVX2
 
 #else
+BatchKernel shadow8_kernel(const Texture&) { return nullptr; }
 bool shadow8_samples(const Texture&, const BatchLookup&) { return false; }
 void sample_shadow8(const Texture&, const BatchLookup&, LaneMask, float (*)[kLanes]) {}
 #endif

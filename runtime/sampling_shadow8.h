@@ -12,6 +12,10 @@
 
 namespace glslrun::rt {
 
+// The kernel of a complete texture that these lookups take, else null;
+// it reads the lookups' `ref`. Only for a CPU with AVX2 (cpu_has_avx2()).
+BatchKernel shadow8_kernel(const Texture& texture);
+
 // Whether sample_shadow8() takes these lookups of this (complete) texture.
 bool shadow8_samples(const Texture& texture, const BatchLookup& lookup);
 

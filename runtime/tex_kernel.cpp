@@ -209,8 +209,12 @@ void sample_lanes(const Step<W>& s, Machine<W>& m, SamplingRules rules) {
         }
         if (!lanes_only(*texture, rules) && batch_samples(*texture)) {
             if (share && sampling::lod_matters(texture->sampler)) {
-                share_quad_derivatives(batch, quad_derivatives);
-                share = false;
+                // The mipmapped 2D kernel reads each quad's first lane: no copy.
+                batch.quad_derivatives = true;
+                if (!batch_reads_quad_leaders(*texture, use_avx2())) {
+                    share_quad_derivatives(batch, quad_derivatives);
+                    share = false;
+                }
             }
             sample_batch(*texture, batch, lanes, out, use_avx2());
             continue;

@@ -1,7 +1,7 @@
 // The fused fragment pipeline: per (program, fragment draw state), native
 // code made by the JIT for the per-lane work around the fragment shader, as
 // llvmpipe's fragment functions do it: depth from the plane equation and the
-// early depth test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
+// early depth (and stencil) test of a quad or of an 8x8 square's pixels; the shader inputs of a batch of quads
 // (perspective-correct interpolation from the plane equations,
 // gl_FragCoord, gl_FrontFacing, gl_PointCoord); after the shader, the late
 // depth test, the depth write, the colour conversion and the colour write
@@ -26,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@
 
 namespace glslrun::rt {
 struct CodeCacheConfig;  // runtime/code_cache.h
+struct JitEntryPoints;   // runtime/jit_plugin.h
 }
 
 namespace glslrun::raster::fused {
@@ -73,9 +75,10 @@ struct InputsCode {
 
 // The fragment functions of one State.
 struct Pipeline {
-    // The early depth test (and write) of one quad's lanes in `mask`; returns those that pass.
+    // The early depth test, and the stencil test where it is on (and their
+    // writes), of one quad's lanes in `mask`; returns those that pass.
     using QuadDepthFn = uint32_t (*)(const void* prim, int32_t x, int32_t y, uint32_t mask, const Target* t);
-    // The same test on the pixels of the 8x8 square at (ox, oy) in `pixels`
+    // The same tests on the pixels of the 8x8 square at (ox, oy) in `pixels`
     // (bit j * 8 + i: pixel (ox + i, oy + j)), which must lie in the buffer;
     // returns those that pass.
     using SquareDepthFn = uint64_t (*)(const void* prim, int32_t ox, int32_t oy, uint64_t pixels,
@@ -87,8 +90,8 @@ struct Pipeline {
     using OutputsFn = LaneMask (*)(const QuadBatch* batch, const uint32_t* const* regs, LaneMask alive,
                                    const Target* t);
     virtual ~Pipeline() = default;
-    QuadDepthFn quad_depth = nullptr;  // null unless State::early_depth
-    SquareDepthFn square_depth = nullptr;  // null unless State::early_depth
+    QuadDepthFn quad_depth = nullptr;  // null unless State::early_depth (with the stencil test: both tests)
+    SquareDepthFn square_depth = nullptr;  // null unless State::early_depth (with the stencil test: both tests)
     InputsFn inputs = nullptr;  // shared_inputs's
     OutputsFn outputs = nullptr;
     std::shared_ptr<const InputsCode> shared_inputs;
@@ -102,6 +105,8 @@ struct PipelineCompile {
     // inputs_only() (null: none yet, made with this pipeline); out: the
     // pipeline's.
     std::shared_ptr<const InputsCode> inputs;
+    // In: only the code cache's code (null where it has none): no LLVM.
+    bool load_only = false;
     double seconds = 0;
     bool loaded = false;
 };
@@ -111,6 +116,7 @@ struct PipelineCompile {
 // CPU, docs/performance.md), which it saves back over about a million
 // fragments (the 1080p spot frame: 400,000 fragments, 2 ms saved). Piglit's
 // programs, which draw a few small rectangles each, never compile one.
+// A pipeline the code cache holds costs no LLVM time: it is taken at once.
 inline constexpr uint64_t kPipelineAfterFragments = uint64_t(1) << 20;
 
 // The pipelines of one Program, by state_key(), compiled once and shared by
@@ -124,8 +130,9 @@ public:
     ~Cache() = default;  // waits for nothing: queued compiles find it gone
 
     // Null where the JIT is not built in or declined the key, and until the
-    // program has shaded kPipelineAfterFragments fragments without one.
-    // `options`: the code cache's (code_cache_config), read only to compile.
+    // program has shaded kPipelineAfterFragments fragments without one,
+    // unless the code cache holds its code (looked up once per key).
+    // `options`: the code cache's (code_cache_config), read only to compile or load.
     const Pipeline* get(const State& state, bool wait, const ExecOptions& options);
     // Counts fragments the program shaded without a pipeline.
     void count_unfused(uint64_t fragments) { unfused_.fetch_add(fragments, std::memory_order_relaxed); }
@@ -142,8 +149,17 @@ private:
         std::mutex lock;
         std::map<std::string, std::shared_ptr<const InputsCode>> made;
     };
+    // The keys whose code was looked for in the code cache before it was due.
+    struct Probed {
+        std::mutex lock;
+        std::set<std::string> keys;
+    };
+    const Pipeline* cached(const std::string& key, const State& state, const ExecOptions& options);
+    static Slots::Made make(const rt::JitEntryPoints& jit, const State& state, const rt::CodeCacheConfig& config,
+                            Inputs& shelf, bool load_only);
     std::shared_ptr<Slots> slots_;
     std::shared_ptr<Inputs> inputs_ = std::make_shared<Inputs>();
+    std::shared_ptr<Probed> probed_ = std::make_shared<Probed>();
     std::atomic<uint64_t> unfused_{0};
 };
 

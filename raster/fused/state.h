@@ -39,7 +39,7 @@ struct State {
     std::array<uint8_t, kMaxDrawBuffers> more_channels{};
     bool float_outputs = true;   // the colour and depth outputs are float registers
     bool depth_output = false;   // gl_FragDepth written
-    bool early_depth = false;    // the depth test runs before the shader (FragmentStage)
+    bool early_depth = false;    // the depth and stencil tests run before the shader (FragmentStage)
     bool probe = false;          // the shader debugger watches the draw
     bool avx2 = false;           // the vector ISA the code is made for
     bool operator==(const State&) const = default;

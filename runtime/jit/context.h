@@ -4,9 +4,11 @@
 #include <cstddef>
 #include <atomic>
 #include <cstdint>
+#include <vector>
 
 #include "runtime/backend.h"
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling_batch.h"
 #include "runtime/sampling_direct.h"
 
 namespace glslrun::rt::jit {
@@ -15,6 +17,14 @@ namespace glslrun::rt::jit {
 // DrawBudget: the draw's budget as a whole stopped it (Context::stop says why).
 enum class Failure : int32_t { None = 0, LoopCap = 1, MissingFunction = 2, Instructions = 3, Cancelled = 4,
                                DrawBudget = 5 };
+
+// A unit's texture of one kind and the batched sampler's kernel for its
+// state (sampling_batch.h), which the generated `tex` code calls where
+// its lanes' unit has one: run(*texture, ...).
+struct BoundKernel {
+    BatchKernel run = nullptr;
+    const Texture* texture = nullptr;
+};
 
 struct Context {
     uint64_t max_loop_iterations = 0;  // read at entry
@@ -48,7 +58,14 @@ struct Context {
     // unit (direct_slot()), which the generated `tex` code calls where its
     // lanes' unit has one; null: none.
     const DirectSampler* direct = nullptr;
-    // What the generated `tex` code of a 2D or rectangle lookup calls
+    // The kernels of the bound 1D, 3D, cube and 2D depth-comparing textures
+    // (bind_kernels()), per unit and kind (kernel_slot()); null: none.
+    const BoundKernel* kernels = nullptr;
+    // Per call-out, a `tex` one's coordinates and reference in the register
+    // file (tex_lookups()), which a BoundKernel reads: made once per
+    // executor, not per lookup.
+    const BatchLookup* lookups = nullptr;
+    // What the generated `tex` code calls
     // (run_tex, tex_direct.cpp), loaded from here: the code cache's code
     // holds no address.
     void (*tex)(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
@@ -65,15 +82,30 @@ inline constexpr size_t kTexOffset = offsetof(Context, tex);
 constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2 + (rect ? 1 : 0); }
 inline constexpr size_t kDirectSlots = direct_slot(kMaxTextureUnits, false);
 
+// The lookups that BoundKernel takes: 1D, 3D and cube colour lookups, and
+// 2D depth comparisons (shadow2D, shadow2DProj).
+enum class KernelKind : uint8_t { T1D, T3D, Cube, Shadow2D, Count };
+constexpr size_t kernel_slot(uint32_t unit, KernelKind kind) {
+    return size_t(unit) * size_t(KernelKind::Count) + size_t(kind);
+}
+inline constexpr size_t kKernelSlots = kernel_slot(kMaxTextureUnits, KernelKind::T1D);
+
+// The units' kernels into out[kKernelSlots]: each kind's texture whose
+// state has an eight-lane kernel that reads no derivatives (no level of
+// detail decision), complete, that the tex kernel samples with those
+// kernels (under `gpu`, Fast's GPU filtering, those it does not filter);
+// all null where `units` is null or the CPU lacks AVX2.
+void bind_kernels(const GLState::TextureUnit* units, bool gpu, BoundKernel* out);
+
 // The units' one-pass samplers into out[kDirectSlots] (all null where
 // `units` is null or the CPU lacks AVX2); `gpu`: Fast's GPU filtering
 // (the tex kernel's SamplingRules::Gpu).
 void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSampler* out);
 
-// The `index`-th call-out, a 2D or rectangle `tex`, on the lanes of `exec`:
-// its unit's one-pass sampler where every lane names one unit that has one,
-// else the call-out's kernel, over copies of its registers (`units`, the
-// operand block) into `out` (kTexResults x kLanes words, of which the
+// The `index`-th call-out, a `tex`, on the lanes of `exec`: its unit's
+// one-pass sampler or kernel where every lane names one unit that has one,
+// else the call-out's kernel, over its registers (`units`, the operand
+// block: the register file's) into `out` (kTexResults x kLanes words, of which the
 // lanes of `exec` are written).
 void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
              uint32_t* out);
@@ -83,6 +115,10 @@ struct CallOut {
     Kernel<uint32_t> kernel;
     ir::Instr instr;
 };
+
+// The BatchLookup of each `tex` call-out among `calls` (its Step in
+// `steps`) over the register file: its coordinates and reference.
+std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps);
 
 // The generated functions: a batch (`live` lanes), and the prologue (all
 // lanes, before any batch). `regs` is the executor's register file.

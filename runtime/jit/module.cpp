@@ -223,8 +223,12 @@ public:
         call_steps_.reserve(code.call_outs.size());
         for (const CallOut& call : code.call_outs) call_steps_.push_back(call_out_step(call, regs_.data, code.reg_count));
         ctx_.call_steps = call_steps_.data();
+        lookups_ = tex_lookups(code.call_outs, call_steps_);
+        ctx_.lookups = lookups_.data();
         bind_direct_samplers(p.textures, code.gpu_textures, direct_.data());
         ctx_.direct = direct_.data();
+        bind_kernels(p.textures, code.gpu_textures, kernels_.data());
+        ctx_.kernels = kernels_.data();
         ctx_.tex = run_tex;
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
@@ -267,7 +271,9 @@ private:
     RunLimits limits_;
     BudgetShare share_;
     std::vector<Step<uint32_t>> call_steps_;
+    std::vector<BatchLookup> lookups_;
     std::array<DirectSampler, kDirectSlots> direct_;
+    std::array<BoundKernel, kKernelSlots> kernels_;
     Context ctx_;
     bool held_ = false;  // the caller holds ir::FlushDenormals around run()
 };

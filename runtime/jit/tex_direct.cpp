@@ -1,42 +1,120 @@
-// A 2D or rectangle `tex` lookup in generated code. The call-out (the
-// interpreter's `tex` kernel, runtime/tex_kernel.cpp, run through
-// run_call_out) decodes the operand block, groups the lanes by unit, checks
-// the texture's completeness and picks a sampler at every lookup: with the
-// register-file traffic around it, a fifth of a nine-tap post-process frame
-// (perf). Here the generated code copies the units and the operand block
-// into its stack frame and calls run_tex(), which, where every lane names
-// one unit whose texture has a one-pass sampler (runtime/sampling_direct.h,
-// or Fast's runtime/sampling_gpu_direct.h under its GPU filtering; bound
-// when the executor is made), calls that sampler with the lookup
-// lanes; anything else (another unit per lane, a unit out of range, an
-// incomplete texture, a mipmapped or a depth one) runs the call-out's kernel
-// over the copies. The sampler is the one the kernel would pick, the
-// default results the kernel's (a lane that skips its lookup reads 0), the
-// write masked as Machine::write's: the bits are the call-out's
-// (tests/runtime/jit_tex_direct_test.cpp). One call and no branch per
-// lookup in the generated code: LLVM's time stays the call-out's.
+// A `tex` lookup in generated code. The call-out (the interpreter's `tex`
+// kernel, runtime/tex_kernel.cpp, run through run_call_out) decodes the
+// operand block, groups the lanes by unit, checks the texture's
+// completeness and picks a sampler at every lookup: with the register-file
+// traffic around it, a fifth of a nine-tap post-process frame and a tenth
+// of a four-tap shadow-map one (perf). Here the generated code stores the
+// units and the operand block as a call-out does and calls run_tex(),
+// which, where every lane names one unit whose texture has a sampler bound
+// when the executor was made, calls it with the lookup lanes: a 2D or
+// rectangle colour lookup the one-pass sampler (runtime/sampling_direct.h,
+// or Fast's runtime/sampling_gpu_direct.h under its GPU filtering); a 1D,
+// 3D or cube colour lookup or a 2D depth comparison the batched sampler's
+// kernel for the texture's state (BoundKernel: sampling_direct1d.h,
+// sampling_direct3d.h, sampling_batch_cube.h, sampling_shadow8.h). Anything
+// else (another unit per lane, a unit out of range, an incomplete texture,
+// a state with no such kernel, one whose level of detail matters) runs the
+// call-out's kernel. The sampler is the one the kernel
+// would pick, the default results the kernel's (a lane that skips its
+// lookup reads 0), the write masked as Machine::write's: the bits are the
+// call-out's (tests/runtime/jit_tex_direct_test.cpp,
+// jit_tex_kinds_test.cpp). One call and no branch per lookup in the
+// generated code: LLVM's time stays the call-out's.
 #include "runtime/jit/codegen.h"
 
 #include "runtime/backend.h"
 #include "runtime/fast_kernels.h"
+#include "runtime/sampling_direct1d.h"
+#include "runtime/sampling_direct3d.h"
+#include "runtime/sampling_gpu3d.h"
 #include "runtime/sampling_gpu_direct.h"
+#include "runtime/sampling_rules.h"
+#include "runtime/sampling_shadow8.h"
 
 namespace glslrun::rt::jit {
+
+// run_tex() runs only where the generated code is AVX2's (emit_tex_direct()):
+// built for it, the units' test goes eight lanes at a time.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define GLSLRUN_AVX2 __attribute__((target("avx2")))
+#else
+#define GLSLRUN_AVX2
+#endif
 
 namespace {
 
 constexpr unsigned kRegAlign = kLanes * 4 < 64 ? kLanes * 4 : 64;  // as a register's (alu.cpp)
 
-// Whether an op's lookups go to the one-pass sampler where the texture
-// allows: 2D and rectangle colour lookups (a shadow lookup's texture is a
-// depth one); Fast's GPU arithmetic has its own (bind_gpu_direct()).
-bool direct_candidate(const ir::Instr& in) {
-    if (in.op != ir::Op::tex) return false;
-    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
+// A lookup's BoundKernel kind; Count where none is bound for it.
+KernelKind kind_of(const ir::TexInfo& info) {
+    using enum ir::TexTarget;
+    if (info.shadow) return info.target == T2D ? KernelKind::Shadow2D : KernelKind::Count;
+    switch (info.target) {
+    case T1D: return KernelKind::T1D;
+    case T3D: return KernelKind::T3D;
+    case Cube: return KernelKind::Cube;
+    default: return KernelKind::Count;
+    }
+}
+
+// Whether a 2D or rectangle colour lookup (the one-pass samplers'; a
+// shadow lookup's texture is a depth one).
+bool one_pass_lookup(const ir::TexInfo& info) {
     return (info.target == ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && !info.shadow;
 }
 
+// Whether an op's lookups go to a bound sampler where the texture allows.
+bool direct_candidate(const ir::Instr& in) {
+    if (in.op != ir::Op::tex) return false;
+    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
+    return one_pass_lookup(info) || kind_of(info) != KernelKind::Count;
+}
+
+// fill_defaults() of the lanes that skip their lookups (the sampler writes
+// the others): a third of run_tex() when done for every batch.
+GLSLRUN_AVX2 void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
+    if (lookups == kAllLanes) return;
+    for (uint32_t c = 0; c < ir::kTexResults; ++c)
+        for (int i = 0; i < kLanes; ++i) result[c][i] = 0.0f;
+}
+
+// The lookup through the unit's bound sampler or kernel where it has one
+// (true); false where the call-out's kernel must run.
+GLSLRUN_AVX2 bool run_bound(const Context& ctx, uint64_t index, const ir::TexInfo& info, uint32_t unit,
+                            LaneMask lookups, const float* operands, float (*result)[kLanes]) {
+    if (one_pass_lookup(info)) {
+        if (!ctx.direct) return false;
+        const DirectSampler& sampler = ctx.direct[direct_slot(unit, info.target == ir::TexTarget::Rect)];
+        if (!sampler.run) return false;
+        zero_skipped(result, lookups);
+        sampler.run(sampler, operands, operands + kLanes, lookups, result);
+        return true;
+    }
+    const KernelKind kind = kind_of(info);
+    if (kind == KernelKind::Count || !ctx.kernels || !ctx.lookups) return false;
+    const BoundKernel& kernel = ctx.kernels[kernel_slot(unit, kind)];
+    if (!kernel.run) return false;
+    // Its operands: made at each lookup, the record's zero fill was a `rep
+    // stos` that the next store waited on (perf: a third of run_tex() in
+    // the shadow-map frame).
+    zero_skipped(result, lookups);
+    kernel.run(*kernel.texture, ctx.lookups[index], lookups, result);
+    return true;
+}
+
 }  // namespace
+
+std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps) {
+    std::vector<BatchLookup> out(calls.size());
+    for (size_t i = 0; i < calls.size(); ++i) {
+        if (calls[i].instr.op != ir::Op::tex) continue;
+        const ir::TexInfo info = ir::TexInfo::decode(calls[i].instr.imm[2]);
+        const auto* block = reinterpret_cast<const float*>(steps[i].src[1]);  // the operand block
+        for (uint32_t c = 0; c < info.dims() && c < 3; ++c) out[i].coord[c] = block + size_t(c) * kLanes;
+        if (info.shadow) out[i].ref = block + size_t(info.ref_at()) * kLanes;
+    }
+    return out;
+}
 
 void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSampler* out) {
     for (size_t i = 0; i < kDirectSlots; ++i) out[i] = {};
@@ -49,32 +127,44 @@ void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSam
     }
 }
 
-void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
-             uint32_t* out) {
+void bind_kernels(const GLState::TextureUnit* units, bool gpu, BoundKernel* out) {
+    for (size_t i = 0; i < kKernelSlots; ++i) out[i] = {};
+    if (!units || !cpu_has_avx2()) return;
+    // The tex kernel's rules: a texture that Fast's GPU filtering takes
+    // (lanes_only()) is sampled by its own paths, any other by the batched
+    // sampler's kernels, as Precise's.
+    const SamplingRules rules = gpu ? SamplingRules::Gpu : SamplingRules::Common;
+    for (uint32_t unit = 0; unit < uint32_t(kMaxTextureUnits); ++unit) {
+        const auto bind = [&](KernelKind kind, ir::TexTarget target, BatchKernel (*choose)(const Texture&)) {
+            const Texture* t = units[unit].bound[size_t(target)].get();
+            // run_bound() passes no derivatives: a level-of-detail decision
+            // (and a texture that is not complete) keeps the call-out.
+            if (!t || !t->complete() || lanes_only(*t, rules) || sampling::lod_matters(t->sampler)) return;
+            if (const BatchKernel run = choose(*t)) out[kernel_slot(unit, kind)] = {run, t};
+        };
+        bind(KernelKind::T1D, ir::TexTarget::T1D, direct1d_kernel);
+        // Fast's RGBA8 3D textures take the GPU's rule (lanes_only() for the rest of the sampler).
+        const Texture* t3d = units[unit].bound[size_t(ir::TexTarget::T3D)].get();
+        if (BatchKernel run = gpu && t3d && t3d->complete() ? gpu3d_kernel(*t3d) : nullptr)
+            out[kernel_slot(unit, KernelKind::T3D)] = {run, t3d};
+        else
+            bind(KernelKind::T3D, ir::TexTarget::T3D, direct3d_kernel);
+        bind(KernelKind::Cube, ir::TexTarget::Cube, cube_kernel);
+        bind(KernelKind::Shadow2D, ir::TexTarget::T2D, shadow8_kernel);
+    }
+}
+
+GLSLRUN_AVX2 void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units,
+                          const uint32_t* operands, uint32_t* out) {
     const Step<uint32_t>& call = ctx->call_steps[index];
     const uint32_t unit = units[0];
     uint32_t differ = 0;  // as the kernel's same_unit(): every lane, active or not
     for (int i = 0; i < kLanes; ++i) differ |= units[i] ^ unit;
-    if (!differ && unit < uint32_t(kMaxTextureUnits) && ctx->direct) {
-        const bool rect = ir::TexInfo::decode(call.imm[2]).target == ir::TexTarget::Rect;
-        const DirectSampler& sampler = ctx->direct[direct_slot(unit, rect)];
-        if (sampler.run) {
-            auto* result = reinterpret_cast<float (*)[kLanes]>(out);
-            const LaneMask lookups = exec & ctx->machine.lookups;
-            // fill_defaults() of the lanes that skip their lookups (the
-            // sampler writes the others): a third of this function when done
-            // for every batch.
-            if (lookups != kAllLanes)
-                for (uint32_t c = 0; c < ir::kTexResults; ++c)
-                    for (int i = 0; i < kLanes; ++i) result[c][i] = 0.0f;
-            const auto* coord = reinterpret_cast<const float*>(operands);
-            sampler.run(sampler, coord, coord + kLanes, lookups, result);
-            return;
-        }
-    }
-    Step<uint32_t> step = call;  // over the copies, not the register file
-    step.src[0] = units;
-    step.src[1] = operands;
+    if (!differ && unit < uint32_t(kMaxTextureUnits) &&
+        run_bound(*ctx, index, ir::TexInfo::decode(call.imm[2]), unit, exec & ctx->machine.lookups,
+                  reinterpret_cast<const float*>(operands), reinterpret_cast<float (*)[kLanes]>(out)))
+        return;
+    Step<uint32_t> step = call;  // the results into `out`, not the register file
     step.dst = out;
     ctx->machine.mask.reset(exec);
     step.fn(step, ctx->machine);
@@ -84,26 +174,33 @@ bool Emitter::emit_tex_direct(const ir::Instr& in) {
     if (!avx2_ || !direct_candidate(in)) return false;
     call_outs_.push_back({kernel_for(in.op, avx2_, precision_, fast_ops_), in});
     const uint32_t operands = ir::TexInfo::decode(in.imm[2]).operand_count();
-    // The copies in the function's stack frame: the registers stay values.
+    // The unit and the operand block go to the register file, as a
+    // call-out's (emit_call_out()): the call-out's kernel may read a lane
+    // that the mask leaves off (a quad's derivatives), whose word must be
+    // the interpreter's, the last one written there. The results come back
+    // through the function's stack frame: the registers stay values.
+    auto sync = [&](ir::Reg r) {
+        if (r < locals_.size() && locals_[r]) b_.CreateAlignedStore(load_reg(r), file_ptr(r), llvm::Align(kRegAlign));
+    };
+    sync(in.src[0]);
+    for (uint32_t k = 0; k < operands; ++k) sync(in.imm[0] + k);
     llvm::IRBuilder<> entry(&fn_->getEntryBlock(), fn_->getEntryBlock().begin());
     auto* words = llvm::ArrayType::get(i32_, kLanes);
-    llvm::AllocaInst* units = entry.CreateAlloca(words, nullptr, "tex_units");
-    llvm::AllocaInst* block = entry.CreateAlloca(llvm::ArrayType::get(words, operands), nullptr, "tex_operands");
     llvm::AllocaInst* out = entry.CreateAlloca(llvm::ArrayType::get(words, ir::kTexResults), nullptr, "tex_out");
-    for (llvm::AllocaInst* a : {units, block, out}) a->setAlignment(llvm::Align(kRegAlign));
-    auto row = [&](llvm::Value* base, uint32_t k) {
-        return b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), base, uint64_t(k) * kLanes * sizeof(uint32_t));
-    };
-    b_.CreateAlignedStore(load_reg(in.src[0]), units, llvm::Align(kRegAlign));
-    for (uint32_t k = 0; k < operands; ++k)
-        b_.CreateAlignedStore(load_reg(in.imm[0] + k), row(block, k), llvm::Align(kRegAlign));
+    out->setAlignment(llvm::Align(kRegAlign));
     llvm::Value* run = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_, kTexOffset));
     auto* type = llvm::FunctionType::get(b_.getVoidTy(), {ptr_, i64_, i64_, ptr_, ptr_, ptr_}, false);
-    b_.CreateCall(type, run, {ctx_arg_, b_.getInt64(call_outs_.size() - 1), load_mask(exec_), units, block, out});
+    b_.CreateCall(type, run, {ctx_arg_, b_.getInt64(call_outs_.size() - 1), load_mask(exec_), file_ptr(in.src[0]),
+                              file_ptr(in.imm[0]), out});
     for (uint32_t c = 0; c < ir::kTexResults; ++c)  // Machine::write's mask
-        write_reg(in.dst + c, b_.CreateAlignedLoad(vi32_, row(out, c), llvm::Align(kRegAlign)), WriteMode::Blends,
-                  false);
+        write_reg(in.dst + c,
+                  b_.CreateAlignedLoad(vi32_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), out,
+                                                                            uint64_t(c) * kLanes * sizeof(uint32_t)),
+                                       llvm::Align(kRegAlign)),
+                  WriteMode::Blends, false);
     return true;
 }
+
+#undef GLSLRUN_AVX2
 
 }  // namespace glslrun::rt::jit

@@ -77,6 +77,14 @@ grep -q "0 pipelines compiled, 1 loaded from the code cache" fused_warm.txt ||
     fail "fused, warm: the pipeline was not loaded: $(grep fragments fused_warm.txt)"
 [ "$(entries "$tmp/fused-cache")" = 4 ] ||
     fail "fused: $(entries "$tmp/fused-cache") entries, not 4 (2 shaders, 1 pipeline: its inputs and the rest)"
+# A cached pipeline costs no LLVM time: the first frame takes it, before 2^20 fragments
+# (fused_fragments counts the last frame's: 0 on the C++ path).
+# shellcheck disable=SC2086
+"$glslrun" ${quad% --bench 5} --bench 1 --backend jit --stats --cache-dir "$tmp/fused-cache" -o fused_first.png \
+    >fused_first.txt 2>&1 || fail "render fused_first failed: $(head -c 300 fused_first.txt)"
+grep -q '^fused_fragments  *[1-9]' fused_first.txt ||
+    fail "fused, warm: the first frame did not take the cached pipeline: $(grep fragments fused_first.txt)"
+cmp -s fused_cold.png fused_first.png || fail "the first frame with the cached pipeline differs from the cold run's"
 # shellcheck disable=SC2086
 "$glslrun" $quad --backend interp -o fused_interp.png >/dev/null || fail "the quad did not render (interp)"
 cmp -s fused_cold.png fused_warm.png || fail "the image with the cached pipeline differs from the first"

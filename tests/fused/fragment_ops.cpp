@@ -12,10 +12,6 @@ using namespace fused_test;
 
 namespace {
 
-const CompareFunc kCompares[] = {CompareFunc::Never,   CompareFunc::Less,     CompareFunc::Equal,
-                                 CompareFunc::Lequal,  CompareFunc::Greater,  CompareFunc::Notequal,
-                                 CompareFunc::Gequal,  CompareFunc::Always};
-
 // The shaders with an early depth test, and those that make it late.
 const Shader& early_shader() { return kShaders[0]; }  // colour out of range
 const Shader& discard_shader() { return kShaders[3]; }
@@ -135,53 +131,21 @@ TEST_CASE("the fused alpha test and logic op comparisons are not vacuous", "[fus
 }
 
 TEST_CASE("the fused stencil test draws the interpreter's bits: every function and operation, two-sided", "[fused]") {
-    const StencilOp kOps[] = {StencilOp::Keep, StencilOp::Zero,     StencilOp::Replace,  StencilOp::Incr,
-                              StencilOp::Decr, StencilOp::Invert,   StencilOp::IncrWrap, StencilOp::DecrWrap};
     Geometry small = random_geometry(25, 900, 0.08f);
     for (const Shader* shader : {&early_shader(), &discard_shader()}) {
         Programs p(shader->fs);
         for (int state = 0; state < 16; ++state) {
-            // A pass that writes stencil values (overlapping triangles count
-            // up and wrap), then one that tests them and updates them again.
-            GLState mark;
-            mark.stencil_test = true;
-            mark.depth_test = state % 2 == 0;
-            mark.depth_func = GLState::DepthFunc::Less;
-            for (size_t face = 0; face < 2; ++face) {
-                StencilFace& f = mark.stencil[face];
-                f.func = CompareFunc::Always;
-                f.ref = 3 + int(face) * 250;  // 253: IncrWrap wraps soon
-                f.fail = StencilOp::Keep;
-                f.depth_fail = kOps[size_t(state + 3) % 8];
-                f.depth_pass = face == 0 ? StencilOp::IncrWrap : kOps[size_t(state) % 8];
-            }
-            GLState test = mark;
-            test.depth_func = state % 3 == 0 ? GLState::DepthFunc::Lequal : GLState::DepthFunc::Greater;
-            test.depth_mask = state % 4 != 1;
-            for (size_t face = 0; face < 2; ++face) {
-                StencilFace& f = test.stencil[face];
-                f.func = kCompares[size_t(state + int(face) * 3) % 8];
-                f.ref = state % 5 == 0 ? 300 : 2 + state % 3;  // 300: clamped to 255
-                f.value_mask = face == 0 ? 0xFFu : 0x3u;
-                f.write_mask = state % 2 ? 0xFFu : 0xF0u | uint32_t(state);
-                f.fail = kOps[size_t(state + int(face)) % 8];
-                f.depth_fail = kOps[size_t(state + 5) % 8];
-                f.depth_pass = kOps[size_t(state * 3 + int(face)) % 8];
-            }
-            // One face's state for both sides on some: one code path.
-            if (state % 4 == 2) test.stencil[1] = test.stencil[0];
-            test.blend = state % 5 == 1;
-            test.blend_state.src_rgb = BlendFactor::SrcAlpha, test.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
             INFO(shader->name << ", stencil state " << state);
-            check_passes_match(p, small, {mark, test},
+            check_passes_match(p, small, stencil_passes(state),
                                state % 3 == 1 ? ColorRounding::Gpu : ColorRounding::Nearest);
         }
     }
 }
 
 TEST_CASE("the fused stencil comparison is not vacuous", "[fused]") {
+    // Late (discard): the fragments the stencil rejects are shaded, not written.
     Geometry g = random_geometry(25, 900, 0.08f);
-    Programs p(early_shader().fs);
+    Programs p(discard_shader().fs);
     GLState mark;
     mark.stencil_test = true;
     mark.stencil[0].depth_pass = mark.stencil[1].depth_pass = StencilOp::Incr;
@@ -194,7 +158,7 @@ TEST_CASE("the fused stencil comparison is not vacuous", "[fused]") {
     REQUIRE(marked);
     size_t nonzero = 0;
     for (uint8_t s : fb.stencil) nonzero += s != 0;
-    CHECK(nonzero > 500u);
+    CHECK(nonzero > 400u);  // of 900 small triangles, some fragments discarded
     auto tested = draw(p.fused, test, fb, Primitive::Triangles, {g.pos, g.color}, g.count);
     REQUIRE(tested);
     CHECK(tested->fragments_written < tested->fragments_shaded);

@@ -101,6 +101,9 @@ inline Program compile(Backend backend, const char* fs, const char* vs = kVs) {
     auto p = Program::compile({{"vs", vs}}, {{"fs", fs}});
     if (!p) FAIL(p.error().str());
     p->exec.backend = backend;
+    // Pipelines compiled when due (warm_up), never an earlier run's taken
+    // at the first draw (tests/fused/code_cache.cpp tests that).
+    p->exec.code_cache = false;
     return std::move(*p);
 }
 
@@ -200,24 +203,71 @@ inline const GLState::DepthFunc kFuncs[] = {GLState::DepthFunc::Never,   GLState
                                      GLState::DepthFunc::Gequal,  GLState::DepthFunc::Always};
 
 
+inline const CompareFunc kCompares[] = {CompareFunc::Never,   CompareFunc::Less,     CompareFunc::Equal,
+                                        CompareFunc::Lequal,  CompareFunc::Greater,  CompareFunc::Notequal,
+                                        CompareFunc::Gequal,  CompareFunc::Always};
+
+// Two passes of stencil state `state` (0 to 15): one that writes stencil
+// values (overlapping triangles count up and wrap), then one that tests them
+// with every function and operation over the states, two-sided, and updates
+// them again.
+inline std::vector<GLState> stencil_passes(int state) {
+    const StencilOp kOps[] = {StencilOp::Keep, StencilOp::Zero,     StencilOp::Replace,  StencilOp::Incr,
+                              StencilOp::Decr, StencilOp::Invert,   StencilOp::IncrWrap, StencilOp::DecrWrap};
+    GLState mark;
+    mark.stencil_test = true;
+    mark.depth_test = state % 2 == 0;
+    mark.depth_func = GLState::DepthFunc::Less;
+    for (size_t face = 0; face < 2; ++face) {
+        StencilFace& f = mark.stencil[face];
+        f.func = CompareFunc::Always;
+        f.ref = 3 + int(face) * 250;  // 253: IncrWrap wraps soon
+        f.fail = StencilOp::Keep;
+        f.depth_fail = kOps[size_t(state + 3) % 8];
+        f.depth_pass = face == 0 ? StencilOp::IncrWrap : kOps[size_t(state) % 8];
+    }
+    GLState test = mark;
+    test.depth_func = state % 3 == 0 ? GLState::DepthFunc::Lequal : GLState::DepthFunc::Greater;
+    test.depth_mask = state % 4 != 1;
+    for (size_t face = 0; face < 2; ++face) {
+        StencilFace& f = test.stencil[face];
+        f.func = kCompares[size_t(state + int(face) * 3) % 8];
+        f.ref = state % 5 == 0 ? 300 : 2 + state % 3;  // 300: clamped to 255
+        f.value_mask = face == 0 ? 0xFFu : 0x3u;
+        f.write_mask = state % 2 ? 0xFFu : 0xF0u | uint32_t(state);
+        f.fail = kOps[size_t(state + int(face)) % 8];
+        f.depth_fail = kOps[size_t(state + 5) % 8];
+        f.depth_pass = kOps[size_t(state * 3 + int(face)) % 8];
+    }
+    // One face's state for both sides on some: one code path.
+    if (state % 4 == 2) test.stencil[1] = test.stencil[0];
+    test.blend = state % 5 == 1;
+    test.blend_state.src_rgb = BlendFactor::SrcAlpha, test.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+    return {mark, test};
+}
+
+// The passes `states` in order over one cleared framebuffer, by `p`.
+inline Frame render_passes(Program& p, const Geometry& g, const std::vector<GLState>& states,
+                           ColorRounding rounding = ColorRounding::Nearest, glm::ivec2 size = {93, 61}) {
+    Frame f{Framebuffer(size.x, size.y), {}};
+    f.fb.rounding = rounding;
+    f.fb.clear_color({0.1f, 0.2f, 0.3f, 1.0f});
+    f.fb.clear_depth(0.8f);
+    for (const GLState& gl : states) {
+        auto stats = draw(p, gl, f.fb, Primitive::Triangles, {g.pos, g.color}, g.count);
+        if (!stats) FAIL(stats.error().str());
+        f.stats += *stats;
+    }
+    return f;
+}
+
 // The passes `states` in order over one framebuffer, on both programs:
 // colour, depth and stencil bit-identical, every fragment of the JIT's
 // draws fused.
 inline void check_passes_match(Programs& p, const Geometry& g, const std::vector<GLState>& states,
                                ColorRounding rounding = ColorRounding::Nearest, glm::ivec2 size = {93, 61}) {
-    Frame frames[2] = {{Framebuffer(size.x, size.y), {}}, {Framebuffer(size.x, size.y), {}}};
-    for (int i = 0; i < 2; ++i) {
-        Frame& f = frames[i];
-        f.fb.rounding = rounding;
-        f.fb.clear_color({0.1f, 0.2f, 0.3f, 1.0f});
-        f.fb.clear_depth(0.8f);
-        for (const GLState& gl : states) {
-            auto stats = draw(i == 0 ? p.oracle : p.fused, gl, f.fb, Primitive::Triangles, {g.pos, g.color}, g.count);
-            if (!stats) FAIL(stats.error().str());
-            f.stats += *stats;
-        }
-    }
-    const Frame &oracle = frames[0], &fused = frames[1];
+    const Frame oracle = render_passes(p.oracle, g, states, rounding, size);
+    const Frame fused = render_passes(p.fused, g, states, rounding, size);
     if (jit_available()) CHECK(fused.stats.fragments_fused == fused.stats.fragments_shaded);
     CHECK(oracle.stats.fragments_shaded > 200u);
     CHECK(fused.stats.fragments_written == oracle.stats.fragments_written);

@@ -21,6 +21,7 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling.h"
 #include "tests/runtime/ir_builder.h"
+#include "tests/runtime/jit_tex_modes.h"
 
 using namespace glslrun;
 using namespace glslrun::test;
@@ -108,12 +109,7 @@ std::unique_ptr<Shader> make_shader(ir::TexTarget target) {
     return sh;
 }
 
-// Precise; Fast without its GPU filtering (the error report's ablation),
-// which takes the same path; Fast, whose lookups keep the call-out.
-struct Mode {
-    Precision precision;
-    uint32_t fast_ops;
-};
+using Mode = TexMode;
 
 struct Case {
     Mode mode;
@@ -233,10 +229,7 @@ TEST_CASE("generated 2D and rectangle lookups give the tex kernel's words", "[ru
     using enum TextureWrap;
     const TextureWrap wraps[] = {Repeat, MirroredRepeat, ClampToEdge, Clamp, ClampToBorder};
     const int sizes[][2] = {{5, 3}, {1, 1}, {7, 1}, {1, 6}, {13, 11}, {4, 4}, {9, 6}};
-    const Mode modes[] = {{Precision::Precise, rt::kAllFastOps},
-                          {Precision::Fast, rt::kAllFastOps & ~uint32_t(rt::kFastTexture)},
-                          {Precision::Fast, rt::kAllFastOps}};
-    for (const Mode& mode : modes)
+    for (const Mode& mode : kTexModes)
         for (const bool rect : {false, true}) {
             auto sh = make_shader(rect ? ir::TexTarget::Rect : ir::TexTarget::T2D);
             auto interp = rt::compile_shader(sh->b.sh, rt::Runner::Interp, mode.precision, mode.fast_ops, true);

@@ -72,8 +72,11 @@ float rect_coordinate(std::mt19937& rng, int size) {
 // directions fan out around an edge or a corner of the cube, so that groups
 // of lanes straddle levels and faces; or a quad's, each four lanes from a
 // multiple of 4 sharing their first lane's derivatives, as the tex kernel
-// gives them (the mipmapped 2D kernel then takes one log2 per quad).
-enum class Spread { Random, Shared, Smooth, Quads };
+// gives them (the mipmapped 2D kernel then takes one log2 per quad); or
+// Quads' whose other lanes' rows hold NaN where the sampler says it reads
+// each quad's first lane (batch_reads_quad_leaders(): the tex kernel then
+// makes no copy).
+enum class Spread { Random, Shared, Smooth, Quads, Leaders };
 
 // Lane i's operands of a Smooth batch: lane 0's derivatives scaled by 2^(i * step)
 // (so lambda steps by `step`), cube directions near `corner` spread by `fan`.
@@ -123,7 +126,7 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
             }
             ops.lod[i] = ops.lod[0];
         }
-        if (spread == Spread::Quads)
+        if (spread == Spread::Quads || spread == Spread::Leaders)
             for (int c = 0; c < dims; ++c) {
                 ops.ddx[c][i] = ops.ddx[c][i & ~3];
                 ops.ddy[c][i] = ops.ddy[c][i & ~3];
@@ -151,7 +154,20 @@ void check_batch(std::mt19937& rng, const Texture& texture, bool shadow, ir::Tex
         alignas(64) float out[4][rt::kLanes];
         for (auto& channel : out)
             for (float& v : channel) v = -7.0f;  // what lanes outside the mask must keep
-        rt::sample_batch(texture, lk, lanes, out, avx2);
+        rt::BatchLookup seen = lk;
+        alignas(32) float leaders[2][3][rt::kLanes];
+        if (spread == Spread::Leaders && rt::batch_reads_quad_leaders(texture, avx2)) {
+            seen.quad_derivatives = true;
+            for (int c = 0; c < 3; ++c) {
+                for (int i = 0; i < rt::kLanes; ++i) {
+                    leaders[0][c][i] = i % 4 ? kNaN : ops.ddx[c][i];
+                    leaders[1][c][i] = i % 4 ? kNaN : ops.ddy[c][i];
+                }
+                seen.ddx[c] = leaders[0][c];
+                seen.ddy[c] = leaders[1][c];
+            }
+        }
+        rt::sample_batch(texture, seen, lanes, out, avx2);
         for (int i = 0; i < rt::kLanes; ++i) {
             float want[4] = {-7.0f, -7.0f, -7.0f, -7.0f};
             if ((lanes >> i) & 1) {
@@ -191,7 +207,7 @@ void sweep(std::mt19937& rng, Texture& texture, bool shadow) {
                         texture.sampler.wrap_r = t == s ? TextureWrap::ClampToEdge : s;
                         REQUIRE(texture.complete());
                         if (!rt::batch_samples(texture)) continue;
-                        for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads})
+                        for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads, Spread::Leaders})
                             for (int batch = 0; batch < 2; ++batch) check_batch(rng, texture, shadow, lod, spread);
                     }
 }
@@ -490,7 +506,7 @@ TEST_CASE("batched sampling equals per-lane sampling: mipmapped 2D kernels", "[s
                         REQUIRE(rt::mip2d_samples(t));
 #endif
                         for (ir::TexLod kind : kLods)
-                            for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads})
+                            for (Spread spread : {Spread::Random, Spread::Shared, Spread::Smooth, Spread::Quads, Spread::Leaders})
                                 check_batch(rng, t, false, kind, spread);
                     }
         t.sampler.min_filter = TextureFilter::LinearMipmapLinear;

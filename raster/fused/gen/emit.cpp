@@ -191,14 +191,15 @@ llvm::Value* PipelineEmitter::pixel_index(llvm::Value* x, llvm::Value* y, llvm::
     return b_.CreateAdd(b_.CreateMul(b_.CreateSExt(y, i64_), b_.CreateSExt(width, i64_)), b_.CreateSExt(x, i64_));
 }
 
-// quad_depth(prim, x, y, mask, target): FragmentStage::early_depth_test.
+// quad_depth(prim, x, y, mask, target): FragmentStage::early_tests_quad,
+// the stencil and depth tests where the stencil test is on.
 void PipelineEmitter::define_quad_depth() {
     begin("glslrun_quad_depth", i32_, {ptr_, i32_, i32_, i32_, ptr_});
     llvm::Value* target = fn_->getArg(4);
     Quad q = quad(fn_->getArg(0), fn_->getArg(1), fn_->getArg(2));
     llvm::Value* z = quad_depth(q);
     load_target(target);
-    b_.CreateRet(depth_test_lanes(q, z, fn_->getArg(3)));
+    b_.CreateRet(ops_.stencil_test ? stencil_depth_lanes(q, z, fn_->getArg(3)) : depth_test_lanes(q, z, fn_->getArg(3)));
 }
 
 // The depth test (and write) of the lanes of a quad in `mask` (i32, bit i:
@@ -221,17 +222,35 @@ llvm::Value* PipelineEmitter::depth_test_lanes(const Quad& q, llvm::Value* z, ll
     return mask;
 }
 
-// square_depth(prim, ox, oy, pixels, target): define_quad_depth's test on
+// square_depth(prim, ox, oy, pixels, target): define_quad_depth's tests on
 // the pixels of an 8x8 square, a row of eight at a time. The pixels are
 // distinct, so their order does not matter; the masked loads and stores
-// touch only the pixels in `pixels`.
+// touch only the pixels in `pixels`. With the stencil test, the primitive's
+// face picks the stencil state (one face for the whole square).
 void PipelineEmitter::define_square_depth() {
     begin("glslrun_square_depth", i64_, {ptr_, i32_, i32_, i64_, ptr_});
     llvm::Value* prim = fn_->getArg(0);
     llvm::Value *ox = fn_->getArg(1), *oy = fn_->getArg(2), *pixels = fn_->getArg(3);
     load_target(fn_->getArg(4));
+    if (!ops_.stencil_test) return void(b_.CreateRet(square_rows(nullptr, prim, ox, oy, pixels)));
+    if (ops_.stencil[0] == ops_.stencil[1]) return void(b_.CreateRet(square_rows(&ops_.stencil[0], prim, ox, oy, pixels)));
+    llvm::Value* front = b_.CreateICmpNE(b_.CreateLoad(i8_, at(prim, kFront)), b_.getInt8(0));
+    llvm::BasicBlock* front_block = llvm::BasicBlock::Create(b_.getContext(), "front_face", fn_);
+    llvm::BasicBlock* back_block = llvm::BasicBlock::Create(b_.getContext(), "back_face", fn_);
+    b_.CreateCondBr(front, front_block, back_block);
+    b_.SetInsertPoint(front_block);
+    b_.CreateRet(square_rows(&ops_.stencil[0], prim, ox, oy, pixels));
+    b_.SetInsertPoint(back_block);
+    b_.CreateRet(square_rows(&ops_.stencil[1], prim, ox, oy, pixels));
+}
+
+// The pixels of the square that pass the depth test, or with `face` the
+// stencil and depth tests, with their buffer updates.
+llvm::Value* PipelineEmitter::square_rows(const StencilFace* face, llvm::Value* prim, llvm::Value* ox, llvm::Value* oy,
+                                          llvm::Value* pixels) {
     auto* v8f = llvm::FixedVectorType::get(f32_, 8);
     auto* v8i = llvm::FixedVectorType::get(i32_, 8);
+    auto* v8b = llvm::FixedVectorType::get(i8_, 8);
     llvm::Value* columns = llvm::ConstantDataVector::get(b_.getContext(), llvm::ArrayRef<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7});
     llvm::Value* bits = llvm::ConstantDataVector::get(b_.getContext(),
                                                       llvm::ArrayRef<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128});
@@ -255,16 +274,28 @@ void PipelineEmitter::define_square_depth() {
         llvm::Value* in = b_.CreateICmpNE(b_.CreateAnd(b_.CreateVectorSplat(8, b_.CreateZExt(row_bits, i32_)), bits),
                                           llvm::Constant::getNullValue(v8i));
         // Not inbounds: the lanes outside `pixels` may lie outside the buffer.
-        llvm::Value* slot = b_.CreateGEP(f32_, target_.depth, pixel_index(ox, y, target_.width));
-        llvm::Value* stored = b_.CreateMaskedLoad(v8f, slot, llvm::Align(4), in, llvm::ConstantFP::get(v8f, 0.0));
-        llvm::Value* passes = depth_passes(z, stored);
-        if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
+        llvm::Value* pixel = pixel_index(ox, y, target_.width);
+        llvm::Value* slot = b_.CreateGEP(f32_, target_.depth, pixel);
+        llvm::Value* passes = llvm::Constant::getAllOnesValue(in->getType());
+        if (ops_.depth_test) {
+            llvm::Value* stored = b_.CreateMaskedLoad(v8f, slot, llvm::Align(4), in, llvm::ConstantFP::get(v8f, 0.0));
+            passes = depth_passes(z, stored);
+            if (!passes->getType()->isVectorTy()) passes = b_.CreateVectorSplat(8, passes);
+        }
+        if (face) {
+            llvm::Value* stencil_slot = b_.CreateGEP(i8_, target_.stencil, pixel);
+            llvm::Value* stored = b_.CreateZExt(
+                b_.CreateMaskedLoad(v8b, stencil_slot, llvm::Align(1), in, llvm::Constant::getNullValue(v8b)), v8i);
+            const StencilOutcome o = stencil_outcome(*face, stored, passes);
+            b_.CreateMaskedStore(b_.CreateTrunc(o.value, v8b), stencil_slot, llvm::Align(1), in);
+            passes = o.passes;
+        }
         passes = b_.CreateAnd(passes, in);
-        if (ops_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
+        if (ops_.depth_test && ops_.depth_write) b_.CreateMaskedStore(z, slot, llvm::Align(4), passes);
         llvm::Value* passed = b_.CreateZExt(b_.CreateBitCast(passes, i8_), i64_);
         passing = b_.CreateOr(passing, b_.CreateShl(passed, uint64_t(8 * row)));
     }
-    b_.CreateRet(passing);
+    return passing;
 }
 
 // Emits body(index, quads) for the batch's quads in order, a loop: quads
@@ -462,10 +493,11 @@ bool find_functions(CompiledInputs& code, bool) {
 // One part of `state`'s functions (those `define` emits): from the code
 // cache (`disk`, may be null) where it has them and they link, else made by
 // LLVM and stored there; `loaded` is cleared where LLVM made them. Null
-// where LLVM failed.
+// where LLVM failed, or with `load_only` where the cache has no such part.
 template <class Code>
 std::unique_ptr<Code> make_part(Engine& engine, const rt::DiskCache* disk, const char* part, const State& state,
-                                const std::function<void(PipelineEmitter&)>& define, bool& loaded) {
+                                const std::function<void(PipelineEmitter&)>& define, bool& loaded,
+                                bool load_only) {
     std::optional<rt::CodeKey> key;
     if (disk) key = part_key(engine, part, state);
     std::optional<std::string> payload;
@@ -478,6 +510,7 @@ std::unique_ptr<Code> make_part(Engine& engine, const rt::DiskCache* disk, const
         if (code->code.add_object(engine, std::move(cached->object)) && find_functions(*code, state.early_depth))
             return code;
     }
+    if (load_only) return nullptr;
     loaded = false;
     auto code = std::make_unique<Code>();
     std::lock_guard hold(engine.lock);
@@ -513,11 +546,13 @@ std::unique_ptr<Pipeline> compile(const State& key, PipelineCompile* compile) {
     if (compile && compile->cache && !compile->cache->dir.empty() && !engine->cache_salt.empty())
         disk.emplace(*compile->cache);
     const rt::DiskCache* cache = disk ? &*disk : nullptr;
+    const bool load_only = compile && compile->load_only;
+    if (load_only && !cache) return nullptr;
     bool loaded = true;
     std::shared_ptr<const InputsCode> inputs = compile ? compile->inputs : nullptr;
     if (!inputs)
         inputs = make_part<CompiledInputs>(*engine, cache, "inputs", inputs_only(key),
-                                           [](PipelineEmitter& e) { e.define_inputs(); }, loaded);
+                                           [](PipelineEmitter& e) { e.define_inputs(); }, loaded, load_only);
     if (!inputs) return nullptr;
     std::unique_ptr<CompiledPipeline> code =
         make_part<CompiledPipeline>(*engine, cache, "pipeline", key, [&](PipelineEmitter& e) {
@@ -526,7 +561,7 @@ std::unique_ptr<Pipeline> compile(const State& key, PipelineCompile* compile) {
                 e.define_square_depth();
             }
             e.define_outputs();
-        }, loaded);
+        }, loaded, load_only);
     if (!code) return nullptr;
     code->inputs = inputs->inputs;
     code->shared_inputs = inputs;

@@ -121,6 +121,13 @@ private:
     llvm::Value* stencil_depth_lanes(const Quad& q, llvm::Value* z, llvm::Value* mask);
     llvm::Value* stencil_depth_lane(const StencilFace& face, const Quad& q, int i, llvm::Value* z, llvm::Value* mask);
     llvm::Value* stencil_op(StencilOp op, llvm::Value* value, int ref);
+    struct StencilOutcome {
+        llvm::Value* value;   // the stencil values to store
+        llvm::Value* passes;  // both tests passed
+    };
+    StencilOutcome stencil_outcome(const StencilFace& face, llvm::Value* stored, llvm::Value* depth_passes);
+    llvm::Value* square_rows(const StencilFace* face, llvm::Value* prim, llvm::Value* ox, llvm::Value* oy,
+                             llvm::Value* pixels);
     llvm::Value* pixel_index(llvm::Value* x, llvm::Value* y, llvm::Value* width);
     using QuadBody = std::function<void(llvm::Value* index, const Quad& q)>;
     using PairTest = std::function<llvm::Value*(llvm::Value* index, llvm::Value* next)>;

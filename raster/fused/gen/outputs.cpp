@@ -12,24 +12,47 @@
 
 namespace glslrun::raster::fused {
 
-// raster::stencil_op on an i32 value (0 to 255).
+// raster::stencil_op on i32 values (0 to 255): a scalar, or a vector of them.
 llvm::Value* PipelineEmitter::stencil_op(StencilOp op, llvm::Value* v, int ref) {
     constexpr uint32_t kMax = (1u << kStencilBits) - 1;
+    auto k = [&](uint32_t c) { return llvm::ConstantInt::get(v->getType(), c); };
     switch (op) {
     case StencilOp::Keep: return v;
-    case StencilOp::Zero: return b_.getInt32(0);
-    case StencilOp::Replace: return b_.getInt32(uint32_t(std::clamp(ref, 0, int(kMax))));
+    case StencilOp::Zero: return k(0);
+    case StencilOp::Replace: return k(uint32_t(std::clamp(ref, 0, int(kMax))));
     case StencilOp::Incr: {
-        llvm::Value* up = b_.CreateAdd(v, b_.getInt32(1));
-        return b_.CreateSelect(b_.CreateICmpULT(up, b_.getInt32(kMax)), up, b_.getInt32(kMax));
+        llvm::Value* up = b_.CreateAdd(v, k(1));
+        return b_.CreateSelect(b_.CreateICmpULT(up, k(kMax)), up, k(kMax));
     }
-    case StencilOp::Decr:
-        return b_.CreateSelect(b_.CreateICmpUGT(v, b_.getInt32(0)), b_.CreateSub(v, b_.getInt32(1)), b_.getInt32(0));
-    case StencilOp::Invert: return b_.CreateAnd(b_.CreateNot(v), b_.getInt32(kMax));
-    case StencilOp::IncrWrap: return b_.CreateAnd(b_.CreateAdd(v, b_.getInt32(1)), b_.getInt32(kMax));
-    case StencilOp::DecrWrap: return b_.CreateAnd(b_.CreateSub(v, b_.getInt32(1)), b_.getInt32(kMax));
+    case StencilOp::Decr: return b_.CreateSelect(b_.CreateICmpUGT(v, k(0)), b_.CreateSub(v, k(1)), k(0));
+    case StencilOp::Invert: return b_.CreateAnd(b_.CreateNot(v), k(kMax));
+    case StencilOp::IncrWrap: return b_.CreateAnd(b_.CreateAdd(v, k(1)), k(kMax));
+    case StencilOp::DecrWrap: return b_.CreateAnd(b_.CreateSub(v, k(1)), k(kMax));
     }
     return v;
+}
+
+// The stencil test's outcome on `stored` (i32 values, scalar or vector),
+// the depth test's (`depth_passes`, i1 of the same shape), and the new
+// stencil values through the write mask (raster::stencil_depth_one).
+PipelineEmitter::StencilOutcome PipelineEmitter::stencil_outcome(const StencilFace& face, llvm::Value* stored,
+                                                                 llvm::Value* depth_passes) {
+    llvm::Type* t = stored->getType();
+    auto k = [&](uint32_t c) { return llvm::ConstantInt::get(t, c); };
+    auto updated = [&](StencilOp op) {
+        llvm::Value* v = stencil_op(op, stored, face.ref);
+        return b_.CreateOr(b_.CreateAnd(stored, k(~face.write_mask)), b_.CreateAnd(v, k(face.write_mask)));
+    };
+    // Bytes compare exactly as floats: raster compares them with depth_passes.
+    const uint32_t ref = uint32_t(std::clamp(face.ref, 0, int((1u << kStencilBits) - 1)));
+    llvm::Type* ft = t->isVectorTy() ? llvm::VectorType::get(f32_, llvm::cast<llvm::VectorType>(t)) : f32_;
+    llvm::Value* passes = compare(face.func, llvm::ConstantFP::get(ft, float(ref & face.value_mask)),
+                                  b_.CreateUIToFP(b_.CreateAnd(stored, k(face.value_mask)), ft));
+    StencilOutcome out;
+    out.value = b_.CreateSelect(passes, b_.CreateSelect(depth_passes, updated(face.depth_pass), updated(face.depth_fail)),
+                                updated(face.fail));
+    out.passes = b_.CreateAnd(passes, depth_passes);
+    return out;
 }
 
 // The stencil and depth tests of lane i (raster::stencil_depth_test's
@@ -43,17 +66,6 @@ llvm::Value* PipelineEmitter::stencil_depth_lane(const StencilFace& face, const 
                                          b_.CreateExtractElement(q.py, uint64_t(i)), target_.width);
         llvm::Value* slot = b_.CreateInBoundsGEP(i8_, target_.stencil, pixel);
         llvm::Value* stored = b_.CreateZExt(b_.CreateLoad(i8_, slot), i32_);
-        // The new stencil value after `op`, through the write mask.
-        auto updated = [&](StencilOp op) {
-            llvm::Value* v = stencil_op(op, stored, face.ref);
-            return b_.CreateOr(b_.CreateAnd(stored, b_.getInt32(~face.write_mask)),
-                               b_.CreateAnd(v, b_.getInt32(face.write_mask)));
-        };
-        // Bytes compare exactly as floats: raster compares them with depth_passes.
-        const uint32_t ref = uint32_t(std::clamp(face.ref, 0, int((1u << kStencilBits) - 1)));
-        llvm::Value* stencil_passes =
-            compare(face.func, llvm::ConstantFP::get(f32_, float(ref & face.value_mask)),
-                    b_.CreateUIToFP(b_.CreateAnd(stored, b_.getInt32(face.value_mask)), f32_));
         llvm::Value* depth_passes_here = b_.getTrue();
         llvm::Value* depth_slot = nullptr;
         llvm::Value* zi = b_.CreateExtractElement(z, uint64_t(i));
@@ -61,17 +73,13 @@ llvm::Value* PipelineEmitter::stencil_depth_lane(const StencilFace& face, const 
             depth_slot = b_.CreateInBoundsGEP(f32_, target_.depth, pixel);
             depth_passes_here = depth_passes(zi, b_.CreateLoad(f32_, depth_slot));
         }
-        llvm::Value* value = b_.CreateSelect(stencil_passes,
-                                             b_.CreateSelect(depth_passes_here, updated(face.depth_pass),
-                                                             updated(face.depth_fail)),
-                                             updated(face.fail));
-        b_.CreateStore(b_.CreateTrunc(value, i8_), slot);
-        llvm::Value* passes = b_.CreateAnd(stencil_passes, depth_passes_here);
+        const StencilOutcome o = stencil_outcome(face, stored, depth_passes_here);
+        b_.CreateStore(b_.CreateTrunc(o.value, i8_), slot);
         if (ops_.depth_test && ops_.depth_write) {
             llvm::Value* old = b_.CreateLoad(f32_, depth_slot);
-            b_.CreateStore(b_.CreateSelect(passes, zi, old), depth_slot);
+            b_.CreateStore(b_.CreateSelect(o.passes, zi, old), depth_slot);
         }
-        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(passes), i32_), uint64_t(i));
+        llvm::Value* failed = b_.CreateShl(b_.CreateZExt(b_.CreateNot(o.passes), i32_), uint64_t(i));
         return b_.CreateAnd(mask, b_.CreateNot(failed));
     });
 }
@@ -344,11 +352,12 @@ void PipelineEmitter::define_outputs() {
     written_ = b_.CreateAlloca(i64_);
     b_.CreateStore(b_.getInt64(0), written_);
     const bool late_depth = ops_.depth_test && !key_.early_depth;
+    const bool late_stencil = ops_.stencil_test && !key_.early_depth;
     const bool rgba8 = !ops_.float_color && writes_color(key_);
     // RGBA8 colours are converted for the whole batch before the quads'
     // writes; where every live lane's colour is stored as the shader made it
     // (no test after the shader, nothing read back), packed into words too.
-    const bool packed = rgba8 && !late_depth && !ops_.alpha_test && !ops_.stencil_test && !reads_color(key_);
+    const bool packed = rgba8 && !late_depth && !ops_.alpha_test && !late_stencil && !reads_color(key_);
     std::array<std::array<llvm::Value*, 4>, kMaxDrawBuffers> converted{};
     for (size_t b = 0, first = key_.color_channels + (key_.depth_output ? 1 : 0); rgba8 && b < converted.size(); ++b) {
         const uint32_t channels = b == 0 ? key_.color_channels : key_.more_channels[b];
@@ -374,7 +383,7 @@ void PipelineEmitter::define_outputs() {
         }
         QuadValues v = quad_values(q, regs, index);
         if (ops_.alpha_test) lanes = b_.CreateAnd(lanes, alpha_passes(v));
-        if (ops_.stencil_test) lanes = stencil_depth_lanes(q, v.z, lanes);
+        if (late_stencil) lanes = stencil_depth_lanes(q, v.z, lanes);
         else if (late_depth) lanes = depth_test_lanes(q, v.z, lanes);
         b_.CreateStore(b_.CreateOr(b_.CreateLoad(i64_, written_), b_.CreateShl(b_.CreateZExt(lanes, i64_), shift)),
                        written_);

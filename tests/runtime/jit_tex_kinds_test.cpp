@@ -1,0 +1,344 @@
+// The JIT's 1D, 3D and cube colour lookups and 2D depth comparisons, which
+// call the batched sampler's kernel for the texture's state from generated
+// code (runtime/jit/tex_direct.cpp, BoundKernel), against the interpreter's
+// `tex` kernel (Precise, and Fast with and without its GPU filtering) and
+// against the lane sampler (sample_complete_lane()), which shares no code
+// with the kernels: the interpreter runs the same kernels, so comparing the
+// two backends alone could not see a kernel's error. Every filter and wrap
+// of each target (those whose state has no kernel, or whose level of detail
+// matters, fall back to the call-out), every comparison function and depth
+// mode, odd sizes and base level 1, RGBA8 and float texels; spread lanes
+// (NaN, infinite, huge and denormal coordinates) and close ones (as the
+// rasterizer packs a magnified image's), partial masks, lanes that skip
+// their lookups, lanes of another unit or of none, an incomplete texture.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "ir/scalar_ops.h"
+#include "runtime/backend_factory.h"
+#include "runtime/interp_kernels.h"
+#include "runtime/sampling.h"
+#include "runtime/sampling_rules.h"
+#include "tests/runtime/ir_builder.h"
+#include "tests/runtime/jit_tex_modes.h"
+
+using namespace glslrun;
+using namespace glslrun::test;
+
+namespace {
+
+constexpr int kUnit = 2;        // the state under test
+constexpr int kOtherUnit = 5;   // a NEAREST REPEAT texture of the target
+constexpr int kIncomplete = 7;  // mipmap filters, no mipmaps: (0, 0, 0, 1)
+
+// The lookups of one kind: a target, and whether it compares depths.
+struct LookupKind {
+    TextureTarget target;
+    bool shadow;
+    const char* name;
+};
+
+struct State {
+    TextureFilter filter;
+    TextureWrap wrap[3];
+    CompareFunc func;
+    DepthTextureMode mode;
+    int size[3];
+    int base_level;
+    TextureFormat format;
+};
+
+std::shared_ptr<const Texture> texture(const LookupKind& kind, const State& st, bool mipmaps, uint32_t seed) {
+    std::mt19937 rng(seed);
+    const bool depth = kind.shadow;
+    std::uniform_real_distribution<float> value(depth ? -0.1f : -2.0f, depth ? 1.1f : 2.0f);
+    const int w = st.size[0];
+    const int h = kind.target == TextureTarget::Tex1D ? 1 : kind.target == TextureTarget::Cube ? w : st.size[1];
+    const int d = kind.target == TextureTarget::Tex3D ? st.size[2] : 1;
+    std::vector<TextureImage> faces;
+    for (int f = 0; f < (kind.target == TextureTarget::Cube ? 6 : 1); ++f) {
+        TextureImage img{w, h, d, {}};
+        for (int k = 0; k < w * h * d; ++k) img.texels.push_back({value(rng), value(rng), value(rng), value(rng)});
+        faces.push_back(std::move(img));
+    }
+    Result<Texture> t = Texture::create(kind.target, std::move(faces), depth ? TextureFormat::Depth : st.format);
+    REQUIRE(t.ok());
+    if (mipmaps) t->generate_mipmaps();
+    SamplerState& s = t->sampler;
+    s.min_filter = s.mag_filter = st.filter;
+    s.wrap_s = st.wrap[0];
+    s.wrap_t = st.wrap[1];
+    s.wrap_r = st.wrap[2];
+    s.base_level = st.base_level;
+    s.border_color = {0.25f, 1.5f, -0.5f, 0.75f};  // clamped to [0, 1] by the sampler
+    s.compare = depth;
+    s.compare_func = st.func;
+    s.depth_mode = st.mode;
+    return std::make_shared<const Texture>(std::move(*t));
+}
+
+float special(std::mt19937& rng) {
+    static constexpr float kSpecial[] = {std::numeric_limits<float>::quiet_NaN(),
+                                         std::numeric_limits<float>::infinity(),
+                                         -std::numeric_limits<float>::infinity(),
+                                         1e30f, -1e30f, 16777216.0f, -16777217.0f, 8388609.5f,
+                                         1e-40f, -0.0f, 0.0f, 1.0f, 0.5f, -0.5f};
+    return kSpecial[rng() % (sizeof kSpecial / sizeof kSpecial[0])];
+}
+
+// A spread coordinate: inside, around and far outside the image, and the special values.
+float spread(std::mt19937& rng) {
+    if (rng() % 8 == 0) return special(rng);
+    return std::uniform_real_distribution<float>(-2.5f, 3.5f)(rng);
+}
+
+struct Shader {
+    Builder b;
+    Reg coord[3], ref, lod, unit, unit_lane, cond, result, explicit_result;
+};
+
+// Two lookups of one kind: an implicit one (derivatives of the
+// coordinates) whose unit is a uniform's, under an if, and an explicit-LOD
+// one whose unit is each lane's own.
+std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
+    auto sh = std::make_unique<Shader>();
+    Builder& b = sh->b;
+    for (Reg& c : sh->coord) c = b.reg(Kind::F32);
+    sh->ref = b.reg(Kind::F32);
+    sh->lod = b.reg(Kind::F32);
+    sh->unit_lane = b.reg(Kind::I32);
+    sh->cond = b.reg(Kind::Bool);
+    for (Reg r : {sh->coord[0], sh->coord[1], sh->coord[2], sh->ref, sh->lod, sh->unit_lane, sh->cond})
+        b.input("in", r);
+    sh->unit = b.reg(Kind::I32);
+    b.instr(Op::uniform, Kind::I32, sh->unit, {}, {0});
+    ir::TexInfo implicit;
+    implicit.target = ir::TexTarget(kind.target);
+    implicit.shadow = kind.shadow;
+    const uint32_t dims = implicit.dims();
+    const auto block_of = [&](const ir::TexInfo& info) {
+        const Reg block = b.range(Kind::F32, info.operand_count());
+        for (uint32_t k = 0; k < dims; ++k) b.mov(block + k, sh->coord[k]);
+        if (info.shadow) b.mov(block + info.ref_at(), sh->ref);
+        if (info.lod == ir::TexLod::Explicit) b.mov(block + info.lod_at(), sh->lod);
+        else
+            for (uint32_t k = 0; k < info.grad_dims(); ++k) {
+                b.instr(Op::ddx, Kind::F32, block + info.ddx_at() + k, {sh->coord[k]});
+                b.instr(Op::ddy, Kind::F32, block + info.ddy_at() + k, {sh->coord[k]});
+            }
+        return block;
+    };
+    const Reg block = block_of(implicit);
+    sh->result = b.range(Kind::F32, ir::kTexResults);
+    b.if_(sh->cond, [&] {
+        b.instr(Op::tex, Kind::F32, sh->result, {sh->unit}, {block, implicit.operand_count(), implicit.encode()});
+    });
+    ir::TexInfo explicit_lod = implicit;
+    explicit_lod.lod = ir::TexLod::Explicit;
+    const Reg explicit_block = block_of(explicit_lod);
+    sh->explicit_result = b.range(Kind::F32, ir::kTexResults);
+    b.instr(Op::tex, Kind::F32, sh->explicit_result, {sh->unit_lane},
+            {explicit_block, explicit_lod.operand_count(), explicit_lod.encode()});
+    for (uint32_t c = 0; c < ir::kTexResults; ++c) {
+        b.output("r", sh->result + c);
+        b.output("e", sh->explicit_result + c);
+    }
+    return sh;
+}
+
+std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const LookupKind& kind, const State& st, uint32_t seed) {
+    using enum TextureWrap;
+    std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
+    auto bind = [&](int unit, std::shared_ptr<const Texture> t) {
+        units[size_t(unit)].bound[size_t(t->target())] = std::move(t);
+    };
+    bind(kUnit, texture(kind, st, true, seed));
+    const State other{TextureFilter::Nearest, {Repeat, Repeat, Repeat}, CompareFunc::Less, DepthTextureMode::Luminance,
+                      {3, 2, 2}, 0, TextureFormat::RGBA8};
+    bind(kOtherUnit, texture(kind, other, false, 7u));
+    State incomplete = other;
+    incomplete.filter = TextureFilter::LinearMipmapLinear;
+    incomplete.size[0] = incomplete.size[1] = incomplete.size[2] = 4;
+    bind(kIncomplete, texture(kind, incomplete, false, 9u));
+    return units;
+}
+
+// Lane i's position on one axis of a magnified image, as the rasterizer
+// packs lanes (quad i / 4 at (2 (q % 4), 2 (q / 4)) of an 8x4 block, the
+// lane at (i & 1, i >> 1 & 1) in it): `step` a pixel from `origin`.
+float close_coordinate(int lane, int axis, float origin, float step) {
+    const int q = lane / 4;
+    const int pixel = axis == 0 ? 2 * (q % 4) + (lane & 1) : axis == 1 ? 2 * (q / 4) + ((lane >> 1) & 1) : q % 3;
+    return origin + (float(pixel) + 0.5f) * step;
+}
+
+// The lane sampler's words for a lookup of `texture`, in the backends'
+// floating-point mode (denormals flushed: a reference of 1e-40 is 0).
+std::array<uint32_t, 4> lane_sample(const Texture& texture, const float* coord, float ref, rt::SamplingRules rules) {
+    ir::FlushDenormals ftz;
+    rt::LaneLookup lane;
+    lane.rules = rules;
+    lane.coord = {coord[0], coord[1], coord[2]};
+    lane.ref = ref;
+    float rgba[4];
+    rt::sample_complete_lane(texture, lane, rgba);
+    return {bits(rgba[0]), bits(rgba[1]), bits(rgba[2]), bits(rgba[3])};
+}
+
+struct Lanes {
+    std::vector<float> coord[3], ref;
+};
+
+// Round 0-1 spread lanes (1: the if taken by two lanes of three), 2 a
+// partial live mask, 3 lanes that skip their lookups, 4-5 mixed units per
+// lane (some out of range), 6-7 close lanes (a cube's: directions near a
+// face's corner; a shadow map's: references near the texels' depths).
+Lanes lanes_of(const LookupKind& kind, const State& st, int round, std::mt19937& rng) {
+    Lanes l;
+    for (auto& c : l.coord) c.resize(rt::kLanes);
+    l.ref.resize(rt::kLanes);
+    const bool close = round >= 6;
+    float origin[3], step[3];
+    for (int a = 0; a < 3; ++a) {
+        origin[a] = std::uniform_real_distribution<float>(-0.3f, 1.3f)(rng);
+        step[a] = (round == 6 ? 0.3f : 0.6f) / float(st.size[a]);
+    }
+    if (kind.target == TextureTarget::Cube) {  // a major axis of +-1, the others near a corner
+        const int major = int(rng() % 3);
+        origin[major] = rng() % 2 ? 1.0f : -1.0f;
+        step[major] = 0.0f;
+        for (int a = 0; a < 3; ++a)
+            if (a != major) origin[a] = std::uniform_real_distribution<float>(-1.05f, 0.9f)(rng);
+    }
+    const float ref_origin = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+    for (int lane = 0; lane < rt::kLanes; ++lane) {
+        for (int a = 0; a < 3; ++a)
+            l.coord[a][size_t(lane)] = close ? close_coordinate(lane, a, origin[a], step[a]) : spread(rng);
+        l.ref[size_t(lane)] = close ? ref_origin + 0.01f * float(lane % 5) : rng() % 8 ? spread(rng) * 0.4f : special(rng);
+    }
+    return l;
+}
+
+void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader& interp, const rt::CompiledShader& jit,
+             const TexMode& mode, const State& st, uint32_t seed) {
+    const auto units = units_of(kind, st, seed);
+    const uint32_t uniforms[] = {uint32_t(kUnit)};
+    const rt::ExecParams params{uniforms, 10, units.data(), mode.precision, mode.fast_ops};
+    auto ia = interp.instantiate(params), ja = jit.instantiate(params);
+    const Texture& tex = *units[size_t(kUnit)].bound[size_t(kind.target)];
+    // The lane sampler's rules are Precise's (Fast's GPU filtering has its own).
+    // The lane sampler under the mode's rules, where they are Precise's:
+    // Fast's GPU filtering of the textures it takes is its own paths' (and
+    // its quads' levels of detail), as is a level-of-detail decision (the
+    // quads' derivatives).
+    const rt::SamplingRules rules = mode.gpu() ? rt::SamplingRules::Gpu : rt::SamplingRules::Common;
+    const bool oracle = tex.complete() && !rt::lanes_only(tex, rules) && !rt::sampling::lod_matters(tex.sampler);
+    std::mt19937 rng(seed * 977u);
+    for (int round = 0; round < 8; ++round) {
+        const rt::LaneMask live = round == 2 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
+        const rt::LaneMask skipped = round == 3 ? rt::LaneMask(0x0f0f0f0f0f0f0f0full) & rt::kAllLanes : 0;
+        const Lanes l = lanes_of(kind, st, round, rng);
+        const auto cond = [&](int lane) { return round == 1 ? lane % 3 != 0 : true; };
+        for (rt::Executor* e : {ia.get(), ja.get()}) {
+            e->skip_lookups(skipped);
+            for (int lane = 0; lane < rt::kLanes; ++lane) {
+                const int mixed[] = {kUnit, kOtherUnit, kIncomplete, -1, 40};
+                const int unit = round == 4 || round == 5 ? mixed[(lane + round) % 5] : kUnit;
+                for (int a = 0; a < 3; ++a) e->lanes(sh.coord[a])[lane] = bits(l.coord[a][size_t(lane)]);
+                e->lanes(sh.ref)[lane] = bits(l.ref[size_t(lane)]);
+                e->lanes(sh.lod)[lane] = bits(float(lane % 3) - 1.0f);
+                e->lanes(sh.unit_lane)[lane] = bits(round == 5 && lane ? kOtherUnit : unit);
+                e->lanes(sh.cond)[lane] = cond(lane);
+                for (uint32_t k = 0; k < ir::kTexResults; ++k) {
+                    e->lanes(sh.result + k)[lane] = 0xdeadbeefu;
+                    e->lanes(sh.explicit_result + k)[lane] = 0xdeadbeefu;
+                }
+            }
+        }
+        REQUIRE(ia->run(live, nullptr));
+        REQUIRE(ja->run(live, nullptr));
+        for (int lane = 0; lane < rt::kLanes; ++lane) {
+            INFO(kind.name << " precision " << int(mode.precision) << " fast_ops " << mode.fast_ops << " filter "
+                 << int(st.filter) << " wrap " << int(st.wrap[0]) << "," << int(st.wrap[1]) << "," << int(st.wrap[2])
+                 << " func " << int(st.func) << " mode " << int(st.mode) << " " << st.size[0] << "x" << st.size[1]
+                 << "x" << st.size[2] << " base " << st.base_level << " round " << round << " lane " << lane
+                 << " coord " << l.coord[0][size_t(lane)] << "," << l.coord[1][size_t(lane)] << ","
+                 << l.coord[2][size_t(lane)] << " ref " << l.ref[size_t(lane)]);
+            for (const ir::Binding& out : sh.b.sh.outputs) {
+                INFO("register " << out.first);
+                REQUIRE(ia->lanes(out.first)[lane] == ja->lanes(out.first)[lane]);
+            }
+            // The lanes that looked up kUnit's texture: the lane sampler's words.
+            const bool looked = ((live >> lane) & 1) && !((skipped >> lane) & 1) && cond(lane) && round != 4 &&
+                                round != 5;
+            if (!oracle || !looked) continue;
+            const float coord[3] = {l.coord[0][size_t(lane)], l.coord[1][size_t(lane)], l.coord[2][size_t(lane)]};
+            const std::array<uint32_t, 4> want = lane_sample(tex, coord, l.ref[size_t(lane)], rules);
+            for (uint32_t k = 0; k < ir::kTexResults; ++k) {
+                INFO("channel " << k);
+                REQUIRE(ja->lanes(sh.result + k)[lane] == want[k]);
+            }
+        }
+    }
+}
+
+void sweep(const LookupKind& kind, const std::vector<State>& states) {
+    auto sh = make_shader(kind);
+    for (const TexMode& mode : kTexModes) {
+        auto interp = rt::compile_shader(sh->b.sh, rt::Runner::Interp, mode.precision, mode.fast_ops, true);
+        auto jit = rt::compile_shader(sh->b.sh, rt::Runner::Jit, mode.precision, mode.fast_ops, true);
+        REQUIRE(jit);
+        uint32_t seed = 0;
+        for (const State& st : states) compare(kind, *sh, *interp, *jit, mode, st, ++seed);
+    }
+}
+
+// Every filter kind and wrap on each axis the target has (the others
+// REPEAT); sizes, formats and base levels cycled.
+std::vector<State> states_of(const LookupKind& kind) {
+    using enum TextureWrap;
+    const TextureWrap wraps[] = {Repeat, MirroredRepeat, ClampToEdge, Clamp, ClampToBorder};
+    const int sizes[][3] = {{5, 3, 4}, {1, 1, 1}, {7, 1, 3}, {1, 6, 2}, {13, 11, 5}, {4, 4, 1}, {9, 6, 7}};
+    const int axes = kind.target == TextureTarget::Tex1D ? 1 : kind.target == TextureTarget::Tex3D ? 3 : 2;
+    const TextureFilter filters[] = {TextureFilter::Nearest, TextureFilter::Linear, TextureFilter::LinearMipmapLinear};
+    std::vector<State> states;
+    uint32_t n = 0;
+    for (const TextureFilter filter : filters)
+        for (int w = 0; w < 125; ++w) {
+            const TextureWrap ws = wraps[w % 5], wt = axes > 1 ? wraps[w / 5 % 5] : Repeat;
+            const TextureWrap wr = axes > 2 ? wraps[w / 25] : Repeat;
+            if ((axes < 2 && w >= 5) || (axes < 3 && w >= 25)) break;
+            // The mipmapped states (the call-out's) once per wrap on s.
+            if (filter == TextureFilter::LinearMipmapLinear && w >= 5) break;
+            ++n;
+            const int* size = sizes[n % 7];
+            State st{filter, {ws, wt, wr}, CompareFunc(n % 8), DepthTextureMode(n % 3), {size[0], size[1], size[2]},
+                     int(n % 4 == 3), n % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8};
+            states.push_back(st);
+            if (kind.shadow)  // every comparison function with this state's filter and wraps
+                for (int f = 1; f < 8; ++f) {
+                    st.func = CompareFunc((n + uint32_t(f)) % 8);
+                    st.mode = DepthTextureMode((n + uint32_t(f)) % 3);
+                    states.push_back(st);
+                }
+        }
+    return states;
+}
+
+}  // namespace
+
+TEST_CASE("generated 1D, 3D, cube and shadow lookups give the lane sampler's words", "[runtime][backend][jit_tex]") {
+    if (!jit_available() || !rt::cpu_has_avx2()) return;
+    const LookupKind kinds[] = {{TextureTarget::Tex1D, false, "1D"},
+                          {TextureTarget::Tex3D, false, "3D"},
+                          {TextureTarget::Cube, false, "cube"},
+                          {TextureTarget::Tex2D, true, "shadow 2D"}};
+    for (const LookupKind& kind : kinds) {
+        SECTION(kind.name) { sweep(kind, states_of(kind)); }
+    }
+}
