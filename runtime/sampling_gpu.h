@@ -40,9 +40,8 @@
 // The switch-over (c = 0) and texel indices are the Common rules'. Float
 // and depth textures keep those rules (their probe, texkinds.frag, showed
 // 8-bit weights but not every blend), and so do the unmeasured rectangles:
-// filtered() says which follow this file. A 3D texture's lambda is the
-// table's of the Common rules' rho (lod3d.frag fits another rho, not
-// modelled).
+// filtered() says which follow this file. A 3D texture's rho takes its
+// lengths as max + 11/32 mid + 1/4 min (gpu_rho(); lod3d.frag: every pixel).
 #pragma once
 #include <bit>
 #include <cstdint>
