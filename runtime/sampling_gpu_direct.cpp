@@ -208,19 +208,24 @@ template <bool kShare>
     }
 }
 
-// A channel's footprint sum (sum16x8()'s arguments) as footprint_sum16x8()
-// gives it: where kRound, rounded as gpu::round_blend() to the lane's
-// 16-bit value.
-template <bool kBorder, bool kRound>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V rounded_or_sum8(V sum, V wb, V b) {
-    if constexpr (kRound && !kBorder) return blend16_of_sum8(sum);
-    else if constexpr (kRound) return round_blend8(sum16x8<true>(sum, wb, b));
+// What linear_sum16x8() gives per channel: the 16-bit sum not yet rounded
+// (sum16x8()), that sum rounded as gpu::round_blend() (the lane's 16-bit
+// value), or the byte sum S itself, not rounded (only where no index can
+// be the border's: a border texel's 16-bit value is no byte's).
+enum class Out { Sum, Rounded, Bytes };
+
+template <bool kBorder, Out kOut>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V out_of_sum8(V sum, V wb, V b) {
+    static_assert(kOut != Out::Bytes || !kBorder, "a border texel's value is no byte sum");
+    if constexpr (kOut == Out::Bytes) return sum;
+    else if constexpr (kOut == Out::Rounded && !kBorder) return blend16_of_sum8(sum);
+    else if constexpr (kOut == Out::Rounded) return round_blend8(sum16x8<true>(sum, wb, b));
     else return sum16x8<kBorder>(sum, wb, b);
 }
 
 // linear_sum16x8()'s sums of the footprint at columns x, rows y by weights
 // w (kBorder: some index may be the border's).
-template <bool kBorder, bool kOneD, bool kRound>
+template <bool kBorder, bool kOneD, Out kOut>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void footprint_sum16x8(const Image16& im, const Linear8& x, const Linear8& y,
                                                                   const Weights8& w, V* sum) {
     const V k = splat(255.0f);  // 255 w: exact
@@ -236,7 +241,7 @@ template <bool kBorder, bool kOneD, bool kRound>
     V wb = _mm256_add_ps(_mm256_and_ps(op, w.w00), _mm256_and_ps(oq, w.w01));
     if constexpr (kOneD) {
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) sum[c] = rounded_or_sum8<kBorder, kRound>(row0[c], wb, im.border[c]);
+        for (int c = 0; c < 4; ++c) sum[c] = out_of_sum8<kBorder, kOut>(row0[c], wb, im.border[c]);
         return;
     }
     raw_row8<kBorder>(im, x, y.i1, pairs, p, q, op, oq);
@@ -245,13 +250,13 @@ template <bool kBorder, bool kOneD, bool kRound>
 #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) {
         const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], a10), _mm256_mul_ps(q[c], a11));
-        sum[c] = rounded_or_sum8<kBorder, kRound>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
+        sum[c] = out_of_sum8<kBorder, kOut>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
     }
 }
 
 // gpu::linear_sum() of one image for eight lanes at (s, t) with each
 // lane's share (kShare; else 256): 16-bit sums by channel, not yet
-// rounded (kRound: rounded, gpu::round_blend()). `kOneD`: a 1D image (row 0; t and kT unused), whose blend is
+// rounded (kOut: see Out). `kOneD`: a 1D image (row 0; t and kT unused), whose blend is
 // the bilinear one with wy = 0.
 //
 // It sums the stored texels, not their 16-bit values: each is k/255 for
@@ -262,7 +267,7 @@ template <bool kBorder, bool kOneD, bool kRound>
 // 2^-9): rounded to nearest, exactly K. A border texel's 16-bit value b
 // (not a byte's 257 k) is added apart, b times its weight. One rounding
 // per channel instead of one per texel, the same bits.
-template <Rule kS, Rule kT, bool kOneD, bool kShare, bool kRound = false>
+template <Rule kS, Rule kT, bool kOneD, bool kShare, Out kOut = Out::Sum>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void linear_sum16x8(const Image16& im, V s, V t, V share, V* sum) {
     constexpr bool kBorder = may_border(kS, true) || (!kOneD && may_border(kT, true));
     const I zero = _mm256_setzero_si256();
@@ -276,9 +281,9 @@ template <Rule kS, Rule kT, bool kOneD, bool kShare, bool kRound = false>
         // rules' do, with the pair loads: the border's masks would be 0 and
         // its weight sum 0, which adds +0 to each channel's sum (the same bits).
         const I any = _mm256_or_si256(_mm256_or_si256(x.i0, x.i1), _mm256_or_si256(y.i0, y.i1));
-        if (!_mm256_movemask_ps(_mm256_castsi256_ps(any))) return footprint_sum16x8<false, kOneD, kRound>(im, x, y, w, sum);
+        if (!_mm256_movemask_ps(_mm256_castsi256_ps(any))) return footprint_sum16x8<false, kOneD, kOut>(im, x, y, w, sum);
     }
-    footprint_sum16x8<kBorder, kOneD, kRound>(im, x, y, w, sum);
+    footprint_sum16x8<kBorder, kOneD, kOut>(im, x, y, w, sum);
 }
 
 // gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
@@ -289,7 +294,7 @@ template <bool kLinear, Rule kS, Rule kT, bool kOneD>
         constexpr bool kBorder = may_border(kS, false) || (!kOneD && may_border(kT, false));
         fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? _mm256_setzero_si256() : nearest8<kT>(t, im.h), value);
     } else {
-        linear_sum16x8<kS, kT, kOneD, false, true>(im, s, t, _mm256_setzero_ps(), value);
+        linear_sum16x8<kS, kT, kOneD, false, Out::Rounded>(im, s, t, _mm256_setzero_ps(), value);
     }
 }
 
@@ -481,6 +486,20 @@ template <bool kLinear, Rule kS, Rule kT, bool kOneD>
     // then level16()'s).
     const V w = _mm256_cvtepi32_ps(_mm256_load_si256(reinterpret_cast<const I*>(weight)));
     V next[4];
+    constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
+    if constexpr (kLinear && !kBorder) {
+        // Both levels' byte sums, each within 0.02 of its bytes' integer
+        // sum K1, K2 (see linear_sum16x8()), so their sum (one more
+        // rounding, below 2^-8) within 0.05 of K1 + K2: rounded once with
+        // the blend (blend16_of_sum8()), the bits of 257 K1 + 257 K2
+        // rounded as gpu::round_blend(), in fewer steps.
+        linear_sum16x8<kS, kT, kOneD, true, Out::Bytes>(im, sc, tc, _mm256_sub_ps(splat(256.0f), w), value);
+        linear_sum16x8<kS, kT, kOneD, true, Out::Bytes>(image16(levels[size_t(level) + 1], s.border), sc, tc, w,
+                                                        next);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) value[c] = blend16_of_sum8(_mm256_add_ps(value[c], next[c]));
+        return;
+    }
     level_sum16x8<kLinear, kS, kT, kOneD>(im, sc, tc, _mm256_sub_ps(splat(256.0f), w), value);
     level_sum16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, w, next);
 #pragma GCC unroll 4
