@@ -71,6 +71,52 @@ struct Image3 {
     fetch8<false>(src, x.i1, row, right);
 }
 
+// Whether every lane's second index on the axis is its first + 1 (not the
+// edge's clamp or a wrap).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline bool neighbours8(const Linear8& l) {
+    const I next = _mm256_cmpeq_epi32(l.i1, _mm256_add_epi32(l.i0, splat_i(1)));
+    return _mm256_movemask_ps(_mm256_castsi256_ps(next)) == 0xff;
+}
+
+// (sum + 128) >> 8 (gpu::round_blend(): a floor, in one rounding, of an exact sum), then r / 65535.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V result16(V sum) {
+    const V r = _mm256_round_ps(_mm256_mul_ps(_mm256_add_ps(sum, splat(128.0f)), splat(1.0f / 256.0f)),
+                                _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+    return _mm256_div_ps(r, splat(65535.0f));
+}
+
+// The sums where every lane's footprint is the cell of texels (x0..x0+1,
+// y0..y0+1, z0..z0+1), lane by lane: lanes j and j + 4 side by side in
+// one register (four channels each), each row's two texels one 32-byte load
+// at a fixed distance from the lane's first texel (dy: a row, dz: a plane,
+// in bytes), the weights splat from the lanes' registers, and the results
+// transposed into channels once (as sampling_direct3d.cpp's blend_cells8();
+// transposing every row's texels kept the shuffle port busy).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void cells8(const char* base, I first, size_t dy, size_t dz,
+                                                       const V (*w)[4], V* value) {
+    alignas(32) uint32_t off[8];
+    offsets8(first, off);
+    V lanes[4];
+#pragma GCC unroll 4
+    for (int j = 0; j < 4; ++j) {
+        const char* p = base + off[j];
+        const char* q = base + off[j + 4];
+        V sum = _mm256_setzero_ps();
+#pragma GCC unroll 4
+        for (int r = 0; r < 4; ++r) {  // rows y0, y1 of plane z0, then of z1
+            const size_t at = (r >> 1) * dz + (r & 1) * dy;
+            const V u = _mm256_loadu_ps(reinterpret_cast<const float*>(p + at));
+            const V v = _mm256_loadu_ps(reinterpret_cast<const float*>(q + at));
+            const V x0 = unorm16x8(_mm256_permute2f128_ps(u, v, 0x20)), x1 = unorm16x8(_mm256_permute2f128_ps(u, v, 0x31));
+            const V* pw = w[r >> 1] + 2 * (r & 1);
+            sum = _mm256_add_ps(sum, _mm256_add_ps(_mm256_mul_ps(x0, splat_pair(pw[0], j)),
+                                                   _mm256_mul_ps(x1, splat_pair(pw[1], j))));
+        }
+        lanes[j] = result16(sum);
+    }
+    transpose8(lanes, value);
+}
+
 template <bool kLinear, Rule kS, Rule kT, Rule kR>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline void lookup8(const Image3& im, V s, V t, V r, V* value) {
     const I h = splat_i(im.h.n);
@@ -86,10 +132,14 @@ template <bool kLinear, Rule kS, Rule kT, Rule kR>
         V w[2][4];
         plane_weights8(wx, wy, _mm256_sub_epi32(splat_i(256), z1), w[0]);
         plane_weights8(wx, wy, z1, w[1]);
-        const I next = _mm256_cmpeq_epi32(x.i1, _mm256_add_epi32(x.i0, splat_i(1)));
-        const bool pairs = _mm256_movemask_ps(_mm256_castsi256_ps(next)) == 0xff;
-        V sum[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
         const I planes[2] = {_mm256_mullo_epi32(z.i0, h), _mm256_mullo_epi32(z.i1, h)};  // w * h * d below 2^24
+        const bool pairs = neighbours8(x);
+        if (pairs && neighbours8(y) && neighbours8(z)) {
+            const I first = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_add_epi32(planes[0], y.i0), splat_i(im.w.n)), x.i0);
+            const size_t row = size_t(im.w.n) * sizeof(glm::vec4);
+            return cells8(reinterpret_cast<const char*>(im.src.texels), first, row, row * size_t(im.h.n), w, value);
+        }
+        V sum[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
 #pragma GCC unroll 2
         for (int p = 0; p < 2; ++p) {
             V left[4], right[4];
@@ -98,13 +148,8 @@ template <bool kLinear, Rule kS, Rule kT, Rule kR>
             row_texels(im.src, x, _mm256_add_epi32(planes[p], y.i1), pairs, left, right);
             add_row(left, right, w[p][2], w[p][3], sum);
         }
-        // gpu::round_blend() (a floor, in one rounding: the sum is exact), then gpu::over_unorm16().
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c)
-            value[c] = _mm256_div_ps(
-                _mm256_round_ps(_mm256_mul_ps(_mm256_add_ps(sum[c], splat(128.0f)), splat(1.0f / 256.0f)),
-                                _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC),
-                splat(65535.0f));
+        for (int c = 0; c < 4; ++c) value[c] = result16(sum[c]);
     }
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Decode the GPU probes of this folder (rendered by run_gpu.sh, or by glslrun/glref on the CPU).
 
-usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|mipgen|cube|funcs2 LABEL=IMG.png ...
+usage: decode.py texfilter|lod|lodrand|lod3d|texkinds|tex3dw|blendover|mipgen|cube|funcs2 LABEL=IMG.png ...
        decode.py textured LABEL=DIR   (textured_texel, _lod, _s, _t from run_gpu.sh in DIR)
        decode.py trilin|trimp LABEL=DIR   (trilin_w, _1 .. _4 / trimp_l*_m*_w* from run_gpu.sh in DIR)
        decode.py trigrad LABEL=IMG.png
@@ -640,6 +640,63 @@ def trigrad(images):
         for k in range(1, 5):
             sel = inner & (nonzero == k)
             print(f"  {k} nonzero derivative components: {100 * np.mean(steps[sel] == 0):.2f}% of {sel.sum()}")
+
+
+def level_weights(wx, wy, share):
+    """runtime/sampling_gpu.h's split of a share among a plane's 2x2 texels: w00, w01, w10, w11."""
+    x1 = (wx * share + 128) >> 8
+    x0 = share - x1
+    w11 = (x1 * wy + np.where(wx == 256, 127, 128)) >> 8
+    w10 = (x0 * wy + 127) >> 8
+    return x0 - w10, x1 - w11, w10, w11
+
+
+def tex3dw(images):
+    """tex3dw.frag: each texel's weight of a 3D LINEAR lookup, against the GPU's rule (two planes weighing
+    256 - wz and wz, each split as a mipmap level's share) and the 2D weights split along z."""
+    yb, x = np.mgrid[0:64, 0:1024].astype(np.float64)
+    fr = lambda k: (k % 65536) / 65536
+    w8 = [np.floor(f * 256 + 0.5).astype(np.int64) for f in
+          (fr(x * 193 + yb * 811 + 7), fr(x * 1709 + yb * 47 + 12345), fr(x * 29 + yb * 2903 + 777))]
+    wx, wy, wz = w8
+    texels = [(i, j, k) for i in (0, 1) for j in (0, 1) for k in (0, 1)]
+    rule, split = {}, {}
+    for k, share in ((0, 256 - wz), (1, wz)):
+        for (i, j), w in zip(((0, 0), (1, 0), (0, 1), (1, 1)), level_weights(wx, wy, share)):
+            rule[(i, j, k)] = w
+    for (i, j), w in zip(((0, 0), (1, 0), (0, 1), (1, 1)), level_weights(wx, wy, np.full_like(wx, 256))):
+        hi = (w * wz + 128) >> 8
+        split[(i, j, 0)], split[(i, j, 1)] = w - hi, hi
+    patterns = [(1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 1, 0), (1, 0, 1), (0, 1, 1), (1, 1, 1)]
+    for label, path in images:
+        e = dec16(load(path))
+        print(f"tex3dw {label}:")
+        for name, model in (("the GPU's rule", rule), ("2D weights split along z", split)):
+            ok = []
+            for b in range(8):
+                pat, lo, hi = (patterns[b], 0, 255) if b < 7 else (patterns[6], 51, 217)
+                total = sum(257 * (hi if sum(p * t for p, t in zip(pat, v)) % 2 else lo) * model[v] for v in texels)
+                r = (total + 128) >> 8
+                ok.append(np.mean(np.where(r >= 32768, r + 1, r) % 65536 == e[64 * b: 64 * b + 64]))
+            print(f"  {name}: " + " ".join(f"{100 * v:.2f}%" for v in ok) + " (bands 0-7)")
+
+
+def blendover(images):
+    """blendover.frag: SRC_ALPHA over ONE_MINUS_SRC_ALPHA into RGBA8, against the exact products of the bytes
+    rounded to nearest and stored by the GPU's UNORM8 rule."""
+    for label, path in images:
+        g = load(path)
+        y, x = np.mgrid[0:g.shape[0], 0:g.shape[1]].astype(np.float64)
+        fr = lambda k: (k % 65536) / 65536
+        d = np.stack([x % 256, (7 * x + 3 * y) % 256, (11 * x + 5 * y + 17) % 256, (3 * x + y + 101) % 256], -1)
+        src = np.stack([fr(x * 1709 + y * 47 + 12345), fr(x * 29 + y * 2903 + 777), fr(x * 631 + y * 1303 + 4242),
+                        fr(x * 193 + y * 811 + 7)], -1)
+        s8 = (np.floor(src * 4096).astype(np.int64) * 510 + 4095) >> 13  # the GPU's UNORM8 store
+        c = s8 * s8[..., 3:] + d.astype(np.int64) * (255 - s8[..., 3:])
+        near = (c + 127) // 255
+        store = ((c * 4096 // 65025) * 510 + 4095) >> 13
+        print(f"blendover {label}: to nearest {100 * np.mean(near == g):.3f}%, the GPU's store rule "
+              f"{100 * np.mean(store == g):.3f}% of {g.size} channels")
 
 
 if __name__ == "__main__":

@@ -16,7 +16,8 @@ fi
 cd tools/gpu_probes || exit 1
 rc=0
 # NAME or NAME=VERT:FRAG:SCENE (the default: probe.vert, NAME.frag, NAME.toml).
-PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds mipgen cube funcs2 trilod tribias fma fma2 mandel
+PROBES=${PROBES:-"texfilter lod lodnorm lodrand lod3d texkinds tex3dw blendover mipgen cube funcs2 trilod tribias fma fma2 mandel
+  $(for c in r g b; do echo "volslice_$c=../../bench/corpus/volume.vert:volslice.frag:volslice_$c.toml"; done)
   textured_lin=../../shaders/textured_pix.vert:../../shaders/textured_pix.frag:textured_lin.toml
   textured_texel=../../shaders/textured_pix.vert:textured_texel.frag:textured_probe.toml
   textured_lod=textured_400.vert:textured_lod.frag:textured_probe.toml
