@@ -368,9 +368,29 @@ template <bool kLinear, Rule kS, Rule kT>
         const V one = splat(1.0f), ia = _mm256_sub_ps(one, x.a), ib = _mm256_sub_ps(one, y.a);
         V p[4], q[4], row0[4];
         // Where every lane's two columns are neighbours (not the edge's
-        // clamp or REPEAT's wrap), each row's two texels are one load.
-        const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
-                                           x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
+        // clamp or REPEAT's wrap), each row's two texels are one load; under
+        // the border's rules, where moreover no index is kBorder (the
+        // footprints inside the image: a decal's or a projected slide's
+        // but near their edges), whose texels fetch8() would take as they are.
+        bool pairs = _mm256_movemask_ps(_mm256_castsi256_ps(
+                         _mm256_cmpeq_epi32(x.i1, _mm256_add_epi32(x.i0, splat_i(1))))) == 0xff;
+        if constexpr (kBorder) {  // kBorder is -1: the sign bit of any index
+            const I indices = _mm256_or_si256(_mm256_or_si256(x.i0, y.i0), y.i1);
+            pairs = pairs && _mm256_testz_si256(indices, splat_i(INT32_MIN));
+            // Every corner of every lane the border's (both columns or both
+            // rows out): fetch8() would load texel 0 and take the border
+            // colour for each; the same blends of it, with no load (a
+            // projected slide's surroundings).
+            const I out = _mm256_or_si256(_mm256_and_si256(x.i0, x.i1), _mm256_and_si256(y.i0, y.i1));
+            if (_mm256_movemask_ps(_mm256_castsi256_ps(out)) == 0xff) {
+#pragma GCC unroll 4
+                for (int c = 0; c < 4; ++c) {
+                    const V row = mix8(src.border[c], src.border[c], x.a, ia);
+                    value[c] = mix8(row, row, y.a, ib);
+                }
+                return;
+            }
+        }
         if (pairs) fetch_pairs8(src, x.i0, y.i0, p, q);
         else {
             fetch8<kBorder>(src, x.i0, y.i0, p);

@@ -53,15 +53,7 @@ void lambdas(const Texture& texture, const BatchLookup& lk, GpuLanes& l) {
     float* lambda = l.lambda;
     if (lk.implicit && lod_matters(st)) {
         if (texture.target() == TextureTarget::Cube) {
-            // On the face each lane's direction selects: rho_of() lane by lane,
-            // with its quad's first lane's derivatives.
-            for (int i = 0; i < kLanes; ++i) {
-                const int q = i & ~3;
-                const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
-                const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]);
-                const glm::vec3 dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
-                lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
-            }
+            gpu_cube_lambdas(texture, lk, lambda);
         } else {
             const glm::vec3 size = image_size(*level_image(texture, 0, st.base_level));
             const int dims = texture_dims(texture.target());
@@ -580,6 +572,18 @@ __attribute__((target("avx2"), flatten)) void run_avx2(const Texture& texture, c
 #endif
 
 }  // namespace
+
+void gpu_cube_lambdas(const Texture& texture, const BatchLookup& lk, float* lambda) {
+    // On the face each lane's direction selects: rho_of() lane by lane,
+    // with its quad's first lane's derivatives.
+    for (int i = 0; i < kLanes; ++i) {
+        const int q = i & ~3;
+        const glm::vec3 coord(lk.coord[0][i], lk.coord[1][i], lk.coord[2][i]);
+        const glm::vec3 dx(lk.ddx[0][q], lk.ddx[1][q], lk.ddx[2][q]);
+        const glm::vec3 dy(lk.ddy[0][q], lk.ddy[1][q], lk.ddy[2][q]);
+        lambda[i] = gpu::lambda_of_rho(rho_of(texture, coord, dx, dy, true));
+    }
+}
 
 bool gpu_batch_samples(const Texture& texture) {
     const TextureTarget target = texture.target();

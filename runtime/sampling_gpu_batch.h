@@ -22,4 +22,9 @@ bool gpu_batch_samples(const Texture& texture);
 void sample_gpu_batch(const Texture& texture, const BatchLookup& lookup, LaneMask lanes, float (*out)[kLanes],
                       bool avx2);
 
+// lambda_base of every lane of a cube-map lookup with an implicit LOD, as
+// the GPU's rules take it: rho on the face the lane's direction selects,
+// from its quad's first lane's derivatives, through gpu::lambda_of_rho().
+void gpu_cube_lambdas(const Texture& texture, const BatchLookup& lookup, float* lambda);
+
 }  // namespace glslrun::rt

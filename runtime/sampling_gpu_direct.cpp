@@ -18,6 +18,9 @@
 //   order; a blend of two levels is one sum over both levels' texels, each
 //   level's share (256 - w, w) split by gpu::level_weights(), rounded
 //   once; then r / 65535.
+// A cube map's lanes take their face and (s, t) on it first, and one pass
+// per face and first level (gpu_cube()); a texture without mipmaps
+// samples several groups of eight together (gpu_one()).
 // Before this, Fast's lookups went through the batched sampler's lane
 // arrays step by step: two thirds of two_units' frame (perf), and Fast was
 // 0.6x to 0.9x Precise's speed on textured programs.
@@ -27,6 +30,7 @@
 #include <bit>
 
 #include "runtime/interp_kernels.h"
+#include "runtime/sampling_cube8.h"
 #include "runtime/sampling_direct8.h"
 #include "runtime/sampling_gpu.h"
 #include "runtime/sampling_gpu_batch.h"
@@ -47,10 +51,22 @@ struct Image16 {
     V border[4];   // gpu::unorm16() of border_texel()
 };
 
-[[gnu::always_inline]] GLSLRUN_AVX2 inline Image16 image16(const TextureImage& image, const V* border) {
-    Image16 im{{image.texels.data(), image.width, {}}, {image.width, splat(float(image.width))},
-               {image.height, splat(float(image.height))}, {border[0], border[1], border[2], border[3]}};
+// Each member set once: the aggregate's `{}` of the source's (unused)
+// border was a `rep stos` of 448 bytes at every lookup and level pass
+// (perf: 4% of post's Fast frame, in run_bound()).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline Image16 image16(const glm::vec4* texels, int width, int height,
+                                                           const V* border) {
+    Image16 im;
+    im.src.texels = texels;
+    im.src.width = width;
+    im.w = {width, splat(float(width))};
+    im.h = {height, splat(float(height))};
+    for (int c = 0; c < 4; ++c) im.border[c] = border[c];
     return im;
+}
+
+[[gnu::always_inline]] GLSLRUN_AVX2 inline Image16 image16(const TextureImage& image, const V* border) {
+    return image16(image.texels.data(), image.width, image.height, border);
 }
 
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V unorm16x8(V t) {
@@ -127,53 +143,91 @@ template <bool kBorder>
     return total;
 }
 
+// round_blend8(sum16x8<false>(S)) in fewer steps: (257 K + 128) >> 8 is
+// K + ((K + 128) >> 8), taken from the bits of S + 2^23, which are
+// 0x4B000000 + K (S, below 2^17, is within 0.02 of the integer K, so the
+// addition rounds it to K: no tie), then back to float by subtracting
+// 2^23 (exact: the result is below 2^16). Five operations, three on the
+// float ports, instead of seven (roundps is two), per channel.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V blend16_of_sum8(V sum) {
+    const I k = _mm256_castps_si256(_mm256_add_ps(sum, splat(0x1p23f)));
+    const I carry = _mm256_srli_epi32(_mm256_sub_epi32(k, splat_i(0x4B000000 - 128)), 8);  // (K + 128) >> 8
+    return _mm256_sub_ps(_mm256_castsi256_ps(_mm256_add_epi32(k, carry)), splat(0x1p23f));
+}
+
+// gpu::weight8() of eight LINEAR fractions as float integers (0..256).
+// kMayNaN: the rule's fraction may be NaN (REPEAT's and MIRRORED_REPEAT's
+// of an infinite or NaN coordinate: weight8x8()'s selects); else it lies
+// in [0, 1] (a clamped position's: u - floor(u)), where int(a 256 + 1/2)
+// is floor(a 256 + 1/2), one rounding in float instead of a conversion to
+// integers and back.
+template <bool kMayNaN>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V weight8f(V a) {
+    if constexpr (kMayNaN) {
+        const V zero = _mm256_setzero_ps();
+        a = _mm256_blendv_ps(zero, _mm256_min_ps(a, splat(1.0f)), _mm256_cmp_ps(a, zero, _CMP_GT_OQ));
+    }
+    return _mm256_round_ps(_mm256_add_ps(_mm256_mul_ps(a, splat(256.0f)), splat(0.5f)),
+                           _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+
+// (x + bias) >> 8 of float integers x + bias in [0, 2^24): the product by
+// 2^-8 is exact, so its floor is the shift's.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V shift8f(V x, V bias) {
+    return _mm256_round_ps(_mm256_mul_ps(_mm256_add_ps(x, bias), splat(1.0f / 256.0f)),
+                           _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+
 // A footprint's four integer weights, as floats.
 struct Weights8 {
     V w00, w01, w10, w11;
 };
 
-// gpu::level_weights(wx, wy, share) of eight lanes. Without kShare the
-// share is 256, whose weights are the bilinear ones (w11 = round(wx wy /
-// 256), the rest by difference: level_weights()'s exactly, in fewer steps).
+// gpu::level_weights(wx, wy, share) of eight lanes, from the 8-bit weights
+// and the share as float integers: every product is at most 256 * 256, so
+// exact, and each shift is shift8f()'s (in integers, the multiplies and
+// the conversions to float were the head of each group's chain: perf).
+// Without kShare the share is 256, whose weights are the bilinear ones
+// (w11 = round(wx wy / 256), the rest by difference: level_weights()'s
+// exactly, in fewer steps).
 template <bool kShare>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline Weights8 weights8(I wx, I wy, I share) {
+[[gnu::always_inline]] GLSLRUN_AVX2 inline Weights8 weights8(V wx, V wy, V share) {
+    const V half = splat(128.0f);
     if constexpr (!kShare) {
-        const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, wy), splat_i(128)), 8);
-        return {_mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_sub_epi32(splat_i(256), _mm256_add_epi32(wx, wy)), w11)),
-                _mm256_cvtepi32_ps(_mm256_sub_epi32(wx, w11)), _mm256_cvtepi32_ps(_mm256_sub_epi32(wy, w11)),
-                _mm256_cvtepi32_ps(w11)};
+        const V w11 = shift8f(_mm256_mul_ps(wx, wy), half);
+        return {_mm256_add_ps(_mm256_sub_ps(_mm256_sub_ps(splat(256.0f), wx), wy), w11), _mm256_sub_ps(wx, w11),
+                _mm256_sub_ps(wy, w11), w11};
     } else {
-        const I x1 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(wx, share), splat_i(128)), 8);
-        const I x0 = _mm256_sub_epi32(share, x1);
+        const V x1 = shift8f(_mm256_mul_ps(wx, share), half);
+        const V x0 = _mm256_sub_ps(share, x1);
         // Ties down in the second column where wx = 256 (then a first column): 128 - 1.
-        const I tie = _mm256_add_epi32(splat_i(128), _mm256_cmpeq_epi32(wx, splat_i(256)));
-        const I w11 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(x1, wy), tie), 8);
-        const I w10 = _mm256_srai_epi32(_mm256_add_epi32(_mm256_mullo_epi32(x0, wy), splat_i(127)), 8);
-        return {_mm256_cvtepi32_ps(_mm256_sub_epi32(x0, w10)), _mm256_cvtepi32_ps(_mm256_sub_epi32(x1, w11)),
-                _mm256_cvtepi32_ps(w10), _mm256_cvtepi32_ps(w11)};
+        const V tie = _mm256_blendv_ps(half, splat(127.0f), _mm256_cmp_ps(wx, splat(256.0f), _CMP_EQ_OQ));
+        const V w11 = shift8f(_mm256_mul_ps(x1, wy), tie);
+        const V w10 = shift8f(_mm256_mul_ps(x0, wy), splat(127.0f));
+        return {_mm256_sub_ps(x0, w10), _mm256_sub_ps(x1, w11), w10, w11};
     }
 }
 
-// gpu::linear_sum() of one image for eight lanes at (s, t) with each
-// lane's share (kShare; else 256): 16-bit sums by channel, not yet
-// rounded. `kOneD`: a 1D image (row 0; t and kT unused), whose blend is
-// the bilinear one with wy = 0.
-//
-// It sums the stored texels, not their 16-bit values: each is k/255 for
-// its byte k (store_texel() keeps RGBA8 so), and the sum of 16-bit values,
-// sum w_i 257 k_i, is 257 K for the bytes' K = sum w_i k_i, which S = sum
-// (255 w_i) t_i gives within 0.02 (each t_i is within 2^-24 relative of
-// k_i / 255; each product and partial sum, below 2^16, is rounded within
-// 2^-9): rounded to nearest, exactly K. A border texel's 16-bit value b
-// (not a byte's 257 k) is added apart, b times its weight. One rounding
-// per channel instead of one per texel, the same bits.
-template <Rule kS, Rule kT, bool kOneD, bool kShare>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear_sum16x8(const Image16& im, V s, V t, I share, V* sum) {
-    constexpr bool kBorder = may_border(kS, true) || (!kOneD && may_border(kT, true));
-    const I zero = _mm256_setzero_si256();
-    const Linear8 x = linear8<kS>(s, im.w);
-    const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
-    const Weights8 w = weights8<kShare>(weight8x8(x.a), kOneD ? zero : weight8x8(y.a), share);
+// What linear_sum16x8() gives per channel: the 16-bit sum not yet rounded
+// (sum16x8()), that sum rounded as gpu::round_blend() (the lane's 16-bit
+// value), or the byte sum S itself, not rounded (only where no index can
+// be the border's: a border texel's 16-bit value is no byte's).
+enum class Out { Sum, Rounded, Bytes };
+
+template <bool kBorder, Out kOut>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V out_of_sum8(V sum, V wb, V b) {
+    static_assert(kOut != Out::Bytes || !kBorder, "a border texel's value is no byte sum");
+    if constexpr (kOut == Out::Bytes) return sum;
+    else if constexpr (kOut == Out::Rounded && !kBorder) return blend16_of_sum8(sum);
+    else if constexpr (kOut == Out::Rounded) return round_blend8(sum16x8<true>(sum, wb, b));
+    else return sum16x8<kBorder>(sum, wb, b);
+}
+
+// linear_sum16x8()'s sums of the footprint at columns x, rows y by weights
+// w (kBorder: some index may be the border's).
+template <bool kBorder, bool kOneD, Out kOut>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void footprint_sum16x8(const Image16& im, const Linear8& x, const Linear8& y,
+                                                                  const Weights8& w, V* sum) {
     const V k = splat(255.0f);  // 255 w: exact
     // Where every lane's two columns are neighbours, each row's two texels are one load.
     const bool pairs = !kBorder && _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
@@ -187,7 +241,7 @@ template <Rule kS, Rule kT, bool kOneD, bool kShare>
     V wb = _mm256_add_ps(_mm256_and_ps(op, w.w00), _mm256_and_ps(oq, w.w01));
     if constexpr (kOneD) {
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) sum[c] = sum16x8<kBorder>(row0[c], wb, im.border[c]);
+        for (int c = 0; c < 4; ++c) sum[c] = out_of_sum8<kBorder, kOut>(row0[c], wb, im.border[c]);
         return;
     }
     raw_row8<kBorder>(im, x, y.i1, pairs, p, q, op, oq);
@@ -196,8 +250,40 @@ template <Rule kS, Rule kT, bool kOneD, bool kShare>
 #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) {
         const V row1 = _mm256_add_ps(_mm256_mul_ps(p[c], a10), _mm256_mul_ps(q[c], a11));
-        sum[c] = sum16x8<kBorder>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
+        sum[c] = out_of_sum8<kBorder, kOut>(_mm256_add_ps(row0[c], row1), wb, im.border[c]);
     }
+}
+
+// gpu::linear_sum() of one image for eight lanes at (s, t) with each
+// lane's share (kShare; else 256): 16-bit sums by channel, not yet
+// rounded (kOut: see Out). `kOneD`: a 1D image (row 0; t and kT unused), whose blend is
+// the bilinear one with wy = 0.
+//
+// It sums the stored texels, not their 16-bit values: each is k/255 for
+// its byte k (store_texel() keeps RGBA8 so), and the sum of 16-bit values,
+// sum w_i 257 k_i, is 257 K for the bytes' K = sum w_i k_i, which S = sum
+// (255 w_i) t_i gives within 0.02 (each t_i is within 2^-24 relative of
+// k_i / 255; each product and partial sum, below 2^16, is rounded within
+// 2^-9): rounded to nearest, exactly K. A border texel's 16-bit value b
+// (not a byte's 257 k) is added apart, b times its weight. One rounding
+// per channel instead of one per texel, the same bits.
+template <Rule kS, Rule kT, bool kOneD, bool kShare, Out kOut = Out::Sum>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void linear_sum16x8(const Image16& im, V s, V t, V share, V* sum) {
+    constexpr bool kBorder = may_border(kS, true) || (!kOneD && may_border(kT, true));
+    const I zero = _mm256_setzero_si256();
+    const Linear8 x = linear8<kS>(s, im.w);
+    const Linear8 y = kOneD ? Linear8{zero, zero, _mm256_setzero_ps()} : linear8<kT>(t, im.h);
+    const V wx = weight8f<weight_may_be_nan(kS)>(x.a);
+    const Weights8 w = weights8<kShare>(wx, kOneD ? _mm256_setzero_ps() : weight8f<weight_may_be_nan(kT)>(y.a), share);
+    if constexpr (kBorder) {
+        // A group none of whose indices is the border's (kBorder, the only
+        // negative ones: most groups of a clamped image) sums as the inner
+        // rules' do, with the pair loads: the border's masks would be 0 and
+        // its weight sum 0, which adds +0 to each channel's sum (the same bits).
+        const I any = _mm256_or_si256(_mm256_or_si256(x.i0, x.i1), _mm256_or_si256(y.i0, y.i1));
+        if (!_mm256_movemask_ps(_mm256_castsi256_ps(any))) return footprint_sum16x8<false, kOneD, kOut>(im, x, y, w, sum);
+    }
+    footprint_sum16x8<kBorder, kOneD, kOut>(im, x, y, w, sum);
 }
 
 // gpu::level16() of one image for eight lanes at (s, t): 16-bit values by
@@ -208,23 +294,20 @@ template <bool kLinear, Rule kS, Rule kT, bool kOneD>
         constexpr bool kBorder = may_border(kS, false) || (!kOneD && may_border(kT, false));
         fetch16<kBorder>(im, nearest8<kS>(s, im.w), kOneD ? _mm256_setzero_si256() : nearest8<kT>(t, im.h), value);
     } else {
-        linear_sum16x8<kS, kT, kOneD, false>(im, s, t, _mm256_setzero_si256(), value);
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) value[c] = round_blend8(value[c]);
+        linear_sum16x8<kS, kT, kOneD, false, Out::Rounded>(im, s, t, _mm256_setzero_ps(), value);
     }
 }
 
 // gpu::level_sum() of one image for eight lanes with each lane's share:
 // 16-bit sums by channel, not yet rounded.
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
-[[gnu::always_inline]] GLSLRUN_AVX2 inline void level_sum16x8(const Image16& im, V s, V t, I share, V* sum) {
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void level_sum16x8(const Image16& im, V s, V t, V share, V* sum) {
     if constexpr (kLinear) {
         linear_sum16x8<kS, kT, kOneD, true>(im, s, t, share, sum);
     } else {
         level16x8<false, kS, kT, kOneD>(im, s, t, sum);
-        const V k = _mm256_cvtepi32_ps(share);
 #pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) sum[c] = _mm256_mul_ps(sum[c], k);
+        for (int c = 0; c < 4; ++c) sum[c] = _mm256_mul_ps(sum[c], share);
     }
 }
 
@@ -298,13 +381,14 @@ GLSLRUN_AVX2 void quad_lambdas(const State& s, const BatchLookup& lk, float* qua
 }
 
 // Lanes g..g+7's lambda (see the file's comment), as sample_gpu_batch()'s
-// lambdas(), from the quads' lambda_base; `texture_bias` is
-// gpu::quantize_bias() of the texture's. gpu::quantize_lambda()'s
-// floor_f() is floor8()'s there: the clamped lambda is finite and small.
-GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, const float* quad, int g) {
+// lambdas(), from their lambda_base `base` (read where the LOD is
+// implicit); `texture_bias` is gpu::quantize_bias() of the texture's.
+// gpu::quantize_lambda()'s floor_f() is floor8()'s there: the clamped
+// lambda is finite and small.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V lambdas8(const State& s, const BatchLookup& lk, V base, int g) {
     V l = _mm256_setzero_ps();
     if (lk.implicit) {
-        l = _mm256_set_m128(_mm_set1_ps(quad[g / 4 + 1]), _mm_set1_ps(quad[g / 4]));
+        l = base;
         if (lk.bias) l = _mm256_add_ps(l, quantize_bias8(_mm256_loadu_ps(lk.lod + g)));
     } else if (lk.lod) {
         l = _mm256_loadu_ps(lk.lod + g);
@@ -317,7 +401,8 @@ GLSLRUN_AVX2 V lambdas8(const State& s, const BatchLookup& lk, const float* quad
 // all ones where a second one (first + 1) is mixed in, and its 8-bit
 // weight. *_MIPMAP_LINEAR in registers (lambda is finite), *_MIPMAP_NEAREST
 // lane by lane.
-GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int* weight) {
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void levels8(const State& s, V lambda, int* first, int* second,
+                                                        int* weight) {
     if (s.nearest_mip) {
         alignas(32) float l[8];
         _mm256_store_ps(l, lambda);
@@ -352,61 +437,170 @@ GLSLRUN_AVX2 void levels8(const State& s, V lambda, int* first, int* second, int
 #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) {
         const V r = _mm256_add_ps(_mm256_mul_ps(value[c], hi), _mm256_mul_ps(value[c], lo));
-        _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), r, take));
+        if (bits == 0xff) _mm256_storeu_ps(&out[c][g], r);  // every lane: nothing to keep
+        else _mm256_storeu_ps(&out[c][g], _mm256_blendv_ps(_mm256_loadu_ps(&out[c][g]), r, take));
     }
 }
 
-// The lookups of a texture without mipmaps (one image and one filter whatever lambda is) at (s[i], t[i]).
+// The lookups of a texture without mipmaps (one image and one filter
+// whatever lambda is) at (s[i], t[i]). As sampling_direct.cpp's direct():
+// kTogether groups of eight lanes sampled one after the other with no
+// branch between them, so that the CPU overlaps one group's chain
+// (coordinates, indices, loads, blends) with the next ones' (one group at a
+// time, post's Fast frame was 0.74x Precise's); the border's rules, whose
+// groups branch on their footprints, one group at a time. A group with no
+// lane of `lanes` is sampled too (every rule keeps its indices in the
+// image, for any float) and not stored.
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 GLSLRUN_AVX2 void gpu_one(const Image16& im, const float* s, const float* t, LaneMask lanes, float (*out)[kLanes]) {
-    for (int g = 0; g < kLanes; g += 8) {
-        const int bits = int(uint32_t(lanes >> g) & 0xffu);
-        if (!bits) continue;
-        V value[4];
-        level16x8<kLinear, kS, kT, kOneD>(im, _mm256_loadu_ps(s + g), _mm256_loadu_ps(t + g), value);
-        store16(value, bits, g, out);
+    constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
+    constexpr int kTogether = kBorder ? 1 : kLanes % 32 == 0 ? 4 : kLanes % 16 == 0 ? 2 : 1;
+    for (int g = 0; g < kLanes; g += 8 * kTogether) {
+        if (!uint32_t(lanes >> g)) continue;  // none of these groups' lanes
+        V value[kTogether][4];
+#pragma GCC unroll 4
+        for (int k = 0; k < kTogether; ++k)
+            level16x8<kLinear, kS, kT, kOneD>(im, _mm256_loadu_ps(s + g + 8 * k), _mm256_loadu_ps(t + g + 8 * k),
+                                              value[k]);
+#pragma GCC unroll 4
+        for (int k = 0; k < kTogether; ++k) {
+            const int bits = int(uint32_t(lanes >> (g + 8 * k)) & 0xffu);
+            if (bits) store16(value[k], bits, g + 8 * k, out);
+        }
     }
 }
 
 using OneKernel = void (*)(const Image16&, const float*, const float*, LaneMask, float (*)[kLanes]);
 
+// The lookups of a group's lanes that share a first level: `level` of
+// `levels`, with level + 1 mixed in by `weight` where `two` (a lane's
+// second level; level < q then, so it exists).
+template <bool kLinear, Rule kS, Rule kT, bool kOneD>
+[[gnu::always_inline]] GLSLRUN_AVX2 inline void level_pass8(const State& s, const std::vector<TextureImage>& levels,
+                                                            int level, bool two, V sc, V tc, const int* weight,
+                                                            V* value) {
+    const Image16 im = image16(levels[size_t(level)], s.border);
+    if (!two) return level16x8<kLinear, kS, kT, kOneD>(im, sc, tc, value);
+    // One sum over both levels' texels, rounded once: level weighs 256 -
+    // w, level + 1 w (0 in the lanes without a second level, whose sum is
+    // then level16()'s).
+    const V w = _mm256_cvtepi32_ps(_mm256_load_si256(reinterpret_cast<const I*>(weight)));
+    V next[4];
+    constexpr bool kBorder = may_border(kS, kLinear) || (!kOneD && may_border(kT, kLinear));
+    if constexpr (kLinear && !kBorder) {
+        // Both levels' byte sums, each within 0.02 of its bytes' integer
+        // sum K1, K2 (see linear_sum16x8()), so their sum (one more
+        // rounding, below 2^-8) within 0.05 of K1 + K2: rounded once with
+        // the blend (blend16_of_sum8()), the bits of 257 K1 + 257 K2
+        // rounded as gpu::round_blend(), in fewer steps.
+        linear_sum16x8<kS, kT, kOneD, true, Out::Bytes>(im, sc, tc, _mm256_sub_ps(splat(256.0f), w), value);
+        linear_sum16x8<kS, kT, kOneD, true, Out::Bytes>(image16(levels[size_t(level) + 1], s.border), sc, tc, w,
+                                                        next);
+#pragma GCC unroll 4
+        for (int c = 0; c < 4; ++c) value[c] = blend16_of_sum8(_mm256_add_ps(value[c], next[c]));
+        return;
+    }
+    level_sum16x8<kLinear, kS, kT, kOneD>(im, sc, tc, _mm256_sub_ps(splat(256.0f), w), value);
+    level_sum16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, w, next);
+#pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) value[c] = round_blend8(_mm256_add_ps(value[c], next[c]));
+}
+
 // A mipmapped texture's lookups.
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
-    const std::vector<TextureImage>& levels = *s.levels;
     alignas(32) float quad[kQuads];
     if (lk.implicit) quad_lambdas(s, lk, quad);
     for (int g = 0; g < kLanes; g += 8) {
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
         const V sc = _mm256_loadu_ps(lk.coord[0] + g), tc = _mm256_loadu_ps(lk.coord[1] + g);
-        V value[4];
         alignas(32) int first[8], second[8], weight[8];
-        levels8(s, lambdas8(s, lk, quad, g), first, second, weight);
+        const V base = lk.implicit ? _mm256_set_m128(_mm_set1_ps(quad[g / 4 + 1]), _mm_set1_ps(quad[g / 4]))
+                                   : _mm256_setzero_ps();
+        levels8(s, lambdas8(s, lk, base, g), first, second, weight);
         const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
         const int two = _mm256_movemask_ps(_mm256_load_ps(reinterpret_cast<const float*>(second)));
         for (int left = bits; left;) {
             const int level = first[std::countr_zero(unsigned(left))];
             const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(d0, splat_i(level))));
             left &= ~take;
-            const Image16 im = image16(levels[size_t(level)], s.border);
-            if (!(two & take)) {
-                level16x8<kLinear, kS, kT, kOneD>(im, sc, tc, value);
-            } else {
-                // Their second level is level + 1, which exists (level < q).
-                // One sum over both levels' texels, rounded once: level
-                // weighs 256 - w, level + 1 w (0 in the lanes without a
-                // second level, whose sum is then level16()'s).
-                const I w = _mm256_load_si256(reinterpret_cast<const I*>(weight));
-                V next[4];
-                level_sum16x8<kLinear, kS, kT, kOneD>(im, sc, tc, _mm256_sub_epi32(splat_i(256), w), value);
-                level_sum16x8<kLinear, kS, kT, kOneD>(image16(levels[size_t(level) + 1], s.border), sc, tc, w, next);
-#pragma GCC unroll 4
-                for (int c = 0; c < 4; ++c) value[c] = round_blend8(_mm256_add_ps(value[c], next[c]));
-            }
+            V value[4];
+            level_pass8<kLinear, kS, kT, kOneD>(s, *s.levels, level, (two & take) != 0, sc, tc, weight, value);
             store16(value, take, g, out);
         }
     }
+}
+
+// A cube map's lookups: each lane's face and (s, t) on it eight lanes at a
+// time (cube_coords8(), as the batched samplers'), its lambda_base from rho
+// on that face (gpu_cube_lambdas(), lane by lane, the batched sampler's
+// own), then per group of eight lanes one pass per face and first level
+// its lanes hold (one on most groups: a quad's lanes share their face but
+// at the cube's edges), each as gpu_mip()'s. Before this, Fast's cube
+// lookups went through the batched sampler's lane arrays (each lane's image,
+// indices, offsets and weights stored and reloaded): cube_refract's Fast
+// frame was 0.70x Precise's.
+template <bool kLinear, Rule kS, Rule kT>
+GLSLRUN_AVX2 void gpu_cube(const State& s, const Texture& texture, const BatchLookup& lk, LaneMask lanes,
+                           float (*out)[kLanes]) {
+    alignas(32) int face[kLanes];
+    alignas(32) float fs[kLanes], ft[kLanes], base[kLanes];
+    cube_coords8(lk, face, fs, ft);
+    const bool mip = is_mipmap_filter(s.st->min_filter);
+    if (mip && lk.implicit) gpu_cube_lambdas(texture, lk, base);
+    for (int g = 0; g < kLanes; g += 8) {
+        const int bits = int(uint32_t(lanes >> g) & 0xffu);
+        if (!bits) continue;
+        const V sc = _mm256_loadu_ps(fs + g), tc = _mm256_loadu_ps(ft + g);
+        alignas(32) int first[8], second[8], weight[8];
+        if (mip) {
+            levels8(s, lambdas8(s, lk, lk.implicit ? _mm256_load_ps(base + g) : _mm256_setzero_ps(), g), first, second,
+                    weight);
+        } else {  // level_base, one filter (gpu_direct_samples())
+            _mm256_store_si256(reinterpret_cast<I*>(first), splat_i(s.base));
+            _mm256_store_si256(reinterpret_cast<I*>(second), _mm256_setzero_si256());
+            _mm256_store_si256(reinterpret_cast<I*>(weight), _mm256_setzero_si256());
+        }
+        // (face, first level) as one integer: fewer than 256 levels.
+        const I key = _mm256_add_epi32(_mm256_slli_epi32(_mm256_load_si256(reinterpret_cast<const I*>(face + g)), 8),
+                                       _mm256_load_si256(reinterpret_cast<const I*>(first)));
+        const int two = _mm256_movemask_ps(_mm256_load_ps(reinterpret_cast<const float*>(second)));
+        for (int left = bits; left;) {
+            const int k = std::countr_zero(unsigned(left));
+            const int f = face[g + k];
+            const int take = left & _mm256_movemask_ps(_mm256_castsi256_ps(
+                                        _mm256_cmpeq_epi32(key, splat_i((f << 8) + first[k]))));
+            left &= ~take;
+            V value[4];
+            level_pass8<kLinear, kS, kT, false>(s, texture.levels(f), first[k], (two & take) != 0, sc, tc, weight,
+                                                value);
+            store16(value, take, g, out);
+        }
+    }
+}
+
+// f.template operator()<kLinear, kS, kT>() for a cube map's filter within
+// the level and wraps where no index can be the border's (REPEAT,
+// MIRRORED_REPEAT, CLAMP_TO_EDGE, NEAREST's CLAMP): false, f not called,
+// for the others (the batched path's; a cube map's edges are usually
+// CLAMP_TO_EDGE).
+template <bool kLinear, class F>
+[[gnu::always_inline]] inline bool with_inner_rules(Rule s, Rule t, F&& f) {
+    const auto inner = [](Rule r) { return r == Rule::Repeat || r == Rule::Mirror || r == Rule::Edge; };
+    if (!inner(s) || !inner(t)) return false;
+    return with_rules_of<false, kLinear>(s, t, [&]<bool kL, Rule kS, Rule kT>() {
+        if constexpr ((kS == Rule::Repeat || kS == Rule::Mirror || kS == Rule::Edge) &&
+                      (kT == Rule::Repeat || kT == Rule::Mirror || kT == Rule::Edge))
+            f.template operator()<kL, kS, kT>();
+    });
+}
+
+template <class F>
+[[gnu::always_inline]] inline bool with_cube_rules(const SamplerState& st, F&& f) {
+    if (linear_within_level(st.mag_filter))
+        return with_inner_rules<true>(rule_of(st.wrap_s, false, true), rule_of(st.wrap_t, false, true), f);
+    return with_inner_rules<false>(rule_of(st.wrap_s, false, false), rule_of(st.wrap_t, false, false), f);
 }
 
 // f.template operator()<kLinear, kS, kT, kOneD>() for the texture's
@@ -439,10 +633,10 @@ glm::vec4 border16(const Texture& texture) {
 
 GLSLRUN_AVX2 void run_bound(const DirectSampler& d, const float* s, const float* t, LaneMask lanes,
                             float (*out)[kLanes]) {
-    Image16 im{{static_cast<const glm::vec4*>(d.texels), d.width, {}}, {d.width, splat(float(d.width))},
-               {d.height, splat(float(d.height))}, {}};
-    for (int c = 0; c < 4; ++c) im.border[c] = splat(d.border[c]);
-    reinterpret_cast<OneKernel>(d.kernel)(im, s, t, lanes, out);
+    V border[4];
+    for (int c = 0; c < 4; ++c) border[c] = splat(d.border[c]);
+    reinterpret_cast<OneKernel>(d.kernel)(image16(static_cast<const glm::vec4*>(d.texels), d.width, d.height, border),
+                                          s, t, lanes, out);
 }
 
 }  // namespace
@@ -450,7 +644,9 @@ GLSLRUN_AVX2 void run_bound(const DirectSampler& d, const float* s, const float*
 bool gpu_direct_samples(const Texture& texture) {
     const SamplerState& st = texture.sampler;
     const TextureTarget target = texture.target();
-    if ((target != TextureTarget::Tex2D && target != TextureTarget::Tex1D) || !gpu_batch_samples(texture)) return false;
+    if (!gpu_batch_samples(texture)) return false;
+    if (target == TextureTarget::Cube && !with_cube_rules(st, []<bool, Rule, Rule>() {})) return false;
+    if (target != TextureTarget::Tex2D && target != TextureTarget::Tex1D && target != TextureTarget::Cube) return false;
     if (!lod_matters(st)) return true;
     return is_mipmap_filter(st.min_filter) && linear_within_level(st.mag_filter) == linear_within_level(st.min_filter);
 }
@@ -465,7 +661,8 @@ GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& l
     const TextureImage& base = (*s.levels)[size_t(s.base)];
     const glm::vec4 border = border16(texture);
     for (int c = 0; c < 4; ++c) s.border[c] = splat(border[c]);
-    if (!is_mipmap_filter(st.min_filter))
+    const bool cube = texture.target() == TextureTarget::Cube;
+    if (!is_mipmap_filter(st.min_filter) && !cube)
         return one_kernel(texture)(image16(base, s.border), lookup.coord[0], lookup.coord[1], lanes, out);
     s.q = last_mip_level(base, st);
     s.texture_bias = gpu::quantize_bias(st.lod_bias);
@@ -473,6 +670,10 @@ GLSLRUN_AVX2 void sample_gpu_direct(const Texture& texture, const BatchLookup& l
         st.min_filter == TextureFilter::NearestMipmapNearest || st.min_filter == TextureFilter::LinearMipmapNearest;
     s.size = image_size(base);
     s.dims = texture_dims(texture.target());
+    if (cube) {
+        with_cube_rules(st, [&]<bool kLinear, Rule kS, Rule kT>() { gpu_cube<kLinear, kS, kT>(s, texture, lookup, lanes, out); });
+        return;
+    }
     with_gpu_rules(texture, [&]<bool kLinear, Rule kS, Rule kT, bool kOneD>() {
         gpu_mip<kLinear, kS, kT, kOneD>(s, lookup, lanes, out);
     });

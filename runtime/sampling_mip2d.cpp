@@ -35,7 +35,7 @@ using namespace direct8;
 
 // The first lanes of the eight quads of lanes p[0..31], in the order
 // (0, 2, 4, 6, 1, 3, 5, 7): three shuffles of the four groups' registers
-// (perf: four gathers a lookup were a fifth of the level of detail).
+// (in place of four gathers a lookup).
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V quad_leaders8(const float* p) {
     const V q01 = _mm256_shuffle_ps(load8(p), load8(p + 8), 0x00);  // (0, 0, 2, 2 | 1, 1, 3, 3)
     const V q23 = _mm256_shuffle_ps(load8(p + 16), load8(p + 24), 0x00);

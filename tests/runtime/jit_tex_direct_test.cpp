@@ -7,7 +7,8 @@
 // another unit or of none, an incomplete texture; every result word compared.
 // Both run the same one-pass kernels, so batches of close lanes (a magnified
 // image's, as the rasterizer packs them) are also compared with the lane
-// sampler, which shares no code with them.
+// sampler, which shares no code with them; mipmapped 2D textures' too
+// (the call-out's kernel reads each quad's derivatives from its first lane).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -20,6 +21,7 @@
 #include "runtime/backend_factory.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling.h"
+#include "runtime/sampling_rules.h"
 #include "tests/runtime/ir_builder.h"
 #include "tests/runtime/jit_tex_modes.h"
 
@@ -33,7 +35,7 @@ constexpr int kOtherUnit = 6;   // a nearest REPEAT texture of each target
 constexpr int kIncomplete = 9;  // mipmap filters, no mipmaps: (0, 0, 0, 1)
 
 std::shared_ptr<const Texture> texture(TextureTarget target, int w, int h, TextureFormat format, TextureFilter filter,
-                                       TextureWrap ws, TextureWrap wt, uint32_t seed) {
+                                       TextureWrap ws, TextureWrap wt, uint32_t seed, bool mipmaps = false) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> value(format == TextureFormat::RGBA8 ? 0.0f : -2.0f, 2.0f);
     TextureImage img{w, h, 1, {}};
@@ -41,6 +43,10 @@ std::shared_ptr<const Texture> texture(TextureTarget target, int w, int h, Textu
     Result<Texture> t = Texture::create(target, {std::move(img)}, format);
     REQUIRE(t.ok());
     t->sampler.min_filter = t->sampler.mag_filter = filter;
+    if (mipmaps) {  // the mipmapped 2D kernel: the same filter within a level for both
+        t->generate_mipmaps();
+        t->sampler.mag_filter = rt::sampling::linear_within_level(filter) ? TextureFilter::Linear : TextureFilter::Nearest;
+    }
     t->sampler.wrap_s = ws;
     t->sampler.wrap_t = wt;
     t->sampler.border_color = {0.25f, 1.5f, -0.5f, 0.75f};  // clamped to [0, 1] by the sampler
@@ -129,7 +135,8 @@ std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const Case& c) {
     auto bind = [&](int unit, std::shared_ptr<const Texture> t) {
         units[size_t(unit)].bound[size_t(t->target())] = std::move(t);
     };
-    bind(kUnit, texture(target, c.w, c.h, c.format, c.filter, c.ws, c.wt, c.seed));
+    bind(kUnit, texture(target, c.w, c.h, c.format, c.filter, c.ws, c.wt, c.seed,
+                        rt::is_mipmap_filter(c.filter)));
     bind(kOtherUnit, texture(target, 3, 2, TextureFormat::RGBA8, TextureFilter::Nearest, Repeat, Repeat, 7u));
     if (!c.rect)  // a rectangle has no mipmap filter: none bound on its unit
         bind(kIncomplete, texture(target, 4, 4, TextureFormat::RGBA8, TextureFilter::LinearMipmapLinear, Repeat,
@@ -147,10 +154,13 @@ float close_coordinate(int lane, int axis, float origin, float scale, float size
     return (origin + (float(pixel) + 0.5f) * scale) / size;
 }
 
-// The lane sampler's words for the implicit lookup of kUnit at (s, t).
-std::array<uint32_t, 4> lane_sample(const Texture& texture, float s, float t) {
+// The lane sampler's words for the implicit lookup of kUnit at (s, t)
+// with derivatives (ddx, ddy) (a mipmapped texture's: its quad's first lane's).
+std::array<uint32_t, 4> lane_sample(const Texture& texture, float s, float t, glm::vec2 ddx, glm::vec2 ddy) {
     rt::LaneLookup lane;
     lane.coord = {s, t, 0.0f};
+    lane.ddx = {ddx, 0.0f};
+    lane.ddy = {ddy, 0.0f};
     float rgba[4];
     if (texture.target() == TextureTarget::Rect) rt::sample_rect_lane(texture, lane, rgba);
     else rt::sample_complete_lane(texture, lane, rgba);
@@ -158,9 +168,10 @@ std::array<uint32_t, 4> lane_sample(const Texture& texture, float s, float t) {
 }
 
 // Both backends over one case, eight rounds: 0-1 whole batches (1: the if
-// taken by two lanes of three); 2 a partial live mask; 3 helper lanes that
+// taken by two lanes of three); 2 a partial live mask (whole quads where mipmapped); 3 helper lanes that
 // skip their lookups; 4-5 mixed units per lane (some out of range); 6-7
-// close lanes (0.3 and 0.6 texels a pixel), Precise's also against the lane sampler.
+// close lanes (0.3 and 0.6 texels a pixel; a mipmapped texture's 0.3 and
+// 2.7, minified), Precise's also against the lane sampler.
 void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::CompiledShader& jit, const Case& c) {
     const auto units = units_of(c);
     const uint32_t uniforms[] = {uint32_t(kUnit)};
@@ -169,14 +180,18 @@ void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::Compi
     std::mt19937 rng(c.seed * 977u);
     const float scale_s = c.rect ? float(c.w) : 1.0f, scale_t = c.rect ? float(c.h) : 1.0f;
     for (int round = 0; round < 8; ++round) {
-        const rt::LaneMask live = round == 2 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
+        // A mipmapped texture's partial mask keeps quads whole: a quad's LOD
+        // is its first lane's, whose derivative registers the two backends
+        // leave differently where that lane is not live.
+        const uint64_t partial = rt::is_mipmap_filter(c.filter) ? 0x0ff00ff00ff00ff0ull : 0x5a5a5a5a5a5a5a5aull;
+        const rt::LaneMask live = round == 2 ? rt::LaneMask(partial) & rt::kAllLanes : rt::kAllLanes;
         const rt::LaneMask skipped = round == 3 ? rt::LaneMask(0x0f0f0f0f0f0f0f0full) & rt::kAllLanes : 0;
         std::vector<float> s(rt::kLanes), t(rt::kLanes);
         const bool close = round >= 6;
         const float origin_s = std::uniform_real_distribution<float>(-2.0f, float(c.w) + 2.0f)(rng);
         const float origin_t = std::uniform_real_distribution<float>(-2.0f, float(c.h) + 2.0f)(rng);
         for (int lane = 0; lane < rt::kLanes; ++lane) {
-            const float texels = round == 6 ? 0.3f : 0.6f;
+            const float texels = round == 6 ? 0.3f : (rt::is_mipmap_filter(c.filter) ? 2.7f : 0.6f);
             s[size_t(lane)] = close ? close_coordinate(lane, 0, origin_s, texels, c.rect ? 1.0f : float(c.w))
                                     : coordinate(rng, scale_s);
             t[size_t(lane)] = close ? close_coordinate(lane, 1, origin_t, texels, c.rect ? 1.0f : float(c.h))
@@ -211,7 +226,9 @@ void compare(const Shader& sh, const rt::CompiledShader& interp, const rt::Compi
         const Texture& tex = *units[size_t(kUnit)].bound[size_t(c.rect ? TextureTarget::Rect : TextureTarget::Tex2D)];
         if (!close || c.mode.precision != Precision::Precise || !tex.complete()) continue;  // incomplete: (0, 0, 0, 1)
         for (int lane = 0; lane < rt::kLanes; ++lane) {
-            const std::array<uint32_t, 4> want = lane_sample(tex, s[size_t(lane)], t[size_t(lane)]);
+            const auto derivative = [&](uint32_t k) { return ia->lanes_f(sh.block + k)[lane & ~3]; };
+            const std::array<uint32_t, 4> want = lane_sample(tex, s[size_t(lane)], t[size_t(lane)],
+                                                             {derivative(2), derivative(3)}, {derivative(4), derivative(5)});
             for (uint32_t k = 0; k < ir::kTexResults; ++k) {
                 INFO((c.rect ? "rect" : "2D") << " filter " << int(c.filter) << " wrap " << int(c.ws) << ","
                      << int(c.wt) << " " << c.w << "x" << c.h << " round " << round << " lane " << lane << " s "
@@ -236,9 +253,11 @@ TEST_CASE("generated 2D and rectangle lookups give the tex kernel's words", "[ru
             auto jit = rt::compile_shader(sh->b.sh, rt::Runner::Jit, mode.precision, mode.fast_ops, true);
             REQUIRE(jit);
             uint32_t state = 0;
-            for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear})
+            for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Linear,
+                                               TextureFilter::LinearMipmapLinear, TextureFilter::NearestMipmapNearest})
                 for (const TextureWrap ws : wraps)
                     for (const TextureWrap wt : wraps) {
+                        if (rect && rt::is_mipmap_filter(filter)) continue;  // no mipmaps
                         const int* size = sizes[state % 7];
                         const TextureFormat format = state % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8;
                         compare(*sh, *interp, *jit, {mode, rect, filter, ws, wt, size[0], size[1], format, ++state});

@@ -11,6 +11,8 @@
 // (NaN, infinite, huge and denormal coordinates) and close ones (as the
 // rasterizer packs a magnified image's), partial masks, lanes that skip
 // their lookups, lanes of another unit or of none, an incomplete texture.
+// 2D colour lookups too, for the one-pass samplers' fallback (mipmapped
+// states under partial masks; jit_tex_direct_test.cpp has their sweep).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -337,7 +339,8 @@ TEST_CASE("generated 1D, 3D, cube and shadow lookups give the lane sampler's wor
     const LookupKind kinds[] = {{TextureTarget::Tex1D, false, "1D"},
                           {TextureTarget::Tex3D, false, "3D"},
                           {TextureTarget::Cube, false, "cube"},
-                          {TextureTarget::Tex2D, true, "shadow 2D"}};
+                          {TextureTarget::Tex2D, true, "shadow 2D"},
+                          {TextureTarget::Tex2D, false, "2D"}};
     for (const LookupKind& kind : kinds) {
         SECTION(kind.name) { sweep(kind, states_of(kind)); }
     }
