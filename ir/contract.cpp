@@ -9,8 +9,11 @@
 //     read of it is such an add in the block that computes it: one compare
 //     or one read in a nested block keeps it a rounded product everywhere;
 //   - an add of two products contracts the left one (x*x - y*y is
-//     fma(x, x, -(y*y))), unless that is a product by ±1, which the GPU's
-//     compiler drops (dot(vec2(1.0, a), vec2(c, b)) is fma(a, b, c));
+//     fma(x, x, -(y*y))), but a built-in's (dot, matrix products) the right
+//     one: fma(x1, y1, x0*y0), as the GPU's DP lowering (scenes/programs/
+//     gooch.frag's strokes, on the diagonal where dot(p, (k, -k)) is 0);
+//     a product by ±1 is none, the GPU's compiler drops it
+//     (dot(vec2(1.0, a), vec2(c, b)) is fma(a, b, c));
 //   - a product with a factor that is itself a product by a power of two,
 //     (2x)*y, is not contracted: the GPU's compiler moves the exact factor
 //     out, ((x*y)*2) + c, and the add then fuses with the exact scaling, so
@@ -118,10 +121,31 @@ const Instr* contractible(const Census& census, const Block& block, size_t at, R
                              [&](const Instr& mul) { return !census.by_one(mul) && !census.scaled_factor(mul); });
 }
 
+// The source location of the node of block[..at) holding `in`.
+const SourceLoc* loc_of(const Block& block, size_t at, const Instr* in) {
+    for (size_t i = at; i-- > 0;)
+        if (&block[i].instr == in) return &block[i].loc;
+    return nullptr;
+}
+
+bool same_loc(const SourceLoc* a, const SourceLoc& b) {
+    return a && a->line == b.line && a->column == b.column && a->source == b.source;
+}
+
 void contract(const Census& census, Block& body) {
     static constexpr Op kOps[3] = {Op::ffma, Op::ffms, Op::ffnma};
     mad_scan::for_each_add(body, [&](const Block& block, size_t at, Instr& in) {
-        mad_scan::rewrite(in, kOps, [&](Reg p) { return contractible(census, block, at, p); });
+        const Instr* left = contractible(census, block, at, in.src[0]);
+        const Instr* right = in.src[1] == in.src[0] ? nullptr : contractible(census, block, at, in.src[1]);
+        // A built-in's sum of products (dot, a matrix product: the add and both products at the
+        // call's location) accumulates as the GPU's DP: x0*y0 rounded, then fma(x1, y1, it).
+        const SourceLoc& here = block[at].loc;
+        const bool builtin = left && right && same_loc(loc_of(block, at, left), here) &&
+                             same_loc(loc_of(block, at, right), here);
+        mad_scan::rewrite(in, kOps, [&](Reg p) {
+            if (p == in.src[0]) return builtin ? nullptr : left;
+            return right;
+        });
     });
 }
 

@@ -48,6 +48,18 @@ TEST_CASE("contract takes the left product of a sum of two", "[ir][contract]") {
     CHECK(count_op(t, Op::fmul) == 1);  // y*y, rounded
 }
 
+TEST_CASE("contract takes the right product of a built-in's sum of two", "[ir][contract]") {
+    Builder b;
+    Reg x = input(b, "x"), y = input(b, "y");
+    Reg d = b.alu(Op::fadd, {b.alu(Op::fmul, {x, x}), b.alu(Op::fmul, {y, y})});  // dot(v, v)
+    for (ir::Node& n : b.sh.body) n.loc = ir::SourceLoc{7, 12, 0};  // one call's location
+    b.output("d", d);
+    ir::Shader t = check_pass(b.sh, contract);
+    const ir::Instr* w = writer_of(t, d);
+    REQUIRE(w);
+    CHECK((w->op == Op::ffma && w->src[0] == y && w->src[1] == y));
+}
+
 TEST_CASE("contract leaves products with other reads, other blocks and scaled factors alone", "[ir][contract]") {
     Builder b;
     Reg x = input(b, "x"), y = input(b, "y"), c = input(b, "c");
