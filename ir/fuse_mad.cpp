@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ir/flow.h"
+#include "ir/mad_scan.h"
 #include "ir/passes.h"
 
 namespace glslrun::ir {
@@ -35,78 +36,25 @@ std::vector<uint32_t> count_reads(const Shader& shader) {
     return reads;
 }
 
-bool writes_any(const Node& n, Reg a, Reg b, Reg c) {
-    if (n.kind == NodeKind::Call) return true;
-    bool hit = false;
-    auto check = [&](Reg r) { hit = hit || r == a || r == b || r == c; };
-    if (n.kind == NodeKind::Instr) {
-        flow::for_each_write(n.instr, check);
-        return hit;
-    }
-    for (const Block* inner : {&n.body, &n.alt}) {
-        flow::Writes w = flow::writes_of(*inner);
-        if (w.calls) return true;
-        for (Reg r : w.regs) check(r);
-    }
-    return hit;
+// The fmul of operand p at block[at], if p is read nowhere else.
+const Instr* single_read_product(const std::vector<uint32_t>& reads, const Block& block, size_t at, Reg p) {
+    if (p >= reads.size() || reads[p] != 1) return nullptr;
+    return mad_scan::product(block, at, p, kWindow, [](const Instr&) { return true; });
 }
 
-struct Fuser {
-    const std::vector<uint32_t>& reads;
-
-    // The fmul at block[i] that the read of `p` at block[at] sees, with its
-    // operands unchanged until `at`; nullptr if there is none.
-    const Instr* product(const Block& block, size_t at, Reg p) const {
-        if (p >= reads.size() || reads[p] != 1) return nullptr;
-        size_t stop = at > kWindow ? at - kWindow : 0;
-        for (size_t i = at; i-- > stop;) {
-            const Node& n = block[i];
-            bool is_def = n.kind == NodeKind::Instr && n.instr.dst == p;
-            if (!is_def) {
-                if (writes_any(n, p, p, p)) return nullptr;
-                continue;
-            }
-            const Instr& mul = n.instr;
-            if (mul.op != Op::fmul || mul.src[0] == p || mul.src[1] == p) return nullptr;
-            for (size_t j = i + 1; j < at; ++j)
-                if (writes_any(block[j], mul.src[0], mul.src[1], p)) return nullptr;
-            return &mul;
-        }
-        return nullptr;
-    }
-
-    void fuse(const Block& block, size_t at, Instr& in) const {
-        // p + c, c + p (fadd commutes), p - c, c - p.
-        for (int k = 0; k < 2; ++k) {
-            const Instr* mul = product(block, at, in.src[k]);
-            if (!mul) continue;
-            Reg c = in.src[1 - k];
-            in.op = in.op == Op::fadd ? Op::fmad : (k == 0 ? Op::fmsub : Op::fnmadd);
-            in.src[0] = mul->src[0];
-            in.src[1] = mul->src[1];
-            in.src[2] = c;
-            return;
-        }
-    }
-
-    void run(Block& block) const {
-        for (size_t i = 0; i < block.size(); ++i) {
-            Node& n = block[i];
-            run(n.body);
-            run(n.alt);
-            if (n.kind == NodeKind::Instr && (n.instr.op == Op::fadd || n.instr.op == Op::fsub))
-                fuse(block, i, n.instr);
-        }
-    }
-};
+void fuse(const std::vector<uint32_t>& reads, Block& body) {
+    static constexpr Op kOps[3] = {Op::fmad, Op::fmsub, Op::fnmadd};
+    mad_scan::for_each_add(body, [&](const Block& block, size_t at, Instr& in) {
+        mad_scan::rewrite(in, kOps, [&](Reg p) { return single_read_product(reads, block, at, p); });
+    });
+}
 
 }  // namespace
 
 void fuse_multiply_add(Shader& shader) {
     std::vector<uint32_t> reads = count_reads(shader);
-    Fuser fuser{reads};
-    fuser.run(shader.body);
-    for (Function& f : shader.functions) fuser.run(f.body);
+    fuse(reads, shader.body);
+    for (Function& f : shader.functions) fuse(reads, f.body);
 }
 
 }  // namespace glslrun::ir

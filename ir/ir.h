@@ -37,7 +37,9 @@ enum class OpKind : uint8_t { Alu, Special };
 // Precision::Fast's class of an op (the table's `fast` column): Exact ops
 // keep their Precise semantics in Fast; each other class has approximate
 // kernels, which rt::FastOps switches on class by class.
-enum class FastClass : uint8_t { Exact, Rsqrt, ExpLog, Pow, SinCos };
+// Fma is 6, bit 5: bit 4 is the texture lookups' (rt::kFastTexture), which no
+// op of the table carries.
+enum class FastClass : uint8_t { Exact, Rsqrt, ExpLog, Pow, SinCos, Fma = 6 };
 // A class as a mask bit (rt::FastOps): 0 for Exact, else bit c - 1.
 constexpr uint32_t fast_class_bit(FastClass c) { return c == FastClass::Exact ? 0u : 1u << (uint32_t(c) - 1); }
 // Operand/result type classes of the table: F, I, B, T (instruction type), X.

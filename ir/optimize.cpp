@@ -1,5 +1,5 @@
 // The pass pipeline: inline, unroll, then (fold, copyprop, dead_stores, dce) until nothing changes
-// (at most a few rounds), then fuse_mad, hoist, dce, sqrt_divisor and regalloc. With
+// (at most a few rounds), then contract, fuse_mad, hoist, dce, sqrt_divisor and regalloc. With
 // PassOptions::verify the verifier runs after every pass and its first complaint is
 // returned, naming the pass.
 #include <cstdint>
@@ -73,6 +73,8 @@ std::string optimize(Shader& shader, const PassOptions& options) {
         if (!(error = check(shader, "dce", options.verify)).empty()) return error;
         if (fingerprint(shader) == before) break;
     }
+    contract_multiply_add(shader);
+    if (!(error = check(shader, "contract", options.verify)).empty()) return error;
     fuse_multiply_add(shader);
     if (!(error = check(shader, "fuse_mad", options.verify)).empty()) return error;
     hoist_uniform_code(shader);

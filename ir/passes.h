@@ -53,6 +53,10 @@ void propagate_copies(Shader& shader);
 // control flow.
 void eliminate_dead_code(Shader& shader);
 
+// ir/contract.cpp: the multiply-adds NVIDIA's compiler contracts become
+// ffma/ffms/ffnma (one rounding in Precision::Fast, two in the others).
+// Before fuse_mad.
+void contract_multiply_add(Shader& shader);
 // ir/fuse_mad.cpp: an fmul whose only reader is an fadd/fsub in the same
 // block becomes part of it (fmad, fmsub, fnmadd: the same two roundings).
 void fuse_multiply_add(Shader& shader);

@@ -41,7 +41,8 @@ enum FastOps : uint32_t {
     kFastPow = 1u << 2,     // fpow
     kFastSinCos = 1u << 3,  // fsin, fcos
     kFastTexture = 1u << 4,  // tex: the GPU's filter weights and level of detail (runtime/sampling_rules.h)
-    kAllFastOps = (1u << 5) - 1,
+    kFastFma = 1u << 5,  // ffma, ffms, ffnma: one rounding (ir/contract.cpp)
+    kAllFastOps = (1u << 6) - 1,
 };
 
 // Who runs a shader's code: the interpreter, or the JIT's native code. The

@@ -1,6 +1,7 @@
 // Precision::Fast's kernels: the ops that GPUs approximate (inversesqrt,
 // exp/exp2/log/log2, pow, sin, cos) call glslrun::math::fast (ir/fast_math.h),
 // texture lookups filter with the GPU's arithmetic (kernels::tex_gpu),
+// the multiply-adds the GPU's compiler contracts round once (ffma, ffms, ffnma),
 // and a square root read only as a divisor (normalize, x / sqrt(y):
 // ir/sqrt_divisor.cpp) becomes the fast rsqrt and multiplies; every other op
 // keeps its Precise kernel.
@@ -63,6 +64,35 @@ GLSLRUN_FAST_LANE(fsin, 1, math::fast::sin(a))
 GLSLRUN_FAST_LANE(fcos, 1, math::fast::cos(a))
 #undef GLSLRUN_FAST_LANE
 
+// The contracted multiply-adds (ir/contract.cpp): one rounding, as the GPU's
+// FFMA. A NaN operand is passed on quieted, a's before b's before c's, as
+// the FMA instructions do with a as their first source (the JIT's
+// vfmadd213ps, runtime/jit/alu.cpp); only without one does an invalid
+// product or sum give the default NaN. ffms and ffnma negate c or a first
+// (a NaN's sign too), in both back ends.
+inline float fma_a_nan_first(float a, float b, float c) {
+    if (a != a) return a + a;
+    if (b != b) return b + b;
+    if (c != c) return c + c;
+    return std::fma(a, b, c);
+}
+template <ir::Op op>
+struct FmaLane {
+    static constexpr int arity = 3;
+    static uint32_t eval(uint32_t wa, uint32_t wb, uint32_t wc) {
+        const float a = std::bit_cast<float>(wa), b = std::bit_cast<float>(wb), c = std::bit_cast<float>(wc);
+        if constexpr (op == ir::Op::ffma) return std::bit_cast<uint32_t>(fma_a_nan_first(a, b, c));
+        else if constexpr (op == ir::Op::ffms) return std::bit_cast<uint32_t>(fma_a_nan_first(a, b, -c));
+        else return std::bit_cast<uint32_t>(fma_a_nan_first(-a, b, c));
+    }
+};
+template <>
+struct FastLane<ir::Op::ffma> : FmaLane<ir::Op::ffma> {};
+template <>
+struct FastLane<ir::Op::ffms> : FmaLane<ir::Op::ffms> {};
+template <>
+struct FastLane<ir::Op::ffnma> : FmaLane<ir::Op::ffnma> {};
+
 template <ir::Op op>
 void alu(const Step<uint32_t>& s, Machine<uint32_t>& m) {
     kernels::emit(s, m, [&](uint32_t* out) { kernels::alu_lanes<uint32_t, FastLane<op>>(s, out); });
@@ -80,9 +110,11 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 #define GLSLRUN_FAST_CASE_ExpLog GLSLRUN_FAST_CASE
 #define GLSLRUN_FAST_CASE_Pow GLSLRUN_FAST_CASE
 #define GLSLRUN_FAST_CASE_SinCos GLSLRUN_FAST_CASE
+#define GLSLRUN_FAST_CASE_Fma GLSLRUN_FAST_CASE
 #define OP(name, arity, res, opnd, kind, fast, props, expr) GLSLRUN_FAST_CASE_##fast(name)
 #include "ir/opcodes.def"
 #undef OP
+#undef GLSLRUN_FAST_CASE_Fma
 #undef GLSLRUN_FAST_CASE_SinCos
 #undef GLSLRUN_FAST_CASE_Pow
 #undef GLSLRUN_FAST_CASE_ExpLog
@@ -98,7 +130,8 @@ Kernel<uint32_t> kernel_for(ir::Op op) {
 // The FastOps bit of an op's class (ir/opcodes.def's `fast` column); 0 for Exact ops.
 inline uint32_t fast_op_class(ir::Op op) { return ir::fast_class_bit(ir::op_info(op).fast); }
 static_assert(kFastRsqrt == 1u << (uint32_t(ir::FastClass::Rsqrt) - 1) &&
-              kFastSinCos == 1u << (uint32_t(ir::FastClass::SinCos) - 1));
+              kFastSinCos == 1u << (uint32_t(ir::FastClass::SinCos) - 1) &&
+              kFastFma == ir::fast_class_bit(ir::FastClass::Fma));
 
 // The fp32 modes' kernel of `op`: Fast's where it has one and its class is in
 // `fast_ops`, else Precise's.

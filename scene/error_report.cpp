@@ -186,7 +186,7 @@ Result<std::vector<AblationRow>> ablate(Program& fast, const Scene& scene, const
     static constexpr std::pair<const char*, uint32_t> kClasses[] = {
         // inversesqrt: frsqrt, and the square roots only divided by (normalize, x / sqrt(y); ir/sqrt_divisor.cpp).
         {"none", 0}, {"inversesqrt", rt::kFastRsqrt}, {"exp_log", rt::kFastExpLog}, {"pow", rt::kFastPow},
-        {"sin_cos", rt::kFastSinCos}};
+        {"sin_cos", rt::kFastSinCos}, {"fma", rt::kFastFma}};
     std::vector<AblationRow> rows;
     uint32_t saved = state_of(fast).fast_ops;
     for (const auto& [name, ops] : kClasses) {

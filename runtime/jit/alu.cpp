@@ -136,6 +136,11 @@ llvm::Value* Emitter::first_operand_op(bool multiply, llvm::Value* a, llvm::Valu
             parts.push_back(c ? call(add, {r, part(c, i)}) : r);
         }
     }
+    return join_parts(std::move(parts));
+}
+
+// Native vectors back into one vector of kLanes, in order.
+llvm::Value* Emitter::join_parts(std::vector<llvm::Value*> parts) {
     while (parts.size() > 1) {
         std::vector<llvm::Value*> joined;
         const unsigned n = llvm::cast<llvm::FixedVectorType>(parts[0]->getType())->getNumElements();
@@ -292,8 +297,46 @@ llvm::Value* Emitter::emit_float_op(Op op, llvm::Value* a, llvm::Value* b, llvm:
     case Op::fmad: return first_operand_op(true, a, b, c);
     case Op::fmsub: return b_.CreateFSub(product(), c);
     case Op::fnmadd: return b_.CreateFSub(c, product());
+    case Op::ffma: case Op::ffms: case Op::ffnma: {
+        const Op twice = op == Op::ffma ? Op::fmad : op == Op::ffms ? Op::fmsub : Op::fnmadd;
+        if (precision_ != Precision::Fast || !(fast_ops_ & kFastFma)) return emit_float_op(twice, a, b, c);
+        return fused_multiply_add(op == Op::ffnma ? b_.CreateFNeg(a) : a, b, op == Op::ffms ? b_.CreateFNeg(c) : c);
+    }
     default: return nullptr;
     }
+}
+
+// Fast's contracted a*b + c, one rounding, with runtime/fast_kernels.h's
+// FmaLane's NaN: with AVX2 one vfmadd213ps per native vector, its operands in
+// the order that passes a's NaN on, then b's, then c's (llvm.fma lets LLVM
+// pick the form, and with it the order).
+// The baseline has no FMA: llvm.fma calls libm's fmaf per lane, and selects
+// pass the operands' NaNs on in FmaLane's order.
+llvm::Value* Emitter::fused_multiply_add(llvm::Value* a, llvm::Value* b, llvm::Value* c) {
+    if (!avx2_) {
+        llvm::Value* r = call_intrinsic(llvm::Intrinsic::fma, {a, b, c});
+        for (llvm::Value* v : {c, b, a}) r = b_.CreateSelect(b_.CreateFCmpUNO(v, v), b_.CreateFAdd(v, v), r);
+        return r;
+    }
+    const bool wide = avx512();
+    const unsigned width = std::min<unsigned>(kLanes, wide ? 16 : 8);
+    auto* part_type = llvm::FixedVectorType::get(f32_, width);
+    auto* fma = llvm::InlineAsm::get(llvm::FunctionType::get(part_type, {part_type, part_type, part_type}, false),
+                                     "vfmadd213ps $3, $2, $0", wide ? "=v,0,v,v" : "=x,0,x,x", false);
+    std::vector<llvm::Value*> parts;
+    for (unsigned i = 0; i < kLanes; i += width) {
+        std::vector<int> lanes(width);
+        std::iota(lanes.begin(), lanes.end(), int(i));
+        // b is the destination, a the second operand: the instruction passes on the NaN of its
+        // second operand, then of its first (measured: tests/runtime/contract_lanes_test.cpp).
+        llvm::CallInst* made = b_.CreateCall(fma, {b_.CreateShuffleVector(b, lanes), b_.CreateShuffleVector(a, lanes),
+                                                   b_.CreateShuffleVector(c, lanes)});
+        made->setDoesNotAccessMemory();
+        made->setDoesNotThrow();
+        made->addFnAttr(llvm::Attribute::WillReturn);
+        parts.push_back(made);
+    }
+    return join_parts(parts);
 }
 
 llvm::Value* Emitter::emit_int_op(Op op, llvm::Value* a, llvm::Value* b) {

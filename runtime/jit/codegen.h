@@ -64,6 +64,8 @@ private:
     bool emit_native(const ir::Instr& in, llvm::Value** result);
     llvm::Value* emit_float_op(ir::Op op, llvm::Value* a, llvm::Value* b, llvm::Value* c);
     llvm::Value* first_operand_op(bool multiply, llvm::Value* a, llvm::Value* b, llvm::Value* c = nullptr);
+    llvm::Value* fused_multiply_add(llvm::Value* a, llvm::Value* b, llvm::Value* c);
+    llvm::Value* join_parts(std::vector<llvm::Value*> parts);
     static bool non_nan_constant(llvm::Value* v);  // a float vector constant without NaNs
     static bool at_most_one_nan(llvm::Value* a, llvm::Value* b);  // a, b cannot be two different NaNs
     llvm::Constant* exact_reciprocal(llvm::Value* b);

@@ -381,14 +381,15 @@ Value* MathEmitter::fast_op(Op op, Value* a, Value* b) {
 }  // namespace
 
 // Every op of the table's Fast classes in Fast, its Libm ops in both (but
-// Precise fpow: emit_pow_common). Not Fast's Rsqrt class: 1/sqrt(a) and
+// Precise fpow: emit_pow_common). Not Fast's Fma class (llvm.fma, in
+// runtime/jit/alu.cpp), nor its Rsqrt class: 1/sqrt(a) and
 // a * b, which the native code writes inline (runtime/jit/alu.cpp) with the
 // kernels' bits under the kernels' FTZ/DAZ, where a call to a shared
 // function cost more than the two instructions (a loop of 16 normalizes
 // per fragment: 1.5x Precise's time as a call, Precise's time inline).
 bool generates_math(Op op, bool fast) {
     const ir::FastClass fast_class = ir::op_info(op).fast;
-    if (fast && fast_class == ir::FastClass::Rsqrt) return false;
+    if (fast && (fast_class == ir::FastClass::Rsqrt || fast_class == ir::FastClass::Fma)) return false;
     if (fast && fast_class != ir::FastClass::Exact) return true;
     return ir::has(op, ir::OpProp::Libm) && (fast || op != Op::fpow);
 }

@@ -149,3 +149,29 @@ TEST_CASE("Fast interpolates and filters as NVIDIA's driver: the textured teapot
     }
     CHECK(differing_pixels(job, Backend::Interp, Precision::Precise).size() > 8000);
 }
+
+// Multiply-add contraction (ir/contract.cpp) against the GPU's images of
+// tools/gpu_probes/fma.frag, fma2.frag (bands of 32 rows, each one shape of
+// multiply-add) and mandel.frag (mandelbrot's loop on exact points). The
+// bands left out are the GPU compiler's algebra that Fast does not model
+// (docs/precision.md, "The GPU's multiply-add contraction"): fma.frag's band
+// 3 and fma2.frag's band 2 ((p - 1) - m reassociated), fma2.frag's bands 3
+// ((p*0.5)*2 folded), 6 to 9 (the common factor 2 or 1/2 taken out) and 13
+// (-(a*b) + P).
+TEST_CASE("Fast contracts multiply-adds as NVIDIA's compiler: the GPU probes' images", "[scene][gpu]") {
+    auto band = [](int y) { return (511 - y) / 32; };
+    for (Backend backend : {Backend::Interp, Backend::Jit}) {
+        INFO("backend " << int(backend));
+        for (auto [x, y] : differing("fma", backend, Precision::Fast)) {
+            INFO("fma.frag pixel " << x << ", " << y << " from the top");
+            CHECK(band(y) == 3);
+        }
+        for (auto [x, y] : differing("fma2", backend, Precision::Fast)) {
+            INFO("fma2.frag pixel " << x << ", " << y << " from the top");
+            CHECK((band(y) == 2 || band(y) == 3 || (band(y) >= 6 && band(y) <= 9) || band(y) == 13));
+        }
+        CHECK(differing("mandel", backend, Precision::Fast).empty());  // 19,542 of 131,072 pixels unfused
+    }
+    // Precise rounds every product: most bands of fma.frag are not its image.
+    CHECK(differing("fma", Backend::Interp, Precision::Precise).size() > 40000);
+}
