@@ -44,38 +44,6 @@ namespace {
 
 constexpr unsigned kRegAlign = kLanes * 4 < 64 ? kLanes * 4 : 64;  // as a register's (alu.cpp)
 
-// A lookup's BoundKernel kind; Count where none is bound for it.
-KernelKind kind_of(const ir::TexInfo& info) {
-    using enum ir::TexTarget;
-    if (info.shadow) return info.target == T2D ? KernelKind::Shadow2D : KernelKind::Count;
-    switch (info.target) {
-    case T1D: return KernelKind::T1D;
-    case T3D: return KernelKind::T3D;
-    case Cube: return KernelKind::Cube;
-    default: return KernelKind::Count;
-    }
-}
-
-// Whether a 2D or rectangle colour lookup (the one-pass samplers'; a
-// shadow lookup's texture is a depth one).
-bool one_pass_lookup(const ir::TexInfo& info) {
-    return (info.target == ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && !info.shadow;
-}
-
-// Whether an op's lookups go to a bound sampler where the texture allows.
-// Under Fast's GPU filtering (`gpu`), RGBA8 1D and cube textures (nearly
-// all) are its own paths', which the call-out reaches with less around
-// it (toon in Fast against main's build, interleaved at load 10: 3 to 4%
-// slower through run_tex, 0 to 2% through the call-out); its depth and 3D
-// textures take the kernels.
-bool direct_candidate(const ir::Instr& in, bool gpu) {
-    if (in.op != ir::Op::tex) return false;
-    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
-    const KernelKind kind = kind_of(info);
-    if (gpu && (kind == KernelKind::T1D || kind == KernelKind::Cube)) return false;
-    return one_pass_lookup(info) || kind != KernelKind::Count;
-}
-
 // fill_defaults() of the lanes that skip their lookups (the sampler writes
 // the others): a third of run_tex() when done for every batch.
 GLSLRUN_AVX2 void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
@@ -96,7 +64,7 @@ GLSLRUN_AVX2 bool run_bound(const Context& ctx, uint64_t index, const ir::TexInf
         sampler.run(sampler, operands, operands + kLanes, lookups, result);
         return true;
     }
-    const KernelKind kind = kind_of(info);
+    const KernelKind kind = kernel_kind(info);
     if (kind == KernelKind::Count || !ctx.kernels || !ctx.lookups) return false;
     const BoundKernel& kernel = ctx.kernels[kernel_slot(unit, kind)];
     if (!kernel.run) return false;
@@ -172,7 +140,7 @@ GLSLRUN_AVX2 void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uin
 }
 
 bool Emitter::emit_tex_direct(const ir::Instr& in) {
-    if (!avx2_ || !direct_candidate(in, precision_ == Precision::Fast && (fast_ops_ & kFastTexture))) return false;
+    if (!avx2_ || !tex_runs_direct(in, precision_ == Precision::Fast && (fast_ops_ & kFastTexture))) return false;
     call_outs_.push_back({kernel_for(in.op, avx2_, precision_, fast_ops_), in});
     const uint32_t operands = ir::TexInfo::decode(in.imm[2]).operand_count();
     // The unit and the operand block go to the register file, as a

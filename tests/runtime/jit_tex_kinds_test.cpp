@@ -23,6 +23,7 @@
 
 #include "ir/scalar_ops.h"
 #include "runtime/backend_factory.h"
+#include "runtime/jit/context.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling.h"
 #include "runtime/sampling_rules.h"
@@ -343,5 +344,35 @@ TEST_CASE("generated 1D, 3D, cube and shadow lookups give the lane sampler's wor
                           {TextureTarget::Tex2D, false, "2D"}};
     for (const LookupKind& kind : kinds) {
         SECTION(kind.name) { sweep(kind, states_of(kind)); }
+    }
+}
+
+// Which lookups the generated code sends to run_tex rather than the plain
+// call-out (tex_runs_direct(), decided before the textures are known): under
+// Fast's GPU filtering, the RGBA8 1D, 3D and cube textures are its own
+// paths' (lanes_only()) and bind no kernel, so run_tex would only add its
+// test to the call-out. The bits are the same either way (the sweep above).
+TEST_CASE("Fast's GPU-filtered kinds keep the plain call-out", "[runtime][jit_tex]") {
+    const LookupKind kinds[] = {{TextureTarget::Tex1D, false, "1D"},
+                                {TextureTarget::Tex3D, false, "3D"},
+                                {TextureTarget::Cube, false, "cube"},
+                                {TextureTarget::Tex2D, true, "shadow 2D"},
+                                {TextureTarget::Tex2D, false, "2D"}};
+    const State rgba8{TextureFilter::Linear, {TextureWrap::Repeat, TextureWrap::Repeat, TextureWrap::Repeat},
+                      CompareFunc::Less, DepthTextureMode::Luminance, {4, 4, 4}, 0, TextureFormat::RGBA8};
+    for (const LookupKind& kind : kinds) {
+        INFO(kind.name);
+        ir::TexInfo info;
+        info.target = ir::TexTarget(kind.target);
+        info.shadow = kind.shadow;
+        ir::Instr in;
+        in.op = ir::Op::tex;
+        in.imm[2] = info.encode();
+        const bool filtered = rt::lanes_only(*texture(kind, rgba8, false, 1u), rt::SamplingRules::Gpu);
+        // A 2D colour texture's filtered lookups have Fast's own one-pass sampler.
+        const bool own_sampler = kind.target == TextureTarget::Tex2D && !kind.shadow;
+        CHECK(filtered == !kind.shadow);
+        CHECK(rt::jit::tex_runs_direct(in, true) == (own_sampler || !filtered));
+        CHECK(rt::jit::tex_runs_direct(in, false));
     }
 }
