@@ -70,6 +70,11 @@ struct Context {
     // holds no address.
     void (*tex)(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
                 uint32_t* out) = nullptr;
+    // Per call-out, whether a run_tex lookup's derivative rows go to the
+    // register file (tex_derivatives()): 0 where no bound texture of its
+    // target reads them, so the generated code neither stores them nor
+    // (LLVM sinking them) computes them.
+    const uint8_t* derivatives = nullptr;
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
@@ -77,6 +82,7 @@ inline constexpr size_t kCreditOffset = offsetof(Context, credit);
 inline constexpr size_t kAliveOffset = offsetof(Context, alive);
 inline constexpr size_t kErrorLineOffset = offsetof(Context, error_line);
 inline constexpr size_t kTexOffset = offsetof(Context, tex);
+inline constexpr size_t kDerivativesOffset = offsetof(Context, derivatives);
 
 // Context::direct's entry of a unit's 2D texture (rect false) or rectangle.
 constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2 + (rect ? 1 : 0); }
@@ -153,6 +159,15 @@ struct CallOut {
 // The BatchLookup of each `tex` call-out among `calls` (its Step in
 // `steps`) over the register file: its coordinates and reference.
 std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps);
+
+// Per call-out among `calls`, 1 where a `tex` with derivative rows may
+// have them read: some unit's texture of its target (`units`; null: all
+// count) is one whose sampling may take a level of detail (a mipmap or
+// min/mag decision) or one that Fast's GPU filtering takes (`gpu`). The
+// operand blocks are pinned registers (ir/regalloc.cpp) that only their
+// lookup reads, and the textures are the executor's for its lifetime: a
+// row never stored is a row never read.
+std::vector<uint8_t> tex_derivatives(const std::vector<CallOut>& calls, const GLState::TextureUnit* units, bool gpu);
 
 // The generated functions: a batch (`live` lanes), and the prologue (all
 // lanes, before any batch). `regs` is the executor's register file.

@@ -18,8 +18,10 @@
 // would pick, the default results the kernel's (a lane that skips its
 // lookup reads 0), the write masked as Machine::write's: the bits are the
 // call-out's (tests/runtime/jit_tex_direct_test.cpp,
-// jit_tex_kinds_test.cpp). One call and no branch per lookup in the
-// generated code: LLVM's time stays the call-out's.
+// jit_tex_kinds_test.cpp). One call per lookup in the generated code, and
+// one branch where it has derivative rows: they are stored only where a
+// texture of the executor may read them (tex_derivatives(); a NEAREST or
+// LINEAR shadow map never does).
 #include "runtime/jit/codegen.h"
 
 #include "runtime/backend.h"
@@ -90,6 +92,23 @@ std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const st
     return out;
 }
 
+std::vector<uint8_t> tex_derivatives(const std::vector<CallOut>& calls, const GLState::TextureUnit* units, bool gpu) {
+    const SamplingRules rules = gpu ? SamplingRules::Gpu : SamplingRules::Common;
+    std::vector<uint8_t> out(calls.size(), 0);
+    for (size_t i = 0; i < calls.size(); ++i) {
+        if (calls[i].instr.op != ir::Op::tex) continue;
+        const ir::TexInfo info = ir::TexInfo::decode(calls[i].instr.imm[2]);
+        if (info.lod == ir::TexLod::Explicit) continue;
+        bool read = !units;
+        for (uint32_t unit = 0; unit < uint32_t(kMaxTextureUnits) && !read; ++unit) {
+            const Texture* t = units[unit].bound[size_t(info.target)].get();
+            read = t && (sampling::lod_matters(t->sampler) || lanes_only(*t, rules));
+        }
+        out[i] = read;
+    }
+    return out;
+}
+
 void bind_direct_samplers(const GLState::TextureUnit* units, bool gpu, DirectSampler* out) {
     for (size_t i = 0; i < kDirectSlots; ++i) out[i] = {};
     if (!units || !cpu_has_avx2()) return;
@@ -152,7 +171,22 @@ bool Emitter::emit_tex_direct(const ir::Instr& in) {
         if (r < locals_.size() && locals_[r]) b_.CreateAlignedStore(load_reg(r), file_ptr(r), llvm::Align(kRegAlign));
     };
     sync(in.src[0]);
-    for (uint32_t k = 0; k < operands; ++k) sync(in.imm[0] + k);
+    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
+    const uint32_t rows = info.lod == ir::TexLod::Explicit ? operands : info.ddx_at();
+    for (uint32_t k = 0; k < rows; ++k) sync(in.imm[0] + k);
+    if (rows < operands) {  // the derivative rows, where this executor's textures may read them
+        llvm::Value* flags = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_,
+                                                                                kDerivativesOffset));
+        llvm::Value* flag = b_.CreateLoad(b_.getInt8Ty(), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), flags,
+                                                                                       call_outs_.size() - 1));
+        llvm::BasicBlock* store = new_block("tex_derivatives");
+        llvm::BasicBlock* after = new_block("tex_call");
+        b_.CreateCondBr(b_.CreateICmpNE(flag, b_.getInt8(0)), store, after);
+        b_.SetInsertPoint(store);
+        for (uint32_t k = rows; k < operands; ++k) sync(in.imm[0] + k);
+        b_.CreateBr(after);
+        b_.SetInsertPoint(after);
+    }
     llvm::IRBuilder<> entry(&fn_->getEntryBlock(), fn_->getEntryBlock().begin());
     auto* words = llvm::ArrayType::get(i32_, kLanes);
     llvm::AllocaInst* out = entry.CreateAlloca(llvm::ArrayType::get(words, ir::kTexResults), nullptr, "tex_out");
