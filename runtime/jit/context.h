@@ -70,6 +70,11 @@ struct Context {
     // holds no address.
     void (*tex)(Context* ctx, uint64_t index, uint64_t exec, const uint32_t* units, const uint32_t* operands,
                 uint32_t* out) = nullptr;
+    // Per call-out, whether a run_tex lookup's derivative rows go to the
+    // register file (tex_derivatives()): 0 where no bound texture of its
+    // target reads them, so the generated code neither stores them nor
+    // (LLVM sinking them) computes them.
+    const uint8_t* derivatives = nullptr;
 };
 
 inline constexpr size_t kMaxLoopOffset = offsetof(Context, max_loop_iterations);
@@ -77,6 +82,7 @@ inline constexpr size_t kCreditOffset = offsetof(Context, credit);
 inline constexpr size_t kAliveOffset = offsetof(Context, alive);
 inline constexpr size_t kErrorLineOffset = offsetof(Context, error_line);
 inline constexpr size_t kTexOffset = offsetof(Context, tex);
+inline constexpr size_t kDerivativesOffset = offsetof(Context, derivatives);
 
 // Context::direct's entry of a unit's 2D texture (rect false) or rectangle.
 constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2 + (rect ? 1 : 0); }
@@ -89,6 +95,40 @@ constexpr size_t kernel_slot(uint32_t unit, KernelKind kind) {
     return size_t(unit) * size_t(KernelKind::Count) + size_t(kind);
 }
 inline constexpr size_t kKernelSlots = kernel_slot(kMaxTextureUnits, KernelKind::T1D);
+
+// A lookup's KernelKind; Count where none is bound for it.
+inline KernelKind kernel_kind(const ir::TexInfo& info) {
+    using enum ir::TexTarget;
+    if (info.shadow) return info.target == T2D ? KernelKind::Shadow2D : KernelKind::Count;
+    switch (info.target) {
+    case T1D: return KernelKind::T1D;
+    case T3D: return KernelKind::T3D;
+    case Cube: return KernelKind::Cube;
+    default: return KernelKind::Count;
+    }
+}
+
+// Whether a 2D or rectangle colour lookup (the one-pass samplers'; a
+// shadow lookup's texture is a depth one).
+inline bool one_pass_lookup(const ir::TexInfo& info) {
+    return (info.target == ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && !info.shadow;
+}
+
+// Whether the generated code of `in` calls run_tex (its lookups may go to
+// a unit's one-pass sampler or BoundKernel), not the plain call-out;
+// decided before the textures are known. Under Fast's GPU filtering
+// (`gpu`), RGBA8 1D, 3D and cube textures (nearly all) are its own paths'
+// and bind no kernel, which the call-out reaches with less around it (toon
+// in Fast against main's build, interleaved at load 10: 3 to 4% slower
+// through run_tex, 0 to 2% through the call-out); its depth textures take
+// the shadow-map kernels.
+inline bool tex_runs_direct(const ir::Instr& in, bool gpu) {
+    if (in.op != ir::Op::tex) return false;
+    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
+    const KernelKind kind = kernel_kind(info);
+    if (gpu && (kind == KernelKind::T1D || kind == KernelKind::T3D || kind == KernelKind::Cube)) return false;
+    return one_pass_lookup(info) || kind != KernelKind::Count;
+}
 
 // The units' kernels into out[kKernelSlots]: each kind's texture whose
 // state has an eight-lane kernel that reads no derivatives (no level of
@@ -119,6 +159,15 @@ struct CallOut {
 // The BatchLookup of each `tex` call-out among `calls` (its Step in
 // `steps`) over the register file: its coordinates and reference.
 std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps);
+
+// Per call-out among `calls`, 1 where a `tex` with derivative rows may
+// have them read: some unit's texture of its target (`units`; null: all
+// count) is one whose sampling may take a level of detail (a mipmap or
+// min/mag decision) or one that Fast's GPU filtering takes (`gpu`). The
+// operand blocks are pinned registers (ir/regalloc.cpp) that only their
+// lookup reads, and the textures are the executor's for its lifetime: a
+// row never stored is a row never read.
+std::vector<uint8_t> tex_derivatives(const std::vector<CallOut>& calls, const GLState::TextureUnit* units, bool gpu);
 
 // The generated functions: a batch (`live` lanes), and the prologue (all
 // lanes, before any batch). `regs` is the executor's register file.

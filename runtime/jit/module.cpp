@@ -230,6 +230,8 @@ public:
         bind_kernels(p.textures, code.gpu_textures, kernels_.data());
         ctx_.kernels = kernels_.data();
         ctx_.tex = run_tex;
+        derivatives_ = tex_derivatives(code.call_outs, p.textures, code.gpu_textures);
+        ctx_.derivatives = derivatives_.data();
         ir::FlushDenormals ftz;  // as the interpreter's prologue and runs
         code_.prologue(&ctx_, regs_.data, uniforms_, kAllLanes);
     }
@@ -272,6 +274,7 @@ private:
     BudgetShare share_;
     std::vector<Step<uint32_t>> call_steps_;
     std::vector<BatchLookup> lookups_;
+    std::vector<uint8_t> derivatives_;  // ctx_.derivatives
     std::array<DirectSampler, kDirectSlots> direct_;
     std::array<BoundKernel, kKernelSlots> kernels_;
     Context ctx_;

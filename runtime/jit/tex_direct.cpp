@@ -18,8 +18,10 @@
 // would pick, the default results the kernel's (a lane that skips its
 // lookup reads 0), the write masked as Machine::write's: the bits are the
 // call-out's (tests/runtime/jit_tex_direct_test.cpp,
-// jit_tex_kinds_test.cpp). One call and no branch per lookup in the
-// generated code: LLVM's time stays the call-out's.
+// jit_tex_kinds_test.cpp). One call per lookup in the generated code, and
+// one branch where it has derivative rows: they are stored only where a
+// texture of the executor may read them (tex_derivatives(); a NEAREST or
+// LINEAR shadow map never does).
 #include "runtime/jit/codegen.h"
 
 #include "runtime/backend.h"
@@ -45,38 +47,6 @@ namespace {
 
 constexpr unsigned kRegAlign = kLanes * 4 < 64 ? kLanes * 4 : 64;  // as a register's (alu.cpp)
 
-// A lookup's BoundKernel kind; Count where none is bound for it.
-KernelKind kind_of(const ir::TexInfo& info) {
-    using enum ir::TexTarget;
-    if (info.shadow) return info.target == T2D ? KernelKind::Shadow2D : KernelKind::Count;
-    switch (info.target) {
-    case T1D: return KernelKind::T1D;
-    case T3D: return KernelKind::T3D;
-    case Cube: return KernelKind::Cube;
-    default: return KernelKind::Count;
-    }
-}
-
-// Whether a 2D or rectangle colour lookup (the one-pass samplers'; a
-// shadow lookup's texture is a depth one).
-bool one_pass_lookup(const ir::TexInfo& info) {
-    return (info.target == ir::TexTarget::T2D || info.target == ir::TexTarget::Rect) && !info.shadow;
-}
-
-// Whether an op's lookups go to a bound sampler where the texture allows.
-// Under Fast's GPU filtering (`gpu`), RGBA8 1D and cube textures (nearly
-// all) are its own paths', which the call-out reaches with less around
-// it (toon in Fast against main's build, interleaved at load 10: 3 to 4%
-// slower through run_tex, 0 to 2% through the call-out); its depth and 3D
-// textures take the kernels.
-bool direct_candidate(const ir::Instr& in, bool gpu) {
-    if (in.op != ir::Op::tex) return false;
-    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
-    const KernelKind kind = kind_of(info);
-    if (gpu && (kind == KernelKind::T1D || kind == KernelKind::Cube)) return false;
-    return one_pass_lookup(info) || kind != KernelKind::Count;
-}
-
 // fill_defaults() of the lanes that skip their lookups (the sampler writes
 // the others): a third of run_tex() when done for every batch.
 GLSLRUN_AVX2 void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
@@ -97,7 +67,7 @@ GLSLRUN_AVX2 bool run_bound(const Context& ctx, uint64_t index, const ir::TexInf
         sampler.run(sampler, operands, operands + kLanes, lookups, result);
         return true;
     }
-    const KernelKind kind = kind_of(info);
+    const KernelKind kind = kernel_kind(info);
     if (kind == KernelKind::Count || !ctx.kernels || !ctx.lookups) return false;
     const BoundKernel& kernel = ctx.kernels[kernel_slot(unit, kind)];
     if (!kernel.run) return false;
@@ -119,6 +89,23 @@ std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const st
         const auto* block = reinterpret_cast<const float*>(steps[i].src[1]);  // the operand block
         for (uint32_t c = 0; c < info.dims() && c < 3; ++c) out[i].coord[c] = block + size_t(c) * kLanes;
         if (info.shadow) out[i].ref = block + size_t(info.ref_at()) * kLanes;
+    }
+    return out;
+}
+
+std::vector<uint8_t> tex_derivatives(const std::vector<CallOut>& calls, const GLState::TextureUnit* units, bool gpu) {
+    const SamplingRules rules = gpu ? SamplingRules::Gpu : SamplingRules::Common;
+    std::vector<uint8_t> out(calls.size(), 0);
+    for (size_t i = 0; i < calls.size(); ++i) {
+        if (calls[i].instr.op != ir::Op::tex) continue;
+        const ir::TexInfo info = ir::TexInfo::decode(calls[i].instr.imm[2]);
+        if (info.lod == ir::TexLod::Explicit) continue;
+        bool read = !units;
+        for (uint32_t unit = 0; unit < uint32_t(kMaxTextureUnits) && !read; ++unit) {
+            const Texture* t = units[unit].bound[size_t(info.target)].get();
+            read = t && (sampling::lod_matters(t->sampler) || lanes_only(*t, rules));
+        }
+        out[i] = read;
     }
     return out;
 }
@@ -178,7 +165,7 @@ GLSLRUN_AVX2 void run_tex(Context* ctx, uint64_t index, uint64_t exec, const uin
 }
 
 bool Emitter::emit_tex_direct(const ir::Instr& in) {
-    if (!avx2_ || !direct_candidate(in, precision_ == Precision::Fast && (fast_ops_ & kFastTexture))) return false;
+    if (!avx2_ || !tex_runs_direct(in, precision_ == Precision::Fast && (fast_ops_ & kFastTexture))) return false;
     call_outs_.push_back({kernel_for(in.op, avx2_, precision_, fast_ops_), in});
     const uint32_t operands = ir::TexInfo::decode(in.imm[2]).operand_count();
     // The unit and the operand block go to the register file, as a
@@ -190,7 +177,22 @@ bool Emitter::emit_tex_direct(const ir::Instr& in) {
         if (r < locals_.size() && locals_[r]) b_.CreateAlignedStore(load_reg(r), file_ptr(r), llvm::Align(kRegAlign));
     };
     sync(in.src[0]);
-    for (uint32_t k = 0; k < operands; ++k) sync(in.imm[0] + k);
+    const ir::TexInfo info = ir::TexInfo::decode(in.imm[2]);
+    const uint32_t rows = info.lod == ir::TexLod::Explicit ? operands : info.ddx_at();
+    for (uint32_t k = 0; k < rows; ++k) sync(in.imm[0] + k);
+    if (rows < operands) {  // the derivative rows, where this executor's textures may read them
+        llvm::Value* flags = b_.CreateLoad(ptr_, b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), ctx_arg_,
+                                                                                kDerivativesOffset));
+        llvm::Value* flag = b_.CreateLoad(b_.getInt8Ty(), b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), flags,
+                                                                                       call_outs_.size() - 1));
+        llvm::BasicBlock* store = new_block("tex_derivatives");
+        llvm::BasicBlock* after = new_block("tex_call");
+        b_.CreateCondBr(b_.CreateICmpNE(flag, b_.getInt8(0)), store, after);
+        b_.SetInsertPoint(store);
+        for (uint32_t k = rows; k < operands; ++k) sync(in.imm[0] + k);
+        b_.CreateBr(after);
+        b_.SetInsertPoint(after);
+    }
     llvm::IRBuilder<> entry(&fn_->getEntryBlock(), fn_->getEntryBlock().begin());
     auto* words = llvm::ArrayType::get(i32_, kLanes);
     llvm::AllocaInst* out = entry.CreateAlloca(llvm::ArrayType::get(words, ir::kTexResults), nullptr, "tex_out");

@@ -10,7 +10,9 @@
 // mode, odd sizes and base level 1, RGBA8 and float texels; spread lanes
 // (NaN, infinite, huge and denormal coordinates) and close ones (as the
 // rasterizer packs a magnified image's), partial masks, lanes that skip
-// their lookups, lanes of another unit or of none, an incomplete texture.
+// their lookups, lanes of another unit or of none, an incomplete texture;
+// the derivative rows stored where a unit's texture may read them and
+// left alone where none does.
 // 2D colour lookups too, for the one-pass samplers' fallback (mipmapped
 // states under partial masks; jit_tex_direct_test.cpp has their sweep).
 #include <catch2/catch.hpp>
@@ -23,6 +25,7 @@
 
 #include "ir/scalar_ops.h"
 #include "runtime/backend_factory.h"
+#include "runtime/jit/context.h"
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling.h"
 #include "runtime/sampling_rules.h"
@@ -84,6 +87,12 @@ std::shared_ptr<const Texture> texture(const LookupKind& kind, const State& st, 
     return std::make_shared<const Texture>(std::move(*t));
 }
 
+SamplerState st_sampler(const State& st) {
+    SamplerState s;
+    s.min_filter = s.mag_filter = st.filter;
+    return s;
+}
+
 float special(std::mt19937& rng) {
     static constexpr float kSpecial[] = {std::numeric_limits<float>::quiet_NaN(),
                                          std::numeric_limits<float>::infinity(),
@@ -102,6 +111,8 @@ float spread(std::mt19937& rng) {
 struct Shader {
     Builder b;
     Reg coord[3], ref, lod, unit, unit_lane, cond, result, explicit_result;
+    Reg block;  // the implicit lookup's operand block
+    ir::TexInfo implicit;
 };
 
 // Two lookups of one kind: an implicit one (derivatives of the
@@ -136,6 +147,8 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
         return block;
     };
     const Reg block = block_of(implicit);
+    sh->block = block;
+    sh->implicit = implicit;
     sh->result = b.range(Kind::F32, ir::kTexResults);
     b.if_(sh->cond, [&] {
         b.instr(Op::tex, Kind::F32, sh->result, {sh->unit}, {block, implicit.operand_count(), implicit.encode()});
@@ -153,7 +166,10 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
     return sh;
 }
 
-std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const LookupKind& kind, const State& st, uint32_t seed) {
+// `lod_free`: kIncomplete left unbound, so that no unit's texture reads
+// derivatives where kUnit's does not (the generated code then stores none).
+std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const LookupKind& kind, const State& st, uint32_t seed,
+                                                            bool lod_free) {
     using enum TextureWrap;
     std::array<GLState::TextureUnit, kMaxTextureUnits> units{};
     auto bind = [&](int unit, std::shared_ptr<const Texture> t) {
@@ -166,7 +182,7 @@ std::array<GLState::TextureUnit, kMaxTextureUnits> units_of(const LookupKind& ki
     State incomplete = other;
     incomplete.filter = TextureFilter::LinearMipmapLinear;
     incomplete.size[0] = incomplete.size[1] = incomplete.size[2] = 4;
-    bind(kIncomplete, texture(kind, incomplete, false, 9u));
+    if (!lod_free) bind(kIncomplete, texture(kind, incomplete, false, 9u));
     return units;
 }
 
@@ -228,7 +244,13 @@ Lanes lanes_of(const LookupKind& kind, const State& st, int round, std::mt19937&
 
 void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader& interp, const rt::CompiledShader& jit,
              const TexMode& mode, const State& st, uint32_t seed) {
-    const auto units = units_of(kind, st, seed);
+    // Half the states whose lookups take no level of detail have no unit
+    // that does: the JIT's derivative rows are then never stored.
+    const bool lod_free = !rt::sampling::lod_matters(st_sampler(st)) && seed % 2 == 1;
+    const auto units = units_of(kind, st, seed, lod_free);
+    // Under Fast's GPU filtering, RGBA8 textures (kOtherUnit's) may read
+    // them, and its 1D, 3D and cube lookups call out; its depth maps do not.
+    const bool stored_none = lod_free && (!mode.gpu() || kind.shadow);
     const uint32_t uniforms[] = {uint32_t(kUnit)};
     const rt::ExecParams params{uniforms, 10, units.data(), mode.precision, mode.fast_ops};
     auto ia = interp.instantiate(params), ja = jit.instantiate(params);
@@ -256,6 +278,8 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
                 e->lanes(sh.lod)[lane] = bits(float(lane % 3) - 1.0f);
                 e->lanes(sh.unit_lane)[lane] = bits(round == 5 && lane ? kOtherUnit : unit);
                 e->lanes(sh.cond)[lane] = cond(lane);
+                for (uint32_t k = sh.implicit.ddx_at(); k < sh.implicit.operand_count(); ++k)
+                    e->lanes(sh.block + k)[lane] = 0xdeadbeefu;
                 for (uint32_t k = 0; k < ir::kTexResults; ++k) {
                     e->lanes(sh.result + k)[lane] = 0xdeadbeefu;
                     e->lanes(sh.explicit_result + k)[lane] = 0xdeadbeefu;
@@ -274,6 +298,14 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
             for (const ir::Binding& out : sh.b.sh.outputs) {
                 INFO("register " << out.first);
                 REQUIRE(ia->lanes(out.first)[lane] == ja->lanes(out.first)[lane]);
+            }
+            // The derivative rows: the interpreter's words where a texture
+            // may read them, else never stored (the JIT's generated code
+            // took the shortcut; on a CPU without AVX2 it calls out).
+            for (uint32_t k = sh.implicit.ddx_at(); k < sh.implicit.operand_count(); ++k) {
+                INFO("derivative row " << k);
+                if (stored_none) REQUIRE(ja->lanes(sh.block + k)[lane] == 0xdeadbeefu);
+                else REQUIRE(ja->lanes(sh.block + k)[lane] == ia->lanes(sh.block + k)[lane]);
             }
             // The lanes that looked up kUnit's texture: the lane sampler's words.
             const bool looked = ((live >> lane) & 1) && !((skipped >> lane) & 1) && cond(lane) && round != 4 &&
@@ -343,5 +375,35 @@ TEST_CASE("generated 1D, 3D, cube and shadow lookups give the lane sampler's wor
                           {TextureTarget::Tex2D, false, "2D"}};
     for (const LookupKind& kind : kinds) {
         SECTION(kind.name) { sweep(kind, states_of(kind)); }
+    }
+}
+
+// Which lookups the generated code sends to run_tex rather than the plain
+// call-out (tex_runs_direct(), decided before the textures are known): under
+// Fast's GPU filtering, the RGBA8 1D, 3D and cube textures are its own
+// paths' (lanes_only()) and bind no kernel, so run_tex would only add its
+// test to the call-out. The bits are the same either way (the sweep above).
+TEST_CASE("Fast's GPU-filtered kinds keep the plain call-out", "[runtime][jit_tex]") {
+    const LookupKind kinds[] = {{TextureTarget::Tex1D, false, "1D"},
+                                {TextureTarget::Tex3D, false, "3D"},
+                                {TextureTarget::Cube, false, "cube"},
+                                {TextureTarget::Tex2D, true, "shadow 2D"},
+                                {TextureTarget::Tex2D, false, "2D"}};
+    const State rgba8{TextureFilter::Linear, {TextureWrap::Repeat, TextureWrap::Repeat, TextureWrap::Repeat},
+                      CompareFunc::Less, DepthTextureMode::Luminance, {4, 4, 4}, 0, TextureFormat::RGBA8};
+    for (const LookupKind& kind : kinds) {
+        INFO(kind.name);
+        ir::TexInfo info;
+        info.target = ir::TexTarget(kind.target);
+        info.shadow = kind.shadow;
+        ir::Instr in;
+        in.op = ir::Op::tex;
+        in.imm[2] = info.encode();
+        const bool filtered = rt::lanes_only(*texture(kind, rgba8, false, 1u), rt::SamplingRules::Gpu);
+        // A 2D colour texture's filtered lookups have Fast's own one-pass sampler.
+        const bool own_sampler = kind.target == TextureTarget::Tex2D && !kind.shadow;
+        CHECK(filtered == !kind.shadow);
+        CHECK(rt::jit::tex_runs_direct(in, true) == (own_sampler || !filtered));
+        CHECK(rt::jit::tex_runs_direct(in, false));
     }
 }
