@@ -20,18 +20,6 @@ namespace {
 
 using namespace direct8;
 
-struct Image3 {
-    Source src;
-    Axis w, h, d;
-};
-
-// Whether every lane's second index on the axis is its first + 1 (not
-// the edge's clamp or REPEAT's wrap).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline bool neighbours8(const Linear8& l) {
-    const I next = _mm256_cmpeq_epi32(l.i1, _mm256_add_epi32(l.i0, splat_i(1)));
-    return _mm256_movemask_ps(_mm256_castsi256_ps(next)) == 0xff;
-}
-
 // Texels (x0, x1) of lanes j and j + 4 (first texels at p and q) on the
 // row `at` bytes on, lerped by the lanes' x weights `a`.
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V cell_row(const char* p, const char* q, size_t at, V a) {

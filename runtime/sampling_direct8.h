@@ -147,6 +147,13 @@ struct Linear8 {
     V a;
 };
 
+// Whether every lane's second index on the axis is its first + 1 (not
+// the edge's clamp or a wrap).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline bool neighbours8(const Linear8& l) {
+    const I next = _mm256_cmpeq_epi32(l.i1, _mm256_add_epi32(l.i0, splat_i(1)));
+    return _mm256_movemask_ps(_mm256_castsi256_ps(next)) == 0xff;
+}
+
 // linear_axis<kWrap, true>() / rect_linear_axis<kWrap, true>() of eight lanes.
 template <Rule kRule>
 [[gnu::always_inline]] GLSLRUN_AVX2 inline Linear8 linear8(V s, const Axis& ax) {
@@ -461,6 +468,12 @@ template <bool kRect, class F>
     if (linear) return with_rules_of<kRect, true>(rule_of(st.wrap_s, kRect, true), rule_of(st.wrap_t, kRect, true), f);
     return with_rules_of<kRect, false>(rule_of(st.wrap_s, kRect, false), rule_of(st.wrap_t, kRect, false), f);
 }
+
+// A 3D image's texels and its three axes (the 3D kernels' record).
+struct Image3 {
+    Source src;
+    Axis w, h, d;
+};
 
 }  // namespace glslrun::rt::direct8
 #undef GLSLRUN_AVX2

@@ -22,11 +22,6 @@ namespace {
 
 using namespace direct8;
 
-struct Image3 {
-    Source src;
-    Axis w, h, d;
-};
-
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V unorm16x8(V t) {
     return _mm256_round_ps(_mm256_mul_ps(t, splat(65535.0f)), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
 }
@@ -69,13 +64,6 @@ struct Image3 {
     if (pairs) return fetch_pairs8(src, x.i0, row, left, right);
     fetch8<false>(src, x.i0, row, left);
     fetch8<false>(src, x.i1, row, right);
-}
-
-// Whether every lane's second index on the axis is its first + 1 (not the
-// edge's clamp or a wrap).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline bool neighbours8(const Linear8& l) {
-    const I next = _mm256_cmpeq_epi32(l.i1, _mm256_add_epi32(l.i0, splat_i(1)));
-    return _mm256_movemask_ps(_mm256_castsi256_ps(next)) == 0xff;
 }
 
 // (sum + 128) >> 8 (gpu::round_blend(): a floor, in one rounding, of an exact sum), then r / 65535.
