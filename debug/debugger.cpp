@@ -25,10 +25,11 @@ namespace {
 // The optimizer's value-changing decisions, with every variable kept: fold
 // and copyprop (whose common subexpressions decide which square roots only
 // divide, Fast's rsqrt) run as in ir/optimize.cpp, the variables' registers
-// count as outputs so dce keeps their writes, then contract (Fast's FMAs;
-// a product first stored in a variable stays a product here, where the
-// optimized program may fuse it: the trace then says it differs), and
-// sqrt_divisor runs last.
+// count as outputs so dce keeps their writes, then contract (Fast's FMAs),
+// which looks through the copies into variables that nothing reads (a
+// product first stored in a variable, `vec4 c = 6.0 * t; c += ...`, fuses
+// into the add as in the optimized program, whose store is dead, and c still
+// shows the rounded product), and sqrt_divisor runs last.
 // No inlining (calls stay calls, callees keep their variables' registers),
 // no dead_stores (every assignment stays visible), no hoist (no statement
 // moves out of its place), no regalloc (registers keep their variables).
@@ -42,7 +43,7 @@ void optimize_keeping_variables(ir::Shader& shader) {
         ir::eliminate_dead_code(shader);
     }
     shader.outputs = std::move(outputs);
-    ir::contract_multiply_add(shader);
+    ir::contract_multiply_add(shader, true);
     ir::mark_sqrt_divisors(shader);
 }
 

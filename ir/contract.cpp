@@ -47,8 +47,9 @@ struct RegUse {
 
 struct Census {
     std::vector<RegUse> use;
+    std::vector<const Instr*> movs;  // every register-to-register mov
 
-    explicit Census(const Shader& shader) : use(shader.regs.size()) {
+    Census(const Shader& shader, bool display_copies) : use(shader.regs.size()) {
         scan(shader.prologue);
         scan(shader.body);
         for (const Function& f : shader.functions) scan(f.body);
@@ -56,6 +57,18 @@ struct Census {
         for (const auto* list : {&shader.inputs, &shader.outputs})
             for (const Binding& b : *list)
                 for (uint32_t i = 0; i < b.count; ++i) read(b.first + i);
+        if (display_copies) unread_display_copies(shader);
+    }
+
+    // A mov into a variable's register that nothing reads (after copyprop every later read
+    // takes the source itself) is there only to be shown: it is not a read of its source.
+    void unread_display_copies(const Shader& shader) {
+        std::vector<bool> variable(use.size());
+        for (const Variable& v : shader.variables)
+            for (uint32_t i = 0; i < v.count; ++i)
+                if (v.first + i < use.size()) variable[v.first + i] = true;
+        for (const Instr* mov : movs)
+            if (variable[mov->dst] && use[mov->dst].reads == 0 && mov->src[0] < use.size()) --use[mov->src[0]].reads;
     }
 
     void read(Reg r) {
@@ -70,6 +83,7 @@ struct Census {
             if (n.kind == NodeKind::Call) continue;
             if (n.kind != NodeKind::Instr) continue;
             const Instr& in = n.instr;
+            if (in.op == Op::mov && in.dst < use.size()) movs.push_back(&in);
             flow::for_each_write(in, [&](Reg r) {
                 if (r >= use.size()) return;
                 ++use[r].writes;
@@ -151,8 +165,8 @@ void contract(const Census& census, Block& body) {
 
 }  // namespace
 
-void contract_multiply_add(Shader& shader) {
-    const Census census(shader);
+void contract_multiply_add(Shader& shader, bool display_copies) {
+    const Census census(shader, display_copies);
     contract(census, shader.prologue);
     contract(census, shader.body);
     for (Function& f : shader.functions) contract(census, f.body);

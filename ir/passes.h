@@ -55,8 +55,12 @@ void eliminate_dead_code(Shader& shader);
 
 // ir/contract.cpp: the multiply-adds NVIDIA's compiler contracts become
 // ffma/ffms/ffnma (one rounding in Precision::Fast, two in the others).
-// Before fuse_mad.
-void contract_multiply_add(Shader& shader);
+// Before fuse_mad. `display_copies` (the debugger's IR, which keeps every
+// variable): a copy of a product into a variable's register that nothing
+// reads is no read of the product, so the product contracts as in the
+// optimized program, where that store is dead, while the variable still
+// shows the rounded product.
+void contract_multiply_add(Shader& shader, bool display_copies = false);
 // ir/fuse_mad.cpp: an fmul whose only reader is an fadd/fsub in the same
 // block becomes part of it (fmad, fmsub, fnmadd: the same two roundings).
 void fuse_multiply_add(Shader& shader);

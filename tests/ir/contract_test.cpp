@@ -106,3 +106,30 @@ TEST_CASE("contract fuses a product scaled by a power of two, and (3x) * y", "[i
     CHECK(writer_of(t, outer)->op == Op::ffma);
     CHECK(writer_of(t, three)->op == Op::ffma);
 }
+
+// The debugger's IR keeps every variable: `float v = x * y; v += c;` copies the product into v's
+// register, which nothing reads after copyprop. With display_copies that copy is no read (the
+// optimized program drops it), so the add fuses and v still shows the rounded product; a copy
+// that something reads keeps the product rounded, as before.
+TEST_CASE("contract sees through a product's unread copy into a variable", "[ir][contract]") {
+    for (bool read_copy : {false, true})
+        for (bool display_copies : {false, true}) {
+            INFO("copy read " << read_copy << ", display_copies " << display_copies);
+            Builder b;
+            Reg x = input(b, "x"), y = input(b, "y"), c = input(b, "c");
+            Reg p = b.alu(Op::fmul, {x, y});
+            Reg v = b.reg(Kind::F32);
+            b.mov(v, p);
+            b.sh.variables.push_back(ir::Variable{"v", "main", "float", v, 1});
+            Reg sum = b.alu(Op::fadd, {p, c});
+            b.output("sum", sum);
+            if (read_copy) b.output("v", v);
+            // No dce: the debugger keeps v's writes (its variables count as outputs there).
+            ir::Shader t = check_pass(b.sh, [&](ir::Shader& s) { ir::contract_multiply_add(s, display_copies); });
+            const bool fused = display_copies && !read_copy;
+            CHECK((writer_of(t, sum)->op == Op::ffma) == fused);
+            REQUIRE(writer_of(t, v));
+            CHECK((writer_of(t, v)->op == Op::mov && writer_of(t, v)->src[0] == p));  // the rounded product
+            CHECK(writer_of(t, p)->op == Op::fmul);
+        }
+}

@@ -423,11 +423,9 @@ TEST_CASE("texture lookups in the trace: operands, lod, levels, texels and the s
         INFO(c.scene << ", precision " << int(precision));
         Traced t = trace_files(c.vertex, shader(c.fragment), c.scene, c.x, c.y, precision);
         // blur.frag's `vec4 c = 6.0 * texture2D(...)` is a product kept in a variable, which
-        // the render contracts into the next `c +=` in Fast and the trace, keeping c, does not
-        // (debug/debugger.cpp): the trace says so (matches_render false), as here.
-        const bool contracted_variable = precision == Precision::Fast && std::string(c.scene) == "scenes/blur.toml";
+        // Fast contracts into the next `c +=`: the trace, keeping c, fuses it too (debug/debugger.cpp).
         for (const debug::FragmentTrace& f : t.trace.fragments) {
-            CHECK(f.matches_render != contracted_variable);
+            CHECK(f.matches_render);
             size_t steps = 0;
             for (const debug::TraceStep& s : f.trace.steps) steps += s.kind == debug::TraceStep::Kind::Lookup;
             CHECK(steps == f.trace.lookups.size());
