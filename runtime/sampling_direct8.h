@@ -73,6 +73,21 @@ struct Axis {
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V splat(float x) { return _mm256_set1_ps(x); }
 [[gnu::always_inline]] GLSLRUN_AVX2 inline I splat_i(int x) { return _mm256_set1_epi32(x); }
 
+// The first lanes of the eight quads of lanes p[0..31], in the order
+// (0, 2, 4, 6, 1, 3, 5, 7): three shuffles of the four groups' registers
+// (in place of four gathers a lookup).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V quad_leaders8(const float* p) {
+    const V q01 = _mm256_shuffle_ps(_mm256_loadu_ps(p), _mm256_loadu_ps(p + 8), 0x00);  // (0, 0, 2, 2 | 1, 1, 3, 3)
+    const V q23 = _mm256_shuffle_ps(_mm256_loadu_ps(p + 16), _mm256_loadu_ps(p + 24), 0x00);
+    return _mm256_shuffle_ps(q01, q23, _MM_SHUFFLE(2, 0, 2, 0));
+}
+
+// Lanes 8k..8k+7 of those 32 from quad_leaders8()'s register of eight
+// per-quad values: each quad's value in its four lanes.
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V spread_quads8(V quads, int k) {
+    return _mm256_permutevar8x32_ps(quads, _mm256_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4));
+}
+
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V clamp_or_low8(V x, V lo, V hi) {
     return _mm256_min_ps(_mm256_max_ps(x, lo), hi);
 }

@@ -1,8 +1,10 @@
-// The kernels of sampling_gpu_direct.h. Per batch, one lambda_base per
-// quad (gpu_rho() and gpu::lambda_of_rho() of its first lane's
-// derivatives), eight quads a register (as two scalar calls per group of
-// eight lanes, a tenth of two_units' Fast frame: perf); then per group of
-// eight lanes:
+// The kernels of sampling_gpu_direct.h. One lambda_base per quad
+// (gpu_rho() and gpu::lambda_of_rho() of its first lane's derivatives),
+// eight quads a register (as two scalar calls per group of eight lanes, a
+// tenth of two_units' Fast frame: perf), their first lanes read by
+// shuffles and the results kept in registers (a copy of the leaders'
+// derivatives through memory was 3% of mip_floor's Fast frame: perf);
+// then per group of eight lanes:
 // - lambda as sample_gpu_batch()'s lambdas() gives it: each lane's bias
 //   and the texture's, each gpu::quantize_bias()'d, the clamps and
 //   gpu::quantize_lambda() (truncated to 8 fraction bits);
@@ -356,21 +358,30 @@ constexpr std::array<float, 256> kLog2Table = [] {
 
 static_assert(kLanes % 8 == 0, "the kernels take lanes eight at a time");
 
-// Every quad's lambda_base (lanes 4q..4q+3 take quad q's first lane's derivatives).
-constexpr int kQuads = (kLanes / 4 + 7) / 8 * 8;  // whole registers
+// The first lanes of p[0..7]'s two quads, each in its quad's lanes:
+// (0, 0, 0, 0, 4, 4, 4, 4).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V group_leaders8(const float* p) {
+    const V x = _mm256_loadu_ps(p);
+    return _mm256_shuffle_ps(x, x, 0x00);
+}
 
-GLSLRUN_AVX2 void quad_lambdas(const State& s, const BatchLookup& lk, float* quad) {
-    alignas(32) float d[4][kQuads] = {};
-    for (int q = 0; q < kLanes / 4; ++q) {
-        d[0][q] = lk.ddx[0][4 * q];
-        d[1][q] = lk.ddx[1][4 * q];
-        d[2][q] = lk.ddy[0][4 * q];
-        d[3][q] = lk.ddy[1][4 * q];
-    }
+// Lanes g..g+7's lambda_base, each quad's (lanes 4q..4q+3 take quad q's
+// first lane's derivatives) in registers, with no copy of the derivatives:
+// at 32 lanes and more, eight quads' log2 at once at each g % 32 == 0
+// (quad_leaders8(): `quads` carries them to the next three groups), spread
+// to their lanes; at 8 or 16 lanes, each group's two quads' leaders in
+// every lane (the bits are the same: each lane's value is its quad's).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V lambda_bases8(const State& s, const BatchLookup& lk, int g, V& quads) {
     const V w = splat(s.size.x), h = splat(s.size.y);
-    for (int q = 0; q < kQuads; q += 8)
-        _mm256_store_ps(quad + q, quad_lambda8(_mm256_load_ps(d[0] + q), _mm256_load_ps(d[1] + q),
-                                              _mm256_load_ps(d[2] + q), _mm256_load_ps(d[3] + q), w, h, s.dims > 1));
+    if constexpr (kLanes % 32 == 0) {
+        if (g % 32 == 0)
+            quads = quad_lambda8(quad_leaders8(lk.ddx[0] + g), quad_leaders8(lk.ddx[1] + g),
+                                 quad_leaders8(lk.ddy[0] + g), quad_leaders8(lk.ddy[1] + g), w, h, s.dims > 1);
+        return spread_quads8(quads, (g % 32) / 8);
+    } else {
+        return quad_lambda8(group_leaders8(lk.ddx[0] + g), group_leaders8(lk.ddx[1] + g),
+                            group_leaders8(lk.ddy[0] + g), group_leaders8(lk.ddy[1] + g), w, h, s.dims > 1);
+    }
 }
 
 // gpu::quantize_bias() of eight lanes: roundps toward zero is std::trunc()
@@ -509,15 +520,14 @@ template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 // A mipmapped texture's lookups.
 template <bool kLinear, Rule kS, Rule kT, bool kOneD>
 GLSLRUN_AVX2 void gpu_mip(const State& s, const BatchLookup& lk, LaneMask lanes, float (*out)[kLanes]) {
-    alignas(32) float quad[kQuads];
-    if (lk.implicit) quad_lambdas(s, lk, quad);
+    V quads = _mm256_setzero_ps();
     for (int g = 0; g < kLanes; g += 8) {
+        // Before the skip: the next groups may take this one's quads.
+        const V base = lk.implicit ? lambda_bases8(s, lk, g, quads) : _mm256_setzero_ps();
         const int bits = int(uint32_t(lanes >> g) & 0xffu);
         if (!bits) continue;
         const V sc = _mm256_loadu_ps(lk.coord[0] + g), tc = _mm256_loadu_ps(lk.coord[1] + g);
         alignas(32) int first[8], second[8], weight[8];
-        const V base = lk.implicit ? _mm256_set_m128(_mm_set1_ps(quad[g / 4 + 1]), _mm_set1_ps(quad[g / 4]))
-                                   : _mm256_setzero_ps();
         levels8(s, lambdas8(s, lk, base, g), first, second, weight);
         const I d0 = _mm256_load_si256(reinterpret_cast<const I*>(first));
         const int two = _mm256_movemask_ps(_mm256_load_ps(reinterpret_cast<const float*>(second)));

@@ -33,15 +33,6 @@ using namespace direct8;
 
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V load8(const float* p) { return _mm256_loadu_ps(p); }
 
-// The first lanes of the eight quads of lanes p[0..31], in the order
-// (0, 2, 4, 6, 1, 3, 5, 7): three shuffles of the four groups' registers
-// (in place of four gathers a lookup).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V quad_leaders8(const float* p) {
-    const V q01 = _mm256_shuffle_ps(load8(p), load8(p + 8), 0x00);  // (0, 0, 2, 2 | 1, 1, 3, 3)
-    const V q23 = _mm256_shuffle_ps(load8(p + 16), load8(p + 24), 0x00);
-    return _mm256_shuffle_ps(q01, q23, _MM_SHUFFLE(2, 0, 2, 0));
-}
-
 // rho of eight lanes: max(|ddx|, |ddy|) as std::max picks it, taken on the
 // squares: sqrt is monotonic and correctly rounded, so the larger root is
 // the root of the larger square (a NaN picks as before: |ddx| where either is NaN).
@@ -83,9 +74,7 @@ GLSLRUN_AVX2 void lambda_bases(const BatchLookup& lk, V w, V h, float* lambda) {
         for (int g = 0; g < kLanes; g += 32) _mm256_store_ps(quad + g / 4, lod_from_rho8(quad_leaders8(rho + g)));
     }
     for (int g = 0; g < kLanes; g += 8) {  // quads g/4 and g/4 + 1: at k and 4 + k of their eight
-        const int k = (g % 32) / 8;
-        _mm256_store_ps(lambda + g, _mm256_permutevar8x32_ps(_mm256_load_ps(quad + (g / 32) * 8),
-                                                             _mm256_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4)));
+        _mm256_store_ps(lambda + g, spread_quads8(_mm256_load_ps(quad + (g / 32) * 8), (g % 32) / 8));
     }
 }
 

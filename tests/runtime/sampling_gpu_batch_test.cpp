@@ -295,13 +295,19 @@ void check_implicit(std::mt19937& rng, const Texture& texture, const Operands& o
 
 // Close lanes of a 2D texture (close_lanes()), each pixel `scale` texels:
 // whole groups inside a clamped image (the border's rules' groups without
-// a border texel), on its edges and corners, paired row loads.
+// a border texel), on its edges and corners, paired row loads. Each lane's
+// derivatives are scaled by their own factor, as a receding surface's
+// quads each have their level of detail: the mipmapped kernel must take
+// every quad's from its first lane, whatever the other lanes and the
+// masked groups hold.
 void check_close(std::mt19937& rng, const Texture& texture, float scale) {
     Operands ops{};
     close_lanes(rng, texture, scale, ops.coord);
+    std::uniform_real_distribution<float> slope(0.5f, 2.0f);
     for (int i = 0; i < rt::kLanes; ++i) {
-        ops.ddx[0][i] = scale / float(texture.levels(0)[0].width);
-        ops.ddy[1][i] = scale / float(texture.levels(0)[0].height);
+        const float k = slope(rng);
+        ops.ddx[0][i] = k * scale / float(texture.levels(0)[0].width);
+        ops.ddy[1][i] = k * scale / float(texture.levels(0)[0].height);
     }
     check_implicit(rng, texture, ops, "close");
 }
