@@ -82,6 +82,13 @@ struct Axis {
     return _mm256_shuffle_ps(q01, q23, _MM_SHUFFLE(2, 0, 2, 0));
 }
 
+// The first lanes of p[0..7]'s two quads, each in its quad's lanes:
+// (0, 0, 0, 0, 4, 4, 4, 4).
+[[gnu::always_inline]] GLSLRUN_AVX2 inline V group_leaders8(const float* p) {
+    const V x = _mm256_loadu_ps(p);
+    return _mm256_shuffle_ps(x, x, 0x00);
+}
+
 // Lanes 8k..8k+7 of those 32 from quad_leaders8()'s register of eight
 // per-quad values: each quad's value in its four lanes.
 [[gnu::always_inline]] GLSLRUN_AVX2 inline V spread_quads8(V quads, int k) {

@@ -358,13 +358,6 @@ constexpr std::array<float, 256> kLog2Table = [] {
 
 static_assert(kLanes % 8 == 0, "the kernels take lanes eight at a time");
 
-// The first lanes of p[0..7]'s two quads, each in its quad's lanes:
-// (0, 0, 0, 0, 4, 4, 4, 4).
-[[gnu::always_inline]] GLSLRUN_AVX2 inline V group_leaders8(const float* p) {
-    const V x = _mm256_loadu_ps(p);
-    return _mm256_shuffle_ps(x, x, 0x00);
-}
-
 // Lanes g..g+7's lambda_base, each quad's (lanes 4q..4q+3 take quad q's
 // first lane's derivatives) in registers, with no copy of the derivatives:
 // at 32 lanes and more, eight quads' log2 at once at each g % 32 == 0

@@ -52,7 +52,17 @@ using namespace direct8;
 // (BatchLookup::quad_derivatives: the tex kernel then makes no copy of
 // them), else where every quad's rho bits agree.
 GLSLRUN_AVX2 void lambda_bases(const BatchLookup& lk, V w, V h, float* lambda) {
-    static_assert(kLanes % 32 == 0);
+    if constexpr (kLanes % 32 != 0) {  // 8 or 16 lanes: each lane's log2 (the same bits as its quad's)
+        for (int g = 0; g < kLanes; g += 8) {
+            const V rho = lk.quad_derivatives
+                              ? rho8(group_leaders8(lk.ddx[0] + g), group_leaders8(lk.ddx[1] + g),
+                                     group_leaders8(lk.ddy[0] + g), group_leaders8(lk.ddy[1] + g), w, h)
+                              : rho8(load8(lk.ddx[0] + g), load8(lk.ddx[1] + g), load8(lk.ddy[0] + g),
+                                     load8(lk.ddy[1] + g), w, h);
+            _mm256_store_ps(lambda + g, lod_from_rho8(rho));
+        }
+        return;
+    }
     alignas(32) float quad[kLanes / 4];  // quad_leaders8()'s order in each eight
     if (lk.quad_derivatives) {
         for (int g = 0; g < kLanes; g += 32)
