@@ -18,7 +18,8 @@
 // in Precise and Fast without its GPU filtering; the call-out under it, or
 // where magnification and minification filter a level differently) against
 // the lane sampler with each quad's first lane's derivatives (the
-// interpreter's rows); jit_tex_direct_test.cpp has the one-pass sweep.
+// interpreter's rows), and each lane's own where the program gives the
+// gradients; jit_tex_direct_test.cpp has the one-pass sweep.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -130,6 +131,9 @@ struct Shader {
     Reg coord[3], ref, lod, unit, unit_lane, cond, result, explicit_result;
     Reg block;  // the implicit lookup's operand block
     ir::TexInfo implicit;
+    // A 2D colour kind's lookup with the program's gradients (each lane's
+    // own, as texture2DGradARB's: no quad shares them); 0: none.
+    Reg grad_result = 0;
 };
 
 // Two lookups of one kind: an implicit one (derivatives of the
@@ -179,6 +183,17 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
         b.output("r", sh->result + c);
         b.output("e", sh->explicit_result + c);
+    }
+    if (kind.target == TextureTarget::Tex2D && !kind.shadow) {
+        ir::TexInfo grad = implicit;
+        grad.grad = true;
+        const Reg block = b.range(Kind::F32, grad.operand_count());
+        for (uint32_t k = 0; k < dims; ++k) b.mov(block + k, sh->coord[k]);
+        const Reg rows[] = {sh->ref, sh->lod, sh->lod, sh->ref};  // (ref, lod) and (lod, ref): every lane its own
+        for (uint32_t k = 0; k < 4; ++k) b.mov(block + grad.ddx_at() + k, rows[k]);
+        sh->grad_result = b.range(Kind::F32, ir::kTexResults);
+        b.instr(Op::tex, Kind::F32, sh->grad_result, {sh->unit}, {block, grad.operand_count(), grad.encode()});
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) b.output("g", sh->grad_result + c);
     }
     return sh;
 }
@@ -278,10 +293,14 @@ void check_mip2d(const Shader& sh, rt::Executor& interp, rt::Executor& jit, cons
     const std::array<uint32_t, 4> want = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, nullptr, ddx, ddy);
     const float lod = float(lane % 3) - 1.0f;
     const std::array<uint32_t, 4> want_explicit = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, &lod);
+    const float ref = l.ref[size_t(lane)];
+    const float gx[2] = {ref, lod}, gy[2] = {lod, ref};
+    const std::array<uint32_t, 4> want_grad = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, nullptr, gx, gy);
     for (uint32_t k = 0; k < ir::kTexResults; ++k) {
         INFO("mipmapped channel " << k << " ddx " << ddx[0] << "," << ddx[1] << " ddy " << ddy[0] << "," << ddy[1]);
         REQUIRE(jit.lanes(sh.result + k)[lane] == want[k]);
         REQUIRE(jit.lanes(sh.explicit_result + k)[lane] == want_explicit[k]);
+        REQUIRE(jit.lanes(sh.grad_result + k)[lane] == want_grad[k]);
     }
 }
 
@@ -340,6 +359,7 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
                 for (uint32_t k = 0; k < ir::kTexResults; ++k) {
                     e->lanes(sh.result + k)[lane] = 0xdeadbeefu;
                     e->lanes(sh.explicit_result + k)[lane] = 0xdeadbeefu;
+                    if (sh.grad_result) e->lanes(sh.grad_result + k)[lane] = 0xdeadbeefu;
                 }
             }
         }
