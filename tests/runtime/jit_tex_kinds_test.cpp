@@ -18,8 +18,9 @@
 // in Precise and Fast without its GPU filtering; the call-out under it, or
 // where magnification and minification filter a level differently) against
 // the lane sampler with each quad's first lane's derivatives (the
-// interpreter's rows), and each lane's own where the program gives the
-// gradients; jit_tex_direct_test.cpp has the one-pass sweep.
+// interpreter's rows), with a bias too, and each lane's own where the
+// program gives the gradients; jit_tex_direct_test.cpp has the one-pass
+// sweep.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -134,6 +135,9 @@ struct Shader {
     // A 2D colour kind's lookup with the program's gradients (each lane's
     // own, as texture2DGradARB's: no quad shares them); 0: none.
     Reg grad_result = 0;
+    // Its implicit lookup with a bias (lod's), and that lookup's operand block.
+    Reg bias_result = 0, bias_block = 0;
+    ir::TexInfo bias;
 };
 
 // Two lookups of one kind: an implicit one (derivatives of the
@@ -159,8 +163,8 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
         const Reg block = b.range(Kind::F32, info.operand_count());
         for (uint32_t k = 0; k < dims; ++k) b.mov(block + k, sh->coord[k]);
         if (info.shadow) b.mov(block + info.ref_at(), sh->ref);
-        if (info.lod == ir::TexLod::Explicit) b.mov(block + info.lod_at(), sh->lod);
-        else
+        if (info.lod != ir::TexLod::Implicit) b.mov(block + info.lod_at(), sh->lod);
+        if (info.lod != ir::TexLod::Explicit)
             for (uint32_t k = 0; k < info.grad_dims(); ++k) {
                 b.instr(Op::ddx, Kind::F32, block + info.ddx_at() + k, {sh->coord[k]});
                 b.instr(Op::ddy, Kind::F32, block + info.ddy_at() + k, {sh->coord[k]});
@@ -194,6 +198,13 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
         sh->grad_result = b.range(Kind::F32, ir::kTexResults);
         b.instr(Op::tex, Kind::F32, sh->grad_result, {sh->unit}, {block, grad.operand_count(), grad.encode()});
         for (uint32_t c = 0; c < ir::kTexResults; ++c) b.output("g", sh->grad_result + c);
+        sh->bias = implicit;
+        sh->bias.lod = ir::TexLod::ImplicitBias;
+        sh->bias_block = block_of(sh->bias);
+        sh->bias_result = b.range(Kind::F32, ir::kTexResults);
+        b.instr(Op::tex, Kind::F32, sh->bias_result, {sh->unit},
+                {sh->bias_block, sh->bias.operand_count(), sh->bias.encode()});
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) b.output("b", sh->bias_result + c);
     }
     return sh;
 }
@@ -229,16 +240,17 @@ float close_coordinate(int lane, int axis, float origin, float step) {
 
 // The lane sampler's words for a lookup of `texture`, in the backends'
 // floating-point mode (denormals flushed: a reference of 1e-40 is 0).
-// `lod`: the explicit LOD; `ddx`, `ddy`: the implicit one's derivatives (null: none read).
+// `lod`: the explicit LOD (the bias where `bias`); `ddx`, `ddy`: the implicit one's derivatives (null: none read).
 std::array<uint32_t, 4> lane_sample(const Texture& texture, const float* coord, float ref, rt::SamplingRules rules,
                                     const float* lod = nullptr, const float* ddx = nullptr,
-                                    const float* ddy = nullptr) {
+                                    const float* ddy = nullptr, bool bias = false) {
     ir::FlushDenormals ftz;
     rt::LaneLookup lane;
     lane.rules = rules;
     lane.coord = {coord[0], coord[1], coord[2]};
     lane.ref = ref;
-    lane.implicit = !lod;
+    lane.implicit = !lod || bias;
+    lane.bias = bias;
     if (lod) lane.lod = *lod;
     if (ddx) lane.ddx = {ddx[0], ddx[1], 0.0f};
     if (ddy) lane.ddy = {ddy[0], ddy[1], 0.0f};
@@ -287,20 +299,25 @@ Lanes lanes_of(const LookupKind& kind, const State& st, int round, std::mt19937&
 void check_mip2d(const Shader& sh, rt::Executor& interp, rt::Executor& jit, const Texture& tex, const Lanes& l,
                  int lane) {
     const float coord[3] = {l.coord[0][size_t(lane)], l.coord[1][size_t(lane)], 0.0f};
-    const auto row = [&](uint32_t k) { return std::bit_cast<float>(interp.lanes(sh.block + k)[lane & ~3]); };
-    const float ddx[2] = {row(sh.implicit.ddx_at()), row(sh.implicit.ddx_at() + 1)};
-    const float ddy[2] = {row(sh.implicit.ddy_at()), row(sh.implicit.ddy_at() + 1)};
+    const auto row = [&](Reg block, uint32_t k) { return std::bit_cast<float>(interp.lanes(block + k)[lane & ~3]); };
+    const float ddx[2] = {row(sh.block, sh.implicit.ddx_at()), row(sh.block, sh.implicit.ddx_at() + 1)};
+    const float ddy[2] = {row(sh.block, sh.implicit.ddy_at()), row(sh.block, sh.implicit.ddy_at() + 1)};
+    const float bias_dx[2] = {row(sh.bias_block, sh.bias.ddx_at()), row(sh.bias_block, sh.bias.ddx_at() + 1)};
+    const float bias_dy[2] = {row(sh.bias_block, sh.bias.ddy_at()), row(sh.bias_block, sh.bias.ddy_at() + 1)};
     const std::array<uint32_t, 4> want = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, nullptr, ddx, ddy);
     const float lod = float(lane % 3) - 1.0f;
     const std::array<uint32_t, 4> want_explicit = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, &lod);
     const float ref = l.ref[size_t(lane)];
     const float gx[2] = {ref, lod}, gy[2] = {lod, ref};
     const std::array<uint32_t, 4> want_grad = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, nullptr, gx, gy);
+    const std::array<uint32_t, 4> want_bias =
+        lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, &lod, bias_dx, bias_dy, true);
     for (uint32_t k = 0; k < ir::kTexResults; ++k) {
         INFO("mipmapped channel " << k << " ddx " << ddx[0] << "," << ddx[1] << " ddy " << ddy[0] << "," << ddy[1]);
         REQUIRE(jit.lanes(sh.result + k)[lane] == want[k]);
         REQUIRE(jit.lanes(sh.explicit_result + k)[lane] == want_explicit[k]);
         REQUIRE(jit.lanes(sh.grad_result + k)[lane] == want_grad[k]);
+        REQUIRE(jit.lanes(sh.bias_result + k)[lane] == want_bias[k]);
     }
 }
 
@@ -360,6 +377,7 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
                     e->lanes(sh.result + k)[lane] = 0xdeadbeefu;
                     e->lanes(sh.explicit_result + k)[lane] = 0xdeadbeefu;
                     if (sh.grad_result) e->lanes(sh.grad_result + k)[lane] = 0xdeadbeefu;
+                    if (sh.bias_result) e->lanes(sh.bias_result + k)[lane] = 0xdeadbeefu;
                 }
             }
         }
