@@ -10,6 +10,7 @@
 #include "runtime/interp_kernels.h"
 #include "runtime/sampling_batch.h"
 #include "runtime/sampling_direct.h"
+#include "runtime/sampling_rules.h"
 
 namespace glslrun::rt::jit {
 
@@ -88,9 +89,10 @@ inline constexpr size_t kDerivativesOffset = offsetof(Context, derivatives);
 constexpr size_t direct_slot(uint32_t unit, bool rect) { return size_t(unit) * 2 + (rect ? 1 : 0); }
 inline constexpr size_t kDirectSlots = direct_slot(kMaxTextureUnits, false);
 
-// The lookups that BoundKernel takes: 1D, 3D and cube colour lookups, and
-// 2D depth comparisons (shadow2D, shadow2DProj).
-enum class KernelKind : uint8_t { T1D, T3D, Cube, Shadow2D, Count };
+// The lookups that BoundKernel takes: 1D, 3D and cube colour lookups, 2D
+// depth comparisons (shadow2D, shadow2DProj), and 2D colour lookups of a
+// mipmapped texture (where the unit's one-pass sampler has none).
+enum class KernelKind : uint8_t { T1D, T3D, Cube, Shadow2D, Mip2D, Count };
 constexpr size_t kernel_slot(uint32_t unit, KernelKind kind) {
     return size_t(unit) * size_t(KernelKind::Count) + size_t(kind);
 }
@@ -102,6 +104,7 @@ inline KernelKind kernel_kind(const ir::TexInfo& info) {
     if (info.shadow) return info.target == T2D ? KernelKind::Shadow2D : KernelKind::Count;
     switch (info.target) {
     case T1D: return KernelKind::T1D;
+    case T2D: return KernelKind::Mip2D;
     case T3D: return KernelKind::T3D;
     case Cube: return KernelKind::Cube;
     default: return KernelKind::Count;
@@ -130,11 +133,23 @@ inline bool tex_runs_direct(const ir::Instr& in, bool gpu) {
     return one_pass_lookup(info) || kind != KernelKind::Count;
 }
 
+// Whether bind_kernels() binds sample_mip2d() for a unit's 2D texture `t`
+// (may be null): complete, mipmapped, colour, and one that the tex kernel
+// samples with it (sample_batch()'s pick, reading each quad's first lane's
+// derivatives), not under Fast's GPU filtering (`gpu`), which takes its own.
+inline bool binds_mip2d(const Texture* t, bool gpu) {
+    return !gpu && t && t->complete() && !t->depth() && batch_samples(*t) && sampling::lod_matters(t->sampler) &&
+           batch_reads_quad_leaders(*t, true);
+}
+
 // The units' kernels into out[kKernelSlots]: each kind's texture whose
 // state has an eight-lane kernel that reads no derivatives (no level of
 // detail decision), complete, that the tex kernel samples with those
 // kernels (under `gpu`, Fast's GPU filtering, those it does not filter);
-// all null where `units` is null or the CPU lacks AVX2.
+// and, not under `gpu`, a complete mipmapped 2D colour texture that the
+// tex kernel samples with sample_mip2d() (it reads the derivative rows,
+// each quad's first lane's where Context::lookups says so); all null where
+// `units` is null or the CPU lacks AVX2.
 void bind_kernels(const GLState::TextureUnit* units, bool gpu, BoundKernel* out);
 
 // The units' one-pass samplers into out[kDirectSlots] (all null where
@@ -157,7 +172,10 @@ struct CallOut {
 };
 
 // The BatchLookup of each `tex` call-out among `calls` (its Step in
-// `steps`) over the register file: its coordinates and reference.
+// `steps`) over the register file: its coordinates and reference; a 2D
+// colour lookup's also its derivative rows, LOD or bias and, where the tex
+// kernel gives a quad its first lane's derivatives (an implicit LOD from
+// no gradients of the program's), quad_derivatives.
 std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps);
 
 // Per call-out among `calls`, 1 where a `tex` with derivative rows may

@@ -11,10 +11,12 @@
 // or Fast's runtime/sampling_gpu_direct.h under its GPU filtering); a 1D,
 // 3D or cube colour lookup or a 2D depth comparison the batched sampler's
 // kernel for the texture's state (BoundKernel: sampling_direct1d.h,
-// sampling_direct3d.h, sampling_batch_cube.h, sampling_shadow8.h). Anything
-// else (another unit per lane, a unit out of range, an incomplete texture,
-// a state with no such kernel, one whose level of detail matters) runs the
-// call-out's kernel. The sampler is the one the kernel
+// sampling_direct3d.h, sampling_batch_cube.h, sampling_shadow8.h), and a
+// mipmapped 2D colour lookup in Precise sampling_mip2d.h's kernel with the
+// derivative rows, each quad's first lane's (as the tex kernel's share
+// step gives them). Anything else (another unit per lane, a unit out of
+// range, an incomplete texture, a state with no such kernel, another one
+// whose level of detail matters) runs the call-out's kernel. The sampler is the one the kernel
 // would pick, the default results the kernel's (a lane that skips its
 // lookup reads 0), the write masked as Machine::write's: the bits are the
 // call-out's (tests/runtime/jit_tex_direct_test.cpp,
@@ -30,6 +32,7 @@
 #include "runtime/sampling_direct3d.h"
 #include "runtime/sampling_gpu3d.h"
 #include "runtime/sampling_gpu_direct.h"
+#include "runtime/sampling_mip2d.h"
 #include "runtime/sampling_rules.h"
 #include "runtime/sampling_shadow8.h"
 
@@ -59,13 +62,13 @@ GLSLRUN_AVX2 void zero_skipped(float (*result)[kLanes], LaneMask lookups) {
 // (true); false where the call-out's kernel must run.
 GLSLRUN_AVX2 bool run_bound(const Context& ctx, uint64_t index, const ir::TexInfo& info, uint32_t unit,
                             LaneMask lookups, const float* operands, float (*result)[kLanes]) {
-    if (one_pass_lookup(info)) {
-        if (!ctx.direct) return false;
+    if (one_pass_lookup(info) && ctx.direct) {
         const DirectSampler& sampler = ctx.direct[direct_slot(unit, info.target == ir::TexTarget::Rect)];
-        if (!sampler.run) return false;
-        zero_skipped(result, lookups);
-        sampler.run(sampler, operands, operands + kLanes, lookups, result);
-        return true;
+        if (sampler.run) {
+            zero_skipped(result, lookups);
+            sampler.run(sampler, operands, operands + kLanes, lookups, result);
+            return true;
+        }
     }
     const KernelKind kind = kernel_kind(info);
     if (kind == KernelKind::Count || !ctx.kernels || !ctx.lookups) return false;
@@ -79,6 +82,22 @@ GLSLRUN_AVX2 bool run_bound(const Context& ctx, uint64_t index, const ir::TexInf
     return true;
 }
 
+// A 2D colour lookup's level-of-detail operands as the tex kernel gives
+// sample_mip2d() them (FloatOperands::lookup(), and its quads' derivatives
+// read from their first lanes where derivative_lane() picks those).
+void mip2d_operands(const ir::TexInfo& info, const float* block, BatchLookup& lk) {
+    alignas(32) static constexpr float kZeros[kLanes] = {};
+    lk.implicit = info.lod != ir::TexLod::Explicit;
+    lk.bias = info.lod == ir::TexLod::ImplicitBias;
+    if (info.lod != ir::TexLod::Implicit) lk.lod = block + size_t(info.lod_at()) * kLanes;
+    for (uint32_t c = 0; c < 3; ++c) {
+        const bool row = lk.implicit && c < info.grad_dims();
+        lk.ddx[c] = row ? block + size_t(info.ddx_at() + c) * kLanes : kZeros;
+        lk.ddy[c] = row ? block + size_t(info.ddy_at() + c) * kLanes : kZeros;
+    }
+    lk.quad_derivatives = lk.implicit && derivative_lane(1, SamplingRules::Common, info.grad) == 0;
+}
+
 }  // namespace
 
 std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const std::vector<Step<uint32_t>>& steps) {
@@ -89,6 +108,7 @@ std::vector<BatchLookup> tex_lookups(const std::vector<CallOut>& calls, const st
         const auto* block = reinterpret_cast<const float*>(steps[i].src[1]);  // the operand block
         for (uint32_t c = 0; c < info.dims() && c < 3; ++c) out[i].coord[c] = block + size_t(c) * kLanes;
         if (info.shadow) out[i].ref = block + size_t(info.ref_at()) * kLanes;
+        if (kernel_kind(info) == KernelKind::Mip2D) mip2d_operands(info, block, out[i]);
     }
     return out;
 }
@@ -145,6 +165,11 @@ void bind_kernels(const GLState::TextureUnit* units, bool gpu, BoundKernel* out)
             bind(KernelKind::T3D, ir::TexTarget::T3D, direct3d_kernel);
         bind(KernelKind::Cube, ir::TexTarget::Cube, cube_kernel);
         bind(KernelKind::Shadow2D, ir::TexTarget::T2D, shadow8_kernel);
+        // A mipmapped 2D colour texture, as the tex kernel samples it in
+        // Precise: sample_batch() picks sample_mip2d() for it, which reads
+        // each quad's first lane's derivatives (no copy of them to share).
+        const Texture* t2d = units[unit].bound[size_t(ir::TexTarget::T2D)].get();
+        if (binds_mip2d(t2d, gpu)) out[kernel_slot(unit, KernelKind::Mip2D)] = {sample_mip2d, t2d};
     }
 }
 

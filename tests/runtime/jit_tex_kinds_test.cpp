@@ -13,11 +13,18 @@
 // their lookups, lanes of another unit or of none, an incomplete texture;
 // the derivative rows stored where a unit's texture may read them and
 // left alone where none does.
-// 2D colour lookups too, for the one-pass samplers' fallback (mipmapped
-// states under partial masks; jit_tex_direct_test.cpp has their sweep).
+// 2D colour lookups too: the one-pass samplers' fallback, and mipmapped
+// states in every filter and wrap pair (their kernel, BoundKernel's Mip2D,
+// in Precise and Fast without its GPU filtering; the call-out under it, or
+// where magnification and minification filter a level differently) against
+// the lane sampler with each quad's first lane's derivatives (the
+// interpreter's rows), with a bias too, and each lane's own where the
+// program gives the gradients; jit_tex_direct_test.cpp has the one-pass
+// sweep.
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <bit>
 #include <limits>
 #include <memory>
 #include <random>
@@ -56,7 +63,17 @@ struct State {
     int size[3];
     int base_level;
     TextureFormat format;
+    // Magnification's filter within a level unlike minification's (a
+    // mipmapped state the mipmapped 2D kernel does not take).
+    bool mag_other = false;
 };
+
+// A mipmapped state's magnification filter: NEAREST or LINEAR as its
+// minification filters a level, the other where `other`.
+TextureFilter mag_of(TextureFilter filter, bool other) {
+    if (!rt::is_mipmap_filter(filter)) return filter;
+    return rt::sampling::linear_within_level(filter) != other ? TextureFilter::Linear : TextureFilter::Nearest;
+}
 
 std::shared_ptr<const Texture> texture(const LookupKind& kind, const State& st, bool mipmaps, uint32_t seed) {
     std::mt19937 rng(seed);
@@ -75,7 +92,8 @@ std::shared_ptr<const Texture> texture(const LookupKind& kind, const State& st, 
     REQUIRE(t.ok());
     if (mipmaps) t->generate_mipmaps();
     SamplerState& s = t->sampler;
-    s.min_filter = s.mag_filter = st.filter;
+    s.min_filter = st.filter;
+    s.mag_filter = mag_of(st.filter, st.mag_other);
     s.wrap_s = st.wrap[0];
     s.wrap_t = st.wrap[1];
     s.wrap_r = st.wrap[2];
@@ -89,7 +107,8 @@ std::shared_ptr<const Texture> texture(const LookupKind& kind, const State& st, 
 
 SamplerState st_sampler(const State& st) {
     SamplerState s;
-    s.min_filter = s.mag_filter = st.filter;
+    s.min_filter = st.filter;
+    s.mag_filter = mag_of(st.filter, st.mag_other);
     return s;
 }
 
@@ -113,6 +132,12 @@ struct Shader {
     Reg coord[3], ref, lod, unit, unit_lane, cond, result, explicit_result;
     Reg block;  // the implicit lookup's operand block
     ir::TexInfo implicit;
+    // A 2D colour kind's lookup with the program's gradients (each lane's
+    // own, as texture2DGradARB's: no quad shares them); 0: none.
+    Reg grad_result = 0;
+    // Its implicit lookup with a bias (lod's), and that lookup's operand block.
+    Reg bias_result = 0, bias_block = 0;
+    ir::TexInfo bias;
 };
 
 // Two lookups of one kind: an implicit one (derivatives of the
@@ -138,8 +163,8 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
         const Reg block = b.range(Kind::F32, info.operand_count());
         for (uint32_t k = 0; k < dims; ++k) b.mov(block + k, sh->coord[k]);
         if (info.shadow) b.mov(block + info.ref_at(), sh->ref);
-        if (info.lod == ir::TexLod::Explicit) b.mov(block + info.lod_at(), sh->lod);
-        else
+        if (info.lod != ir::TexLod::Implicit) b.mov(block + info.lod_at(), sh->lod);
+        if (info.lod != ir::TexLod::Explicit)
             for (uint32_t k = 0; k < info.grad_dims(); ++k) {
                 b.instr(Op::ddx, Kind::F32, block + info.ddx_at() + k, {sh->coord[k]});
                 b.instr(Op::ddy, Kind::F32, block + info.ddy_at() + k, {sh->coord[k]});
@@ -162,6 +187,24 @@ std::unique_ptr<Shader> make_shader(const LookupKind& kind) {
     for (uint32_t c = 0; c < ir::kTexResults; ++c) {
         b.output("r", sh->result + c);
         b.output("e", sh->explicit_result + c);
+    }
+    if (kind.target == TextureTarget::Tex2D && !kind.shadow) {
+        ir::TexInfo grad = implicit;
+        grad.grad = true;
+        const Reg block = b.range(Kind::F32, grad.operand_count());
+        for (uint32_t k = 0; k < dims; ++k) b.mov(block + k, sh->coord[k]);
+        const Reg rows[] = {sh->ref, sh->lod, sh->lod, sh->ref};  // (ref, lod) and (lod, ref): every lane its own
+        for (uint32_t k = 0; k < 4; ++k) b.mov(block + grad.ddx_at() + k, rows[k]);
+        sh->grad_result = b.range(Kind::F32, ir::kTexResults);
+        b.instr(Op::tex, Kind::F32, sh->grad_result, {sh->unit}, {block, grad.operand_count(), grad.encode()});
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) b.output("g", sh->grad_result + c);
+        sh->bias = implicit;
+        sh->bias.lod = ir::TexLod::ImplicitBias;
+        sh->bias_block = block_of(sh->bias);
+        sh->bias_result = b.range(Kind::F32, ir::kTexResults);
+        b.instr(Op::tex, Kind::F32, sh->bias_result, {sh->unit},
+                {sh->bias_block, sh->bias.operand_count(), sh->bias.encode()});
+        for (uint32_t c = 0; c < ir::kTexResults; ++c) b.output("b", sh->bias_result + c);
     }
     return sh;
 }
@@ -197,12 +240,20 @@ float close_coordinate(int lane, int axis, float origin, float step) {
 
 // The lane sampler's words for a lookup of `texture`, in the backends'
 // floating-point mode (denormals flushed: a reference of 1e-40 is 0).
-std::array<uint32_t, 4> lane_sample(const Texture& texture, const float* coord, float ref, rt::SamplingRules rules) {
+// `lod`: the explicit LOD (the bias where `bias`); `ddx`, `ddy`: the implicit one's derivatives (null: none read).
+std::array<uint32_t, 4> lane_sample(const Texture& texture, const float* coord, float ref, rt::SamplingRules rules,
+                                    const float* lod = nullptr, const float* ddx = nullptr,
+                                    const float* ddy = nullptr, bool bias = false) {
     ir::FlushDenormals ftz;
     rt::LaneLookup lane;
     lane.rules = rules;
     lane.coord = {coord[0], coord[1], coord[2]};
     lane.ref = ref;
+    lane.implicit = !lod || bias;
+    lane.bias = bias;
+    if (lod) lane.lod = *lod;
+    if (ddx) lane.ddx = {ddx[0], ddx[1], 0.0f};
+    if (ddy) lane.ddy = {ddy[0], ddy[1], 0.0f};
     float rgba[4];
     rt::sample_complete_lane(texture, lane, rgba);
     return {bits(rgba[0]), bits(rgba[1]), bits(rgba[2]), bits(rgba[3])};
@@ -242,6 +293,34 @@ Lanes lanes_of(const LookupKind& kind, const State& st, int round, std::mt19937&
     return l;
 }
 
+// A mipmapped 2D lookup of lane `lane` (of kUnit in both lookups): the
+// implicit one from its quad's first lane's derivative rows (the
+// interpreter's words), the explicit one at its LOD, by the lane sampler.
+void check_mip2d(const Shader& sh, rt::Executor& interp, rt::Executor& jit, const Texture& tex, const Lanes& l,
+                 int lane) {
+    const float coord[3] = {l.coord[0][size_t(lane)], l.coord[1][size_t(lane)], 0.0f};
+    const auto row = [&](Reg block, uint32_t k) { return std::bit_cast<float>(interp.lanes(block + k)[lane & ~3]); };
+    const float ddx[2] = {row(sh.block, sh.implicit.ddx_at()), row(sh.block, sh.implicit.ddx_at() + 1)};
+    const float ddy[2] = {row(sh.block, sh.implicit.ddy_at()), row(sh.block, sh.implicit.ddy_at() + 1)};
+    const float bias_dx[2] = {row(sh.bias_block, sh.bias.ddx_at()), row(sh.bias_block, sh.bias.ddx_at() + 1)};
+    const float bias_dy[2] = {row(sh.bias_block, sh.bias.ddy_at()), row(sh.bias_block, sh.bias.ddy_at() + 1)};
+    const std::array<uint32_t, 4> want = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, nullptr, ddx, ddy);
+    const float lod = float(lane % 3) - 1.0f;
+    const std::array<uint32_t, 4> want_explicit = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, &lod);
+    const float ref = l.ref[size_t(lane)];
+    const float gx[2] = {ref, lod}, gy[2] = {lod, ref};
+    const std::array<uint32_t, 4> want_grad = lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, nullptr, gx, gy);
+    const std::array<uint32_t, 4> want_bias =
+        lane_sample(tex, coord, 0.0f, rt::SamplingRules::Common, &lod, bias_dx, bias_dy, true);
+    for (uint32_t k = 0; k < ir::kTexResults; ++k) {
+        INFO("mipmapped channel " << k << " ddx " << ddx[0] << "," << ddx[1] << " ddy " << ddy[0] << "," << ddy[1]);
+        REQUIRE(jit.lanes(sh.result + k)[lane] == want[k]);
+        REQUIRE(jit.lanes(sh.explicit_result + k)[lane] == want_explicit[k]);
+        REQUIRE(jit.lanes(sh.grad_result + k)[lane] == want_grad[k]);
+        REQUIRE(jit.lanes(sh.bias_result + k)[lane] == want_bias[k]);
+    }
+}
+
 void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader& interp, const rt::CompiledShader& jit,
              const TexMode& mode, const State& st, uint32_t seed) {
     // Half the states whose lookups take no level of detail have no unit
@@ -262,6 +341,20 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
     // quads' derivatives).
     const rt::SamplingRules rules = mode.gpu() ? rt::SamplingRules::Gpu : rt::SamplingRules::Common;
     const bool oracle = tex.complete() && !rt::lanes_only(tex, rules) && !rt::sampling::lod_matters(tex.sampler);
+    // A mipmapped 2D colour texture that filters a level alike on both
+    // sides: the mipmapped kernel's, bound outside Fast's GPU filtering
+    // (which takes it: then the call-out), and the lane sampler's words
+    // from each quad's first lane's derivatives (Precise's one LOD a quad).
+    const bool mip2d = kind.target == TextureTarget::Tex2D && !kind.shadow && tex.complete() &&
+                       rt::is_mipmap_filter(st.filter) && !st.mag_other;
+    {
+        INFO(kind.name << " filter " << int(st.filter) << " mag_other " << st.mag_other << " gpu " << mode.gpu());
+        REQUIRE(rt::jit::binds_mip2d(units[size_t(kUnit)].bound[size_t(TextureTarget::Tex2D)].get(), mode.gpu()) ==
+                (mip2d && !mode.gpu()));
+        for (int other : {kOtherUnit, kIncomplete})
+            REQUIRE(!rt::jit::binds_mip2d(units[size_t(other)].bound[size_t(TextureTarget::Tex2D)].get(), false));
+    }
+    const bool mip_oracle = mip2d && !mode.gpu();
     std::mt19937 rng(seed * 977u);
     for (int round = 0; round < 8; ++round) {
         const rt::LaneMask live = round == 2 ? rt::LaneMask(0x5a5a5a5a5a5a5a5aull) & rt::kAllLanes : rt::kAllLanes;
@@ -283,6 +376,8 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
                 for (uint32_t k = 0; k < ir::kTexResults; ++k) {
                     e->lanes(sh.result + k)[lane] = 0xdeadbeefu;
                     e->lanes(sh.explicit_result + k)[lane] = 0xdeadbeefu;
+                    if (sh.grad_result) e->lanes(sh.grad_result + k)[lane] = 0xdeadbeefu;
+                    if (sh.bias_result) e->lanes(sh.bias_result + k)[lane] = 0xdeadbeefu;
                 }
             }
         }
@@ -310,6 +405,7 @@ void compare(const LookupKind& kind, const Shader& sh, const rt::CompiledShader&
             // The lanes that looked up kUnit's texture: the lane sampler's words.
             const bool looked = ((live >> lane) & 1) && !((skipped >> lane) & 1) && cond(lane) && round != 4 &&
                                 round != 5;
+            if (mip_oracle && looked) check_mip2d(sh, *ia, *ja, tex, l, lane);
             if (!oracle || !looked) continue;
             const float coord[3] = {l.coord[0][size_t(lane)], l.coord[1][size_t(lane)], l.coord[2][size_t(lane)]};
             const std::array<uint32_t, 4> want = lane_sample(tex, coord, l.ref[size_t(lane)], rules);
@@ -339,7 +435,15 @@ std::vector<State> states_of(const LookupKind& kind) {
     const TextureWrap wraps[] = {Repeat, MirroredRepeat, ClampToEdge, Clamp, ClampToBorder};
     const int sizes[][3] = {{5, 3, 4}, {1, 1, 1}, {7, 1, 3}, {1, 6, 2}, {13, 11, 5}, {4, 4, 1}, {9, 6, 7}};
     const int axes = kind.target == TextureTarget::Tex1D ? 1 : kind.target == TextureTarget::Tex3D ? 3 : 2;
-    const TextureFilter filters[] = {TextureFilter::Nearest, TextureFilter::Linear, TextureFilter::LinearMipmapLinear};
+    // A 2D colour texture's mipmapped states (the mipmapped kernel's) in
+    // every filter and wrap pair; the other kinds' (the call-out's) once
+    // per wrap on s.
+    const bool mip2d = kind.target == TextureTarget::Tex2D && !kind.shadow;
+    std::vector<TextureFilter> filters = {TextureFilter::Nearest, TextureFilter::Linear,
+                                          TextureFilter::LinearMipmapLinear};
+    if (mip2d)
+        filters.insert(filters.end(), {TextureFilter::LinearMipmapNearest, TextureFilter::NearestMipmapLinear,
+                                       TextureFilter::NearestMipmapNearest});
     std::vector<State> states;
     uint32_t n = 0;
     for (const TextureFilter filter : filters)
@@ -347,12 +451,12 @@ std::vector<State> states_of(const LookupKind& kind) {
             const TextureWrap ws = wraps[w % 5], wt = axes > 1 ? wraps[w / 5 % 5] : Repeat;
             const TextureWrap wr = axes > 2 ? wraps[w / 25] : Repeat;
             if ((axes < 2 && w >= 5) || (axes < 3 && w >= 25)) break;
-            // The mipmapped states (the call-out's) once per wrap on s.
-            if (filter == TextureFilter::LinearMipmapLinear && w >= 5) break;
+            if (rt::is_mipmap_filter(filter) && !mip2d && w >= 5) break;
             ++n;
             const int* size = sizes[n % 7];
             State st{filter, {ws, wt, wr}, CompareFunc(n % 8), DepthTextureMode(n % 3), {size[0], size[1], size[2]},
-                     int(n % 4 == 3), n % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8};
+                     int(n % 4 == 3), n % 3 == 2 ? TextureFormat::RGBA32F : TextureFormat::RGBA8,
+                     rt::is_mipmap_filter(filter) && w % 7 == 3};
             states.push_back(st);
             if (kind.shadow)  // every comparison function with this state's filter and wraps
                 for (int f = 1; f < 8; ++f) {
